@@ -1,0 +1,45 @@
+# poinsot — the two commands that matter:
+#   make demo   set up (virtual environment, build, install with all extras) and run `poinsot tour`
+#   make test   the same set-up, then every test: cargo test, clippy, pytest, the examples
+SHELL := /bin/bash
+PYTHON ?= python3
+VENV ?= .venv
+PY := $(VENV)/bin/python
+export PYO3_PYTHON := $(abspath $(PY))
+export MPLBACKEND := Agg
+
+.PHONY: setup demo test test-rust lint test-python examples bench stubtest clean
+
+$(PY):
+	$(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install -q --upgrade pip
+
+# Build the Rust core + bindings (maturin, release) and install poinsot editable with all extras.
+setup: $(PY)
+	$(PY) -m pip install -q -e '.[all,test]'
+
+demo: setup
+	$(VENV)/bin/poinsot tour
+
+test: setup test-rust lint test-python examples
+
+test-rust:
+	cargo test -p poinsot --release
+
+lint: $(PY)
+	cargo clippy --workspace --all-targets --release -- -D warnings
+	$(PY) -m mypy.stubtest poinsot._core --allowlist python/stubtest-allowlist.txt
+
+test-python: setup
+	$(PY) -m pytest -q python/tests
+
+examples: setup
+	@set -e; for f in examples/*.py; do echo "== $$f"; $(PY) $$f; done
+
+bench: setup
+	cargo bench -p poinsot
+	$(PY) bench/run_all.py
+
+clean:
+	cargo clean
+	rm -rf $(VENV) .pytest_cache .hypothesis

@@ -1,0 +1,49 @@
+//! Array conversions shared by the binding files: numpy ↔ fixed-size Rust arrays, with
+//! shape errors that name the argument.
+use numpy::{PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
+use pyo3::prelude::*;
+
+use crate::errors::invalid;
+
+/// A length-3 float array → `[f64; 3]`.
+pub fn vec3(argument: &str, a: &PyReadonlyArray1<'_, f64>) -> PyResult<[f64; 3]> {
+    let s = a.as_slice().map_err(|_| invalid(argument, "must be a contiguous array"))?;
+    if s.len() != 3 {
+        return Err(invalid(argument, format!("must have shape (3,), got ({},)", s.len())));
+    }
+    Ok([s[0], s[1], s[2]])
+}
+
+/// A (3, 3) float array → row-major `[[f64; 3]; 3]`.
+pub fn mat3(argument: &str, a: &PyReadonlyArray2<'_, f64>) -> PyResult<[[f64; 3]; 3]> {
+    let shape = a.shape();
+    if shape != [3, 3] {
+        return Err(invalid(argument, format!("must have shape (3, 3), got {shape:?}")));
+    }
+    let v = a.as_array();
+    Ok([
+        [v[[0, 0]], v[[0, 1]], v[[0, 2]]],
+        [v[[1, 0]], v[[1, 1]], v[[1, 2]]],
+        [v[[2, 0]], v[[2, 1]], v[[2, 2]]],
+    ])
+}
+
+/// An (N, 3) float array → a vector of `[f64; 3]` rows.
+pub fn rows3(argument: &str, a: &PyReadonlyArray2<'_, f64>) -> PyResult<Vec<[f64; 3]>> {
+    let shape = a.shape();
+    if shape.len() != 2 || shape[1] != 3 {
+        return Err(invalid(argument, format!("must have shape (N, 3), got {shape:?}")));
+    }
+    Ok(a.as_array().rows().into_iter().map(|r| [r[0], r[1], r[2]]).collect())
+}
+
+/// `[f64; 3]` → a new numpy array of shape (3,).
+pub fn vec3_out<'py>(py: Python<'py>, v: [f64; 3]) -> Bound<'py, PyArray1<f64>> {
+    PyArray1::from_slice(py, &v)
+}
+
+/// Row-major 3×3 → a new numpy array of shape (3, 3).
+pub fn mat3_out<'py>(py: Python<'py>, m: [[f64; 3]; 3]) -> Bound<'py, PyArray2<f64>> {
+    PyArray2::from_vec2(py, &m.iter().map(|r| r.to_vec()).collect::<Vec<_>>())
+        .expect("3x3 rows have equal length")
+}

@@ -1,0 +1,23 @@
+//! Python bindings of the poinsot core: conversion of arrays and mapping of errors, no physics.
+//!
+//! The files mirror the core's modules: `rotation.rs` binds `poinsot::rotation`,
+//! `inertia.rs` binds `poinsot::inertia`. The compiled module is private (`poinsot._core`);
+//! the typed public API lives in `python/poinsot`.
+#![forbid(unsafe_code)]
+
+mod convert;
+mod errors;
+mod inertia;
+mod rotation;
+
+use pyo3::prelude::*;
+
+/// The compiled core of poinsot (private: use the `poinsot` package).
+#[pymodule]
+fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    errors::register(m)?;
+    rotation::register(m)?;
+    inertia::register(m)?;
+    Ok(())
+}

@@ -1,0 +1,125 @@
+//! Errors of the physics core.
+//!
+//! Every fallible function of the core returns [`Result`]. An [`Error`] always names the
+//! argument at fault and the condition it violates, so that the front ends (Python, the
+//! browser) can show it as it is. The bindings map [`ErrorKind`] to their own exception
+//! types in one place (`crates/poinsot-py/src/errors.rs`).
+
+use std::fmt;
+
+/// What went wrong, coarsely: the front ends map each kind to an exception type.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ErrorKind {
+    /// An argument is out of its domain (non-finite, negative mass, `dt <= 0`, wrong shape, ...).
+    InvalidArgument,
+    /// An inertia tensor is not physical (asymmetric, negative moment, triangle inequality).
+    InvalidInertia,
+    /// A matrix is not a proper rotation (not orthonormal, or `det != +1`).
+    InvalidRotation,
+    /// A triangle mesh does not bound a solid (open, non-manifold, inside-out, degenerate).
+    InvalidMesh,
+    /// Euler-angle rates are undefined: the angles sit at the singularity of their sequence.
+    GimbalLock,
+    /// A numerical integration diverged or could not reach its tolerance.
+    Diverged,
+}
+
+/// An error of the physics core: the argument at fault and the condition it violates.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Error {
+    /// The coarse kind, for mapping to exception types.
+    pub kind: ErrorKind,
+    /// The name of the argument at fault, as the public API spells it (e.g. `"mass"`).
+    pub argument: String,
+    /// The violated condition, in words, usually with the offending value.
+    pub message: String,
+}
+
+/// The result type of the physics core.
+pub type Result<T> = std::result::Result<T, Error>;
+
+impl Error {
+    /// A new error of `kind` about `argument`.
+    pub fn new(kind: ErrorKind, argument: impl Into<String>, message: impl Into<String>) -> Self {
+        Self { kind, argument: argument.into(), message: message.into() }
+    }
+    /// An argument out of its domain.
+    pub fn invalid(argument: impl Into<String>, message: impl Into<String>) -> Self {
+        Self::new(ErrorKind::InvalidArgument, argument, message)
+    }
+    /// A non-physical inertia tensor.
+    pub fn inertia(argument: impl Into<String>, message: impl Into<String>) -> Self {
+        Self::new(ErrorKind::InvalidInertia, argument, message)
+    }
+    /// A matrix that is not a proper rotation.
+    pub fn rotation(argument: impl Into<String>, message: impl Into<String>) -> Self {
+        Self::new(ErrorKind::InvalidRotation, argument, message)
+    }
+    /// A mesh that does not bound a solid.
+    pub fn mesh(argument: impl Into<String>, message: impl Into<String>) -> Self {
+        Self::new(ErrorKind::InvalidMesh, argument, message)
+    }
+    /// Euler-angle rates at a singular configuration.
+    pub fn gimbal_lock(argument: impl Into<String>, message: impl Into<String>) -> Self {
+        Self::new(ErrorKind::GimbalLock, argument, message)
+    }
+    /// A diverging or failing integration.
+    pub fn diverged(argument: impl Into<String>, message: impl Into<String>) -> Self {
+        Self::new(ErrorKind::Diverged, argument, message)
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.argument, self.message)
+    }
+}
+
+impl std::error::Error for Error {}
+
+/// Checks that every value is finite; names `argument` otherwise.
+pub fn check_finite(argument: &str, values: &[f64]) -> Result<()> {
+    match values.iter().position(|v| !v.is_finite()) {
+        None => Ok(()),
+        Some(i) if values.len() == 1 => {
+            Err(Error::invalid(argument, format!("must be finite, got {}", values[i])))
+        }
+        Some(i) => Err(Error::invalid(
+            argument,
+            format!("must be finite, got {} at index {}", values[i], i),
+        )),
+    }
+}
+
+/// Checks that `value` is finite and strictly positive; names `argument` otherwise.
+pub fn check_positive(argument: &str, value: f64) -> Result<()> {
+    if value.is_finite() && value > 0.0 {
+        Ok(())
+    } else {
+        Err(Error::invalid(argument, format!("must be finite and > 0, got {value}")))
+    }
+}
+
+/// Checks that `value` is finite and not negative; names `argument` otherwise.
+pub fn check_non_negative(argument: &str, value: f64) -> Result<()> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(())
+    } else {
+        Err(Error::invalid(argument, format!("must be finite and >= 0, got {value}")))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn messages_name_the_argument() {
+        let e = check_positive("mass", -1.0).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::InvalidArgument);
+        assert!(e.to_string().starts_with("mass:"), "{e}");
+        assert!(check_finite("omega", &[1.0, f64::NAN, 2.0]).unwrap_err().message.contains("index 1"));
+        assert!(check_non_negative("height", 0.0).is_ok());
+        assert!(check_non_negative("height", -0.0 - 1e-300).is_err());
+    }
+}

@@ -1,0 +1,28 @@
+//! # poinsot — moving frames and the motion of rigid bodies
+//!
+//! The physics core of poinsot, in pure Rust. Every front end (Python, the command line, the
+//! browser lab) calls into this crate and holds no physics of its own.
+//!
+//! Modules follow the course unit (`shared/seed`), and their docs cite its equation numbers:
+//!
+//! | module | topic | unit equations |
+//! |---|---|---|
+//! | [`rotation`] | SO(3), quaternions, Euler angles, Euler's theorem, Chasles' screw, Euler-angle kinematics | 2.98–2.99 |
+//! | [`inertia`] | inertia tensor, principal axes, standard solids, density and mesh integrals, L and T | 2.43–2.66 |
+//!
+//! Conventions (see `CONVENTIONS.md` at the repository root): SI units, radians, right-handed
+//! frames, active rotations, scalar-first quaternions `[w, x, y, z]`, products of inertia
+//! negated (`I_xy = −Σ m x y`) so that `L = I·ω`.
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod error;
+pub mod inertia;
+pub mod rotation;
+
+pub use error::{Error, ErrorKind, Result};
+
+/// 3-vectors of `f64` (nalgebra).
+pub type Vec3 = nalgebra::Vector3<f64>;
+/// 3×3 matrices of `f64` (nalgebra).
+pub type Mat3 = nalgebra::Matrix3<f64>;

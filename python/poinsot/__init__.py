@@ -1,0 +1,24 @@
+"""poinsot: moving frames and the motion of rigid bodies.
+
+The public API (see ``DESIGN.md``'s contract and the README):
+
+* rotations: :func:`euler_to_matrix`, :func:`matrix_to_euler`, :func:`rotation_axis`
+  (Euler's theorem), :func:`screw_axis` (Chasles' theorem), :func:`body_angular_velocity`
+  (the unit's eq. 2.99) and :func:`euler_rates`, quaternion helpers;
+* mass properties: :class:`RigidBody` (inertia tensor, principal axes, kind, L, T);
+* errors: :class:`PoinsotError` (a ``ValueError``) and its subclasses.
+
+SI units and radians everywhere; quaternions are scalar-first ``[w, x, y, z]``.
+"""
+
+from __future__ import annotations
+
+from ._core import __version__
+from .body import *  # noqa: F401,F403
+from .body import __all__ as _body_all
+from .errors import *  # noqa: F401,F403
+from .errors import __all__ as _errors_all
+from .rotation import *  # noqa: F401,F403
+from .rotation import __all__ as _rotation_all
+
+__all__ = ["__version__", *_errors_all, *_rotation_all, *_body_all]

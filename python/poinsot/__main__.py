@@ -1,0 +1,5 @@
+"""``python -m poinsot`` is the ``poinsot`` command."""
+
+from .cli import main
+
+main()

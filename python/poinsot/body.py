@@ -1,0 +1,2 @@
+"""Rigid bodies (filled by the inertia work)."""
+__all__: list[str] = []

@@ -1,0 +1,2 @@
+"""Rotations (filled by the rotation work)."""
+__all__: list[str] = []
