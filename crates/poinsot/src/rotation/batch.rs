@@ -11,7 +11,7 @@
 use rayon::prelude::*;
 
 use crate::error::{check_finite, Error, Result};
-use crate::rotation::axis_angle::{rodrigues, rotation_axis_unchecked};
+use crate::rotation::axis_angle::rotation_axis_unchecked;
 use crate::rotation::euler::{euler_to_matrix_unchecked, matrix_to_euler_unchecked, EulerSequence};
 use crate::rotation::euler_kinematics::{angular_velocity_unchecked, euler_rates_checked_input, Frame};
 use crate::rotation::matrix::{rotation_defects, rotation_verdict, row_major, ROTATION_TOL};

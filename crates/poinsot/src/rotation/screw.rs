@@ -40,6 +40,14 @@ impl Screw {
         let r = rodrigues(&self.axis, self.angle);
         (r, self.point - r * self.point + self.slide * self.axis)
     }
+
+    /// Applies the screw motion to point `x`: `point + R (x − point) + slide · axis`, i.e.
+    /// `R x + t` of the displacement it was built from. Errors: non-finite `x` (naming `"x"`).
+    pub fn apply(&self, x: &Vec3) -> Result<Vec3> {
+        check_finite("x", x.as_slice())?;
+        let r = rodrigues(&self.axis, self.angle);
+        Ok(self.point + r * (x - self.point) + self.slide * self.axis)
+    }
 }
 
 /// Chasles' theorem: the screw of the displacement `x ↦ R x + t`.
@@ -99,6 +107,8 @@ mod tests {
         assert!(s.point.dot(&s.axis).abs() < 1e-15);
         let (r2, t2) = s.displacement();
         assert!((r2 - r).norm() < 1e-14 && (t2 - t).norm() < 1e-14);
+        let x = Vec3::new(-0.4, 0.9, 2.2);
+        assert!((s.apply(&x).unwrap() - (r * x + t)).norm() < 1e-14);
     }
 
     #[test]
