@@ -73,7 +73,10 @@ fn matrix_to_euler<'py>(
 /// Rotation matrices `(N, 3, 3)` → quaternions `(N, 4)`, `[w, x, y, z]`, `w >= 0`.
 #[pyfunction]
 #[allow(non_snake_case)]
-fn matrix_to_quaternion<'py>(py: Python<'py>, R: PyReadonlyArrayDyn<'py, f64>) -> PyResult<Out<'py>> {
+fn matrix_to_quaternion<'py>(
+    py: Python<'py>,
+    R: PyReadonlyArrayDyn<'py, f64>,
+) -> PyResult<Out<'py>> {
     let (m, n) = records("R", &R, &[3, 3])?;
     batch(py, &[n, 4], |out| rot::matrix_to_quaternion_batch(m, out))
 }
@@ -189,13 +192,7 @@ fn screw_axis<'py>(
     let t = vec3("t", &t)?;
     let m = poinsot::Mat3::from_row_slice(&r.concat());
     let s = rot::screw_axis(&m, &Vec3::from(t)).py()?;
-    Ok((
-        vec3_out(py, s.axis.into()),
-        vec3_out(py, s.point.into()),
-        s.angle,
-        s.slide,
-        s.pitch,
-    ))
+    Ok((vec3_out(py, s.axis.into()), vec3_out(py, s.point.into()), s.angle, s.slide, s.pitch))
 }
 
 /// The screw `(axis, point, angle, slide)` as a core `Screw` (checked: unit axis, finite).
@@ -228,7 +225,11 @@ fn screw_displacement<'py>(
     slide: f64,
 ) -> PyResult<(Bound<'py, numpy::PyArray2<f64>>, Bound<'py, PyArray1<f64>>)> {
     let (r, t) = screw_from_parts(&axis, &point, angle, slide)?.displacement();
-    let rows = [[r[(0, 0)], r[(0, 1)], r[(0, 2)]], [r[(1, 0)], r[(1, 1)], r[(1, 2)]], [r[(2, 0)], r[(2, 1)], r[(2, 2)]]];
+    let rows = [
+        [r[(0, 0)], r[(0, 1)], r[(0, 2)]],
+        [r[(1, 0)], r[(1, 1)], r[(1, 2)]],
+        [r[(2, 0)], r[(2, 1)], r[(2, 2)]],
+    ];
     Ok((mat3_out(py, rows), vec3_out(py, t.into())))
 }
 

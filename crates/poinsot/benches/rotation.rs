@@ -55,8 +55,13 @@ fn singles(c: &mut Criterion) {
     });
     c.bench_function("euler_rates single", |b| {
         b.iter(|| {
-            euler_rates(black_box([0.3, 1.1, -2.0]), &Vec3::new(1.0, 2.0, 3.0), EulerSequence::UNIT, Frame::Body)
-                .unwrap()
+            euler_rates(
+                black_box([0.3, 1.1, -2.0]),
+                &Vec3::new(1.0, 2.0, 3.0),
+                EulerSequence::UNIT,
+                Frame::Body,
+            )
+            .unwrap()
         })
     });
 }

@@ -22,7 +22,7 @@ const H: f64 = 1e-5;
 const FD_TOL: f64 = 1e-8;
 
 fn config() -> Config {
-    Config { cases: 512, rng_seed: RngSeed::Fixed(0x5eed_2_98), ..Config::default() }
+    Config { cases: 512, rng_seed: RngSeed::Fixed(2_98_99), ..Config::default() }
 }
 
 fn max_abs(m: &Mat3) -> f64 {
@@ -81,10 +81,10 @@ fn unit() -> impl Strategy<Value = f64> {
 }
 
 fn any_rotation() -> impl Strategy<Value = Mat3> {
-    (-1.0f64..1.0, -1.0f64..1.0, -1.0f64..1.0, -4.0f64..4.0).prop_filter_map(
-        "non-zero axis",
-        |(x, y, z, a)| axis_angle_to_matrix(&Vec3::new(x, y, z), a).ok(),
-    )
+    (-1.0f64..1.0, -1.0f64..1.0, -1.0f64..1.0, -4.0f64..4.0)
+        .prop_filter_map("non-zero axis", |(x, y, z, a)| {
+            axis_angle_to_matrix(&Vec3::new(x, y, z), a).ok()
+        })
 }
 
 proptest! {
@@ -264,16 +264,14 @@ fn unit_eq_2_99_pinned() {
         let w = body_angular_velocity([phi, theta, psi], [dphi, dtheta, dpsi], EulerSequence::UNIT)
             .unwrap();
         let (st, ct, sp, cp) = (f64::sin(theta), f64::cos(theta), f64::sin(psi), f64::cos(psi));
-        let expected = Vec3::new(
-            dphi * st * sp + dtheta * cp,
-            dphi * st * cp - dtheta * sp,
-            dphi * ct + dpsi,
-        );
+        let expected =
+            Vec3::new(dphi * st * sp + dtheta * cp, dphi * st * cp - dtheta * sp, dphi * ct + dpsi);
         assert!((w - expected).norm() < 1e-14, "{w} vs {expected}");
         // 2.98: components along the line of nodes ξ, η and ζ (= body 3).
         let r_xi = rot_z(phi) * rot_x(theta);
-        let w_space = space_angular_velocity([phi, theta, psi], [dphi, dtheta, dpsi], EulerSequence::UNIT)
-            .unwrap();
+        let w_space =
+            space_angular_velocity([phi, theta, psi], [dphi, dtheta, dpsi], EulerSequence::UNIT)
+                .unwrap();
         let w_xi = r_xi.transpose() * w_space;
         let expected_298 = Vec3::new(dtheta, dphi * st, dpsi + dphi * ct);
         assert!((w_xi - expected_298).norm() < 1e-14, "{w_xi} vs {expected_298}");

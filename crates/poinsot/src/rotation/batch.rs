@@ -13,7 +13,9 @@ use rayon::prelude::*;
 use crate::error::{check_finite, Error, Result};
 use crate::rotation::axis_angle::rotation_axis_unchecked;
 use crate::rotation::euler::{euler_to_matrix_unchecked, matrix_to_euler_unchecked, EulerSequence};
-use crate::rotation::euler_kinematics::{angular_velocity_unchecked, euler_rates_checked_input, Frame};
+use crate::rotation::euler_kinematics::{
+    angular_velocity_unchecked, euler_rates_checked_input, Frame,
+};
 use crate::rotation::matrix::{rotation_defects, rotation_verdict, row_major, ROTATION_TOL};
 use crate::rotation::quaternion::{
     check_quaternion, hamilton, matrix_to_quaternion_unchecked, quaternion_to_matrix_unchecked,
@@ -165,7 +167,11 @@ pub fn matrix_to_quaternion_batch(matrices: &[f64], out: &mut [f64]) -> Result<(
 
 /// Quaternions (`quaternions`: N×4, `[w, x, y, z]`) → rotation matrices (`out`: N×9,
 /// row-major), as [`crate::rotation::quaternion_to_matrix`]. Errors name `"q"`.
-pub fn quaternion_to_matrix_batch(quaternions: &[f64], normalize: bool, out: &mut [f64]) -> Result<()> {
+pub fn quaternion_to_matrix_batch(
+    quaternions: &[f64],
+    normalize: bool,
+    out: &mut [f64],
+) -> Result<()> {
     let n = records("q", quaternions, 4)?;
     check_out(out.len(), n, 9)?;
     drive::<9, _>(n, out, |k, y| {
@@ -229,7 +235,10 @@ pub fn axis_angle_to_matrix_batch(axes: &[f64], angles: &[f64], out: &mut [f64])
 pub fn rotate_vectors_batch(matrices: &[f64], vectors: &[f64], out: &mut [f64]) -> Result<()> {
     let n = records("R", matrices, 9)?;
     if records("v", vectors, 3)? != n {
-        return Err(Error::invalid("v", format!("must hold as many vectors as R has matrices ({n})")));
+        return Err(Error::invalid(
+            "v",
+            format!("must hold as many vectors as R has matrices ({n})"),
+        ));
     }
     check_out(out.len(), n, 3)?;
     drive::<3, _>(n, out, |k, y| {
@@ -250,7 +259,8 @@ pub fn check_rotation_matrix_batch(matrices: &[f64], tol: f64) -> Result<()> {
         return Err(Error::invalid("tol", format!("must be finite and >= 0, got {tol}")));
     }
     let n = records("R", matrices, 9)?;
-    let check = |k: usize| check_matrix("R", rec::<9>(matrices, k), tol).map_err(|e| at_index(e, k));
+    let check =
+        |k: usize| check_matrix("R", rec::<9>(matrices, k), tol).map_err(|e| at_index(e, k));
     if n < PARALLEL_MIN {
         return (0..n).try_for_each(check);
     }
@@ -318,11 +328,13 @@ mod tests {
     fn batch_equals_single_and_reports_first_bad_index() {
         let seq = EulerSequence::new("yzx", false).unwrap();
         let n = PARALLEL_MIN + 17;
-        let angles: Vec<f64> = (0..3 * n).map(|i| ((i * 7919) % 1000) as f64 * 0.006 - 3.0).collect();
+        let angles: Vec<f64> =
+            (0..3 * n).map(|i| ((i * 7919) % 1000) as f64 * 0.006 - 3.0).collect();
         let mut mats = vec![0.0; 9 * n];
         euler_to_matrix_batch(seq, &angles, &mut mats).unwrap();
         let k = n - 5;
-        let single = euler_to_matrix([angles[3 * k], angles[3 * k + 1], angles[3 * k + 2]], seq).unwrap();
+        let single =
+            euler_to_matrix([angles[3 * k], angles[3 * k + 1], angles[3 * k + 2]], seq).unwrap();
         assert_eq!(&mats[9 * k..9 * k + 9], &row_major(&single));
         let mut back = vec![0.0; 3 * n];
         let mut locked = vec![false; n];
@@ -334,6 +346,9 @@ mod tests {
         mats[9 * 4000 + 4] = f64::NAN;
         let err = matrix_to_euler_batch(seq, &mats, &mut back, &mut locked).unwrap_err();
         assert!(err.message.ends_with("(at flat index 300)"), "{err}");
-        assert!(check_rotation_matrix_batch(&mats, 1e-9).unwrap_err().message.contains("index 300"));
+        assert!(check_rotation_matrix_batch(&mats, 1e-9)
+            .unwrap_err()
+            .message
+            .contains("index 300"));
     }
 }

@@ -25,7 +25,9 @@
 use std::f64::consts::{PI, TAU};
 
 use crate::error::{check_finite, Error, Result};
-use crate::rotation::matrix::{check_rotation_matrix, elementary_rotation, row_major, ROTATION_TOL};
+use crate::rotation::matrix::{
+    check_rotation_matrix, elementary_rotation, row_major, ROTATION_TOL,
+};
 use crate::Mat3;
 
 /// Gimbal lock in [`matrix_to_euler`]: the middle angle's `|sin β|` (proper Euler) or `|cos β|`
@@ -173,7 +175,7 @@ impl EulerSequence {
 
     /// `a` (angles, rates, Jacobian columns) in the order of the equivalent intrinsic sequence:
     /// reversed if extrinsic. The map is its own inverse.
-    pub(crate) fn to_intrinsic_order<T: Copy>(&self, a: [T; 3]) -> [T; 3] {
+    pub(crate) fn in_intrinsic_order<T: Copy>(&self, a: [T; 3]) -> [T; 3] {
         if self.intrinsic {
             a
         } else {
@@ -211,7 +213,7 @@ pub fn euler_to_matrix(angles: [f64; 3], seq: EulerSequence) -> Result<Mat3> {
 /// [`euler_to_matrix`] without the finiteness check (the batch kernel checks first).
 pub(crate) fn euler_to_matrix_unchecked(angles: [f64; 3], seq: EulerSequence) -> Mat3 {
     let [a, b, c] = seq.intrinsic_axes();
-    let [al, be, ga] = seq.to_intrinsic_order(angles);
+    let [al, be, ga] = seq.in_intrinsic_order(angles);
     elementary_rotation(a, al) * elementary_rotation(b, be) * elementary_rotation(c, ga)
 }
 
@@ -262,11 +264,8 @@ pub(crate) fn matrix_to_euler_unchecked(m: &[f64; 9], seq: EulerSequence) -> Eul
     let sigma = [i, j, l];
     let eps = parity(i, j);
     let at = |a: usize, b: usize| m[3 * sigma[a] + sigma[b]];
-    let (mut e, lock) = if proper {
-        canonical_xyx(&at, zero_first)
-    } else {
-        canonical_xyz(&at, zero_first)
-    };
+    let (mut e, lock) =
+        if proper { canonical_xyx(&at, zero_first) } else { canonical_xyz(&at, zero_first) };
     if eps < 0.0 {
         e = if !proper || lock {
             // Tait–Bryan: (−α, −β, −γ) is in range. Proper at lock: one of α, γ is 0 and
@@ -277,7 +276,7 @@ pub(crate) fn matrix_to_euler_unchecked(m: &[f64; 9], seq: EulerSequence) -> Eul
             [wrap(PI - e[0]), e[1], wrap(PI - e[2])]
         };
     }
-    EulerAngles { angles: seq.to_intrinsic_order(e), gimbal_lock: lock }
+    EulerAngles { angles: seq.in_intrinsic_order(e), gimbal_lock: lock }
 }
 
 /// Angles of `M = R_x(α) R_y(β) R_x(γ)`, β in [0, π].

@@ -65,8 +65,8 @@ fn intrinsic_columns(axes: [usize; 3], angles: [f64; 3], frame: Frame) -> [Vec3;
 /// sequence's name, rad/s). Errors: non-finite angles (naming `"angles"`).
 pub fn angular_velocity_matrix(angles: [f64; 3], seq: EulerSequence, frame: Frame) -> Result<Mat3> {
     check_finite("angles", &angles)?;
-    let cols = intrinsic_columns(seq.intrinsic_axes(), seq.to_intrinsic_order(angles), frame);
-    let cols = seq.to_intrinsic_order(cols);
+    let cols = intrinsic_columns(seq.intrinsic_axes(), seq.in_intrinsic_order(angles), frame);
+    let cols = seq.in_intrinsic_order(cols);
     Ok(Mat3::from_columns(&cols))
 }
 
@@ -92,13 +92,17 @@ pub(crate) fn angular_velocity_unchecked(
     seq: EulerSequence,
     frame: Frame,
 ) -> Vec3 {
-    let cols = intrinsic_columns(seq.intrinsic_axes(), seq.to_intrinsic_order(angles), frame);
-    let r = seq.to_intrinsic_order(rates);
+    let cols = intrinsic_columns(seq.intrinsic_axes(), seq.in_intrinsic_order(angles), frame);
+    let r = seq.in_intrinsic_order(rates);
     cols[0] * r[0] + cols[1] * r[1] + cols[2] * r[2]
 }
 
 /// Body-frame angular velocity (rad/s): for the unit's intrinsic `zxz` this is eq. 2.99.
-pub fn body_angular_velocity(angles: [f64; 3], rates: [f64; 3], seq: EulerSequence) -> Result<Vec3> {
+pub fn body_angular_velocity(
+    angles: [f64; 3],
+    rates: [f64; 3],
+    seq: EulerSequence,
+) -> Result<Vec3> {
     angular_velocity(angles, rates, seq, Frame::Body)
 }
 
@@ -138,7 +142,7 @@ pub(crate) fn euler_rates_checked_input(
     frame: Frame,
 ) -> Result<[f64; 3]> {
     let axes = seq.intrinsic_axes();
-    let ang = seq.to_intrinsic_order(angles);
+    let ang = seq.in_intrinsic_order(angles);
     let beta = ang[1];
     let (s, c) = beta.sin_cos();
     // det J = −sin β (proper) or ε cos β (Tait–Bryan, ε = parity of the intrinsic axes), for
@@ -166,8 +170,12 @@ pub(crate) fn euler_rates_checked_input(
         ));
     }
     let [c1, c2, c3] = intrinsic_columns(axes, ang, frame);
-    let rates = [c2.cross(&c3).dot(omega) / det, c3.cross(&c1).dot(omega) / det, c1.cross(&c2).dot(omega) / det];
-    Ok(seq.to_intrinsic_order(rates))
+    let rates = [
+        c2.cross(&c3).dot(omega) / det,
+        c3.cross(&c1).dot(omega) / det,
+        c1.cross(&c2).dot(omega) / det,
+    ];
+    Ok(seq.in_intrinsic_order(rates))
 }
 
 #[cfg(test)]
@@ -195,12 +203,18 @@ mod tests {
 
     #[test]
     fn gimbal_lock_is_an_error_naming_the_angle() {
-        let e = euler_rates([0.3, std::f64::consts::PI, 0.1], &Vec3::x(), EulerSequence::UNIT, Frame::Body)
-            .unwrap_err();
+        let e = euler_rates(
+            [0.3, std::f64::consts::PI, 0.1],
+            &Vec3::x(),
+            EulerSequence::UNIT,
+            Frame::Body,
+        )
+        .unwrap_err();
         assert_eq!(e.kind, ErrorKind::GimbalLock);
         assert!(e.to_string().starts_with("angles: ") && e.message.contains("angles[1]"), "{e}");
         let xyz = EulerSequence::new("xyz", false).unwrap();
-        let e = euler_rates([0.3, -std::f64::consts::FRAC_PI_2, 0.1], &Vec3::x(), xyz, Frame::Space);
+        let e =
+            euler_rates([0.3, -std::f64::consts::FRAC_PI_2, 0.1], &Vec3::x(), xyz, Frame::Space);
         assert_eq!(e.unwrap_err().kind, ErrorKind::GimbalLock);
     }
 }

@@ -112,7 +112,7 @@ pub(crate) fn rotation_defects(m: &[f64; 9]) -> (f64, f64) {
 /// The error (if any) for a matrix with orthonormality defect `defect` and determinant `det`.
 /// NaN defects (non-finite input) are reported as non-orthonormal.
 pub(crate) fn rotation_verdict(argument: &str, defect: f64, det: f64, tol: f64) -> Result<()> {
-    if !(defect <= tol) {
+    if defect.is_nan() || defect > tol {
         let extra = if det < 0.0 { " (and det < 0: it also reflects)" } else { "" };
         return Err(Error::rotation(
             argument,
@@ -122,8 +122,9 @@ pub(crate) fn rotation_verdict(argument: &str, defect: f64, det: f64, tol: f64) 
             ),
         ));
     }
-    if !((det - 1.0).abs() <= tol) {
-        let what = if det < 0.0 { "a reflection (improper), not a proper rotation" } else { "not +1" };
+    if det.is_nan() || (det - 1.0).abs() > tol {
+        let what =
+            if det < 0.0 { "a reflection (improper), not a proper rotation" } else { "not +1" };
         return Err(Error::rotation(
             argument,
             format!(
@@ -138,7 +139,17 @@ pub(crate) fn rotation_verdict(argument: &str, defect: f64, det: f64, tol: f64) 
 
 /// Row-major copy of a nalgebra (column-major) matrix.
 pub(crate) fn row_major(r: &Mat3) -> [f64; 9] {
-    [r[(0, 0)], r[(0, 1)], r[(0, 2)], r[(1, 0)], r[(1, 1)], r[(1, 2)], r[(2, 0)], r[(2, 1)], r[(2, 2)]]
+    [
+        r[(0, 0)],
+        r[(0, 1)],
+        r[(0, 2)],
+        r[(1, 0)],
+        r[(1, 1)],
+        r[(1, 2)],
+        r[(2, 0)],
+        r[(2, 1)],
+        r[(2, 2)],
+    ]
 }
 
 /// A nalgebra matrix from row-major entries.

@@ -40,8 +40,8 @@ pub use euler_kinematics::{
     space_angular_velocity, Frame, RATES_LOCK_TOL,
 };
 pub use matrix::{
-    check_rotation_matrix, check_rotation_matrix_named, compose, elementary_rotation,
-    rotate_vectors, rot_x, rot_y, rot_z, ROTATION_TOL,
+    check_rotation_matrix, check_rotation_matrix_named, compose, elementary_rotation, rot_x, rot_y,
+    rot_z, rotate_vectors, ROTATION_TOL,
 };
 pub use quaternion::{
     check_quaternion, matrix_to_quaternion, quaternion_multiply, quaternion_normalize,

@@ -80,7 +80,13 @@ pub fn screw_axis(r: &Mat3, t: &Vec3) -> Result<Screw> {
                 pitch: 0.0,
             }
         } else {
-            Screw { axis: t / len, point: Vec3::zeros(), angle: 0.0, slide: len, pitch: f64::INFINITY }
+            Screw {
+                axis: t / len,
+                point: Vec3::zeros(),
+                angle: 0.0,
+                slide: len,
+                pitch: f64::INFINITY,
+            }
         });
     }
     let slide = n.dot(t);
