@@ -99,6 +99,13 @@ def _rotations(value: Any, name: str = "R") -> tuple[FloatArray, tuple[int, ...]
     return _records(value, name, (3, 3))
 
 
+def _tol(tol: Any) -> float:
+    try:
+        return float(tol)
+    except (TypeError, ValueError):
+        raise PoinsotError(f"tol: must be a real number, got {tol!r}") from None
+
+
 def _broadcast(*items: tuple[Any, str, tuple[int, ...]]) -> tuple[list[FloatArray], tuple[int, ...]]:
     """Broadcasts several arrays over their leading dimensions; returns flat ``(N, *tail)``
     C-contiguous arrays and the common leading shape."""
@@ -123,6 +130,17 @@ def _broadcast(*items: tuple[Any, str, tuple[int, ...]]) -> tuple[list[FloatArra
         np.ascontiguousarray(np.broadcast_to(a, lead + t).reshape((-1, *t))) for a, _, t in arrays
     ]
     return out, lead
+
+
+def _run(lead: tuple[int, ...], fn: Any, *args: Any) -> Any:
+    """Calls the core; for a single record (empty leading shape) drops the batch index that the
+    core appends to error messages, which would only confuse there."""
+    try:
+        return fn(*args)
+    except PoinsotError as exc:
+        if lead:
+            raise
+        raise type(exc)(str(exc).replace(" (at flat index 0)", "")) from None
 
 
 # ---- Euler angles --------------------------------------------------------------------------
@@ -163,7 +181,7 @@ def euler_to_matrix(
     flat, lead = _records(angles, "angles", (3,))
     if _flag(degrees, "degrees"):
         flat = flat * _DEG
-    out = _core.euler_to_matrix(flat, _seq(seq), _flag(intrinsic, "intrinsic"))
+    out = _run(lead, _core.euler_to_matrix, flat, _seq(seq), _flag(intrinsic, "intrinsic"))
     return out.reshape(lead + (3, 3))
 
 
@@ -202,7 +220,7 @@ def matrix_to_euler(
         ``R`` is not a proper rotation (names ``R`` and the failing condition).
     """
     flat, lead = _rotations(R)
-    out, locked = _core.matrix_to_euler(flat, _seq(seq), _flag(intrinsic, "intrinsic"))
+    out, locked = _run(lead, _core.matrix_to_euler, flat, _seq(seq), _flag(intrinsic, "intrinsic"))
     count = int(np.count_nonzero(locked))
     if count:
         first = int(np.flatnonzero(locked)[0])
@@ -246,7 +264,7 @@ def rotation_axis(R: Any) -> tuple[FloatArray, Union[float, FloatArray]]:
         Angle in rad, in [0, pi]. A plain float for a single rotation.
     """
     flat, lead = _rotations(R)
-    out = _core.rotation_axis(flat)
+    out = _run(lead, _core.rotation_axis, flat)
     if not lead:
         return out[0, :3].copy(), float(out[0, 3])
     return out[:, :3].reshape(lead + (3,)), out[:, 3].reshape(lead)
@@ -277,7 +295,7 @@ def axis_angle_to_matrix(axis: Any, angle: Any, *, degrees: bool = False) -> Flo
     (ax, an), lead = _broadcast((axis, "axis", (3,)), (angle, "angle", ()))
     if _flag(degrees, "degrees"):
         an = an * _DEG
-    return _core.axis_angle_to_matrix(ax, an).reshape(lead + (3, 3))
+    return _run(lead, _core.axis_angle_to_matrix, ax, an).reshape(lead + (3, 3))
 
 
 # ---- Chasles' theorem ----------------------------------------------------------------------
@@ -380,7 +398,7 @@ def _angular_velocity(
     (a, r), lead = _broadcast((angles, "angles", (3,)), (rates, "rates", (3,)))
     if _flag(degrees, "degrees"):
         a, r = a * _DEG, r * _DEG
-    out = _core.angular_velocity(a, r, _seq(seq), _flag(intrinsic, "intrinsic"), frame)
+    out = _run(lead, _core.angular_velocity, a, r, _seq(seq), _flag(intrinsic, "intrinsic"), frame)
     return out.reshape(lead + (3,))
 
 
@@ -491,7 +509,7 @@ def euler_rates(
     deg = _flag(degrees, "degrees")
     if deg:
         a = a * _DEG
-    out = _core.euler_rates(a, w, _seq(seq), _flag(intrinsic, "intrinsic"), frame)
+    out = _run(lead, _core.euler_rates, a, w, _seq(seq), _flag(intrinsic, "intrinsic"), frame)
     if deg:
         np.multiply(out, 1.0 / _DEG, out=out)
     return out.reshape(lead + (3,))
@@ -517,7 +535,7 @@ def matrix_to_quaternion(R: Any) -> FloatArray:
         ``[w, x, y, z]``.
     """
     flat, lead = _rotations(R)
-    return _core.matrix_to_quaternion(flat).reshape(lead + (4,))
+    return _run(lead, _core.matrix_to_quaternion, flat).reshape(lead + (4,))
 
 
 def quaternion_to_matrix(q: Any, *, normalize: bool = False) -> FloatArray:
@@ -543,7 +561,8 @@ def quaternion_to_matrix(q: Any, *, normalize: bool = False) -> FloatArray:
         A zero quaternion, or a non-unit one without ``normalize`` (names ``q``).
     """
     flat, lead = _records(q, "q", (4,))
-    return _core.quaternion_to_matrix(flat, _flag(normalize, "normalize")).reshape(lead + (3, 3))
+    norm = _flag(normalize, "normalize")
+    return _run(lead, _core.quaternion_to_matrix, flat, norm).reshape(lead + (3, 3))
 
 
 def quaternion_multiply(p: Any, q: Any) -> FloatArray:
@@ -554,7 +573,7 @@ def quaternion_multiply(p: Any, q: Any) -> FloatArray:
     Not normalised. ``p`` (..., 4) and ``q`` (..., 4) broadcast; returns (..., 4).
     """
     (a, b), lead = _broadcast((p, "p", (4,)), (q, "q", (4,)))
-    return _core.quaternion_multiply(a, b).reshape(lead + (4,))
+    return _run(lead, _core.quaternion_multiply, a, b).reshape(lead + (4,))
 
 
 def rotate_vectors(R: Any, v: Any) -> FloatArray:
@@ -575,7 +594,7 @@ def rotate_vectors(R: Any, v: Any) -> FloatArray:
         flat, rlead = _rotations(R)
         R = flat.reshape(rlead + (3, 3))
     (m, x), lead = _broadcast((R, "R", (3, 3)), (v, "v", (3,)))
-    return _core.rotate_vectors(m, x).reshape(lead + (3,))
+    return _run(lead, _core.rotate_vectors, m, x).reshape(lead + (3,))
 
 
 def check_rotation_matrix(R: Any, *, tol: float = 1e-9) -> FloatArray:
@@ -603,7 +622,7 @@ def check_rotation_matrix(R: Any, *, tol: float = 1e-9) -> FloatArray:
         Non-finite entries or a wrong shape.
     """
     flat, lead = _rotations(R)
-    _core.check_rotation_matrix(flat, float(tol))
+    _run(lead, _core.check_rotation_matrix, flat, _tol(tol))
     return flat.reshape(lead + (3, 3))
 
 
