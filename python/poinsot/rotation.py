@@ -305,7 +305,7 @@ def _fmt(v: FloatArray) -> str:
     return "[" + ", ".join(f"{x:.6g}" for x in v) + "]"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Screw:
     """The screw of a rigid displacement ``x -> R @ x + t`` (Chasles' theorem).
 
@@ -340,6 +340,17 @@ class Screw:
             f"Screw(axis={_fmt(self.axis)}, point={_fmt(self.point)} m, "
             f"angle={self.angle:.6g} rad, slide={self.slide:.6g} m, pitch={self.pitch:.6g} m/rad)"
         )
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Screw):
+            return NotImplemented
+        return (
+            np.array_equal(self.axis, other.axis)
+            and np.array_equal(self.point, other.point)
+            and (self.angle, self.slide, self.pitch) == (other.angle, other.slide, other.pitch)
+        )
+
+    __hash__ = None  # type: ignore[assignment]  # holds arrays
 
     def displacement(self) -> tuple[FloatArray, FloatArray]:
         """The displacement ``(R, t)`` of this screw: ``R`` (3, 3) is the rotation by ``angle``

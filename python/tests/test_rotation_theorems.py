@@ -183,6 +183,7 @@ def test_screw_is_frozen_and_checks_input() -> None:
         s.angle = 1.0  # type: ignore[misc]
     with pytest.raises(ValueError):
         s.axis[0] = 2.0
+    assert s == screw_axis(np.eye(3), [1.0, 0, 0]) and s != screw_axis(np.eye(3), [2.0, 0, 0])
 
 
 @pytest.mark.parametrize(
