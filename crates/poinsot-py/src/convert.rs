@@ -47,3 +47,27 @@ pub fn mat3_out<'py>(py: Python<'py>, m: [[f64; 3]; 3]) -> Bound<'py, PyArray2<f
     PyArray2::from_vec2(py, &m.iter().map(|r| r.to_vec()).collect::<Vec<_>>())
         .expect("3x3 rows have equal length")
 }
+
+/// A C-contiguous float array of shape `(N, *tail)` → its flat data and `N` (for the batch
+/// kernels of the core). The error names `argument` and the expected shape.
+pub fn records<'a>(
+    argument: &str,
+    a: &'a numpy::PyReadonlyArrayDyn<'_, f64>,
+    tail: &[usize],
+) -> PyResult<(&'a [f64], usize)> {
+    let shape = a.shape();
+    if shape.len() != tail.len() + 1 || shape[1..] != *tail {
+        let want: Vec<String> = tail.iter().map(|d| d.to_string()).collect();
+        return Err(invalid(
+            argument,
+            format!("must have shape (N, {}), got {shape:?}", want.join(", ")),
+        ));
+    }
+    let data = a.as_slice().map_err(|_| invalid(argument, "must be a C-contiguous array"))?;
+    Ok((data, shape[0]))
+}
+
+/// A new zero-filled float64 array of shape `dims` (an output buffer for a batch kernel).
+pub fn zeros<'py>(py: Python<'py>, dims: &[usize]) -> Bound<'py, numpy::PyArrayDyn<f64>> {
+    numpy::PyArrayDyn::<f64>::zeros(py, numpy::IxDyn(dims), false)
+}

@@ -1,7 +1,276 @@
 //! Bindings of `poinsot::rotation` (conversion and error mapping only).
+//!
+//! Every function takes C-contiguous float64 batches `(N, ...)` prepared by
+//! `python/poinsot/rotation.py` (which broadcasts leading dimensions, handles degrees and scipy
+//! rotations) and returns new arrays; the GIL is released while the core computes.
+use numpy::{PyArray1, PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn};
+use poinsot::rotation::{self as rot, EulerSequence, Frame};
+use poinsot::Vec3;
 use pyo3::prelude::*;
 
+use crate::convert::{mat3, mat3_out, records, rows3, vec3, vec3_out, zeros};
+use crate::errors::{invalid, IntoPy};
+
+type Out<'py> = Bound<'py, PyArrayDyn<f64>>;
+
+fn frame(name: &str) -> PyResult<Frame> {
+    match name {
+        "body" => Ok(Frame::Body),
+        "space" => Ok(Frame::Space),
+        _ => Err(invalid("frame", format!("must be 'body' or 'space', got {name:?}"))),
+    }
+}
+
+/// Runs `kernel(input, out)` with the GIL released, into a new array of shape `dims`.
+fn batch<'py>(
+    py: Python<'py>,
+    dims: &[usize],
+    kernel: impl FnOnce(&mut [f64]) -> poinsot::Result<()> + Send,
+) -> PyResult<Out<'py>> {
+    let out = zeros(py, dims);
+    {
+        let mut rw = out.readwrite();
+        let slice = rw.as_slice_mut().map_err(|_| invalid("out", "not contiguous"))?;
+        py.detach(|| kernel(slice)).py()?;
+    }
+    Ok(out)
+}
+
+/// Euler angles `(N, 3)` (rad) → rotation matrices `(N, 3, 3)`.
+#[pyfunction]
+fn euler_to_matrix<'py>(
+    py: Python<'py>,
+    angles: PyReadonlyArrayDyn<'py, f64>,
+    seq: &str,
+    intrinsic: bool,
+) -> PyResult<Out<'py>> {
+    let seq = EulerSequence::new(seq, intrinsic).py()?;
+    let (a, n) = records("angles", &angles, &[3])?;
+    batch(py, &[n, 3, 3], |out| rot::euler_to_matrix_batch(seq, a, out))
+}
+
+/// Rotation matrices `(N, 3, 3)` → Euler angles `(N, 3)` (rad) and gimbal-lock flags `(N,)`.
+#[pyfunction]
+#[allow(non_snake_case)]
+fn matrix_to_euler<'py>(
+    py: Python<'py>,
+    R: PyReadonlyArrayDyn<'py, f64>,
+    seq: &str,
+    intrinsic: bool,
+) -> PyResult<(Out<'py>, Bound<'py, PyArray1<bool>>)> {
+    let seq = EulerSequence::new(seq, intrinsic).py()?;
+    let (m, n) = records("R", &R, &[3, 3])?;
+    let out = zeros(py, &[n, 3]);
+    let mut locked = vec![false; n];
+    {
+        let mut rw = out.readwrite();
+        let slice = rw.as_slice_mut().map_err(|_| invalid("out", "not contiguous"))?;
+        py.detach(|| rot::matrix_to_euler_batch(seq, m, slice, &mut locked)).py()?;
+    }
+    Ok((out, PyArray1::from_vec(py, locked)))
+}
+
+/// Rotation matrices `(N, 3, 3)` → quaternions `(N, 4)`, `[w, x, y, z]`, `w >= 0`.
+#[pyfunction]
+#[allow(non_snake_case)]
+fn matrix_to_quaternion<'py>(
+    py: Python<'py>,
+    R: PyReadonlyArrayDyn<'py, f64>,
+) -> PyResult<Out<'py>> {
+    let (m, n) = records("R", &R, &[3, 3])?;
+    batch(py, &[n, 4], |out| rot::matrix_to_quaternion_batch(m, out))
+}
+
+/// Quaternions `(N, 4)` `[w, x, y, z]` → rotation matrices `(N, 3, 3)`.
+#[pyfunction]
+fn quaternion_to_matrix<'py>(
+    py: Python<'py>,
+    q: PyReadonlyArrayDyn<'py, f64>,
+    normalize: bool,
+) -> PyResult<Out<'py>> {
+    let (d, n) = records("q", &q, &[4])?;
+    batch(py, &[n, 3, 3], |out| rot::quaternion_to_matrix_batch(d, normalize, out))
+}
+
+/// Hamilton products of quaternions `(N, 4)` and `(N, 4)` → `(N, 4)`.
+#[pyfunction]
+fn quaternion_multiply<'py>(
+    py: Python<'py>,
+    p: PyReadonlyArrayDyn<'py, f64>,
+    q: PyReadonlyArrayDyn<'py, f64>,
+) -> PyResult<Out<'py>> {
+    let (a, n) = records("p", &p, &[4])?;
+    let (b, _) = records("q", &q, &[4])?;
+    batch(py, &[n, 4], |out| rot::quaternion_multiply_batch(a, b, out))
+}
+
+/// Rotation matrices `(N, 3, 3)` → `(N, 4)` records `[n_x, n_y, n_z, angle]`.
+#[pyfunction]
+#[allow(non_snake_case)]
+fn rotation_axis<'py>(py: Python<'py>, R: PyReadonlyArrayDyn<'py, f64>) -> PyResult<Out<'py>> {
+    let (m, n) = records("R", &R, &[3, 3])?;
+    batch(py, &[n, 4], |out| rot::rotation_axis_batch(m, out))
+}
+
+/// Axes `(N, 3)` and angles `(N,)` (rad) → rotation matrices `(N, 3, 3)`.
+#[pyfunction]
+fn axis_angle_to_matrix<'py>(
+    py: Python<'py>,
+    axis: PyReadonlyArrayDyn<'py, f64>,
+    angle: PyReadonlyArrayDyn<'py, f64>,
+) -> PyResult<Out<'py>> {
+    let (a, n) = records("axis", &axis, &[3])?;
+    let (t, _) = records("angle", &angle, &[])?;
+    batch(py, &[n, 3, 3], |out| rot::axis_angle_to_matrix_batch(a, t, out))
+}
+
+/// `R_k v_k` for matrices `(N, 3, 3)` and vectors `(N, 3)` → `(N, 3)`.
+#[pyfunction]
+#[allow(non_snake_case)]
+fn rotate_vectors<'py>(
+    py: Python<'py>,
+    R: PyReadonlyArrayDyn<'py, f64>,
+    v: PyReadonlyArrayDyn<'py, f64>,
+) -> PyResult<Out<'py>> {
+    let (m, n) = records("R", &R, &[3, 3])?;
+    let (x, _) = records("v", &v, &[3])?;
+    batch(py, &[n, 3], |out| rot::rotate_vectors_batch(m, x, out))
+}
+
+/// Checks matrices `(N, 3, 3)` are rotations within `tol`; raises `InvalidRotationError`.
+#[pyfunction]
+#[allow(non_snake_case)]
+fn check_rotation_matrix(py: Python<'_>, R: PyReadonlyArrayDyn<'_, f64>, tol: f64) -> PyResult<()> {
+    let (m, _) = records("R", &R, &[3, 3])?;
+    py.detach(|| rot::check_rotation_matrix_batch(m, tol)).py()
+}
+
+/// Angular velocities `(N, 3)` (rad/s, in `frame`) from angles and rates `(N, 3)`.
+#[pyfunction]
+fn angular_velocity<'py>(
+    py: Python<'py>,
+    angles: PyReadonlyArrayDyn<'py, f64>,
+    rates: PyReadonlyArrayDyn<'py, f64>,
+    seq: &str,
+    intrinsic: bool,
+    frame: &str,
+) -> PyResult<Out<'py>> {
+    let seq = EulerSequence::new(seq, intrinsic).py()?;
+    let frame = self::frame(frame)?;
+    let (a, n) = records("angles", &angles, &[3])?;
+    let (r, _) = records("rates", &rates, &[3])?;
+    batch(py, &[n, 3], |out| rot::angular_velocity_batch(seq, frame, a, r, out))
+}
+
+/// Euler-angle rates `(N, 3)` (rad/s) from angles `(N, 3)` and ω `(N, 3)` (in `frame`).
+#[pyfunction]
+fn euler_rates<'py>(
+    py: Python<'py>,
+    angles: PyReadonlyArrayDyn<'py, f64>,
+    omega: PyReadonlyArrayDyn<'py, f64>,
+    seq: &str,
+    intrinsic: bool,
+    frame: &str,
+) -> PyResult<Out<'py>> {
+    let seq = EulerSequence::new(seq, intrinsic).py()?;
+    let frame = self::frame(frame)?;
+    let (a, n) = records("angles", &angles, &[3])?;
+    let (w, _) = records("omega", &omega, &[3])?;
+    batch(py, &[n, 3], |out| rot::euler_rates_batch(seq, frame, a, w, out))
+}
+
+/// Chasles' screw of `x ↦ R x + t` for one `R` `(3, 3)` and `t` `(3,)`:
+/// `(axis, point, angle, slide, pitch)`.
+#[pyfunction]
+#[allow(non_snake_case, clippy::type_complexity)]
+fn screw_axis<'py>(
+    py: Python<'py>,
+    R: numpy::PyReadonlyArray2<'py, f64>,
+    t: numpy::PyReadonlyArray1<'py, f64>,
+) -> PyResult<(Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>, f64, f64, f64)> {
+    let r = mat3("R", &R)?;
+    let t = vec3("t", &t)?;
+    let m = poinsot::Mat3::from_row_slice(&r.concat());
+    let s = rot::screw_axis(&m, &Vec3::from(t)).py()?;
+    Ok((vec3_out(py, s.axis.into()), vec3_out(py, s.point.into()), s.angle, s.slide, s.pitch))
+}
+
+/// The screw `(axis, point, angle, slide)` as a core `Screw` (checked: unit axis, finite).
+fn screw_from_parts(
+    axis: &numpy::PyReadonlyArray1<'_, f64>,
+    point: &numpy::PyReadonlyArray1<'_, f64>,
+    angle: f64,
+    slide: f64,
+) -> PyResult<rot::Screw> {
+    let axis = Vec3::from(vec3("axis", axis)?);
+    let point = Vec3::from(vec3("point", point)?);
+    poinsot::error::check_finite("angle", &[angle]).py()?;
+    poinsot::error::check_finite("slide", &[slide]).py()?;
+    let n = axis.norm();
+    if !(n.is_finite() && (n - 1.0).abs() <= 1e-9) {
+        return Err(invalid("axis", format!("must be a unit vector, got norm {n}")));
+    }
+    // `pitch` is not used by `displacement` or `apply`.
+    Ok(rot::Screw { axis, point, angle, slide, pitch: 0.0 })
+}
+
+/// The displacement `(R (3, 3), t (3,))` of a screw.
+#[pyfunction]
+#[allow(clippy::type_complexity)]
+fn screw_displacement<'py>(
+    py: Python<'py>,
+    axis: numpy::PyReadonlyArray1<'py, f64>,
+    point: numpy::PyReadonlyArray1<'py, f64>,
+    angle: f64,
+    slide: f64,
+) -> PyResult<(Bound<'py, numpy::PyArray2<f64>>, Bound<'py, PyArray1<f64>>)> {
+    let (r, t) = screw_from_parts(&axis, &point, angle, slide)?.displacement();
+    let rows = [
+        [r[(0, 0)], r[(0, 1)], r[(0, 2)]],
+        [r[(1, 0)], r[(1, 1)], r[(1, 2)]],
+        [r[(2, 0)], r[(2, 1)], r[(2, 2)]],
+    ];
+    Ok((mat3_out(py, rows), vec3_out(py, t.into())))
+}
+
+/// Applies a screw motion to points `x` `(N, 3)` → `(N, 3)`.
+#[pyfunction]
+fn screw_apply<'py>(
+    py: Python<'py>,
+    axis: numpy::PyReadonlyArray1<'py, f64>,
+    point: numpy::PyReadonlyArray1<'py, f64>,
+    angle: f64,
+    slide: f64,
+    x: numpy::PyReadonlyArray2<'py, f64>,
+) -> PyResult<Out<'py>> {
+    let screw = screw_from_parts(&axis, &point, angle, slide)?;
+    let points = rows3("x", &x)?;
+    batch(py, &[points.len(), 3], |out| {
+        for (p, y) in points.iter().zip(out.chunks_exact_mut(3)) {
+            y.copy_from_slice(screw.apply(&Vec3::from(*p))?.as_slice());
+        }
+        Ok(())
+    })
+}
+
 /// Registers this file's functions and classes on the module.
-pub fn register(_m: &Bound<'_, PyModule>) -> PyResult<()> {
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(euler_to_matrix, m)?)?;
+    m.add_function(wrap_pyfunction!(matrix_to_euler, m)?)?;
+    m.add_function(wrap_pyfunction!(matrix_to_quaternion, m)?)?;
+    m.add_function(wrap_pyfunction!(quaternion_to_matrix, m)?)?;
+    m.add_function(wrap_pyfunction!(quaternion_multiply, m)?)?;
+    m.add_function(wrap_pyfunction!(rotation_axis, m)?)?;
+    m.add_function(wrap_pyfunction!(axis_angle_to_matrix, m)?)?;
+    m.add_function(wrap_pyfunction!(rotate_vectors, m)?)?;
+    m.add_function(wrap_pyfunction!(check_rotation_matrix, m)?)?;
+    m.add_function(wrap_pyfunction!(angular_velocity, m)?)?;
+    m.add_function(wrap_pyfunction!(euler_rates, m)?)?;
+    m.add_function(wrap_pyfunction!(screw_axis, m)?)?;
+    m.add_function(wrap_pyfunction!(screw_displacement, m)?)?;
+    m.add_function(wrap_pyfunction!(screw_apply, m)?)?;
+    m.add("EULER_LOCK_TOL", rot::EULER_LOCK_TOL)?;
+    m.add("RATES_LOCK_TOL", rot::RATES_LOCK_TOL)?;
+    m.add("ROTATION_TOL", rot::ROTATION_TOL)?;
     Ok(())
 }

@@ -1,0 +1,133 @@
+//! Chasles' theorem: every rigid displacement `x ↦ R x + t` is a screw motion — a rotation by
+//! an angle about an axis plus a translation (the slide) along that same axis (the unit's
+//! remark after Euler's theorem).
+
+use crate::error::{check_finite, Result};
+use crate::rotation::axis_angle::{rodrigues, rotation_axis_unchecked, IDENTITY_AXIS};
+use crate::rotation::matrix::{check_rotation_matrix, row_major, ROTATION_TOL};
+use crate::{Mat3, Vec3};
+
+/// Angles (rad) at or below this are treated as no rotation in [`screw_axis`]: `4 ε ≈ 8.9e-16`,
+/// the round-off of a rotation matrix, below which the axis direction is noise (the displacement
+/// is then a pure translation, reproduced to round-off).
+pub const TRANSLATION_ANGLE_TOL: f64 = 4.0 * f64::EPSILON;
+
+/// The screw of a rigid displacement `x ↦ R x + t` (Chasles' theorem).
+///
+/// The displacement equals: rotate by `angle` about the line through `point` with direction
+/// `axis`, then translate by `slide` along `axis` (the two commute), i.e.
+/// `R x + t = point + R (x − point) + slide · axis` for every `x`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Screw {
+    /// Unit direction of the screw axis (Euler's axis of `R`; for a pure translation `t/|t|`;
+    /// for the identity displacement the conventional `+z`).
+    pub axis: Vec3,
+    /// The point of the screw axis nearest the origin (m; `point · axis = 0`).
+    pub point: Vec3,
+    /// Rotation angle about `axis`, rad, in `[0, π]`.
+    pub angle: f64,
+    /// Signed translation along `axis` (m): `axis · t`.
+    pub slide: f64,
+    /// `slide / angle` (m/rad): `+∞` for a pure translation, 0 for a pure rotation and for the
+    /// identity displacement (treated as the trivial rotation, never NaN).
+    pub pitch: f64,
+}
+
+impl Screw {
+    /// The displacement `(R, t)` of this screw: `R = R_axis(angle)` (Rodrigues) and
+    /// `t = point − R point + slide · axis`.
+    pub fn displacement(&self) -> (Mat3, Vec3) {
+        let r = rodrigues(&self.axis, self.angle);
+        (r, self.point - r * self.point + self.slide * self.axis)
+    }
+
+    /// Applies the screw motion to point `x`: `point + R (x − point) + slide · axis`, i.e.
+    /// `R x + t` of the displacement it was built from. Errors: non-finite `x` (naming `"x"`).
+    pub fn apply(&self, x: &Vec3) -> Result<Vec3> {
+        check_finite("x", x.as_slice())?;
+        let r = rodrigues(&self.axis, self.angle);
+        Ok(self.point + r * (x - self.point) + self.slide * self.axis)
+    }
+}
+
+/// Chasles' theorem: the screw of the displacement `x ↦ R x + t`.
+///
+/// With Euler's axis `n` and angle `θ` of `R` ([`crate::rotation::rotation_axis`]), the slide is
+/// `d = n · t`. The axis passes through the point `p` with `R p + t = p + d n`; on the plane
+/// perpendicular to `n`, `(I − R)` is invertible for `θ ≠ 0`, and the solution perpendicular to
+/// `n` (the point nearest the origin) is `p = ½ (t⊥ + cot(θ/2) n × t⊥)` with `t⊥ = t − d n`.
+///
+/// Limits: for `θ <= TRANSLATION_ANGLE_TOL` the displacement is a pure translation — axis
+/// `t/|t|`, point 0, angle 0, slide `|t|`, pitch `+∞`; the identity displacement (`t = 0`
+/// too) gives axis `+z`, point 0, angle 0, slide 0, pitch 0. A pure rotation (`n · t = 0`) has
+/// pitch 0.
+///
+/// Errors: `R` not a rotation within [`ROTATION_TOL`] (naming `"R"`), non-finite `t` (naming
+/// `"t"`).
+pub fn screw_axis(r: &Mat3, t: &Vec3) -> Result<Screw> {
+    check_rotation_matrix(r, ROTATION_TOL)?;
+    check_finite("t", t.as_slice())?;
+    let (n, angle) = rotation_axis_unchecked(&row_major(r));
+    let n = Vec3::from(n);
+    if angle <= TRANSLATION_ANGLE_TOL {
+        let len = t.norm();
+        return Ok(if len == 0.0 {
+            Screw {
+                axis: Vec3::from(IDENTITY_AXIS),
+                point: Vec3::zeros(),
+                angle: 0.0,
+                slide: 0.0,
+                pitch: 0.0,
+            }
+        } else {
+            Screw {
+                axis: t / len,
+                point: Vec3::zeros(),
+                angle: 0.0,
+                slide: len,
+                pitch: f64::INFINITY,
+            }
+        });
+    }
+    let slide = n.dot(t);
+    let t_perp = t - slide * n;
+    let half = 0.5 * angle;
+    let cot = half.cos() / half.sin();
+    let point = 0.5 * (t_perp + cot * n.cross(&t_perp));
+    Ok(Screw { axis: n, point, angle, slide, pitch: slide / angle })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rotation::{rot_x, rot_z};
+    use crate::ErrorKind;
+
+    #[test]
+    fn screw_reconstructs_a_displacement() {
+        let r = rot_z(0.7) * rot_x(-1.9);
+        let t = Vec3::new(0.3, -2.0, 1.1);
+        let s = screw_axis(&r, &t).unwrap();
+        // The axis point is fixed up to the slide: R p + t = p + d n.
+        assert!((r * s.point + t - s.point - s.slide * s.axis).norm() < 1e-14);
+        assert!(s.point.dot(&s.axis).abs() < 1e-15);
+        let (r2, t2) = s.displacement();
+        assert!((r2 - r).norm() < 1e-14 && (t2 - t).norm() < 1e-14);
+        let x = Vec3::new(-0.4, 0.9, 2.2);
+        assert!((s.apply(&x).unwrap() - (r * x + t)).norm() < 1e-14);
+    }
+
+    #[test]
+    fn limits_translation_rotation_identity() {
+        let s = screw_axis(&Mat3::identity(), &Vec3::new(0.0, 3.0, 4.0)).unwrap();
+        assert_eq!((s.angle, s.slide, s.pitch), (0.0, 5.0, f64::INFINITY));
+        assert!((s.axis - Vec3::new(0.0, 0.6, 0.8)).norm() < 1e-16);
+        let s = screw_axis(&rot_z(1.0), &Vec3::new(1.0, 0.0, 0.0)).unwrap();
+        assert_eq!(s.pitch, 0.0);
+        let s = screw_axis(&Mat3::identity(), &Vec3::zeros()).unwrap();
+        assert_eq!((s.axis, s.angle, s.slide, s.pitch), (Vec3::z(), 0.0, 0.0, 0.0));
+        let e = screw_axis(&Mat3::identity(), &Vec3::new(f64::NAN, 0.0, 0.0)).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::InvalidArgument);
+        assert!(e.to_string().starts_with("t: "));
+    }
+}
