@@ -472,7 +472,7 @@ def space_angular_velocity(
 
 def euler_rates(
     angles: Any,
-    omega: Any,
+    omega_body: Any,
     seq: str = "zxz",
     *,
     intrinsic: bool = True,
@@ -493,12 +493,13 @@ def euler_rates(
     ----------
     angles : array_like, shape (..., 3)
         Euler angles, rad (degrees with ``degrees=True``).
-    omega : array_like, shape (..., 3)
-        Angular velocity, **rad/s** (also with ``degrees=True``), components in ``frame``.
+    omega_body : array_like, shape (..., 3)
+        Angular velocity, **rad/s** (also with ``degrees=True``): its body-frame components
+        (eq. 2.99's ω₁, ω₂, ω₃), or its space-frame components with ``frame="space"``.
     seq, intrinsic
         As in :func:`euler_to_matrix`.
     frame : {"body", "space"}, keyword-only
-        The frame of ``omega``'s components.
+        The frame of ``omega_body``'s components.
     degrees : bool, keyword-only
         Angles in degrees and the returned rates in deg/s.
 
@@ -516,7 +517,7 @@ def euler_rates(
     """
     if not isinstance(frame, str):
         raise PoinsotError(f"frame: must be 'body' or 'space', got {frame!r}")
-    (a, w), lead = _broadcast((angles, "angles", (3,)), (omega, "omega", (3,)))
+    (a, w), lead = _broadcast((angles, "angles", (3,)), (omega_body, "omega_body", (3,)))
     deg = _flag(degrees, "degrees")
     if deg:
         a = a * _DEG
