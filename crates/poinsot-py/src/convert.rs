@@ -47,3 +47,29 @@ pub fn mat3_out<'py>(py: Python<'py>, m: [[f64; 3]; 3]) -> Bound<'py, PyArray2<f
     PyArray2::from_vec2(py, &m.iter().map(|r| r.to_vec()).collect::<Vec<_>>())
         .expect("3x3 rows have equal length")
 }
+
+/// An (N, 3) C-contiguous array of any element type → its flat row-major slice of `3·N` values.
+pub fn rows3_slice<'a, T: numpy::Element>(
+    argument: &str,
+    a: &'a PyReadonlyArray2<'_, T>,
+) -> PyResult<&'a [T]> {
+    let shape = a.shape();
+    if shape.len() != 2 || shape[1] != 3 {
+        return Err(invalid(argument, format!("must have shape (N, 3), got {shape:?}")));
+    }
+    a.as_slice().map_err(|_| invalid(argument, "must be a C-contiguous array"))
+}
+
+/// A flat row-major vector of `3·N` values → a new numpy array of shape (N, 3).
+pub fn rows3_out(py: Python<'_>, flat: Vec<f64>) -> PyResult<Bound<'_, PyArray2<f64>>> {
+    use numpy::PyArrayMethods;
+    let n = flat.len() / 3;
+    PyArray1::from_vec(py, flat).reshape([n, 3])
+}
+
+/// A flat row-major vector of `9·N` values → a new numpy array of shape (N, 3, 3).
+pub fn mats3_out(py: Python<'_>, flat: Vec<f64>) -> PyResult<Bound<'_, numpy::PyArray3<f64>>> {
+    use numpy::PyArrayMethods;
+    let n = flat.len() / 9;
+    PyArray1::from_vec(py, flat).reshape([n, 3, 3])
+}

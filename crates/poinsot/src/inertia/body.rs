@@ -55,6 +55,8 @@ impl MassProperties {
 
     /// A body whose inertia about the point `point` (m) is `inertia_about_point` (kg·m²): the
     /// parallel-axis theorem run backwards, `I_cm = I_P − m (|d|² 1 − d dᵀ)`, `d = com − P`.
+    /// The physical checks of the result allow for the round-off of that subtraction
+    /// (relative to `|I_P|`, see [`tensor::check_inertia_scaled`]).
     pub fn from_inertia_about(
         mass: f64,
         center_of_mass: Vec3,
@@ -67,7 +69,13 @@ impl MassProperties {
         check_finite("inertia", inertia_about_point.as_slice())
             .map_err(|e| Error::inertia("inertia", e.message))?;
         let cm = tensor::shift_to_com(&inertia_about_point, mass, &center_of_mass, &point);
-        Self::new(mass, center_of_mass, cm)
+        // Round-off of the cancellation is relative to the tensor about the point.
+        let inertia = tensor::check_inertia_scaled("inertia", &cm, inertia_about_point.amax())?;
+        Ok(Self {
+            mass,
+            center_of_mass,
+            inertia,
+        })
     }
 
     /// Point masses `masses[a]` (kg, each `> 0`) at `positions[a]` (m): the discrete sums of the

@@ -21,4 +21,6 @@ pub use shapes::{
     cuboid, ellipsoid, solid_cone, solid_cylinder, solid_sphere, spherical_shell, thin_disk,
     thin_ring, thin_rod,
 };
-pub use tensor::{check_inertia, classify, principal, Principal, TopKind, DEFAULT_KIND_RTOL};
+pub use tensor::{
+    check_inertia, check_inertia_scaled, classify, principal, Principal, TopKind, DEFAULT_KIND_RTOL,
+};

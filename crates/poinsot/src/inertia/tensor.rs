@@ -65,13 +65,21 @@ pub fn rotate(rotation: &Mat3, inertia: &Mat3) -> Mat3 {
 /// ordering, both within [`PHYSICAL_RTOL`] of the largest principal moment (so thin rods,
 /// plates and rings, which sit on the boundary, pass). The zero tensor (a point mass) is valid.
 pub fn check_inertia(argument: &str, inertia: &Mat3) -> Result<Mat3> {
+    check_inertia_scaled(argument, inertia, 0.0)
+}
+
+/// [`check_inertia`] with the physical tolerance taken relative to
+/// `max(largest principal moment, scale)`: for a tensor obtained by cancellation from larger
+/// ones (the parallel-axis shift back to the centre of mass), whose round-off is relative to
+/// `scale` (kg·m²), the magnitude before the cancellation.
+pub fn check_inertia_scaled(argument: &str, inertia: &Mat3, scale: f64) -> Result<Mat3> {
     if let Err(e) = check_finite(argument, inertia.as_slice()) {
         return Err(Error::inertia(argument, e.message));
     }
-    let scale = inertia.amax();
+    let entries = inertia.amax();
     for (i, j) in [(0, 1), (0, 2), (1, 2)] {
         let diff = (inertia[(i, j)] - inertia[(j, i)]).abs();
-        if diff > SYMMETRY_RTOL * scale {
+        if diff > SYMMETRY_RTOL * entries {
             return Err(Error::inertia(
                 argument,
                 format!(
@@ -88,7 +96,7 @@ pub fn check_inertia(argument: &str, inertia: &Mat3) -> Result<Mat3> {
     let sym = (inertia + inertia.transpose()) * 0.5;
     let moments = sorted_eigenvalues(&sym);
     let largest = moments[2].abs().max(moments[0].abs());
-    let tol = PHYSICAL_RTOL * largest;
+    let tol = PHYSICAL_RTOL * largest.max(scale);
     if moments[0] < -tol {
         return Err(Error::inertia(
             argument,
@@ -113,7 +121,7 @@ pub fn check_inertia(argument: &str, inertia: &Mat3) -> Result<Mat3> {
                 moments[1],
                 moments[2],
                 excess,
-                excess / largest
+                excess / largest.max(f64::MIN_POSITIVE)
             ),
         ));
     }
