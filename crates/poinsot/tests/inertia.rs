@@ -356,7 +356,7 @@ fn prism_and_pyramid_meshes_are_exact() {
 fn uv_sphere_converges_at_second_order() {
     let sphere = |n: usize| {
         let profile: Vec<(f64, f64)> = (0..=n)
-            .map(|k| (k as f64 * PI / n as f64))
+            .map(|k| k as f64 * PI / n as f64)
             .map(|t| (t.sin(), -t.cos()))
             .collect();
         mesh_body(&revolve(&profile, 2 * n), 1.0).unwrap()
@@ -486,7 +486,7 @@ fn two_component_shell_mesh() {
     let sphere = |radius: f64, outward: bool| {
         let n = 48;
         let profile: Vec<(f64, f64)> = (0..=n)
-            .map(|k| (k as f64 * PI / n as f64))
+            .map(|k| k as f64 * PI / n as f64)
             .map(|t| (radius * t.sin(), -radius * t.cos()))
             .collect();
         let mut m = revolve(&profile, 2 * n);

@@ -24,12 +24,12 @@
 //! (they have no area) and are left out of the edge checks; faces of zero area with three
 //! distinct indices take part in them as usual. Self-intersection is not checked.
 //!
-//! **Edge check without hashing.** The directed edges `a → b` of all faces are counting-sorted by
-//! their source vertex into a compressed (CSR) adjacency list; for each directed edge `a → b`
-//! the number of `b` in the list of `a` and of `a` in the list of `b` classify the undirected
-//! edge. This is `O(n · degree)` and runs in parallel (rayon) with atomics only, no `unsafe`.
-
-use std::sync::atomic::{AtomicU32, Ordering::Relaxed};
+//! **Edge check without hashing.** Each use of an undirected edge `{a, b}` (`a < b`) by a face
+//! is filed under its low vertex `a`, with `b` and a direction bit, by a counting sort into a
+//! compressed (CSR) list; each vertex's short list is then sorted and its runs counted: one
+//! use is a boundary edge, more than two a non-manifold edge, two in the same direction an
+//! inconsistent orientation. `O(n · degree)`, parallel (rayon: each task owns a range of low
+//! vertices, so no atomics and no `unsafe`).
 
 use rayon::prelude::*;
 
@@ -72,9 +72,9 @@ pub fn mesh_mass_properties<I: FaceIndex>(
     density: f64,
 ) -> Result<MassProperties> {
     check_positive("density", density)?;
-    let (verts, tris) = checked_arrays(vertices, faces)?;
-    check_topology(verts.len(), &tris)?;
-    integrate(&verts, &tris, density)
+    let tris = checked_arrays(vertices, faces)?;
+    check_topology(vertices.len() / 3, &tris)?;
+    integrate(vertices, &tris, density)
 }
 
 /// [`mesh_mass_properties`] for vertices as `[x, y, z]` rows and faces as `[i, j, k]` rows.
@@ -86,11 +86,8 @@ pub fn mesh_mass_properties_rows(
     mesh_mass_properties(vertices.as_flattened(), faces.as_flattened(), density)
 }
 
-/// Shapes, index ranges and finiteness; returns the vertices as rows and faces as `u32` rows.
-fn checked_arrays<I: FaceIndex>(
-    vertices: &[f64],
-    faces: &[I],
-) -> Result<(Vec<[f64; 3]>, Vec<[u32; 3]>)> {
+/// Shapes, index ranges and finiteness; returns the faces as `u32` rows.
+fn checked_arrays<I: FaceIndex>(vertices: &[f64], faces: &[I]) -> Result<Vec<[u32; 3]>> {
     if vertices.len() % 3 != 0 {
         return Err(Error::mesh(
             "vertices",
@@ -114,10 +111,10 @@ fn checked_arrays<I: FaceIndex>(
             ),
         ));
     }
-    if nv >= u32::MAX as usize {
+    if nv > MAX_VERTICES {
         return Err(Error::mesh(
             "vertices",
-            format!("at most {} vertices are supported, got {nv}", u32::MAX - 1),
+            format!("at most {MAX_VERTICES} vertices are supported, got {nv}"),
         ));
     }
     // Indices: u32::MAX marks an index out of range (or negative).
@@ -132,7 +129,14 @@ fn checked_arrays<I: FaceIndex>(
             [ix(f[0]), ix(f[1]), ix(f[2])]
         })
         .collect();
-    if let Some(k) = tris.par_iter().position_first(|t| t.contains(&u32::MAX)) {
+    let any_bad = tris
+        .par_iter()
+        .with_min_len(CHUNK)
+        .any(|t| t.contains(&u32::MAX));
+    if let Some(k) = any_bad
+        .then(|| tris.iter().position(|t| t.contains(&u32::MAX)))
+        .flatten()
+    {
         let j = (0..3).find(|&j| tris[k][j] == u32::MAX).unwrap_or(0);
         return Err(Error::mesh(
             "faces",
@@ -143,22 +147,31 @@ fn checked_arrays<I: FaceIndex>(
             ),
         ));
     }
-    let verts: Vec<[f64; 3]> = vertices
-        .par_chunks_exact(3)
-        .with_min_len(CHUNK)
-        .map(|v| [v[0], v[1], v[2]])
-        .collect();
-    if let Some(k) = verts
-        .par_iter()
-        .position_first(|v| !v.iter().all(|x| x.is_finite()))
+    // Non-finite coordinates: find the block, then the vertex.
+    let block = 3 * CHUNK;
+    if let Some(c) = vertices
+        .par_chunks(block)
+        .position_first(|c| !c.iter().all(|x| x.is_finite()))
     {
+        let k = c * block
+            + vertices[c * block..]
+                .iter()
+                .position(|x| !x.is_finite())
+                .unwrap_or(0);
+        let i = k / 3;
         return Err(Error::mesh(
             "vertices",
-            format!("must be finite, got {:?} at vertex {k}", verts[k]),
+            format!(
+                "must be finite, got {:?} at vertex {i}",
+                [vertices[3 * i], vertices[3 * i + 1], vertices[3 * i + 2]]
+            ),
         ));
     }
-    Ok((verts, tris))
+    Ok(tris)
 }
+
+/// The most vertices: the edge check packs a vertex index and a direction bit in a `u32`.
+pub const MAX_VERTICES: usize = (u32::MAX >> 1) as usize;
 
 /// A face with a repeated vertex index: no area, left out of the edge checks.
 #[inline]
@@ -166,19 +179,32 @@ fn index_degenerate(t: &[u32; 3]) -> bool {
     t[0] == t[1] || t[1] == t[2] || t[2] == t[0]
 }
 
-/// Counts of edge defects, for the refusal message.
+/// The undirected edges of a face as `(low vertex, high vertex << 1 | direction)`, where the
+/// direction bit is 1 when the face runs the edge from low to high.
+#[inline]
+fn half_edges(t: &[u32; 3]) -> [(u32, u32); 3] {
+    let e = |a: u32, b: u32| {
+        if a < b {
+            (a, (b << 1) | 1)
+        } else {
+            (b, a << 1)
+        }
+    };
+    [e(t[0], t[1]), e(t[1], t[2]), e(t[2], t[0])]
+}
+
+/// Counts of edge defects (each undirected edge counted once), with the lowest offending edge.
 #[derive(Default, Clone, Copy)]
 struct EdgeDefects {
-    /// Directed-edge instances of edges used by exactly one face (= number of such edges).
+    /// Edges used by one face only.
     boundary: u64,
-    /// Σ over instances of edges used by more than two faces of 1/uses (= number of such edges).
-    non_manifold: f64,
-    /// Instances of edges used by two faces in the same direction (2 per edge).
+    /// Edges used by more than two faces.
+    non_manifold: u64,
+    /// Edges used by two faces in the same direction.
     flipped: u64,
-    /// First face (lowest index) with each defect, and the edge.
-    first_boundary: Option<(usize, u32, u32)>,
-    first_non_manifold: Option<(usize, u32, u32, u32)>,
-    first_flipped: Option<(usize, u32, u32)>,
+    first_boundary: Option<(u32, u32)>,
+    first_non_manifold: Option<(u32, u32, u32)>,
+    first_flipped: Option<(u32, u32)>,
 }
 
 fn min_opt<T: Copy + PartialOrd>(a: Option<T>, b: Option<T>) -> Option<T> {
@@ -203,92 +229,143 @@ impl EdgeDefects {
 }
 
 /// Closed, manifold and consistently oriented, or an [`Error::mesh`] naming `faces`.
+///
+/// Each use of an undirected edge `{a, b}` (a < b) by a face is filed under `a` with `b` and
+/// the direction bit ([`half_edges`]): a counting sort by low vertex into a compressed (CSR)
+/// list, built in parallel without atomics by giving each rayon task its own range of low
+/// vertices (each task scans all faces and files only its own edges). Then each vertex's short
+/// list is sorted and its runs classified: one use is a boundary edge, more than two a
+/// non-manifold edge, two uses in the same direction an inconsistent orientation.
 fn check_topology(nv: usize, tris: &[[u32; 3]]) -> Result<()> {
-    // Counting sort of the directed edges a → b by source a (CSR).
-    let degree: Vec<AtomicU32> = (0..nv).map(|_| AtomicU32::new(0)).collect();
-    tris.par_iter().with_min_len(CHUNK).for_each(|t| {
-        if !index_degenerate(t) {
-            for &a in t {
-                degree[a as usize].fetch_add(1, Relaxed);
-            }
-        }
-    });
-    let mut start = Vec::with_capacity(nv + 1);
-    let mut acc = 0u32;
-    start.push(0u32);
-    for d in &degree {
-        acc += d.load(Relaxed);
-        start.push(acc);
-    }
-    drop(degree);
-    let cursor: Vec<AtomicU32> = start[..nv].iter().map(|&s| AtomicU32::new(s)).collect();
-    let targets: Vec<AtomicU32> = (0..acc).map(|_| AtomicU32::new(0)).collect();
-    tris.par_iter().with_min_len(CHUNK).for_each(|t| {
-        if !index_degenerate(t) {
-            for j in 0..3 {
-                let (a, b) = (t[j], t[(j + 1) % 3]);
-                let slot = cursor[a as usize].fetch_add(1, Relaxed);
-                targets[slot as usize].store(b, Relaxed);
-            }
-        }
-    });
-    drop(cursor);
-    let count = |a: u32, b: u32| -> u32 {
-        let (lo, hi) = (start[a as usize] as usize, start[a as usize + 1] as usize);
-        targets[lo..hi]
-            .iter()
-            .filter(|t| t.load(Relaxed) == b)
-            .count() as u32
-    };
-    // Classify each directed edge by the uses of its undirected edge in each direction.
-    let defects = tris
-        .par_iter()
-        .enumerate()
-        .with_min_len(CHUNK)
-        .fold(EdgeDefects::default, |mut d, (k, t)| {
+    let tasks = rayon::current_num_threads().clamp(1, 64);
+    let span = nv.div_ceil(tasks).max(1);
+    // Per-vertex counts, each task filling its own range.
+    let mut count = vec![0u32; nv];
+    count.par_chunks_mut(span).enumerate().for_each(|(k, own)| {
+        let lo = (k * span) as u32;
+        let hi = lo + own.len() as u32;
+        for t in tris {
             if index_degenerate(t) {
-                return d;
+                continue;
             }
-            for j in 0..3 {
-                let (a, b) = (t[j], t[(j + 1) % 3]);
-                let same = count(a, b);
-                let opposite = count(b, a);
-                let uses = same + opposite;
-                if uses == 1 {
-                    d.boundary += 1;
-                    d.first_boundary = min_opt(d.first_boundary, Some((k, a, b)));
-                } else if uses > 2 {
-                    d.non_manifold += 1.0 / f64::from(uses);
-                    d.first_non_manifold = min_opt(d.first_non_manifold, Some((k, a, b, uses)));
-                } else if same == 2 {
-                    d.flipped += 1;
-                    d.first_flipped = min_opt(d.first_flipped, Some((k, a, b)));
+            for (a, _) in half_edges(t) {
+                if a >= lo && a < hi {
+                    own[(a - lo) as usize] += 1;
+                }
+            }
+        }
+    });
+    // Offsets (exclusive prefix sums).
+    let mut start = Vec::with_capacity(nv + 1);
+    let mut acc = 0usize;
+    for c in &count {
+        start.push(acc);
+        acc += *c as usize;
+    }
+    start.push(acc);
+    drop(count);
+    // Fill: the ranges of vertices map to disjoint ranges of the list.
+    let mut list = vec![0u32; acc];
+    let mut pieces = Vec::with_capacity(tasks);
+    let mut rest = list.as_mut_slice();
+    for k in 0..nv.div_ceil(span) {
+        let (v0, v1) = (k * span, ((k + 1) * span).min(nv));
+        let (piece, tail) = rest.split_at_mut(start[v1] - start[v0]);
+        pieces.push((v0, v1, piece));
+        rest = tail;
+    }
+    pieces.par_iter_mut().for_each(|(v0, v1, piece)| {
+        let base = start[*v0];
+        let mut cursor: Vec<usize> = start[*v0..*v1].iter().map(|s| s - base).collect();
+        let (lo, hi) = (*v0 as u32, *v1 as u32);
+        for t in tris {
+            if index_degenerate(t) {
+                continue;
+            }
+            for (a, entry) in half_edges(t) {
+                if a >= lo && a < hi {
+                    let c = &mut cursor[(a - lo) as usize];
+                    piece[*c] = entry;
+                    *c += 1;
+                }
+            }
+        }
+    });
+    drop(pieces);
+    // Classify, vertex by vertex, in parallel blocks of vertices.
+    let mut blocks = Vec::new();
+    let mut rest = list.as_mut_slice();
+    let block = CHUNK;
+    for v0 in (0..nv).step_by(block) {
+        let v1 = (v0 + block).min(nv);
+        let (piece, tail) = rest.split_at_mut(start[v1] - start[v0]);
+        blocks.push((v0, v1, piece));
+        rest = tail;
+    }
+    let defects = blocks
+        .into_par_iter()
+        .map(|(v0, v1, piece)| {
+            let mut d = EdgeDefects::default();
+            let base = start[v0];
+            for a in v0..v1 {
+                let edges = &mut piece[start[a] - base..start[a + 1] - base];
+                edges.sort_unstable();
+                let mut i = 0;
+                while i < edges.len() {
+                    let b = edges[i] >> 1;
+                    let mut j = i;
+                    let mut up = 0u32;
+                    while j < edges.len() && edges[j] >> 1 == b {
+                        up += edges[j] & 1;
+                        j += 1;
+                    }
+                    let uses = (j - i) as u32;
+                    let a = a as u32;
+                    if uses == 1 {
+                        d.boundary += 1;
+                        d.first_boundary = min_opt(d.first_boundary, Some((a, b)));
+                    } else if uses > 2 {
+                        d.non_manifold += 1;
+                        d.first_non_manifold = min_opt(d.first_non_manifold, Some((a, b, uses)));
+                    } else if up != 1 {
+                        d.flipped += 1;
+                        d.first_flipped = min_opt(d.first_flipped, Some((a, b)));
+                    }
+                    i = j;
                 }
             }
             d
         })
         .reduce(EdgeDefects::default, EdgeDefects::merge);
+    // The first face using an edge (for the message; only on failure).
+    let face_of = |a: u32, b: u32| {
+        tris.par_iter()
+            .position_first(|t| !index_degenerate(t) && t.contains(&a) && t.contains(&b))
+            .map_or(String::new(), |k| format!(" of face {k}"))
+    };
     let mut problems = Vec::new();
-    if let Some((k, a, b)) = defects.first_boundary {
+    if let Some((a, b)) = defects.first_boundary {
         problems.push(format!(
-            "the mesh is open: {} boundary edge(s) are used by only one face (e.g. edge ({a}, {b}) \
-             of face {k}); a mesh must be closed (watertight) to bound a solid",
-            defects.boundary
+            "the mesh is open: {} boundary edge(s) are used by only one face (e.g. edge ({a}, {b}){}); \
+             a mesh must be closed (watertight) to bound a solid",
+            defects.boundary,
+            face_of(a, b)
         ));
     }
-    if let Some((k, a, b, uses)) = defects.first_non_manifold {
+    if let Some((a, b, uses)) = defects.first_non_manifold {
         problems.push(format!(
             "the mesh is non-manifold: {} edge(s) are shared by more than two faces (e.g. edge \
-             ({a}, {b}) of face {k} is used by {uses} faces)",
-            defects.non_manifold.round()
+             ({a}, {b}) is used by {uses} faces)",
+            defects.non_manifold
         ));
     }
-    if let Some((k, a, b)) = defects.first_flipped {
+    if let Some((a, b)) = defects.first_flipped {
         problems.push(format!(
             "faces are inconsistently oriented: {} edge(s) are traversed twice in the same \
-             direction (e.g. edge ({a}, {b}) of face {k}); neighbouring faces must list a shared \
-             edge in opposite directions",
-            defects.flipped / 2
+             direction (e.g. edge ({a}, {b}){}); neighbouring faces must list a shared edge in \
+             opposite directions",
+            defects.flipped,
+            face_of(a, b)
         ));
     }
     if problems.is_empty() {
@@ -317,10 +394,10 @@ impl Sums {
 }
 
 /// The exact polyhedral integrals (module docs), then mass, centre of mass and inertia.
-fn integrate(verts: &[[f64; 3]], tris: &[[u32; 3]], density: f64) -> Result<MassProperties> {
+fn integrate(vertices: &[f64], tris: &[[u32; 3]], density: f64) -> Result<MassProperties> {
     // Reference point: the centre of the bounding box.
-    let (lo, hi) = verts
-        .par_iter()
+    let (lo, hi) = vertices
+        .par_chunks_exact(3)
         .with_min_len(CHUNK)
         .fold(
             || ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
@@ -351,7 +428,8 @@ fn integrate(verts: &[[f64; 3]], tris: &[[u32; 3]], density: f64) -> Result<Mass
         .with_min_len(CHUNK)
         .fold(Sums::zero, |mut acc, t| {
             let p = |i: u32| {
-                let v = verts[i as usize];
+                let k = 3 * i as usize;
+                let v = &vertices[k..k + 3];
                 [v[0] - p0[0], v[1] - p0[1], v[2] - p0[2]]
             };
             let (a, b, c) = (p(t[0]), p(t[1]), p(t[2]));
