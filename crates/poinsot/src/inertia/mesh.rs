@@ -492,8 +492,8 @@ fn integrate(vertices: &[f64], tris: &[[u32; 3]], density: f64) -> Result<MassPr
         return Err(Error::mesh(
             "faces",
             format!(
-                "faces are oriented inward (total signed volume {:.6e} m³ < 0); reverse the \
-                 winding (e.g. faces[:, ::-1]) so that face normals point out of the solid",
+                "faces are oriented inward; reverse the winding (e.g. faces[:, ::-1]) so that \
+                 face normals point out of the solid (the total signed volume is {:.6e} m³ < 0)",
                 six_volume / 6.0
             ),
         ));
