@@ -120,10 +120,11 @@ fn offsets() -> [[f64; 3]; POINTS_PER_REGION] {
     let (l2, l4, l5) = lambdas();
     let mut o = [[0.0; 3]; POINTS_PER_REGION];
     let mut k = 1;
+    let units = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
     for l in [l2, l4] {
-        for i in 0..3 {
+        for e in units {
             for s in [1.0, -1.0] {
-                o[k][i] = s * l;
+                o[k] = e.map(|x: f64| s * l * x);
                 k += 1;
             }
         }
@@ -257,7 +258,7 @@ where
         let converged = est.mass > 0.0 && scales.within(&est);
         // Children of the split regions cost 2 regions each.
         let budget = options.max_evals.saturating_sub(cub.evaluations) / (2 * POINTS_PER_REGION);
-        if converged || budget == 0 || !(est.mass > 0.0) {
+        if converged || budget == 0 || est.mass.is_nan() || est.mass <= 0.0 {
             return finish(est, cub.evaluations, converged);
         }
         // Normalised error of each region, largest first.
@@ -407,8 +408,8 @@ impl Cubature {
         // vol/8 · |Δρ| · |moment factor at that corner| as the error.
         let f0 = f[0];
         if f[..RULE_POINTS].iter().all(|&v| v == f0) {
-            for k in RULE_POINTS..POINTS_PER_REGION {
-                let jump = f[k] - f0;
+            for (k, fk) in f.iter().enumerate().skip(RULE_POINTS) {
+                let jump = fk - f0;
                 if jump != 0.0 {
                     for (e, factor) in error.iter_mut().zip(poly(k)) {
                         *e = e.max(vol / 8.0 * (jump * factor).abs());
@@ -539,7 +540,7 @@ impl Scales {
 }
 
 fn finish(est: Estimate, evaluations: usize, converged: bool) -> Result<DensityIntegral> {
-    if !(est.mass > 0.0) {
+    if est.mass.is_nan() || est.mass <= 0.0 {
         return Err(Error::invalid(
             "density",
             format!(
