@@ -43,8 +43,10 @@ def main() -> None:
     mesh = trimesh.creation.icosphere(subdivisions=args.subdivisions)
     vertices = np.ascontiguousarray(mesh.vertices, dtype=np.float64)
     faces = np.ascontiguousarray(mesh.faces, dtype=np.int64)
-    print(f"icosphere({args.subdivisions}): {len(faces):,} triangles, {len(vertices):,} vertices; "
-          f"{os.cpu_count()} CPUs; best of {args.repeat}")
+    print(
+        f"icosphere({args.subdivisions}): {len(faces):,} triangles, {len(vertices):,} vertices; "
+        f"{os.cpu_count()} CPUs; best of {args.repeat}"
+    )
 
     def ours() -> tuple:
         b = ps.RigidBody.from_mesh(vertices, faces, density=1.0)

@@ -17,12 +17,30 @@ print(f"Standard solids, m = {m} kg, r = {r} m, h = {h} m (axis of symmetry z)\n
 solids = [
     ("solid sphere", ps.RigidBody.solid_sphere(m, r), "2/5 m r²", [0.4 * m * r**2] * 3),
     ("spherical shell", ps.RigidBody.spherical_shell(m, r), "2/3 m r²", [2 / 3 * m * r**2] * 3),
-    ("solid cylinder", ps.RigidBody.solid_cylinder(m, r, h), "m(3r²+h²)/12, m r²/2",
-     [m * (3 * r**2 + h**2) / 12] * 2 + [m * r**2 / 2]),
-    ("solid cone (apex at 0)", ps.RigidBody.solid_cone(m, r, h), "3/20 m r² + 3/80 m h², 3/10 m r²",
-     [m * (3 / 20 * r**2 + 3 / 80 * h**2)] * 2 + [0.3 * m * r**2]),
-    ("cuboid 1×2×3", ps.RigidBody.cuboid(m, (1.0, 2.0, 3.0)), "m(b²+c²)/12, ...", [m * 13 / 12, m * 10 / 12, m * 5 / 12]),
-    ("ellipsoid 1, 2, 3", ps.RigidBody.ellipsoid(m, (1.0, 2.0, 3.0)), "m(b²+c²)/5, ...", [m * 13 / 5, m * 10 / 5, m * 5 / 5]),
+    (
+        "solid cylinder",
+        ps.RigidBody.solid_cylinder(m, r, h),
+        "m(3r²+h²)/12, m r²/2",
+        [m * (3 * r**2 + h**2) / 12] * 2 + [m * r**2 / 2],
+    ),
+    (
+        "solid cone (apex at 0)",
+        ps.RigidBody.solid_cone(m, r, h),
+        "3/20 m r² + 3/80 m h², 3/10 m r²",
+        [m * (3 / 20 * r**2 + 3 / 80 * h**2)] * 2 + [0.3 * m * r**2],
+    ),
+    (
+        "cuboid 1×2×3",
+        ps.RigidBody.cuboid(m, (1.0, 2.0, 3.0)),
+        "m(b²+c²)/12, ...",
+        [m * 13 / 12, m * 10 / 12, m * 5 / 12],
+    ),
+    (
+        "ellipsoid 1, 2, 3",
+        ps.RigidBody.ellipsoid(m, (1.0, 2.0, 3.0)),
+        "m(b²+c²)/5, ...",
+        [m * 13 / 5, m * 10 / 5, m * 5 / 5],
+    ),
     ("thin rod (length h)", ps.RigidBody.thin_rod(m, h), "m h²/12, 0", [m * h**2 / 12] * 2 + [0.0]),
     ("thin disk", ps.RigidBody.thin_disk(m, r), "m r²/4, m r²/2", [m * r**2 / 4] * 2 + [m * r**2 / 2]),
     ("thin ring", ps.RigidBody.thin_ring(m, r), "m r²/2, m r²", [m * r**2 / 2] * 2 + [m * r**2]),
@@ -54,6 +72,8 @@ print(A)
 print("in principal axes the products of inertia vanish (2.65–2.66): Aᵀ I A =")
 print(A.T @ body.inertia @ A)
 omega = np.array([0.0, 0.0, 3.0])
-print(f"ω = {omega} rad/s: L = I·ω = {body.angular_momentum(omega)} kg·m²/s,"
-      f" T = ½ ω·I·ω = {body.kinetic_energy(omega):.5f} J,"
-      f" angle(L, ω) = {body.momentum_angle(omega, degrees=True):.3f}°")
+print(
+    f"ω = {omega} rad/s: L = I·ω = {body.angular_momentum(omega)} kg·m²/s,"
+    f" T = ½ ω·I·ω = {body.kinetic_energy(omega):.5f} J,"
+    f" angle(L, ω) = {body.momentum_angle(omega, degrees=True):.3f}°"
+)

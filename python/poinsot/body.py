@@ -125,7 +125,7 @@ def check_inertia(inertia: Any) -> FloatArray:
     return _core.check_inertia(np.ascontiguousarray(arr))
 
 
-def _positive(value: Any, name: str) -> float:
+def _scalar(value: Any, name: str) -> float:
     """A finite scalar; the core checks the sign (and names ``name``)."""
     return as_scalar(value, name)
 
@@ -158,7 +158,7 @@ class RigidBody:
     def __init__(self, mass: float, inertia: Any, center_of_mass: Any = (0.0, 0.0, 0.0)) -> None:
         """Same as :meth:`from_inertia`."""
         self._core: Any = _core.MassProperties.from_inertia(
-            _positive(mass, "mass"),
+            _scalar(mass, "mass"),
             as_vector3(center_of_mass, "center_of_mass"),
             _inertia_array(inertia),
         )
@@ -174,9 +174,7 @@ class RigidBody:
     # ---- constructors ---------------------------------------------------------------------
 
     @classmethod
-    def from_inertia(
-        cls, mass: float, inertia: Any, center_of_mass: Any = (0.0, 0.0, 0.0)
-    ) -> RigidBody:
+    def from_inertia(cls, mass: float, inertia: Any, center_of_mass: Any = (0.0, 0.0, 0.0)) -> RigidBody:
         """A body of mass ``mass`` (kg) whose inertia tensor about its centre of mass
         ``center_of_mass`` (m, (3,)) is ``inertia`` (kg·m², (3, 3), products negated as in
         eqs. 2.49–2.50).
@@ -216,13 +214,15 @@ class RigidBody:
     def solid_sphere(cls, mass: float, radius: float) -> RigidBody:
         """A uniform solid sphere of mass ``mass`` (kg) and radius ``radius`` (m), centred at the
         origin: I = 2/5 m r² about every axis (a spherical top)."""
-        return cls._wrap(_core.MassProperties.solid_sphere(_positive(mass, "mass"), _positive(radius, "radius")))
+        return cls._wrap(_core.MassProperties.solid_sphere(_scalar(mass, "mass"), _scalar(radius, "radius")))
 
     @classmethod
     def spherical_shell(cls, mass: float, radius: float) -> RigidBody:
         """A thin uniform spherical shell of mass ``mass`` (kg) and radius ``radius`` (m),
         centred at the origin: I = 2/3 m r² about every axis."""
-        return cls._wrap(_core.MassProperties.spherical_shell(_positive(mass, "mass"), _positive(radius, "radius")))
+        return cls._wrap(
+            _core.MassProperties.spherical_shell(_scalar(mass, "mass"), _scalar(radius, "radius"))
+        )
 
     @classmethod
     def solid_cylinder(cls, mass: float, radius: float, height: float) -> RigidBody:
@@ -230,7 +230,7 @@ class RigidBody:
         centre of mass: I_zz = m r²/2, I_xx = I_yy = m (3 r² + h²)/12."""
         return cls._wrap(
             _core.MassProperties.solid_cylinder(
-                _positive(mass, "mass"), _positive(radius, "radius"), _positive(height, "height")
+                _scalar(mass, "mass"), _scalar(radius, "radius"), _scalar(height, "height")
             )
         )
 
@@ -241,7 +241,7 @@ class RigidBody:
         about it I_zz = 3/10 m r², I_xx = I_yy = 3/20 m r² + 3/80 m h²."""
         return cls._wrap(
             _core.MassProperties.solid_cone(
-                _positive(mass, "mass"), _positive(radius, "radius"), _positive(height, "height")
+                _scalar(mass, "mass"), _scalar(radius, "radius"), _scalar(height, "height")
             )
         )
 
@@ -249,7 +249,7 @@ class RigidBody:
     def cuboid(cls, mass: float, sides: Any) -> RigidBody:
         """A uniform solid cuboid of mass ``mass`` (kg) with sides ``sides`` = (a, b, c) (m)
         along x, y, z, centred at the origin: I_xx = m (b² + c²)/12 and cyclically."""
-        return cls._wrap(_core.MassProperties.cuboid(_positive(mass, "mass"), as_vector3(sides, "sides")))
+        return cls._wrap(_core.MassProperties.cuboid(_scalar(mass, "mass"), as_vector3(sides, "sides")))
 
     @classmethod
     def ellipsoid(cls, mass: float, semi_axes: Any) -> RigidBody:
@@ -257,26 +257,26 @@ class RigidBody:
         (a, b, c) (m) along x, y, z, centred at the origin: I_xx = m (b² + c²)/5 and
         cyclically."""
         return cls._wrap(
-            _core.MassProperties.ellipsoid(_positive(mass, "mass"), as_vector3(semi_axes, "semi_axes"))
+            _core.MassProperties.ellipsoid(_scalar(mass, "mass"), as_vector3(semi_axes, "semi_axes"))
         )
 
     @classmethod
     def thin_rod(cls, mass: float, length: float) -> RigidBody:
         """A thin uniform rod of mass ``mass`` (kg) and length ``length`` (m) along z, centred at
         the origin: I_xx = I_yy = m L²/12, I_zz = 0 (a rotor)."""
-        return cls._wrap(_core.MassProperties.thin_rod(_positive(mass, "mass"), _positive(length, "length")))
+        return cls._wrap(_core.MassProperties.thin_rod(_scalar(mass, "mass"), _scalar(length, "length")))
 
     @classmethod
     def thin_disk(cls, mass: float, radius: float) -> RigidBody:
         """A thin uniform disk of mass ``mass`` (kg) and radius ``radius`` (m) in the xy plane,
         centred at the origin: I_xx = I_yy = m r²/4, I_zz = m r²/2."""
-        return cls._wrap(_core.MassProperties.thin_disk(_positive(mass, "mass"), _positive(radius, "radius")))
+        return cls._wrap(_core.MassProperties.thin_disk(_scalar(mass, "mass"), _scalar(radius, "radius")))
 
     @classmethod
     def thin_ring(cls, mass: float, radius: float) -> RigidBody:
         """A thin uniform ring (hoop) of mass ``mass`` (kg) and radius ``radius`` (m) in the xy
         plane, centred at the origin: I_xx = I_yy = m r²/2, I_zz = m r²."""
-        return cls._wrap(_core.MassProperties.thin_ring(_positive(mass, "mass"), _positive(radius, "radius")))
+        return cls._wrap(_core.MassProperties.thin_ring(_scalar(mass, "mass"), _scalar(radius, "radius")))
 
     @classmethod
     def from_density(
@@ -317,7 +317,9 @@ class RigidBody:
             raise PoinsotError(f"density: must be a callable (N, 3) -> (N,), got {type(density).__name__}")
         b = as_float_array(bounds, "bounds")
         if b.shape != (3, 2):
-            raise PoinsotError(f"bounds: must have shape (3, 2) ((xmin, xmax), (ymin, ymax), (zmin, zmax)), got {b.shape}")
+            raise PoinsotError(
+                f"bounds: must have shape (3, 2) ((xmin, xmax), (ymin, ymax), (zmin, zmax)), got {b.shape}"
+            )
         if isinstance(max_evals, bool) or not isinstance(max_evals, (int, np.integer)) or max_evals <= 0:
             raise PoinsotError(f"max_evals: must be a positive integer, got {max_evals!r}")
 
@@ -389,7 +391,7 @@ class RigidBody:
             raise InvalidMeshError(f"faces: index {int(f.max())} is out of range for {len(v)} vertices")
         if merge_vertices:
             v, f = _merge_vertices(v, f)
-        rho = _positive(density, "density")
+        rho = _scalar(density, "density")
         return cls._wrap(
             _core.MassProperties.from_mesh(
                 np.ascontiguousarray(v, dtype=np.float64), np.ascontiguousarray(f, dtype=np.int64), rho
@@ -404,7 +406,9 @@ class RigidBody:
         ``process=False`` from a triangle soup). Raises :class:`InvalidMeshError` for meshes
         that do not bound a solid, unlike ``mesh.mass_properties``."""
         if not (hasattr(mesh, "vertices") and hasattr(mesh, "faces")):
-            raise InvalidMeshError(f"mesh: must be a trimesh.Trimesh (with .vertices and .faces), got {type(mesh).__name__}")
+            raise InvalidMeshError(
+                f"mesh: must be a trimesh.Trimesh (with .vertices and .faces), got {type(mesh).__name__}"
+            )
         return cls.from_mesh(mesh.vertices, mesh.faces, density, merge_vertices=merge_vertices)
 
     @classmethod
@@ -481,7 +485,7 @@ class RigidBody:
 
     @property
     def kind(self) -> str:
-        """"spherical top", "symmetric top", "asymmetric top" or "rotor" (see :func:`classify`;
+        """ "spherical top", "symmetric top", "asymmetric top" or "rotor" (see :func:`classify`;
         relative tolerance :data:`DEFAULT_KIND_RTOL`)."""
         return str(self._core.kind(DEFAULT_KIND_RTOL))
 
@@ -531,9 +535,7 @@ class RigidBody:
         ``about`` as in :meth:`angular_momentum`."""
         return self._per_omega("holding_torque", omega, about, (3,))
 
-    def momentum_angle(
-        self, omega: Any, about: Any = None, *, degrees: bool = False
-    ) -> FloatArray | float:
+    def momentum_angle(self, omega: Any, about: Any = None, *, degrees: bool = False) -> FloatArray | float:
         """The angle between L and ω (rad, or degrees with ``degrees=True``) for angular velocity
         ``omega`` (rad/s, shape (..., 3)) → shape (...) (a float for one ω): zero when ω lies along a principal
         axis; otherwise L is not parallel to ω (eq. 2.57).

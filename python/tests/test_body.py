@@ -101,7 +101,9 @@ def test_convention_cone_apex_at_origin() -> None:
     np.testing.assert_allclose(cone.center_of_mass, [0.0, 0.0, 0.75 * h], rtol=EXACT)
     # About the apex (the origin): I_xx = 3/20 m r² + 3/5 m h², I_zz = 3/10 m r².
     I_apex = cone.inertia_about([0.0, 0.0, 0.0])
-    np.testing.assert_allclose(np.diag(I_apex), [0.15 * m * r**2 + 0.6 * m * h**2] * 2 + [0.3 * m * r**2], rtol=EXACT)
+    np.testing.assert_allclose(
+        np.diag(I_apex), [0.15 * m * r**2 + 0.6 * m * h**2] * 2 + [0.3 * m * r**2], rtol=EXACT
+    )
 
 
 # ---- standard solids against textbook formulas --------------------------------------------------
@@ -120,8 +122,16 @@ SOLIDS = {
         [M * (3 / 20 * R**2 + 3 / 80 * H**2)] * 2 + [3 / 10 * M * R**2],
         "symmetric top",
     ),
-    "cuboid": (lambda: ps.RigidBody.cuboid(M, (0.5, 1.0, 2.0)), [M * 5 / 12, M * 4.25 / 12, M * 1.25 / 12], "asymmetric top"),
-    "ellipsoid": (lambda: ps.RigidBody.ellipsoid(M, (0.5, 1.0, 2.0)), [M * 5 / 5, M * 4.25 / 5, M * 1.25 / 5], "asymmetric top"),
+    "cuboid": (
+        lambda: ps.RigidBody.cuboid(M, (0.5, 1.0, 2.0)),
+        [M * 5 / 12, M * 4.25 / 12, M * 1.25 / 12],
+        "asymmetric top",
+    ),
+    "ellipsoid": (
+        lambda: ps.RigidBody.ellipsoid(M, (0.5, 1.0, 2.0)),
+        [M * 5 / 5, M * 4.25 / 5, M * 1.25 / 5],
+        "asymmetric top",
+    ),
     "thin_rod": (lambda: ps.RigidBody.thin_rod(M, H), [M * H**2 / 12] * 2 + [0.0], "rotor"),
     "thin_disk": (lambda: ps.RigidBody.thin_disk(M, R), [M * R**2 / 4] * 2 + [M * R**2 / 2], "symmetric top"),
     "thin_ring": (lambda: ps.RigidBody.thin_ring(M, R), [M * R**2 / 2] * 2 + [M * R**2], "symmetric top"),
@@ -198,7 +208,10 @@ def test_composition_equals_particles() -> None:
     masses, positions = random_particles(rng, 8)
     whole = ps.RigidBody.from_point_masses(masses, positions)
     parts = ps.RigidBody.combine(
-        [ps.RigidBody.from_point_masses(masses[:3], positions[:3]), ps.RigidBody.from_point_masses(masses[3:], positions[3:])]
+        [
+            ps.RigidBody.from_point_masses(masses[:3], positions[:3]),
+            ps.RigidBody.from_point_masses(masses[3:], positions[3:]),
+        ]
     )
     np.testing.assert_allclose(parts.inertia, whole.inertia, rtol=1e-12, atol=1e-12)
     com = masses @ positions / masses.sum()
@@ -214,7 +227,9 @@ def test_inertia_about_points_is_the_parallel_axis_theorem() -> None:
     got = body.inertia_about(points)
     assert got.shape == (4, 2, 3, 3)
     for idx in np.ndindex(4, 2):
-        np.testing.assert_allclose(got[idx], direct_inertia(masses, positions, points[idx]), rtol=1e-12, atol=1e-11)
+        np.testing.assert_allclose(
+            got[idx], direct_inertia(masses, positions, points[idx]), rtol=1e-12, atol=1e-11
+        )
     # ... and back: I_cm = I_P − m (|d|² 1 − d dᵀ).
     P = points[0, 0]
     d = body.center_of_mass - P
@@ -263,7 +278,12 @@ def test_l_and_t_about_com_and_about_a_point_equal_direct_sums() -> None:
         origin = body.center_of_mass if about is None else about
         r = positions - origin
         L = np.array([sum(m * np.cross(ri, np.cross(w, ri)) for m, ri in zip(masses, r)) for w in omegas])
-        T = np.array([sum(0.5 * m * np.dot(np.cross(w, ri), np.cross(w, ri)) for m, ri in zip(masses, r)) for w in omegas])
+        T = np.array(
+            [
+                sum(0.5 * m * np.dot(np.cross(w, ri), np.cross(w, ri)) for m, ri in zip(masses, r))
+                for w in omegas
+            ]
+        )
         np.testing.assert_allclose(body.angular_momentum(omegas, about=about), L, rtol=1e-12, atol=1e-12)
         np.testing.assert_allclose(body.kinetic_energy(omegas, about=about), T, rtol=1e-12)
         np.testing.assert_allclose(T, 0.5 * np.einsum("ij,ij->i", omegas, L), rtol=1e-12)
@@ -295,7 +315,9 @@ def test_dumbbell_needs_a_torque_equal_to_dl_dt() -> None:
     dLdt = (L_at(dt) - L_at(-dt)) / (2 * dt)
     # Central differences: truncation ~ (ω dt)² / 6 ≈ 7e-11 relative.
     np.testing.assert_allclose(N, dLdt, rtol=1e-8, atol=1e-9)
-    assert np.linalg.norm(N) == pytest.approx(2 * m * r**2 * omega**2 * np.sin(alpha) * np.cos(alpha), rel=1e-12)
+    assert np.linalg.norm(N) == pytest.approx(
+        2 * m * r**2 * omega**2 * np.sin(alpha) * np.cos(alpha), rel=1e-12
+    )
     # Negative control: turning about a principal axis needs no torque, and L ∥ ω.
     axis = body.principal_axes[:, 2]
     np.testing.assert_allclose(body.holding_torque(axis), 0.0, atol=1e-15)
@@ -358,7 +380,11 @@ BAD = [
     (lambda: ps.RigidBody.thin_ring(1.0, float("nan")), ps.PoinsotError, "radius"),
     (lambda: ps.RigidBody.from_inertia(1.0, np.diag([1.0, 1.0, 3.0])), ps.InvalidInertiaError, "inertia"),
     (lambda: ps.RigidBody.from_inertia(1.0, np.diag([-1.0, 1.0, 1.0])), ps.InvalidInertiaError, "inertia"),
-    (lambda: ps.RigidBody.from_inertia(1.0, [[1, 0.5, 0], [0, 1, 0], [0, 0, 1]]), ps.InvalidInertiaError, "inertia"),
+    (
+        lambda: ps.RigidBody.from_inertia(1.0, [[1, 0.5, 0], [0, 1, 0], [0, 0, 1]]),
+        ps.InvalidInertiaError,
+        "inertia",
+    ),
     (lambda: ps.RigidBody.from_inertia(1.0, np.diag([1.0, np.nan, 1.0])), ps.InvalidInertiaError, "inertia"),
     (lambda: ps.RigidBody.from_inertia(1.0, np.eye(2)), ps.PoinsotError, "inertia"),
     (lambda: ps.RigidBody.from_inertia(0.0, np.eye(3)), ps.PoinsotError, "mass"),
@@ -370,11 +396,23 @@ BAD = [
     (lambda: ps.RigidBody.from_point_masses([1.0], [[0, 0]]), ps.PoinsotError, "positions"),
     (lambda: ps.RigidBody.from_point_masses([1.0], [[0, np.nan, 0]]), ps.PoinsotError, "positions"),
     (lambda: ps.RigidBody.cuboid(1.0, (1, 1, 1)).angular_momentum([1.0, 2.0]), ps.PoinsotError, "omega"),
-    (lambda: ps.RigidBody.cuboid(1.0, (1, 1, 1)).kinetic_energy([1.0, np.nan, 2.0]), ps.PoinsotError, "omega"),
-    (lambda: ps.RigidBody.cuboid(1.0, (1, 1, 1)).holding_torque([1, 2, 3], about=[1, 2]), ps.PoinsotError, "about"),
+    (
+        lambda: ps.RigidBody.cuboid(1.0, (1, 1, 1)).kinetic_energy([1.0, np.nan, 2.0]),
+        ps.PoinsotError,
+        "omega",
+    ),
+    (
+        lambda: ps.RigidBody.cuboid(1.0, (1, 1, 1)).holding_torque([1, 2, 3], about=[1, 2]),
+        ps.PoinsotError,
+        "about",
+    ),
     (lambda: ps.RigidBody.cuboid(1.0, (1, 1, 1)).inertia_about([1.0, np.inf, 0.0]), ps.PoinsotError, "point"),
     (lambda: ps.RigidBody.cuboid(1.0, (1, 1, 1)).translated([1.0, 2.0]), ps.PoinsotError, "offset"),
-    (lambda: ps.RigidBody.cuboid(1.0, (1, 1, 1)).rotated(np.diag([1.0, 1.0, -1.0])), ps.InvalidRotationError, "rotation"),
+    (
+        lambda: ps.RigidBody.cuboid(1.0, (1, 1, 1)).rotated(np.diag([1.0, 1.0, -1.0])),
+        ps.InvalidRotationError,
+        "rotation",
+    ),
     (lambda: ps.RigidBody.cuboid(1.0, (1, 1, 1)).rotated(2 * np.eye(3)), ps.InvalidRotationError, "rotation"),
     (lambda: ps.RigidBody.combine([]), ps.PoinsotError, "bodies"),
     (lambda: ps.RigidBody.combine([ps.RigidBody.thin_rod(1, 1), 3]), ps.PoinsotError, "bodies"),

@@ -64,7 +64,9 @@ def test_indicator_density_matches_the_solid_within_its_error_estimate(name: str
     exact = make(exact_mass)
     assert np.abs(body.center_of_mass - exact.center_of_mass).max() <= err.center_of_mass
     assert np.abs(body.inertia - exact.inertia).max() <= err.inertia
-    assert body.kind == exact.kind or ps.classify(body.principal_moments, rtol=3 * INDICATOR_RTOL) == exact.kind
+    assert (
+        body.kind == exact.kind or ps.classify(body.principal_moments, rtol=3 * INDICATOR_RTOL) == exact.kind
+    )
 
 
 def test_cuboid_and_thick_shell_densities() -> None:
@@ -75,7 +77,12 @@ def test_cuboid_and_thick_shell_densities() -> None:
     assert box.mass == pytest.approx(ref.mass, rel=1e-13)
     np.testing.assert_allclose(box.inertia, ref.inertia, rtol=1e-12, atol=1e-14)
     # A scalar return value is broadcast (constant density).
-    np.testing.assert_allclose(ps.RigidBody.from_density(lambda p: 7.0, [(-0.2, 0.2), (-0.5, 0.5), (-1.1, 1.1)]).inertia, ref.inertia, rtol=1e-12, atol=1e-14)
+    np.testing.assert_allclose(
+        ps.RigidBody.from_density(lambda p: 7.0, [(-0.2, 0.2), (-0.5, 0.5), (-1.1, 1.1)]).inertia,
+        ref.inertia,
+        rtol=1e-12,
+        atol=1e-14,
+    )
     # Thick spherical shell b ≤ r ≤ a: I = 2/5 m (a⁵ − b⁵)/(a³ − b³) (→ 2/3 m a² as b → a).
     a, b = 1.0, 0.7
     shell = ps.RigidBody.from_density(
@@ -106,7 +113,9 @@ def test_smooth_density_converges_tightly_and_is_called_in_batches() -> None:
     v = s * s
     assert body.mass == pytest.approx(m, rel=1e-8)
     np.testing.assert_allclose(body.center_of_mass, c, atol=1e-8)
-    np.testing.assert_allclose(body.inertia, m * np.diag([v[1] + v[2], v[2] + v[0], v[0] + v[1]]), rtol=1e-8, atol=1e-9)
+    np.testing.assert_allclose(
+        body.inertia, m * np.diag([v[1] + v[2], v[2] + v[0], v[0] + v[1]]), rtol=1e-8, atol=1e-9
+    )
     err = body.integration_error
     assert err.converged and abs(body.mass - m) <= max(err.mass, 1e-14 * m)
     # Vectorised: every call gets an (N, 3) batch, and there are far fewer calls than points.

@@ -60,7 +60,9 @@ def test_prism_and_pyramid_meshes_are_exact(n: int) -> None:
     ixx = ixx_apex - m * (0.75 * h) ** 2
     assert cone.mass == pytest.approx(m, rel=EXACT)
     np.testing.assert_allclose(cone.center_of_mass, [0, 0, 0.75 * h], atol=EXACT)
-    np.testing.assert_allclose(cone.inertia, np.diag([ixx, ixx, rho * J * h / 5]), rtol=EXACT, atol=EXACT * ixx)
+    np.testing.assert_allclose(
+        cone.inertia, np.diag([ixx, ixx, rho * J * h / 5]), rtol=EXACT, atol=EXACT * ixx
+    )
 
 
 def test_box_mesh_equals_cuboid_exactly() -> None:
@@ -122,7 +124,12 @@ def test_cylinder_and_cone_meshes_tend_to_the_solids() -> None:
     r, h, n = 0.5, 1.5, 256
     tol = (2 * np.pi / n) ** 2
     cyl = ps.RigidBody.from_trimesh(trimesh.creation.cylinder(radius=r, height=h, sections=n))
-    np.testing.assert_allclose(cyl.inertia, ps.RigidBody.solid_cylinder(cyl.mass, r, h).inertia, rtol=tol, atol=tol * cyl.inertia.max())
+    np.testing.assert_allclose(
+        cyl.inertia,
+        ps.RigidBody.solid_cylinder(cyl.mass, r, h).inertia,
+        rtol=tol,
+        atol=tol * cyl.inertia.max(),
+    )
     cone = ps.RigidBody.from_trimesh(apex_down_cone(r, h, n))
     ref = ps.RigidBody.solid_cone(cone.mass, r, h)
     np.testing.assert_allclose(cone.center_of_mass, ref.center_of_mass, atol=EXACT)
@@ -154,7 +161,9 @@ def test_thin_shapes_as_limits_of_meshes_and_particles() -> None:
     np.testing.assert_allclose(ring_mesh.inertia, ring.inertia, rtol=tol + 2 * (a / r) ** 2, atol=scale)
     # ... and particles: N ≥ 3 equal masses on a circle have exactly the ring's inertia.
     phi = 2 * np.pi * np.arange(7) / 7
-    pts = ps.RigidBody.from_point_masses(np.full(7, m / 7), np.c_[r * np.cos(phi), r * np.sin(phi), np.zeros(7)])
+    pts = ps.RigidBody.from_point_masses(
+        np.full(7, m / 7), np.c_[r * np.cos(phi), r * np.sin(phi), np.zeros(7)]
+    )
     np.testing.assert_allclose(pts.inertia, ps.RigidBody.thin_ring(m, r).inertia, rtol=1e-14, atol=1e-15)
     # Rod: N particles at the midpoints of N equal segments give m L²/12 (1 − 1/N²) exactly.
     N = 50
@@ -168,7 +177,9 @@ def test_thin_shapes_as_limits_of_meshes_and_particles() -> None:
     stick = ps.RigidBody.from_trimesh(trimesh.creation.cylinder(radius=rr, height=L, sections=64))
     tol = 2 * (rr / L) ** 2 * 12
     rod = ps.RigidBody.thin_rod(stick.mass, L)
-    np.testing.assert_allclose(stick.inertia[:2, :2], rod.inertia[:2, :2], rtol=tol, atol=EXACT * rod.inertia.max())
+    np.testing.assert_allclose(
+        stick.inertia[:2, :2], rod.inertia[:2, :2], rtol=tol, atol=EXACT * rod.inertia.max()
+    )
 
 
 # ---- trimesh agreement ----------------------------------------------------------------------------
@@ -191,9 +202,13 @@ def test_convention_trimesh_products_of_inertia_are_negated_too() -> None:
 def _watertight_meshes() -> list[trimesh.Trimesh]:
     rng = np.random.default_rng(7)
     skew = trimesh.creation.box(extents=(0.3, 1.1, 2.0))
-    skew.apply_transform(trimesh.transformations.compose_matrix(angles=[0.3, -0.8, 1.9], translate=[5.0, -2.0, 1.0]))
+    skew.apply_transform(
+        trimesh.transformations.compose_matrix(angles=[0.3, -0.8, 1.9], translate=[5.0, -2.0, 1.0])
+    )
     hull = trimesh.convex.convex_hull(rng.normal(size=(200, 3)) * [1.0, 2.0, 0.5] + [1, 2, 3])
-    two = trimesh.util.concatenate([trimesh.creation.icosphere(3), trimesh.creation.box(extents=(1, 1, 1)).apply_translation([3, 0, 0])])
+    two = trimesh.util.concatenate(
+        [trimesh.creation.icosphere(3), trimesh.creation.box(extents=(1, 1, 1)).apply_translation([3, 0, 0])]
+    )
     return [
         trimesh.creation.icosphere(subdivisions=4, radius=2.0),
         trimesh.creation.cylinder(radius=0.3, height=2.0, sections=40),
@@ -214,7 +229,9 @@ def test_agrees_with_trimesh_on_watertight_meshes(index: int) -> None:
     ours = ps.RigidBody.from_trimesh(mesh, density=2700.0)
     assert ours.mass == pytest.approx(theirs["mass"], rel=1e-10)
     np.testing.assert_allclose(ours.center_of_mass, theirs["center_mass"], rtol=1e-10, atol=1e-10)
-    np.testing.assert_allclose(ours.inertia, theirs["inertia"], rtol=1e-9, atol=1e-10 * np.abs(theirs["inertia"]).max())
+    np.testing.assert_allclose(
+        ours.inertia, theirs["inertia"], rtol=1e-9, atol=1e-10 * np.abs(theirs["inertia"]).max()
+    )
 
 
 # ---- refusals -------------------------------------------------------------------------------------
