@@ -26,6 +26,13 @@ class MassProperties:
         mass: float, center_of_mass: NDArray[np.float64], inertia: NDArray[np.float64]
     ) -> MassProperties: ...
     @staticmethod
+    def from_inertia_about(
+        mass: float,
+        center_of_mass: NDArray[np.float64],
+        inertia: NDArray[np.float64],
+        about: NDArray[np.float64],
+    ) -> MassProperties: ...
+    @staticmethod
     def from_point_masses(
         masses: NDArray[np.float64], positions: NDArray[np.float64]
     ) -> MassProperties: ...

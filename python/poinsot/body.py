@@ -174,17 +174,40 @@ class RigidBody:
     # ---- constructors ---------------------------------------------------------------------
 
     @classmethod
-    def from_inertia(cls, mass: float, inertia: Any, center_of_mass: Any = (0.0, 0.0, 0.0)) -> RigidBody:
+    def from_inertia(
+        cls,
+        mass: float,
+        inertia: Any,
+        center_of_mass: Any = (0.0, 0.0, 0.0),
+        *,
+        about: Any = None,
+    ) -> RigidBody:
         """A body of mass ``mass`` (kg) whose inertia tensor about its centre of mass
         ``center_of_mass`` (m, (3,)) is ``inertia`` (kg·m², (3, 3), products negated as in
         eqs. 2.49–2.50).
 
+        With ``about=P`` (m, (3,)), ``inertia`` is the tensor about the point P instead (as CAD
+        programs often report it about the part's origin); it is shifted to the centre of mass
+        by the parallel-axis theorem run backwards, I_cm = I_P − m (|d|² 1 − d dᵀ),
+        d = com − P, and the checks allow for the round-off of that subtraction.
+
         Raises:
-            InvalidInertiaError: ``inertia`` is not finite, not symmetric, has a negative
-                principal moment or violates I1 + I2 ≥ I3 (see :func:`check_inertia`).
-            PoinsotError: ``mass`` not finite and > 0, non-finite ``center_of_mass``, shapes.
+            InvalidInertiaError: ``inertia`` (about the centre of mass) is not finite, not
+                symmetric, has a negative principal moment or violates I1 + I2 ≥ I3 (see
+                :func:`check_inertia`).
+            PoinsotError: ``mass`` not finite and > 0, non-finite ``center_of_mass`` or
+                ``about``, shapes.
         """
-        return cls(mass, inertia, center_of_mass)
+        if about is None:
+            return cls(mass, inertia, center_of_mass)
+        return cls._wrap(
+            _core.MassProperties.from_inertia_about(
+                _scalar(mass, "mass"),
+                as_vector3(center_of_mass, "center_of_mass"),
+                _inertia_array(inertia),
+                as_vector3(about, "about"),
+            )
+        )
 
     @classmethod
     def from_point_masses(cls, masses: Any, positions: Any) -> RigidBody:

@@ -237,6 +237,22 @@ def test_inertia_about_points_is_the_parallel_axis_theorem() -> None:
     np.testing.assert_allclose(back, body.inertia, atol=1e-11 * np.abs(got[0, 0]).max())
 
 
+def test_from_inertia_about_a_point_shifts_back_to_the_centre_of_mass() -> None:
+    """CAD-style input: the cone's inertia about its apex, I_xx = 3/20 m r² + 3/5 m h²."""
+    m, r, h = 1.5, 0.5, 2.0
+    apex = np.diag([0.15 * m * r**2 + 0.6 * m * h**2] * 2 + [0.3 * m * r**2])
+    body = ps.RigidBody.from_inertia(m, apex, (0.0, 0.0, 0.75 * h), about=(0.0, 0.0, 0.0))
+    np.testing.assert_allclose(body.inertia, ps.RigidBody.solid_cone(m, r, h).inertia, rtol=1e-13)
+    # A rod about its end: m L²/3 → m L²/12 about the centre, on the triangle boundary (I_zz = 0).
+    rod = ps.RigidBody.from_inertia(2.0, np.diag([2 / 3, 2 / 3, 0.0]), (0, 0, 0.5), about=(0, 0, 0))
+    assert rod.kind == "rotor"
+    with pytest.raises(ps.PoinsotError, match="^about:"):
+        ps.RigidBody.from_inertia(1.0, np.eye(3), about=(0, 0))
+    with pytest.raises(ps.InvalidInertiaError, match="^inertia:"):
+        # About the origin, too little inertia for a body whose centre of mass is 1 m away.
+        ps.RigidBody.from_inertia(1.0, 0.1 * np.eye(3), (1.0, 0.0, 0.0), about=(0.0, 0.0, 0.0))
+
+
 @settings(max_examples=60, deadline=None, derandomize=True)
 @given(
     quat=st.lists(st.floats(-1, 1), min_size=4, max_size=4).filter(lambda q: np.linalg.norm(q) > 0.1),

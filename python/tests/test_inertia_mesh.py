@@ -263,6 +263,8 @@ def test_non_manifold_mesh_is_refused() -> None:
     fin = np.vstack([f, [[a, b, tip], [b, a, tip]]])
     with pytest.raises(ps.InvalidMeshError, match="non-manifold.*used by 4 faces"):
         ps.RigidBody.from_mesh(v2, fin)
+    # Negative control: without the fin (the extra vertex unused) the mesh passes.
+    assert ps.RigidBody.from_mesh(v2, fin[:-2]).mass == pytest.approx(ps.RigidBody.from_mesh(v, f).mass)
 
 
 def test_inside_out_mesh_is_refused_and_reversed_passes() -> None:
@@ -281,6 +283,9 @@ def test_inconsistently_oriented_mesh_is_refused() -> None:
     bad[10] = bad[10][::-1]
     with pytest.raises(ps.InvalidMeshError, match="inconsistently oriented: 3 edge"):
         ps.RigidBody.from_mesh(v, bad)
+    # Negative control: the face turned back passes.
+    bad[10] = bad[10][::-1]
+    assert ps.RigidBody.from_mesh(v, bad).mass > 0
 
 
 BAD_MESHES = [

@@ -48,6 +48,20 @@ impl PyMassProperties {
         wrap(MassProperties::new(mass, com, i))
     }
 
+    /// Like `from_inertia`, with `inertia` about the point `about` (m, (3,)).
+    #[staticmethod]
+    fn from_inertia_about(
+        mass: f64,
+        center_of_mass: PyReadonlyArray1<'_, f64>,
+        inertia: PyReadonlyArray2<'_, f64>,
+        about: PyReadonlyArray1<'_, f64>,
+    ) -> PyResult<Self> {
+        let com = Vec3::from(vec3("center_of_mass", &center_of_mass)?);
+        let i = to_mat(mat3("inertia", &inertia)?);
+        let p = Vec3::from(vec3("about", &about)?);
+        wrap(MassProperties::from_inertia_about(mass, com, i, p))
+    }
+
     /// Point masses (kg, (N,)) at positions (m, (N, 3)).
     #[staticmethod]
     fn from_point_masses(
