@@ -2,7 +2,9 @@
 //!
 //! `MassProperties` wraps `poinsot::inertia::MassProperties`; the public, documented class is
 //! `poinsot.RigidBody` (python/poinsot/body.py), which holds one of these.
-use numpy::{PyArray1, PyArray2, PyArray3, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
+use numpy::{
+    PyArray1, PyArray2, PyArray3, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods,
+};
 use poinsot::inertia::{self, CubatureOptions, MassProperties};
 use poinsot::{Error, Mat3, Vec3};
 use pyo3::prelude::*;
@@ -12,12 +14,18 @@ use crate::errors::{invalid, IntoPy};
 
 /// Row-major `[[f64; 3]; 3]` → nalgebra (column-major storage, same matrix).
 fn to_mat(m: [[f64; 3]; 3]) -> Mat3 {
-    Mat3::new(m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0], m[2][1], m[2][2])
+    Mat3::new(
+        m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0], m[2][1], m[2][2],
+    )
 }
 
 /// nalgebra → row-major `[[f64; 3]; 3]`.
 fn from_mat(m: &Mat3) -> [[f64; 3]; 3] {
-    [[m[(0, 0)], m[(0, 1)], m[(0, 2)]], [m[(1, 0)], m[(1, 1)], m[(1, 2)]], [m[(2, 0)], m[(2, 1)], m[(2, 2)]]]
+    [
+        [m[(0, 0)], m[(0, 1)], m[(0, 2)]],
+        [m[(1, 0)], m[(1, 1)], m[(1, 2)]],
+        [m[(2, 0)], m[(2, 1)], m[(2, 2)]],
+    ]
 }
 
 fn opt_vec3(argument: &str, a: Option<PyReadonlyArray1<'_, f64>>) -> PyResult<Option<Vec3>> {
@@ -68,7 +76,9 @@ impl PyMassProperties {
         masses: PyReadonlyArray1<'_, f64>,
         positions: PyReadonlyArray2<'_, f64>,
     ) -> PyResult<Self> {
-        let m = masses.as_slice().map_err(|_| invalid("masses", "must be a contiguous array"))?;
+        let m = masses
+            .as_slice()
+            .map_err(|_| invalid("masses", "must be a contiguous array"))?;
         let p = rows3("positions", &positions)?;
         wrap(MassProperties::from_point_masses(m, &p))
     }
@@ -154,17 +164,29 @@ impl PyMassProperties {
     ) -> PyResult<(Self, f64, f64, f64, usize, bool)> {
         let shape = bounds.shape().to_vec();
         if shape != [3, 2] {
-            return Err(invalid("bounds", format!("must have shape (3, 2), got {shape:?}")));
+            return Err(invalid(
+                "bounds",
+                format!("must have shape (3, 2), got {shape:?}"),
+            ));
         }
         let b = bounds.as_array();
-        let bounds = [[b[[0, 0]], b[[0, 1]]], [b[[1, 0]], b[[1, 1]]], [b[[2, 0]], b[[2, 1]]]];
-        let options = CubatureOptions { rtol, atol, max_evals };
+        let bounds = [
+            [b[[0, 0]], b[[0, 1]]],
+            [b[[1, 0]], b[[1, 1]]],
+            [b[[2, 0]], b[[2, 1]]],
+        ];
+        let options = CubatureOptions {
+            rtol,
+            atol,
+            max_evals,
+        };
         let mut failure: Option<PyErr> = None;
         let result = inertia::density_mass_properties(
             |points: &[[f64; 3]], out: &mut [f64]| {
                 let mut call = || -> PyResult<()> {
                     use numpy::PyArrayMethods;
-                    let arr = PyArray1::from_slice(py, points.as_flattened()).reshape([points.len(), 3])?;
+                    let arr = PyArray1::from_slice(py, points.as_flattened())
+                        .reshape([points.len(), 3])?;
                     let values = density.call1((arr,))?;
                     let values: PyReadonlyArray1<'_, f64> = values.extract().map_err(|_| {
                         invalid("density", "must return a float64 array of shape (N,)")
@@ -279,7 +301,12 @@ impl PyMassProperties {
         let about = opt_vec3("about", about)?;
         let mut out = Vec::new();
         for w in rows3("omega", &omega)? {
-            out.extend(self.inner.angular_momentum(&Vec3::from(w), about.as_ref()).py()?.iter());
+            out.extend(
+                self.inner
+                    .angular_momentum(&Vec3::from(w), about.as_ref())
+                    .py()?
+                    .iter(),
+            );
         }
         rows3_out(py, out)
     }
@@ -295,7 +322,11 @@ impl PyMassProperties {
         let about = opt_vec3("about", about)?;
         let mut out = Vec::new();
         for w in rows3("omega", &omega)? {
-            out.push(self.inner.kinetic_energy(&Vec3::from(w), about.as_ref()).py()?);
+            out.push(
+                self.inner
+                    .kinetic_energy(&Vec3::from(w), about.as_ref())
+                    .py()?,
+            );
         }
         Ok(PyArray1::from_vec(py, out))
     }
@@ -311,7 +342,12 @@ impl PyMassProperties {
         let about = opt_vec3("about", about)?;
         let mut out = Vec::new();
         for w in rows3("omega", &omega)? {
-            out.extend(self.inner.holding_torque(&Vec3::from(w), about.as_ref()).py()?.iter());
+            out.extend(
+                self.inner
+                    .holding_torque(&Vec3::from(w), about.as_ref())
+                    .py()?
+                    .iter(),
+            );
         }
         rows3_out(py, out)
     }
@@ -327,7 +363,11 @@ impl PyMassProperties {
         let about = opt_vec3("about", about)?;
         let mut out = Vec::new();
         for w in rows3("omega", &omega)? {
-            out.push(self.inner.momentum_angle(&Vec3::from(w), about.as_ref()).py()?);
+            out.push(
+                self.inner
+                    .momentum_angle(&Vec3::from(w), about.as_ref())
+                    .py()?,
+            );
         }
         Ok(PyArray1::from_vec(py, out))
     }
@@ -336,7 +376,9 @@ impl PyMassProperties {
 /// Kind of top of principal moments `moments` (kg·m², (3,)) with relative tolerance `rtol`.
 #[pyfunction]
 fn classify(moments: PyReadonlyArray1<'_, f64>, rtol: f64) -> PyResult<&'static str> {
-    Ok(inertia::classify(vec3("moments", &moments)?, rtol).py()?.as_str())
+    Ok(inertia::classify(vec3("moments", &moments)?, rtol)
+        .py()?
+        .as_str())
 }
 
 /// Checks an inertia tensor (kg·m², (3, 3)); returns it symmetrised.
