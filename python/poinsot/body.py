@@ -1,2 +1,656 @@
-"""Rigid bodies (filled by the inertia work)."""
-__all__: list[str] = []
+"""Rigid bodies: mass, centre of mass, inertia tensor, principal axes, kind of top, and the
+angular momentum, kinetic energy and holding torque of a body turning with angular velocity ω
+(the unit's eqs. 2.43–2.66).
+
+Conventions (pinned by the ``test_convention_*`` tests):
+
+* SI units: mass in kg, lengths in m, inertia in kg·m², ω in rad/s, L in kg·m²/s, T in J,
+  torque in N·m.
+* Products of inertia are **negated** as in the unit (2.49–2.50): ``I_xy = −Σ m x y``, so that
+  ``L = I·ω`` (2.63) and ``T = ½ ω·I·ω`` (2.64). For one kilogram at (1, 2, 3) m::
+
+      I = [[13, -2, -3],
+           [-2, 10, -6],
+           [-3, -6,  5]]  kg·m²
+
+* :attr:`RigidBody.inertia` is about the **centre of mass**, in the body's reference axes.
+* :attr:`RigidBody.principal_moments` are **ascending**; :attr:`RigidBody.principal_axes` holds
+  the principal axes as **columns** of a proper rotation (``det = +1``), so
+  ``inertia == axes @ diag(moments) @ axes.T``.
+* Standard solids have their axis of symmetry along z and are centred on their centre of mass,
+  except the cone, whose **apex is at the origin** with its axis along +z (centre of mass at
+  ``(0, 0, 3h/4)``).
+
+All physics runs in the compiled core (``poinsot._core``); this module converts arrays, adds
+broadcasting and warnings.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import os
+import warnings
+from collections.abc import Callable, Iterable
+from typing import Any
+
+import numpy as np
+
+from . import _core
+from ._validate import (
+    FloatArray,
+    as_float_array,
+    as_matrices,
+    as_scalar,
+    as_vector3,
+    as_vectors,
+)
+from .errors import InvalidMeshError, PoinsotError
+
+__all__ = [
+    "RigidBody",
+    "IntegrationErrorEstimate",
+    "IntegrationWarning",
+    "classify",
+    "check_inertia",
+    "DEFAULT_KIND_RTOL",
+]
+
+#: Default relative tolerance of :func:`classify` and :attr:`RigidBody.kind` (in units of the
+#: largest principal moment): moments closer than this are "equal", smaller than this "zero".
+DEFAULT_KIND_RTOL = 1e-9
+
+
+class IntegrationWarning(UserWarning):
+    """:meth:`RigidBody.from_density` stopped at ``max_evals`` before reaching ``rtol``; the
+    body holds the best estimate, and :attr:`RigidBody.integration_error` its error."""
+
+
+@dataclasses.dataclass(frozen=True)
+class IntegrationErrorEstimate:
+    """Error estimates of a body integrated from a density (:meth:`RigidBody.from_density`).
+
+    Attributes:
+        mass: error estimate of the mass (kg).
+        center_of_mass: largest error estimate of the three coordinates of the centre of
+            mass (m).
+        inertia: largest error estimate of the nine entries of the inertia tensor (kg·m²).
+        evaluations: number of density evaluations (points).
+        converged: whether ``rtol`` was reached within ``max_evals``.
+    """
+
+    mass: float
+    center_of_mass: float
+    inertia: float
+    evaluations: int
+    converged: bool
+
+
+def classify(moments: Any, rtol: float = DEFAULT_KIND_RTOL) -> str:
+    """The kind of top of principal moments ``moments`` (kg·m², shape (3,), any order).
+
+    Returns one of ``"spherical top"`` (I1 = I2 = I3), ``"symmetric top"`` (two equal),
+    ``"asymmetric top"`` (all different) or ``"rotor"`` (two equal and the third zero, like a
+    thin rod or a diatomic molecule) — the unit's classification after eq. 2.66. Moments are
+    "equal" when they differ by at most ``rtol`` times the largest, "zero" when at most ``rtol``
+    times the largest. A single point mass (all moments zero) satisfies the unit's definition
+    of a rotor (I1 = I2, I3 = 0) and is reported as ``"rotor"``.
+
+    Raises:
+        InvalidInertiaError: the moments are negative or violate I1 + I2 ≥ I3 (message names
+            ``moments``).
+        PoinsotError: non-finite moments, a shape other than (3,), or a negative ``rtol``.
+    """
+    m = as_float_array(moments, "moments")
+    if m.shape != (3,):
+        raise PoinsotError(f"moments: must have shape (3,), got {m.shape}")
+    return _core.classify(m, float(as_scalar(rtol, "rtol")))
+
+
+def check_inertia(inertia: Any) -> FloatArray:
+    """Checks that ``inertia`` (kg·m², shape (3, 3)) is the inertia tensor of some body about
+    its centre of mass and returns it as a float array, exactly symmetrised.
+
+    Conditions: finite; symmetric within 1e-9 of the largest entry; principal moments ≥ 0;
+    the triangle inequality I1 + I2 ≥ I3 (tolerance 16 ε of the largest moment, so thin rods,
+    plates and rings, which lie on the boundary, pass).
+
+    Raises:
+        InvalidInertiaError: one of the conditions fails; the message names ``inertia``, the
+            failing condition and by how much.
+        PoinsotError: the shape is not (3, 3).
+    """
+    arr = as_float_array(inertia, "inertia", finite=False)
+    if arr.shape != (3, 3):
+        raise PoinsotError(f"inertia: must have shape (3, 3), got {arr.shape}")
+    return _core.check_inertia(np.ascontiguousarray(arr))
+
+
+def _scalar(value: Any, name: str) -> float:
+    """A finite scalar; the core checks the sign (and names ``name``)."""
+    return as_scalar(value, name)
+
+
+class RigidBody:
+    """The mass properties of a rigid body, and what follows from them for a body turning with
+    angular velocity ω.
+
+    Build one with a constructor: :meth:`from_point_masses`, :meth:`from_inertia` (also
+    ``RigidBody(mass, inertia, center_of_mass)``), the standard solids (:meth:`solid_sphere`,
+    :meth:`spherical_shell`, :meth:`solid_cylinder`, :meth:`solid_cone`, :meth:`cuboid`,
+    :meth:`ellipsoid`, :meth:`thin_rod`, :meth:`thin_disk`, :meth:`thin_ring`),
+    :meth:`from_density`, :meth:`from_mesh`, :meth:`from_trimesh`, :meth:`load_mesh`; combine
+    bodies with ``a + b`` or :meth:`combine`. Instances are immutable.
+
+    Attributes:
+        mass: mass (kg).
+        center_of_mass: centre of mass (m), shape (3,).
+        inertia: inertia tensor about the centre of mass (kg·m², (3, 3)), products of inertia
+            negated (eqs. 2.46–2.50).
+        principal_moments: principal moments (kg·m², (3,)), ascending.
+        principal_axes: principal axes as the columns of a proper rotation ((3, 3), det +1).
+        kind: "spherical top", "symmetric top", "asymmetric top" or "rotor".
+        integration_error: for bodies from :meth:`from_density` (and their translations), an
+            :class:`IntegrationErrorEstimate`; otherwise ``None``.
+    """
+
+    __slots__ = ("_core", "_integration_error")
+
+    def __init__(self, mass: float, inertia: Any, center_of_mass: Any = (0.0, 0.0, 0.0)) -> None:
+        """Same as :meth:`from_inertia`."""
+        self._core: Any = _core.MassProperties.from_inertia(
+            _scalar(mass, "mass"),
+            as_vector3(center_of_mass, "center_of_mass"),
+            _inertia_array(inertia),
+        )
+        self._integration_error: IntegrationErrorEstimate | None = None
+
+    @classmethod
+    def _wrap(cls, core: Any, integration_error: IntegrationErrorEstimate | None = None) -> RigidBody:
+        body = cls.__new__(cls)
+        body._core = core
+        body._integration_error = integration_error
+        return body
+
+    # ---- constructors ---------------------------------------------------------------------
+
+    @classmethod
+    def from_inertia(
+        cls,
+        mass: float,
+        inertia: Any,
+        center_of_mass: Any = (0.0, 0.0, 0.0),
+        *,
+        about: Any = None,
+    ) -> RigidBody:
+        """A body of mass ``mass`` (kg) whose inertia tensor about its centre of mass
+        ``center_of_mass`` (m, (3,)) is ``inertia`` (kg·m², (3, 3), products negated as in
+        eqs. 2.49–2.50).
+
+        With ``about=P`` (m, (3,)), ``inertia`` is the tensor about the point P instead (as CAD
+        programs often report it about the part's origin); it is shifted to the centre of mass
+        by the parallel-axis theorem run backwards, I_cm = I_P − m (|d|² 1 − d dᵀ),
+        d = com − P, and the checks allow for the round-off of that subtraction.
+
+        Raises:
+            InvalidInertiaError: ``inertia`` (about the centre of mass) is not finite, not
+                symmetric, has a negative principal moment or violates I1 + I2 ≥ I3 (see
+                :func:`check_inertia`).
+            PoinsotError: ``mass`` not finite and > 0, non-finite ``center_of_mass`` or
+                ``about``, shapes.
+        """
+        if about is None:
+            return cls(mass, inertia, center_of_mass)
+        return cls._wrap(
+            _core.MassProperties.from_inertia_about(
+                _scalar(mass, "mass"),
+                as_vector3(center_of_mass, "center_of_mass"),
+                _inertia_array(inertia),
+                as_vector3(about, "about"),
+            )
+        )
+
+    @classmethod
+    def from_point_masses(cls, masses: Any, positions: Any) -> RigidBody:
+        """Point masses ``masses`` (kg, (N,), each > 0) at ``positions`` (m, (N, 3)): the sums
+        of eqs. 2.46–2.50, taken about the centre of mass Σ m r / Σ m. One point mass is
+        allowed (zero inertia about itself; its kind is "rotor", see :func:`classify`).
+
+        Raises:
+            PoinsotError: empty, non-finite or non-positive masses (with the index), non-finite
+                positions, or shapes that do not match; the message names the argument.
+        """
+        m = as_float_array(masses, "masses")
+        if m.ndim == 0:
+            m = m.reshape(1)
+        if m.ndim != 1:
+            raise PoinsotError(f"masses: must have shape (N,), got {m.shape}")
+        p = as_float_array(positions, "positions")
+        if p.ndim == 1 and p.shape == (3,):
+            p = p.reshape(1, 3)
+        if p.ndim != 2 or p.shape[1] != 3:
+            raise PoinsotError(f"positions: must have shape (N, 3), got {p.shape}")
+        return cls._wrap(
+            _core.MassProperties.from_point_masses(np.ascontiguousarray(m), np.ascontiguousarray(p))
+        )
+
+    @classmethod
+    def solid_sphere(cls, mass: float, radius: float) -> RigidBody:
+        """A uniform solid sphere of mass ``mass`` (kg) and radius ``radius`` (m), centred at the
+        origin: I = 2/5 m r² about every axis (a spherical top)."""
+        return cls._wrap(_core.MassProperties.solid_sphere(_scalar(mass, "mass"), _scalar(radius, "radius")))
+
+    @classmethod
+    def spherical_shell(cls, mass: float, radius: float) -> RigidBody:
+        """A thin uniform spherical shell of mass ``mass`` (kg) and radius ``radius`` (m),
+        centred at the origin: I = 2/3 m r² about every axis."""
+        return cls._wrap(
+            _core.MassProperties.spherical_shell(_scalar(mass, "mass"), _scalar(radius, "radius"))
+        )
+
+    @classmethod
+    def solid_cylinder(cls, mass: float, radius: float, height: float) -> RigidBody:
+        """A uniform solid cylinder (kg; radius and height in m), axis along z, centred at its
+        centre of mass: I_zz = m r²/2, I_xx = I_yy = m (3 r² + h²)/12."""
+        return cls._wrap(
+            _core.MassProperties.solid_cylinder(
+                _scalar(mass, "mass"), _scalar(radius, "radius"), _scalar(height, "height")
+            )
+        )
+
+    @classmethod
+    def solid_cone(cls, mass: float, radius: float, height: float) -> RigidBody:
+        """A uniform solid right circular cone (kg; base radius and height in m) with its
+        **apex at the origin** and axis along +z (base at z = h): centre of mass (0, 0, 3h/4);
+        about it I_zz = 3/10 m r², I_xx = I_yy = 3/20 m r² + 3/80 m h²."""
+        return cls._wrap(
+            _core.MassProperties.solid_cone(
+                _scalar(mass, "mass"), _scalar(radius, "radius"), _scalar(height, "height")
+            )
+        )
+
+    @classmethod
+    def cuboid(cls, mass: float, sides: Any) -> RigidBody:
+        """A uniform solid cuboid of mass ``mass`` (kg) with sides ``sides`` = (a, b, c) (m)
+        along x, y, z, centred at the origin: I_xx = m (b² + c²)/12 and cyclically."""
+        return cls._wrap(_core.MassProperties.cuboid(_scalar(mass, "mass"), as_vector3(sides, "sides")))
+
+    @classmethod
+    def ellipsoid(cls, mass: float, semi_axes: Any) -> RigidBody:
+        """A uniform solid ellipsoid of mass ``mass`` (kg) with semi-axes ``semi_axes`` =
+        (a, b, c) (m) along x, y, z, centred at the origin: I_xx = m (b² + c²)/5 and
+        cyclically."""
+        return cls._wrap(
+            _core.MassProperties.ellipsoid(_scalar(mass, "mass"), as_vector3(semi_axes, "semi_axes"))
+        )
+
+    @classmethod
+    def thin_rod(cls, mass: float, length: float) -> RigidBody:
+        """A thin uniform rod of mass ``mass`` (kg) and length ``length`` (m) along z, centred at
+        the origin: I_xx = I_yy = m L²/12, I_zz = 0 (a rotor)."""
+        return cls._wrap(_core.MassProperties.thin_rod(_scalar(mass, "mass"), _scalar(length, "length")))
+
+    @classmethod
+    def thin_disk(cls, mass: float, radius: float) -> RigidBody:
+        """A thin uniform disk of mass ``mass`` (kg) and radius ``radius`` (m) in the xy plane,
+        centred at the origin: I_xx = I_yy = m r²/4, I_zz = m r²/2."""
+        return cls._wrap(_core.MassProperties.thin_disk(_scalar(mass, "mass"), _scalar(radius, "radius")))
+
+    @classmethod
+    def thin_ring(cls, mass: float, radius: float) -> RigidBody:
+        """A thin uniform ring (hoop) of mass ``mass`` (kg) and radius ``radius`` (m) in the xy
+        plane, centred at the origin: I_xx = I_yy = m r²/2, I_zz = m r²."""
+        return cls._wrap(_core.MassProperties.thin_ring(_scalar(mass, "mass"), _scalar(radius, "radius")))
+
+    @classmethod
+    def from_density(
+        cls,
+        density: Callable[[FloatArray], Any],
+        bounds: Any,
+        *,
+        rtol: float = 1e-6,
+        atol: float = 0.0,
+        max_evals: int = 10_000_000,
+    ) -> RigidBody:
+        """The body of density ``density`` (kg/m³) over the box ``bounds`` (m), by adaptive
+        cubature of eqs. 2.61–2.62 (Genz–Malik degree-7/5 rules, subdivision where the density
+        varies most).
+
+        Args:
+            density: a **vectorised** callable: given points of shape (N, 3) (m) it returns the
+                densities, shape (N,) (kg/m³, finite and ≥ 0; a scalar is broadcast). It is
+                called with batches of many points at once.
+            bounds: ``((xmin, xmax), (ymin, ymax), (zmin, zmax))`` (m), shape (3, 2), with
+                min < max; the density is taken as zero outside.
+            rtol: relative tolerance: the mass to ``rtol·m``, the centre of mass to ``rtol`` times
+                the half-diagonal of the box, the inertia to ``rtol·tr(I)/2``.
+            atol: absolute tolerance on the inertia entries (kg·m²); the looser one wins.
+            max_evals: the most density evaluations (points).
+
+        The error estimates are in :attr:`integration_error`. If ``max_evals`` is reached
+        before the tolerance, the best estimate is returned with an :class:`IntegrationWarning`
+        (discontinuous densities, e.g. the indicator of a shape, converge slowly).
+
+        Raises:
+            PoinsotError: bad ``bounds`` (shape, non-finite, min ≥ max), ``rtol``, ``atol`` or
+                ``max_evals``; a density value that is negative, not finite or of the wrong
+                shape; a density that integrates to zero mass (message names ``density``).
+                Exceptions raised by ``density`` itself propagate unchanged.
+        """
+        if not callable(density):
+            raise PoinsotError(f"density: must be a callable (N, 3) -> (N,), got {type(density).__name__}")
+        b = as_float_array(bounds, "bounds")
+        if b.shape != (3, 2):
+            raise PoinsotError(
+                f"bounds: must have shape (3, 2) ((xmin, xmax), (ymin, ymax), (zmin, zmax)), got {b.shape}"
+            )
+        if isinstance(max_evals, bool) or not isinstance(max_evals, (int, np.integer)) or max_evals <= 0:
+            raise PoinsotError(f"max_evals: must be a positive integer, got {max_evals!r}")
+
+        def batched(points: FloatArray) -> FloatArray:
+            values = np.asarray(density(points), dtype=np.float64)
+            if values.ndim == 0:
+                values = np.full(points.shape[0], float(values))
+            if values.shape != (points.shape[0],):
+                raise PoinsotError(
+                    f"density: must return shape (N,) = ({points.shape[0]},) for points of shape "
+                    f"{points.shape}, got {values.shape}"
+                )
+            return np.ascontiguousarray(values)
+
+        core, mass_err, com_err, inertia_err, evals, converged = _core.MassProperties.from_density(
+            batched,
+            np.ascontiguousarray(b),
+            as_scalar(rtol, "rtol"),
+            as_scalar(atol, "atol"),
+            int(max_evals),
+        )
+        estimate = IntegrationErrorEstimate(mass_err, com_err, inertia_err, evals, converged)
+        if not converged:
+            warnings.warn(
+                f"from_density: max_evals={max_evals} reached before rtol={rtol}; estimated "
+                f"errors: mass {mass_err:.3e} kg, centre of mass {com_err:.3e} m, inertia "
+                f"{inertia_err:.3e} kg·m² (see RigidBody.integration_error)",
+                IntegrationWarning,
+                stacklevel=2,
+            )
+        return cls._wrap(core, estimate)
+
+    @classmethod
+    def from_mesh(
+        cls, vertices: Any, faces: Any, density: float = 1.0, *, merge_vertices: bool = False
+    ) -> RigidBody:
+        """The solid bounded by a closed triangle mesh, of uniform ``density`` (kg/m³), by exact
+        polyhedral integrals (eqs. 2.61–2.62 summed over signed tetrahedra).
+
+        Args:
+            vertices: vertex coordinates (m), shape (N, 3).
+            faces: vertex indices, integer array of shape (M, 3); each face counter-clockwise
+                seen from outside (normals point out of the solid).
+            density: uniform density (kg/m³), > 0.
+            merge_vertices: first merge vertices with exactly equal coordinates (needed for
+                meshes that repeat vertices per face, such as STL "triangle soups").
+
+        The mesh is checked before integrating and refused, never silently integrated, if it
+        does not bound a solid: indices out of range, non-finite vertices, all faces degenerate,
+        open (boundary edges), non-manifold (an edge shared by more than two faces),
+        inconsistently oriented, inside-out (inward normals) or of zero volume.
+        Self-intersection is not detected.
+
+        Raises:
+            InvalidMeshError: one of the conditions above; the message names ``faces`` or
+                ``vertices`` and says what is wrong and where (e.g. the number of boundary
+                edges and one of them).
+            PoinsotError: ``density`` not finite and > 0.
+        """
+        v = as_float_array(vertices, "vertices", finite=False)
+        if v.ndim != 2 or v.shape[1] != 3:
+            raise InvalidMeshError(f"vertices: must have shape (N, 3), got {v.shape}")
+        f = np.asarray(faces)
+        if f.ndim != 2 or f.shape[1] != 3:
+            raise InvalidMeshError(f"faces: must have shape (M, 3), got {f.shape}")
+        if f.size and not np.issubdtype(f.dtype, np.integer):
+            raise InvalidMeshError(f"faces: must be an array of integer vertex indices, got dtype {f.dtype}")
+        if f.dtype == np.uint64 and f.size and int(f.max()) > np.iinfo(np.int64).max:
+            raise InvalidMeshError(f"faces: index {int(f.max())} is out of range for {len(v)} vertices")
+        if merge_vertices:
+            v, f = _merge_vertices(v, f)
+        rho = _scalar(density, "density")
+        return cls._wrap(
+            _core.MassProperties.from_mesh(
+                np.ascontiguousarray(v, dtype=np.float64), np.ascontiguousarray(f, dtype=np.int64), rho
+            )
+        )
+
+    @classmethod
+    def from_trimesh(cls, mesh: Any, density: float = 1.0, *, merge_vertices: bool = False) -> RigidBody:
+        """The solid bounded by a ``trimesh.Trimesh`` (vertices in m), of uniform ``density``
+        (kg/m³): :meth:`from_mesh` of ``mesh.vertices`` and ``mesh.faces`` with the mesh's
+        topology as it is (pass ``merge_vertices=True`` for a mesh built with
+        ``process=False`` from a triangle soup). Raises :class:`InvalidMeshError` for meshes
+        that do not bound a solid, unlike ``mesh.mass_properties``."""
+        if not (hasattr(mesh, "vertices") and hasattr(mesh, "faces")):
+            raise InvalidMeshError(
+                f"mesh: must be a trimesh.Trimesh (with .vertices and .faces), got {type(mesh).__name__}"
+            )
+        return cls.from_mesh(mesh.vertices, mesh.faces, density, merge_vertices=merge_vertices)
+
+    @classmethod
+    def load_mesh(cls, path: str | os.PathLike[str], density: float = 1.0) -> RigidBody:
+        """The solid bounded by the triangle mesh in the file ``path`` (.stl, .obj, .ply, ...;
+        coordinates in m), of uniform ``density`` (kg/m³), read with trimesh (the optional
+        extra ``poinsot[mesh]``).
+
+        The file is read with ``process=False`` (trimesh repairs nothing, so the checks see the
+        real topology), then vertices with exactly equal coordinates are merged: STL files store
+        every triangle with its own three vertices, and without merging every STL would look
+        open. See :meth:`from_mesh` for the checks.
+
+        Raises:
+            ImportError: trimesh is not installed.
+            InvalidMeshError: the file holds no triangles, or a mesh that does not bound a solid.
+        """
+        try:
+            import trimesh
+        except ImportError:  # pragma: no cover - exercised only without the extra
+            raise ImportError(
+                "RigidBody.load_mesh reads files with trimesh, which is not installed: "
+                "pip install 'poinsot[mesh]' (or pip install trimesh)"
+            ) from None
+        loaded = trimesh.load(os.fspath(path), process=False, force="mesh")
+        if not isinstance(loaded, trimesh.Trimesh) or len(loaded.faces) == 0:
+            raise InvalidMeshError(f"path: {os.fspath(path)!r} holds no triangle mesh")
+        return cls.from_mesh(loaded.vertices, loaded.faces, density, merge_vertices=True)
+
+    @classmethod
+    def combine(cls, bodies: Iterable[RigidBody]) -> RigidBody:
+        """The body made of ``bodies`` rigidly joined: masses add, the centre of mass is the
+        mass-weighted mean, each inertia is shifted to the common centre of mass by the
+        parallel-axis theorem and summed. ``a + b`` is the same for two bodies."""
+        items = list(bodies)
+        if not items:
+            raise PoinsotError("bodies: must hold at least one body, got none")
+        for i, b in enumerate(items):
+            if not isinstance(b, RigidBody):
+                raise PoinsotError(f"bodies: item {i} is a {type(b).__name__}, not a RigidBody")
+        return cls._wrap(_core.MassProperties.combine([b._core for b in items]))
+
+    # ---- attributes -----------------------------------------------------------------------
+
+    @property
+    def mass(self) -> float:
+        """Mass (kg)."""
+        return float(self._core.mass)
+
+    @property
+    def center_of_mass(self) -> FloatArray:
+        """Centre of mass (m), shape (3,)."""
+        return np.asarray(self._core.center_of_mass)
+
+    @property
+    def inertia(self) -> FloatArray:
+        """Inertia tensor about the centre of mass (kg·m², (3, 3)), products of inertia negated
+        (I_xy = −Σ m x y, eqs. 2.46–2.50), so that L = I·ω."""
+        return np.asarray(self._core.inertia)
+
+    @property
+    def principal_moments(self) -> FloatArray:
+        """Principal moments of inertia (kg·m², (3,)), ascending (the I1, I2, I3 of eq. 2.66)."""
+        return np.asarray(self._core.principal(DEFAULT_KIND_RTOL)[0])
+
+    @property
+    def principal_axes(self) -> FloatArray:
+        """Principal axes as the columns of a proper rotation matrix ((3, 3), det = +1): column
+        k is the axis of ``principal_moments[k]`` and ``inertia = axes @ diag(moments) @
+        axes.T``. Where moments coincide (within :data:`DEFAULT_KIND_RTOL`) the axes are chosen
+        cleanly: identity for a spherical top; for a symmetric top the pair spans the plane
+        perpendicular to the distinct axis starting from the first coordinate axis."""
+        return np.asarray(self._core.principal(DEFAULT_KIND_RTOL)[1])
+
+    @property
+    def kind(self) -> str:
+        """ "spherical top", "symmetric top", "asymmetric top" or "rotor" (see :func:`classify`;
+        relative tolerance :data:`DEFAULT_KIND_RTOL`)."""
+        return str(self._core.kind(DEFAULT_KIND_RTOL))
+
+    @property
+    def integration_error(self) -> IntegrationErrorEstimate | None:
+        """Error estimates of a body from :meth:`from_density` (kept by :meth:`translated`);
+        ``None`` for every other body."""
+        return self._integration_error
+
+    # ---- methods --------------------------------------------------------------------------
+
+    def inertia_about(self, point: Any) -> FloatArray:
+        """Inertia tensor about ``point`` (m, shape (..., 3)) in the same axes (kg·m², shape
+        (..., 3, 3)): the parallel-axis theorem I_P = I_cm + m (|d|² 1 − d dᵀ), d = com − P."""
+        pts, lead = as_vectors(point, "point")
+        return np.asarray(self._core.inertia_about(pts)).reshape(lead + (3, 3))
+
+    def _per_omega(self, name: str, omega: Any, about: Any, tail: tuple[int, ...]) -> Any:
+        w, lead = as_vectors(omega, "omega")
+        p = None if about is None else as_vector3(about, "about")
+        out = np.asarray(getattr(self._core, name)(w, p)).reshape(lead + tail)
+        # One ω and a scalar result: a numpy float, not a 0-d array.
+        return out[()] if out.ndim == 0 else out
+
+    def angular_momentum(self, omega: Any, about: Any = None) -> FloatArray:
+        """Angular momentum L = I·ω (kg·m²/s; eqs. 2.44, 2.51, 2.63) of the body turning with
+        angular velocity ``omega`` (rad/s, shape (..., 3)) → shape (..., 3).
+
+        ``about=None``: about the centre of mass (spin angular momentum). ``about=P`` (m, (3,)):
+        the body turning about the fixed point P, L_P = I_P·ω = Σ m r × (ω × r) with r from P.
+        """
+        return self._per_omega("angular_momentum", omega, about, (3,))
+
+    def kinetic_energy(self, omega: Any, about: Any = None) -> FloatArray | float:
+        """Kinetic energy of rotation T = ½ ω·I·ω = ½ ω·L (J; eqs. 2.53, 2.55, 2.64) for angular
+        velocity ``omega`` (rad/s, shape (..., 3)) → shape (...) (a float for one ω).
+
+        ``about=None``: the energy of rotation about the centre of mass. ``about=P`` (m, (3,)):
+        the whole kinetic energy of the body turning about the fixed point P.
+        """
+        return self._per_omega("kinetic_energy", omega, about, ())
+
+    def holding_torque(self, omega: Any, about: Any = None) -> FloatArray:
+        """The torque N = ω × L (N·m; eqs. 2.58–2.59) that keeps the body turning at the constant
+        angular velocity ``omega`` (rad/s, shape (..., 3)) → shape (..., 3): L is carried round
+        with the body, dL/dt = ω × L = N. Zero exactly when ω lies along a principal axis.
+        ``about`` as in :meth:`angular_momentum`."""
+        return self._per_omega("holding_torque", omega, about, (3,))
+
+    def momentum_angle(self, omega: Any, about: Any = None, *, degrees: bool = False) -> FloatArray | float:
+        """The angle between L and ω (rad, or degrees with ``degrees=True``) for angular velocity
+        ``omega`` (rad/s, shape (..., 3)) → shape (...) (a float for one ω): zero when ω lies along a principal
+        axis; otherwise L is not parallel to ω (eq. 2.57).
+
+        Raises:
+            PoinsotError: ω = 0, or L = 0 (ω along an axis of zero moment), where the angle is
+                undefined (message names ``omega``).
+        """
+        a = self._per_omega("momentum_angle", omega, about, ())
+        return np.degrees(a)[()] if degrees else a
+
+    def translated(self, offset: Any) -> RigidBody:
+        """The same body moved by ``offset`` (m, (3,)): the centre of mass moves, the inertia
+        about it is unchanged."""
+        return RigidBody._wrap(self._core.translated(as_vector3(offset, "offset")), self._integration_error)
+
+    def rotated(self, rotation: Any) -> RigidBody:
+        """The same body rotated actively by ``rotation`` (a 3×3 rotation matrix or a
+        ``scipy.spatial.transform.Rotation``) **about the origin** of its axes (not about its
+        centre of mass): com ↦ R·com, I ↦ R I Rᵀ. To turn it in place, rotate then translate
+        back, or build it at the origin first.
+
+        Raises:
+            InvalidRotationError: ``rotation`` is not orthonormal with det = +1 (within 1e-9).
+        """
+        mats, lead = as_matrices(rotation, "rotation")
+        if lead != ():
+            raise PoinsotError(f"rotation: must be a single rotation, got {mats.shape[0]} of shape {lead}")
+        return RigidBody._wrap(self._core.rotated(mats[0]))
+
+    def __add__(self, other: object) -> RigidBody:
+        if not isinstance(other, RigidBody):
+            return NotImplemented
+        return RigidBody.combine([self, other])
+
+    def __radd__(self, other: object) -> RigidBody:
+        # So that sum(bodies) works (it starts from 0).
+        if isinstance(other, (int, float)) and other == 0:
+            return self
+        return NotImplemented
+
+    def to_dict(self) -> dict[str, Any]:
+        """A JSON-ready summary: mass (kg), center_of_mass (m), inertia (kg·m², about the
+        centre of mass), principal_moments, principal_axes (columns), kind, and for bodies
+        from a density the integration error estimates."""
+        d: dict[str, Any] = {
+            "mass": self.mass,
+            "center_of_mass": self.center_of_mass.tolist(),
+            "inertia": self.inertia.tolist(),
+            "principal_moments": self.principal_moments.tolist(),
+            "principal_axes": self.principal_axes.tolist(),
+            "kind": self.kind,
+            "units": {"mass": "kg", "center_of_mass": "m", "inertia": "kg m^2"},
+        }
+        if self._integration_error is not None:
+            d["integration_error"] = dataclasses.asdict(self._integration_error)
+        return d
+
+    def __repr__(self) -> str:
+        def fmt(a: FloatArray) -> str:
+            return np.array2string(np.asarray(a), precision=6, separator=", ", suppress_small=True)
+
+        return (
+            f"RigidBody(mass={self.mass:.6g} kg, center_of_mass={fmt(self.center_of_mass)} m, "
+            f"principal_moments={fmt(self.principal_moments)} kg·m², kind={self.kind!r})"
+        )
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return (_restore, (self.mass, self.inertia, self.center_of_mass, self._integration_error))
+
+
+def _restore(
+    mass: float, inertia: FloatArray, center_of_mass: FloatArray, err: IntegrationErrorEstimate | None
+) -> RigidBody:
+    body = RigidBody(mass, inertia, center_of_mass)
+    body._integration_error = err
+    return body
+
+
+def _inertia_array(inertia: Any) -> FloatArray:
+    arr = as_float_array(inertia, "inertia", finite=False)
+    if arr.shape != (3, 3):
+        raise PoinsotError(f"inertia: must have shape (3, 3), got {arr.shape}")
+    return np.ascontiguousarray(arr)
+
+
+def _merge_vertices(vertices: FloatArray, faces: Any) -> tuple[FloatArray, Any]:
+    """Merges vertices with exactly equal coordinates (−0.0 counts as 0.0); re-indexes faces."""
+    v = np.ascontiguousarray(vertices, dtype=np.float64) + 0.0
+    f = np.asarray(faces, dtype=np.int64)
+    if f.size and (f.min() < 0 or f.max() >= len(v)):
+        # Leave out-of-range indices to the core's check, which reports them.
+        return v, f
+    unique, inverse = np.unique(v, axis=0, return_inverse=True)
+    return unique, inverse.reshape(-1)[f]

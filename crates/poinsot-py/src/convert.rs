@@ -71,3 +71,29 @@ pub fn records<'a>(
 pub fn zeros<'py>(py: Python<'py>, dims: &[usize]) -> Bound<'py, numpy::PyArrayDyn<f64>> {
     numpy::PyArrayDyn::<f64>::zeros(py, numpy::IxDyn(dims), false)
 }
+
+/// An (N, 3) C-contiguous array of any element type → its flat row-major slice of `3·N` values.
+pub fn rows3_slice<'a, T: numpy::Element>(
+    argument: &str,
+    a: &'a PyReadonlyArray2<'_, T>,
+) -> PyResult<&'a [T]> {
+    let shape = a.shape();
+    if shape.len() != 2 || shape[1] != 3 {
+        return Err(invalid(argument, format!("must have shape (N, 3), got {shape:?}")));
+    }
+    a.as_slice().map_err(|_| invalid(argument, "must be a C-contiguous array"))
+}
+
+/// A flat row-major vector of `3·N` values → a new numpy array of shape (N, 3).
+pub fn rows3_out(py: Python<'_>, flat: Vec<f64>) -> PyResult<Bound<'_, PyArray2<f64>>> {
+    use numpy::PyArrayMethods;
+    let n = flat.len() / 3;
+    PyArray1::from_vec(py, flat).reshape([n, 3])
+}
+
+/// A flat row-major vector of `9·N` values → a new numpy array of shape (N, 3, 3).
+pub fn mats3_out(py: Python<'_>, flat: Vec<f64>) -> PyResult<Bound<'_, numpy::PyArray3<f64>>> {
+    use numpy::PyArrayMethods;
+    let n = flat.len() / 9;
+    PyArray1::from_vec(py, flat).reshape([n, 3, 3])
+}

@@ -1,7 +1,400 @@
 //! Bindings of `poinsot::inertia` (conversion and error mapping only).
+//!
+//! `MassProperties` wraps `poinsot::inertia::MassProperties`; the public, documented class is
+//! `poinsot.RigidBody` (python/poinsot/body.py), which holds one of these.
+use numpy::{
+    PyArray1, PyArray2, PyArray3, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods,
+};
+use poinsot::inertia::{self, CubatureOptions, MassProperties};
+use poinsot::{Error, Mat3, Vec3};
 use pyo3::prelude::*;
 
+use crate::convert::{mat3, mat3_out, mats3_out, rows3, rows3_out, rows3_slice, vec3, vec3_out};
+use crate::errors::{invalid, IntoPy};
+
+/// Row-major `[[f64; 3]; 3]` → nalgebra (column-major storage, same matrix).
+fn to_mat(m: [[f64; 3]; 3]) -> Mat3 {
+    Mat3::new(
+        m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0], m[2][1], m[2][2],
+    )
+}
+
+/// nalgebra → row-major `[[f64; 3]; 3]`.
+fn from_mat(m: &Mat3) -> [[f64; 3]; 3] {
+    [
+        [m[(0, 0)], m[(0, 1)], m[(0, 2)]],
+        [m[(1, 0)], m[(1, 1)], m[(1, 2)]],
+        [m[(2, 0)], m[(2, 1)], m[(2, 2)]],
+    ]
+}
+
+fn opt_vec3(argument: &str, a: Option<PyReadonlyArray1<'_, f64>>) -> PyResult<Option<Vec3>> {
+    a.map(|a| vec3(argument, &a).map(Vec3::from)).transpose()
+}
+
+/// Mass properties of a rigid body (private; use `poinsot.RigidBody`).
+#[pyclass(module = "poinsot._core", name = "MassProperties", frozen)]
+pub struct PyMassProperties {
+    inner: MassProperties,
+}
+
+fn wrap(r: poinsot::Result<MassProperties>) -> PyResult<PyMassProperties> {
+    Ok(PyMassProperties { inner: r.py()? })
+}
+
+#[pymethods]
+impl PyMassProperties {
+    /// Mass (kg), centre of mass (m, (3,)) and inertia about it (kg·m², (3, 3)), checked.
+    #[staticmethod]
+    fn from_inertia(
+        mass: f64,
+        center_of_mass: PyReadonlyArray1<'_, f64>,
+        inertia: PyReadonlyArray2<'_, f64>,
+    ) -> PyResult<Self> {
+        let com = Vec3::from(vec3("center_of_mass", &center_of_mass)?);
+        let i = to_mat(mat3("inertia", &inertia)?);
+        wrap(MassProperties::new(mass, com, i))
+    }
+
+    /// Like `from_inertia`, with `inertia` about the point `about` (m, (3,)).
+    #[staticmethod]
+    fn from_inertia_about(
+        mass: f64,
+        center_of_mass: PyReadonlyArray1<'_, f64>,
+        inertia: PyReadonlyArray2<'_, f64>,
+        about: PyReadonlyArray1<'_, f64>,
+    ) -> PyResult<Self> {
+        let com = Vec3::from(vec3("center_of_mass", &center_of_mass)?);
+        let i = to_mat(mat3("inertia", &inertia)?);
+        let p = Vec3::from(vec3("about", &about)?);
+        wrap(MassProperties::from_inertia_about(mass, com, i, p))
+    }
+
+    /// Point masses (kg, (N,)) at positions (m, (N, 3)).
+    #[staticmethod]
+    fn from_point_masses(
+        masses: PyReadonlyArray1<'_, f64>,
+        positions: PyReadonlyArray2<'_, f64>,
+    ) -> PyResult<Self> {
+        let m = masses
+            .as_slice()
+            .map_err(|_| invalid("masses", "must be a contiguous array"))?;
+        let p = rows3("positions", &positions)?;
+        wrap(MassProperties::from_point_masses(m, &p))
+    }
+
+    /// Solid sphere.
+    #[staticmethod]
+    fn solid_sphere(mass: f64, radius: f64) -> PyResult<Self> {
+        wrap(inertia::solid_sphere(mass, radius))
+    }
+
+    /// Thin spherical shell.
+    #[staticmethod]
+    fn spherical_shell(mass: f64, radius: f64) -> PyResult<Self> {
+        wrap(inertia::spherical_shell(mass, radius))
+    }
+
+    /// Solid cylinder along z.
+    #[staticmethod]
+    fn solid_cylinder(mass: f64, radius: f64, height: f64) -> PyResult<Self> {
+        wrap(inertia::solid_cylinder(mass, radius, height))
+    }
+
+    /// Solid cone, apex at the origin, axis +z.
+    #[staticmethod]
+    fn solid_cone(mass: f64, radius: f64, height: f64) -> PyResult<Self> {
+        wrap(inertia::solid_cone(mass, radius, height))
+    }
+
+    /// Cuboid with sides (3,) along x, y, z.
+    #[staticmethod]
+    fn cuboid(mass: f64, sides: PyReadonlyArray1<'_, f64>) -> PyResult<Self> {
+        wrap(inertia::cuboid(mass, vec3("sides", &sides)?))
+    }
+
+    /// Solid ellipsoid with semi-axes (3,) along x, y, z.
+    #[staticmethod]
+    fn ellipsoid(mass: f64, semi_axes: PyReadonlyArray1<'_, f64>) -> PyResult<Self> {
+        wrap(inertia::ellipsoid(mass, vec3("semi_axes", &semi_axes)?))
+    }
+
+    /// Thin rod along z.
+    #[staticmethod]
+    fn thin_rod(mass: f64, length: f64) -> PyResult<Self> {
+        wrap(inertia::thin_rod(mass, length))
+    }
+
+    /// Thin disk in the xy plane.
+    #[staticmethod]
+    fn thin_disk(mass: f64, radius: f64) -> PyResult<Self> {
+        wrap(inertia::thin_disk(mass, radius))
+    }
+
+    /// Thin ring in the xy plane.
+    #[staticmethod]
+    fn thin_ring(mass: f64, radius: f64) -> PyResult<Self> {
+        wrap(inertia::thin_ring(mass, radius))
+    }
+
+    /// Closed triangle mesh: vertices (m, (N, 3) float64), faces ((M, 3) int64), density
+    /// (kg/m³). Runs without the GIL.
+    #[staticmethod]
+    fn from_mesh(
+        py: Python<'_>,
+        vertices: PyReadonlyArray2<'_, f64>,
+        faces: PyReadonlyArray2<'_, i64>,
+        density: f64,
+    ) -> PyResult<Self> {
+        let v = rows3_slice("vertices", &vertices)?;
+        let f = rows3_slice("faces", &faces)?;
+        wrap(py.detach(|| inertia::mesh_mass_properties(v, f, density)))
+    }
+
+    /// Density (a callable (N, 3) float64 → (N,) float64, kg/m³) over bounds ((3, 2), m).
+    /// Returns (body, mass_error, center_of_mass_error, inertia_error, evaluations, converged).
+    #[staticmethod]
+    fn from_density(
+        py: Python<'_>,
+        density: Bound<'_, PyAny>,
+        bounds: PyReadonlyArray2<'_, f64>,
+        rtol: f64,
+        atol: f64,
+        max_evals: usize,
+    ) -> PyResult<(Self, f64, f64, f64, usize, bool)> {
+        let shape = bounds.shape().to_vec();
+        if shape != [3, 2] {
+            return Err(invalid(
+                "bounds",
+                format!("must have shape (3, 2), got {shape:?}"),
+            ));
+        }
+        let b = bounds.as_array();
+        let bounds = [
+            [b[[0, 0]], b[[0, 1]]],
+            [b[[1, 0]], b[[1, 1]]],
+            [b[[2, 0]], b[[2, 1]]],
+        ];
+        let options = CubatureOptions {
+            rtol,
+            atol,
+            max_evals,
+        };
+        let mut failure: Option<PyErr> = None;
+        let result = inertia::density_mass_properties(
+            |points: &[[f64; 3]], out: &mut [f64]| {
+                let mut call = || -> PyResult<()> {
+                    use numpy::PyArrayMethods;
+                    let arr = PyArray1::from_slice(py, points.as_flattened())
+                        .reshape([points.len(), 3])?;
+                    let values = density.call1((arr,))?;
+                    let values: PyReadonlyArray1<'_, f64> = values.extract().map_err(|_| {
+                        invalid("density", "must return a float64 array of shape (N,)")
+                    })?;
+                    let s = values
+                        .as_slice()
+                        .map_err(|_| invalid("density", "must return a contiguous array"))?;
+                    if s.len() != out.len() {
+                        return Err(invalid(
+                            "density",
+                            format!("must return shape ({},), got ({},)", out.len(), s.len()),
+                        ));
+                    }
+                    out.copy_from_slice(s);
+                    Ok(())
+                };
+                call().map_err(|e| {
+                    failure = Some(e);
+                    Error::invalid("density", "the density function raised an exception")
+                })
+            },
+            bounds,
+            &options,
+        );
+        if let Some(e) = failure {
+            return Err(e);
+        }
+        let r = result.py()?;
+        Ok((
+            Self { inner: r.body },
+            r.mass_error,
+            r.center_of_mass_error,
+            r.inertia_error,
+            r.evaluations,
+            r.converged,
+        ))
+    }
+
+    /// The body made of all of `bodies` (a sequence of MassProperties).
+    #[staticmethod]
+    fn combine(bodies: Vec<PyRef<'_, PyMassProperties>>) -> PyResult<Self> {
+        let v: Vec<MassProperties> = bodies.iter().map(|b| b.inner).collect();
+        wrap(MassProperties::combine(&v))
+    }
+
+    /// Mass (kg).
+    #[getter]
+    fn mass(&self) -> f64 {
+        self.inner.mass()
+    }
+
+    /// Centre of mass (m), shape (3,).
+    #[getter]
+    fn center_of_mass<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        vec3_out(py, self.inner.center_of_mass().into())
+    }
+
+    /// Inertia about the centre of mass (kg·m²), shape (3, 3).
+    #[getter]
+    fn inertia<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        mat3_out(py, from_mat(&self.inner.inertia()))
+    }
+
+    /// Inertia about each point of `points` (m, (N, 3)) → (N, 3, 3) kg·m².
+    fn inertia_about<'py>(
+        &self,
+        py: Python<'py>,
+        points: PyReadonlyArray2<'_, f64>,
+    ) -> PyResult<Bound<'py, PyArray3<f64>>> {
+        let mut out = Vec::new();
+        for p in rows3("point", &points)? {
+            let m = self.inner.inertia_about(&Vec3::from(p)).py()?;
+            out.extend(from_mat(&m).as_flattened());
+        }
+        mats3_out(py, out)
+    }
+
+    /// The body moved by `offset` (m, (3,)).
+    fn translated(&self, offset: PyReadonlyArray1<'_, f64>) -> PyResult<Self> {
+        wrap(self.inner.translated(&Vec3::from(vec3("offset", &offset)?)))
+    }
+
+    /// The body rotated by the rotation matrix `rotation` ((3, 3)) about the origin.
+    fn rotated(&self, rotation: PyReadonlyArray2<'_, f64>) -> PyResult<Self> {
+        wrap(self.inner.rotated(&to_mat(mat3("rotation", &rotation)?)))
+    }
+
+    /// (principal moments ascending (3,), principal axes as columns (3, 3)).
+    fn principal<'py>(
+        &self,
+        py: Python<'py>,
+        rtol: f64,
+    ) -> (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray2<f64>>) {
+        let p = self.inner.principal(rtol);
+        (vec3_out(py, p.moments), mat3_out(py, from_mat(&p.axes)))
+    }
+
+    /// Kind of top with relative tolerance `rtol`.
+    fn kind(&self, rtol: f64) -> PyResult<&'static str> {
+        Ok(self.inner.kind(rtol).py()?.as_str())
+    }
+
+    /// L = I·ω (kg·m²/s) for each ω of `omega` (rad/s, (N, 3)), about `about` (m) or the
+    /// centre of mass → (N, 3).
+    #[pyo3(signature = (omega, about=None))]
+    fn angular_momentum<'py>(
+        &self,
+        py: Python<'py>,
+        omega: PyReadonlyArray2<'_, f64>,
+        about: Option<PyReadonlyArray1<'_, f64>>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let about = opt_vec3("about", about)?;
+        let mut out = Vec::new();
+        for w in rows3("omega", &omega)? {
+            out.extend(
+                self.inner
+                    .angular_momentum(&Vec3::from(w), about.as_ref())
+                    .py()?
+                    .iter(),
+            );
+        }
+        rows3_out(py, out)
+    }
+
+    /// T = ½ ω·I·ω (J) for each ω of `omega` (rad/s, (N, 3)) → (N,).
+    #[pyo3(signature = (omega, about=None))]
+    fn kinetic_energy<'py>(
+        &self,
+        py: Python<'py>,
+        omega: PyReadonlyArray2<'_, f64>,
+        about: Option<PyReadonlyArray1<'_, f64>>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let about = opt_vec3("about", about)?;
+        let mut out = Vec::new();
+        for w in rows3("omega", &omega)? {
+            out.push(
+                self.inner
+                    .kinetic_energy(&Vec3::from(w), about.as_ref())
+                    .py()?,
+            );
+        }
+        Ok(PyArray1::from_vec(py, out))
+    }
+
+    /// N = ω × L (N·m) for each ω of `omega` (rad/s, (N, 3)) → (N, 3).
+    #[pyo3(signature = (omega, about=None))]
+    fn holding_torque<'py>(
+        &self,
+        py: Python<'py>,
+        omega: PyReadonlyArray2<'_, f64>,
+        about: Option<PyReadonlyArray1<'_, f64>>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let about = opt_vec3("about", about)?;
+        let mut out = Vec::new();
+        for w in rows3("omega", &omega)? {
+            out.extend(
+                self.inner
+                    .holding_torque(&Vec3::from(w), about.as_ref())
+                    .py()?
+                    .iter(),
+            );
+        }
+        rows3_out(py, out)
+    }
+
+    /// Angle between L and ω (rad) for each ω of `omega` (rad/s, (N, 3)) → (N,).
+    #[pyo3(signature = (omega, about=None))]
+    fn momentum_angle<'py>(
+        &self,
+        py: Python<'py>,
+        omega: PyReadonlyArray2<'_, f64>,
+        about: Option<PyReadonlyArray1<'_, f64>>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let about = opt_vec3("about", about)?;
+        let mut out = Vec::new();
+        for w in rows3("omega", &omega)? {
+            out.push(
+                self.inner
+                    .momentum_angle(&Vec3::from(w), about.as_ref())
+                    .py()?,
+            );
+        }
+        Ok(PyArray1::from_vec(py, out))
+    }
+}
+
+/// Kind of top of principal moments `moments` (kg·m², (3,)) with relative tolerance `rtol`.
+#[pyfunction]
+fn classify(moments: PyReadonlyArray1<'_, f64>, rtol: f64) -> PyResult<&'static str> {
+    Ok(inertia::classify(vec3("moments", &moments)?, rtol)
+        .py()?
+        .as_str())
+}
+
+/// Checks an inertia tensor (kg·m², (3, 3)); returns it symmetrised.
+#[pyfunction]
+fn check_inertia<'py>(
+    py: Python<'py>,
+    inertia: PyReadonlyArray2<'_, f64>,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let m = inertia::check_inertia("inertia", &to_mat(mat3("inertia", &inertia)?)).py()?;
+    Ok(mat3_out(py, from_mat(&m)))
+}
+
 /// Registers this file's functions and classes on the module.
-pub fn register(_m: &Bound<'_, PyModule>) -> PyResult<()> {
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<PyMassProperties>()?;
+    m.add_function(wrap_pyfunction!(classify, m)?)?;
+    m.add_function(wrap_pyfunction!(check_inertia, m)?)?;
     Ok(())
 }
