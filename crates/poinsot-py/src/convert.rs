@@ -7,9 +7,14 @@ use crate::errors::invalid;
 
 /// A length-3 float array → `[f64; 3]`.
 pub fn vec3(argument: &str, a: &PyReadonlyArray1<'_, f64>) -> PyResult<[f64; 3]> {
-    let s = a.as_slice().map_err(|_| invalid(argument, "must be a contiguous array"))?;
+    let s = a
+        .as_slice()
+        .map_err(|_| invalid(argument, "must be a contiguous array"))?;
     if s.len() != 3 {
-        return Err(invalid(argument, format!("must have shape (3,), got ({},)", s.len())));
+        return Err(invalid(
+            argument,
+            format!("must have shape (3,), got ({},)", s.len()),
+        ));
     }
     Ok([s[0], s[1], s[2]])
 }
@@ -18,7 +23,10 @@ pub fn vec3(argument: &str, a: &PyReadonlyArray1<'_, f64>) -> PyResult<[f64; 3]>
 pub fn mat3(argument: &str, a: &PyReadonlyArray2<'_, f64>) -> PyResult<[[f64; 3]; 3]> {
     let shape = a.shape();
     if shape != [3, 3] {
-        return Err(invalid(argument, format!("must have shape (3, 3), got {shape:?}")));
+        return Err(invalid(
+            argument,
+            format!("must have shape (3, 3), got {shape:?}"),
+        ));
     }
     let v = a.as_array();
     Ok([
@@ -32,9 +40,16 @@ pub fn mat3(argument: &str, a: &PyReadonlyArray2<'_, f64>) -> PyResult<[[f64; 3]
 pub fn rows3(argument: &str, a: &PyReadonlyArray2<'_, f64>) -> PyResult<Vec<[f64; 3]>> {
     let shape = a.shape();
     if shape.len() != 2 || shape[1] != 3 {
-        return Err(invalid(argument, format!("must have shape (N, 3), got {shape:?}")));
+        return Err(invalid(
+            argument,
+            format!("must have shape (N, 3), got {shape:?}"),
+        ));
     }
-    Ok(a.as_array().rows().into_iter().map(|r| [r[0], r[1], r[2]]).collect())
+    Ok(a.as_array()
+        .rows()
+        .into_iter()
+        .map(|r| [r[0], r[1], r[2]])
+        .collect())
 }
 
 /// `[f64; 3]` → a new numpy array of shape (3,).
@@ -63,7 +78,9 @@ pub fn records<'a>(
             format!("must have shape (N, {}), got {shape:?}", want.join(", ")),
         ));
     }
-    let data = a.as_slice().map_err(|_| invalid(argument, "must be a C-contiguous array"))?;
+    let data = a
+        .as_slice()
+        .map_err(|_| invalid(argument, "must be a C-contiguous array"))?;
     Ok((data, shape[0]))
 }
 
@@ -79,9 +96,13 @@ pub fn rows3_slice<'a, T: numpy::Element>(
 ) -> PyResult<&'a [T]> {
     let shape = a.shape();
     if shape.len() != 2 || shape[1] != 3 {
-        return Err(invalid(argument, format!("must have shape (N, 3), got {shape:?}")));
+        return Err(invalid(
+            argument,
+            format!("must have shape (N, 3), got {shape:?}"),
+        ));
     }
-    a.as_slice().map_err(|_| invalid(argument, "must be a C-contiguous array"))
+    a.as_slice()
+        .map_err(|_| invalid(argument, "must be a C-contiguous array"))
 }
 
 /// A flat row-major vector of `3·N` values → a new numpy array of shape (N, 3).

@@ -18,10 +18,30 @@ use pyo3::prelude::*;
 
 create_exception!(poinsot, PoinsotError, PyValueError, "Bad input or an impossible request to poinsot (also a ValueError). The message names the argument and the violated condition.");
 create_exception!(poinsot, InvalidInertiaError, PoinsotError, "An inertia tensor that no body can have (asymmetric, negative moment, triangle inequality violated).");
-create_exception!(poinsot, InvalidRotationError, PoinsotError, "A matrix that is not a proper rotation (not orthonormal within tolerance, or det != +1).");
-create_exception!(poinsot, InvalidMeshError, PoinsotError, "A triangle mesh that does not bound a solid (open, non-manifold, inside-out or degenerate).");
-create_exception!(poinsot, GimbalLockError, PoinsotError, "Euler-angle rates requested at the singular angles of their sequence (gimbal lock).");
-create_exception!(poinsot, IntegrationError, PoinsotError, "A numerical integration diverged or could not reach its tolerance.");
+create_exception!(
+    poinsot,
+    InvalidRotationError,
+    PoinsotError,
+    "A matrix that is not a proper rotation (not orthonormal within tolerance, or det != +1)."
+);
+create_exception!(
+    poinsot,
+    InvalidMeshError,
+    PoinsotError,
+    "A triangle mesh that does not bound a solid (open, non-manifold, inside-out or degenerate)."
+);
+create_exception!(
+    poinsot,
+    GimbalLockError,
+    PoinsotError,
+    "Euler-angle rates requested at the singular angles of their sequence (gimbal lock)."
+);
+create_exception!(
+    poinsot,
+    IntegrationError,
+    PoinsotError,
+    "A numerical integration diverged or could not reach its tolerance."
+);
 
 /// Converts a core error to the matching Python exception.
 pub fn to_py(e: Error) -> PyErr {
@@ -58,7 +78,10 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
     m.add("PoinsotError", py.get_type::<PoinsotError>())?;
     m.add("InvalidInertiaError", py.get_type::<InvalidInertiaError>())?;
-    m.add("InvalidRotationError", py.get_type::<InvalidRotationError>())?;
+    m.add(
+        "InvalidRotationError",
+        py.get_type::<InvalidRotationError>(),
+    )?;
     m.add("InvalidMeshError", py.get_type::<InvalidMeshError>())?;
     m.add("GimbalLockError", py.get_type::<GimbalLockError>())?;
     m.add("IntegrationError", py.get_type::<IntegrationError>())?;

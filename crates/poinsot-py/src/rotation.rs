@@ -17,7 +17,10 @@ fn frame(name: &str) -> PyResult<Frame> {
     match name {
         "body" => Ok(Frame::Body),
         "space" => Ok(Frame::Space),
-        _ => Err(invalid("frame", format!("must be 'body' or 'space', got {name:?}"))),
+        _ => Err(invalid(
+            "frame",
+            format!("must be 'body' or 'space', got {name:?}"),
+        )),
     }
 }
 
@@ -30,7 +33,9 @@ fn batch<'py>(
     let out = zeros(py, dims);
     {
         let mut rw = out.readwrite();
-        let slice = rw.as_slice_mut().map_err(|_| invalid("out", "not contiguous"))?;
+        let slice = rw
+            .as_slice_mut()
+            .map_err(|_| invalid("out", "not contiguous"))?;
         py.detach(|| kernel(slice)).py()?;
     }
     Ok(out)
@@ -46,7 +51,9 @@ fn euler_to_matrix<'py>(
 ) -> PyResult<Out<'py>> {
     let seq = EulerSequence::new(seq, intrinsic).py()?;
     let (a, n) = records("angles", &angles, &[3])?;
-    batch(py, &[n, 3, 3], |out| rot::euler_to_matrix_batch(seq, a, out))
+    batch(py, &[n, 3, 3], |out| {
+        rot::euler_to_matrix_batch(seq, a, out)
+    })
 }
 
 /// Rotation matrices `(N, 3, 3)` → Euler angles `(N, 3)` (rad) and gimbal-lock flags `(N,)`.
@@ -64,8 +71,11 @@ fn matrix_to_euler<'py>(
     let mut locked = vec![false; n];
     {
         let mut rw = out.readwrite();
-        let slice = rw.as_slice_mut().map_err(|_| invalid("out", "not contiguous"))?;
-        py.detach(|| rot::matrix_to_euler_batch(seq, m, slice, &mut locked)).py()?;
+        let slice = rw
+            .as_slice_mut()
+            .map_err(|_| invalid("out", "not contiguous"))?;
+        py.detach(|| rot::matrix_to_euler_batch(seq, m, slice, &mut locked))
+            .py()?;
     }
     Ok((out, PyArray1::from_vec(py, locked)))
 }
@@ -89,7 +99,9 @@ fn quaternion_to_matrix<'py>(
     normalize: bool,
 ) -> PyResult<Out<'py>> {
     let (d, n) = records("q", &q, &[4])?;
-    batch(py, &[n, 3, 3], |out| rot::quaternion_to_matrix_batch(d, normalize, out))
+    batch(py, &[n, 3, 3], |out| {
+        rot::quaternion_to_matrix_batch(d, normalize, out)
+    })
 }
 
 /// Hamilton products of quaternions `(N, 4)` and `(N, 4)` → `(N, 4)`.
@@ -121,7 +133,9 @@ fn axis_angle_to_matrix<'py>(
 ) -> PyResult<Out<'py>> {
     let (a, n) = records("axis", &axis, &[3])?;
     let (t, _) = records("angle", &angle, &[])?;
-    batch(py, &[n, 3, 3], |out| rot::axis_angle_to_matrix_batch(a, t, out))
+    batch(py, &[n, 3, 3], |out| {
+        rot::axis_angle_to_matrix_batch(a, t, out)
+    })
 }
 
 /// `R_k v_k` for matrices `(N, 3, 3)` and vectors `(N, 3)` → `(N, 3)`.
@@ -159,7 +173,9 @@ fn angular_velocity<'py>(
     let frame = self::frame(frame)?;
     let (a, n) = records("angles", &angles, &[3])?;
     let (r, _) = records("rates", &rates, &[3])?;
-    batch(py, &[n, 3], |out| rot::angular_velocity_batch(seq, frame, a, r, out))
+    batch(py, &[n, 3], |out| {
+        rot::angular_velocity_batch(seq, frame, a, r, out)
+    })
 }
 
 /// Euler-angle rates `(N, 3)` (rad/s) from angles `(N, 3)` and ω `(N, 3)` (in `frame`).
@@ -175,8 +191,10 @@ fn euler_rates<'py>(
     let seq = EulerSequence::new(seq, intrinsic).py()?;
     let frame = self::frame(frame)?;
     let (a, n) = records("angles", &angles, &[3])?;
-    let (w, _) = records("omega", &omega, &[3])?;
-    batch(py, &[n, 3], |out| rot::euler_rates_batch(seq, frame, a, w, out))
+    let (w, _) = records("omega_body", &omega, &[3])?;
+    batch(py, &[n, 3], |out| {
+        rot::euler_rates_batch(seq, frame, a, w, out)
+    })
 }
 
 /// Chasles' screw of `x ↦ R x + t` for one `R` `(3, 3)` and `t` `(3,)`:
@@ -187,12 +205,24 @@ fn screw_axis<'py>(
     py: Python<'py>,
     R: numpy::PyReadonlyArray2<'py, f64>,
     t: numpy::PyReadonlyArray1<'py, f64>,
-) -> PyResult<(Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>, f64, f64, f64)> {
+) -> PyResult<(
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<f64>>,
+    f64,
+    f64,
+    f64,
+)> {
     let r = mat3("R", &R)?;
     let t = vec3("t", &t)?;
     let m = poinsot::Mat3::from_row_slice(&r.concat());
     let s = rot::screw_axis(&m, &Vec3::from(t)).py()?;
-    Ok((vec3_out(py, s.axis.into()), vec3_out(py, s.point.into()), s.angle, s.slide, s.pitch))
+    Ok((
+        vec3_out(py, s.axis.into()),
+        vec3_out(py, s.point.into()),
+        s.angle,
+        s.slide,
+        s.pitch,
+    ))
 }
 
 /// The screw `(axis, point, angle, slide)` as a core `Screw` (checked: unit axis, finite).
@@ -208,10 +238,19 @@ fn screw_from_parts(
     poinsot::error::check_finite("slide", &[slide]).py()?;
     let n = axis.norm();
     if !(n.is_finite() && (n - 1.0).abs() <= 1e-9) {
-        return Err(invalid("axis", format!("must be a unit vector, got norm {n}")));
+        return Err(invalid(
+            "axis",
+            format!("must be a unit vector, got norm {n}"),
+        ));
     }
     // `pitch` is not used by `displacement` or `apply`.
-    Ok(rot::Screw { axis, point, angle, slide, pitch: 0.0 })
+    Ok(rot::Screw {
+        axis,
+        point,
+        angle,
+        slide,
+        pitch: 0.0,
+    })
 }
 
 /// The displacement `(R (3, 3), t (3,))` of a screw.

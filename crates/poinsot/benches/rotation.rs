@@ -9,7 +9,9 @@ const N: usize = 100_000;
 
 /// Deterministic angles in the canonical ranges of intrinsic zxz.
 fn angles(n: usize) -> Vec<f64> {
-    (0..3 * n).map(|i| ((i as f64) * 0.618_033_988_749_895).fract() * 6.0 - 3.0).collect()
+    (0..3 * n)
+        .map(|i| ((i as f64) * 0.618_033_988_749_895).fract() * 6.0 - 3.0)
+        .collect()
 }
 
 fn batches(c: &mut Criterion) {

@@ -41,7 +41,11 @@ pub type Result<T> = std::result::Result<T, Error>;
 impl Error {
     /// A new error of `kind` about `argument`.
     pub fn new(kind: ErrorKind, argument: impl Into<String>, message: impl Into<String>) -> Self {
-        Self { kind, argument: argument.into(), message: message.into() }
+        Self {
+            kind,
+            argument: argument.into(),
+            message: message.into(),
+        }
     }
     /// An argument out of its domain.
     pub fn invalid(argument: impl Into<String>, message: impl Into<String>) -> Self {
@@ -81,9 +85,10 @@ impl std::error::Error for Error {}
 pub fn check_finite(argument: &str, values: &[f64]) -> Result<()> {
     match values.iter().position(|v| !v.is_finite()) {
         None => Ok(()),
-        Some(i) if values.len() == 1 => {
-            Err(Error::invalid(argument, format!("must be finite, got {}", values[i])))
-        }
+        Some(i) if values.len() == 1 => Err(Error::invalid(
+            argument,
+            format!("must be finite, got {}", values[i]),
+        )),
         Some(i) => Err(Error::invalid(
             argument,
             format!("must be finite, got {} at index {}", values[i], i),
@@ -96,7 +101,10 @@ pub fn check_positive(argument: &str, value: f64) -> Result<()> {
     if value.is_finite() && value > 0.0 {
         Ok(())
     } else {
-        Err(Error::invalid(argument, format!("must be finite and > 0, got {value}")))
+        Err(Error::invalid(
+            argument,
+            format!("must be finite and > 0, got {value}"),
+        ))
     }
 }
 
@@ -105,7 +113,10 @@ pub fn check_non_negative(argument: &str, value: f64) -> Result<()> {
     if value.is_finite() && value >= 0.0 {
         Ok(())
     } else {
-        Err(Error::invalid(argument, format!("must be finite and >= 0, got {value}")))
+        Err(Error::invalid(
+            argument,
+            format!("must be finite and >= 0, got {value}"),
+        ))
     }
 }
 
@@ -118,7 +129,10 @@ mod tests {
         let e = check_positive("mass", -1.0).unwrap_err();
         assert_eq!(e.kind, ErrorKind::InvalidArgument);
         assert!(e.to_string().starts_with("mass:"), "{e}");
-        assert!(check_finite("omega", &[1.0, f64::NAN, 2.0]).unwrap_err().message.contains("index 1"));
+        assert!(check_finite("omega", &[1.0, f64::NAN, 2.0])
+            .unwrap_err()
+            .message
+            .contains("index 1"));
         assert!(check_non_negative("height", 0.0).is_ok());
         assert!(check_non_negative("height", -0.0 - 1e-300).is_err());
     }

@@ -22,7 +22,11 @@ const H: f64 = 1e-5;
 const FD_TOL: f64 = 1e-8;
 
 fn config() -> Config {
-    Config { cases: 512, rng_seed: RngSeed::Fixed(2_98_99), ..Config::default() }
+    Config {
+        cases: 512,
+        rng_seed: RngSeed::Fixed(2_98_99),
+        ..Config::default()
+    }
 }
 
 fn max_abs(m: &Mat3) -> f64 {
@@ -263,9 +267,17 @@ fn unit_eq_2_99_pinned() {
     ] {
         let w = body_angular_velocity([phi, theta, psi], [dphi, dtheta, dpsi], EulerSequence::UNIT)
             .unwrap();
-        let (st, ct, sp, cp) = (f64::sin(theta), f64::cos(theta), f64::sin(psi), f64::cos(psi));
-        let expected =
-            Vec3::new(dphi * st * sp + dtheta * cp, dphi * st * cp - dtheta * sp, dphi * ct + dpsi);
+        let (st, ct, sp, cp) = (
+            f64::sin(theta),
+            f64::cos(theta),
+            f64::sin(psi),
+            f64::cos(psi),
+        );
+        let expected = Vec3::new(
+            dphi * st * sp + dtheta * cp,
+            dphi * st * cp - dtheta * sp,
+            dphi * ct + dpsi,
+        );
         assert!((w - expected).norm() < 1e-14, "{w} vs {expected}");
         // 2.98: components along the line of nodes ξ, η and ζ (= body 3).
         let r_xi = rot_z(phi) * rot_x(theta);
@@ -274,7 +286,10 @@ fn unit_eq_2_99_pinned() {
                 .unwrap();
         let w_xi = r_xi.transpose() * w_space;
         let expected_298 = Vec3::new(dtheta, dphi * st, dpsi + dphi * ct);
-        assert!((w_xi - expected_298).norm() < 1e-14, "{w_xi} vs {expected_298}");
+        assert!(
+            (w_xi - expected_298).norm() < 1e-14,
+            "{w_xi} vs {expected_298}"
+        );
     }
 }
 
@@ -300,14 +315,20 @@ fn tiny_and_half_turn_angles_against_closed_forms() {
     let axis = Vec3::new(2.0, -1.0, 2.0) / 3.0;
     for theta in [1e-8, 1e-12, 1e-16] {
         let (n, a) = rotation_axis(&axis_angle_to_matrix(&axis, theta).unwrap()).unwrap();
-        assert!((a - theta).abs() <= 4.0 * f64::EPSILON * theta, "{a} vs {theta}");
+        assert!(
+            (a - theta).abs() <= 4.0 * f64::EPSILON * theta,
+            "{a} vs {theta}"
+        );
         assert!((n - axis).norm() < 1e-14);
     }
     for delta in [0.0, 1e-9, 1e-6] {
         let theta = PI - delta;
         let (n, a) = rotation_axis(&axis_angle_to_matrix(&axis, theta).unwrap()).unwrap();
         assert!((a - theta).abs() < 1e-15, "{a} vs {theta}");
-        assert!((n - axis).norm() < 1e-14 || (n + axis).norm() < 1e-14 && delta == 0.0, "{n}");
+        assert!(
+            (n - axis).norm() < 1e-14 || (n + axis).norm() < 1e-14 && delta == 0.0,
+            "{n}"
+        );
     }
 }
 
@@ -331,23 +352,33 @@ fn bad_input_names_the_argument() {
     assert!(e.to_string().starts_with("axis: ") && e.message.contains("non-zero"));
     let e = quaternion_to_matrix(&[0.0; 4], false).unwrap_err();
     assert!(e.to_string().starts_with("q: "));
-    let e = euler_rates([0.1, 0.2, 0.3], &Vec3::new(f64::INFINITY, 0.0, 0.0), seq, Frame::Body)
-        .unwrap_err();
-    assert!(e.to_string().starts_with("omega: "));
+    let e = euler_rates(
+        [0.1, 0.2, 0.3],
+        &Vec3::new(f64::INFINITY, 0.0, 0.0),
+        seq,
+        Frame::Body,
+    )
+    .unwrap_err();
+    assert!(e.to_string().starts_with("omega_body: "));
 }
 
 #[test]
 fn batch_kernels_match_single_calls() {
     let seq = EulerSequence::new("zyx", true).unwrap();
     let n = 10_000;
-    let angles: Vec<f64> = (0..3 * n).map(|i| ((i as f64) * 0.7548776662).sin() * 1.5).collect();
+    let angles: Vec<f64> = (0..3 * n)
+        .map(|i| ((i as f64) * 0.7548776662).sin() * 1.5)
+        .collect();
     let mut mats = vec![0.0; 9 * n];
     euler_to_matrix_batch(seq, &angles, &mut mats).unwrap();
     let mut quats = vec![0.0; 4 * n];
     matrix_to_quaternion_batch(&mats, &mut quats).unwrap();
     let mut mats2 = vec![0.0; 9 * n];
     quaternion_to_matrix_batch(&quats, false, &mut mats2).unwrap();
-    let worst = mats.iter().zip(&mats2).fold(0.0f64, |a, (x, y)| a.max((x - y).abs()));
+    let worst = mats
+        .iter()
+        .zip(&mats2)
+        .fold(0.0f64, |a, (x, y)| a.max((x - y).abs()));
     assert!(worst < MATRIX_TOL, "{worst}");
     let mut axes = vec![0.0; 4 * n];
     rotation_axis_batch(&mats, &mut axes).unwrap();
@@ -359,6 +390,9 @@ fn batch_kernels_match_single_calls() {
     angular_velocity_batch(seq, Frame::Body, &angles, &angles, &mut w).unwrap();
     let mut back = vec![0.0; 3 * n];
     euler_rates_batch(seq, Frame::Body, &angles, &w, &mut back).unwrap();
-    let worst = angles.iter().zip(&back).fold(0.0f64, |a, (x, y)| a.max((x - y).abs()));
+    let worst = angles
+        .iter()
+        .zip(&back)
+        .fold(0.0f64, |a, (x, y)| a.max((x - y).abs()));
     assert!(worst < 1e-9, "{worst}");
 }

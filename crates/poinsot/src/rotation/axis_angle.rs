@@ -92,7 +92,10 @@ mod tests {
         assert!((a - std::f64::consts::PI).abs() < 1e-15 && (n - Vec3::x()).norm() < 1e-15);
         let near = std::f64::consts::PI - 1e-9;
         let (n, a) = rotation_axis(&rot_x(-near)).unwrap();
-        assert!((a - near).abs() < 4e-16 && (n + Vec3::x()).norm() < 1e-15, "{a} {n}");
+        assert!(
+            (a - near).abs() < 4e-16 && (n + Vec3::x()).norm() < 1e-15,
+            "{a} {n}"
+        );
     }
 
     #[test]

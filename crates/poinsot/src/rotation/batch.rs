@@ -29,7 +29,10 @@ const TASK_MIN: usize = 2048;
 
 /// Appends the record index to an error.
 fn at_index(e: Error, k: usize) -> Error {
-    Error { message: format!("{} (at flat index {k})", e.message), ..e }
+    Error {
+        message: format!("{} (at flat index {k})", e.message),
+        ..e
+    }
 }
 
 /// Number of records of width `w` in `data` named `argument`.
@@ -37,7 +40,10 @@ fn records(argument: &str, data: &[f64], w: usize) -> Result<usize> {
     if data.len() % w != 0 {
         return Err(Error::invalid(
             argument,
-            format!("length must be a multiple of {w} (records of {w} values), got {}", data.len()),
+            format!(
+                "length must be a multiple of {w} (records of {w} values), got {}",
+                data.len()
+            ),
         ));
     }
     Ok(data.len() / w)
@@ -48,7 +54,10 @@ fn check_out(out_len: usize, n: usize, w: usize) -> Result<()> {
     if out_len != n * w {
         return Err(Error::invalid(
             "out",
-            format!("must hold {n} records of {w} values ({}), got length {out_len}", n * w),
+            format!(
+                "must hold {n} records of {w} values ({}), got length {out_len}",
+                n * w
+            ),
         ));
     }
     Ok(())
@@ -67,7 +76,11 @@ where
     if n < PARALLEL_MIN {
         return out.chunks_exact_mut(O).enumerate().try_for_each(run);
     }
-    let result = out.par_chunks_exact_mut(O).enumerate().with_min_len(TASK_MIN).try_for_each(run);
+    let result = out
+        .par_chunks_exact_mut(O)
+        .enumerate()
+        .with_min_len(TASK_MIN)
+        .try_for_each(run);
     if result.is_err() {
         // Which record failed first is not deterministic in parallel: find it in order.
         out.chunks_exact_mut(O).enumerate().try_for_each(run)?;
@@ -77,7 +90,9 @@ where
 
 #[inline]
 fn rec<const W: usize>(data: &[f64], k: usize) -> &[f64; W] {
-    data[W * k..W * (k + 1)].try_into().expect("record of W values")
+    data[W * k..W * (k + 1)]
+        .try_into()
+        .expect("record of W values")
 }
 
 /// Finite check then rotation check of one row-major matrix named `argument`.
@@ -125,7 +140,10 @@ pub fn matrix_to_euler_batch(
     let n = records("R", matrices, 9)?;
     check_out(out.len(), n, 3)?;
     if locked.len() != n {
-        return Err(Error::invalid("locked", format!("must hold {n} flags, got {}", locked.len())));
+        return Err(Error::invalid(
+            "locked",
+            format!("must hold {n} flags, got {}", locked.len()),
+        ));
     }
     let run = |(k, (y, flag)): (usize, (&mut [f64], &mut bool))| -> Result<()> {
         let m = rec::<9>(matrices, k);
@@ -136,7 +154,10 @@ pub fn matrix_to_euler_batch(
         Ok(())
     };
     if n < PARALLEL_MIN {
-        out.chunks_exact_mut(3).zip(locked.iter_mut()).enumerate().try_for_each(run)?;
+        out.chunks_exact_mut(3)
+            .zip(locked.iter_mut())
+            .enumerate()
+            .try_for_each(run)?;
     } else {
         let result = out
             .par_chunks_exact_mut(3)
@@ -145,7 +166,10 @@ pub fn matrix_to_euler_batch(
             .with_min_len(TASK_MIN)
             .try_for_each(run);
         if result.is_err() {
-            out.chunks_exact_mut(3).zip(locked.iter_mut()).enumerate().try_for_each(run)?;
+            out.chunks_exact_mut(3)
+                .zip(locked.iter_mut())
+                .enumerate()
+                .try_for_each(run)?;
             return result.map(|_| 0);
         }
     }
@@ -186,7 +210,10 @@ pub fn quaternion_to_matrix_batch(
 pub fn quaternion_multiply_batch(p: &[f64], q: &[f64], out: &mut [f64]) -> Result<()> {
     let n = records("p", p, 4)?;
     if records("q", q, 4)? != n {
-        return Err(Error::invalid("q", format!("must hold as many quaternions as p ({n})")));
+        return Err(Error::invalid(
+            "q",
+            format!("must hold as many quaternions as p ({n})"),
+        ));
     }
     check_out(out.len(), n, 4)?;
     drive::<4, _>(n, out, |k, y| {
@@ -219,7 +246,10 @@ pub fn rotation_axis_batch(matrices: &[f64], out: &mut [f64]) -> Result<()> {
 pub fn axis_angle_to_matrix_batch(axes: &[f64], angles: &[f64], out: &mut [f64]) -> Result<()> {
     let n = records("axis", axes, 3)?;
     if angles.len() != n {
-        return Err(Error::invalid("angle", format!("must hold {n} angles, got {}", angles.len())));
+        return Err(Error::invalid(
+            "angle",
+            format!("must hold {n} angles, got {}", angles.len()),
+        ));
     }
     check_out(out.len(), n, 9)?;
     drive::<9, _>(n, out, |k, y| {
@@ -256,7 +286,10 @@ pub fn rotate_vectors_batch(matrices: &[f64], vectors: &[f64], out: &mut [f64]) 
 /// [`crate::rotation::check_rotation_matrix`]; the error names `"R"` and the first bad index.
 pub fn check_rotation_matrix_batch(matrices: &[f64], tol: f64) -> Result<()> {
     if !(tol.is_finite() && tol >= 0.0) {
-        return Err(Error::invalid("tol", format!("must be finite and >= 0, got {tol}")));
+        return Err(Error::invalid(
+            "tol",
+            format!("must be finite and >= 0, got {tol}"),
+        ));
     }
     let n = records("R", matrices, 9)?;
     let check =
@@ -264,7 +297,10 @@ pub fn check_rotation_matrix_batch(matrices: &[f64], tol: f64) -> Result<()> {
     if n < PARALLEL_MIN {
         return (0..n).try_for_each(check);
     }
-    let result = (0..n).into_par_iter().with_min_len(TASK_MIN).try_for_each(check);
+    let result = (0..n)
+        .into_par_iter()
+        .with_min_len(TASK_MIN)
+        .try_for_each(check);
     if result.is_err() {
         (0..n).try_for_each(check)?;
     }
@@ -282,7 +318,10 @@ pub fn angular_velocity_batch(
 ) -> Result<()> {
     let n = records("angles", angles, 3)?;
     if records("rates", rates, 3)? != n {
-        return Err(Error::invalid("rates", format!("must hold as many triples as angles ({n})")));
+        return Err(Error::invalid(
+            "rates",
+            format!("must hold as many triples as angles ({n})"),
+        ));
     }
     check_out(out.len(), n, 3)?;
     drive::<3, _>(n, out, |k, y| {
@@ -297,7 +336,7 @@ pub fn angular_velocity_batch(
 
 /// Euler-angle rates (`out`: N×3, rad/s) from angles (N×3, rad) and angular velocities (N×3,
 /// rad/s, in `frame`), as [`crate::rotation::euler_rates`]; [`Error::gimbal_lock`] at the first
-/// singular record. Errors name `"angles"`/`"omega"`.
+/// singular record. Errors name `"angles"`/`"omega_body"`.
 pub fn euler_rates_batch(
     seq: EulerSequence,
     frame: Frame,
@@ -306,14 +345,17 @@ pub fn euler_rates_batch(
     out: &mut [f64],
 ) -> Result<()> {
     let n = records("angles", angles, 3)?;
-    if records("omega", omega, 3)? != n {
-        return Err(Error::invalid("omega", format!("must hold as many vectors as angles ({n})")));
+    if records("omega_body", omega, 3)? != n {
+        return Err(Error::invalid(
+            "omega_body",
+            format!("must hold as many vectors as angles ({n})"),
+        ));
     }
     check_out(out.len(), n, 3)?;
     drive::<3, _>(n, out, |k, y| {
         let (a, w) = (rec::<3>(angles, k), rec::<3>(omega, k));
         check_rec("angles", a)?;
-        check_rec("omega", w)?;
+        check_rec("omega_body", w)?;
         *y = euler_rates_checked_input(*a, &Vec3::from(*w), seq, frame)?;
         Ok(())
     })
@@ -328,8 +370,9 @@ mod tests {
     fn batch_equals_single_and_reports_first_bad_index() {
         let seq = EulerSequence::new("yzx", false).unwrap();
         let n = PARALLEL_MIN + 17;
-        let angles: Vec<f64> =
-            (0..3 * n).map(|i| ((i * 7919) % 1000) as f64 * 0.006 - 3.0).collect();
+        let angles: Vec<f64> = (0..3 * n)
+            .map(|i| ((i * 7919) % 1000) as f64 * 0.006 - 3.0)
+            .collect();
         let mut mats = vec![0.0; 9 * n];
         euler_to_matrix_batch(seq, &angles, &mut mats).unwrap();
         let k = n - 5;

@@ -85,11 +85,15 @@ pub struct EulerSequence {
 
 impl EulerSequence {
     /// The twelve sequences: six proper Euler, then six Tait–Bryan.
-    pub const NAMES: [&'static str; 12] =
-        ["xyx", "xzx", "yxy", "yzy", "zxz", "zyz", "xyz", "xzy", "yxz", "yzx", "zxy", "zyx"];
+    pub const NAMES: [&'static str; 12] = [
+        "xyx", "xzx", "yxy", "yzy", "zxz", "zyz", "xyz", "xzy", "yxz", "yzx", "zxy", "zyx",
+    ];
 
     /// The unit's convention: intrinsic `zxz` (φ, θ, ψ), `R = R_z(φ) R_x(θ) R_z(ψ)`.
-    pub const UNIT: EulerSequence = EulerSequence { axes: [2, 0, 2], intrinsic: true };
+    pub const UNIT: EulerSequence = EulerSequence {
+        axes: [2, 0, 2],
+        intrinsic: true,
+    };
 
     /// Parses `seq` (three lowercase letters from `x`, `y`, `z`, no two consecutive equal).
     ///
@@ -111,7 +115,10 @@ impl EulerSequence {
         }
         let chars: Vec<char> = seq.chars().collect();
         if chars.len() != 3 {
-            return Err(Error::invalid("seq", format!("must be {valid}; got {seq:?}")));
+            return Err(Error::invalid(
+                "seq",
+                format!("must be {valid}; got {seq:?}"),
+            ));
         }
         let mut axes = [0usize; 3];
         for (slot, c) in axes.iter_mut().zip(&chars) {
@@ -119,7 +126,12 @@ impl EulerSequence {
                 'x' => 0,
                 'y' => 1,
                 'z' => 2,
-                _ => return Err(Error::invalid("seq", format!("must be {valid}; got {seq:?}"))),
+                _ => {
+                    return Err(Error::invalid(
+                        "seq",
+                        format!("must be {valid}; got {seq:?}"),
+                    ))
+                }
             };
         }
         if axes[0] == axes[1] || axes[1] == axes[2] {
@@ -135,7 +147,11 @@ impl EulerSequence {
     pub fn all() -> Vec<EulerSequence> {
         [true, false]
             .iter()
-            .flat_map(|&intr| Self::NAMES.iter().map(move |s| Self::new(s, intr).expect("valid")))
+            .flat_map(|&intr| {
+                Self::NAMES
+                    .iter()
+                    .map(move |s| Self::new(s, intr).expect("valid"))
+            })
             .collect()
     }
 
@@ -186,7 +202,11 @@ impl EulerSequence {
 
 impl std::fmt::Display for EulerSequence {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let which = if self.intrinsic { "intrinsic" } else { "extrinsic" };
+        let which = if self.intrinsic {
+            "intrinsic"
+        } else {
+            "extrinsic"
+        };
         write!(f, "{which} {}", self.name())
     }
 }
@@ -264,19 +284,29 @@ pub(crate) fn matrix_to_euler_unchecked(m: &[f64; 9], seq: EulerSequence) -> Eul
     let sigma = [i, j, l];
     let eps = parity(i, j);
     let at = |a: usize, b: usize| m[3 * sigma[a] + sigma[b]];
-    let (mut e, lock) =
-        if proper { canonical_xyx(&at, zero_first) } else { canonical_xyz(&at, zero_first) };
+    let (mut e, lock) = if proper {
+        canonical_xyx(&at, zero_first)
+    } else {
+        canonical_xyz(&at, zero_first)
+    };
     if eps < 0.0 {
         e = if !proper || lock {
             // Tait–Bryan: (−α, −β, −γ) is in range. Proper at lock: one of α, γ is 0 and
             // sin β ≈ 0, so R_j(−β) equals R_j(β) to round-off and β is kept.
-            [wrap(-e[0]), if proper { e[1] } else { -e[1] + 0.0 }, wrap(-e[2])]
+            [
+                wrap(-e[0]),
+                if proper { e[1] } else { -e[1] + 0.0 },
+                wrap(-e[2]),
+            ]
         } else {
             // Proper: (−α, −β, −γ) ≡ (π − α, β, π − γ), which keeps β in [0, π].
             [wrap(PI - e[0]), e[1], wrap(PI - e[2])]
         };
     }
-    EulerAngles { angles: seq.in_intrinsic_order(e), gimbal_lock: lock }
+    EulerAngles {
+        angles: seq.in_intrinsic_order(e),
+        gimbal_lock: lock,
+    }
 }
 
 /// Angles of `M = R_x(α) R_y(β) R_x(γ)`, β in [0, π].
@@ -298,7 +328,11 @@ fn canonical_xyx(at: &impl Fn(usize, usize) -> f64, zero_first: bool) -> ([f64; 
     let alpha = wrap(m10.atan2(-m20));
     // γ from the well-conditioned combination (factor 1 + |cβ| ≥ 1), so that α + γ (near
     // β = 0) or α − γ (near β = π) is exact even where α alone is not.
-    let gamma = if cb >= 0.0 { wrap(sum() - alpha) } else { wrap(alpha - diff()) };
+    let gamma = if cb >= 0.0 {
+        wrap(sum() - alpha)
+    } else {
+        wrap(alpha - diff())
+    };
     ([alpha, beta, gamma], false)
 }
 
@@ -319,7 +353,11 @@ fn canonical_xyz(at: &impl Fn(usize, usize) -> f64, zero_first: bool) -> ([f64; 
         return (lock_angles(sb > 0.0, beta, sum, diff, zero_first), true);
     }
     let alpha = wrap((-m12).atan2(m22));
-    let gamma = if sb >= 0.0 { wrap(sum() - alpha) } else { wrap(alpha - diff()) };
+    let gamma = if sb >= 0.0 {
+        wrap(sum() - alpha)
+    } else {
+        wrap(alpha - diff())
+    };
     ([alpha, beta, gamma], false)
 }
 
@@ -356,9 +394,16 @@ mod tests {
             assert!(e.to_string().starts_with("seq: "), "{e}");
         }
         let e = EulerSequence::new("ZXZ", false).unwrap_err();
-        assert!(e.message.contains("`intrinsic` argument, not by letter case"), "{e}");
+        assert!(
+            e.message
+                .contains("`intrinsic` argument, not by letter case"),
+            "{e}"
+        );
         assert_eq!(EulerSequence::all().len(), 24);
-        assert_eq!(EulerSequence::UNIT, EulerSequence::new("zxz", true).unwrap());
+        assert_eq!(
+            EulerSequence::UNIT,
+            EulerSequence::new("zxz", true).unwrap()
+        );
         assert_eq!(EulerSequence::UNIT.to_string(), "intrinsic zxz");
     }
 

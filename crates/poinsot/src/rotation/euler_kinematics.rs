@@ -56,7 +56,11 @@ fn intrinsic_columns(axes: [usize; 3], angles: [f64; 3], frame: Frame) -> [Vec3;
         Frame::Body => {
             let rct = elementary_rotation(c, -ga);
             let rcbt = rct * elementary_rotation(b, -be);
-            [rcbt.column(a).into_owned(), rct.column(b).into_owned(), e(c)]
+            [
+                rcbt.column(a).into_owned(),
+                rct.column(b).into_owned(),
+                e(c),
+            ]
         }
     }
 }
@@ -119,7 +123,7 @@ pub fn space_angular_velocity(
 /// velocity `omega` (rad/s, components in `frame`) at `angles` (rad): the inverse of
 /// [`angular_velocity`].
 ///
-/// Errors: non-finite input (naming `"angles"` or `"omega"`); [`Error::gimbal_lock`] naming
+/// Errors: non-finite input (naming `"angles"` or `"omega_body"`); [`Error::gimbal_lock`] naming
 /// `"angles"` where `|sin β|` (proper Euler) or `|cos β|` (Tait–Bryan) is at most
 /// [`RATES_LOCK_TOL`].
 pub fn euler_rates(
@@ -129,7 +133,7 @@ pub fn euler_rates(
     frame: Frame,
 ) -> Result<[f64; 3]> {
     check_finite("angles", &angles)?;
-    check_finite("omega", omega.as_slice())?;
+    check_finite("omega_body", omega.as_slice())?;
     euler_rates_checked_input(angles, omega, seq, frame)
 }
 
@@ -150,7 +154,11 @@ pub(crate) fn euler_rates_checked_input(
     let (det, measure, name) = match seq.kind() {
         SequenceKind::ProperEuler => (-s, s, "sin"),
         SequenceKind::TaitBryan => {
-            let eps = if (axes[1] + 3 - axes[0]) % 3 == 1 { 1.0 } else { -1.0 };
+            let eps = if (axes[1] + 3 - axes[0]) % 3 == 1 {
+                1.0
+            } else {
+                -1.0
+            };
             (eps * c, c, "cos")
         }
     };
@@ -211,10 +219,17 @@ mod tests {
         )
         .unwrap_err();
         assert_eq!(e.kind, ErrorKind::GimbalLock);
-        assert!(e.to_string().starts_with("angles: ") && e.message.contains("angles[1]"), "{e}");
+        assert!(
+            e.to_string().starts_with("angles: ") && e.message.contains("angles[1]"),
+            "{e}"
+        );
         let xyz = EulerSequence::new("xyz", false).unwrap();
-        let e =
-            euler_rates([0.3, -std::f64::consts::FRAC_PI_2, 0.1], &Vec3::x(), xyz, Frame::Space);
+        let e = euler_rates(
+            [0.3, -std::f64::consts::FRAC_PI_2, 0.1],
+            &Vec3::x(),
+            xyz,
+            Frame::Space,
+        );
         assert_eq!(e.unwrap_err().kind, ErrorKind::GimbalLock);
     }
 }

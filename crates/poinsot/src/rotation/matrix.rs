@@ -83,7 +83,10 @@ pub fn check_rotation_matrix(r: &Mat3, tol: f64) -> Result<()> {
 /// +1, e.g. −1 for a reflection).
 pub fn check_rotation_matrix_named(argument: &str, r: &Mat3, tol: f64) -> Result<()> {
     if !(tol.is_finite() && tol >= 0.0) {
-        return Err(Error::invalid("tol", format!("must be finite and >= 0, got {tol}")));
+        return Err(Error::invalid(
+            "tol",
+            format!("must be finite and >= 0, got {tol}"),
+        ));
     }
     let m = row_major(r);
     check_finite(argument, &m)?;
@@ -113,7 +116,11 @@ pub(crate) fn rotation_defects(m: &[f64; 9]) -> (f64, f64) {
 /// NaN defects (non-finite input) are reported as non-orthonormal.
 pub(crate) fn rotation_verdict(argument: &str, defect: f64, det: f64, tol: f64) -> Result<()> {
     if defect.is_nan() || defect > tol {
-        let extra = if det < 0.0 { " (and det < 0: it also reflects)" } else { "" };
+        let extra = if det < 0.0 {
+            " (and det < 0: it also reflects)"
+        } else {
+            ""
+        };
         return Err(Error::rotation(
             argument,
             format!(
@@ -123,8 +130,11 @@ pub(crate) fn rotation_verdict(argument: &str, defect: f64, det: f64, tol: f64) 
         ));
     }
     if det.is_nan() || (det - 1.0).abs() > tol {
-        let what =
-            if det < 0.0 { "a reflection (improper), not a proper rotation" } else { "not +1" };
+        let what = if det < 0.0 {
+            "a reflection (improper), not a proper rotation"
+        } else {
+            "not +1"
+        };
         return Err(Error::rotation(
             argument,
             format!(
@@ -181,14 +191,26 @@ mod tests {
         r[(0, 0)] *= 2.0;
         let e = check_rotation_matrix(&r, 1e-9).unwrap_err();
         assert_eq!(e.kind, ErrorKind::InvalidRotation);
-        assert!(e.to_string().starts_with("R: ") && e.message.contains("orthonormal"), "{e}");
+        assert!(
+            e.to_string().starts_with("R: ") && e.message.contains("orthonormal"),
+            "{e}"
+        );
         let refl = Mat3::from_diagonal(&Vec3::new(1.0, 1.0, -1.0));
         let e = check_rotation_matrix_named("attitude", &refl, 1e-9).unwrap_err();
-        assert!(e.to_string().starts_with("attitude: ") && e.message.contains("reflection"), "{e}");
+        assert!(
+            e.to_string().starts_with("attitude: ") && e.message.contains("reflection"),
+            "{e}"
+        );
         let mut nan = Mat3::identity();
         nan[(1, 2)] = f64::NAN;
-        assert_eq!(check_rotation_matrix(&nan, 1e-9).unwrap_err().kind, ErrorKind::InvalidArgument);
-        assert!(compose(&[rot_x(0.1), refl]).unwrap_err().to_string().starts_with("rotations[1]"));
+        assert_eq!(
+            check_rotation_matrix(&nan, 1e-9).unwrap_err().kind,
+            ErrorKind::InvalidArgument
+        );
+        assert!(compose(&[rot_x(0.1), refl])
+            .unwrap_err()
+            .to_string()
+            .starts_with("rotations[1]"));
     }
 
     #[test]

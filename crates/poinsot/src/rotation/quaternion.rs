@@ -85,8 +85,11 @@ pub(crate) fn matrix_to_quaternion_unchecked(m: &[f64; 9]) -> Quaternion {
     let n = (q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]).sqrt();
     let mut q = q.map(|c| c / n);
     // Canonical sign: w > 0, or at w = 0 the first non-zero vector component positive.
-    let lead =
-        if q[0] != 0.0 { q[0] } else { q[1..].iter().copied().find(|c| *c != 0.0).unwrap_or(1.0) };
+    let lead = if q[0] != 0.0 {
+        q[0]
+    } else {
+        q[1..].iter().copied().find(|c| *c != 0.0).unwrap_or(1.0)
+    };
     if lead < 0.0 {
         q = q.map(|c| -c);
     }
@@ -191,7 +194,10 @@ mod tests {
     fn bad_quaternions_are_named() {
         let e = quaternion_to_matrix(&[0.0; 4], true).unwrap_err();
         assert_eq!(e.kind, ErrorKind::InvalidRotation);
-        assert!(e.to_string().starts_with("q: ") && e.message.contains("zero"), "{e}");
+        assert!(
+            e.to_string().starts_with("q: ") && e.message.contains("zero"),
+            "{e}"
+        );
         let e = quaternion_to_matrix(&[1.0, 0.1, 0.0, 0.0], false).unwrap_err();
         assert!(e.message.contains("unit"), "{e}");
         assert!(quaternion_to_matrix(&[2.0, 0.0, 0.0, 0.0], true).is_ok());

@@ -94,7 +94,13 @@ pub fn screw_axis(r: &Mat3, t: &Vec3) -> Result<Screw> {
     let half = 0.5 * angle;
     let cot = half.cos() / half.sin();
     let point = 0.5 * (t_perp + cot * n.cross(&t_perp));
-    Ok(Screw { axis: n, point, angle, slide, pitch: slide / angle })
+    Ok(Screw {
+        axis: n,
+        point,
+        angle,
+        slide,
+        pitch: slide / angle,
+    })
 }
 
 #[cfg(test)]
@@ -125,7 +131,10 @@ mod tests {
         let s = screw_axis(&rot_z(1.0), &Vec3::new(1.0, 0.0, 0.0)).unwrap();
         assert_eq!(s.pitch, 0.0);
         let s = screw_axis(&Mat3::identity(), &Vec3::zeros()).unwrap();
-        assert_eq!((s.axis, s.angle, s.slide, s.pitch), (Vec3::z(), 0.0, 0.0, 0.0));
+        assert_eq!(
+            (s.axis, s.angle, s.slide, s.pitch),
+            (Vec3::z(), 0.0, 0.0, 0.0)
+        );
         let e = screw_axis(&Mat3::identity(), &Vec3::new(f64::NAN, 0.0, 0.0)).unwrap_err();
         assert_eq!(e.kind, ErrorKind::InvalidArgument);
         assert!(e.to_string().starts_with("t: "));
