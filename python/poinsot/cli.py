@@ -160,7 +160,7 @@ def _print_body(source: str, body: Any) -> None:
     table = Table(title=f"mass properties of {source}", show_header=False)
     table.add_row("mass", f"{fmt(body.mass)} kg")
     table.add_row("centre of mass", "(" + ", ".join(fmt(c) for c in body.center_of_mass) + ") m")
-    rows = ["  ".join(f"{v: .6g}" for v in row) for row in body.inertia]
+    rows = [" ".join(f"{v:>11.6g}" for v in row) for row in body.inertia]
     table.add_row("inertia about c.o.m.", "\n".join(rows) + "  kg·m²")
     table.add_row("principal moments", ", ".join(fmt(m) for m in body.principal_moments) + " kg·m²")
     axes = body.principal_axes

@@ -30,7 +30,9 @@ def section(title: str) -> Callable[[Callable[[Console], None]], Callable[[Conso
 
 
 def _vec(v: np.ndarray, digits: int = 6) -> str:
-    return "(" + ", ".join(f"{x: .{digits}g}" for x in np.asarray(v, dtype=float)) + ")"
+    v = np.asarray(v, dtype=float)
+    v = np.where(np.abs(v) < 1e-12 * max(1.0, float(np.max(np.abs(v)))), 0.0, v)
+    return "(" + ", ".join(f"{x: .{digits}g}" for x in v) + ")"
 
 
 @section("Euler's theorem: any rotation about a fixed point is one rotation about one axis")
