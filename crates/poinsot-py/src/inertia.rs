@@ -299,16 +299,8 @@ impl PyMassProperties {
         about: Option<PyReadonlyArray1<'_, f64>>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
         let about = opt_vec3("about", about)?;
-        let mut out = Vec::new();
-        for w in rows3("omega", &omega)? {
-            out.extend(
-                self.inner
-                    .angular_momentum(&Vec3::from(w), about.as_ref())
-                    .py()?
-                    .iter(),
-            );
-        }
-        rows3_out(py, out)
+        let out = per_omega(&omega, |w| self.inner.angular_momentum(w, about.as_ref()))?;
+        rows3_out(py, out.iter().flat_map(|v| v.iter().copied()).collect())
     }
 
     /// T = ½ ω·I·ω (J) for each ω of `omega` (rad/s, (N, 3)) → (N,).
@@ -320,14 +312,7 @@ impl PyMassProperties {
         about: Option<PyReadonlyArray1<'_, f64>>,
     ) -> PyResult<Bound<'py, PyArray1<f64>>> {
         let about = opt_vec3("about", about)?;
-        let mut out = Vec::new();
-        for w in rows3("omega", &omega)? {
-            out.push(
-                self.inner
-                    .kinetic_energy(&Vec3::from(w), about.as_ref())
-                    .py()?,
-            );
-        }
+        let out = per_omega(&omega, |w| self.inner.kinetic_energy(w, about.as_ref()))?;
         Ok(PyArray1::from_vec(py, out))
     }
 
@@ -340,16 +325,8 @@ impl PyMassProperties {
         about: Option<PyReadonlyArray1<'_, f64>>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
         let about = opt_vec3("about", about)?;
-        let mut out = Vec::new();
-        for w in rows3("omega", &omega)? {
-            out.extend(
-                self.inner
-                    .holding_torque(&Vec3::from(w), about.as_ref())
-                    .py()?
-                    .iter(),
-            );
-        }
-        rows3_out(py, out)
+        let out = per_omega(&omega, |w| self.inner.holding_torque(w, about.as_ref()))?;
+        rows3_out(py, out.iter().flat_map(|v| v.iter().copied()).collect())
     }
 
     /// Angle between L and ω (rad) for each ω of `omega` (rad/s, (N, 3)) → (N,).
@@ -361,16 +338,20 @@ impl PyMassProperties {
         about: Option<PyReadonlyArray1<'_, f64>>,
     ) -> PyResult<Bound<'py, PyArray1<f64>>> {
         let about = opt_vec3("about", about)?;
-        let mut out = Vec::new();
-        for w in rows3("omega", &omega)? {
-            out.push(
-                self.inner
-                    .momentum_angle(&Vec3::from(w), about.as_ref())
-                    .py()?,
-            );
-        }
+        let out = per_omega(&omega, |w| self.inner.momentum_angle(w, about.as_ref()))?;
         Ok(PyArray1::from_vec(py, out))
     }
+}
+
+/// Applies `f` to each row of `omega` ((N, 3), rad/s), mapping core errors.
+fn per_omega<T>(
+    omega: &PyReadonlyArray2<'_, f64>,
+    mut f: impl FnMut(&Vec3) -> poinsot::Result<T>,
+) -> PyResult<Vec<T>> {
+    rows3("omega", omega)?
+        .into_iter()
+        .map(|w| f(&Vec3::from(w)).py())
+        .collect()
 }
 
 /// Kind of top of principal moments `moments` (kg·m², (3,)) with relative tolerance `rtol`.
