@@ -5,6 +5,8 @@
 //! 3rd-order embedded estimates combined as `|h|·‖e5‖² / sqrt(n (‖e5‖² + 0.01 ‖e3‖²))`
 //! in the RMS norm scaled by `atol + rtol·max(|y|, |y_new|)`, and the step is scaled by
 //! `0.9 · err^(−1/8)` within [0.2, 10].
+// Index loops mirror the Butcher-tableau formulas they implement.
+#![allow(clippy::needless_range_loop)]
 
 use super::dop853_coefficients::{A, C, D, E3_SHIFT, E5, INTERPOLATOR_POWER, N_STAGES, N_STAGES_EXTENDED};
 use super::options::{Crossing, Options, Stats};

@@ -66,7 +66,7 @@ impl Options {
                 return Err(Error::invalid("first_step", format!("must be finite and > 0, got {h}")));
             }
         }
-        if !(self.max_step > 0.0) || self.max_step.is_nan() {
+        if self.max_step.is_nan() || self.max_step <= 0.0 {
             return Err(Error::invalid("max_step", format!("must be > 0, got {}", self.max_step)));
         }
         Ok(())

@@ -1,4 +1,6 @@
 //! The classic fixed-step 4th-order Runge–Kutta method.
+// Index loops mirror the Butcher-tableau formulas they implement.
+#![allow(clippy::needless_range_loop)]
 
 use super::options::Stats;
 use super::solution::Solution;
