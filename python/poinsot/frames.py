@@ -128,8 +128,9 @@ class MovingFrame:
             if lead != ():
                 raise PoinsotError(f"attitude: must be one (3, 3) rotation, got {lead + (3, 3)}")
             self._attitude = mats[0].copy()
-        # Let the core check the attitude (proper rotation) once.
-        _core.frame_steady_at(self._state, self._attitude, 0.0)
+        # Let the core check the attitude (a proper rotation) once.
+        empty = np.zeros((0, 3))
+        _core.frame_to_fixed(self._state, self._attitude, empty, empty, empty)
 
     # -- the state ------------------------------------------------------------------------
     @property
