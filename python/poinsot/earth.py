@@ -180,7 +180,7 @@ class LowFlow:
         Mean specific angular momentum about the centre (m²/s): > 0 counterclockwise.
     sense:
         ``"counterclockwise"`` (the north: cyclones), ``"clockwise"`` (the south) or
-        ``"none"``, from the simulated circulation.
+        ``"none"`` (below round-off), from the simulated circulation.
     """
 
     t: FloatArray = field(repr=False)
@@ -528,5 +528,8 @@ class Earth:
                                         as_scalar(rtol, "rtol"), as_scalar(atol, "atol"), int(max_steps))
         tracks = np.stack(out["parcels"])
         circ = out["circulation"]
+        # Below 1e-9 of radius × the speed the pull alone would give, the circulation is
+        # round-off (the equator): no sense.
+        scale = rad * np.sqrt(as_scalar(pull, "pull") * rad)
         return LowFlow(out["t"], tracks[:, :, :2].copy(), tracks[:, :, 2:].copy(), circ,
-                       _sense(circ, 1e-12 * rad * rad * self._rate))
+                       _sense(circ, scale))
