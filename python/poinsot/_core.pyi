@@ -34,12 +34,12 @@ def frame_fictitious_forces(
     position: NDArray[np.float64], velocity: NDArray[np.float64],
 ) -> list[NDArray[np.float64]]: ...
 def frame_simulate_particle(
-    frame: NDArray[np.float64], attitude: NDArray[np.float64],
-    frame_fn: Callable[[float], Any] | None, mass: float, position: NDArray[np.float64],
-    velocity: NDArray[np.float64], t0: float, t_end: float, times: NDArray[np.float64],
-    force: NDArray[np.float64], force_fn: Callable[..., tuple[float, float, float]] | None,
-    rtol: float, atol: float, max_steps: int,
-) -> dict[str, Any]: ...
+    frame: NDArray[np.float64], frame_fn: Callable[[float], Any] | None, mass: float,
+    position: NDArray[np.float64], velocity: NDArray[np.float64], t0: float, t_end: float,
+    samples: int, times: NDArray[np.float64] | None, force: NDArray[np.float64],
+    force_fn: Callable[..., tuple[float, float, float]] | None, rtol: float, atol: float,
+    max_steps: int,
+) -> tuple[NDArray[np.float64], int]: ...
 def frame_steady_at(
     frame: NDArray[np.float64], attitude: NDArray[np.float64], t: float,
 ) -> tuple[list[NDArray[np.float64]], NDArray[np.float64]]: ...

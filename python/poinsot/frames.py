@@ -14,6 +14,7 @@ Vectors are NumPy arrays of shape ``(..., 3)`` (leading dimensions broadcast); S
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any, Union
@@ -35,6 +36,29 @@ def _vector(value: Any, name: str) -> FloatArray:
     if arr.shape != (3,):
         raise PoinsotError(f"{name}: must be a scalar or have shape (3,), got {arr.shape}")
     return arr.copy()
+
+
+_ZERO3 = np.zeros(3)
+
+
+def _fast_scalar(value: Any, name: str) -> float:
+    """A finite float (fast path for Python floats and ints)."""
+    if type(value) is float or type(value) is int:
+        f = float(value)
+        if math.isfinite(f):
+            return f
+    return as_scalar(value, name)
+
+
+_F64 = np.dtype(np.float64)
+_IDENTITY_FRAME = np.concatenate([np.zeros(15), np.eye(3).ravel()])
+
+
+def _fast_vector(value: Any, name: str) -> FloatArray:
+    """A C-contiguous float64 (3,) array; finiteness is left to the core."""
+    if type(value) is np.ndarray and value.dtype is _F64 and value.shape == (3,) and value.flags.c_contiguous:
+        return value
+    return _vector(value, name)
 
 
 def _broadcast(values: list[tuple[Any, str]]) -> tuple[list[FloatArray], tuple[int, ...]]:
@@ -112,7 +136,7 @@ class MovingFrame:
     array([-12.,   0.,   0.])
     """
 
-    __slots__ = ("_state", "_attitude")
+    __slots__ = ("_state", "_attitude", "_packed")
 
     def __init__(self, *, origin: Any = 0, velocity: Any = 0, acceleration: Any = 0,
                  angular_velocity: Any = 0, angular_acceleration: Any = 0,
@@ -128,6 +152,7 @@ class MovingFrame:
             if lead != ():
                 raise PoinsotError(f"attitude: must be one (3, 3) rotation, got {lead + (3, 3)}")
             self._attitude = mats[0].copy()
+        self._packed = np.concatenate([self._state, self._attitude.ravel()])
         # Let the core check the attitude (a proper rotation) once.
         empty = np.zeros((0, 3))
         _core.frame_to_fixed(self._state, self._attitude, empty, empty, empty)
@@ -256,27 +281,56 @@ class MovingFrame:
 FrameLike = Union[MovingFrame, Callable[[float], MovingFrame]]
 
 
-@dataclass(frozen=True)
 class ParticleTrajectory:
-    """A particle integrated in a moving frame.
+    """A particle integrated in a moving frame (returned by :func:`simulate_particle`).
 
     Attributes
     ----------
     t:
         Sample times, shape (N,) (s).
     position, velocity:
-        r and (dr/dt)_rot at ``t`` in moving components, shape (N, 3).
+        r and (dr/dt)_rot at ``t`` in moving components, shape (N, 3) (read-only views of
+        ``states``).
+    states:
+        ``[x, y, z, vx, vy, vz]`` at ``t``, shape (N, 6).
     frame:
         The frame (a :class:`MovingFrame` taken as steady from t = 0, or a callable).
     evaluations:
         Evaluations of the right-hand side the integration took.
     """
 
-    t: FloatArray
-    position: FloatArray
-    velocity: FloatArray
-    frame: Any = field(repr=False)
-    evaluations: int = 0
+    __slots__ = ("_t", "states", "frame", "evaluations")
+
+    def __init__(self, t: Any, states: FloatArray, frame: Any, evaluations: int) -> None:
+        # t: the sample times, or (duration, samples) for evenly spaced ones (made on demand).
+        self._t = t
+        self.states = states
+        self.frame = frame
+        self.evaluations = evaluations
+
+    @property
+    def t(self) -> FloatArray:
+        """Sample times (s), shape (N,)."""
+        if isinstance(self._t, tuple):
+            dur, n = self._t
+            t = np.linspace(0.0, dur, n)
+            t[-1] = dur
+            self._t = t
+        return self._t
+
+    @property
+    def position(self) -> FloatArray:
+        """r (m), shape (N, 3), moving components."""
+        return self.states[:, :3]
+
+    @property
+    def velocity(self) -> FloatArray:
+        """(dr/dt)_rot (m/s), shape (N, 3), moving components."""
+        return self.states[:, 3:]
+
+    def __repr__(self) -> str:
+        return (f"ParticleTrajectory({len(self.t)} samples over [{self.t[0]:g}, {self.t[-1]:g}] s, "
+                f"{self.evaluations} evaluations)")
 
     def frame_at(self, t: float) -> MovingFrame:
         """The frame's state at time ``t``."""
@@ -356,38 +410,37 @@ def simulate_particle(frame: FrameLike, position: Any, velocity: Any, duration: 
         ``t`` (N,), ``position`` and ``velocity`` (N, 3) in the moving frame; ``to_fixed()``
         gives the fixed-frame view.
     """
-    dur = as_scalar(duration, "duration")
+    dur = _fast_scalar(duration, "duration")
     if not dur > 0:
         raise PoinsotError(f"duration: must be > 0, got {dur}")
-    r0 = _vector(position, "position")
-    v0 = _vector(velocity, "velocity")
+    # Finiteness of the vectors is checked by the core (naming the argument).
+    r0 = _fast_vector(position, "position")
+    v0 = _fast_vector(velocity, "velocity")
     if t_eval is None:
         n = int(samples)
         if n < 2:
             raise PoinsotError(f"samples: must be >= 2, got {samples}")
-        times = np.linspace(0.0, dur, n)
-        times[-1] = dur
+        times = None
     else:
         times = np.ascontiguousarray(as_float_array(t_eval, "t_eval").reshape(-1))
         if times.size == 0 or np.any(np.diff(times) < 0) or times[0] < 0 or times[-1] > dur:
             raise PoinsotError("t_eval: must be non-empty, increasing and inside [0, duration]")
+        n = times.size
     if force is None:
-        f_const, f_fn = np.zeros(3), None
+        f_const, f_fn = _ZERO3, None
     elif callable(force):
-        f_const, f_fn = np.zeros(3), _force_callable(force)
+        f_const, f_fn = _ZERO3, _force_callable(force)
     else:
-        f_const, f_fn = _vector(force, "force"), None
+        f_const, f_fn = _fast_vector(force, "force"), None
     if isinstance(frame, MovingFrame):
-        state, att, frame_fn = frame._state, frame._attitude, None
+        packed, frame_fn = frame._packed, None
     elif callable(frame):
-        state, att, frame_fn = np.zeros(15), np.eye(3), _frame_callable(frame)
+        packed, frame_fn = _IDENTITY_FRAME, _frame_callable(frame)
     else:
         raise PoinsotError(f"frame: must be a MovingFrame or a callable t -> MovingFrame, got {type(frame).__name__}")
     if int(max_steps) < 1:
         raise PoinsotError(f"max_steps: must be >= 1, got {max_steps}")
-    out = _core.frame_simulate_particle(state, att, frame_fn, as_scalar(mass, "mass"), r0, v0, 0.0, dur,
-                                        times, f_const, f_fn, as_scalar(rtol, "rtol"),
-                                        as_scalar(atol, "atol"), int(max_steps))
-    states = out["states"]
-    return ParticleTrajectory(out["t"], states[:, :3].copy(), states[:, 3:].copy(), frame,
-                              int(out["evaluations"]))
+    states, evaluations = _core.frame_simulate_particle(
+        packed, frame_fn, _fast_scalar(mass, "mass"), r0, v0, 0.0, dur, n, times, f_const, f_fn,
+        _fast_scalar(rtol, "rtol"), _fast_scalar(atol, "atol"), int(max_steps))
+    return ParticleTrajectory(times if times is not None else (dur, n), states, frame, evaluations)

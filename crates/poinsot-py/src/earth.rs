@@ -7,7 +7,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::errors::{invalid, IntoPy};
-use crate::frames::{array_in, options, rows_in, rows_out, solution_dict, vec_in};
+use crate::frames::{array_in, even_times, options, rows_in, rows_out, solution_dict, vec_in};
 
 fn earth(rotation_rate: f64, radius: f64, g: f64) -> PyResult<Earth> {
     Earth::new(rotation_rate, radius, g).py()
@@ -132,14 +132,6 @@ fn model(gravity_name: &str, rotation: bool, centrifugal: bool, rtol: f64, atol:
     Ok(FallModel { gravity: gravity(gravity_name)?, rotation, centrifugal, options: options(rtol, atol, max_steps, true) })
 }
 
-/// Samples `n` evenly spaced times in [0, t_end], both ends included.
-fn even_times(t_end: f64, n: usize) -> Vec<f64> {
-    if n < 2 {
-        return vec![t_end];
-    }
-    (0..n).map(|i| if i + 1 == n { t_end } else { t_end * i as f64 / (n - 1) as f64 }).collect()
-}
-
 /// The exact drop: {"time", "east", "north", "t", "states", ...}.
 #[pyfunction]
 #[pyo3(signature = (rotation_rate, radius, g, height, latitude, gravity, rotation, centrifugal, rtol, atol, max_steps, samples))]
@@ -162,7 +154,7 @@ fn earth_drop<'py>(
     let e = earth(rotation_rate, radius, g)?;
     let m = model(gravity, rotation, centrifugal, rtol, atol, max_steps)?;
     let fall = py.detach(|| e.drop(height, latitude, &m)).py()?;
-    let d = solution_dict(py, &fall.solution, &even_times(fall.time, samples))?;
+    let d = solution_dict(py, &fall.solution, &even_times(0.0, fall.time, samples))?;
     d.set_item("time", fall.time)?;
     d.set_item("east", fall.east)?;
     d.set_item("north", fall.north)?;
@@ -194,7 +186,7 @@ fn earth_projectile<'py>(
     let e = earth(rotation_rate, radius, g)?;
     let m = model(gravity, rotation, centrifugal, rtol, atol, max_steps)?;
     let fl = py.detach(|| e.projectile(speed, elevation, azimuth, latitude, height, &m)).py()?;
-    let d = solution_dict(py, &fl.solution, &even_times(fl.time, samples))?;
+    let d = solution_dict(py, &fl.solution, &even_times(0.0, fl.time, samples))?;
     for (k, v) in [("time", fl.time), ("east", fl.east), ("north", fl.north), ("range", fl.range), ("downrange", fl.downrange), ("drift", fl.drift)] {
         d.set_item(k, v)?;
     }

@@ -7,8 +7,9 @@ use std::cell::RefCell;
 
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
-use poinsot::frames::{simulate_particle, FrameMotion, MovingFrame, ParticleState, SteadyMotion};
-use poinsot::integrate::{Crossing, Options, Solution};
+use poinsot::frames::{simulate_particle_at, FrameMotion, MovingFrame, SteadyMotion};
+use poinsot::frames::ParticleState;
+use poinsot::integrate::{Options, Scan, Solution};
 use poinsot::{Mat3, Vec3};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -198,42 +199,61 @@ impl FrameMotion for PyFrame<'_, '_> {
     }
 }
 
-/// Integrates a particle in a moving frame (see `poinsot.simulate_particle`). The frame is a
-/// 15-float state and attitude (a steady frame from t = 0) or a callable `t -> (15 floats,
-/// attitude)`; the force is a
+/// Integrates a particle in a moving frame (see `poinsot.simulate_particle`). The frame is 24
+/// floats — 15 state numbers and the attitude row-major — (a steady frame from t = 0) or a
+/// callable `t -> (15 floats, attitude)`; the output times are `times` or, if None, `samples`
+/// evenly spaced ones from `t0` to `t_end`; the force is a
 /// constant (3,) vector in moving components plus, optionally, a callable
 /// `(t, x, y, z, vx, vy, vz) -> (fx, fy, fz)`.
 #[pyfunction]
-#[pyo3(signature = (frame, attitude, frame_fn, mass, position, velocity, t0, t_end, times, force, force_fn, rtol, atol, max_steps))]
+#[pyo3(signature = (frame, frame_fn, mass, position, velocity, t0, t_end, samples, times, force, force_fn, rtol, atol, max_steps))]
 #[allow(clippy::too_many_arguments)]
 fn frame_simulate_particle<'py>(
     py: Python<'py>,
     frame: PyReadonlyArray1<'py, f64>,
-    attitude: PyReadonlyArray2<'py, f64>,
     frame_fn: Option<Bound<'py, PyAny>>,
     mass: f64,
     position: PyReadonlyArray1<'py, f64>,
     velocity: PyReadonlyArray1<'py, f64>,
     t0: f64,
     t_end: f64,
-    times: PyReadonlyArray1<'py, f64>,
+    samples: usize,
+    times: Option<PyReadonlyArray1<'py, f64>>,
     force: PyReadonlyArray1<'py, f64>,
     force_fn: Option<Bound<'py, PyAny>>,
     rtol: f64,
     atol: f64,
     max_steps: usize,
-) -> PyResult<Bound<'py, PyDict>> {
+) -> PyResult<ScanOut<'py>> {
     let r0 = v3(&vec3("position", &position)?);
     let v0 = v3(&vec3("velocity", &velocity)?);
     let f_const = v3(&vec3("force", &force)?);
     poinsot::error::check_finite("force", f_const.as_slice()).py()?;
-    let times = vec_in(&times);
-    let opts = options(rtol, atol, max_steps, true);
+    // The frame travels packed: 15 state numbers then the attitude, row-major.
+    let packed = vec_in(&frame);
+    if packed.len() != 24 {
+        return Err(invalid("frame", format!("must hold 24 numbers, got {}", packed.len())));
+    }
+    let steady = || -> PyResult<SteadyMotion> {
+        let att: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| packed[15 + 3 * i + j]));
+        SteadyMotion::new(frame_from(&packed[..15], att)?).py()
+    };
+    let times = match &times {
+        Some(t) => vec_in(t),
+        None => even_times(t0, t_end, samples),
+    };
+    let opts = options(rtol, atol, max_steps, false);
     let error: RefCell<Option<PyErr>> = RefCell::new(None);
-    let no_event = None::<(fn(f64, &ParticleState) -> f64, Crossing)>;
     let result = if frame_fn.is_none() && force_fn.is_none() {
-        let motion = SteadyMotion::new(frame_arg(&frame, &attitude)?).py()?;
-        py.detach(|| simulate_particle(&motion, mass, r0, v0, t0, t_end, |_t, _r, _v| f_const, &opts, no_event))
+        let motion = steady()?;
+        // Release the GIL only for long outputs: for a handful of samples the release costs
+        // more than it frees.
+        let run = || simulate_particle_at(&motion, mass, r0, v0, t0, t_end, &times, |_t, _r, _v| f_const, &opts);
+        if times.len() > 64 {
+            py.detach(run)
+        } else {
+            run()
+        }
     } else {
         let force_call = |t: f64, r: &Vec3, v: &Vec3| -> Vec3 {
             match &force_fn {
@@ -250,20 +270,34 @@ fn frame_simulate_particle<'py>(
         match &frame_fn {
             Some(func) => {
                 let motion = PyFrame { py, func, error: &error };
-                simulate_particle(&motion, mass, r0, v0, t0, t_end, force_call, &opts, no_event)
+                simulate_particle_at(&motion, mass, r0, v0, t0, t_end, &times, force_call, &opts)
             }
             None => {
-                let motion = SteadyMotion::new(frame_arg(&frame, &attitude)?).py()?;
-                simulate_particle(&motion, mass, r0, v0, t0, t_end, force_call, &opts, no_event)
+                let motion = steady()?;
+                simulate_particle_at(&motion, mass, r0, v0, t0, t_end, &times, force_call, &opts)
             }
         }
     };
     if let Some(e) = error.into_inner() {
         return Err(e);
     }
-    let sol = result.py()?;
-    solution_dict(py, &sol, &times)
+    Ok(scan_out(py, &result.py()?))
 }
+
+/// `n` evenly spaced times from `t0` to `t_end`, both ends included exactly.
+pub(crate) fn even_times(t0: f64, t_end: f64, n: usize) -> Vec<f64> {
+    if n < 2 {
+        return vec![t_end];
+    }
+    (0..n).map(|i| if i + 1 == n { t_end } else { t0 + (t_end - t0) * i as f64 / (n - 1) as f64 }).collect()
+}
+
+/// A scan's samples as (states (N, 6): position then velocity, evaluations).
+fn scan_out<'py>(py: Python<'py>, scan: &Scan<ParticleState>) -> ScanOut<'py> {
+    (rows_out(py, &scan.y), scan.stats.evaluations)
+}
+
+type ScanOut<'py> = (Bound<'py, PyArray2<f64>>, usize);
 
 /// The state of a steady frame at time `t`: (origin, velocity, acceleration, angular velocity,
 /// angular acceleration, attitude).

@@ -13,6 +13,15 @@ use crate::{Mat3, Vec3};
 pub trait FrameMotion {
     /// The frame's state at time `t`.
     fn at(&self, t: f64) -> MovingFrame;
+
+    /// What the moving-frame equation of a particle needs at time `t`, in moving components:
+    /// (R̈, ω, ω̇). The default takes them from [`FrameMotion::at`]; implementations may
+    /// override it with a cheaper equivalent.
+    fn moving_components(&self, t: f64) -> (Vec3, Vec3, Vec3) {
+        let f = self.at(t);
+        let at = f.attitude.transpose();
+        (at * f.acceleration, at * f.angular_velocity, at * f.angular_acceleration)
+    }
 }
 
 impl<F: Fn(f64) -> MovingFrame> FrameMotion for F {
@@ -34,6 +43,11 @@ pub struct SteadyMotion {
     axis: Vec3,
     rate: f64,
     rate_dot: f64,
+    /// A₀ᵀω₀ and A₀ᵀω̇: ω and ω̇ in moving components (constant directions).
+    w_moving: Vec3,
+    wd_moving: Vec3,
+    /// Whether the origin accelerates (R̈ ≠ 0).
+    accelerating: bool,
 }
 
 /// Relative tolerance on |ω₀ × ω̇| / (|ω₀| |ω̇|) for the two to count as parallel.
@@ -59,7 +73,8 @@ impl SteadyMotion {
         } else {
             Vec3::z()
         };
-        Ok(Self { initial, axis, rate: axis.dot(&w), rate_dot: axis.dot(&wd) })
+        let a0t = initial.attitude.transpose();
+        Ok(Self { initial, axis, rate: axis.dot(&w), rate_dot: axis.dot(&wd), w_moving: a0t * w, wd_moving: a0t * wd, accelerating: initial.acceleration != Vec3::zeros() })
     }
 
     /// The state at `t = 0`.
@@ -75,6 +90,22 @@ pub(crate) fn axis_angle(axis: &Vec3, angle: f64) -> Mat3 {
 }
 
 impl FrameMotion for SteadyMotion {
+    /// ω and ω̇ lie along the fixed axis, which the rotation leaves alone, so their moving
+    /// components are A₀ᵀω(t) and A₀ᵀω̇; only R̈ needs the attitude at `t`.
+    #[inline]
+    fn moving_components(&self, t: f64) -> (Vec3, Vec3, Vec3) {
+        let f = &self.initial;
+        let w = self.w_moving + self.wd_moving * t;
+        let wd = self.wd_moving;
+        let acc = if !self.accelerating {
+            Vec3::zeros()
+        } else {
+            let angle = self.rate * t + 0.5 * self.rate_dot * t * t;
+            (axis_angle(&self.axis, angle) * f.attitude).transpose() * f.acceleration
+        };
+        (acc, w, wd)
+    }
+
     fn at(&self, t: f64) -> MovingFrame {
         let f = &self.initial;
         let angle = self.rate * t + 0.5 * self.rate_dot * t * t;

@@ -3,7 +3,7 @@
 
 use super::motion::FrameMotion;
 use crate::error::{check_finite, check_positive, Result};
-use crate::integrate::{dop853_until, Crossing, Options, Solution};
+use crate::integrate::{dop853_scan, dop853_until, Crossing, Options, Scan, Solution};
 use crate::Vec3;
 
 /// A particle's state `[x, y, z, vx, vy, vz]` (m, m/s).
@@ -13,6 +13,44 @@ pub type ParticleState = [f64; 6];
 #[inline]
 pub(crate) fn split(y: &ParticleState) -> (Vec3, Vec3) {
     (Vec3::new(y[0], y[1], y[2]), Vec3::new(y[3], y[4], y[5]))
+}
+
+/// −R̈ − 2ω×ṙ − ω×(ω×r) − ω̇×r in moving components (the fictitious forces per unit mass).
+#[inline]
+fn fictitious_acceleration<M: FrameMotion + ?Sized>(frame: &M, t: f64, r: &Vec3, v: &Vec3) -> Vec3 {
+    let (acc, w, wd) = frame.moving_components(t);
+    -acc - 2.0 * w.cross(v) - w.cross(&w.cross(r)) - wd.cross(r)
+}
+
+/// Like [`simulate_particle`], but returns only the states at `times` (monotone, inside
+/// `[t0, t_end]`) without keeping the steps: the fast path when few outputs are wanted.
+#[allow(clippy::too_many_arguments)]
+pub fn simulate_particle_at<M, F>(
+    frame: &M,
+    mass: f64,
+    position: Vec3,
+    velocity: Vec3,
+    t0: f64,
+    t_end: f64,
+    times: &[f64],
+    mut force: F,
+    opts: &Options,
+) -> Result<Scan<ParticleState>>
+where
+    M: FrameMotion + ?Sized,
+    F: FnMut(f64, &Vec3, &Vec3) -> Vec3,
+{
+    check_positive("mass", mass)?;
+    check_finite("position", position.as_slice())?;
+    check_finite("velocity", velocity.as_slice())?;
+    let y0 = [position.x, position.y, position.z, velocity.x, velocity.y, velocity.z];
+    let inv_mass = 1.0 / mass;
+    let rhs = |t: f64, y: &ParticleState, dy: &mut ParticleState| {
+        let (r, v) = split(y);
+        let a = force(t, &r, &v) * inv_mass + fictitious_acceleration(frame, t, &r, &v);
+        *dy = [v.x, v.y, v.z, a.x, a.y, a.z];
+    };
+    dop853_scan(rhs, t0, y0, t_end, times, opts, |_t: f64, _y: &ParticleState| 1.0, Crossing::Any)
 }
 
 /// Integrates a particle of `mass` (kg) relative to the moving `frame` from `t0` to `t_end`:
@@ -50,9 +88,7 @@ where
     let y0 = [position.x, position.y, position.z, velocity.x, velocity.y, velocity.z];
     let rhs = |t: f64, y: &ParticleState, dy: &mut ParticleState| {
         let (r, v) = split(y);
-        let fr = frame.at(t);
-        let fict = fr.fictitious_forces_unchecked(mass, &r, &v);
-        let a = (force(t, &r, &v) + fict.total()) / mass;
+        let a = force(t, &r, &v) / mass + fictitious_acceleration(frame, t, &r, &v);
         *dy = [v.x, v.y, v.z, a.x, a.y, a.z];
     };
     match event {

@@ -122,10 +122,13 @@ impl<S: OdeState, F: OdeSystem<S>> Dop853<S, F> {
         let (rtol, atol) = (self.opts.rtol, self.opts.atol);
         let y0 = self.y.as_slice();
         let f0 = self.k[0].as_slice();
-        let rms = |v: &mut dyn Iterator<Item = f64>| (v.map(|x| x * x).sum::<f64>() / n as f64).sqrt();
-        let scale: Vec<f64> = y0.iter().map(|y| atol + y.abs() * rtol).collect();
-        let d0 = rms(&mut y0.iter().zip(&scale).map(|(y, s)| y / s));
-        let d1 = rms(&mut f0.iter().zip(&scale).map(|(f, s)| f / s));
+        let (mut s0, mut s1) = (0.0, 0.0);
+        for i in 0..n {
+            let scale = atol + y0[i].abs() * rtol;
+            s0 += (y0[i] / scale).powi(2);
+            s1 += (f0[i] / scale).powi(2);
+        }
+        let (d0, d1) = ((s0 / n as f64).sqrt(), (s1 / n as f64).sqrt());
         let mut h0 = if d0 < 1e-5 || d1 < 1e-5 { 1e-6 } else { 0.01 * d0 / d1 };
         h0 = h0.min(interval);
         {
@@ -137,7 +140,12 @@ impl<S: OdeState, F: OdeSystem<S>> Dop853<S, F> {
         let mut f1 = self.y.clone();
         self.system.rhs(self.t + h0 * self.direction, &self.tmp, &mut f1);
         self.stats.evaluations += 1;
-        let d2 = rms(&mut f1.as_slice().iter().zip(f0).zip(&scale).map(|((a, b), s)| (a - b) / s)) / h0;
+        let mut s2 = 0.0;
+        for i in 0..n {
+            let scale = atol + y0[i].abs() * rtol;
+            s2 += ((f1.as_slice()[i] - f0[i]) / scale).powi(2);
+        }
+        let d2 = (s2 / n as f64).sqrt() / h0;
         let h1 = if d1 <= 1e-15 && d2 <= 1e-15 || !d2.is_finite() {
             (h0 * 1e-3).max(1e-6)
         } else {
@@ -153,14 +161,19 @@ impl<S: OdeState, F: OdeSystem<S>> Dop853<S, F> {
         for s in 1..=N_STAGES {
             {
                 let (done, _) = k.split_at(s);
-                let ys = y.as_slice();
                 let out = if s < N_STAGES { tmp.as_mut_slice() } else { y_new.as_mut_slice() };
-                for i in 0..n {
-                    let mut acc = 0.0;
-                    for (j, kj) in done.iter().enumerate() {
-                        acc += A[s][j] * kj.as_slice()[i];
+                let out = &mut out[..n];
+                out.copy_from_slice(y.as_slice());
+                // out = y + h Σ_j a_sj k_j, column by column (skipping the tableau's zeros) so
+                // that the inner loop runs over the state and vectorises.
+                for (j, kj) in done.iter().enumerate() {
+                    let a = A[s][j];
+                    if a != 0.0 {
+                        let ha = h * a;
+                        for (o, kv) in out.iter_mut().zip(&kj.as_slice()[..n]) {
+                            *o += ha * kv;
+                        }
                     }
-                    out[i] = ys[i] + h * acc;
                 }
             }
             let (_, tail) = k.split_at_mut(s);
@@ -176,24 +189,32 @@ impl<S: OdeState, F: OdeSystem<S>> Dop853<S, F> {
     fn error_norm(&self, h: f64) -> f64 {
         let n = self.y.as_slice().len();
         let (rtol, atol) = (self.opts.rtol, self.opts.atol);
+        // e5 = Σ_j E5_j k_j and e3 = Σ_j E3_j k_j with E3 = b − shifts (b_12 = 0 for the FSAL stage).
+        let mut e5 = self.tmp.clone();
+        let mut e3 = self.tmp.clone();
+        let (e5s, e3s) = (e5.as_mut_slice(), e3.as_mut_slice());
+        e5s.fill(0.0);
+        e3s.fill(0.0);
+        for j in 0..=N_STAGES {
+            let kj = &self.k[j].as_slice()[..n];
+            let c5 = E5[j];
+            let mut c3 = if j < N_STAGES { A[N_STAGES][j] } else { 0.0 };
+            for &(js, v) in &E3_SHIFT {
+                if js == j {
+                    c3 -= v;
+                }
+            }
+            for i in 0..n {
+                e5s[i] += c5 * kj[i];
+                e3s[i] += c3 * kj[i];
+            }
+        }
         let (mut e5n, mut e3n) = (0.0, 0.0);
+        let (y, yn) = (self.y.as_slice(), self.y_new.as_slice());
         for i in 0..n {
-            let y = self.y.as_slice()[i];
-            let yn = self.y_new.as_slice()[i];
-            let scale = atol + y.abs().max(yn.abs()) * rtol;
-            let (mut e5, mut e3) = (0.0, 0.0);
-            for j in 0..=N_STAGES {
-                let kj = self.k[j].as_slice()[i];
-                e5 += E5[j] * kj;
-                // E3 = b − shifts (b_12 = 0 for the FSAL stage).
-                let b = if j < N_STAGES { A[N_STAGES][j] } else { 0.0 };
-                e3 += b * kj;
-            }
-            for &(j, v) in &E3_SHIFT {
-                e3 -= v * self.k[j].as_slice()[i];
-            }
-            e5n += (e5 / scale).powi(2);
-            e3n += (e3 / scale).powi(2);
+            let scale = atol + y[i].abs().max(yn[i].abs()) * rtol;
+            e5n += (e5s[i] / scale).powi(2);
+            e3n += (e3s[i] / scale).powi(2);
         }
         if e5n == 0.0 && e3n == 0.0 {
             return 0.0;
@@ -257,7 +278,7 @@ impl<S: OdeState, F: OdeSystem<S>> Dop853<S, F> {
                 let mut factor = if err == 0.0 {
                     MAX_FACTOR
                 } else {
-                    MAX_FACTOR.min(SAFETY * err.powf(-1.0 / f64::from(ERROR_ESTIMATOR_ORDER + 1)))
+                    MAX_FACTOR.min(SAFETY * inv_eighth_root(err))
                 };
                 if rejected_now {
                     factor = factor.min(1.0);
@@ -276,7 +297,7 @@ impl<S: OdeState, F: OdeSystem<S>> Dop853<S, F> {
                 return Ok(());
             }
             self.stats.rejected += 1;
-            h_abs *= MIN_FACTOR.max(SAFETY * err.powf(-1.0 / f64::from(ERROR_ESTIMATOR_ORDER + 1)));
+            h_abs *= MIN_FACTOR.max(SAFETY * inv_eighth_root(err));
             rejected_now = true;
         }
     }
@@ -337,6 +358,14 @@ impl<S: OdeState, F: OdeSystem<S>> Dop853<S, F> {
         }
         out
     }
+}
+
+/// err^(−1/8) (the step-size exponent −1/(order + 1) for the 7th-order estimator) by three
+/// square roots, cheaper than `powf`.
+#[inline]
+fn inv_eighth_root(err: f64) -> f64 {
+    const _: () = assert!(ERROR_ESTIMATOR_ORDER == 7);
+    1.0 / err.sqrt().sqrt().sqrt()
 }
 
 /// The next float after `t` in `direction` (±1).
@@ -527,17 +556,20 @@ where
         let hit = crossing.detects(g_old, g_new) && g_old != 0.0;
         let wants_sample = next < times.len() && dir * (times[next] - stepper.t) <= 0.0;
         if hit || wants_sample {
-            let dense = stepper.dense_step();
+            // The dense output costs three evaluations: only when a point inside the step is wanted.
+            let mut dense: Option<DenseStep> = None;
             if hit {
-                let t_hit = find_root(&dense, &mut event, stepper.t_old, g_old, stepper.t, g_new, &stepper.y);
-                dense.eval_into(t_hit, y.as_mut_slice());
+                let d = dense.get_or_insert_with(|| stepper.dense_step());
+                let t_hit = find_root(d, &mut event, stepper.t_old, g_old, stepper.t, g_new, &stepper.y);
+                d.eval_into(t_hit, y.as_mut_slice());
                 crossings.push(EventHit { t: t_hit, y: y.clone() });
             }
             while next < times.len() && dir * (times[next] - stepper.t) <= 0.0 {
                 if times[next] == stepper.t {
                     out.push(stepper.y.clone());
                 } else {
-                    dense.eval_into(times[next], y.as_mut_slice());
+                    let d = dense.get_or_insert_with(|| stepper.dense_step());
+                    d.eval_into(times[next], y.as_mut_slice());
                     out.push(y.clone());
                 }
                 next += 1;
