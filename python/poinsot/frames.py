@@ -438,9 +438,13 @@ def simulate_particle(frame: FrameLike, position: Any, velocity: Any, duration: 
         packed, frame_fn = _IDENTITY_FRAME, _frame_callable(frame)
     else:
         raise PoinsotError(f"frame: must be a MovingFrame or a callable t -> MovingFrame, got {type(frame).__name__}")
-    if int(max_steps) < 1:
+    steps = int(max_steps)
+    if steps < 1:
         raise PoinsotError(f"max_steps: must be >= 1, got {max_steps}")
+    # Plain floats go straight to the core, which checks their ranges and names them.
+    m = mass if type(mass) is float else _fast_scalar(mass, "mass")
+    rt = rtol if type(rtol) is float else _fast_scalar(rtol, "rtol")
+    at = atol if type(atol) is float else _fast_scalar(atol, "atol")
     states, evaluations = _core.frame_simulate_particle(
-        packed, frame_fn, _fast_scalar(mass, "mass"), r0, v0, 0.0, dur, n, times, f_const, f_fn,
-        _fast_scalar(rtol, "rtol"), _fast_scalar(atol, "atol"), int(max_steps))
+        packed, frame_fn, m, r0, v0, 0.0, dur, n, times, f_const, f_fn, rt, at, steps)
     return ParticleTrajectory(times if times is not None else (dur, n), states, frame, evaluations)

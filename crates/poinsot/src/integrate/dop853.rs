@@ -37,7 +37,7 @@ pub struct Dop853<S: OdeState, F: OdeSystem<S>> {
     y_old: S,
     h_prev: f64,
     /// Stages k_0..k_15 (k_12 = f(t_new, y_new), k_13..k_15 the dense-output stages).
-    k: Vec<S>,
+    k: [S; N_STAGES_EXTENDED],
     tmp: S,
     y_new: S,
     dense_ready: bool,
@@ -60,7 +60,7 @@ impl<S: OdeState, F: OdeSystem<S>> Dop853<S, F> {
         if f0.as_slice().iter().any(|v| !v.is_finite()) {
             return Err(Error::diverged("t", format!("the right-hand side is not finite at t = {t0} (the initial point)")));
         }
-        let mut k = vec![y0.clone(); N_STAGES_EXTENDED];
+        let mut k: [S; N_STAGES_EXTENDED] = std::array::from_fn(|_| y0.clone());
         k[0] = f0;
         let mut me = Self {
             system,
@@ -262,7 +262,7 @@ impl<S: OdeState, F: OdeSystem<S>> Dop853<S, F> {
             }
             h = t_new - t;
             h_abs = h.abs();
-            Self::rk_step(&mut self.system, t, &self.y, h, &mut self.k, &mut self.tmp, &mut self.y_new);
+            Self::rk_step(&mut self.system, t, &self.y, h, &mut self.k[..], &mut self.tmp, &mut self.y_new);
             self.stats.evaluations += N_STAGES;
             let finite = self.y_new.as_slice().iter().all(|v| v.is_finite())
                 && self.k[..=N_STAGES].iter().all(|kj| kj.as_slice().iter().all(|v| v.is_finite()));
