@@ -17,7 +17,7 @@ mod solution;
 mod state;
 
 pub use dop853::{dop853, dop853_scan, dop853_until, Dop853, Scan};
-pub use options::{Crossing, Options, Stats};
+pub use options::{Crossing, Options, Stats, MIN_RTOL};
 pub use rk4::{rk4, rk4_step};
 pub use solution::{DenseStep, EventHit, Solution};
 pub use state::{OdeState, OdeSystem};
