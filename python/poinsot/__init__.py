@@ -6,6 +6,9 @@ The public API (see ``DESIGN.md``'s contract and the README):
   (Euler's theorem), :func:`screw_axis` (Chasles' theorem), :func:`body_angular_velocity`
   (the unit's eq. 2.99) and :func:`euler_rates`, quaternion helpers;
 * mass properties: :class:`RigidBody` (inertia tensor, principal axes, kind, L, T);
+* moving frames: :class:`MovingFrame` (eqs. 2.1–2.28), :func:`simulate_particle`;
+* the rotating Earth: :class:`Earth` (effective gravity, Coriolis, the falling body of
+  eq. 2.42, projectiles, the Foucault pendulum, inertial oscillations);
 * errors: :class:`PoinsotError` (a ``ValueError``) and its subclasses.
 
 SI units and radians everywhere; quaternions are scalar-first ``[w, x, y, z]``.
@@ -16,9 +19,13 @@ from __future__ import annotations
 from ._core import __version__
 from .body import *  # noqa: F401,F403
 from .body import __all__ as _body_all
+from .earth import *  # noqa: F401,F403
+from .earth import __all__ as _earth_all
 from .errors import *  # noqa: F401,F403
 from .errors import __all__ as _errors_all
+from .frames import *  # noqa: F401,F403
+from .frames import __all__ as _frames_all
 from .rotation import *  # noqa: F401,F403
 from .rotation import __all__ as _rotation_all
 
-__all__ = ["__version__", *_errors_all, *_rotation_all, *_body_all]
+__all__ = ["__version__", *_errors_all, *_rotation_all, *_body_all, *_frames_all, *_earth_all]

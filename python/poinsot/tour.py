@@ -117,6 +117,86 @@ def _dumbbell(con: Console) -> None:
               " (2 masses × m r² ω² sinα cosα)")
 
 
+@section("Moving frames: the acceleration seen from a turning, accelerating frame (eqs. 2.20–2.24)")
+def _moving_frames(con: Console) -> None:
+    frame = ps.MovingFrame(acceleration=[0.0, 0.0, 1.0], angular_velocity=[0.0, 0.0, 2.0],
+                           angular_acceleration=[0.0, 0.0, 0.5])
+    out = frame.to_fixed([3.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.1, 0.0, 0.0])
+    con.print("a frame with R̈ = (0, 0, 1) m/s², ω = (0, 0, 2) rad/s, ω̇ = (0, 0, 0.5) rad/s²;")
+    con.print("a particle at r = (3, 0, 0) m moving with ṙ = (0, 1, 0) m/s, r̈ = (0.1, 0, 0) m/s² in it:")
+    table = Table(show_header=True)
+    table.add_column("term of eq. 2.21")
+    table.add_column("poinsot (m/s²)", justify="right")
+    table.add_column("by hand", justify="right")
+    hand = {"relative": "(0.1, 0, 0)", "origin": "(0, 0, 1)", "coriolis": "2ω×ṙ = (−4, 0, 0)",
+            "centripetal": "ω×(ω×r) = −ω² r = (−12, 0, 0)", "euler": "ω̇×r = (0, 1.5, 0)"}
+    for name, value in out.acceleration_terms.items():
+        table.add_row(name, _vec(value), hand[name])
+    table.add_row("[bold]total r̈'", _vec(out.acceleration), "(−15.9, 1.5, 1)")
+    con.print(table)
+    f = frame.fictitious_forces(1.0, [3.0, 0.0, 0.0], [0.0, 1.0, 0.0])
+    con.print("fictitious forces on 1 kg there (2.26–2.28): " + ", ".join(f"{k} {_vec(v + 0.0, 4)} N" for k, v in f.items()))
+
+
+@section("The rotating Earth: the unit's numbers (eqs. 2.29–2.33)")
+def _earth_numbers(con: Console) -> None:
+    solar = ps.Earth.solar_day(radius=6.4e6, g=9.81)
+    sidereal = ps.Earth(radius=6.4e6)
+    table = Table(title="r = 6.4e6 m as in the unit")
+    table.add_column("quantity")
+    table.add_column("the unit", justify="right")
+    table.add_column("poinsot, solar day", justify="right")
+    table.add_column("poinsot, sidereal (default)", justify="right")
+    table.add_row("ω (rad/s)", "7.25e-5 (misprint: 7.27e-5)", f"{solar.rotation_rate:.4e}", f"{sidereal.rotation_rate:.5e}")
+    table.add_row("ω² r at the equator (m/s²)", "3.4e-2",
+                  f"{np.linalg.norm(solar.centrifugal_acceleration(0.0)):.4e}",
+                  f"{np.linalg.norm(sidereal.centrifugal_acceleration(0.0)):.4e}")
+    table.add_row("2ω, horizontal Coriolis at the pole (1/s)", "1.5e-4",
+                  f"{solar.coriolis_parameter(np.pi / 2):.4e}", f"{sidereal.coriolis_parameter(np.pi / 2):.4e}")
+    e = ps.Earth()
+    table.add_row("|g_e| at the equator / pole (m/s², g = 9.80665)", "less at the equator",
+                  "", f"{e.effective_gravity_magnitude(0.0):.6g} / {e.effective_gravity_magnitude(np.pi / 2):.6g}")
+    table.add_row("plumb-line deviation at 45°", "—", "", f"{e.plumb_line_deviation(45, degrees=True):.4f}°")
+    con.print(table)
+
+
+@section("The falling body: deflected east (eqs. 2.32–2.42)")
+def _falling_body(con: Console) -> None:
+    table = Table(title="a body dropped from rest from 100 m at latitude 45°")
+    table.add_column("model")
+    table.add_column("east (m)", justify="right")
+    table.add_column("south (m)", justify="right")
+    table.add_column("time (s)", justify="right")
+    solar = ps.Earth.solar_day(g=9.81)
+    table.add_row("the unit (2.42)", "1.55e-2", "—", "√(2h/g)")
+    table.add_row("2.42, solar day, g = 9.81", f"{solar.eastward_deflection(100, 45, degrees=True):.4e}", "", "")
+    e = ps.Earth()
+    fall = e.drop(100, 45, degrees=True)
+    table.add_row("2.42, sidereal, g = 9.80665", f"{fall.first_order_east:.4e}", f"{fall.second_order_south:.4e}", "")
+    table.add_row("exact in the rotating frame", f"{fall.east:.4e}", f"{-fall.north:.4e}", f"{fall.time:.6f}")
+    con.print(table)
+    s = e.drop(100, -45, degrees=True)
+    con.print(f"southern hemisphere (−45°): east {s.east:.4e} m, north {s.north:+.3e} m — east again, "
+              "and towards the equator")
+
+
+@section("Foucault's pendulum, inertial circles and cyclones (the unit's Figs. 2.5–2.7)")
+def _foucault_and_winds(con: Console) -> None:
+    e = ps.Earth()
+    run = e.foucault(48.85, degrees=True, duration=900.0, samples=2)
+    con.print(f"Paris (48.85° N), 67 m pendulum, 15 min simulated in the rotating frame: the swing plane "
+              f"turns at {run.precession_rate:.5e} rad/s ({run.sense} seen from above); "
+              f"−ω sin λ = {run.expected_rate:.5e} rad/s, one turn in {2 * np.pi / abs(run.expected_rate) / 3600:.1f} h")
+    for lat in (45.0, -45.0, 0.0):
+        osc = e.inertial_oscillation(lat, [10.0, 0.0], degrees=True)
+        low = e.flow_into_low(lat, degrees=True)
+        period = f"{osc.period / 3600:.2f} h" if np.isfinite(osc.period) else "none"
+        turns = f"turns {osc.sense}" if osc.sense != "none" else "goes straight on"
+        circ = f"circulates {low.sense}" if low.sense != "none" else "flows straight in"
+        con.print(f"  latitude {lat:+.0f}°: a parcel moving at 10 m/s {turns} "
+                  f"(inertial period π/(ω|sin λ|) = {period}); air flowing into a low {circ}")
+
+
 def run_tour(console: Console | None = None) -> None:
     """Print every section of the tour to ``console`` (a new rich Console by default)."""
     con = console or Console()

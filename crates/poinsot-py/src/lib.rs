@@ -6,7 +6,9 @@
 #![forbid(unsafe_code)]
 
 mod convert;
+mod earth;
 mod errors;
+mod frames;
 mod inertia;
 mod rotation;
 
@@ -19,5 +21,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     errors::register(m)?;
     rotation::register(m)?;
     inertia::register(m)?;
+    frames::register(m)?;
+    earth::register(m)?;
     Ok(())
 }

@@ -9,6 +9,9 @@
 //! |---|---|---|
 //! | [`rotation`] | SO(3), quaternions, Euler angles, Euler's theorem, Chasles' screw, Euler-angle kinematics | 2.98–2.99 |
 //! | [`inertia`] | inertia tensor, principal axes, standard solids, density and mesh integrals, L and T | 2.43–2.66 |
+//! | [`frames`] | moving frames: velocity and acceleration terms, fictitious forces, particles in time-dependent frames | 2.1–2.28 |
+//! | [`earth`] | the rotating Earth: effective gravity, Coriolis, falling bodies, projectiles, Foucault, winds | 2.29–2.42 |
+//! | [`integrate`] | ODE integrators that know no physics: adaptive DOP853 with dense output and events, RK4 | — |
 //!
 //! Conventions (see `CONVENTIONS.md` at the repository root): SI units, radians, right-handed
 //! frames, active rotations, scalar-first quaternions `[w, x, y, z]`, products of inertia
@@ -16,8 +19,11 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod earth;
 pub mod error;
+pub mod frames;
 pub mod inertia;
+pub mod integrate;
 pub mod rotation;
 
 pub use error::{Error, ErrorKind, Result};

@@ -1,0 +1,318 @@
+//! Bindings of `poinsot::earth` (conversion and error mapping only). Every function takes
+//! the Earth as (rotation_rate, radius, g) and checks it in the core.
+use numpy::{PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
+use poinsot::earth::{fit_precession_rate, Earth, FallModel, Gravity};
+use poinsot::Vec3;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use crate::errors::{invalid, IntoPy};
+use crate::frames::{array_in, even_times, options, rows_in, rows_out, solution_dict, vec_in};
+
+fn earth(rotation_rate: f64, radius: f64, g: f64) -> PyResult<Earth> {
+    Earth::new(rotation_rate, radius, g).py()
+}
+
+fn gravity(name: &str) -> PyResult<Gravity> {
+    match name {
+        "uniform" => Ok(Gravity::Uniform),
+        "inverse-square" => Ok(Gravity::InverseSquare),
+        _ => Err(invalid("gravity", format!("must be 'uniform' or 'inverse-square', got {name:?}"))),
+    }
+}
+
+/// A per-latitude scalar quantity over an array of latitudes.
+fn per_latitude<'py>(py: Python<'py>, latitude: &PyReadonlyArray1<'py, f64>, f: impl Fn(f64) -> poinsot::Result<f64>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    let out: Vec<f64> = vec_in(latitude).into_iter().map(f).collect::<poinsot::Result<_>>().py()?;
+    Ok(PyArray1::from_vec(py, out))
+}
+
+/// ω in ENU components, (N, 3), at (N,) latitudes (rad).
+#[pyfunction]
+fn earth_omega_enu<'py>(py: Python<'py>, rotation_rate: f64, radius: f64, g: f64, latitude: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let e = earth(rotation_rate, radius, g)?;
+    let rows: Vec<[f64; 3]> = vec_in(&latitude).into_iter().map(|l| e.omega_enu(l).map(|w| [w.x, w.y, w.z])).collect::<poinsot::Result<_>>().py()?;
+    Ok(rows_out(py, &rows))
+}
+
+/// (vector (N, 3), magnitude (N,), deviation (N,), centrifugal (N, 3)) at (N,) latitudes.
+#[pyfunction]
+#[allow(clippy::type_complexity)]
+fn earth_effective_gravity<'py>(
+    py: Python<'py>,
+    rotation_rate: f64,
+    radius: f64,
+    g: f64,
+    latitude: PyReadonlyArray1<'py, f64>,
+) -> PyResult<(Bound<'py, PyArray2<f64>>, Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>, Bound<'py, PyArray2<f64>>)> {
+    let e = earth(rotation_rate, radius, g)?;
+    let (mut vecs, mut mags, mut devs, mut cents) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    for l in vec_in(&latitude) {
+        let eg = e.effective_gravity(l).py()?;
+        let c = e.centrifugal_acceleration(l).py()?;
+        vecs.push([eg.vector.x, eg.vector.y, eg.vector.z]);
+        mags.push(eg.magnitude);
+        devs.push(eg.deviation);
+        cents.push([c.x, c.y, c.z]);
+    }
+    Ok((rows_out(py, &vecs), PyArray1::from_vec(py, mags), PyArray1::from_vec(py, devs), rows_out(py, &cents)))
+}
+
+/// −2 ω × v (N, 3) for (N,) latitudes and (N, 3) ENU velocities.
+#[pyfunction]
+fn earth_coriolis_acceleration<'py>(
+    py: Python<'py>,
+    rotation_rate: f64,
+    radius: f64,
+    g: f64,
+    latitude: PyReadonlyArray1<'py, f64>,
+    velocity: PyReadonlyArray2<'py, f64>,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let e = earth(rotation_rate, radius, g)?;
+    let lats = vec_in(&latitude);
+    let vels = rows_in::<3>("velocity_enu", &velocity)?;
+    if lats.len() != vels.len() {
+        return Err(invalid("velocity_enu", "must have one row per latitude"));
+    }
+    let mut rows = Vec::with_capacity(lats.len());
+    for (l, v) in lats.iter().zip(&vels) {
+        let a = e.coriolis_acceleration(*l, &Vec3::new(v[0], v[1], v[2])).map_err(|mut err| {
+            if err.argument == "velocity" {
+                err.argument = "velocity_enu".into();
+            }
+            err
+        });
+        let a = a.py()?;
+        rows.push([a.x, a.y, a.z]);
+    }
+    Ok(rows_out(py, &rows))
+}
+
+/// A scalar per latitude: "coriolis_parameter", "foucault_rate" or "inertial_period".
+#[pyfunction]
+fn earth_latitude_scalar<'py>(py: Python<'py>, rotation_rate: f64, radius: f64, g: f64, quantity: &str, latitude: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    let e = earth(rotation_rate, radius, g)?;
+    match quantity {
+        "coriolis_parameter" => per_latitude(py, &latitude, |l| e.coriolis_parameter(l)),
+        "foucault_rate" => per_latitude(py, &latitude, |l| e.foucault_rate(l)),
+        "inertial_period" => per_latitude(py, &latitude, |l| e.inertial_period(l)),
+        _ => Err(invalid("quantity", format!("unknown quantity {quantity:?}"))),
+    }
+}
+
+/// First-order east (2.42) or second-order south deflection (m) for (N,) heights and latitudes.
+#[pyfunction]
+fn earth_deflection<'py>(
+    py: Python<'py>,
+    rotation_rate: f64,
+    radius: f64,
+    g: f64,
+    direction: &str,
+    height: PyReadonlyArray1<'py, f64>,
+    latitude: PyReadonlyArray1<'py, f64>,
+) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    let e = earth(rotation_rate, radius, g)?;
+    let (hs, ls) = (vec_in(&height), vec_in(&latitude));
+    if hs.len() != ls.len() {
+        return Err(invalid("height", "must have one value per latitude"));
+    }
+    let out: Vec<f64> = hs
+        .iter()
+        .zip(&ls)
+        .map(|(&h, &l)| match direction {
+            "east" => e.eastward_deflection(h, l),
+            _ => e.southward_deflection(h, l),
+        })
+        .collect::<poinsot::Result<_>>()
+        .py()?;
+    Ok(PyArray1::from_vec(py, out))
+}
+
+fn model(gravity_name: &str, rotation: bool, centrifugal: bool, rtol: f64, atol: f64, max_steps: usize) -> PyResult<FallModel> {
+    Ok(FallModel { gravity: gravity(gravity_name)?, rotation, centrifugal, options: options(rtol, atol, max_steps, true) })
+}
+
+/// The exact drop: {"time", "east", "north", "t", "states", ...}.
+#[pyfunction]
+#[pyo3(signature = (rotation_rate, radius, g, height, latitude, gravity, rotation, centrifugal, rtol, atol, max_steps, samples))]
+#[allow(clippy::too_many_arguments)]
+fn earth_drop<'py>(
+    py: Python<'py>,
+    rotation_rate: f64,
+    radius: f64,
+    g: f64,
+    height: f64,
+    latitude: f64,
+    gravity: &str,
+    rotation: bool,
+    centrifugal: bool,
+    rtol: f64,
+    atol: f64,
+    max_steps: usize,
+    samples: usize,
+) -> PyResult<Bound<'py, PyDict>> {
+    let e = earth(rotation_rate, radius, g)?;
+    let m = model(gravity, rotation, centrifugal, rtol, atol, max_steps)?;
+    let fall = py.detach(|| e.drop(height, latitude, &m)).py()?;
+    let d = solution_dict(py, &fall.solution, &even_times(0.0, fall.time, samples))?;
+    d.set_item("time", fall.time)?;
+    d.set_item("east", fall.east)?;
+    d.set_item("north", fall.north)?;
+    Ok(d)
+}
+
+/// A projectile's flight: {"time", "east", "north", "range", "downrange", "drift", "t", "states", ...}.
+#[pyfunction]
+#[pyo3(signature = (rotation_rate, radius, g, speed, elevation, azimuth, latitude, height, gravity, rotation, centrifugal, rtol, atol, max_steps, samples))]
+#[allow(clippy::too_many_arguments)]
+fn earth_projectile<'py>(
+    py: Python<'py>,
+    rotation_rate: f64,
+    radius: f64,
+    g: f64,
+    speed: f64,
+    elevation: f64,
+    azimuth: f64,
+    latitude: f64,
+    height: f64,
+    gravity: &str,
+    rotation: bool,
+    centrifugal: bool,
+    rtol: f64,
+    atol: f64,
+    max_steps: usize,
+    samples: usize,
+) -> PyResult<Bound<'py, PyDict>> {
+    let e = earth(rotation_rate, radius, g)?;
+    let m = model(gravity, rotation, centrifugal, rtol, atol, max_steps)?;
+    let fl = py.detach(|| e.projectile(speed, elevation, azimuth, latitude, height, &m)).py()?;
+    let d = solution_dict(py, &fl.solution, &even_times(0.0, fl.time, samples))?;
+    for (k, v) in [("time", fl.time), ("east", fl.east), ("north", fl.north), ("range", fl.range), ("downrange", fl.downrange), ("drift", fl.drift)] {
+        d.set_item(k, v)?;
+    }
+    Ok(d)
+}
+
+/// The released state (6,) of a Foucault pendulum.
+#[pyfunction]
+fn earth_foucault_release<'py>(py: Python<'py>, length: f64, amplitude: f64, azimuth: f64) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    Ok(PyArray1::from_vec(py, Earth::foucault_release(length, amplitude, azimuth).py()?.to_vec()))
+}
+
+/// One stretch of a Foucault run: {"t", "states", "turn_times", "turn_angles", "final_state", ...}.
+#[pyfunction]
+#[pyo3(signature = (rotation_rate, radius, g, latitude, length, state0, t0, t_end, times, rtol, atol, max_steps))]
+#[allow(clippy::too_many_arguments)]
+fn earth_foucault<'py>(
+    py: Python<'py>,
+    rotation_rate: f64,
+    radius: f64,
+    g: f64,
+    latitude: f64,
+    length: f64,
+    state0: PyReadonlyArray1<'py, f64>,
+    t0: f64,
+    t_end: f64,
+    times: PyReadonlyArray1<'py, f64>,
+    rtol: f64,
+    atol: f64,
+    max_steps: usize,
+) -> PyResult<Bound<'py, PyDict>> {
+    let e = earth(rotation_rate, radius, g)?;
+    let s0 = array_in::<6>("state0", &state0)?;
+    let times = vec_in(&times);
+    let opts = options(rtol, atol, max_steps, false);
+    let run = py.detach(|| e.foucault(latitude, length, s0, t0, t_end, &times, &opts)).py()?;
+    let d = PyDict::new(py);
+    d.set_item("t", PyArray1::from_vec(py, run.t))?;
+    d.set_item("states", rows_out(py, &run.states))?;
+    d.set_item("turn_times", PyArray1::from_vec(py, run.turn_times))?;
+    d.set_item("turn_angles", PyArray1::from_vec(py, run.turn_angles))?;
+    d.set_item("final_state", PyArray1::from_vec(py, run.final_state.to_vec()))?;
+    d.set_item("evaluations", run.stats.evaluations)?;
+    Ok(d)
+}
+
+/// Least-squares rate (rad/s) of the swing-plane angle through the turning points.
+#[pyfunction]
+fn earth_fit_precession_rate(turn_times: PyReadonlyArray1<'_, f64>, turn_angles: PyReadonlyArray1<'_, f64>) -> PyResult<f64> {
+    fit_precession_rate(&vec_in(&turn_times), &vec_in(&turn_angles)).py()
+}
+
+/// An inertial oscillation: {"t", "states" (N, 4), "turning_rate"}.
+#[pyfunction]
+#[pyo3(signature = (rotation_rate, radius, g, latitude, velocity, t_end, times, rtol, atol, max_steps))]
+#[allow(clippy::too_many_arguments)]
+fn earth_inertial_oscillation<'py>(
+    py: Python<'py>,
+    rotation_rate: f64,
+    radius: f64,
+    g: f64,
+    latitude: f64,
+    velocity: PyReadonlyArray1<'py, f64>,
+    t_end: f64,
+    times: PyReadonlyArray1<'py, f64>,
+    rtol: f64,
+    atol: f64,
+    max_steps: usize,
+) -> PyResult<Bound<'py, PyDict>> {
+    let e = earth(rotation_rate, radius, g)?;
+    let v = array_in::<2>("velocity", &velocity)?;
+    let times = vec_in(&times);
+    let opts = options(rtol, atol, max_steps, false);
+    let run = py.detach(|| e.inertial_oscillation(latitude, v, t_end, &times, &opts)).py()?;
+    let d = PyDict::new(py);
+    d.set_item("t", PyArray1::from_vec(py, run.t))?;
+    d.set_item("states", rows_out(py, &run.states))?;
+    d.set_item("turning_rate", run.turning_rate)?;
+    Ok(d)
+}
+
+/// Parcels flowing into a low: {"t", "parcels" (P, N, 4), "circulation"}.
+#[pyfunction]
+#[pyo3(signature = (rotation_rate, radius, g, latitude, starts, strength, friction, t_end, times, rtol, atol, max_steps))]
+#[allow(clippy::too_many_arguments)]
+fn earth_flow_into_low<'py>(
+    py: Python<'py>,
+    rotation_rate: f64,
+    radius: f64,
+    g: f64,
+    latitude: f64,
+    starts: PyReadonlyArray2<'py, f64>,
+    strength: f64,
+    friction: f64,
+    t_end: f64,
+    times: PyReadonlyArray1<'py, f64>,
+    rtol: f64,
+    atol: f64,
+    max_steps: usize,
+) -> PyResult<Bound<'py, PyDict>> {
+    let e = earth(rotation_rate, radius, g)?;
+    let starts = rows_in::<2>("starts", &starts)?;
+    let times = vec_in(&times);
+    let opts = options(rtol, atol, max_steps, false);
+    let run = py.detach(|| e.flow_into_low(latitude, &starts, strength, friction, t_end, &times, &opts)).py()?;
+    let d = PyDict::new(py);
+    d.set_item("t", PyArray1::from_vec(py, run.t))?;
+    let parcels: Vec<Bound<'py, PyArray2<f64>>> = run.parcels.iter().map(|p| rows_out(py, p)).collect();
+    d.set_item("parcels", parcels)?;
+    d.set_item("circulation", run.circulation)?;
+    Ok(d)
+}
+
+/// Registers this file's functions on the module.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(earth_omega_enu, m)?)?;
+    m.add_function(wrap_pyfunction!(earth_effective_gravity, m)?)?;
+    m.add_function(wrap_pyfunction!(earth_coriolis_acceleration, m)?)?;
+    m.add_function(wrap_pyfunction!(earth_latitude_scalar, m)?)?;
+    m.add_function(wrap_pyfunction!(earth_deflection, m)?)?;
+    m.add_function(wrap_pyfunction!(earth_drop, m)?)?;
+    m.add_function(wrap_pyfunction!(earth_projectile, m)?)?;
+    m.add_function(wrap_pyfunction!(earth_foucault_release, m)?)?;
+    m.add_function(wrap_pyfunction!(earth_foucault, m)?)?;
+    m.add_function(wrap_pyfunction!(earth_fit_precession_rate, m)?)?;
+    m.add_function(wrap_pyfunction!(earth_inertial_oscillation, m)?)?;
+    m.add_function(wrap_pyfunction!(earth_flow_into_low, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,17 @@
+//! The rotating Earth seen from a local frame on its surface (the unit's eqs. 2.29–2.42):
+//! effective gravity, the Coriolis force, the falling body, projectiles, the Foucault
+//! pendulum, inertial oscillations and the flow into a low.
+//!
+//! The local frame is ENU: x east, y north, z up; latitude λ is north-positive and the
+//! Earth's angular velocity there is ω = ω (0, cos λ, sin λ) (eq. 2.33). The default rate
+//! is sidereal, 7.2921150e-5 rad/s; [`Earth::solar_day`] uses the unit's 2π/86400.
+
+mod fall;
+mod pendulum;
+mod planet;
+mod winds;
+
+pub use fall::{Fall, FallModel, Flight, Gravity};
+pub use pendulum::{fit_precession_rate, FoucaultRun};
+pub use planet::{check_latitude, EffectiveGravity, Earth, MEAN_RADIUS, SIDEREAL_RATE, SOLAR_DAY_RATE, STANDARD_GRAVITY};
+pub use winds::{InertialRun, LowRun};

@@ -1,0 +1,96 @@
+//! Horizontal motion under the Coriolis force: inertial oscillations and the flow into a
+//! low-pressure centre (the unit's Fig. 2.7).
+
+use super::planet::Earth;
+use crate::error::{check_finite, check_non_negative, Error, Result};
+use crate::integrate::{dop853_scan, Crossing, Options};
+
+/// An inertial oscillation: a parcel moving horizontally with no force but the Coriolis force.
+#[derive(Debug, Clone)]
+pub struct InertialRun {
+    /// Sample times (s).
+    pub t: Vec<f64>,
+    /// `[east, north, v_east, v_north]` (m, m/s) at `t`.
+    pub states: Vec<[f64; 4]>,
+    /// The rate at which the velocity turns (rad/s, counterclockwise seen from above
+    /// positive), measured as the integrated turning angle divided by the duration; the
+    /// theory says −f = −2 ω sin λ.
+    pub turning_rate: f64,
+}
+
+/// Parcels flowing into a low-pressure centre.
+#[derive(Debug, Clone)]
+pub struct LowRun {
+    /// Sample times (s).
+    pub t: Vec<f64>,
+    /// For each parcel, `[east, north, v_east, v_north]` at `t` (centre of the low at 0).
+    pub parcels: Vec<Vec<[f64; 4]>>,
+    /// The specific angular momentum about the centre, x v_y − y v_x (m²/s), averaged over
+    /// the parcels and the run: positive means counterclockwise circulation seen from above.
+    pub circulation: f64,
+}
+
+impl Earth {
+    /// Horizontal motion on a frictionless level surface at `latitude`: only the horizontal
+    /// part of the Coriolis force acts (eq. 2.30; the vertical part is held by the ground),
+    /// ẍ = f ẏ, ÿ = −f ẋ with f = 2 ω sin λ. Starting at the origin with horizontal
+    /// `velocity` `[v_east, v_north]`, integrated to `t_end` and sampled at `times`.
+    /// The parcel turns clockwise (right) in the north, counterclockwise in the south, not at
+    /// all at the equator; it circles in the inertial period π/(ω |sin λ|).
+    pub fn inertial_oscillation(&self, latitude: f64, velocity: [f64; 2], t_end: f64, times: &[f64], options: &Options) -> Result<InertialRun> {
+        let f = self.coriolis_parameter(latitude)?;
+        check_finite("velocity", &velocity)?;
+        if velocity[0] == 0.0 && velocity[1] == 0.0 {
+            return Err(Error::invalid("velocity", "must be non-zero (a parcel at rest stays at rest)"));
+        }
+        check_non_negative("t_end", t_end)?;
+        // State: x, y, vx, vy and the turning angle of the velocity θ, θ̇ = (vx ay − vy ax)/|v|².
+        let rhs = |_t: f64, y: &[f64; 5], dy: &mut [f64; 5]| {
+            let (vx, vy) = (y[2], y[3]);
+            let (ax, ay) = (f * vy, -f * vx);
+            *dy = [vx, vy, ax, ay, (vx * ay - vy * ax) / (vx * vx + vy * vy)];
+        };
+        let y0 = [0.0, 0.0, velocity[0], velocity[1], 0.0];
+        let scan = dop853_scan(rhs, 0.0, y0, t_end, times, options, |_t, _y: &[f64; 5]| 1.0, Crossing::Any)?;
+        let turning_rate = if t_end > 0.0 { scan.y_final[4] / t_end } else { 0.0 };
+        let states = scan.y.iter().map(|s| [s[0], s[1], s[2], s[3]]).collect();
+        Ok(InertialRun { t: scan.t, states, turning_rate })
+    }
+
+    /// Parcels starting at rest at `starts` (`[east, north]`, m) around a low-pressure centre
+    /// at the origin, pulled in by the pressure gradient −k r (`strength` k in 1/s², a
+    /// paraboloidal low), slowed by friction −γ v (`friction` γ in 1/s) and turned by the
+    /// horizontal Coriolis force −f ẑ × v, integrated to `t_end` and sampled at `times`.
+    /// The sense of the circulation is measured from the run ([`LowRun::circulation`]):
+    /// counterclockwise in the north, clockwise in the south (Fig. 2.7).
+    #[allow(clippy::too_many_arguments)]
+    pub fn flow_into_low(&self, latitude: f64, starts: &[[f64; 2]], strength: f64, friction: f64, t_end: f64, times: &[f64], options: &Options) -> Result<LowRun> {
+        let f = self.coriolis_parameter(latitude)?;
+        crate::error::check_positive("strength", strength)?;
+        check_non_negative("friction", friction)?;
+        check_non_negative("t_end", t_end)?;
+        if starts.is_empty() {
+            return Err(Error::invalid("starts", "must hold at least one parcel"));
+        }
+        for s in starts {
+            check_finite("starts", s)?;
+        }
+        let (k, gamma) = (strength, friction);
+        let mut parcels = Vec::with_capacity(starts.len());
+        let mut circulation = 0.0;
+        for s in starts {
+            // State: x, y, vx, vy and ∫ (x vy − y vx) dt.
+            let rhs = |_t: f64, y: &[f64; 5], dy: &mut [f64; 5]| {
+                let (x, yy, vx, vy) = (y[0], y[1], y[2], y[3]);
+                *dy = [vx, vy, -k * x - gamma * vx + f * vy, -k * yy - gamma * vy - f * vx, x * vy - yy * vx];
+            };
+            let scan = dop853_scan(rhs, 0.0, [s[0], s[1], 0.0, 0.0, 0.0], t_end, times, options, |_t, _y: &[f64; 5]| 1.0, Crossing::Any)?;
+            if t_end > 0.0 {
+                circulation += scan.y_final[4] / t_end;
+            }
+            parcels.push(scan.y.iter().map(|y| [y[0], y[1], y[2], y[3]]).collect());
+        }
+        circulation /= starts.len() as f64;
+        Ok(LowRun { t: times.to_vec(), parcels, circulation })
+    }
+}

@@ -1,0 +1,535 @@
+"""The rotating Earth seen from a local frame on its surface (the unit's eqs. 2.29–2.42).
+
+Conventions: local ENU frame (x east, y north, z up along the plumb line), latitude λ
+north-positive, ω = ω (0, cos λ, sin λ) (eq. 2.33); the sidereal rate 7.2921150e-5 rad/s by
+default, the unit's solar-day rate 2π/86400 with :meth:`Earth.solar_day` or
+``rotation_rate="solar"``. Angles in radians unless ``degrees=True``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from . import _core
+from ._validate import FloatArray, as_float_array, as_scalar
+from .errors import PoinsotError
+
+__all__ = ["Earth", "Fall", "Flight", "FoucaultRun", "InertialOscillation", "LowFlow",
+           "SIDEREAL_RATE", "SOLAR_DAY_RATE"]
+
+SIDEREAL_RATE = 7.2921150e-5
+"""The Earth's sidereal rotation rate (rad/s), 2π / 86164.0905 s: the default."""
+SOLAR_DAY_RATE = 2.0 * np.pi / 86400.0
+"""The unit's rate (rad/s), one turn per solar day 2π / (24·3600) s (see the errata)."""
+
+_DEFAULT_TOL = 1e-12
+
+
+def _angles(value: Any, name: str, degrees: bool) -> tuple[FloatArray, tuple[int, ...]]:
+    arr = as_float_array(value, name)
+    if degrees:
+        arr = np.radians(arr)
+    return np.ascontiguousarray(arr.reshape(-1)), arr.shape
+
+
+def _angle(value: Any, name: str, degrees: bool) -> float:
+    x = as_scalar(value, name)
+    return float(np.radians(x)) if degrees else x
+
+
+def _shape_out(arr: FloatArray, shape: tuple[int, ...]) -> Any:
+    out = arr.reshape(shape)
+    return float(out) if out.ndim == 0 else out
+
+
+@dataclass(frozen=True)
+class Fall:
+    """A body dropped from rest, integrated in the rotating frame until it lands.
+
+    Attributes
+    ----------
+    time:
+        Time of fall (s).
+    east, north:
+        Landing point relative to the foot of the plumb line through the release point (m);
+        ``north`` < 0 is south.
+    t:
+        Sample times (s), shape (N,), from release to landing.
+    position, velocity:
+        ENU position (m) and velocity (m/s) at ``t``, shape (N, 3).
+    first_order_east:
+        The unit's eq. 2.42, ⅓ ω cos λ √(8h³/g) (m).
+    second_order_south:
+        The second-order equatorward deflection ¾ ω² sin 2λ h²/g (m; uniform gravity).
+    """
+
+    time: float
+    east: float
+    north: float
+    t: FloatArray = field(repr=False)
+    position: FloatArray = field(repr=False)
+    velocity: FloatArray = field(repr=False)
+    first_order_east: float = 0.0
+    second_order_south: float = 0.0
+
+
+@dataclass(frozen=True)
+class Flight:
+    """A projectile's flight until it lands.
+
+    Attributes
+    ----------
+    time:
+        Time of flight (s).
+    east, north:
+        Landing point (m, ENU).
+    range:
+        Horizontal distance from launch to landing (m).
+    downrange:
+        Landing displacement along the launch azimuth (m).
+    drift:
+        Landing displacement across the launch azimuth, positive to the right (m).
+    t, position, velocity:
+        Samples of the flight: (N,), (N, 3), (N, 3).
+    """
+
+    time: float
+    east: float
+    north: float
+    range: float
+    downrange: float
+    drift: float
+    t: FloatArray = field(repr=False)
+    position: FloatArray = field(repr=False)
+    velocity: FloatArray = field(repr=False)
+
+
+@dataclass(frozen=True)
+class FoucaultRun:
+    """A Foucault pendulum integrated in the rotating frame.
+
+    Attributes
+    ----------
+    t, position, velocity:
+        Samples (N,), (N, 3), (N, 3): the bob in ENU, origin at the point of suspension.
+    turn_times, turn_angles:
+        The turning points of the swing and the bob's direction there, counterclockwise from
+        east seen from above (rad).
+    precession_rate:
+        The swing plane's rate of turn fitted through the turning points (rad/s,
+        counterclockwise seen from above positive).
+    expected_rate:
+        −ω sin λ, the theory (rad/s).
+    sense:
+        ``"clockwise"``, ``"counterclockwise"`` (seen from above) or ``"none"`` (|rate| below
+        1e-3 ω), from the fitted rate.
+    """
+
+    t: FloatArray = field(repr=False)
+    position: FloatArray = field(repr=False)
+    velocity: FloatArray = field(repr=False)
+    turn_times: FloatArray = field(repr=False)
+    turn_angles: FloatArray = field(repr=False)
+    precession_rate: float = 0.0
+    expected_rate: float = 0.0
+    sense: str = "none"
+
+
+@dataclass(frozen=True)
+class InertialOscillation:
+    """A parcel moving horizontally under the Coriolis force alone.
+
+    Attributes
+    ----------
+    t:
+        Sample times (s), (N,).
+    position, velocity:
+        ``[east, north]`` (m) and ``[v_east, v_north]`` (m/s), (N, 2).
+    turning_rate:
+        Rate at which the velocity turns, measured from the run (rad/s, counterclockwise
+        positive); the theory says −2ω sin λ.
+    period:
+        The inertial period π/(ω |sin λ|) (s; inf at the equator).
+    sense:
+        ``"clockwise"`` (deflected to the right: the north), ``"counterclockwise"`` (the
+        south) or ``"none"`` (the equator), from the measured rate.
+    """
+
+    t: FloatArray = field(repr=False)
+    position: FloatArray = field(repr=False)
+    velocity: FloatArray = field(repr=False)
+    turning_rate: float = 0.0
+    period: float = float("inf")
+    sense: str = "none"
+
+
+@dataclass(frozen=True)
+class LowFlow:
+    """Parcels drawn into a low-pressure centre at the origin.
+
+    Attributes
+    ----------
+    t:
+        Sample times (s), (N,).
+    position, velocity:
+        (P, N, 2) arrays for P parcels (m, m/s; ``[east, north]``).
+    circulation:
+        Mean specific angular momentum about the centre (m²/s): > 0 counterclockwise.
+    sense:
+        ``"counterclockwise"`` (the north: cyclones), ``"clockwise"`` (the south) or
+        ``"none"`` (below round-off), from the simulated circulation.
+    """
+
+    t: FloatArray = field(repr=False)
+    position: FloatArray = field(repr=False)
+    velocity: FloatArray = field(repr=False)
+    circulation: float = 0.0
+    sense: str = "none"
+
+
+def _sense(rate: float, scale: float) -> str:
+    if abs(rate) <= 1e-9 * scale:
+        return "none"
+    return "counterclockwise" if rate > 0 else "clockwise"
+
+
+class Earth:
+    """The rotating Earth: a sphere of ``radius`` turning at ``rotation_rate`` with gravity ``g``.
+
+    Parameters
+    ----------
+    rotation_rate:
+        ω (rad/s, ≥ 0), or ``"sidereal"`` (7.2921150e-5, the default) or ``"solar"``
+        (2π/86400, the unit's value).
+    radius:
+        R (m, > 0); default the mean radius 6.371e6.
+    g:
+        Gravity at the surface (m/s², > 0); default 9.80665. As in the unit it is the
+        attraction in :meth:`effective_gravity` (eq. 2.31) and the local plumb-line gravity of
+        the near-surface motions (eqs. 2.32–2.42).
+
+    Examples
+    --------
+    >>> import poinsot as ps
+    >>> round(ps.Earth().eastward_deflection(100, 45, degrees=True), 5)   # eq. 2.42
+    0.01552
+    """
+
+    __slots__ = ("_rate", "_radius", "_g")
+
+    def __init__(self, rotation_rate: Any = SIDEREAL_RATE, radius: float = 6.371e6,
+                 g: float = 9.80665) -> None:
+        if isinstance(rotation_rate, str):
+            names = {"sidereal": SIDEREAL_RATE, "solar": SOLAR_DAY_RATE}
+            if rotation_rate not in names:
+                raise PoinsotError(f"rotation_rate: must be a number, 'sidereal' or 'solar', got {rotation_rate!r}")
+            rotation_rate = names[rotation_rate]
+        self._rate = as_scalar(rotation_rate, "rotation_rate")
+        self._radius = as_scalar(radius, "radius")
+        self._g = as_scalar(g, "g")
+        _core.earth_omega_enu(self._rate, self._radius, self._g, np.zeros(1))  # checks the three
+
+    @classmethod
+    def solar_day(cls, radius: float = 6.371e6, g: float = 9.80665) -> Earth:
+        """The unit's Earth, turning once per solar day: ω = 2π/86400 = 7.2722e-5 rad/s."""
+        return cls(SOLAR_DAY_RATE, radius, g)
+
+    @property
+    def rotation_rate(self) -> float:
+        """ω (rad/s)."""
+        return self._rate
+
+    @property
+    def radius(self) -> float:
+        """R (m)."""
+        return self._radius
+
+    @property
+    def g(self) -> float:
+        """g (m/s²)."""
+        return self._g
+
+    def __repr__(self) -> str:
+        return f"Earth(rotation_rate={self._rate!r}, radius={self._radius!r}, g={self._g!r})"
+
+    @property
+    def _p(self) -> tuple[float, float, float]:
+        return self._rate, self._radius, self._g
+
+    # -- local quantities -----------------------------------------------------------------
+    def omega_enu(self, latitude: Any, degrees: bool = False) -> FloatArray:
+        """ω in ENU components, ω (0, cos λ, sin λ) (eq. 2.33), shape ``latitude.shape + (3,)``."""
+        lat, shape = _angles(latitude, "latitude", degrees)
+        return _core.earth_omega_enu(*self._p, lat).reshape(shape + (3,))
+
+    def effective_gravity(self, latitude: Any, degrees: bool = False) -> FloatArray:
+        """The effective gravity g_e = g − ω × (ω × r) at the surface (eq. 2.31) as an ENU
+        vector (m/s²), shape ``latitude.shape + (3,)``; g = −g ẑ (radial), r = R ẑ. See also
+        :meth:`effective_gravity_magnitude` and :meth:`plumb_line_deviation`."""
+        lat, shape = _angles(latitude, "latitude", degrees)
+        return _core.earth_effective_gravity(*self._p, lat)[0].reshape(shape + (3,))
+
+    def effective_gravity_magnitude(self, latitude: Any, degrees: bool = False) -> Any:
+        """|g_e| (m/s²): g − ω²R at the equator, g at the poles."""
+        lat, shape = _angles(latitude, "latitude", degrees)
+        return _shape_out(_core.earth_effective_gravity(*self._p, lat)[1], shape)
+
+    def plumb_line_deviation(self, latitude: Any, degrees: bool = False) -> Any:
+        """Angle between the plumb line (along g_e) and the radial direction (rad, or degrees
+        with ``degrees=True``), positive when it leans south (north of the equator): the plumb
+        line leans towards the equator, by at most about 0.1° near 45°."""
+        lat, shape = _angles(latitude, "latitude", degrees)
+        dev = _core.earth_effective_gravity(*self._p, lat)[2]
+        return _shape_out(np.degrees(dev) if degrees else dev, shape)
+
+    def centrifugal_acceleration(self, latitude: Any, degrees: bool = False) -> FloatArray:
+        """−ω × (ω × r) at the surface (m/s², ENU), of magnitude ω²R cos λ (ω²R at the
+        equator: the unit's 3.4e-2 m/s²)."""
+        lat, shape = _angles(latitude, "latitude", degrees)
+        return _core.earth_effective_gravity(*self._p, lat)[3].reshape(shape + (3,))
+
+    def coriolis_acceleration(self, latitude: Any, velocity_enu: Any, degrees: bool = False) -> FloatArray:
+        """The Coriolis acceleration −2 ω × v (m/s², ENU) of a particle moving with
+        ``velocity_enu`` (m/s, ENU, ``(..., 3)``) at ``latitude`` (broadcast together) (eq. 2.30).
+        To the right of horizontal motion in the north, to the left in the south."""
+        lat = as_float_array(latitude, "latitude")
+        vel = as_float_array(velocity_enu, "velocity_enu")
+        if vel.ndim == 0 or vel.shape[-1] != 3:
+            raise PoinsotError(f"velocity_enu: must have shape (..., 3), got {vel.shape}")
+        try:
+            lead = np.broadcast_shapes(lat.shape, vel.shape[:-1])
+        except ValueError:
+            raise PoinsotError(f"velocity_enu: shape {vel.shape} does not broadcast with latitude {lat.shape}") from None
+        lat = np.broadcast_to(np.radians(lat) if degrees else lat, lead).reshape(-1)
+        vel = np.broadcast_to(vel, lead + (3,)).reshape(-1, 3)
+        out = _core.earth_coriolis_acceleration(*self._p, np.ascontiguousarray(lat), np.ascontiguousarray(vel))
+        return out.reshape(lead + (3,))
+
+    def coriolis_parameter(self, latitude: Any, degrees: bool = False) -> Any:
+        """f = 2ω sin λ (1/s); at the poles the unit's 2ω = 1.458e-4 s⁻¹ (sidereal)."""
+        lat, shape = _angles(latitude, "latitude", degrees)
+        return _shape_out(_core.earth_latitude_scalar(*self._p, "coriolis_parameter", lat), shape)
+
+    def foucault_rate(self, latitude: Any, degrees: bool = False) -> Any:
+        """The Foucault pendulum's precession rate −ω sin λ (rad/s, counterclockwise seen from
+        above positive: clockwise in the north)."""
+        lat, shape = _angles(latitude, "latitude", degrees)
+        return _shape_out(_core.earth_latitude_scalar(*self._p, "foucault_rate", lat), shape)
+
+    def inertial_period(self, latitude: Any, degrees: bool = False) -> Any:
+        """The period of inertial oscillations π/(ω |sin λ|) (s; inf at the equator)."""
+        lat, shape = _angles(latitude, "latitude", degrees)
+        return _shape_out(_core.earth_latitude_scalar(*self._p, "inertial_period", lat), shape)
+
+    def eastward_deflection(self, height: Any, latitude: Any, degrees: bool = False) -> Any:
+        """The unit's first-order eastward deflection (eq. 2.42) of a body dropped from rest
+        from ``height`` (m, ≥ 0): x = ⅓ ω cos λ √(8h³/g) (m). Broadcasts."""
+        return self._deflection("east", height, latitude, degrees)
+
+    def southward_deflection(self, height: Any, latitude: Any, degrees: bool = False) -> Any:
+        """The second-order equatorward deflection ¾ ω² sin 2λ h²/g (m, positive south) of a
+        body dropped from ``height`` in uniform gravity (⅓ from Coriolis, 5/12 from the
+        change of the centrifugal force with height). Broadcasts."""
+        return self._deflection("south", height, latitude, degrees)
+
+    def _deflection(self, direction: str, height: Any, latitude: Any, degrees: bool) -> Any:
+        h = as_float_array(height, "height")
+        lat = as_float_array(latitude, "latitude")
+        try:
+            shape = np.broadcast_shapes(h.shape, lat.shape)
+        except ValueError:
+            raise PoinsotError(f"height: shape {h.shape} does not broadcast with latitude {lat.shape}") from None
+        lat = np.radians(lat) if degrees else lat
+        hh = np.ascontiguousarray(np.broadcast_to(h, shape).reshape(-1))
+        ll = np.ascontiguousarray(np.broadcast_to(lat, shape).reshape(-1))
+        return _shape_out(_core.earth_deflection(*self._p, direction, hh, ll), shape)
+
+    # -- motions --------------------------------------------------------------------------
+    def drop(self, height: float, latitude: float, degrees: bool = False, *,
+             gravity: str = "uniform", rotation: bool = True, centrifugal: bool = True,
+             rtol: float = _DEFAULT_TOL, atol: float = _DEFAULT_TOL, samples: int = 201,
+             max_steps: int = 1_000_000) -> Fall:
+        """Drop a body from rest at ``height`` (m, > 0) at ``latitude``, integrated exactly
+        (to ``rtol``) in the rotating frame until it lands:
+
+        r̈ = g(r) − 2 ω × ṙ − ω × (ω × r)   (eq. 2.30; the unit's 2.32 keeps only Coriolis),
+
+        with ẑ the plumb line at the ground. ``gravity="uniform"`` (the unit's model, ground
+        z = 0) or ``"inverse-square"`` (g falls off with height, ground a sphere of radius R);
+        ``rotation=False`` drops it on a non-rotating Earth; ``centrifugal=False`` leaves out
+        the change of the centrifugal force with position.
+
+        Returns
+        -------
+        Fall
+            ``time``, ``east``, ``north`` (north < 0: south), the trajectory (``samples``
+            points), and the first-order (2.42) and second-order closed forms to compare.
+        """
+        h = as_scalar(height, "height")
+        lat = _angle(latitude, "latitude", degrees)
+        out = _core.earth_drop(*self._p, h, lat, gravity, bool(rotation), bool(centrifugal),
+                               as_scalar(rtol, "rtol"), as_scalar(atol, "atol"), int(max_steps),
+                               int(samples))
+        states = out["states"]
+        return Fall(out["time"], out["east"], out["north"], out["t"], states[:, :3].copy(),
+                    states[:, 3:].copy(), self.eastward_deflection(h, lat),
+                    self.southward_deflection(h, lat))
+
+    def projectile(self, speed: float, elevation: float, azimuth: float, latitude: float,
+                   degrees: bool = False, *, height: float = 0.0, gravity: str = "uniform",
+                   rotation: bool = True, centrifugal: bool = True, rtol: float = _DEFAULT_TOL,
+                   atol: float = _DEFAULT_TOL, samples: int = 201, max_steps: int = 1_000_000) -> Flight:
+        """Fly a projectile launched at ``speed`` (m/s, > 0), ``elevation`` above the horizon
+        and ``azimuth`` clockwise from north (0 north, 90° east) from ``height`` (m, ≥ 0) at
+        ``latitude``, integrated in the rotating frame until it lands (the model of
+        :meth:`drop`). With ``rotation=False`` the same shot on a non-rotating Earth.
+
+        Returns
+        -------
+        Flight
+            ``time``, ``east``, ``north``, ``range``, ``downrange``, ``drift`` (to the right
+            > 0: the north's deflection) and the trajectory.
+        """
+        out = _core.earth_projectile(*self._p, as_scalar(speed, "speed"),
+                                     _angle(elevation, "elevation", degrees),
+                                     _angle(azimuth, "azimuth", degrees),
+                                     _angle(latitude, "latitude", degrees), as_scalar(height, "height"),
+                                     gravity, bool(rotation), bool(centrifugal), as_scalar(rtol, "rtol"),
+                                     as_scalar(atol, "atol"), int(max_steps), int(samples))
+        states = out["states"]
+        return Flight(out["time"], out["east"], out["north"], out["range"], out["downrange"],
+                      out["drift"], out["t"], states[:, :3].copy(), states[:, 3:].copy())
+
+    def foucault(self, latitude: float, degrees: bool = False, *, length: float = 67.0,
+                 amplitude: float = 1.0, azimuth: float = 0.0, duration: float = 3600.0,
+                 samples: int = 1001, rtol: float = 1e-10, atol: float = 1e-12,
+                 max_steps: int = 10_000_000, progress: bool = False) -> FoucaultRun:
+        """Swing a Foucault pendulum — a spherical pendulum of ``length`` (m; default the
+        Panthéon's 67 m) released from rest at ``amplitude`` (m) towards ``azimuth``
+        (clockwise from north; radians unless ``degrees``) — for ``duration`` s in the rotating
+        frame, and measure the turn of its swing plane: −ω sin λ, clockwise in the north.
+
+        ``progress=True`` shows a progress bar (rich) while it runs.
+
+        Returns
+        -------
+        FoucaultRun
+            Samples, turning points, the fitted ``precession_rate`` and the theory's
+            ``expected_rate`` (rad/s, counterclockwise positive), and the ``sense``.
+        """
+        lat = _angle(latitude, "latitude", degrees)
+        az = _angle(azimuth, "azimuth", degrees)
+        dur = as_scalar(duration, "duration")
+        if not dur > 0:
+            raise PoinsotError(f"duration: must be > 0, got {dur}")
+        n = int(samples)
+        if n < 2:
+            raise PoinsotError(f"samples: must be >= 2, got {samples}")
+        state = _core.earth_foucault_release(as_scalar(length, "length"), as_scalar(amplitude, "amplitude"), az)
+        times = np.linspace(0.0, dur, n)
+        chunks = max(1, min(100, int(np.ceil(dur / 60.0)))) if progress else 1
+        edges = np.linspace(0.0, dur, chunks + 1)
+        parts_t, parts_s, turn_t, turn_a = [], [], [], []
+        bar = None
+        if progress:
+            from rich.progress import Progress
+
+            bar = Progress(transient=True)
+            bar.start()
+            task = bar.add_task("Foucault pendulum", total=chunks)
+        try:
+            for i in range(chunks):
+                a, b = edges[i], edges[i + 1]
+                sel = times[(times >= a) & ((times < b) | (i == chunks - 1))]
+                out = _core.earth_foucault(*self._p, lat, float(length), state, float(a), float(b),
+                                           np.ascontiguousarray(sel), as_scalar(rtol, "rtol"),
+                                           as_scalar(atol, "atol"), int(max_steps))
+                parts_t.append(out["t"])
+                parts_s.append(out["states"])
+                turn_t.append(out["turn_times"])
+                turn_a.append(out["turn_angles"])
+                state = out["final_state"]
+                if bar is not None:
+                    bar.update(task, advance=1)
+        finally:
+            if bar is not None:
+                bar.stop()
+        tt, ta = np.concatenate(turn_t), np.concatenate(turn_a)
+        rate = _core.earth_fit_precession_rate(tt, ta)
+        expected = float(self.foucault_rate(lat))
+        states = np.concatenate(parts_s)
+        return FoucaultRun(np.concatenate(parts_t), states[:, :3].copy(), states[:, 3:].copy(), tt, ta,
+                           rate, expected, _sense(rate, 1e6 * self._rate))
+
+    def inertial_oscillation(self, latitude: float, velocity: Any = (10.0, 0.0), degrees: bool = False, *,
+                             duration: float | None = None, samples: int = 401, rtol: float = _DEFAULT_TOL,
+                             atol: float = 1e-9, max_steps: int = 1_000_000) -> InertialOscillation:
+        """A parcel set moving horizontally with ``velocity`` ``[v_east, v_north]`` (m/s) on a
+        frictionless level surface at ``latitude``: only the Coriolis force turns it, to the
+        right in the north, to the left in the south, not at all at the equator. Default
+        ``duration``: two inertial periods (or one day at the equator).
+
+        Returns
+        -------
+        InertialOscillation
+            The track, the measured ``turning_rate`` (−2ω sin λ) and ``sense``, and the
+            ``period`` π/(ω |sin λ|).
+        """
+        lat = _angle(latitude, "latitude", degrees)
+        v = as_float_array(velocity, "velocity")
+        if v.shape != (2,):
+            raise PoinsotError(f"velocity: must have shape (2,) [v_east, v_north], got {v.shape}")
+        period = float(self.inertial_period(lat))
+        dur = (2.0 * period if np.isfinite(period) else 86400.0) if duration is None else as_scalar(duration, "duration")
+        if not dur > 0:
+            raise PoinsotError(f"duration: must be > 0, got {dur}")
+        times = np.linspace(0.0, dur, max(2, int(samples)))
+        out = _core.earth_inertial_oscillation(*self._p, lat, np.ascontiguousarray(v), dur, times,
+                                               as_scalar(rtol, "rtol"), as_scalar(atol, "atol"), int(max_steps))
+        s = out["states"]
+        rate = out["turning_rate"]
+        return InertialOscillation(out["t"], s[:, :2].copy(), s[:, 2:].copy(), rate, period,
+                                   _sense(rate, 2.0 * self._rate))
+
+    def flow_into_low(self, latitude: float, degrees: bool = False, *, radius: float = 5e5,
+                      parcels: int = 8, pull: float = 1e-3, friction: float = 1e-5,
+                      duration: float = 2 * 86400.0, samples: int = 401, rtol: float = _DEFAULT_TOL,
+                      atol: float = 1e-6, max_steps: int = 1_000_000) -> LowFlow:
+        """Parcels starting at rest on a ring of ``radius`` (m) around a low-pressure centre,
+        pulled in by the pressure gradient (``pull``: its acceleration at the ring, m/s²,
+        growing linearly with distance — a paraboloidal low), slowed by friction (1/s) and
+        turned by the Coriolis force. The sense of the circulation comes out of the
+        simulation: counterclockwise in the north, clockwise in the south (Fig. 2.7).
+
+        Returns
+        -------
+        LowFlow
+            Tracks (P, N, 2), the mean angular momentum about the centre ``circulation`` and
+            its ``sense``.
+        """
+        lat = _angle(latitude, "latitude", degrees)
+        rad = as_scalar(radius, "radius")
+        if not rad > 0:
+            raise PoinsotError(f"radius: must be > 0, got {rad}")
+        p = int(parcels)
+        if p < 1:
+            raise PoinsotError(f"parcels: must be >= 1, got {parcels}")
+        ang = 2 * np.pi * np.arange(p) / p
+        starts = np.ascontiguousarray(np.stack([rad * np.cos(ang), rad * np.sin(ang)], axis=1))
+        dur = as_scalar(duration, "duration")
+        if not dur > 0:
+            raise PoinsotError(f"duration: must be > 0, got {dur}")
+        times = np.linspace(0.0, dur, max(2, int(samples)))
+        out = _core.earth_flow_into_low(*self._p, lat, starts, as_scalar(pull, "pull") / rad,
+                                        as_scalar(friction, "friction"), dur, times,
+                                        as_scalar(rtol, "rtol"), as_scalar(atol, "atol"), int(max_steps))
+        tracks = np.stack(out["parcels"])
+        circ = out["circulation"]
+        # Below 1e-9 of radius × the speed the pull alone would give, the circulation is
+        # round-off (the equator): no sense.
+        scale = rad * np.sqrt(as_scalar(pull, "pull") * rad)
+        return LowFlow(out["t"], tracks[:, :, :2].copy(), tracks[:, :, 2:].copy(), circ,
+                       _sense(circ, scale))
