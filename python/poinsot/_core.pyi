@@ -1,5 +1,8 @@
 # Stubs of the compiled module poinsot._core (checked with `python -m mypy.stubtest`).
 # Sections mirror the binding files in crates/poinsot-py/src/.
+from collections.abc import Callable, Sequence
+from typing import Any, final
+
 import numpy as np
 from numpy.typing import NDArray
 
@@ -52,9 +55,6 @@ def screw_apply(
 ) -> NDArray[np.float64]: ...
 
 # ---- inertia (inertia.rs) ----
-<<<<<<< HEAD
-from collections.abc import Callable, Sequence
-from typing import Any, final
 
 @final
 class MassProperties:
@@ -131,11 +131,8 @@ class MassProperties:
 
 def classify(moments: NDArray[np.float64], rtol: float) -> str: ...
 def check_inertia(inertia: NDArray[np.float64]) -> NDArray[np.float64]: ...
-=======
 
 # ---- frames (frames.rs) ----
-from collections.abc import Callable
-from typing import Any
 
 def frame_to_fixed(
     frame: NDArray[np.float64], attitude: NDArray[np.float64], position: NDArray[np.float64],
@@ -200,4 +197,3 @@ def earth_flow_into_low(
     strength: float, friction: float, t_end: float, times: NDArray[np.float64], rtol: float,
     atol: float, max_steps: int,
 ) -> dict[str, Any]: ...
->>>>>>> frames
