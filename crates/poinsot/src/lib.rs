@@ -12,6 +12,7 @@
 //! | [`frames`] | moving frames: velocity and acceleration terms, fictitious forces, particles in time-dependent frames | 2.1–2.28 |
 //! | [`earth`] | the rotating Earth: effective gravity, Coriolis, falling bodies, projectiles, Foucault, winds | 2.29–2.42 |
 //! | [`integrate`] | ODE integrators that know no physics: adaptive DOP853 with dense output and events, RK4 | — |
+//! | [`special`] | Jacobi elliptic functions sn, cn, dn, am (parameter m = k²) and elliptic integrals F, E, K, Π | — |
 //!
 //! Conventions (see `CONVENTIONS.md` at the repository root): SI units, radians, right-handed
 //! frames, active rotations, scalar-first quaternions `[w, x, y, z]`, products of inertia
@@ -25,6 +26,7 @@ pub mod frames;
 pub mod inertia;
 pub mod integrate;
 pub mod rotation;
+pub mod special;
 
 pub use error::{Error, ErrorKind, Result};
 
