@@ -28,10 +28,18 @@ fn q_dist(a: &[f64; 4], b: &[f64; 4]) -> f64 {
 fn exact_solution_matches_mpmath_to_1e_12() {
     let mut worst = (0.0f64, 0.0f64);
     let mut n = 0;
-    for line in FREE_CSV.lines().filter(|l| !l.starts_with('#') && !l.is_empty()) {
+    for line in FREE_CSV
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.is_empty())
+    {
         let (case, rest) = line.split_once(',').unwrap();
         let v: Vec<f64> = rest.split(',').map(|s| s.parse().unwrap()).collect();
-        let body = FreeRigidBody::new([v[0], v[1], v[2]], Vec3::new(v[3], v[4], v[5]), Some([v[6], v[7], v[8], v[9]])).unwrap();
+        let body = FreeRigidBody::new(
+            [v[0], v[1], v[2]],
+            Vec3::new(v[3], v[4], v[5]),
+            Some([v[6], v[7], v[8], v[9]]),
+        )
+        .unwrap();
         let t = v[10];
         let (w, q) = body.state(t);
         let want_w = Vec3::new(v[11], v[12], v[13]);
@@ -39,11 +47,24 @@ fn exact_solution_matches_mpmath_to_1e_12() {
         let ew = (w - want_w).norm() / want_w.norm();
         let eq = q_dist(&q, &want_q);
         worst = (worst.0.max(ew), worst.1.max(eq));
-        eprintln!("{case} t={t}: |Δω|/|ω| = {ew:.2e}, |Δq| = {eq:.2e} ({:?})", body.regime());
+        eprintln!(
+            "{case} t={t}: |Δω|/|ω| = {ew:.2e}, |Δq| = {eq:.2e} ({:?})",
+            body.regime()
+        );
         let i_min = v[0].min(v[1]).min(v[2]);
-        let l = (0..3).map(|k| (v[k] * v[3 + k]).powi(2)).sum::<f64>().sqrt();
-        let q_tol = if case == "headline" { EXACT_RTOL } else { EXACT_RTOL * (l / i_min * t / 1000.0).max(1.0) };
-        assert!(ew <= EXACT_RTOL && eq <= q_tol, "{case} at t = {t}: ω error {ew:e}, q error {eq:e}");
+        let l = (0..3)
+            .map(|k| (v[k] * v[3 + k]).powi(2))
+            .sum::<f64>()
+            .sqrt();
+        let q_tol = if case == "headline" {
+            EXACT_RTOL
+        } else {
+            EXACT_RTOL * (l / i_min * t / 1000.0).max(1.0)
+        };
+        assert!(
+            ew <= EXACT_RTOL && eq <= q_tol,
+            "{case} at t = {t}: ω error {ew:e}, q error {eq:e}"
+        );
         n += 1;
     }
     assert!(n >= 15);
@@ -76,7 +97,10 @@ fn exact_solution_matches_dop853_over_random_states() {
         seed ^= seed << 17;
         (seed >> 11) as f64 / (1u64 << 53) as f64
     };
-    let opts = Options { dense: false, ..Options::with_tolerances(1e-13, 1e-15) };
+    let opts = Options {
+        dense: false,
+        ..Options::with_tolerances(1e-13, 1e-15)
+    };
     for case in 0..60 {
         let a = 0.5 + rnd();
         let b = a + 0.05 + rnd();
@@ -103,20 +127,28 @@ fn exact_solution_matches_dop853_over_random_states() {
         let (we, qe) = body.state(t_end);
         let ew = (we - Vec3::new(y[0], y[1], y[2])).norm() / w.norm();
         let eq = q_dist(&qe, &[y[3], y[4], y[5], y[6]]);
-        assert!(ew < 1e-9 && eq < 1e-9, "case {case} {moments:?} {w:?} ({:?}, m = {}): ω {ew:e}, q {eq:e}", body.regime(), body.parameter());
+        assert!(
+            ew < 1e-9 && eq < 1e-9,
+            "case {case} {moments:?} {w:?} ({:?}, m = {}): ω {ew:e}, q {eq:e}",
+            body.regime(),
+            body.parameter()
+        );
     }
 }
 
 #[test]
 fn special_motions_match_dop853() {
-    let opts = Options { dense: false, ..Options::with_tolerances(1e-13, 1e-15) };
+    let opts = Options {
+        dense: false,
+        ..Options::with_tolerances(1e-13, 1e-15)
+    };
     let cases: [([f64; 3], Vec3); 6] = [
-        ([2.0, 2.0, 3.0], Vec3::new(0.3, -1.0, 2.0)),  // oblate symmetric
-        ([1.0, 2.0, 2.0], Vec3::new(0.3, -1.0, 2.0)),  // prolate, symmetry axis 1
-        ([2.0, 1.0, 2.0], Vec3::new(0.3, -1.0, 2.0)),  // symmetry axis 2
-        ([1.5, 1.5, 1.5], Vec3::new(0.3, -1.0, 2.0)),  // spherical
-        ([1.0, 2.0, 3.0], Vec3::new(0.0, 1.3, 0.0)),   // steady about the intermediate axis
-        ([1.0, 2.0, 3.0], Vec3::new(0.6, 0.0, 0.3)),   // ω₂ = 0: a polhode crossing
+        ([2.0, 2.0, 3.0], Vec3::new(0.3, -1.0, 2.0)), // oblate symmetric
+        ([1.0, 2.0, 2.0], Vec3::new(0.3, -1.0, 2.0)), // prolate, symmetry axis 1
+        ([2.0, 1.0, 2.0], Vec3::new(0.3, -1.0, 2.0)), // symmetry axis 2
+        ([1.5, 1.5, 1.5], Vec3::new(0.3, -1.0, 2.0)), // spherical
+        ([1.0, 2.0, 3.0], Vec3::new(0.0, 1.3, 0.0)),  // steady about the intermediate axis
+        ([1.0, 2.0, 3.0], Vec3::new(0.6, 0.0, 0.3)),  // ω₂ = 0: a polhode crossing
     ];
     for (moments, w) in cases {
         let q0 = [0.5, 0.5, 0.5, 0.5];
@@ -127,7 +159,11 @@ fn special_motions_match_dop853() {
         let (we, qe) = body.state(15.0);
         let ew = (we - Vec3::new(y[0], y[1], y[2])).norm() / w.norm();
         let eq = q_dist(&qe, &[y[3], y[4], y[5], y[6]]);
-        assert!(ew < 1e-10 && eq < 1e-10, "{moments:?} {w:?} ({:?}): ω {ew:e}, q {eq:e}", body.regime());
+        assert!(
+            ew < 1e-10 && eq < 1e-10,
+            "{moments:?} {w:?} ({:?}): ω {ew:e}, q {eq:e}",
+            body.regime()
+        );
     }
 }
 
@@ -141,12 +177,19 @@ fn separatrix_motion_is_exact() {
     if body.regime() == FreeRegime::Separatrix {
         assert!(body.period().is_infinite());
     }
-    let opts = Options { dense: false, ..Options::with_tolerances(1e-13, 1e-15) };
+    let opts = Options {
+        dense: false,
+        ..Options::with_tolerances(1e-13, 1e-15)
+    };
     let y0 = [w.x, w.y, w.z, 1.0, 0.0, 0.0, 0.0];
     let sol = dop853(free_rhs([1.0, 2.0, 3.0]), 0.0, y0, 10.0, &opts).unwrap();
     let y = sol.y_final();
     let (we, qe) = body.state(10.0);
-    assert!((we - Vec3::new(y[0], y[1], y[2])).norm() < 1e-9, "{:?} {we:?} {y:?}", body.regime());
+    assert!(
+        (we - Vec3::new(y[0], y[1], y[2])).norm() < 1e-9,
+        "{:?} {we:?} {y:?}",
+        body.regime()
+    );
     assert!(q_dist(&qe, &[y[3], y[4], y[5], y[6]]) < 1e-9);
 }
 

@@ -29,7 +29,9 @@
 //! principal axis are solved by their own closed forms.
 
 use super::free_symmetric_top::{check_omega, SymmetricMotion};
-use super::rotations::{axis_angle_q, conj, coordinate_q, hamilton, matrix_to_quaternion_unchecked, normalized, rotate};
+use super::rotations::{
+    axis_angle_q, conj, coordinate_q, hamilton, matrix_to_quaternion_unchecked, normalized, rotate,
+};
 use crate::error::{check_finite, Error, Result};
 use crate::inertia::check_inertia;
 use crate::rotation::{check_quaternion, Quaternion};
@@ -136,7 +138,10 @@ pub fn check_moments(moments: &[f64; 3]) -> Result<()> {
     if let Some(i) = moments.iter().position(|&v| v <= 0.0) {
         return Err(Error::inertia(
             "moments",
-            format!("principal moments must be > 0 for the body to turn, got {} at index {i}", moments[i]),
+            format!(
+                "principal moments must be > 0 for the body to turn, got {} at index {i}",
+                moments[i]
+            ),
         ));
     }
     check_inertia("moments", &Mat3::from_diagonal(&Vec3::from(*moments))).map(|_| ())
@@ -157,20 +162,43 @@ impl FreeRigidBody {
             Some(q) => check_quaternion("attitude0", &q, false)?,
             None => [1.0, 0.0, 0.0, 0.0],
         };
-        let l_body = Vec3::new(moments[0] * omega0.x, moments[1] * omega0.y, moments[2] * omega0.z);
+        let l_body = Vec3::new(
+            moments[0] * omega0.x,
+            moments[1] * omega0.y,
+            moments[2] * omega0.z,
+        );
         let energy = 0.5 * (l_body.x * omega0.x + l_body.y * omega0.y + l_body.z * omega0.z);
         let l_space = rotate(&attitude0, &l_body);
         let nonzero = omega0.iter().filter(|w| **w != 0.0).count();
-        let (regime, motion) = if moments[0] == moments[1] && moments[1] == moments[2] || nonzero == 1 {
-            let rate = omega0.norm();
-            (FreeRegime::Steady, Motion::Steady { omega: omega0, axis: omega0 / rate, rate })
-        } else if let Some(axis) = symmetry_axis(&moments) {
-            (FreeRegime::Symmetric, Motion::Symmetric(SymmetricMotion::new(axis, moments, omega0, attitude0)))
-        } else {
-            let (regime, e) = Elliptic::new(&moments, &omega0, &attitude0)?;
-            (regime, Motion::Elliptic(Box::new(e)))
-        };
-        Ok(Self { moments, omega0, attitude0, energy, l_space, regime, motion })
+        let (regime, motion) =
+            if moments[0] == moments[1] && moments[1] == moments[2] || nonzero == 1 {
+                let rate = omega0.norm();
+                (
+                    FreeRegime::Steady,
+                    Motion::Steady {
+                        omega: omega0,
+                        axis: omega0 / rate,
+                        rate,
+                    },
+                )
+            } else if let Some(axis) = symmetry_axis(&moments) {
+                (
+                    FreeRegime::Symmetric,
+                    Motion::Symmetric(SymmetricMotion::new(axis, moments, omega0, attitude0)),
+                )
+            } else {
+                let (regime, e) = Elliptic::new(&moments, &omega0, &attitude0)?;
+                (regime, Motion::Elliptic(Box::new(e)))
+            };
+        Ok(Self {
+            moments,
+            omega0,
+            attitude0,
+            energy,
+            l_space,
+            regime,
+            motion,
+        })
     }
 
     /// The principal moments, as given (kg·m²).
@@ -222,7 +250,9 @@ impl FreeRigidBody {
     pub fn period(&self) -> f64 {
         match &self.motion {
             Motion::Elliptic(e) if !e.separatrix => 4.0 * e.jacobi.quarter_period() / e.lambda,
-            Motion::Symmetric(s) if s.big_omega != 0.0 => 2.0 * std::f64::consts::PI / s.big_omega.abs(),
+            Motion::Symmetric(s) if s.big_omega != 0.0 => {
+                2.0 * std::f64::consts::PI / s.big_omega.abs()
+            }
             _ => f64::INFINITY,
         }
     }
@@ -264,9 +294,10 @@ impl FreeRigidBody {
     /// ω(t) (body) and the attitude at t together (cheaper than separately).
     pub fn state(&self, t: f64) -> (Vec3, Quaternion) {
         match &self.motion {
-            Motion::Steady { omega, axis, rate } => {
-                (*omega, hamilton(&self.attitude0, &axis_angle_q(axis, rate * t)))
-            }
+            Motion::Steady { omega, axis, rate } => (
+                *omega,
+                hamilton(&self.attitude0, &axis_angle_q(axis, rate * t)),
+            ),
             Motion::Symmetric(s) => (s.omega(t), s.attitude(t)),
             Motion::Elliptic(e) => {
                 let (w_sorted, q) = e.state(t);
@@ -278,7 +309,11 @@ impl FreeRigidBody {
     /// L(t) in body components (kg·m²/s).
     pub fn angular_momentum_body(&self, t: f64) -> Vec3 {
         let w = self.omega(t);
-        Vec3::new(self.moments[0] * w.x, self.moments[1] * w.y, self.moments[2] * w.z)
+        Vec3::new(
+            self.moments[0] * w.x,
+            self.moments[1] * w.y,
+            self.moments[2] * w.z,
+        )
     }
 
     /// ω(t) in space components: its tip traces the herpolhode on the invariable plane
@@ -317,7 +352,17 @@ fn permutation(axes: [usize; 3]) -> Mat3 {
 }
 
 fn row_major(m: &Mat3) -> [f64; 9] {
-    [m[(0, 0)], m[(0, 1)], m[(0, 2)], m[(1, 0)], m[(1, 1)], m[(1, 2)], m[(2, 0)], m[(2, 1)], m[(2, 2)]]
+    [
+        m[(0, 0)],
+        m[(0, 1)],
+        m[(0, 2)],
+        m[(1, 0)],
+        m[(1, 1)],
+        m[(1, 2)],
+        m[(2, 0)],
+        m[(2, 1)],
+        m[(2, 2)],
+    ]
 }
 
 /// The rotation C with third row `l` (a unit vector), C = R_x(θ) R_z(ψ) with
@@ -330,7 +375,11 @@ fn euler_tilt(l: &Vec3) -> Quaternion {
 }
 
 impl Elliptic {
-    fn new(moments: &[f64; 3], omega0: &Vec3, attitude0: &Quaternion) -> Result<(FreeRegime, Self)> {
+    fn new(
+        moments: &[f64; 3],
+        omega0: &Vec3,
+        attitude0: &Quaternion,
+    ) -> Result<(FreeRegime, Self)> {
         let mut order = [0usize, 1, 2];
         order.sort_by(|&a, &b| moments[a].total_cmp(&moments[b]));
         let to_sorted = permutation(order);
@@ -372,7 +421,11 @@ impl Elliptic {
             )
         };
         let lambda = lambda2.sqrt();
-        let jacobi = if separatrix { Jacobi::new(1.0)? } else { Jacobi::with_complement(m.min(1.0), mc.clamp(0.0, 1.0))? };
+        let jacobi = if separatrix {
+            Jacobi::new(1.0)?
+        } else {
+            Jacobi::with_complement(m.min(1.0), mc.clamp(0.0, 1.0))?
+        };
         // Signs: ω_p never vanishes (dn > 0); ω₂ = sign(ω_o ω_p) ω₂,m sn with ω_o ∝ +cn
         // (off the separatrix; on it cn > 0, so ω_o keeps the sign of ω_o(0)).
         let sign = |v: f64| if v < 0.0 { -1.0 } else { 1.0 };
@@ -383,9 +436,17 @@ impl Elliptic {
         let amp_dn = s_p * amp_p2.sqrt();
         // The amplitude angle at t = 0: sin φ₀ = sn τ₀, cos φ₀ = cn τ₀.
         let phi0 = (w.y / amp_sn).atan2(w[other] / amp_cn);
-        let tau0 = if separatrix { phi0.sin().atanh() } else { ellipf_complement(phi0, jacobi.complement())? };
+        let tau0 = if separatrix {
+            phi0.sin().atanh()
+        } else {
+            ellipf_complement(phi0, jacobi.complement())?
+        };
         // The precession angle φ (module docs).
-        let n = if pole == 2 { -i3 * (i2 - i1) / (i1 * (i3 - i2)) } else { -i1 * (i3 - i2) / (i3 * (i2 - i1)) };
+        let n = if pole == 2 {
+            -i3 * (i2 - i1) / (i1 * (i3 - i2))
+        } else {
+            -i1 * (i3 - i2) / (i3 * (i2 - i1))
+        };
         let kappa_sign = if pole == 2 { 1.0 } else { -1.0 };
         let kappa = kappa_sign * l_norm * (i3 - i1) / (i1 * i3 * lambda);
         let sorted = [i1, i2, i3];
@@ -414,15 +475,21 @@ impl Elliptic {
             q_post: matrix_to_quaternion_unchecked(&row_major(&to_w)),
         };
         if !separatrix {
-            e.pi_complete = ellippiinc_complement(std::f64::consts::FRAC_PI_2, n, jacobi.complement())?;
+            e.pi_complete =
+                ellippiinc_complement(std::f64::consts::FRAC_PI_2, n, jacobi.complement())?;
         }
         let (w_s0, am0) = e.omega_sorted(tau0);
         e.pi0 = e.pi_of(tau0, am0)?;
         let c0 = euler_tilt(&e.l_hat_w(&w_s0));
         e.q_pre = hamilton(&hamilton(attitude0, &conj(&e.q_post)), &conj(&c0));
-        check_finite("omega0", &[e.lambda, e.tau0, e.kappa, e.pi0, e.pi_complete]).map_err(|_| {
-            Error::invalid("omega0", "the elliptic solution is not finite for this state (report it as a bug)")
-        })?;
+        check_finite("omega0", &[e.lambda, e.tau0, e.kappa, e.pi0, e.pi_complete]).map_err(
+            |_| {
+                Error::invalid(
+                    "omega0",
+                    "the elliptic solution is not finite for this state (report it as a bug)",
+                )
+            },
+        )?;
         Ok((regime, e))
     }
 
@@ -452,13 +519,18 @@ impl Elliptic {
             let r = (-self.n).sqrt();
             return Ok((tau + r * (r * tau.tanh()).atan()) / (1.0 - self.n));
         }
-        Ok(2.0 * j * self.pi_complete + ellippiinc_complement(am_r, self.n, self.jacobi.complement())?)
+        Ok(2.0 * j * self.pi_complete
+            + ellippiinc_complement(am_r, self.n, self.jacobi.complement())?)
     }
 
     /// L̂ in the working frame W (pole third) from ω in sorted components.
     #[inline]
     fn l_hat_w(&self, w: &Vec3) -> Vec3 {
-        let l = Vec3::new(self.sorted[0] * w.x, self.sorted[1] * w.y, self.sorted[2] * w.z);
+        let l = Vec3::new(
+            self.sorted[0] * w.x,
+            self.sorted[1] * w.y,
+            self.sorted[2] * w.z,
+        );
         let lw = Vec3::new(l[self.w_axes[0]], l[self.w_axes[1]], l[self.w_axes[2]]);
         lw / lw.norm()
     }
@@ -470,7 +542,10 @@ impl Elliptic {
         let pi = self.pi_of(tau, red).unwrap_or(f64::NAN);
         let phi = self.rate_p.mul_add(t, self.kappa * (pi - self.pi0));
         let c = euler_tilt(&self.l_hat_w(&w));
-        let q = hamilton(&hamilton(&self.q_pre, &coordinate_q(2, phi)), &hamilton(&c, &self.q_post));
+        let q = hamilton(
+            &hamilton(&self.q_pre, &coordinate_q(2, phi)),
+            &hamilton(&c, &self.q_post),
+        );
         (w, normalized(&q))
     }
 }

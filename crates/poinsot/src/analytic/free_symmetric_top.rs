@@ -71,11 +71,28 @@ impl SymmetricMotion {
     pub(crate) fn new(axis: usize, moments: [f64; 3], omega0: Vec3, attitude0: Quaternion) -> Self {
         let i_sym = moments[axis];
         let i_perp = moments[(axis + 1) % 3];
-        let l_body = Vec3::new(moments[0] * omega0.x, moments[1] * omega0.y, moments[2] * omega0.z);
+        let l_body = Vec3::new(
+            moments[0] * omega0.x,
+            moments[1] * omega0.y,
+            moments[2] * omega0.z,
+        );
         let l_norm = l_body.norm();
-        let l_hat_body0 = if l_norm > 0.0 { l_body / l_norm } else { Vec3::z() };
+        let l_hat_body0 = if l_norm > 0.0 {
+            l_body / l_norm
+        } else {
+            Vec3::z()
+        };
         let big_omega = (i_perp - i_sym) * omega0[axis] / i_perp;
-        Self { axis, i_perp, i_sym, omega0, attitude0, l_hat_body0, l_norm, big_omega }
+        Self {
+            axis,
+            i_perp,
+            i_sym,
+            omega0,
+            attitude0,
+            l_hat_body0,
+            l_norm,
+            big_omega,
+        }
     }
 
     /// ω(t) in body components: the part across the symmetry axis turns by −Ωt about it.
@@ -118,13 +135,19 @@ impl FreeSymmetricTop {
     pub fn new(i1: f64, i3: f64, omega0: Vec3, attitude0: Option<Quaternion>) -> Result<Self> {
         for (name, v) in [("I1", i1), ("I3", i3)] {
             if !(v.is_finite() && v > 0.0) {
-                return Err(Error::inertia(name, format!("must be finite and > 0, got {v}")));
+                return Err(Error::inertia(
+                    name,
+                    format!("must be finite and > 0, got {v}"),
+                ));
             }
         }
         if i3 > 2.0 * i1 * (1.0 + 8.0 * f64::EPSILON) {
             return Err(Error::inertia(
                 "I3",
-                format!("must satisfy the triangle inequality I3 <= I1 + I2 = 2 I1 = {}, got {i3}", 2.0 * i1),
+                format!(
+                    "must satisfy the triangle inequality I3 <= I1 + I2 = 2 I1 = {}, got {i3}",
+                    2.0 * i1
+                ),
             ));
         }
         check_omega("omega0", &omega0)?;
@@ -133,7 +156,13 @@ impl FreeSymmetricTop {
             None => [1.0, 0.0, 0.0, 0.0],
         };
         let sym = SymmetricMotion::new(2, [i1, i1, i3], omega0, attitude0);
-        Ok(Self { i1, i3, omega0, attitude0, sym })
+        Ok(Self {
+            i1,
+            i3,
+            omega0,
+            attitude0,
+            sym,
+        })
     }
 
     /// I₁ = I₂ (kg·m²).

@@ -10,3 +10,7 @@ mod rotations;
 pub use free_rigid_body::{check_moments, FreeRegime, FreeRigidBody};
 pub use free_symmetric_top::{FreeSymmetricTop, TopShape};
 pub use poinsot_construction::{axis_stability, AxisStability, Stability};
+pub(crate) use rotations::{
+    conj, hamilton, matrix_to_quaternion_unchecked as matrix_quaternion, normalized,
+    quaternion_matrix, same_hemisphere,
+};

@@ -56,13 +56,23 @@ pub fn axis_stability(moments: [f64; 3], spin: f64) -> Result<[AxisStability; 3]
     check_finite("spin", &[spin])?;
     Ok(std::array::from_fn(|i| {
         let (j, k) = ((i + 1) % 3, (i + 2) % 3);
-        let q = spin * spin * (moments[i] - moments[j]) * (moments[i] - moments[k]) / (moments[j] * moments[k]);
+        let q = spin * spin * (moments[i] - moments[j]) * (moments[i] - moments[k])
+            / (moments[j] * moments[k]);
         if q > 0.0 {
-            AxisStability { stability: Stability::Stable, rate: q.sqrt() }
+            AxisStability {
+                stability: Stability::Stable,
+                rate: q.sqrt(),
+            }
         } else if q < 0.0 {
-            AxisStability { stability: Stability::Unstable, rate: (-q).sqrt() }
+            AxisStability {
+                stability: Stability::Unstable,
+                rate: (-q).sqrt(),
+            }
         } else {
-            AxisStability { stability: Stability::Neutral, rate: 0.0 }
+            AxisStability {
+                stability: Stability::Neutral,
+                rate: 0.0,
+            }
         }
     }))
 }
@@ -74,7 +84,10 @@ impl FreeRigidBody {
     /// is constant. Errors name `samples` (must be ≥ 2).
     pub fn polhode(&self, samples: usize) -> Result<Vec<Vec3>> {
         if samples < 2 {
-            return Err(Error::invalid("samples", format!("must be >= 2, got {samples}")));
+            return Err(Error::invalid(
+                "samples",
+                format!("must be >= 2, got {samples}"),
+            ));
         }
         let period = self.period();
         let (t0, span) = if period.is_finite() {
@@ -84,7 +97,9 @@ impl FreeRigidBody {
         } else {
             (0.0, 0.0)
         };
-        Ok((0..samples).map(|i| self.omega(t0 + span * i as f64 / (samples - 1) as f64)).collect())
+        Ok((0..samples)
+            .map(|i| self.omega(t0 + span * i as f64 / (samples - 1) as f64))
+            .collect())
     }
 
     /// The distance of the invariable plane from the fixed point in Poinsot's construction,

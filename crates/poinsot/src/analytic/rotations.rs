@@ -26,12 +26,6 @@ pub(crate) fn conj(q: &Quaternion) -> Quaternion {
     [q[0], -q[1], -q[2], -q[3]]
 }
 
-/// `R(q)ᵀ v`: space components to body components.
-#[inline]
-pub(crate) fn rotate_inverse(q: &Quaternion, v: &Vec3) -> Vec3 {
-    rotate(&conj(q), v)
-}
-
 /// `R(q) v` for a unit quaternion.
 #[inline]
 pub(crate) fn rotate(q: &Quaternion, v: &Vec3) -> Vec3 {
@@ -75,7 +69,8 @@ pub(crate) fn hamilton(p: &Quaternion, q: &Quaternion) -> Quaternion {
 /// Shepperd's method: built from the largest of `1 + tr R` and `1 + 2R_ii − tr R`.
 #[inline]
 pub(crate) fn matrix_to_quaternion_unchecked(m: &[f64; 9]) -> Quaternion {
-    let (r00, r01, r02, r10, r11, r12, r20, r21, r22) = (m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8]);
+    let (r00, r01, r02, r10, r11, r12, r20, r21, r22) =
+        (m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8]);
     let tr = r00 + r11 + r22;
     let q = if tr >= r00 && tr >= r11 && tr >= r22 {
         [1.0 + tr, r21 - r12, r02 - r20, r10 - r01]
