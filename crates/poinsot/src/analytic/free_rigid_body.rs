@@ -306,6 +306,23 @@ impl FreeRigidBody {
         }
     }
 
+    /// ω (body) and the attitude at each of `times`, the quaternions' signs made continuous
+    /// from one time to the next (`q` and `−q` are the same attitude).
+    pub fn sample(&self, times: &[f64]) -> (Vec<[f64; 3]>, Vec<Quaternion>) {
+        let mut omega = Vec::with_capacity(times.len());
+        let mut attitude: Vec<Quaternion> = Vec::with_capacity(times.len());
+        for &t in times {
+            let (w, q) = self.state(t);
+            let q = match attitude.last() {
+                Some(prev) => super::rotations::same_hemisphere(q, prev),
+                None => q,
+            };
+            omega.push([w.x, w.y, w.z]);
+            attitude.push(q);
+        }
+        (omega, attitude)
+    }
+
     /// L(t) in body components (kg·m²/s).
     pub fn angular_momentum_body(&self, t: f64) -> Vec3 {
         let w = self.omega(t);
