@@ -33,7 +33,6 @@ use super::rotations::{
     axis_angle_q, conj, coordinate_q, hamilton, matrix_to_quaternion_unchecked, normalized, rotate,
 };
 use crate::error::{check_finite, Error, Result};
-use crate::inertia::check_inertia;
 use crate::rotation::{check_quaternion, Quaternion};
 use crate::special::{ellipf_complement, ellippiinc_complement, Jacobi};
 use crate::{Mat3, Vec3};
@@ -129,8 +128,10 @@ pub struct FreeRigidBody {
     motion: Motion,
 }
 
-/// Checks principal moments: finite, > 0, and the triangle inequalities (a real body);
-/// errors name `moments` ([`crate::ErrorKind::InvalidInertia`]).
+/// Checks principal moments: finite, > 0, and the triangle inequality `I₁ + I₂ ≥ I₃` of the
+/// sorted moments within [`crate::inertia::tensor::PHYSICAL_RTOL`] of the largest (the same
+/// rule as [`crate::inertia::check_inertia`], without its eigen-decomposition); errors name
+/// `moments` ([`crate::ErrorKind::InvalidInertia`]).
 pub fn check_moments(moments: &[f64; 3]) -> Result<()> {
     if let Err(e) = check_finite("moments", moments) {
         return Err(Error::inertia("moments", e.message));
@@ -138,13 +139,26 @@ pub fn check_moments(moments: &[f64; 3]) -> Result<()> {
     if let Some(i) = moments.iter().position(|&v| v <= 0.0) {
         return Err(Error::inertia(
             "moments",
+            format!("principal moments must be > 0 for the body to turn, got {} at index {i}", moments[i]),
+        ));
+    }
+    let mut m = *moments;
+    m.sort_by(f64::total_cmp);
+    let excess = m[2] - (m[0] + m[1]);
+    if excess > crate::inertia::tensor::PHYSICAL_RTOL * m[2] {
+        return Err(Error::inertia(
+            "moments",
             format!(
-                "principal moments must be > 0 for the body to turn, got {} at index {i}",
-                moments[i]
+                "principal moments {m:?} violate the triangle inequality I1 + I2 >= I3: {} + {} < {} by {excess:.6e} \
+                 ({:.3e} of the largest moment); no distribution of mass has these moments",
+                m[0],
+                m[1],
+                m[2],
+                excess / m[2]
             ),
         ));
     }
-    check_inertia("moments", &Mat3::from_diagonal(&Vec3::from(*moments))).map(|_| ())
+    Ok(())
 }
 
 impl FreeRigidBody {

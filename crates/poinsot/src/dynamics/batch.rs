@@ -3,14 +3,14 @@
 
 use rayon::prelude::*;
 
-use super::equations::{angular_acceleration_principal, quaternion_rate};
+use super::equations::{angular_acceleration_principal, quaternion_rate, RigidRhs};
 use super::model::BodyInertia;
 use super::simulate::{default_step, Method};
 use super::splitting::{free_steps, kicked_step, SplitState};
 use super::torque::{Torque, TorqueContext, TorqueModel};
 use crate::analytic::{check_moments, normalized, quaternion_matrix, FreeRigidBody};
 use crate::error::{Error, Result};
-use crate::integrate::{composition_coefficients, dop853, rk4_step, Options};
+use crate::integrate::{composition_coefficients, dop853, Options};
 use crate::rotation::{check_quaternion, Quaternion};
 use crate::Vec3;
 
@@ -185,23 +185,20 @@ fn one_body(
         Method::Rk4 => {
             let (k, h) = steps_for(torque_at(0.0, &w0, q0).norm());
             let mut y = [w0.x, w0.y, w0.z, q0[0], q0[1], q0[2], q0[3]];
-            let mut rhs = |t: f64, y: &[f64; 7], dy: &mut [f64; 7]| {
-                let w = Vec3::new(y[0], y[1], y[2]);
-                let q = [y[3], y[4], y[5], y[6]];
-                let a = angular_acceleration_principal(moments, &w, &torque_at(t, &w, &q));
-                let qd = quaternion_rate(&q, &w);
-                *dy = [a.x, a.y, a.z, qd[0], qd[1], qd[2], qd[3]];
-            };
-            for s in 0..k {
-                y = rk4_step(&mut rhs, h * s as f64, &y, h);
-                let qn = normalized(&[y[3], y[4], y[5], y[6]]);
-                y[3..7].copy_from_slice(&qn);
+            let rigid = RigidRhs::new(moments);
+            if torque.is_zero() {
+                let mut none = |_t: f64, _w: &Vec3, _q: &Quaternion| Vec3::zeros();
+                for s in 0..k {
+                    y = rigid.rk4_step(h * s as f64, &y, h, &mut none);
+                }
+            } else {
+                let mut model = |t: f64, w: &Vec3, q: &Quaternion| torque_at(t, w, q);
+                for s in 0..k {
+                    y = rigid.rk4_step(h * s as f64, &y, h, &mut model);
+                }
             }
             if !y.iter().all(|v| v.is_finite()) {
-                return Err(Error::diverged(
-                    "t",
-                    "the state stopped being finite before the end",
-                ));
+                return Err(Error::diverged("t", "the state stopped being finite before the end"));
             }
             Ok(([y[0], y[1], y[2]], [y[3], y[4], y[5], y[6]], k))
         }

@@ -1,7 +1,7 @@
 //! `simulate`: the motion of a rigid body under a torque, sampled at evenly spaced times, by
 //! the exact flow, the Lie–Poisson splitting (orders 2, 4, 6), RK4 or DOP853 — one interface.
 
-use super::equations::{angular_acceleration_principal, power, quaternion_rate};
+use super::equations::{angular_acceleration_principal, power, quaternion_rate, RigidRhs};
 use super::model::BodyInertia;
 use super::splitting::{free_steps, kicked_step, SplitState};
 use super::torque::{TorqueContext, TorqueModel};
@@ -9,7 +9,7 @@ use crate::analytic::{
     conj, hamilton, normalized, quaternion_matrix, same_hemisphere, FreeRigidBody,
 };
 use crate::error::{check_finite, Error, Result};
-use crate::integrate::{composition_coefficients, rk4_step, Dop853, Options};
+use crate::integrate::{composition_coefficients, Dop853, Options};
 use crate::rotation::{check_quaternion, Quaternion};
 use crate::{Mat3, Vec3};
 
@@ -386,33 +386,27 @@ pub fn simulate<T: TorqueModel + ?Sized>(
             if method == Method::Rk4 {
                 let mut y = [w0_p.x, w0_p.y, w0_p.z, q0_p[0], q0_p[1], q0_p[2], q0_p[3]];
                 let zero = torque.is_zero();
+                let rigid = RigidRhs::new(&moments);
                 for i in 1..n {
                     let t_start = times[i - 1];
-                    {
+                    if zero {
+                        let mut none = |_t: f64, _w: &Vec3, _q: &Quaternion| Vec3::zeros();
+                        for k in 0..sub {
+                            y = rigid.rk4_step(t_start + h * k as f64, &y, h, &mut none);
+                        }
+                    } else {
                         let torque = &mut *torque;
                         let evals = &mut evaluations;
-                        let mut rhs = |t: f64, y: &[f64; 7], dy: &mut [f64; 7]| {
-                            let w = Vec3::new(y[0], y[1], y[2]);
-                            let q = [y[3], y[4], y[5], y[6]];
-                            let nt = if zero {
-                                Vec3::zeros()
-                            } else {
-                                *evals += 1;
-                                frames.torque_p(torque, t, &w, &q)
-                            };
-                            let a = angular_acceleration_principal(&moments, &w, &nt);
-                            let qd = quaternion_rate(&q, &w);
-                            *dy = [a.x, a.y, a.z, qd[0], qd[1], qd[2], qd[3]];
+                        let mut model = |t: f64, w: &Vec3, q: &Quaternion| {
+                            *evals += 1;
+                            frames.torque_p(torque, t, w, q)
                         };
                         for k in 0..sub {
-                            let t = t_start + h * k as f64;
-                            y = rk4_step(&mut rhs, t, &y, h);
-                            let qn = normalized(&[y[3], y[4], y[5], y[6]]);
-                            y[3..7].copy_from_slice(&qn);
-                            if !y.iter().all(|v| v.is_finite()) {
-                                return Err(diverged(t + h));
-                            }
+                            y = rigid.rk4_step(t_start + h * k as f64, &y, h, &mut model);
                         }
+                    }
+                    if !y.iter().all(|v| v.is_finite()) {
+                        return Err(diverged(times[i]));
                     }
                     out.steps += sub;
                     let (w, q) = (Vec3::new(y[0], y[1], y[2]), [y[3], y[4], y[5], y[6]]);
