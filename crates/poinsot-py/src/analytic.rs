@@ -9,13 +9,19 @@ use crate::errors::{invalid, IntoPy};
 use crate::frames::{rows_out, vec_in};
 
 /// A (4,) quaternion argument, optional.
-pub(crate) fn opt_quat(argument: &str, a: &Option<PyReadonlyArray1<'_, f64>>) -> PyResult<Option<[f64; 4]>> {
+pub(crate) fn opt_quat(
+    argument: &str,
+    a: &Option<PyReadonlyArray1<'_, f64>>,
+) -> PyResult<Option<[f64; 4]>> {
     match a {
         None => Ok(None),
         Some(a) => {
             let v = vec_in(a);
             if v.len() != 4 {
-                return Err(invalid(argument, format!("must have shape (4,) ([w, x, y, z]), got ({},)", v.len())));
+                return Err(invalid(
+                    argument,
+                    format!("must have shape (4,) ([w, x, y, z]), got ({},)", v.len()),
+                ));
             }
             Ok(Some([v[0], v[1], v[2], v[3]]))
         }
@@ -42,10 +48,17 @@ pub struct PySymmetricTop {
 impl PySymmetricTop {
     #[new]
     #[pyo3(signature = (i1, i3, omega0, attitude0=None))]
-    fn new(i1: f64, i3: f64, omega0: PyReadonlyArray1<'_, f64>, attitude0: Option<PyReadonlyArray1<'_, f64>>) -> PyResult<Self> {
+    fn new(
+        i1: f64,
+        i3: f64,
+        omega0: PyReadonlyArray1<'_, f64>,
+        attitude0: Option<PyReadonlyArray1<'_, f64>>,
+    ) -> PyResult<Self> {
         let w = Vec3::from(vec3("omega0", &omega0)?);
         let q = opt_quat("attitude0", &attitude0)?;
-        Ok(Self { inner: FreeSymmetricTop::new(i1, i3, w, q).py()? })
+        Ok(Self {
+            inner: FreeSymmetricTop::new(i1, i3, w, q).py()?,
+        })
     }
     #[getter]
     fn precession_rate(&self) -> f64 {
@@ -100,18 +113,39 @@ impl PySymmetricTop {
         self.inner.shape().as_str()
     }
     /// ω at times t (N,) → (N, 3).
-    fn omega<'py>(&self, py: Python<'py>, t: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let rows: Vec<[f64; 3]> = times_in(&t)?.iter().map(|&t| a3(&self.inner.omega(t))).collect();
+    fn omega<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let rows: Vec<[f64; 3]> = times_in(&t)?
+            .iter()
+            .map(|&t| a3(&self.inner.omega(t)))
+            .collect();
         Ok(rows_out(py, &rows))
     }
     /// Attitudes at times t (N,) → (N, 4) [w, x, y, z].
-    fn attitude<'py>(&self, py: Python<'py>, t: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let rows: Vec<[f64; 4]> = times_in(&t)?.iter().map(|&t| self.inner.attitude(t)).collect();
+    fn attitude<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let rows: Vec<[f64; 4]> = times_in(&t)?
+            .iter()
+            .map(|&t| self.inner.attitude(t))
+            .collect();
         Ok(rows_out(py, &rows))
     }
     /// The symmetry axis in space at times t (N,) → (N, 3).
-    fn symmetry_axis<'py>(&self, py: Python<'py>, t: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let rows: Vec<[f64; 3]> = times_in(&t)?.iter().map(|&t| a3(&self.inner.symmetry_axis(t))).collect();
+    fn symmetry_axis<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let rows: Vec<[f64; 3]> = times_in(&t)?
+            .iter()
+            .map(|&t| a3(&self.inner.symmetry_axis(t)))
+            .collect();
         Ok(rows_out(py, &rows))
     }
     /// ω₃² from T and |L| (2.95).
@@ -136,11 +170,17 @@ pub struct PyFreeBody {
 impl PyFreeBody {
     #[new]
     #[pyo3(signature = (moments, omega0, attitude0=None))]
-    fn new(moments: PyReadonlyArray1<'_, f64>, omega0: PyReadonlyArray1<'_, f64>, attitude0: Option<PyReadonlyArray1<'_, f64>>) -> PyResult<Self> {
+    fn new(
+        moments: PyReadonlyArray1<'_, f64>,
+        omega0: PyReadonlyArray1<'_, f64>,
+        attitude0: Option<PyReadonlyArray1<'_, f64>>,
+    ) -> PyResult<Self> {
         let m = vec3("moments", &moments)?;
         let w = Vec3::from(vec3("omega0", &omega0)?);
         let q = opt_quat("attitude0", &attitude0)?;
-        Ok(Self { inner: FreeRigidBody::new(m, w, q).py()? })
+        Ok(Self {
+            inner: FreeRigidBody::new(m, w, q).py()?,
+        })
     }
     #[getter]
     fn energy(&self) -> f64 {
@@ -180,14 +220,29 @@ impl PyFreeBody {
     }
     /// (ω (N, 3) body, attitude (N, 4) [w, x, y, z], signs continuous) at times t (N,).
     #[allow(clippy::type_complexity)]
-    fn state<'py>(&self, py: Python<'py>, t: PyReadonlyArray1<'py, f64>) -> PyResult<(Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<f64>>)> {
+    fn state<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<(Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<f64>>)> {
         let times = times_in(&t)?;
-        let (w, q) = if times.len() > 4096 { py.detach(|| self.inner.sample(&times)) } else { self.inner.sample(&times) };
+        let (w, q) = if times.len() > 4096 {
+            py.detach(|| self.inner.sample(&times))
+        } else {
+            self.inner.sample(&times)
+        };
         Ok((rows_out(py, &w), rows_out(py, &q)))
     }
     /// ω in space components at times t (N,) → (N, 3) (the herpolhode).
-    fn omega_space<'py>(&self, py: Python<'py>, t: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let rows: Vec<[f64; 3]> = times_in(&t)?.iter().map(|&t| a3(&self.inner.omega_space(t))).collect();
+    fn omega_space<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let rows: Vec<[f64; 3]> = times_in(&t)?
+            .iter()
+            .map(|&t| a3(&self.inner.omega_space(t)))
+            .collect();
         Ok(rows_out(py, &rows))
     }
     /// `samples` points of the polhode (N, 3).
@@ -199,9 +254,16 @@ impl PyFreeBody {
 
 /// The stability of steady rotation about each principal axis: [(kind, rate)] × 3.
 #[pyfunction]
-fn axis_stability(moments: PyReadonlyArray1<'_, f64>, spin: f64) -> PyResult<Vec<(&'static str, f64)>> {
+fn axis_stability(
+    moments: PyReadonlyArray1<'_, f64>,
+    spin: f64,
+) -> PyResult<Vec<(&'static str, f64)>> {
     let m = vec3("moments", &moments)?;
-    Ok(core_axis_stability(m, spin).py()?.iter().map(|a| (a.stability.as_str(), a.rate)).collect())
+    Ok(core_axis_stability(m, spin)
+        .py()?
+        .iter()
+        .map(|a| (a.stability.as_str(), a.rate))
+        .collect())
 }
 
 /// Registers this file's classes and functions on the module.

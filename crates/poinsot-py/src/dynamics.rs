@@ -7,7 +7,9 @@
 use std::cell::RefCell;
 
 use numpy::{PyArray1, PyReadonlyArray1, PyReadonlyArray2};
-use poinsot::dynamics::{self as dyn_core, BodyInertia, Method, SimulateOptions, Torque, TorqueContext, TorqueModel};
+use poinsot::dynamics::{
+    self as dyn_core, BodyInertia, Method, SimulateOptions, Torque, TorqueContext, TorqueModel,
+};
 use poinsot::{Mat3, Vec3};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -23,13 +25,15 @@ fn torque_from(kind: &str, vector: [f64; 3], scalar: f64) -> PyResult<Torque> {
         "body" => Torque::Body(Vec3::from(vector)),
         "space" => Torque::Space(Vec3::from(vector)),
         "gravity" => Torque::Gravity { mgl: scalar },
-        "gravity_gradient" => Torque::GravityGradient { mean_motion: scalar },
-        _ => {
-            return Err(invalid(
-                "torque",
-                format!("must be none, body, space, gravity, gravity_gradient or callback, got {kind:?}"),
-            ))
-        }
+        "gravity_gradient" => Torque::GravityGradient {
+            mean_motion: scalar,
+        },
+        _ => return Err(invalid(
+            "torque",
+            format!(
+                "must be none, body, space, gravity, gravity_gradient or callback, got {kind:?}"
+            ),
+        )),
     };
     t.validate().py()?;
     Ok(t)
@@ -54,7 +58,13 @@ impl TorqueModel for PyTorque<'_, '_> {
         let got = self.func.call1((ctx.t, w, q)).and_then(|o| {
             let v: Vec<f64> = o.extract()?;
             if v.len() != 3 {
-                return Err(invalid("torque", format!("the callback must return 3 numbers (body components), got {}", v.len())));
+                return Err(invalid(
+                    "torque",
+                    format!(
+                        "the callback must return 3 numbers (body components), got {}",
+                        v.len()
+                    ),
+                ));
             }
             Ok(Vec3::new(v[0], v[1], v[2]))
         });
@@ -97,7 +107,14 @@ fn dynamics_simulate<'py>(
     let w0 = Vec3::from(vec3("omega0", &omega0)?);
     let q0 = opt_quat("attitude0", &attitude0)?;
     let method = Method::parse(method).py()?;
-    let opts = SimulateOptions { method, dt, samples, rtol, atol, ..SimulateOptions::default() };
+    let opts = SimulateOptions {
+        method,
+        dt,
+        samples,
+        rtol,
+        atol,
+        ..SimulateOptions::default()
+    };
     let vector = vec3("torque", &torque_vector)?;
     let error: RefCell<Option<PyErr>> = RefCell::new(None);
     // Progress: at most ~200 calls into Python.
@@ -116,12 +133,18 @@ fn dynamics_simulate<'py>(
         let Some(func) = &torque_fn else {
             return Err(invalid("torque", "a callback torque needs a callable"));
         };
-        let mut model = PyTorque { py, func, error: &error };
+        let mut model = PyTorque {
+            py,
+            func,
+            error: &error,
+        };
         dyn_core::simulate(&body, w0, q0, duration, &mut model, &opts, &mut report)
     } else {
         let mut torque = torque_from(torque_kind, vector, torque_scalar)?;
         if progress.is_none() {
-            py.detach(|| dyn_core::simulate(&body, w0, q0, duration, &mut torque, &opts, &mut |_| {}))
+            py.detach(|| {
+                dyn_core::simulate(&body, w0, q0, duration, &mut torque, &opts, &mut |_| {})
+            })
         } else {
             dyn_core::simulate(&body, w0, q0, duration, &mut torque, &opts, &mut report)
         }
@@ -161,7 +184,11 @@ fn dynamics_simulate_batch<'py>(
     torque_scalar: f64,
     method: &str,
     dt: Option<f64>,
-) -> PyResult<(Bound<'py, numpy::PyArray2<f64>>, Bound<'py, numpy::PyArray2<f64>>, usize)> {
+) -> PyResult<(
+    Bound<'py, numpy::PyArray2<f64>>,
+    Bound<'py, numpy::PyArray2<f64>>,
+    usize,
+)> {
     let m = rows_in::<3>("moments", &moments)?;
     let w = rows_in::<3>("omega0", &omega0)?;
     let q = match &attitude0 {
@@ -170,8 +197,14 @@ fn dynamics_simulate_batch<'py>(
     };
     let torque = torque_from(torque_kind, vec3("torque", &torque_vector)?, torque_scalar)?;
     let method = Method::parse(method).py()?;
-    let out = py.detach(|| dyn_core::simulate_batch(&m, &w, q.as_deref(), duration, &torque, method, dt)).py()?;
-    Ok((rows_out(py, &out.omega), rows_out(py, &out.attitude), out.steps))
+    let out = py
+        .detach(|| dyn_core::simulate_batch(&m, &w, q.as_deref(), duration, &torque, method, dt))
+        .py()?;
+    Ok((
+        rows_out(py, &out.omega),
+        rows_out(py, &out.attitude),
+        out.steps,
+    ))
 }
 
 /// Registers this file's functions on the module.

@@ -8,7 +8,11 @@ use crate::frames::{rows_out, vec_in};
 
 /// sn, cn, dn, am of u (N,) for parameter m → (N, 4).
 #[pyfunction]
-fn special_jacobi<'py>(py: Python<'py>, u: PyReadonlyArray1<'py, f64>, m: f64) -> PyResult<Bound<'py, PyArray2<f64>>> {
+fn special_jacobi<'py>(
+    py: Python<'py>,
+    u: PyReadonlyArray1<'py, f64>,
+    m: f64,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let u = vec_in(&u);
     poinsot::error::check_finite("u", &u).py()?;
     let j = Jacobi::new(m).py()?;
@@ -32,7 +36,12 @@ fn special_elliptic(kind: &str, phi: f64, n: f64, m: f64) -> PyResult<f64> {
         "F" => special::ellipf(phi, m),
         "EINC" => special::ellipeinc(phi, m),
         "PIINC" => special::ellippiinc(phi, n, m),
-        _ => return Err(invalid("kind", format!("must be one of K, E, PI, F, EINC, PIINC, got {kind:?}"))),
+        _ => {
+            return Err(invalid(
+                "kind",
+                format!("must be one of K, E, PI, F, EINC, PIINC, got {kind:?}"),
+            ))
+        }
     }
     .py()
 }

@@ -142,7 +142,12 @@ fn special_motions_match_dop853() {
         dense: false,
         ..Options::with_tolerances(1e-13, 1e-15)
     };
-    let cases: [([f64; 3], Vec3); 6] = [
+    let cases: [([f64; 3], Vec3); 9] = [
+        // Within 1e-150 and 1e-9 of the unstable axis: m = 1 − 1e-299 and 1 − 1e-18, the
+        // amplitude within round-off of π/2 (found by hypothesis).
+        ([1.0, 2.0, 3.0], Vec3::new(0.0, 1.0, 4.799788254443611e-150)),
+        ([1.0, 2.0, 3.0], Vec3::new(1e-9, 1.0, 0.0)),
+        ([1.0, 2.0, 3.0], Vec3::new(3e-9, 1.0, -1e-9)),
         ([2.0, 2.0, 3.0], Vec3::new(0.3, -1.0, 2.0)), // oblate symmetric
         ([1.0, 2.0, 2.0], Vec3::new(0.3, -1.0, 2.0)), // prolate, symmetry axis 1
         ([2.0, 1.0, 2.0], Vec3::new(0.3, -1.0, 2.0)), // symmetry axis 2

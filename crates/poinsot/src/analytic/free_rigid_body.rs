@@ -34,7 +34,7 @@ use super::rotations::{
 };
 use crate::error::{check_finite, Error, Result};
 use crate::rotation::{check_quaternion, Quaternion};
-use crate::special::{ellipf_complement, ellippiinc_complement, Jacobi};
+use crate::special::Jacobi;
 use crate::{Mat3, Vec3};
 
 /// Which motion a free rigid body performs.
@@ -139,7 +139,10 @@ pub fn check_moments(moments: &[f64; 3]) -> Result<()> {
     if let Some(i) = moments.iter().position(|&v| v <= 0.0) {
         return Err(Error::inertia(
             "moments",
-            format!("principal moments must be > 0 for the body to turn, got {} at index {i}", moments[i]),
+            format!(
+                "principal moments must be > 0 for the body to turn, got {} at index {i}",
+                moments[i]
+            ),
         ));
     }
     let mut m = *moments;
@@ -355,6 +358,33 @@ impl FreeRigidBody {
     }
 }
 
+/// The reduction τ = 2Kj + r and the Jacobi functions at r.
+#[derive(Debug, Clone, Copy)]
+struct Reduced {
+    j: f64,
+    sn: f64,
+    cn: f64,
+    dn: f64,
+}
+
+/// Carlson's R_F(x, y, 1), checked. For `x, y < 1e-24` (next to the separatrix, where
+/// `ellip`'s duplication does not converge over 300 decades) the asymptotic form
+/// `R_F(x, y, 1) = ln(4 / (√x + √y)) + O(max(x, y) ln)` (Carlson & Gustafson 1994), exact to
+/// round-off there.
+fn carlson_f(x: f64, y: f64) -> Result<f64> {
+    if x.max(y) < 1e-24 {
+        return Ok((4.0 / (x.sqrt() + y.sqrt())).ln());
+    }
+    ellip::elliprf(x, y, 1.0)
+        .map_err(|e| Error::invalid("omega0", format!("R_F({x}, {y}, 1): {e}")))
+}
+
+/// Carlson's R_J(x, y, 1, p), checked.
+fn carlson_j(x: f64, y: f64, p: f64) -> Result<f64> {
+    ellip::elliprj(x, y, 1.0, p)
+        .map_err(|e| Error::invalid("omega0", format!("R_J({x}, {y}, 1, {p}): {e}")))
+}
+
 /// The index of the distinct moment when exactly two are equal.
 fn symmetry_axis(m: &[f64; 3]) -> Option<usize> {
     if m[0] == m[1] && m[1] != m[2] {
@@ -465,12 +495,24 @@ impl Elliptic {
         let amp_cn = s_o * amp_o2.sqrt();
         let amp_sn = s_o * s_p * amp_22.sqrt();
         let amp_dn = s_p * amp_p2.sqrt();
-        // The amplitude angle at t = 0: sin φ₀ = sn τ₀, cos φ₀ = cn τ₀.
-        let phi0 = (w.y / amp_sn).atan2(w[other] / amp_cn);
+        // τ₀ from sn τ₀ and cn τ₀ (ratios of ω₀'s components, accurate even where the amplitude
+        // φ₀ is within round-off of ±π/2, as it is next to the separatrix).
+        let (sn0, cn0) = {
+            let (a, b) = (w.y / amp_sn, w[other] / amp_cn);
+            let h = a.hypot(b);
+            (a / h, b / h)
+        };
         let tau0 = if separatrix {
-            phi0.sin().atanh()
+            sn0.atanh()
         } else {
-            ellipf_complement(phi0, jacobi.complement())?
+            let k = jacobi.quarter_period();
+            let f = sn0.abs() * carlson_f(cn0 * cn0, cn0 * cn0 + jacobi.complement() * sn0 * sn0)?;
+            let f = if cn0 >= 0.0 { f } else { 2.0 * k - f };
+            if sn0 < 0.0 {
+                -f
+            } else {
+                f
+            }
         };
         // The precession angle φ (module docs).
         let n = if pole == 2 {
@@ -506,11 +548,12 @@ impl Elliptic {
             q_post: matrix_to_quaternion_unchecked(&row_major(&to_w)),
         };
         if !separatrix {
-            e.pi_complete =
-                ellippiinc_complement(std::f64::consts::FRAC_PI_2, n, jacobi.complement())?;
+            // Π(n | m) = R_F(0, m₁, 1) + (n/3) R_J(0, m₁, 1, 1 − n) (DLMF 19.25.2).
+            let mc = jacobi.complement();
+            e.pi_complete = carlson_f(0.0, mc)? + n / 3.0 * carlson_j(0.0, mc, 1.0 - n)?;
         }
-        let (w_s0, am0) = e.omega_sorted(tau0);
-        e.pi0 = e.pi_of(tau0, am0)?;
+        let (w_s0, red0) = e.omega_sorted(tau0);
+        e.pi0 = e.pi_of(tau0, red0)?;
         let c0 = euler_tilt(&e.l_hat_w(&w_s0));
         e.q_pre = hamilton(&hamilton(attitude0, &conj(&e.q_post)), &conj(&c0));
         check_finite("omega0", &[e.lambda, e.tau0, e.kappa, e.pi0, e.pi_complete]).map_err(
@@ -529,9 +572,9 @@ impl Elliptic {
         self.lambda.mul_add(t, self.tau0)
     }
 
-    /// ω in sorted components at τ, and (j, am of the reduced argument) for Π.
+    /// ω in sorted components at τ, and (j, sn r, cn r, dn r) of the reduction τ = 2Kj + r.
     #[inline]
-    fn omega_sorted(&self, tau: f64) -> (Vec3, (f64, f64)) {
+    fn omega_sorted(&self, tau: f64) -> (Vec3, Reduced) {
         let (j, r) = self.jacobi.reduce(tau);
         let v = self.jacobi.eval_reduced(r);
         let flip = if j.rem_euclid(2.0) == 1.0 { -1.0 } else { 1.0 };
@@ -539,19 +582,32 @@ impl Elliptic {
         w[self.other] = self.amp_cn * flip * v.cn;
         w[1] = self.amp_sn * flip * v.sn;
         w[self.pole] = self.amp_dn * v.dn;
-        (w, (j, v.am))
+        (
+            w,
+            Reduced {
+                j,
+                sn: v.sn,
+                cn: v.cn,
+                dn: v.dn,
+            },
+        )
     }
 
-    /// Π(n; am τ | m) from the reduction of τ (the closed form on the separatrix).
+    /// Π(n; am τ | m) = 2jΠ(n) + Π(n; am r), the last in Carlson's form from sn r, cn r and
+    /// dn r themselves (no amplitude angle, which near m = 1 sits within round-off of ±π/2):
+    /// `Π = s R_F(c², d², 1) + (n/3) s³ R_J(c², d², 1, 1 − n s²)` (DLMF 19.25.14); the
+    /// closed form on the separatrix.
     #[inline]
-    fn pi_of(&self, tau: f64, (j, am_r): (f64, f64)) -> Result<f64> {
+    fn pi_of(&self, tau: f64, red: Reduced) -> Result<f64> {
         if self.separatrix {
             // ∫₀^τ dτ / (1 − n tanh²τ) = [τ + √(−n) atan(√(−n) tanh τ)] / (1 − n).
             let r = (-self.n).sqrt();
             return Ok((tau + r * (r * tau.tanh()).atan()) / (1.0 - self.n));
         }
-        Ok(2.0 * j * self.pi_complete
-            + ellippiinc_complement(am_r, self.n, self.jacobi.complement())?)
+        let (s, c2, d2) = (red.sn, red.cn * red.cn, red.dn * red.dn);
+        let p = s * carlson_f(c2, d2)?
+            + self.n / 3.0 * s * s * s * carlson_j(c2, d2, 1.0 - self.n * s * s)?;
+        Ok(2.0 * red.j * self.pi_complete + p)
     }
 
     /// L̂ in the working frame W (pole third) from ω in sorted components.

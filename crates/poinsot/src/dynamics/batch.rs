@@ -198,7 +198,10 @@ fn one_body(
                 }
             }
             if !y.iter().all(|v| v.is_finite()) {
-                return Err(Error::diverged("t", "the state stopped being finite before the end"));
+                return Err(Error::diverged(
+                    "t",
+                    "the state stopped being finite before the end",
+                ));
             }
             Ok(([y[0], y[1], y[2]], [y[3], y[4], y[5], y[6]], k))
         }

@@ -62,7 +62,10 @@ pub(crate) struct RigidRhs {
 impl RigidRhs {
     pub(crate) fn new(moments: &[f64; 3]) -> Self {
         let [i1, i2, i3] = *moments;
-        Self { k: [(i2 - i3) / i1, (i3 - i1) / i2, (i1 - i2) / i3], inv: [1.0 / i1, 1.0 / i2, 1.0 / i3] }
+        Self {
+            k: [(i2 - i3) / i1, (i3 - i1) / i2, (i1 - i2) / i3],
+            inv: [1.0 / i1, 1.0 / i2, 1.0 / i3],
+        }
     }
 
     #[inline(always)]
@@ -83,12 +86,20 @@ impl RigidRhs {
     /// One classic RK4 step of size `h` from `(t, y)`, the quaternion renormalised after it;
     /// `torque(t, ω, q)` gives N in principal body components.
     #[inline(always)]
-    pub(crate) fn rk4_step<F: FnMut(f64, &Vec3, &Quaternion) -> Vec3>(&self, t: f64, y: &[f64; 7], h: f64, torque: &mut F) -> [f64; 7] {
+    pub(crate) fn rk4_step<F: FnMut(f64, &Vec3, &Quaternion) -> Vec3>(
+        &self,
+        t: f64,
+        y: &[f64; 7],
+        h: f64,
+        torque: &mut F,
+    ) -> [f64; 7] {
         #[inline(always)]
         fn axpy(y: &[f64; 7], a: f64, k: &[f64; 7]) -> [f64; 7] {
             std::array::from_fn(|i| y[i] + a * k[i])
         }
-        let mut n = |t: f64, y: &[f64; 7]| torque(t, &Vec3::new(y[0], y[1], y[2]), &[y[3], y[4], y[5], y[6]]);
+        let mut n = |t: f64, y: &[f64; 7]| {
+            torque(t, &Vec3::new(y[0], y[1], y[2]), &[y[3], y[4], y[5], y[6]])
+        };
         let k1 = self.eval(y, &n(t, y));
         let y2 = axpy(y, 0.5 * h, &k1);
         let k2 = self.eval(&y2, &n(t + 0.5 * h, &y2));
@@ -97,8 +108,10 @@ impl RigidRhs {
         let y4 = axpy(y, h, &k3);
         let k4 = self.eval(&y4, &n(t + h, &y4));
         let h6 = h * (1.0 / 6.0);
-        let mut out: [f64; 7] = std::array::from_fn(|i| y[i] + h6 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]));
-        let inv_norm = 1.0 / (out[3] * out[3] + out[4] * out[4] + out[5] * out[5] + out[6] * out[6]).sqrt();
+        let mut out: [f64; 7] =
+            std::array::from_fn(|i| y[i] + h6 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]));
+        let inv_norm =
+            1.0 / (out[3] * out[3] + out[4] * out[4] + out[5] * out[5] + out[6] * out[6]).sqrt();
         for v in &mut out[3..] {
             *v *= inv_norm;
         }

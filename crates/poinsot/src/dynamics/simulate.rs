@@ -42,13 +42,15 @@ impl Method {
             "splitting" | "splitting2" | "lie-poisson" => Method::Splitting(2),
             "splitting4" => Method::Splitting(4),
             "splitting6" => Method::Splitting(6),
-            other => return Err(Error::invalid(
-                "method",
-                format!(
+            other => {
+                return Err(Error::invalid(
+                    "method",
+                    format!(
                     "must be one of 'auto', 'exact', 'rk4', 'dop853', 'splitting2', 'splitting4', \
                          'splitting6', got {other:?}"
                 ),
-            )),
+                ))
+            }
         })
     }
 
