@@ -9,6 +9,10 @@ The public API (see ``DESIGN.md``'s contract and the README):
 * moving frames: :class:`MovingFrame` (eqs. 2.1–2.28), :func:`simulate_particle`;
 * the rotating Earth: :class:`Earth` (effective gravity, Coriolis, the falling body of
   eq. 2.42, projectiles, the Foucault pendulum, inertial oscillations);
+* rigid-body dynamics: :func:`simulate` (Euler's equations 2.71 with torques; exact flow,
+  Lie–Poisson splitting, RK4, DOP853), :func:`simulate_batch`, :class:`FreeSymmetricTop`
+  (2.77–2.97), :class:`FreeRigidBody` (the exact asymmetric top), :func:`axis_stability`;
+  :mod:`poinsot.special` holds the Jacobi elliptic functions;
 * errors: :class:`PoinsotError` (a ``ValueError``) and its subclasses.
 
 SI units and radians everywhere; quaternions are scalar-first ``[w, x, y, z]``.
@@ -19,13 +23,26 @@ from __future__ import annotations
 from ._core import __version__
 from .body import *  # noqa: F401,F403
 from .body import __all__ as _body_all
+from .dynamics import *  # noqa: F401,F403
+from .dynamics import __all__ as _dynamics_all
 from .earth import *  # noqa: F401,F403
 from .earth import __all__ as _earth_all
 from .errors import *  # noqa: F401,F403
 from .errors import __all__ as _errors_all
 from .frames import *  # noqa: F401,F403
 from .frames import __all__ as _frames_all
+from .free import *  # noqa: F401,F403
+from .free import __all__ as _free_all
 from .rotation import *  # noqa: F401,F403
 from .rotation import __all__ as _rotation_all
 
-__all__ = ["__version__", *_errors_all, *_rotation_all, *_body_all, *_frames_all, *_earth_all]
+__all__ = [
+    "__version__",
+    *_errors_all,
+    *_rotation_all,
+    *_body_all,
+    *_frames_all,
+    *_earth_all,
+    *_dynamics_all,
+    *_free_all,
+]

@@ -5,12 +5,15 @@
 //! the typed public API lives in `python/poinsot`.
 #![forbid(unsafe_code)]
 
+mod analytic;
 mod convert;
+mod dynamics;
 mod earth;
 mod errors;
 mod frames;
 mod inertia;
 mod rotation;
+mod special;
 
 use pyo3::prelude::*;
 
@@ -23,5 +26,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     inertia::register(m)?;
     frames::register(m)?;
     earth::register(m)?;
+    special::register(m)?;
+    analytic::register(m)?;
+    dynamics::register(m)?;
     Ok(())
 }

@@ -3,12 +3,16 @@
 //! * [`dop853`] / [`Dop853`]: the adaptive embedded Dormand–Prince 8(5,3) pair with error
 //!   control, 7th-order dense output and terminal events (Hairer, Nørsett & Wanner,
 //!   *Solving Ordinary Differential Equations I*, §II.5–II.6);
-//! * [`rk4`]: the classic fixed-step 4th-order Runge–Kutta method.
+//! * [`rk4`]: the classic fixed-step 4th-order Runge–Kutta method;
+//! * [`compose`]: symmetric composition of a symmetric second-order map to orders 4 and 6
+//!   (triple jump, Kahan–Li), used by the Lie–Poisson splitting of the rigid body
+//!   (`crate::dynamics`).
 //!
 //! A system is anything implementing [`OdeSystem`] — in particular any closure
 //! `FnMut(t, &y, &mut dy)` — over a state implementing [`OdeState`] (fixed-size arrays
 //! `[f64; N]`, `Vec<f64>`, nalgebra `SVector<f64, N>`).
 
+mod composition;
 mod dop853;
 mod dop853_coefficients;
 mod options;
@@ -16,6 +20,7 @@ mod rk4;
 mod solution;
 mod state;
 
+pub use composition::{compose, composition_coefficients, SymmetricStep, KAHAN_LI_6, TRIPLE_JUMP_4};
 pub use dop853::{dop853, dop853_scan, dop853_until, Dop853, Scan};
 pub use options::{Crossing, Options, Stats, MIN_RTOL};
 pub use rk4::{rk4, rk4_step};

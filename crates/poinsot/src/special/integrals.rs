@@ -106,6 +106,46 @@ pub fn ellippiinc(phi: f64, n: f64, m: f64) -> Result<f64> {
     mapped(ellip::ellippiinc(phi, n, m), "phi")
 }
 
+/// F(φ | m) from the **complementary** parameter `mc = 1 − m` (`0 < mc ≤ 1`), any real φ:
+/// `F = sin φ · R_F(cos²φ, cos²φ + m_c sin²φ, 1)` on `|φ| ≤ π/2` (DLMF 19.25.5, with
+/// `1 − m sin²φ` written without cancellation) and `F(φ + jπ) = F(φ) + 2jK`. Use it near
+/// `m = 1`, where `mc` carries digits that `1 − m` has lost. Errors name `phi` or `mc`.
+pub fn ellipf_complement(phi: f64, mc: f64) -> Result<f64> {
+    ellippiinc_complement(phi, 0.0, mc)
+}
+
+/// Π(n; φ | m) from the complementary parameter `mc = 1 − m` (`0 < mc ≤ 1`), for `n < 1` and
+/// any real φ: `Π = s R_F(c², Δ², 1) + (n/3) s³ R_J(c², Δ², 1, 1 − n s²)` with `s = sin φ`,
+/// `c = cos φ`, `Δ² = c² + m_c s²` on `|φ| ≤ π/2` (DLMF 19.25.14) and
+/// `Π(n; φ + jπ) = Π(n; φ) + 2jΠ(n)`. Errors name `phi`, `n` or `mc`.
+pub fn ellippiinc_complement(phi: f64, n: f64, mc: f64) -> Result<f64> {
+    check_finite("phi", &[phi])?;
+    check_finite("n", &[n])?;
+    if !(mc.is_finite() && mc > 0.0 && mc <= 1.0) {
+        return Err(Error::invalid("mc", format!("the complementary parameter must be in (0, 1], got {mc}")));
+    }
+    if n >= 1.0 {
+        return Err(Error::invalid("n", format!("must be < 1, got {n}")));
+    }
+    let j = (phi / std::f64::consts::PI).round();
+    let r = phi - j * std::f64::consts::PI;
+    let (s, c) = r.sin_cos();
+    let c2 = c * c;
+    let d2 = c2 + mc * s * s;
+    let mut value = s * mapped(ellip::elliprf(c2, d2, 1.0), "phi")?;
+    let mut complete = 0.0;
+    if j != 0.0 {
+        complete = mapped(ellip::elliprf(0.0, mc, 1.0), "mc")?;
+    }
+    if n != 0.0 {
+        value += n / 3.0 * s * s * s * mapped(ellip::elliprj(c2, d2, 1.0, 1.0 - n * s * s), "n")?;
+        if j != 0.0 {
+            complete += n / 3.0 * mapped(ellip::elliprj(0.0, mc, 1.0, 1.0 - n), "n")?;
+        }
+    }
+    Ok(value + 2.0 * j * complete)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

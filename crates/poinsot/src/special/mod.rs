@@ -10,5 +10,7 @@ mod dd;
 mod integrals;
 mod jacobi;
 
-pub use integrals::{ellipe, ellipeinc, ellipf, ellipk, ellippi, ellippiinc};
+pub use integrals::{
+    ellipe, ellipeinc, ellipf, ellipf_complement, ellipk, ellippi, ellippiinc, ellippiinc_complement,
+};
 pub use jacobi::{am, cn, dn, jacobi_all, sn, sncndn, Jacobi, JacobiValues};

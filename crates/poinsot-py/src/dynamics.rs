@@ -1,0 +1,215 @@
+//! Bindings of `poinsot::dynamics` (conversion and error mapping only).
+//!
+//! A torque travels as a kind ("none", "body", "space", "gravity", "gravity_gradient",
+//! "callback"), a (3,) vector (body/space), a scalar (m g l, or the mean motion) and, for
+//! "callback", a Python callable `f(t, omega (3,), attitude (4,) [w, x, y, z]) -> (3,)` giving
+//! the torque in body components.
+use std::cell::RefCell;
+
+use numpy::{PyArray1, PyReadonlyArray1, PyReadonlyArray2};
+use poinsot::dynamics::{
+    self as dyn_core, BodyInertia, Method, SimulateOptions, Torque, TorqueContext, TorqueModel,
+};
+use poinsot::{Mat3, Vec3};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use crate::analytic::opt_quat;
+use crate::convert::{mat3, vec3};
+use crate::errors::{invalid, IntoPy};
+use crate::frames::{rows_in, rows_out};
+
+fn torque_from(kind: &str, vector: [f64; 3], scalar: f64) -> PyResult<Torque> {
+    let t = match kind {
+        "none" => Torque::None,
+        "body" => Torque::Body(Vec3::from(vector)),
+        "space" => Torque::Space(Vec3::from(vector)),
+        "gravity" => Torque::Gravity { mgl: scalar },
+        "gravity_gradient" => Torque::GravityGradient {
+            mean_motion: scalar,
+        },
+        _ => return Err(invalid(
+            "torque",
+            format!(
+                "must be none, body, space, gravity, gravity_gradient or callback, got {kind:?}"
+            ),
+        )),
+    };
+    t.validate().py()?;
+    Ok(t)
+}
+
+/// A torque model calling Python; the first Python error is kept and NaN returned (which stops
+/// the integration).
+struct PyTorque<'a, 'py> {
+    py: Python<'py>,
+    func: &'a Bound<'py, PyAny>,
+    error: &'a RefCell<Option<PyErr>>,
+}
+
+impl TorqueModel for PyTorque<'_, '_> {
+    fn torque(&mut self, ctx: &TorqueContext<'_>) -> Vec3 {
+        if self.error.borrow().is_some() {
+            return Vec3::repeat(f64::NAN);
+        }
+        let w = PyArray1::from_slice(self.py, ctx.omega.as_slice());
+        let q = poinsot::rotation::matrix_to_quaternion(ctx.attitude).unwrap_or([f64::NAN; 4]);
+        let q = PyArray1::from_slice(self.py, &q);
+        let got = self.func.call1((ctx.t, w, q)).and_then(|o| {
+            let v: Vec<f64> = o.extract()?;
+            if v.len() != 3 {
+                return Err(invalid(
+                    "torque",
+                    format!(
+                        "the callback must return 3 numbers (body components), got {}",
+                        v.len()
+                    ),
+                ));
+            }
+            Ok(Vec3::new(v[0], v[1], v[2]))
+        });
+        match got {
+            Ok(v) => v,
+            Err(e) => {
+                self.error.borrow_mut().get_or_insert(e);
+                Vec3::repeat(f64::NAN)
+            }
+        }
+    }
+}
+
+/// Simulates one body (see `poinsot.simulate`); returns a dict of numpy arrays ("t", "omega",
+/// "attitude", "angular_momentum", "energy", "potential", "power") and counters ("method",
+/// "step", "steps", "torque_evaluations").
+#[pyfunction]
+#[pyo3(signature = (inertia, omega0, attitude0, duration, torque_kind, torque_vector, torque_scalar, torque_fn, method, dt, samples, rtol, atol, progress))]
+#[allow(clippy::too_many_arguments)]
+fn dynamics_simulate<'py>(
+    py: Python<'py>,
+    inertia: PyReadonlyArray2<'py, f64>,
+    omega0: PyReadonlyArray1<'py, f64>,
+    attitude0: Option<PyReadonlyArray1<'py, f64>>,
+    duration: f64,
+    torque_kind: &str,
+    torque_vector: PyReadonlyArray1<'py, f64>,
+    torque_scalar: f64,
+    torque_fn: Option<Bound<'py, PyAny>>,
+    method: &str,
+    dt: Option<f64>,
+    samples: usize,
+    rtol: f64,
+    atol: f64,
+    progress: Option<Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let rows = mat3("inertia", &inertia)?;
+    let tensor = Mat3::from_fn(|i, j| rows[i][j]);
+    let body = BodyInertia::from_tensor(&tensor).py()?;
+    let w0 = Vec3::from(vec3("omega0", &omega0)?);
+    let q0 = opt_quat("attitude0", &attitude0)?;
+    let method = Method::parse(method).py()?;
+    let opts = SimulateOptions {
+        method,
+        dt,
+        samples,
+        rtol,
+        atol,
+        ..SimulateOptions::default()
+    };
+    let vector = vec3("torque", &torque_vector)?;
+    let error: RefCell<Option<PyErr>> = RefCell::new(None);
+    // Progress: at most ~200 calls into Python.
+    let mut next_report = 0.0;
+    let mut report = |f: f64| {
+        if let Some(cb) = &progress {
+            if f >= next_report || f >= 1.0 {
+                next_report = f + 0.005;
+                if let Err(e) = cb.call1((f,)) {
+                    error.borrow_mut().get_or_insert(e);
+                }
+            }
+        }
+    };
+    let result = if torque_kind == "callback" {
+        let Some(func) = &torque_fn else {
+            return Err(invalid("torque", "a callback torque needs a callable"));
+        };
+        let mut model = PyTorque {
+            py,
+            func,
+            error: &error,
+        };
+        dyn_core::simulate(&body, w0, q0, duration, &mut model, &opts, &mut report)
+    } else {
+        let mut torque = torque_from(torque_kind, vector, torque_scalar)?;
+        if progress.is_none() {
+            py.detach(|| {
+                dyn_core::simulate(&body, w0, q0, duration, &mut torque, &opts, &mut |_| {})
+            })
+        } else {
+            dyn_core::simulate(&body, w0, q0, duration, &mut torque, &opts, &mut report)
+        }
+    };
+    if let Some(e) = error.into_inner() {
+        return Err(e);
+    }
+    let tr = result.py()?;
+    let d = PyDict::new(py);
+    d.set_item("t", PyArray1::from_vec(py, tr.t))?;
+    d.set_item("omega", rows_out(py, &tr.omega))?;
+    d.set_item("attitude", rows_out(py, &tr.attitude))?;
+    d.set_item("angular_momentum", rows_out(py, &tr.angular_momentum))?;
+    d.set_item("energy", PyArray1::from_vec(py, tr.energy))?;
+    d.set_item("potential", PyArray1::from_vec(py, tr.potential))?;
+    d.set_item("power", PyArray1::from_vec(py, tr.power))?;
+    d.set_item("method", tr.method.name())?;
+    d.set_item("step", tr.step)?;
+    d.set_item("steps", tr.steps)?;
+    d.set_item("torque_evaluations", tr.torque_evaluations)?;
+    Ok(d)
+}
+
+/// Simulates many bodies in parallel (see `poinsot.simulate_batch`): principal moments (N, 3),
+/// ω₀ (N, 3), optional attitudes (N, 4) → (ω (N, 3), attitude (N, 4), steps per body).
+#[pyfunction]
+#[pyo3(signature = (moments, omega0, attitude0, duration, torque_kind, torque_vector, torque_scalar, method, dt))]
+#[allow(clippy::too_many_arguments, clippy::type_complexity)]
+fn dynamics_simulate_batch<'py>(
+    py: Python<'py>,
+    moments: PyReadonlyArray2<'py, f64>,
+    omega0: PyReadonlyArray2<'py, f64>,
+    attitude0: Option<PyReadonlyArray2<'py, f64>>,
+    duration: f64,
+    torque_kind: &str,
+    torque_vector: PyReadonlyArray1<'py, f64>,
+    torque_scalar: f64,
+    method: &str,
+    dt: Option<f64>,
+) -> PyResult<(
+    Bound<'py, numpy::PyArray2<f64>>,
+    Bound<'py, numpy::PyArray2<f64>>,
+    usize,
+)> {
+    let m = rows_in::<3>("moments", &moments)?;
+    let w = rows_in::<3>("omega0", &omega0)?;
+    let q = match &attitude0 {
+        Some(a) => Some(rows_in::<4>("attitude0", a)?),
+        None => None,
+    };
+    let torque = torque_from(torque_kind, vec3("torque", &torque_vector)?, torque_scalar)?;
+    let method = Method::parse(method).py()?;
+    let out = py
+        .detach(|| dyn_core::simulate_batch(&m, &w, q.as_deref(), duration, &torque, method, dt))
+        .py()?;
+    Ok((
+        rows_out(py, &out.omega),
+        rows_out(py, &out.attitude),
+        out.steps,
+    ))
+}
+
+/// Registers this file's functions on the module.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(dynamics_simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(dynamics_simulate_batch, m)?)?;
+    Ok(())
+}

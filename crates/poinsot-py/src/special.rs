@@ -1,0 +1,54 @@
+//! Bindings of `poinsot::special` (conversion only).
+use numpy::{PyArray2, PyReadonlyArray1};
+use poinsot::special::{self, Jacobi};
+use pyo3::prelude::*;
+
+use crate::errors::{invalid, IntoPy};
+use crate::frames::{rows_out, vec_in};
+
+/// sn, cn, dn, am of u (N,) for parameter m → (N, 4).
+#[pyfunction]
+fn special_jacobi<'py>(
+    py: Python<'py>,
+    u: PyReadonlyArray1<'py, f64>,
+    m: f64,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let u = vec_in(&u);
+    poinsot::error::check_finite("u", &u).py()?;
+    let j = Jacobi::new(m).py()?;
+    let rows: Vec<[f64; 4]> = u
+        .iter()
+        .map(|&x| {
+            let v = j.eval(x);
+            [v.sn, v.cn, v.dn, v.am]
+        })
+        .collect();
+    Ok(rows_out(py, &rows))
+}
+
+/// Legendre's elliptic integral `kind` ("K", "E", "PI", "F", "EINC", "PIINC") at (phi, n, m).
+#[pyfunction]
+fn special_elliptic(kind: &str, phi: f64, n: f64, m: f64) -> PyResult<f64> {
+    match kind {
+        "K" => special::ellipk(m),
+        "E" => special::ellipe(m),
+        "PI" => special::ellippi(n, m),
+        "F" => special::ellipf(phi, m),
+        "EINC" => special::ellipeinc(phi, m),
+        "PIINC" => special::ellippiinc(phi, n, m),
+        _ => {
+            return Err(invalid(
+                "kind",
+                format!("must be one of K, E, PI, F, EINC, PIINC, got {kind:?}"),
+            ))
+        }
+    }
+    .py()
+}
+
+/// Registers this file's functions on the module.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(special_jacobi, m)?)?;
+    m.add_function(wrap_pyfunction!(special_elliptic, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,290 @@
+//! The free symmetric top, `I₁ = I₂ ≠ I₃` (the unit's "Torque free motion", eqs. 2.77–2.97),
+//! in closed form: ω(t), the body and space cones, and the attitude.
+//!
+//! Conventions (the unit's, pinned by tests):
+//! * body axes 1, 2 carry the equal moments `I₁`, axis 3 is the symmetry axis (`I₃`);
+//! * `Ω = (I₁ − I₃) ω₃ / I₁` (2.83) with `ω̇₁ = Ω ω₂`, `ω̇₂ = −Ω ω₁` (2.81–2.82; the unit's
+//!   2.78 misprints the sign, see the errata), so that `ω₁ = A sin(Ωt + θ₀)`,
+//!   `ω₂ = A cos(Ωt + θ₀)` (2.85–2.86). Goldstein writes the opposite sign of Ω: same physics;
+//! * attitudes are unit quaternions `[w, x, y, z]` rotating body components into space
+//!   components; the angular momentum `L` is fixed in space.
+
+use super::rotations::{axis_angle_q, coordinate_q, hamilton};
+use crate::error::{check_finite, Error, Result};
+use crate::rotation::{check_quaternion, Quaternion};
+use crate::Vec3;
+
+/// Whether the symmetric top is prolate (cigar, `I₃ < I₁`), oblate (disk, `I₃ > I₁`) or
+/// spherical.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TopShape {
+    /// `I₃ < I₁`: ω lies between the symmetry axis and L; the body cone rolls on the
+    /// **outside** of the space cone, and Ω has the sense of ω₃.
+    Prolate,
+    /// `I₃ > I₁`: L lies between the symmetry axis and ω; the body cone surrounds the space cone
+    /// and rolls on it with its **inside**, and Ω is opposite to ω₃.
+    Oblate,
+    /// `I₃ = I₁`: ω is constant, both cones degenerate to lines.
+    Spherical,
+}
+
+impl TopShape {
+    /// "prolate", "oblate" or "spherical".
+    pub fn as_str(self) -> &'static str {
+        match self {
+            TopShape::Prolate => "prolate",
+            TopShape::Oblate => "oblate",
+            TopShape::Spherical => "spherical",
+        }
+    }
+}
+
+/// The exact torque-free motion of a symmetric top (all of the unit's 2.80–2.97).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FreeSymmetricTop {
+    i1: f64,
+    i3: f64,
+    omega0: Vec3,
+    attitude0: Quaternion,
+    sym: SymmetricMotion,
+}
+
+/// The closed-form motion of a body with two equal moments about symmetry axis `axis`:
+/// `R(t) = R₀ · Rot(L̂_b(0), |L| t / I⊥) · Rot(e_axis, Ω t)` with `Ω = (I⊥ − I_s) ω_s / I⊥`,
+/// i.e. a precession about the fixed L at rate |L|/I⊥ composed with a spin about the symmetry
+/// axis at rate Ω relative to the precessing frame (Landau & Lifshitz §33).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct SymmetricMotion {
+    pub axis: usize,
+    pub i_perp: f64,
+    pub i_sym: f64,
+    pub omega0: Vec3,
+    pub attitude0: Quaternion,
+    /// L(0) in body components, unit.
+    pub l_hat_body0: Vec3,
+    pub l_norm: f64,
+    /// Ω = (I⊥ − I_s) ω_s / I⊥.
+    pub big_omega: f64,
+}
+
+impl SymmetricMotion {
+    pub(crate) fn new(axis: usize, moments: [f64; 3], omega0: Vec3, attitude0: Quaternion) -> Self {
+        let i_sym = moments[axis];
+        let i_perp = moments[(axis + 1) % 3];
+        let l_body = Vec3::new(
+            moments[0] * omega0.x,
+            moments[1] * omega0.y,
+            moments[2] * omega0.z,
+        );
+        let l_norm = l_body.norm();
+        let l_hat_body0 = if l_norm > 0.0 {
+            l_body / l_norm
+        } else {
+            Vec3::z()
+        };
+        let big_omega = (i_perp - i_sym) * omega0[axis] / i_perp;
+        Self {
+            axis,
+            i_perp,
+            i_sym,
+            omega0,
+            attitude0,
+            l_hat_body0,
+            l_norm,
+            big_omega,
+        }
+    }
+
+    /// ω(t) in body components: the part across the symmetry axis turns by −Ωt about it.
+    pub(crate) fn omega(&self, t: f64) -> Vec3 {
+        let (a, b) = ((self.axis + 1) % 3, (self.axis + 2) % 3);
+        let (s, c) = (self.big_omega * t).sin_cos();
+        let mut w = self.omega0;
+        w[a] = self.omega0[a] * c + self.omega0[b] * s;
+        w[b] = self.omega0[b] * c - self.omega0[a] * s;
+        w
+    }
+
+    pub(crate) fn attitude(&self, t: f64) -> Quaternion {
+        let precession = axis_angle_q(&self.l_hat_body0, self.l_norm * t / self.i_perp);
+        let spin = coordinate_q(self.axis, self.big_omega * t);
+        hamilton(&hamilton(&self.attitude0, &precession), &spin)
+    }
+}
+
+/// Checks that `omega` (named `argument`) is finite and not zero.
+pub(crate) fn check_omega(argument: &str, omega: &Vec3) -> Result<()> {
+    check_finite(argument, omega.as_slice())?;
+    if omega.norm() == 0.0 {
+        return Err(Error::invalid(
+            argument,
+            "must be nonzero: a body at rest has no torque-free motion to solve (got [0, 0, 0])",
+        ));
+    }
+    Ok(())
+}
+
+impl FreeSymmetricTop {
+    /// The top with equal moments `i1` about body axes 1 and 2 and `i3` about the symmetry
+    /// axis 3 (kg·m²), turning with body angular velocity `omega0` (rad/s) at t = 0 in the
+    /// attitude `attitude0` (`[w, x, y, z]`, body → space; identity if `None`).
+    ///
+    /// Errors: `I1`, `I3` not finite and > 0, or `I3 > 2 I1` (the triangle inequality
+    /// `I₁ + I₂ ≥ I₃` of a real body), named `I3` ([`crate::ErrorKind::InvalidInertia`]);
+    /// `omega0` non-finite or zero; `attitude0` not a unit quaternion.
+    pub fn new(i1: f64, i3: f64, omega0: Vec3, attitude0: Option<Quaternion>) -> Result<Self> {
+        for (name, v) in [("I1", i1), ("I3", i3)] {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(Error::inertia(
+                    name,
+                    format!("must be finite and > 0, got {v}"),
+                ));
+            }
+        }
+        if i3 > 2.0 * i1 * (1.0 + 8.0 * f64::EPSILON) {
+            return Err(Error::inertia(
+                "I3",
+                format!(
+                    "must satisfy the triangle inequality I3 <= I1 + I2 = 2 I1 = {}, got {i3}",
+                    2.0 * i1
+                ),
+            ));
+        }
+        check_omega("omega0", &omega0)?;
+        let attitude0 = match attitude0 {
+            Some(q) => check_quaternion("attitude0", &q, false)?,
+            None => [1.0, 0.0, 0.0, 0.0],
+        };
+        let sym = SymmetricMotion::new(2, [i1, i1, i3], omega0, attitude0);
+        Ok(Self {
+            i1,
+            i3,
+            omega0,
+            attitude0,
+            sym,
+        })
+    }
+
+    /// I₁ = I₂ (kg·m²).
+    pub fn i1(&self) -> f64 {
+        self.i1
+    }
+    /// I₃ (kg·m²).
+    pub fn i3(&self) -> f64 {
+        self.i3
+    }
+    /// ω at t = 0 (body, rad/s).
+    pub fn omega0(&self) -> Vec3 {
+        self.omega0
+    }
+    /// The attitude at t = 0.
+    pub fn attitude0(&self) -> Quaternion {
+        self.attitude0
+    }
+
+    /// ω₃, constant (2.79–2.80) (rad/s).
+    pub fn omega3(&self) -> f64 {
+        self.omega0.z
+    }
+
+    /// Ω = (I₁ − I₃) ω₃ / I₁ (2.83), the rate at which ω precesses about the symmetry axis in
+    /// the body (rad/s); ω̇₁ = Ω ω₂, ω̇₂ = −Ω ω₁.
+    pub fn precession_rate(&self) -> f64 {
+        self.sym.big_omega
+    }
+
+    /// A = (ω₁² + ω₂²)^½, the constant magnitude of ω across the symmetry axis (2.85–2.88)
+    /// (rad/s).
+    pub fn amplitude(&self) -> f64 {
+        self.omega0.x.hypot(self.omega0.y)
+    }
+
+    /// θ₀ of ω₁ = A sin(Ωt + θ₀), ω₂ = A cos(Ωt + θ₀) (2.85–2.86) (rad, in (−π, π]).
+    pub fn phase(&self) -> f64 {
+        self.omega0.x.atan2(self.omega0.y)
+    }
+
+    /// |ω| = (A² + ω₃²)^½, constant (2.89) (rad/s).
+    pub fn omega_magnitude(&self) -> f64 {
+        self.omega0.norm()
+    }
+
+    /// The kinetic energy T = ½ I₁ A² + ½ I₃ ω₃² (2.91) (J).
+    pub fn energy(&self) -> f64 {
+        let a2 = self.omega0.x * self.omega0.x + self.omega0.y * self.omega0.y;
+        0.5 * (self.i1 * a2 + self.i3 * self.omega0.z * self.omega0.z)
+    }
+
+    /// |L| = (I₁² A² + I₃² ω₃²)^½ (2.93) (kg·m²/s).
+    pub fn angular_momentum_magnitude(&self) -> f64 {
+        self.sym.l_norm
+    }
+
+    /// L in space components (constant) (kg·m²/s).
+    pub fn angular_momentum(&self) -> Vec3 {
+        super::rotations::rotate(&self.attitude0, &(self.sym.l_hat_body0 * self.sym.l_norm))
+    }
+
+    /// The half-angle α_b of the body cone, traced by ω about the symmetry axis in the body:
+    /// tan α_b = A / ω₃ (2.90) (rad, in [0, π]; above π/2 when ω₃ < 0).
+    pub fn body_cone_angle(&self) -> f64 {
+        self.amplitude().atan2(self.omega0.z)
+    }
+
+    /// The half-angle α_s of the space cone, traced by ω about the fixed L:
+    /// cos α_s = ω·L / (ω L) = 2T / (ω L) (2.97) (rad, in [0, π/2]); computed as
+    /// atan2(|ω × L|, ω·L) for accuracy at small angles.
+    pub fn space_cone_angle(&self) -> f64 {
+        let w = self.omega0;
+        let l = Vec3::new(self.i1 * w.x, self.i1 * w.y, self.i3 * w.z);
+        w.cross(&l).norm().atan2(w.dot(&l))
+    }
+
+    /// The constant angle between L and the symmetry axis: tan θ = I₁ A / (I₃ ω₃) (rad, in
+    /// [0, π]).
+    pub fn nutation_angle(&self) -> f64 {
+        (self.i1 * self.amplitude()).atan2(self.i3 * self.omega0.z)
+    }
+
+    /// The rate at which the symmetry axis and ω precess about L in space, |L| / I₁ (rad/s).
+    pub fn space_precession_rate(&self) -> f64 {
+        self.sym.l_norm / self.i1
+    }
+
+    /// Prolate, oblate or spherical (which cone rolls inside or outside which).
+    pub fn shape(&self) -> TopShape {
+        if self.i3 < self.i1 {
+            TopShape::Prolate
+        } else if self.i3 > self.i1 {
+            TopShape::Oblate
+        } else {
+            TopShape::Spherical
+        }
+    }
+
+    /// ω(t) in body components (2.80, 2.85–2.86) (rad/s).
+    pub fn omega(&self, t: f64) -> Vec3 {
+        self.sym.omega(t)
+    }
+
+    /// The attitude at t (`[w, x, y, z]`, body → space), in closed form:
+    /// `R(t) = R₀ · Rot(L̂_b(0), |L| t / I₁) · Rot(e₃, Ω t)`.
+    pub fn attitude(&self, t: f64) -> Quaternion {
+        self.sym.attitude(t)
+    }
+
+    /// The symmetry axis e₃ in space components at t.
+    pub fn symmetry_axis(&self, t: f64) -> Vec3 {
+        super::rotations::rotate(&self.attitude(t), &Vec3::z())
+    }
+
+    /// ω₃² from the energy and |L|: ω₃² = (L² − 2 T I₁) / (I₃ (I₃ − I₁)) (2.95); `I₁ ≠ I₃`.
+    pub fn omega3_squared_from(i1: f64, i3: f64, energy: f64, l: f64) -> f64 {
+        (l * l - 2.0 * energy * i1) / (i3 * (i3 - i1))
+    }
+
+    /// A² from the energy and |L|: A² = (L² − 2 I₃ T) / (I₁ (I₁ − I₃)) (2.96); `I₁ ≠ I₃`.
+    pub fn amplitude_squared_from(i1: f64, i3: f64, energy: f64, l: f64) -> f64 {
+        (l * l - 2.0 * i3 * energy) / (i1 * (i1 - i3))
+    }
+}

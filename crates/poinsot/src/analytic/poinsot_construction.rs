@@ -1,0 +1,111 @@
+//! Poinsot's construction and the stability of steady rotations.
+//!
+//! In the body, ω lies on the energy ellipsoid `ω·I·ω = 2T` and on the momentum ellipsoid
+//! `|I·ω|² = L²`; their intersection is the **polhode**. In space, ω's tip moves on the
+//! **invariable plane** `ω·L̂ = 2T/|L|`, tracing the **herpolhode**: the inertia ellipsoid
+//! `x·I·x = 1`, scaled by (2T)^½ and fixed to the body, rolls without slipping on that plane,
+//! touching it at ω (Poinsot 1834; Goldstein §5.6).
+
+use super::free_rigid_body::FreeRigidBody;
+use crate::error::{check_finite, Error, Result};
+use crate::Vec3;
+
+/// Whether small deviations from a steady rotation stay small.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stability {
+    /// Rotation about the largest- or smallest-moment axis: deviations oscillate.
+    Stable,
+    /// Rotation about the intermediate axis: deviations grow exponentially.
+    Unstable,
+    /// Two equal moments about the other axes: deviations neither grow nor oscillate
+    /// (linearly).
+    Neutral,
+}
+
+impl Stability {
+    /// "stable", "unstable" or "neutral".
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Stability::Stable => "stable",
+            Stability::Unstable => "unstable",
+            Stability::Neutral => "neutral",
+        }
+    }
+}
+
+/// The linear stability of the steady rotation about one principal axis.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AxisStability {
+    /// Stable, unstable or neutral.
+    pub stability: Stability,
+    /// The angular frequency of the small oscillations (stable) or the exponential growth
+    /// rate σ (unstable, deviations ∝ e^{σt}) (1/s); 0 when neutral.
+    pub rate: f64,
+}
+
+/// The stability of steady rotation at rate `spin` (rad/s) about each principal axis of a
+/// body with principal moments `moments` (kg·m², any order).
+///
+/// Linearising Euler's equations (2.72) about ω = spin·e_i gives, for the other two
+/// components, `ε̈ = −spin² (I_i − I_j)(I_i − I_k)/(I_j I_k) ε`: oscillation (stable) when I_i
+/// is the largest or smallest moment, exponential growth with
+/// `σ = |spin| ((I₂ − I₁)(I₃ − I₂)/(I₁I₃))^½` about the intermediate axis (the tennis-racket
+/// or Dzhanibekov instability). Errors name `moments` or `spin`.
+pub fn axis_stability(moments: [f64; 3], spin: f64) -> Result<[AxisStability; 3]> {
+    super::check_moments(&moments)?;
+    check_finite("spin", &[spin])?;
+    Ok(std::array::from_fn(|i| {
+        let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+        let q = spin * spin * (moments[i] - moments[j]) * (moments[i] - moments[k])
+            / (moments[j] * moments[k]);
+        if q > 0.0 {
+            AxisStability {
+                stability: Stability::Stable,
+                rate: q.sqrt(),
+            }
+        } else if q < 0.0 {
+            AxisStability {
+                stability: Stability::Unstable,
+                rate: (-q).sqrt(),
+            }
+        } else {
+            AxisStability {
+                stability: Stability::Neutral,
+                rate: 0.0,
+            }
+        }
+    }))
+}
+
+impl FreeRigidBody {
+    /// `samples` points of the polhode: ω (body components) over one period of ω(t), from
+    /// t = 0. On the separatrix (infinite period) the half-branch from t = −12/λ to 12/λ
+    /// (within e⁻¹² of the intermediate axis at both ends); a single point, repeated, when ω
+    /// is constant. Errors name `samples` (must be ≥ 2).
+    pub fn polhode(&self, samples: usize) -> Result<Vec<Vec3>> {
+        if samples < 2 {
+            return Err(Error::invalid(
+                "samples",
+                format!("must be >= 2, got {samples}"),
+            ));
+        }
+        let period = self.period();
+        let (t0, span) = if period.is_finite() {
+            (0.0, period)
+        } else if self.frequency() > 0.0 {
+            (-12.0 / self.frequency(), 24.0 / self.frequency())
+        } else {
+            (0.0, 0.0)
+        };
+        Ok((0..samples)
+            .map(|i| self.omega(t0 + span * i as f64 / (samples - 1) as f64))
+            .collect())
+    }
+
+    /// The distance of the invariable plane from the fixed point in Poinsot's construction,
+    /// (2T)^½ / |L| (m·kg^-½... in the units of the scaled inertia ellipsoid `x·I·x = 1`), with
+    /// the contact point at ω / (2T)^½.
+    pub fn invariable_plane_distance(&self) -> f64 {
+        (2.0 * self.energy()).sqrt() / self.angular_momentum().norm()
+    }
+}

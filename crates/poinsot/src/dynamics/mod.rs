@@ -1,0 +1,17 @@
+//! Rigid-body dynamics: Euler's equations of motion with torques (the unit's 2.67–2.76), the
+//! attitude as a unit quaternion, and `simulate` — one interface to the exact torque-free
+//! flow, the Lie–Poisson splitting (orders 2, 4, 6), RK4 and DOP853 — for one body or many.
+
+mod batch;
+mod equations;
+mod model;
+mod simulate;
+mod splitting;
+mod torque;
+
+pub use batch::{simulate_batch, BatchResult};
+pub use equations::{angular_acceleration, angular_acceleration_principal, power, quaternion_rate};
+pub use model::BodyInertia;
+pub use simulate::{default_step, simulate, Method, SimulateOptions, Trajectory};
+pub use splitting::{free_steps, kicked_step, FreeStrang, SplitState};
+pub use torque::{Torque, TorqueContext, TorqueModel};
