@@ -37,6 +37,7 @@ examples: setup
 	@set -e; for f in examples/*.py; do echo "== $$f"; $(PY) $$f; done
 
 bench: setup
+	$(PY) -m pip install -q mujoco  # a peer, for bench/free_body_vs_mujoco.py only
 	cargo bench -p poinsot
 	$(PY) bench/run_all.py
 
