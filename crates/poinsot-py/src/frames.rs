@@ -68,6 +68,29 @@ fn frame_arg(frame: &PyReadonlyArray1<'_, f64>, attitude: &PyReadonlyArray2<'_, 
     frame_from(&vec_in(frame), mat3("attitude", attitude)?)
 }
 
+/// Applies `transform` to each row of (N, 3) positions, velocities and accelerations and returns
+/// its eight (N, 3) outputs (the transformed state and the named acceleration terms).
+fn transform_rows<'py>(
+    py: Python<'py>,
+    position: &PyReadonlyArray2<'py, f64>,
+    velocity: &PyReadonlyArray2<'py, f64>,
+    acceleration: &PyReadonlyArray2<'py, f64>,
+    transform: impl Fn(&Vec3, &Vec3, &Vec3) -> [Vec3; 8],
+) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
+    let (r, v, a) = (rows3("position", position)?, rows3("velocity", velocity)?, rows3("acceleration", acceleration)?);
+    let n = r.len();
+    if v.len() != n || a.len() != n {
+        return Err(invalid("velocity", "position, velocity and acceleration must have the same number of rows"));
+    }
+    let mut out: Vec<Vec<[f64; 3]>> = (0..8).map(|_| Vec::with_capacity(n)).collect();
+    for i in 0..n {
+        for (k, x) in transform(&v3(&r[i]), &v3(&v[i]), &v3(&a[i])).iter().enumerate() {
+            out[k].push(a3(x));
+        }
+    }
+    Ok(out.iter().map(|rows| rows_out(py, rows)).collect())
+}
+
 /// Transforms (N, 3) moving-frame positions, velocities and accelerations to the fixed frame:
 /// (position, velocity, acceleration, relative, origin, coriolis, centripetal, euler).
 #[pyfunction]
@@ -81,20 +104,11 @@ fn frame_to_fixed<'py>(
     acceleration: PyReadonlyArray2<'py, f64>,
 ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
     let f = frame_arg(&frame, &attitude)?;
-    let (r, v, a) = (rows3("position", &position)?, rows3("velocity", &velocity)?, rows3("acceleration", &acceleration)?);
-    let n = r.len();
-    if v.len() != n || a.len() != n {
-        return Err(invalid("velocity", "position, velocity and acceleration must have the same number of rows"));
-    }
-    let mut out: Vec<Vec<[f64; 3]>> = (0..8).map(|_| Vec::with_capacity(n)).collect();
-    for i in 0..n {
-        let m = f.to_fixed(&v3(&r[i]), &v3(&v[i]), &v3(&a[i]));
+    transform_rows(py, &position, &velocity, &acceleration, |r, v, a| {
+        let m = f.to_fixed(r, v, a);
         let t = m.terms;
-        for (k, x) in [m.position, m.velocity, m.acceleration, t.relative, t.origin, t.coriolis, t.centripetal, t.euler].iter().enumerate() {
-            out[k].push(a3(x));
-        }
-    }
-    Ok(out.iter().map(|rows| rows_out(py, rows)).collect())
+        [m.position, m.velocity, m.acceleration, t.relative, t.origin, t.coriolis, t.centripetal, t.euler]
+    })
 }
 
 /// Transforms (N, 3) fixed-frame positions, velocities and accelerations to the moving frame:
@@ -110,20 +124,11 @@ fn frame_to_moving<'py>(
     acceleration: PyReadonlyArray2<'py, f64>,
 ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
     let f = frame_arg(&frame, &attitude)?;
-    let (r, v, a) = (rows3("position", &position)?, rows3("velocity", &velocity)?, rows3("acceleration", &acceleration)?);
-    let n = r.len();
-    if v.len() != n || a.len() != n {
-        return Err(invalid("velocity", "position, velocity and acceleration must have the same number of rows"));
-    }
-    let mut out: Vec<Vec<[f64; 3]>> = (0..8).map(|_| Vec::with_capacity(n)).collect();
-    for i in 0..n {
-        let m = f.to_moving(&v3(&r[i]), &v3(&v[i]), &v3(&a[i]));
+    transform_rows(py, &position, &velocity, &acceleration, |r, v, a| {
+        let m = f.to_moving(r, v, a);
         let t = m.terms;
-        for (k, x) in [m.position, m.velocity, m.acceleration, t.inertial, t.translational, t.coriolis, t.centrifugal, t.euler].iter().enumerate() {
-            out[k].push(a3(x));
-        }
-    }
-    Ok(out.iter().map(|rows| rows_out(py, rows)).collect())
+        [m.position, m.velocity, m.acceleration, t.inertial, t.translational, t.coriolis, t.centrifugal, t.euler]
+    })
 }
 
 /// Fictitious forces on (N,) masses at (N, 3) positions with (N, 3) velocities in the frame:
