@@ -10,6 +10,7 @@
 //! | [`rotation`] | SO(3), quaternions, Euler angles, Euler's theorem, Chasles' screw, Euler-angle kinematics | 2.98–2.99 |
 //! | [`inertia`] | inertia tensor, principal axes, standard solids, density and mesh integrals, L and T | 2.43–2.66 |
 //! | [`frames`] | moving frames: velocity and acceleration terms, fictitious forces, particles in time-dependent frames | 2.1–2.28 |
+//! | [`analytic`] | closed forms: the heavy symmetric top (Lagrangian, effective potential, turning points, steady precession, exact motion by elliptic functions) | 2.98–2.121 |
 //! | [`earth`] | the rotating Earth: effective gravity, Coriolis, falling bodies, projectiles, Foucault, winds | 2.29–2.42 |
 //! | [`integrate`] | ODE integrators that know no physics: adaptive DOP853 with dense output and events, RK4 | — |
 //! | [`special`] | Jacobi elliptic functions sn, cn, dn, am (parameter m = k²) and elliptic integrals F, E, K, Π | — |
@@ -20,6 +21,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod analytic;
 pub mod earth;
 pub mod error;
 pub mod frames;

@@ -1,0 +1,272 @@
+//! The exact motion of the heavy top as Fourier series with closed-form coefficients: the fast
+//! path of [`super::HeavyTop::euler_angles`].
+//!
+//! In the phase `x = πτ/K` (period 2π = one nutation period) every periodic part of the motion
+//! has a Fourier series whose coefficients are known in closed form from Jacobi's theta-function
+//! expansions (Whittaker & Watson §22.6, §22.74; DLMF 22.11):
+//!
+//! * `sn²τ = D/K − (2π²/(mK²)) Σ k qᵏ/(1 − q²ᵏ) cos kx`, q = exp(−πK'/K) the nome, D = (K − E)/m;
+//! * for `n = m sn²a`, `∫₀^τ dτ'/(1 − n sn²τ') = (Π(n|m)/K) τ − (sn a/(cn a dn a)) Σ (2/k) qᵏ/(1 − q²ᵏ)
+//!   sin(kπa/K) sin kx` (from Jacobi's Π(u, a) = u Z(a) + ½ ln Θ(u − a)/Θ(u + a)).
+//!
+//! For the circular case m < n < 1 the parameter is a = K + i b, for −∞ < n < 0 it is a = i b; with
+//! `β = K' − b` (the distance of the integrand's pole from the real axis, in the units of τ),
+//! `ρ = exp(−πβ/K)`, the coefficient of sin kx is
+//! `(±1)ᵏ c (ρᵏ − (q²/ρ)ᵏ) / (k (1 − q²ᵏ))`, with `c = √(n/((n − m)(1 − n)))`, sign (−1)ᵏ
+//! (circular), and `c = √(−n/((m − n)(1 − n)))`, sign +1 (n < 0); `β = F(arcsin √((1 − n)/(1 − m)) | 1 − m)`
+//! (circular) or `F(arcsin √(1/(1 − n)) | 1 − m)` (n < 0), all through Carlson's R_F.
+//!
+//! The series converge geometrically (ratios q and ρ); they are summed to round-off, so this is
+//! the exact solution, evaluated with one sin/cos and a rotation recurrence per time. Where a
+//! ratio is too close to 1 (the axis passing very near a pole, or m → 1) more than
+//! [`MAX_TERMS`] terms would be needed, and the solution is evaluated by Carlson's R_J instead.
+
+use std::f64::consts::PI;
+
+/// The most Fourier terms the fast path uses; beyond, the incomplete integrals are evaluated.
+pub(crate) const MAX_TERMS: usize = 64;
+/// Terms below this fraction of the series' scale are dropped (below half an ulp).
+const TRUNCATION: f64 = 1e-17;
+
+/// R_F (Carlson).
+fn rf(x: f64, y: f64, z: f64) -> f64 {
+    ellip::elliprf(x, y, z).unwrap_or(f64::NAN)
+}
+
+/// One third-kind integral's Fourier data: `c`, the sign pattern, ρ (see the module docs).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct ThirdSeries {
+    c: f64,
+    alternating: bool,
+    rho: f64,
+}
+
+impl ThirdSeries {
+    /// Circular case m < n < 1, from n, 1 − n, n − m and 1 − m (each accurate).
+    pub(crate) fn circular(
+        n: f64,
+        one_minus_n: f64,
+        n_minus_m: f64,
+        mc: f64,
+        k: f64,
+    ) -> Option<Self> {
+        if !(n_minus_m > 0.0 && one_minus_n > 0.0 && mc > 0.0) {
+            return None;
+        }
+        let c = (n / (n_minus_m * one_minus_n)).sqrt();
+        // β = F(φ | 1 − m), sin²φ = (1 − n)/(1 − m), cos²φ = (n − m)/(1 − m), 1 − (1 − m) sin²φ = n.
+        let beta = (one_minus_n / mc).sqrt() * rf(n_minus_m / mc, n, 1.0);
+        Some(Self {
+            c,
+            alternating: true,
+            rho: (-PI * beta / k).exp(),
+        })
+    }
+
+    /// Hyperbolic case n < 0, from −n, 1 − n, m − n and m, 1 − m.
+    pub(crate) fn hyperbolic(
+        minus_n: f64,
+        one_minus_n: f64,
+        m: f64,
+        mc: f64,
+        k: f64,
+    ) -> Option<Self> {
+        if !(minus_n > 0.0 && mc > 0.0) {
+            return None;
+        }
+        let c = (minus_n / ((m + minus_n) * one_minus_n)).sqrt();
+        // β = F(φ | 1 − m), sin²φ = 1/(1 − n), cos²φ = −n/(1 − n), 1 − (1 − m) sin²φ = (m − n)/(1 − n).
+        let s2 = 1.0 / one_minus_n;
+        let beta = s2.sqrt() * rf(minus_n * s2, (m + minus_n) * s2, 1.0);
+        Some(Self {
+            c,
+            alternating: false,
+            rho: (-PI * beta / k).exp(),
+        })
+    }
+
+    /// The coefficient of sin kx (k ≥ 1) given q.
+    fn coefficient(&self, kk: usize, q: f64) -> f64 {
+        let kf = kk as f64;
+        let q2k = q.powi(2 * kk as i32);
+        let r = self.rho.powi(kk as i32) - (q * q / self.rho).powi(kk as i32);
+        let sign = if self.alternating && kk % 2 == 1 {
+            -1.0
+        } else {
+            1.0
+        };
+        sign * self.c * r / (kf * (1.0 - q2k))
+    }
+}
+
+/// The input of the series: the solution's constants, as [`super::heavy_top_motion`] has them.
+pub(crate) struct SeriesInput {
+    pub k: f64,
+    pub k_prime: f64,
+    pub m: f64,
+    pub mc: f64,
+    pub kappa: f64,
+    pub tau0: f64,
+    pub w_lo: f64,
+    pub w_hi: f64,
+    pub v_lo: f64,
+    pub v_hi: f64,
+    /// Series of ∫dτ/w with its factor (φ gets `half_d · factor`), if present.
+    pub w_series: Option<(ThirdSeries, f64)>,
+    /// Series of ∫dτ/v with its factor and whether it is in σ = τ − K (shift by π in x).
+    pub v_series: Option<(ThirdSeries, f64, bool)>,
+    pub half_d: f64,
+    pub half_e: f64,
+    pub phi0: f64,
+    pub psi0: f64,
+    pub phi_rate: f64,
+    pub psi_rate: f64,
+}
+
+/// The Fourier form of a nutating top's motion.
+#[derive(Debug, Clone)]
+pub(crate) struct Fourier {
+    x0: f64,
+    nu: f64,
+    w_mean: f64,
+    v_mean: f64,
+    /// w = w̄ + Σ A_k cos kx, v = v̄ − Σ A_k cos kx.
+    a: Vec<f64>,
+    /// φ = φ_base + ⟨φ̇⟩t + Σ B_k sin kx (and ψ likewise).
+    b_phi: Vec<f64>,
+    b_psi: Vec<f64>,
+    phi_base: f64,
+    psi_base: f64,
+    phi_rate: f64,
+    psi_rate: f64,
+}
+
+/// The nome q = exp(−πK'/K) and q/m (finite as m → 0, where q ≈ m/16).
+fn nome(m: f64, k: f64, k_prime: f64) -> (f64, f64) {
+    if m < 1e-4 {
+        // q = m/16 + 8(m/16)² + 84(m/16)³ + 992(m/16)⁴ + … (DLMF 19.5.5); the next term is < 1e-23.
+        let e = m / 16.0;
+        let q_over_m = (1.0 + e * (8.0 + e * (84.0 + e * 992.0))) / 16.0;
+        (m * q_over_m, q_over_m)
+    } else {
+        let q = (-PI * k_prime / k).exp();
+        (q, q / m)
+    }
+}
+
+impl Fourier {
+    /// The series, or `None` when they would need more than [`MAX_TERMS`] terms.
+    pub(crate) fn new(s: &SeriesInput) -> Option<Self> {
+        let (q, q_over_m) = nome(s.m, s.k, s.k_prime);
+        if q.is_nan() || q >= 0.5 {
+            return None;
+        }
+        // ⟨sn²⟩ = D/K with D = (K − E)/m = R_D(0, 1 − m, 1)/3.
+        let d = ellip::elliprd(0.0, s.mc, 1.0).ok()? / 3.0;
+        let mean_sn2 = d / s.k;
+        let dw = s.w_hi - s.w_lo;
+        let dv = s.v_hi - s.v_lo;
+        let w_mean = s.w_hi - dw * mean_sn2;
+        let v_mean = s.v_lo + dv * mean_sn2;
+        let amp = dw * 2.0 * PI * PI / (s.k * s.k) * q_over_m;
+        let (mut a, mut b_phi, mut b_psi) = (Vec::new(), Vec::new(), Vec::new());
+        let mut scale_phi: f64 = 1.0;
+        let mut scale_psi: f64 = 1.0;
+        for kk in 1..=MAX_TERMS + 1 {
+            if kk > MAX_TERMS {
+                return None;
+            }
+            let kf = kk as f64;
+            let qk1 = q.powi(kk as i32 - 1);
+            let ak = amp * kf * qk1 / (1.0 - q.powi(2 * kk as i32));
+            let wk = s
+                .w_series
+                .map_or(0.0, |(ser, f)| f * ser.coefficient(kk, q));
+            let vk = s.v_series.map_or(0.0, |(ser, f, shifted)| {
+                let sign = if shifted && kk % 2 == 1 { -1.0 } else { 1.0 };
+                sign * f * ser.coefficient(kk, q)
+            });
+            let bp = (s.half_d * wk + s.half_e * vk) / s.kappa;
+            let bs = (-s.half_d * wk + s.half_e * vk) / s.kappa;
+            scale_phi = scale_phi.max(bp.abs());
+            scale_psi = scale_psi.max(bs.abs());
+            a.push(ak);
+            b_phi.push(bp);
+            b_psi.push(bs);
+            if ak.abs() <= TRUNCATION * dw
+                && bp.abs() <= TRUNCATION * scale_phi
+                && bs.abs() <= TRUNCATION * scale_psi
+            {
+                break;
+            }
+        }
+        let x0 = PI * s.tau0 / s.k;
+        let mut me = Self {
+            x0,
+            nu: PI * s.kappa / s.k,
+            w_mean,
+            v_mean,
+            a,
+            b_phi,
+            b_psi,
+            phi_base: 0.0,
+            psi_base: 0.0,
+            phi_rate: s.phi_rate,
+            psi_rate: s.psi_rate,
+        };
+        let (_, _, sp, ss) = me.sums(reduce_angle(x0));
+        me.phi_base = s.phi0 - sp;
+        me.psi_base = s.psi0 - ss;
+        Some(me)
+    }
+
+    /// Σ A_k cos kr, (unused), Σ Bφ_k sin kr, Σ Bψ_k sin kr at a reduced phase r.
+    #[inline]
+    fn sums(&self, r: f64) -> (f64, f64, f64, f64) {
+        let (s1, c1) = r.sin_cos();
+        let (mut ck, mut sk) = (c1, s1);
+        let (mut sw, mut sp, mut ss) = (0.0, 0.0, 0.0);
+        for i in 0..self.a.len() {
+            sw += self.a[i] * ck;
+            sp += self.b_phi[i] * sk;
+            ss += self.b_psi[i] * sk;
+            // (cos, sin) of (k + 1) r by one rotation.
+            let c_next = ck * c1 - sk * s1;
+            sk = sk * c1 + ck * s1;
+            ck = c_next;
+        }
+        (sw, 0.0, sp, ss)
+    }
+
+    /// (φ, θ, ψ) at time t.
+    #[inline]
+    pub(crate) fn angles(&self, t: f64) -> [f64; 3] {
+        let x = self.x0 + self.nu * t;
+        let (sw, _, sp, ss) = self.sums(reduce_angle(x));
+        let w = self.w_mean + sw;
+        let v = self.v_mean - sw;
+        let theta = 2.0 * w.max(0.0).sqrt().atan2(v.max(0.0).sqrt());
+        [
+            self.phi_base + self.phi_rate * t + sp,
+            theta,
+            self.psi_base + self.psi_rate * t + ss,
+        ]
+    }
+
+    /// The number of terms used.
+    pub(crate) fn terms(&self) -> usize {
+        self.a.len()
+    }
+}
+
+/// x − 2πj in [−π, π] (2π split in two parts so that the reduction adds one rounding).
+#[inline]
+fn reduce_angle(x: f64) -> f64 {
+    const TWO_PI_HI: f64 = std::f64::consts::TAU;
+    const TWO_PI_LO: f64 = 2.449_293_598_294_706_4e-16;
+    let j = (x / TWO_PI_HI).round();
+    if j == 0.0 {
+        return x;
+    }
+    (-j).mul_add(TWO_PI_HI, x) - j * TWO_PI_LO
+}
