@@ -9,6 +9,8 @@ The public API (see ``DESIGN.md``'s contract and the README):
 * moving frames: :class:`MovingFrame` (eqs. 2.1–2.28), :func:`simulate_particle`;
 * the rotating Earth: :class:`Earth` (effective gravity, Coriolis, the falling body of
   eq. 2.42, projectiles, the Foucault pendulum, inertial oscillations);
+* the heavy symmetric top: :class:`HeavyTop` (eqs. 2.98–2.121: constants, effective
+  potential, turning points, steady precession, the exact motion by elliptic functions);
 * errors: :class:`PoinsotError` (a ``ValueError``) and its subclasses.
 
 SI units and radians everywhere; quaternions are scalar-first ``[w, x, y, z]``.
@@ -27,5 +29,7 @@ from .frames import *  # noqa: F401,F403
 from .frames import __all__ as _frames_all
 from .rotation import *  # noqa: F401,F403
 from .rotation import __all__ as _rotation_all
+from .top import *  # noqa: F401,F403
+from .top import __all__ as _top_all
 
-__all__ = ["__version__", *_errors_all, *_rotation_all, *_body_all, *_frames_all, *_earth_all]
+__all__ = ["__version__", *_errors_all, *_rotation_all, *_body_all, *_frames_all, *_earth_all, *_top_all]

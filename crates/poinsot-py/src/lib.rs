@@ -9,6 +9,7 @@ mod convert;
 mod earth;
 mod errors;
 mod frames;
+mod heavy_top;
 mod inertia;
 mod rotation;
 
@@ -23,5 +24,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     inertia::register(m)?;
     frames::register(m)?;
     earth::register(m)?;
+    heavy_top::register(m)?;
     Ok(())
 }

@@ -25,7 +25,7 @@ fn bench(c: &mut Criterion) {
     });
     let n = 1_000_000;
     let times: Vec<f64> = (0..n).map(|k| 1000.0 * k as f64 / n as f64).collect();
-    let mut out = vec![[0.0; 3]; n];
+    let mut out = vec![0.0; 3 * n];
     let mut group = c.benchmark_group("batch");
     group.sample_size(10);
     group.bench_function("HeavyTop::euler_angles_into, 10^6 times", |b| {

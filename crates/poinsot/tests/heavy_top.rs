@@ -468,7 +468,7 @@ fn bad_input_is_refused_naming_the_argument() {
             .argument,
         "theta0"
     );
-    let mut out = vec![[0.0; 3]; 2];
+    let mut out = vec![0.0; 6];
     assert_eq!(
         t.euler_angles_into(&[0.0, f64::NAN], &mut out)
             .unwrap_err()

@@ -482,46 +482,33 @@ impl HeavyTop {
         }
     }
 
-    /// [`HeavyTop::euler_angles`] at many times, in parallel: `out[i] = [φ, θ, ψ](times[i])`.
-    /// Errors name `times` (finite) or `out` (length).
-    pub fn euler_angles_into(&self, times: &[f64], out: &mut [[f64; 3]]) -> Result<()> {
-        use rayon::prelude::*;
-        check_finite("times", times)?;
-        if out.len() != times.len() {
-            return Err(Error::invalid(
-                "out",
-                format!("must have {} rows, got {}", times.len(), out.len()),
-            ));
-        }
-        const CHUNK: usize = 4096;
-        out.par_chunks_mut(CHUNK)
-            .zip(times.par_chunks(CHUNK))
-            .for_each(|(o, ts)| {
-                for (oi, &t) in o.iter_mut().zip(ts) {
-                    *oi = self.euler_angles(t);
-                }
-            });
-        Ok(())
+    /// [`HeavyTop::euler_angles`] at many times, in parallel: `out[3i..3i + 3] = [φ, θ, ψ](times[i])`
+    /// (`out` flat, row-major (N, 3)). Errors name `times` (finite) or `out` (length 3N).
+    pub fn euler_angles_into(&self, times: &[f64], out: &mut [f64]) -> Result<()> {
+        self.batch(times, out, |t| self.euler_angles(t))
     }
 
-    /// [`HeavyTop::euler_rates`] at many times, in parallel. Errors name `times` or `out`.
-    pub fn euler_rates_into(&self, times: &[f64], out: &mut [[f64; 3]]) -> Result<()> {
+    /// [`HeavyTop::euler_rates`] at many times, in parallel (`out` flat (N, 3): φ̇, θ̇, ψ̇).
+    /// Errors name `times` or `out`.
+    pub fn euler_rates_into(&self, times: &[f64], out: &mut [f64]) -> Result<()> {
+        self.batch(times, out, |t| self.euler_rates(t))
+    }
+
+    fn batch(&self, times: &[f64], out: &mut [f64], f: impl Fn(f64) -> [f64; 3] + Sync) -> Result<()> {
         use rayon::prelude::*;
         check_finite("times", times)?;
-        if out.len() != times.len() {
+        if out.len() != 3 * times.len() {
             return Err(Error::invalid(
                 "out",
-                format!("must have {} rows, got {}", times.len(), out.len()),
+                format!("must have 3 x {} = {} values, got {}", times.len(), 3 * times.len(), out.len()),
             ));
         }
         const CHUNK: usize = 4096;
-        out.par_chunks_mut(CHUNK)
-            .zip(times.par_chunks(CHUNK))
-            .for_each(|(o, ts)| {
-                for (oi, &t) in o.iter_mut().zip(ts) {
-                    *oi = self.euler_rates(t);
-                }
-            });
+        out.par_chunks_mut(3 * CHUNK).zip(times.par_chunks(CHUNK)).for_each(|(o, ts)| {
+            for (oi, &t) in o.chunks_exact_mut(3).zip(ts) {
+                oi.copy_from_slice(&f(t));
+            }
+        });
         Ok(())
     }
 }
