@@ -485,7 +485,10 @@ impl HeavyTop {
     /// [`HeavyTop::euler_angles`] at many times, in parallel: `out[3i..3i + 3] = [φ, θ, ψ](times[i])`
     /// (`out` flat, row-major (N, 3)). Errors name `times` (finite) or `out` (length 3N).
     pub fn euler_angles_into(&self, times: &[f64], out: &mut [f64]) -> Result<()> {
-        self.batch(times, out, |t| self.euler_angles(t))
+        match &self.motion {
+            Motion::Nutating(n) => self.batch_chunks(times, out, |ts, o| n.angles_into(ts, o)),
+            Motion::Uniform { .. } => self.batch(times, out, |t| self.euler_angles(t)),
+        }
     }
 
     /// [`HeavyTop::euler_rates`] at many times, in parallel (`out` flat (N, 3): φ̇, θ̇, ψ̇).
@@ -495,6 +498,15 @@ impl HeavyTop {
     }
 
     fn batch(&self, times: &[f64], out: &mut [f64], f: impl Fn(f64) -> [f64; 3] + Sync) -> Result<()> {
+        self.batch_chunks(times, out, |ts, o| {
+            for (oi, &t) in o.chunks_exact_mut(3).zip(ts) {
+                oi.copy_from_slice(&f(t));
+            }
+        })
+    }
+
+    /// Checks `times` and `out`, then runs `f` on chunks of both in parallel.
+    fn batch_chunks(&self, times: &[f64], out: &mut [f64], f: impl Fn(&[f64], &mut [f64]) + Sync) -> Result<()> {
         use rayon::prelude::*;
         check_finite("times", times)?;
         if out.len() != 3 * times.len() {
@@ -503,12 +515,8 @@ impl HeavyTop {
                 format!("must have 3 x {} = {} values, got {}", times.len(), 3 * times.len(), out.len()),
             ));
         }
-        const CHUNK: usize = 4096;
-        out.par_chunks_mut(3 * CHUNK).zip(times.par_chunks(CHUNK)).for_each(|(o, ts)| {
-            for (oi, &t) in o.chunks_exact_mut(3).zip(ts) {
-                oi.copy_from_slice(&f(t));
-            }
-        });
+        const CHUNK: usize = 8192;
+        out.par_chunks_mut(3 * CHUNK).zip(times.par_chunks(CHUNK)).for_each(|(o, ts)| f(ts, o));
         Ok(())
     }
 }

@@ -424,6 +424,18 @@ impl Nutation {
         }
     }
 
+    /// [`Nutation::angles`] at many times into `out` (flat, 3 per time).
+    pub(crate) fn angles_into(&self, ts: &[f64], out: &mut [f64]) {
+        match &self.fourier {
+            Some(f) => f.angles_into(ts, out),
+            None => {
+                for (&t, o) in ts.iter().zip(out.chunks_exact_mut(3)) {
+                    o.copy_from_slice(&self.angles_carlson(t));
+                }
+            }
+        }
+    }
+
     /// (φ, θ, ψ) at time t by the incomplete integrals (Jacobi's sn and Carlson's R_J).
     pub(crate) fn angles_carlson(&self, time: f64) -> [f64; 3] {
         let tau = self.tau0 + self.kappa * time;
