@@ -113,13 +113,14 @@ def integrate(case: dict) -> dict:
     if label is None:
         label = "loops" if min(phi_dots) < 0 < max(phi_dots) else "waves"
     return {
-        **{k: case[k] for k in ("name", "I1", "I3", "mgl", "theta", "theta_dot", "phi_dot", "psi_dot")},
+        **{k: case[k] for k in ("name", "I1", "I3", "mgl")},
+        "initial": {k: case[k] for k in ("theta", "theta_dot", "phi_dot", "psi_dot")},
         "class": label,
         "p_phi": mp.nstr(c0[0], 30),
         "p_psi": mp.nstr(c0[1], 30),
         "energy": mp.nstr(c0[2], 30),
         "times": TIMES,
-        **out,
+        "trajectory": out,
     }
 
 
@@ -129,6 +130,11 @@ def main() -> None:
     for case in case_list():
         print(f"integrating {case['name']} ...", file=sys.stderr, flush=True)
         results.append(integrate(case))
+    write(results)
+
+
+def write(results: list[dict]) -> None:
+    """Writes the JSON and CSV files from the integrated cases."""
     doc = {
         "description": "heavy symmetric top: Euler angles (phi, theta, psi; rad) and rates (rad/s) "
         "from a 40-digit mpmath.odefun integration of the Euler-Lagrange equations of 2.102; "
@@ -141,13 +147,14 @@ def main() -> None:
     path = HERE / "heavy_top_mpmath.json"
     path.write_text(json.dumps(doc, indent=1) + "\n")
     print(f"wrote {path}", file=sys.stderr)
-    cols = ("I1", "I3", "mgl", "theta", "theta_dot", "phi_dot", "psi_dot")
+    keys = ("phi", "theta", "psi", "phi_dot", "theta_dot", "psi_dot")
     lines = ["# " + doc["description"] + "; generator " + doc["generator"],
-             "name,class," + ",".join(cols) + ",t,phi,theta,psi,phi_dot_t,theta_dot_t,psi_dot_t"]
+             "name,class,I1,I3,mgl,theta0,theta_dot0,phi_dot0,psi_dot0,t," + ",".join(keys)]
     for c in results:
+        head = [c["name"], c["class"], *(repr(c[k]) for k in ("I1", "I3", "mgl")),
+                *(repr(c["initial"][k]) for k in ("theta", "theta_dot", "phi_dot", "psi_dot"))]
         for i, t in enumerate(c["times"]):
-            vals = [c[k][i] for k in ("phi", "theta", "psi", "phi_dot", "theta_dot", "psi_dot")]
-            lines.append(",".join([c["name"], c["class"], *(repr(c[k]) for k in cols), repr(t), *map(repr, vals)]))
+            lines.append(",".join([*head, repr(t), *(repr(c["trajectory"][k][i]) for k in keys)]))
     (HERE / "heavy_top_mpmath.csv").write_text("\n".join(lines) + "\n")
 
 

@@ -497,7 +497,12 @@ impl HeavyTop {
         self.batch(times, out, |t| self.euler_rates(t))
     }
 
-    fn batch(&self, times: &[f64], out: &mut [f64], f: impl Fn(f64) -> [f64; 3] + Sync) -> Result<()> {
+    fn batch(
+        &self,
+        times: &[f64],
+        out: &mut [f64],
+        f: impl Fn(f64) -> [f64; 3] + Sync,
+    ) -> Result<()> {
         self.batch_chunks(times, out, |ts, o| {
             for (oi, &t) in o.chunks_exact_mut(3).zip(ts) {
                 oi.copy_from_slice(&f(t));
@@ -506,17 +511,29 @@ impl HeavyTop {
     }
 
     /// Checks `times` and `out`, then runs `f` on chunks of both in parallel.
-    fn batch_chunks(&self, times: &[f64], out: &mut [f64], f: impl Fn(&[f64], &mut [f64]) + Sync) -> Result<()> {
+    fn batch_chunks(
+        &self,
+        times: &[f64],
+        out: &mut [f64],
+        f: impl Fn(&[f64], &mut [f64]) + Sync,
+    ) -> Result<()> {
         use rayon::prelude::*;
         check_finite("times", times)?;
         if out.len() != 3 * times.len() {
             return Err(Error::invalid(
                 "out",
-                format!("must have 3 x {} = {} values, got {}", times.len(), 3 * times.len(), out.len()),
+                format!(
+                    "must have 3 x {} = {} values, got {}",
+                    times.len(),
+                    3 * times.len(),
+                    out.len()
+                ),
             ));
         }
         const CHUNK: usize = 8192;
-        out.par_chunks_mut(3 * CHUNK).zip(times.par_chunks(CHUNK)).for_each(|(o, ts)| f(ts, o));
+        out.par_chunks_mut(3 * CHUNK)
+            .zip(times.par_chunks(CHUNK))
+            .for_each(|(o, ts)| f(ts, o));
         Ok(())
     }
 }

@@ -54,9 +54,9 @@ pub(crate) struct Local {
 }
 
 /// The turning points in the two pole variables: `w_lo = 1 − u₂` (θ₁, the upper turning point),
-/// `w_hi = 1 − u₁` (θ₂), `v_lo = 1 + u₁ = 2 − w_hi`, `v_hi = 1 + u₂ = 2 − w_lo`. Each is
-/// computed in the variable where it is small, the other as its complement (≥ 1, so exact to
-/// one rounding).
+/// `w_hi = 1 − u₁` (θ₂), `v_lo = 1 + u₁ = 2 − w_hi`, `v_hi = 1 + u₂ = 2 − w_lo`. Both variables
+/// of each turning point are kept, each formed without cancellation (as an offset from the start
+/// w₀ + s, v₀ − s, or in the variable where it is small with the other as its complement ≥ 1).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Turning {
     /// 1 − cos θ₁.
@@ -79,13 +79,13 @@ impl Turning {
             v_hi: v,
         }
     }
-    /// From the upper turning point (as w) and the lower one (as v), each accurate.
-    pub fn from_upper_w_lower_v(w_lo: f64, v_lo: f64) -> Self {
+    /// From both pole distances of each turning point: upper (w_lo, v_hi), lower (w_hi, v_lo).
+    pub fn new(upper: (f64, f64), lower: (f64, f64)) -> Self {
         Self {
-            w_lo,
-            w_hi: 2.0 - v_lo,
-            v_lo,
-            v_hi: 2.0 - w_lo,
+            w_lo: upper.0,
+            v_hi: upper.1,
+            w_hi: lower.0,
+            v_lo: lower.1,
         }
     }
     /// θ₁ (upper) and θ₂ (lower), in [0, π].
@@ -286,33 +286,46 @@ pub(crate) fn turning_points_from_state(r: &Reduced, l: &Local) -> Turning {
                 |best, s| if s.abs() < best.abs() { s } else { best },
             )
     };
-    // Upper turning point: w_lo ∈ [0, w₀] (f(0) = −d² ≤ 0).
-    let w_lo = if l.w0 == 0.0 {
-        0.0
+    // Upper turning point: w_lo ∈ [0, w₀] (f(0) = −d² ≤ 0), as (w, v) each without cancellation:
+    // w₀ + s and v₀ − s with s ≤ 0, or from the top pole's own variable when nearer to it.
+    let upper = if l.w0 == 0.0 {
+        (0.0, l.v0)
     } else if l.f0 == 0.0 && l.f1 > 0.0 {
-        l.w0
+        (l.w0, l.v0)
     } else {
         let s = if l.f0 == 0.0 {
             other_root_at_rest()
         } else {
             bracketed_root(fs, -l.w0, 0.0)
         };
-        polish_near_pole(|w| r.f_w(w), l.w0 + s, -s, r.d, l.w0)
+        let w = l.w0 + s;
+        if w.max(0.0) < -s {
+            let w = polish_near_pole(|w| r.f_w(w), w, -s, r.d, l.w0);
+            (w, 2.0 - w)
+        } else {
+            (w, l.v0 - s)
+        }
     };
-    // Lower turning point: v_lo ∈ [0, v₀] (f at v = 0 is −e² ≤ 0).
-    let v_lo = if l.v0 == 0.0 {
-        0.0
+    // Lower turning point: v_lo ∈ [0, v₀] (f at v = 0 is −e² ≤ 0): w₀ + s and v₀ − s with s ≥ 0.
+    let lower = if l.v0 == 0.0 {
+        (l.w0, 0.0)
     } else if l.f0 == 0.0 && l.f1 < 0.0 {
-        l.v0
+        (l.w0, l.v0)
     } else {
         let s = if l.f0 == 0.0 {
             other_root_at_rest()
         } else {
             bracketed_root(fs, l.v0, 0.0)
         };
-        polish_near_pole(|v| r.f_v(v), l.v0 - s, s, r.e, l.v0)
+        let v = l.v0 - s;
+        if v.max(0.0) < s {
+            let v = polish_near_pole(|v| r.f_v(v), v, s, r.e, l.v0);
+            (2.0 - v, v)
+        } else {
+            (l.w0 + s, v)
+        }
     };
-    Turning::from_upper_w_lower_v(w_lo, v_lo)
+    Turning::new(upper, lower)
 }
 
 /// Re-solves a root at pole distance `p` (first found at distance `dist` from the start, whose
@@ -354,7 +367,8 @@ fn root_near_pole(g: impl Fn(f64) -> (f64, f64), k: f64, hi: f64) -> f64 {
 /// the effective potential); `Some((turning, steady))` otherwise.
 pub(crate) fn turning_points_from_constants(r: &Reduced) -> Option<Turning> {
     let (c2, c1, _) = r.w_coefficients();
-    // The maximum of f on [0, 2]: the larger root of f'(w) = −3βw² + 2C₂w + C₁.
+    // The maximum of f on [0, 2]: the larger root of f'(w) = −3βw² + 2C₂w + C₁, or, below the
+    // equator, the smaller root of f'(v) = 3βv² − 2(2β + δ + a²)v + 2(δ + ae) (same point, in v).
     let w_star = quadratic_roots(-3.0 * r.beta, 2.0 * c2, c1)
         .into_iter()
         .fold(f64::NEG_INFINITY, f64::max);
@@ -363,36 +377,59 @@ pub(crate) fn turning_points_from_constants(r: &Reduced) -> Option<Turning> {
     } else {
         1.0
     };
+    let v_star = if w_star <= 1.0 {
+        2.0 - w_star
+    } else {
+        let v = quadratic_roots(
+            3.0 * r.beta,
+            -2.0 * (2.0 * r.beta + r.delta + r.a * r.a),
+            2.0 * (r.delta + r.a * r.e),
+        )
+        .into_iter()
+        .filter(|v| v.is_finite())
+        .fold(f64::INFINITY, f64::min);
+        if v.is_finite() {
+            v.clamp(0.0, 1.0)
+        } else {
+            2.0 - w_star
+        }
+    };
     let (f_star, _) = if w_star <= 1.0 {
         r.f_w(w_star)
     } else {
-        r.f_v(2.0 - w_star)
+        r.f_v(v_star)
     };
     let tol = 64.0 * f64::EPSILON * r.f_scale(w_star);
     if f_star < -tol {
         return None;
     }
-    let v_star = 2.0 - w_star;
     if f_star <= tol {
-        return Some(Turning::coincident(w_star, v_star));
+        return Some(if w_star <= 1.0 {
+            Turning::coincident(w_star, v_star)
+        } else {
+            Turning::coincident(2.0 - v_star, v_star)
+        });
     }
-    // Upper root in [0, w*], found in w where w ≤ 1, else in v.
-    let w_lo = if r.d == 0.0 && w_star <= 1.0 {
-        root_near_pole(|w| r.f_w(w), 0.0, w_star)
+    // Each root in the variable where it is ≤ 1, the other variable as its complement (≥ 1).
+    let in_w = |w: f64| (w, 2.0 - w);
+    let in_v = |v: f64| (2.0 - v, v);
+    // Upper root in [0, w*].
+    let upper = if r.d == 0.0 && w_star <= 1.0 {
+        in_w(root_near_pole(|w| r.f_w(w), 0.0, w_star))
     } else if w_star <= 1.0 || r.f_w(1.0).0 >= 0.0 {
-        bracketed_root(|w| r.f_w(w), 0.0, w_star.min(1.0))
+        in_w(bracketed_root(|w| r.f_w(w), 0.0, w_star.min(1.0)))
     } else {
-        2.0 - bracketed_root(|v| r.f_v(v), 1.0, v_star)
+        in_v(bracketed_root(|v| r.f_v(v), 1.0, v_star))
     };
-    // Lower root in [w*, 2], found in v where v ≤ 1, else in w.
-    let v_lo = if r.e == 0.0 && v_star <= 1.0 {
-        root_near_pole(|v| r.f_v(v), 0.0, v_star)
+    // Lower root in [w*, 2].
+    let lower = if r.e == 0.0 && v_star <= 1.0 {
+        in_v(root_near_pole(|v| r.f_v(v), 0.0, v_star))
     } else if v_star <= 1.0 || r.f_v(1.0).0 >= 0.0 {
-        bracketed_root(|v| r.f_v(v), 0.0, v_star.min(1.0))
+        in_v(bracketed_root(|v| r.f_v(v), 0.0, v_star.min(1.0)))
     } else {
-        2.0 - bracketed_root(|w| r.f_w(w), 1.0, w_star)
+        in_w(bracketed_root(|w| r.f_w(w), 1.0, w_star))
     };
-    Some(Turning::from_upper_w_lower_v(w_lo, v_lo))
+    Some(Turning::new(upper, lower))
 }
 
 #[cfg(test)]

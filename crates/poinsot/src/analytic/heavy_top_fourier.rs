@@ -286,7 +286,11 @@ impl Fourier {
                 oc[3 * i + 2] = self.psi_base + self.psi_rate * tc[i] + ss[i];
             }
         }
-        for (&t, o) in t_chunks.remainder().iter().zip(o_chunks.into_remainder().chunks_exact_mut(3)) {
+        for (&t, o) in t_chunks
+            .remainder()
+            .iter()
+            .zip(o_chunks.into_remainder().chunks_exact_mut(3))
+        {
             o.copy_from_slice(&self.angles(t));
         }
     }
