@@ -88,8 +88,8 @@ fn exact_solution_matches_the_40_digit_reference() {
                     row.t
                 );
             }
-            for i in 0..3 {
-                let err = (slow[i] - row.values[i]).abs() / row.values[i].abs().max(1.0);
+            for (i, got) in slow.iter().enumerate() {
+                let err = (got - row.values[i]).abs() / row.values[i].abs().max(1.0);
                 assert!(
                     err < REFERENCE_TOL,
                     "{name} (R_J) t = {}: component {i}: {err:e}",
