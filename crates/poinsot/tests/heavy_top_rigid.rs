@@ -4,11 +4,14 @@
 //!
 //! The rigid body knows nothing of Euler angles, p_φ or the cubic: it is the independent model.
 //! Body frame = principal axes at the pivot, I = diag(I₁, I₁, I₃); the centre of mass at l ê₃;
-//! the torque of gravity (−mg Ẑ) in body axes is `τ = −m g l ê₃ × (Rᵀ Ẑ)`; Ṙ = R [ω]×.
+//! the torque of gravity (−mg Ẑ) in body axes is `τ = −m g l ê₃ × (Rᵀ Ẑ)`; the attitude is a
+//! unit quaternion q = [w, x, y, z] (body → space) with q̇ = ½ q ⊗ (0, ω_body).
 
 use poinsot::analytic::{sleeping_threshold, EulerState, HeavyTop};
 use poinsot::integrate::{dop853, Options};
-use poinsot::rotation::{euler_to_matrix, EulerSequence};
+use poinsot::rotation::{
+    euler_to_matrix, matrix_to_quaternion, quaternion_to_matrix, EulerSequence,
+};
 use poinsot::Mat3;
 
 /// DOP853 at rtol = atol = 1e-13 over ~20 s: global error ≲ 1e-10; the bound leaves margin.
@@ -18,43 +21,50 @@ fn zxz() -> EulerSequence {
     EulerSequence::new("zxz", true).unwrap()
 }
 
-/// The state [R (row-major), ω_body] of the rigid body at the Euler state `s` (2.99 for ω).
-fn rigid_state(s: &EulerState) -> [f64; 12] {
-    let r = euler_to_matrix([s.phi, s.theta, s.psi], zxz()).unwrap();
+/// ω in body axes from the Euler angles and rates (2.99).
+fn body_omega(s: &EulerState) -> [f64; 3] {
     let (st, ct) = s.theta.sin_cos();
     let (sp, cp) = s.psi.sin_cos();
-    let w = [
+    [
         s.theta_dot * cp + s.phi_dot * st * sp,
         -s.theta_dot * sp + s.phi_dot * st * cp,
         s.psi_dot + s.phi_dot * ct,
-    ];
-    let mut y = [0.0; 12];
-    for i in 0..3 {
-        for j in 0..3 {
-            y[3 * i + j] = r[(i, j)];
-        }
-    }
-    y[9..].copy_from_slice(&w);
-    y
+    ]
 }
 
-/// Integrates the rigid top; returns R at each of `times`.
-fn integrate_rigid(i1: f64, i3: f64, mgl: f64, s: &EulerState, times: &[f64]) -> Vec<Mat3> {
-    let rhs = move |_t: f64, y: &[f64; 12], dy: &mut [f64; 12]| {
-        let (w1, w2, w3) = (y[9], y[10], y[11]);
-        // Ṙ = R [ω]×, row by row: (r × ... ) written out.
-        for i in 0..3 {
-            let (a, b, c) = (y[3 * i], y[3 * i + 1], y[3 * i + 2]);
-            dy[3 * i] = b * w3 - c * w2;
-            dy[3 * i + 1] = c * w1 - a * w3;
-            dy[3 * i + 2] = a * w2 - b * w1;
-        }
-        // Rᵀ Ẑ is the third row of R; τ = −mgl ê₃ × (R₃₁, R₃₂, R₃₃) = mgl (R₃₂, −R₃₁, 0).
-        let (tau1, tau2) = (mgl * y[7], -mgl * y[6]);
-        // Euler's equations for I = diag(I₁, I₁, I₃).
-        dy[9] = (tau1 - (i3 - i1) * w2 * w3) / i1;
-        dy[10] = (tau2 - (i1 - i3) * w3 * w1) / i1;
-        dy[11] = 0.0;
+/// The state [q (w, x, y, z), ω_body] of the rigid body at the Euler state `s`.
+fn rigid_state(s: &EulerState) -> [f64; 7] {
+    let r = euler_to_matrix([s.phi, s.theta, s.psi], zxz()).unwrap();
+    let q = matrix_to_quaternion(&r).unwrap();
+    let w = body_omega(s);
+    [q[0], q[1], q[2], q[3], w[0], w[1], w[2]]
+}
+
+/// Integrates the rigid top; returns (R, ω_body) at each of `times`.
+fn integrate_rigid(
+    i1: f64,
+    i3: f64,
+    mgl: f64,
+    s: &EulerState,
+    times: &[f64],
+) -> Vec<(Mat3, [f64; 3])> {
+    let rhs = move |_t: f64, y: &[f64; 7], dy: &mut [f64; 7]| {
+        let (qw, qx, qy, qz) = (y[0], y[1], y[2], y[3]);
+        let (w1, w2, w3) = (y[4], y[5], y[6]);
+        // q̇ = ½ q ⊗ (0, ω).
+        dy[0] = 0.5 * (-qx * w1 - qy * w2 - qz * w3);
+        dy[1] = 0.5 * (qw * w1 + qy * w3 - qz * w2);
+        dy[2] = 0.5 * (qw * w2 + qz * w1 - qx * w3);
+        dy[3] = 0.5 * (qw * w3 + qx * w2 - qy * w1);
+        // Rᵀ Ẑ is the third row of R(q): (2(xz − wy), 2(yz + wx), 1 − 2(x² + y²)), over |q|².
+        let n2 = qw * qw + qx * qx + qy * qy + qz * qz;
+        let r31 = 2.0 * (qx * qz - qw * qy) / n2;
+        let r32 = 2.0 * (qy * qz + qw * qx) / n2;
+        // τ = −mgl ê₃ × (R₃₁, R₃₂, R₃₃) = mgl (R₃₂, −R₃₁, 0); Euler's equations, I = diag(I₁, I₁, I₃).
+        let (tau1, tau2) = (mgl * r32, -mgl * r31);
+        dy[4] = (tau1 - (i3 - i1) * w2 * w3) / i1;
+        dy[5] = (tau2 - (i1 - i3) * w3 * w1) / i1;
+        dy[6] = 0.0;
     };
     let t_end = times.iter().cloned().fold(0.0, f64::max);
     let sol = dop853(
@@ -69,7 +79,10 @@ fn integrate_rigid(i1: f64, i3: f64, mgl: f64, s: &EulerState, times: &[f64]) ->
         .iter()
         .map(|&t| {
             let y = sol.at(t).unwrap();
-            Mat3::from_row_slice(&y[..9])
+            (
+                quaternion_to_matrix(&[y[0], y[1], y[2], y[3]], true).unwrap(),
+                [y[4], y[5], y[6]],
+            )
         })
         .collect()
 }
@@ -164,7 +177,7 @@ fn exact_solution_matches_the_rigid_body_integration() {
     for (i1, i3, mgl, s) in cases {
         let top = HeavyTop::new(i1, i3, mgl, s).unwrap();
         let rigid = integrate_rigid(i1, i3, mgl, &s, &times);
-        for (t, r) in times.iter().zip(&rigid) {
+        for (t, (r, _)) in times.iter().zip(&rigid) {
             let exact = euler_to_matrix(top.euler_angles(*t), zxz()).unwrap();
             let err = (exact - r).abs().max();
             assert!(
@@ -173,30 +186,16 @@ fn exact_solution_matches_the_rigid_body_integration() {
                 top.motion_class()
             );
         }
-        // L_Z = p_φ and L₃ = p_ψ along the rigid body (the space-frame angular momentum's Z
-        // component is R·(I ω) · Ẑ).
-        let sol_l = |r: &Mat3, t: f64| {
-            let [phd, thd, psd] = top.euler_rates(t);
-            let [_, th, ps] = top.euler_angles(t);
-            let s2 = EulerState {
-                theta: th,
-                psi: ps,
-                phi_dot: phd,
-                theta_dot: thd,
-                psi_dot: psd,
-                ..Default::default()
-            };
-            let w = rigid_state(&s2);
-            let l_body = poinsot::Vec3::new(i1 * w[9], i1 * w[10], i3 * w[11]);
-            ((r * l_body).z, l_body.z)
-        };
-        for (t, r) in times.iter().zip(&rigid) {
-            let (lz, l3) = sol_l(r, *t);
-            let tol = 1e-7 * (1.0 + top.p_phi().abs() + top.p_psi().abs());
+        // Along the rigid body, L_Z = Ẑ · R (I ω) stays p_φ and L₃ = I₃ω₃ stays p_ψ.
+        for (t, (r, w)) in times.iter().zip(&rigid) {
+            let l_body = poinsot::Vec3::new(i1 * w[0], i1 * w[1], i3 * w[2]);
+            let (lz, l3) = ((r * l_body).z, l_body.z);
+            let tol = 1e-9 * (1.0 + top.p_phi().abs() + top.p_psi().abs());
             assert!(
                 (lz - top.p_phi()).abs() < tol && (l3 - top.p_psi()).abs() < tol,
-                "t = {t}: L_Z {lz} p_phi {}",
-                top.p_phi()
+                "t = {t}: L_Z {lz} vs p_phi {}, L_3 {l3} vs p_psi {}",
+                top.p_phi(),
+                top.p_psi()
             );
         }
     }
@@ -220,7 +219,7 @@ fn sleeping_top_threshold_by_simulation() {
         let rigid = integrate_rigid(i1, i3, mgl, &s, &times);
         let max_theta = rigid
             .iter()
-            .map(|r| r[(2, 2)].clamp(-1.0, 1.0).acos())
+            .map(|(r, _)| r[(2, 2)].clamp(-1.0, 1.0).acos())
             .fold(0.0, f64::max);
         let top = HeavyTop::new(i1, i3, mgl, s).unwrap();
         let (_, theta2) = top.turning_points();
