@@ -523,3 +523,31 @@ proptest! {
         prop_assert!((x[1] - y[1]).abs() < 1e-9, "theta {} vs {}", x[1], y[1]);
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 200, ..ProptestConfig::default() })]
+    /// The Fourier fast path (closed-form coefficients from Jacobi's theta expansions) equals the
+    /// incomplete integrals (sn and Carlson's R_J at each time) on random tops, to round-off:
+    /// 1e-12 absolute for |angle| ≤ 1, relative above.
+    #[test]
+    fn fourier_path_equals_the_incomplete_integrals(
+        i3 in 0.1f64..2.0, mgl in 0.0f64..3.0, th0 in 0.01f64..3.13,
+        thd in -3.0f64..3.0, phd in -4.0f64..4.0, w3 in -25.0f64..25.0,
+    ) {
+        let c = th0.cos();
+        let st = EulerState { theta: th0, theta_dot: thd, phi_dot: phd, psi_dot: w3 - phd * c, phi: 0.4, psi: -1.3 };
+        let top = HeavyTop::new(1.0, i3, mgl, st).unwrap();
+        let times: Vec<f64> = (0..64).map(|k| 0.61 * k as f64 - 3.0).collect();
+        let mut batch = vec![0.0; 3 * times.len()];
+        top.euler_angles_into(&times, &mut batch).unwrap();
+        for (k, &t) in times.iter().enumerate() {
+            let a = top.euler_angles(t);
+            let b = top.euler_angles_carlson(t);
+            for i in 0..3 {
+                let scale = b[i].abs().max(1.0);
+                prop_assert!((a[i] - b[i]).abs() < 1e-12 * scale, "t {} comp {}: {} vs {} ({} terms)", t, i, a[i], b[i], top.fourier_terms());
+                prop_assert!((batch[3 * k + i] - b[i]).abs() < 1e-12 * scale, "batch t {} comp {}", t, i);
+            }
+        }
+    }
+}
