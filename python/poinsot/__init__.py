@@ -13,6 +13,8 @@ The public API (see ``DESIGN.md``'s contract and the README):
   Lie–Poisson splitting, RK4, DOP853), :func:`simulate_batch`, :class:`FreeSymmetricTop`
   (2.77–2.97), :class:`FreeRigidBody` (the exact asymmetric top), :func:`axis_stability`;
   :mod:`poinsot.special` holds the Jacobi elliptic functions;
+* the heavy symmetric top: :class:`HeavyTop` (eqs. 2.98–2.121: constants, effective
+  potential, turning points, steady precession, the exact motion by elliptic functions);
 * errors: :class:`PoinsotError` (a ``ValueError``) and its subclasses.
 
 SI units and radians everywhere; quaternions are scalar-first ``[w, x, y, z]``.
@@ -35,6 +37,8 @@ from .free import *  # noqa: F401,F403
 from .free import __all__ as _free_all
 from .rotation import *  # noqa: F401,F403
 from .rotation import __all__ as _rotation_all
+from .top import *  # noqa: F401,F403
+from .top import __all__ as _top_all
 
 __all__ = [
     "__version__",
@@ -45,4 +49,5 @@ __all__ = [
     *_earth_all,
     *_dynamics_all,
     *_free_all,
+    *_top_all,
 ]

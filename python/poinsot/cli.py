@@ -377,6 +377,63 @@ def free(moments: tuple[float, float, float], omega: tuple[float, float, float],
         "omega_error": float(np.linalg.norm(tr.omega[-1] - w_end)), "attitude_error": q_err,
         "axis_stability": [s.stability for s in stab],
     }
+@main.command()
+@click.option("--I1", "i1", type=float, required=True, help="Moment about a transverse axis through the pivot (kg·m²).")
+@click.option("--I3", "i3", type=float, required=True, help="Moment about the symmetry axis (kg·m², ≤ 2 I1).")
+@click.option("--mgl", type=float, required=True, help="m g l: weight × pivot-to-centre-of-mass distance (N·m).")
+@click.option("--theta", type=float, required=True, help="Initial nutation angle θ₀ from the upward vertical (rad, or degrees).")
+@click.option("--phi-dot", "phi_dot", type=float, default=0.0, show_default=True, help="Initial precession rate φ̇₀ (rad/s).")
+@click.option("--psi-dot", "psi_dot", type=float, default=0.0, show_default=True, help="Initial spin rate ψ̇₀ (rad/s).")
+@click.option("--theta-dot", "theta_dot", type=float, default=0.0, show_default=True, help="Initial nutation rate θ̇₀ (rad/s).")
+@click.option("--degrees", is_flag=True, help="Read θ₀ in degrees and the rates in degrees per second.")
+@click.option("--plot", "plot_dir", type=click.Path(file_okay=False), default=None,
+              help="Save pictures (V(θ), the axis' locus, θ/φ̇/ψ̇ against t, steady rates against spin) "
+                   "and an animation (top.gif) into this folder.")
+@click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
+def top(i1: float, i3: float, mgl: float, theta: float, phi_dot: float, psi_dot: float, theta_dot: float,
+        degrees: bool, plot_dir: str | None, as_json: bool) -> None:
+    """The heavy symmetric top (eqs. 2.98–2.121), solved exactly.
+
+    Prints the constants of the motion (p_φ, p_ψ, E, E′), the turning points θ₁ ≤ θ₂, the
+    motion class (waves, loops, cusps, steady precession, sleeping, ...), the nutation period,
+    the mean precession and spin rates, and the steady-precession rates at θ₀ for this spin
+    (exact roots of 2.116 beside the unit's 2.120 (corrected) and 2.121, minimum spin 2.119).
+
+    \b
+    Examples:
+      poinsot top --I1 1 --I3 0.5 --mgl 1 --theta 0.8 --psi-dot 6            # cusps
+      poinsot top --I1 1 --I3 0.5 --mgl 0.3 --theta 0.6 --psi-dot 40 --json
+      poinsot top --I1 1 --I3 0.5 --mgl 1 --theta 45 --degrees --phi-dot -30 --psi-dot 340 --plot out/
+    """
+    from .top import HeavyTop
+
+    t = HeavyTop(i1, i3, mgl, theta, theta_dot=theta_dot, phi_dot=phi_dot, psi_dot=psi_dot, degrees=degrees)
+    theta0 = t.initial_state["theta"]
+    t1, t2 = t.turning_points
+    steady: dict[str, Any]
+    try:
+        s = HeavyTop.steady_precession(i1, i3, mgl, theta0, t.omega3)
+        steady = {"slow": s.slow, "fast": s.fast, "slow_approx_2_121": s.slow_approx,
+                  "fast_approx_2_120": s.fast_approx, "fast_2_120_as_printed": s.fast_approx_as_printed,
+                  "min_spin_2_119": s.min_spin}
+    except PoinsotError as exc:
+        steady = {"error": str(exc), "min_spin_2_119": HeavyTop.min_spin(i1, i3, mgl, theta0)}
+    data: dict[str, Any] = {
+        "I1": i1, "I3": i3, "mgl": mgl, "initial_state": t.initial_state,
+        "p_phi": t.p_phi, "p_psi": t.p_psi, "omega3": t.omega3, "energy": t.energy,
+        "reduced_energy": t.reduced_energy, "turning_points": [t1, t2], "cubic_roots": list(t.cubic_roots),
+        "motion_class": t.motion_class, "nutation_period": t.nutation_period,
+        "mean_precession_rate": t.mean_precession_rate, "mean_spin_rate": t.mean_spin_rate,
+        "steady_precession_at_theta0": steady,
+        "sleeping_threshold": HeavyTop.sleeping_threshold(i1, i3, mgl),
+        "sleeping_stable": t.is_sleeping_stable,
+    }
+    saved: list[str] = []
+    if plot_dir is not None:
+        from .plots_top import save_top_plots
+
+        saved = [str(p) for p in save_top_plots(t, plot_dir, animation=True)]
+        data["plots"] = saved
     if as_json:
         emit_json(data)
         return
@@ -396,3 +453,40 @@ def free(moments: tuple[float, float, float], omega: tuple[float, float, float],
     table.add_row("|ω − ω_exact| / |q − q_exact|", f"{data['omega_error']:.2e} / {q_err:.2e}")
     table.add_row("steps / wall time", f"{tr.steps} / {wall:.3g} s")
     Console().print(table)
+    table = Table(title=f"heavy top: I₁ = {i1:g} kg·m², I₃ = {i3:g} kg·m², m g l = {mgl:g} N·m, "
+                        f"θ₀ = {theta0:.6g} rad")
+    table.add_column("quantity")
+    table.add_column("value", justify="right")
+    table.add_column("unit's eq.", justify="right")
+    rows = [
+        ("p_ψ = I₃ω₃ (kg·m²/s)", f"{t.p_psi:.10g}", "2.103"),
+        ("p_φ = L_Z (kg·m²/s)", f"{t.p_phi:.10g}", "2.104"),
+        ("ω₃ (rad/s)", f"{t.omega3:.10g}", "2.99"),
+        ("E (J)", f"{t.energy:.10g}", "2.105"),
+        ("E′ = E − p_ψ²/2I₃ (J)", f"{t.reduced_energy:.10g}", "2.109"),
+        ("turning points θ₁, θ₂ (rad)", f"{t1:.10g}, {t2:.10g}", "2.110"),
+        ("turning points θ₁, θ₂ (°)", f"{np.degrees(t1):.8g}, {np.degrees(t2):.8g}", ""),
+        ("motion class", t.motion_class, ""),
+        ("nutation period (s)", f"{t.nutation_period:.10g}", "2.112"),
+        ("mean precession rate ⟨φ̇⟩ (rad/s)", f"{t.mean_precession_rate:.10g}", "2.106"),
+        ("mean spin rate ⟨ψ̇⟩ (rad/s)", f"{t.mean_spin_rate:.10g}", "2.99"),
+    ]
+    if "error" in steady:
+        rows.append(("steady precession at θ₀", "none: spin below the minimum", "2.118"))
+    else:
+        rows += [
+            ("steady precession at θ₀: slow / fast (rad/s)", f"{steady['slow']:.8g} / {steady['fast']:.8g}", "2.116"),
+            ("  fast-top slow ≈ mgl/p_ψ (rad/s)", f"{steady['slow_approx_2_121']:.8g}", "2.121"),
+            ("  fast-top fast ≈ p_ψ/(I₁ cos θ₀) (rad/s)", f"{steady['fast_approx_2_120']:.8g}", "2.120*"),
+        ]
+    rows += [
+        ("minimum spin for steady precession at θ₀ (rad/s)", f"{steady['min_spin_2_119']:.8g}", "2.119"),
+        ("sleeping threshold 2√(mgl I₁)/I₃ (rad/s)", f"{data['sleeping_threshold']:.8g}",
+         "stable" if t.is_sleeping_stable else "unstable"),
+    ]
+    for row in rows:
+        table.add_row(*row)
+    Console().print(table)
+    click.echo("* 2.120 corrected: the unit prints p_ψ/(2 I₁ cos θ₀), a factor 2 too small (see docs/heavy_top.md).")
+    for p in saved:
+        click.echo(f"saved {p}")

@@ -254,6 +254,62 @@ def _free_asymmetric_top(con: Console) -> None:
     con.print(table)
     con.print("  the splitting's every stage is an exact rotation: |L| stays at round-off and the energy "
               "error stays bounded; RK4's energy drifts.")
+@section("The heavy symmetric top: constants, effective potential, turning points (eqs. 2.102–2.114)")
+def _heavy_top(con: Console) -> None:
+    i1, i3, mgl = 1.0, 0.5, 1.0
+    table = Table(title=f"I₁ = {i1} kg·m², I₃ = {i3} kg·m², m g l = {mgl} N·m, θ₀ = 0.8 rad, ω₃ ≈ 6 rad/s, "
+                        "released with θ̇₀ = 0")
+    table.add_column("φ̇₀ (rad/s)", justify="right")
+    table.add_column("p_φ, p_ψ (kg·m²/s)", justify="right")
+    table.add_column("E′ (J)", justify="right")
+    table.add_column("θ₁, θ₂ (rad)", justify="right")
+    table.add_column("nutation period (s)", justify="right")
+    table.add_column("⟨φ̇⟩ (rad/s)", justify="right")
+    table.add_column("the axis traces")
+    for phi_dot in (0.5, 0.0, -0.5):
+        top = ps.HeavyTop(i1, i3, mgl, 0.8, phi_dot=phi_dot, psi_dot=6.0 - phi_dot * np.cos(0.8))
+        t1, t2 = top.turning_points
+        table.add_row(f"{phi_dot:+.1f}", f"{top.p_phi:.6f}, {top.p_psi:.6f}", f"{top.reduced_energy:.6f}",
+                      f"{t1:.6f}, {t2:.6f}", f"{top.nutation_period:.6f}", f"{top.mean_precession_rate:.6f}",
+                      top.motion_class)
+    con.print(table)
+    top = ps.HeavyTop(i1, i3, mgl, 0.8, psi_dot=6.0)
+    t1, t2 = top.turning_points
+    con.print(f"  at the turning points E′ = V(θ) (2.109–2.110): V(θ₁) − E′ = {top.effective_potential(t1) - top.reduced_energy:.1e} J,"
+              f" V(θ₂) − E′ = {top.effective_potential(t2) - top.reduced_energy:.1e} J")
+    phi, theta, psi = top.euler_angles(top.nutation_period / 2)
+    con.print(f"  the exact motion (elliptic functions — the unit's \"very difficult\" 2.112): half a nutation period "
+              f"later θ = {theta:.12f} rad = θ₂, φ = {phi:.9f} rad, ψ = {psi:.9f} rad")
+    thr = ps.HeavyTop.sleeping_threshold(i1, i3, mgl)
+    con.print(f"  the sleeping top: upright spinning is stable iff ω₃² > 4 m g l I₁/I₃², i.e. ω₃ > {thr:.6g} rad/s")
+
+
+@section("A fast top's slow and fast precession against the unit's approximations (eqs. 2.115–2.121)")
+def _fast_top(con: Console) -> None:
+    i1, i3, mgl, theta0 = 1.0, 0.5, 0.3, 0.6
+    w_min = ps.HeavyTop.min_spin(i1, i3, mgl, theta0)
+    con.print(f"I₁ = {i1}, I₃ = {i3}, m g l = {mgl}, θ₀ = {theta0} rad: minimum spin (2.119) "
+              f"ω₃ = (2/I₃)√(m g l I₁ cos θ₀) = {w_min:.6f} rad/s")
+    table = Table(title="steady precession rates φ̇ (rad/s): the two roots of 2.116 and the fast-top formulas")
+    table.add_column("ω₃ (rad/s)", justify="right")
+    table.add_column("slow, exact", justify="right")
+    table.add_column("m g l/p_ψ (2.121)", justify="right")
+    table.add_column("fast, exact", justify="right")
+    table.add_column("p_ψ/(I₁ cos θ₀) (2.120, corrected)", justify="right")
+    table.add_column("p_ψ/(2 I₁ cos θ₀) (2.120 as printed)", justify="right")
+    for w3 in (1.01 * w_min, 5.0, 10.0, 40.0, 200.0):
+        s = ps.HeavyTop.steady_precession(i1, i3, mgl, theta0, w3)
+        table.add_row(f"{w3:.4g}", f"{s.slow:.6f}", f"{s.slow_approx:.6f}", f"{s.fast:.4f}", f"{s.fast_approx:.4f}",
+                      f"{s.fast_approx_as_printed:.4f}")
+    con.print(table)
+    s = ps.HeavyTop.steady_precession(i1, i3, mgl, theta0, 40.0)
+    con.print(f"  at ω₃ = 40 rad/s: exact fast root {s.fast:.4f} rad/s; the corrected 2.120 gives {s.fast_approx:.4f}, "
+              f"the unit's printed formula {s.fast_approx_as_printed:.4f} (a factor 2 off: erratum)")
+    released = ps.HeavyTop(i1, i3, mgl, theta0, psi_dot=40.0)
+    t1, t2 = released.turning_points
+    con.print(f"  released at rest instead ({released.motion_class}): it nutates by {t2 - t1:.2e} rad and drifts at "
+              f"⟨φ̇⟩ = {released.mean_precession_rate:.6f} rad/s — close to the slow rate: "
+              "\"it is normally the slow precession that is observed\"")
 
 
 def run_tour(console: Console | None = None) -> None:

@@ -11,6 +11,7 @@ mod dynamics;
 mod earth;
 mod errors;
 mod frames;
+mod heavy_top;
 mod inertia;
 mod rotation;
 mod special;
@@ -29,5 +30,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     special::register(m)?;
     analytic::register(m)?;
     dynamics::register(m)?;
+    heavy_top::register(m)?;
     Ok(())
 }

@@ -13,7 +13,7 @@
 //! | [`earth`] | the rotating Earth: effective gravity, Coriolis, falling bodies, projectiles, Foucault, winds | 2.29–2.42 |
 //! | [`integrate`] | ODE integrators that know no physics: adaptive DOP853 with dense output and events, RK4 | — |
 //! | [`dynamics`] | Euler's equations with torques, attitude quaternions, `simulate` (exact flow, Lie–Poisson splitting, RK4, DOP853), batches | 2.67–2.76 |
-//! | [`analytic`] | closed forms: the free symmetric top, the free asymmetric top (Jacobi functions, Π), Poinsot's construction, axis stability | 2.77–2.97 |
+//! | [`analytic`] | closed forms: the free symmetric top, the free asymmetric top (Jacobi functions, Π), Poinsot's construction, axis stability; the heavy symmetric top (Lagrangian, effective potential, turning points, steady precession, exact motion) | 2.77–2.121 |
 //! | [`special`] | Jacobi elliptic functions sn, cn, dn, am (parameter m = k²) and elliptic integrals F, E, K, Π | — |
 //!
 //! Conventions (see `CONVENTIONS.md` at the repository root): SI units, radians, right-handed

@@ -1,14 +1,26 @@
 //! Closed-form solutions: the free symmetric top (the unit's 2.77–2.97), the free asymmetric
 //! top (Jacobi elliptic functions and the integral of the third kind), Poinsot's construction
-//! and the stability of rotation about the principal axes.
+//! and the stability of rotation about the principal axes, and the heavy symmetric top (the
+//! unit's eqs. 2.98–2.121), exactly, by elliptic functions.
 
 mod free_rigid_body;
 mod free_symmetric_top;
+mod heavy_top;
+mod heavy_top_cubic;
+mod heavy_top_fourier;
+mod heavy_top_motion;
+mod heavy_top_steady;
 mod poinsot_construction;
 mod rotations;
 
 pub use free_rigid_body::{check_moments, FreeRegime, FreeRigidBody};
 pub use free_symmetric_top::{FreeSymmetricTop, TopShape};
+pub use heavy_top::{
+    lagrangian, EulerState, HeavyTop, MotionClass, CUSP_TOLERANCE, STEADY_NUTATION_TOLERANCE,
+};
+pub use heavy_top_steady::{
+    check_theta, check_top, min_spin, sleeping_threshold, steady_precession, SteadyPrecession,
+};
 pub use poinsot_construction::{axis_stability, AxisStability, Stability};
 pub(crate) use rotations::{
     conj, hamilton, matrix_to_quaternion_unchecked as matrix_quaternion, normalized,

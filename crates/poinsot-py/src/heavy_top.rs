@@ -1,0 +1,213 @@
+//! Bindings of `poinsot::analytic`'s heavy symmetric top (conversion and error mapping only).
+//!
+//! `HeavyTopCore` wraps `poinsot::analytic::HeavyTop`; the public, documented class is
+//! `poinsot.HeavyTop` (python/poinsot/top.py), which holds one of these.
+use numpy::ndarray::Array2;
+use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1};
+use poinsot::analytic::{self, EulerState, HeavyTop};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use crate::errors::{invalid, IntoPy};
+
+/// A heavy symmetric top with its exact motion (private; use `poinsot.HeavyTop`).
+#[pyclass(module = "poinsot._core", name = "HeavyTopCore", frozen)]
+pub struct PyHeavyTop {
+    inner: HeavyTop,
+}
+
+/// A contiguous (N,) float64 array as a slice.
+fn slice<'a>(argument: &str, a: &'a PyReadonlyArray1<'_, f64>) -> PyResult<&'a [f64]> {
+    a.as_slice().map_err(|_| invalid(argument, "must be a C-contiguous float64 array"))
+}
+
+/// Evaluates `f` over `times` into a new (N, 3) array, without the GIL.
+fn batch<'py>(
+    py: Python<'py>,
+    times: &PyReadonlyArray1<'py, f64>,
+    f: impl Fn(&[f64], &mut [f64]) -> poinsot::Result<()> + Send + Sync,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let ts = slice("t", times)?;
+    let n = ts.len();
+    let mut out = vec![0.0; 3 * n];
+    py.detach(|| f(ts, &mut out)).map_err(|mut e| {
+        if e.argument == "times" {
+            e.argument = "t".into();
+        }
+        e
+    }).py()?;
+    Ok(Array2::from_shape_vec((n, 3), out).map_err(|e| invalid("t", e.to_string()))?.into_pyarray(py))
+}
+
+#[pymethods]
+impl PyHeavyTop {
+    /// The top (I₁, I₃, m g l) started at t = 0 from Euler angles and rates (rad, rad/s).
+    #[staticmethod]
+    #[allow(clippy::too_many_arguments)]
+    fn from_state(
+        i1: f64,
+        i3: f64,
+        mgl: f64,
+        phi: f64,
+        theta: f64,
+        psi: f64,
+        phi_dot: f64,
+        theta_dot: f64,
+        psi_dot: f64,
+    ) -> PyResult<Self> {
+        let state = EulerState { phi, theta, psi, phi_dot, theta_dot, psi_dot };
+        Ok(Self { inner: HeavyTop::new(i1, i3, mgl, state).py()? })
+    }
+
+    /// The top given by p_φ, p_ψ (kg·m²/s) and E (J); t = 0 at the upper turning point.
+    #[staticmethod]
+    fn from_constants(i1: f64, i3: f64, mgl: f64, p_phi: f64, p_psi: f64, energy: f64) -> PyResult<Self> {
+        Ok(Self { inner: HeavyTop::from_constants(i1, i3, mgl, p_phi, p_psi, energy).py()? })
+    }
+
+    /// (I₁, I₃, m g l).
+    #[getter]
+    fn parameters(&self) -> (f64, f64, f64) {
+        (self.inner.i1(), self.inner.i3(), self.inner.mgl())
+    }
+    #[getter]
+    fn p_phi(&self) -> f64 {
+        self.inner.p_phi()
+    }
+    #[getter]
+    fn p_psi(&self) -> f64 {
+        self.inner.p_psi()
+    }
+    #[getter]
+    fn omega3(&self) -> f64 {
+        self.inner.omega3()
+    }
+    #[getter]
+    fn energy(&self) -> f64 {
+        self.inner.energy()
+    }
+    #[getter]
+    fn reduced_energy(&self) -> f64 {
+        self.inner.reduced_energy()
+    }
+    /// (φ, θ, ψ, φ̇, θ̇, ψ̇) at t = 0.
+    #[getter]
+    fn initial_state(&self) -> (f64, f64, f64, f64, f64, f64) {
+        let s = self.inner.initial_state();
+        (s.phi, s.theta, s.psi, s.phi_dot, s.theta_dot, s.psi_dot)
+    }
+    /// (θ₁, θ₂), rad.
+    #[getter]
+    fn turning_points(&self) -> (f64, f64) {
+        self.inner.turning_points()
+    }
+    /// (u₁, u₂, u₃): the roots of the cubic in u = cos θ (u₃ = inf for m g l = 0).
+    #[getter]
+    fn cubic_roots(&self) -> (f64, f64, f64) {
+        self.inner.cubic_roots()
+    }
+    #[getter]
+    fn motion_class(&self) -> &'static str {
+        self.inner.motion_class().name()
+    }
+    #[getter]
+    fn is_sleeping_stable(&self) -> bool {
+        self.inner.is_sleeping_stable()
+    }
+    /// The nutation period (s), None when θ never returns.
+    #[getter]
+    fn nutation_period(&self) -> Option<f64> {
+        self.inner.nutation_period()
+    }
+    #[getter]
+    fn mean_precession_rate(&self) -> f64 {
+        self.inner.mean_precession_rate()
+    }
+    #[getter]
+    fn mean_spin_rate(&self) -> f64 {
+        self.inner.mean_spin_rate()
+    }
+    #[getter]
+    fn fourier_terms(&self) -> usize {
+        self.inner.fourier_terms()
+    }
+
+    /// V(θ) (J) at (N,) angles θ (rad).
+    fn effective_potential<'py>(&self, py: Python<'py>, theta: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let out: Vec<f64> =
+            slice("theta", &theta)?.iter().map(|&th| self.inner.effective_potential(th)).collect::<poinsot::Result<_>>().py()?;
+        Ok(PyArray1::from_vec(py, out))
+    }
+
+    /// dV/dθ (N·m) at (N,) angles θ (rad).
+    fn effective_potential_derivative<'py>(&self, py: Python<'py>, theta: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let out: Vec<f64> = slice("theta", &theta)?
+            .iter()
+            .map(|&th| self.inner.effective_potential_derivative(th))
+            .collect::<poinsot::Result<_>>()
+            .py()?;
+        Ok(PyArray1::from_vec(py, out))
+    }
+
+    /// (N, 3) Euler angles [φ, θ, ψ] (rad) at (N,) times (s).
+    fn euler_angles<'py>(&self, py: Python<'py>, t: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        batch(py, &t, |ts, out| self.inner.euler_angles_into(ts, out))
+    }
+
+    /// (N, 3) Euler-angle rates [φ̇, θ̇, ψ̇] (rad/s) at (N,) times (s).
+    fn euler_rates<'py>(&self, py: Python<'py>, t: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        batch(py, &t, |ts, out| self.inner.euler_rates_into(ts, out))
+    }
+
+    /// (N, 3) Euler angles by the incomplete elliptic integrals (sn, R_J) at every time.
+    fn euler_angles_carlson<'py>(&self, py: Python<'py>, t: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let ts = slice("t", &t)?;
+        poinsot::error::check_finite("t", ts).py()?;
+        let rows: Vec<[f64; 3]> = ts.iter().map(|&x| self.inner.euler_angles_carlson(x)).collect();
+        Ok(crate::frames::rows_out(py, &rows))
+    }
+}
+
+/// The steady-precession rates at θ₀ and ω₃ as a dict: slow, fast, slow_approx (2.121),
+/// fast_approx (2.120 corrected), fast_approx_as_printed (2.120 as printed), min_spin (2.119).
+#[pyfunction]
+fn heavy_top_steady_precession<'py>(py: Python<'py>, i1: f64, i3: f64, mgl: f64, theta0: f64, omega3: f64) -> PyResult<Bound<'py, PyDict>> {
+    let s = analytic::steady_precession(i1, i3, mgl, theta0, omega3).py()?;
+    let d = PyDict::new(py);
+    d.set_item("slow", s.slow)?;
+    d.set_item("fast", s.fast)?;
+    d.set_item("slow_approx", s.slow_approx)?;
+    d.set_item("fast_approx", s.fast_approx)?;
+    d.set_item("fast_approx_as_printed", s.fast_approx_as_printed)?;
+    d.set_item("min_spin", s.min_spin)?;
+    Ok(d)
+}
+
+/// The minimum spin 2.119 (rad/s) at θ₀.
+#[pyfunction]
+fn heavy_top_min_spin(i1: f64, i3: f64, mgl: f64, theta0: f64) -> PyResult<f64> {
+    analytic::min_spin(i1, i3, mgl, theta0).py()
+}
+
+/// The sleeping-top threshold 2√(m g l I₁)/I₃ (rad/s).
+#[pyfunction]
+fn heavy_top_sleeping_threshold(i1: f64, i3: f64, mgl: f64) -> PyResult<f64> {
+    analytic::sleeping_threshold(i1, i3, mgl).py()
+}
+
+/// The Lagrangian 2.102 (J) at one state.
+#[pyfunction]
+fn heavy_top_lagrangian(i1: f64, i3: f64, mgl: f64, theta: f64, theta_dot: f64, phi_dot: f64, psi_dot: f64) -> PyResult<f64> {
+    let s = EulerState { theta, theta_dot, phi_dot, psi_dot, ..EulerState::default() };
+    analytic::lagrangian(i1, i3, mgl, &s).py()
+}
+
+/// Registers the heavy-top class and functions.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<PyHeavyTop>()?;
+    m.add_function(wrap_pyfunction!(heavy_top_steady_precession, m)?)?;
+    m.add_function(wrap_pyfunction!(heavy_top_min_spin, m)?)?;
+    m.add_function(wrap_pyfunction!(heavy_top_sleeping_threshold, m)?)?;
+    m.add_function(wrap_pyfunction!(heavy_top_lagrangian, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,396 @@
+"""The heavy symmetric top (the unit's "Euler's Angles" and "Motion of a Symmetrical Top",
+eqs. 2.98–2.121), exactly.
+
+Conventions: the pivot at the origin, the centre of mass at distance ``l`` along body axis 3,
+gravity ``-g`` along the fixed Z axis, so the potential is ``V = m g l cos(theta)``. Euler angles
+are the unit's intrinsic z-x-z: ``phi`` (precession, about Z), ``theta`` (nutation, about the
+line of nodes), ``psi`` (spin, about axis 3); ``R = R_z(phi) @ R_x(theta) @ R_z(psi)`` maps body
+to space components. ``I1`` is the moment about a transverse axis *through the pivot*, ``I3``
+about the symmetry axis. SI units, radians (``degrees=True`` where angles are user-facing).
+
+The unit stops at the effective potential and calls the exact motion "very difficult"; here it
+is computed: ``theta(t)`` by Jacobi's ``sn`` and ``phi(t)``, ``psi(t)`` by elliptic integrals of
+the third kind (summed as their closed-form Fourier series, or by Carlson's ``R_J``), from the
+Rust core. Two misprints of the unit are corrected (see ``docs/heavy_top.md``): in 2.117 the
+square root holds ``p_psi**2`` (not ``p_phi**2``), and the fast precession 2.120 is
+``p_psi / (I1 cos theta0)`` (no factor 1/2).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from . import _core
+from ._validate import FloatArray, as_float_array, as_scalar
+
+__all__ = ["HeavyTop", "SteadyPrecession", "MOTION_CLASSES"]
+
+MOTION_CLASSES = ("waves", "loops", "cusps", "steady precession", "sleeping", "hanging", "through vertical")
+"""The values of :attr:`HeavyTop.motion_class`: the shape of the symmetry axis' path on the unit
+sphere (Goldstein Fig. 5.9) — ``"waves"`` (phi' keeps one sign between the turning circles),
+``"loops"`` (phi' changes sign), ``"cusps"`` (phi' = 0 at a turning point: released at rest),
+``"steady precession"`` (theta constant, 0 < theta < pi), ``"sleeping"`` (theta stays 0: spinning
+upright), ``"hanging"`` (theta stays pi), ``"through vertical"`` (the axis passes through a pole,
+where phi and psi jump by pi)."""
+
+
+@dataclass(frozen=True)
+class SteadyPrecession:
+    """The steady-precession rates of a top held at ``theta0`` spinning at ``omega3`` (rad/s).
+
+    Attributes
+    ----------
+    slow, fast:
+        The two exact roots of 2.116, ``I1 cos(theta0) phi'**2 - p_psi phi' + m g l = 0``
+        (``fast`` is ``inf`` at ``theta0 = pi/2``, where only the slow rate exists).
+    slow_approx:
+        The unit's 2.121, ``m g l / p_psi``: the slow rate of a fast top.
+    fast_approx:
+        The unit's 2.120 *corrected*, ``p_psi / (I1 cos theta0)``: the fast rate of a fast top.
+    fast_approx_as_printed:
+        2.120 as the unit prints it, ``p_psi / (2 I1 cos theta0)``: a misprint, off by a factor 2.
+    min_spin:
+        The minimum spin 2.119 for steady precession at ``theta0`` (rad/s).
+    """
+
+    slow: float
+    fast: float
+    slow_approx: float
+    fast_approx: float
+    fast_approx_as_printed: float
+    min_spin: float
+
+
+def _angle(value: Any, name: str, degrees: bool) -> float:
+    x = as_scalar(value, name)
+    return math.radians(x) if degrees else x
+
+
+def _flat(value: Any, name: str, degrees: bool = False) -> tuple[FloatArray, tuple[int, ...]]:
+    arr = as_float_array(value, name)
+    if degrees:
+        arr = np.radians(arr)
+    return np.ascontiguousarray(arr.reshape(-1), dtype=np.float64), arr.shape
+
+
+def _shaped(arr: FloatArray, shape: tuple[int, ...]) -> Any:
+    out = arr.reshape(shape)
+    return float(out) if out.ndim == 0 else out
+
+
+class HeavyTop:
+    """A heavy symmetric top started from Euler angles and rates, with its exact motion.
+
+    Parameters
+    ----------
+    I1 : float
+        Moment of inertia about a transverse axis through the pivot (kg m^2), > 0.
+    I3 : float
+        Moment of inertia about the symmetry axis (kg m^2), > 0 and <= 2 I1.
+    mgl : float
+        Weight times the pivot-to-centre-of-mass distance, ``m g l`` (N m), >= 0.
+    theta : float
+        Initial nutation angle (rad), in [0, pi].
+    theta_dot, phi_dot, psi_dot : float, keyword-only
+        Initial rates (rad/s); the spin is ``omega3 = psi_dot + phi_dot cos(theta)`` (2.99).
+    phi, psi : float, keyword-only
+        Initial precession and spin angles (rad), default 0.
+    degrees : bool, keyword-only
+        Angles in degrees and rates in degrees per second.
+
+    Raises
+    ------
+    PoinsotError
+        Naming the argument: ``I1`` or ``I3`` not finite and > 0, ``mgl`` < 0 or not finite,
+        ``theta`` outside [0, pi], a non-finite rate or angle.
+    InvalidInertiaError
+        ``I3 > 2 I1`` (no body has it: the triangle inequality of principal moments).
+
+    Examples
+    --------
+    >>> top = HeavyTop(1.0, 0.5, 1.0, 0.8, psi_dot=6.0)   # released at rest in phi
+    >>> top.motion_class
+    'cusps'
+    >>> round(top.turning_points[1], 6)
+    1.001477
+    >>> phi, theta, psi = top.euler_angles([0.0, 1.0, 2.0])
+    """
+
+    __slots__ = ("_core",)
+
+    def __init__(
+        self,
+        I1: float,  # noqa: N803 - the unit's notation
+        I3: float,  # noqa: N803
+        mgl: float,
+        theta: float,
+        *,
+        theta_dot: float = 0.0,
+        phi_dot: float = 0.0,
+        psi_dot: float = 0.0,
+        phi: float = 0.0,
+        psi: float = 0.0,
+        degrees: bool = False,
+    ) -> None:
+        self._core = _core.HeavyTopCore.from_state(
+            as_scalar(I1, "I1"),
+            as_scalar(I3, "I3"),
+            as_scalar(mgl, "mgl"),
+            _angle(phi, "phi", degrees),
+            _angle(theta, "theta", degrees),
+            _angle(psi, "psi", degrees),
+            _angle(phi_dot, "phi_dot", degrees),
+            _angle(theta_dot, "theta_dot", degrees),
+            _angle(psi_dot, "psi_dot", degrees),
+        )
+
+    @classmethod
+    def from_constants(
+        cls,
+        I1: float,  # noqa: N803
+        I3: float,  # noqa: N803
+        mgl: float,
+        p_phi: float,
+        p_psi: float,
+        energy: float,
+    ) -> HeavyTop:
+        """The top with the constants of motion ``p_phi``, ``p_psi`` (kg m^2/s; 2.103–2.104) and
+        total energy ``energy`` (J; 2.105). Time 0 is then a moment when the axis is at its upper
+        turning point ``theta1``, with ``phi = psi = 0`` there.
+
+        Raises :class:`PoinsotError` naming ``energy`` when ``E' = E - p_psi**2/(2 I3)`` lies below
+        the minimum of the effective potential (no motion has these constants)."""
+        top = cls.__new__(cls)
+        top._core = _core.HeavyTopCore.from_constants(
+            as_scalar(I1, "I1"),
+            as_scalar(I3, "I3"),
+            as_scalar(mgl, "mgl"),
+            as_scalar(p_phi, "p_phi"),
+            as_scalar(p_psi, "p_psi"),
+            as_scalar(energy, "energy"),
+        )
+        return top
+
+    def __repr__(self) -> str:
+        i1, i3, mgl = self._core.parameters
+        t1, t2 = self.turning_points
+        return (
+            f"HeavyTop(I1={i1:g}, I3={i3:g}, mgl={mgl:g}; {self.motion_class}, "
+            f"theta in [{t1:.6g}, {t2:.6g}] rad, omega3={self.omega3:.6g} rad/s)"
+        )
+
+    # ---- parameters and constants of the motion -------------------------------------------
+    @property
+    def I1(self) -> float:  # noqa: N802
+        """Moment about a transverse axis through the pivot (kg m^2)."""
+        return self._core.parameters[0]
+
+    @property
+    def I3(self) -> float:  # noqa: N802
+        """Moment about the symmetry axis (kg m^2)."""
+        return self._core.parameters[1]
+
+    @property
+    def mgl(self) -> float:
+        """``m g l`` (N m)."""
+        return self._core.parameters[2]
+
+    @property
+    def p_phi(self) -> float:
+        """``p_phi = I1 phi' sin^2(theta) + p_psi cos(theta)`` (kg m^2/s, 2.104): the conserved
+        vertical angular momentum ``L_Z``."""
+        return self._core.p_phi
+
+    @property
+    def p_psi(self) -> float:
+        """``p_psi = I3 omega3`` (kg m^2/s, 2.103): the conserved angular momentum about axis 3."""
+        return self._core.p_psi
+
+    @property
+    def omega3(self) -> float:
+        """The spin ``omega3 = psi' + phi' cos(theta)`` (rad/s, 2.99), constant."""
+        return self._core.omega3
+
+    @property
+    def energy(self) -> float:
+        """The total energy ``E = T + m g l cos(theta)`` (J, 2.105)."""
+        return self._core.energy
+
+    @property
+    def reduced_energy(self) -> float:
+        """``E' = E - p_psi**2/(2 I3) = I1 theta'**2/2 + V(theta)`` (J, 2.109)."""
+        return self._core.reduced_energy
+
+    @property
+    def initial_state(self) -> dict[str, float]:
+        """The state at ``t = 0``: ``phi, theta, psi`` (rad) and ``phi_dot, theta_dot, psi_dot``
+        (rad/s). At a pole a negative ``theta_dot`` is turned into [0, pi] (``phi + pi``,
+        ``psi -+ pi``: the same rotation)."""
+        keys = ("phi", "theta", "psi", "phi_dot", "theta_dot", "psi_dot")
+        return dict(zip(keys, self._core.initial_state))
+
+    # ---- the analysis of the unit ----------------------------------------------------------
+    def effective_potential(self, theta: Any, *, degrees: bool = False) -> Any:
+        """The effective potential ``V(theta) = (p_phi - p_psi cos)^2 / (2 I1 sin^2) + m g l cos``
+        (J, 2.110), broadcasting over ``theta`` (rad, in [0, pi]); ``inf`` at a pole unless the
+        numerator vanishes there."""
+        flat, shape = _flat(theta, "theta", degrees)
+        return _shaped(self._core.effective_potential(flat), shape)
+
+    def effective_potential_derivative(self, theta: Any, *, degrees: bool = False) -> Any:
+        """``dV/dtheta`` (N m, 2.113; always per radian), broadcasting over ``theta``."""
+        flat, shape = _flat(theta, "theta", degrees)
+        return _shaped(self._core.effective_potential_derivative(flat), shape)
+
+    @property
+    def turning_points(self) -> tuple[float, float]:
+        """``(theta1, theta2)`` (rad), ``theta1 <= theta2``: where ``E' = V(theta)``, the roots of
+        the cubic ``f(u) = (1 - u^2)(alpha - beta u) - (b - a u)^2`` in ``u = cos(theta)``, computed
+        without cancellation at the poles (both equal for steady precession)."""
+        return self._core.turning_points
+
+    @property
+    def cubic_roots(self) -> tuple[float, float, float]:
+        """``(u1, u2, u3)``: the roots of the cubic in ``u = cos(theta)``, ``u1 = cos(theta2) <=
+        u2 = cos(theta1) <= 1 <= u3`` (``u3 = inf`` when ``m g l = 0``)."""
+        return self._core.cubic_roots
+
+    @property
+    def motion_class(self) -> str:
+        """The shape of the axis' path: one of :data:`MOTION_CLASSES`."""
+        return self._core.motion_class
+
+    @property
+    def is_sleeping_stable(self) -> bool:
+        """Whether this spin keeps an upright top asleep: ``omega3**2 > 4 m g l I1 / I3**2``."""
+        return self._core.is_sleeping_stable
+
+    @property
+    def nutation_period(self) -> float:
+        """The period of ``theta(t)`` (s), ``2 K(m) / kappa``; for steady motion the period of small
+        nutations about it; ``inf`` where theta never returns (an unstable sleeping top)."""
+        p = self._core.nutation_period
+        return math.inf if p is None else p
+
+    @property
+    def mean_precession_rate(self) -> float:
+        """The mean of ``phi'`` over a nutation period (rad/s)."""
+        return self._core.mean_precession_rate
+
+    @property
+    def mean_spin_rate(self) -> float:
+        """The mean of ``psi'`` over a nutation period (rad/s)."""
+        return self._core.mean_spin_rate
+
+    # ---- the exact motion ------------------------------------------------------------------
+    def euler_angles(self, t: Any, *, degrees: bool = False) -> tuple[Any, Any, Any]:
+        """The exact Euler angles ``(phi, theta, psi)`` at times ``t`` (s; the initial state is at
+        ``t = 0``), each shaped like ``t`` (floats for a scalar ``t``), in rad (degrees with
+        ``degrees=True``). ``phi`` and ``psi`` are continuous, not reduced modulo 2 pi, except for
+        jumps of pi where the axis passes exactly through a pole."""
+        flat, shape = _flat(t, "t")
+        out = self._core.euler_angles(flat)
+        if degrees:
+            out = np.degrees(out)
+        return _shaped(out[:, 0], shape), _shaped(out[:, 1], shape), _shaped(out[:, 2], shape)
+
+    def euler_rates(self, t: Any, *, degrees: bool = False) -> tuple[Any, Any, Any]:
+        """The rates ``(phi', theta', psi')`` (rad/s; deg/s with ``degrees=True``) at times ``t``:
+        ``phi'`` by 2.106, ``psi' = omega3 - phi' cos(theta)``, ``theta'`` from the solution."""
+        flat, shape = _flat(t, "t")
+        out = self._core.euler_rates(flat)
+        if degrees:
+            out = np.degrees(out)
+        return _shaped(out[:, 0], shape), _shaped(out[:, 1], shape), _shaped(out[:, 2], shape)
+
+    def attitude(self, t: Any) -> FloatArray:
+        """Rotation matrices ``R(t) = R_z(phi) R_x(theta) R_z(psi)``, shape ``t.shape + (3, 3)``
+        (body to space components)."""
+        flat, shape = _flat(t, "t")
+        mats = _core.euler_to_matrix(self._core.euler_angles(flat), "zxz", True)
+        return np.asarray(mats).reshape(*shape, 3, 3)
+
+    def symmetry_axis(self, t: Any) -> FloatArray:
+        """The unit vector of body axis 3 in space components at times ``t``, shape
+        ``t.shape + (3,)``: the point that traces waves, loops or cusps on the unit sphere."""
+        return self.attitude(t)[..., :, 2]
+
+    # ---- steady precession (static) ------------------------------------------------------
+    @staticmethod
+    def steady_precession(
+        I1: float,  # noqa: N803
+        I3: float,  # noqa: N803
+        mgl: float,
+        theta0: float,
+        omega3: float,
+        *,
+        degrees: bool = False,
+    ) -> SteadyPrecession:
+        """Both exact steady-precession rates at ``theta0`` and spin ``omega3`` (2.116, errata of
+        2.117 fixed), beside the unit's approximations 2.120 (corrected) and 2.121 and the minimum
+        spin 2.119. With ``degrees=True``, ``theta0`` is in degrees (rates stay in rad/s).
+
+        Raises :class:`PoinsotError` naming ``omega3`` when ``|omega3|`` is below the minimum
+        spin (the message gives it)."""
+        d = _core.heavy_top_steady_precession(
+            as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl"),
+            _angle(theta0, "theta0", degrees), as_scalar(omega3, "omega3"),
+        )
+        return SteadyPrecession(**d)
+
+    @staticmethod
+    def steady_precession_rates(
+        I1: float,  # noqa: N803
+        I3: float,  # noqa: N803
+        mgl: float,
+        theta0: float,
+        omega3: float,
+        *,
+        degrees: bool = False,
+    ) -> tuple[float, float]:
+        """``(slow, fast)``: the two exact steady-precession rates (rad/s) of 2.116 at ``theta0``
+        (rad) and spin ``omega3`` (rad/s). See :meth:`steady_precession` for the approximations."""
+        s = HeavyTop.steady_precession(I1, I3, mgl, theta0, omega3, degrees=degrees)
+        return s.slow, s.fast
+
+    @staticmethod
+    def min_spin(
+        I1: float,  # noqa: N803
+        I3: float,  # noqa: N803
+        mgl: float,
+        theta0: float,
+        *,
+        degrees: bool = False,
+    ) -> float:
+        """The minimum spin for steady precession at ``theta0`` (2.119):
+        ``omega3_min = (2 / I3) sqrt(m g l I1 cos theta0)`` (rad/s), 0 below the horizontal."""
+        return _core.heavy_top_min_spin(
+            as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl"), _angle(theta0, "theta0", degrees)
+        )
+
+    @staticmethod
+    def sleeping_threshold(I1: float, I3: float, mgl: float) -> float:  # noqa: N803
+        """The spin above which an upright top sleeps stably, ``2 sqrt(m g l I1) / I3`` (rad/s):
+        stable iff ``omega3**2 > 4 m g l I1 / I3**2``."""
+        return _core.heavy_top_sleeping_threshold(as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl"))
+
+    @staticmethod
+    def lagrangian(
+        I1: float,  # noqa: N803
+        I3: float,  # noqa: N803
+        mgl: float,
+        theta: float,
+        theta_dot: float,
+        phi_dot: float,
+        psi_dot: float,
+    ) -> float:
+        """The Lagrangian 2.102, ``I1 (theta'^2 + phi'^2 sin^2)/2 + I3 (psi' + phi' cos)^2/2 - m g l
+        cos(theta)`` (J), at one state (rad, rad/s)."""
+        return _core.heavy_top_lagrangian(
+            as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl"), as_scalar(theta, "theta"),
+            as_scalar(theta_dot, "theta_dot"), as_scalar(phi_dot, "phi_dot"), as_scalar(psi_dot, "psi_dot"),
+        )
