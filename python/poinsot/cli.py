@@ -377,6 +377,27 @@ def free(moments: tuple[float, float, float], omega: tuple[float, float, float],
         "omega_error": float(np.linalg.norm(tr.omega[-1] - w_end)), "attitude_error": q_err,
         "axis_stability": [s.stability for s in stab],
     }
+    if as_json:
+        emit_json(data)
+        return
+    from rich.console import Console
+    from rich.table import Table
+
+    table = Table(title=f"free rigid body I = {moments}, ω₀ = {omega}, {duration:g} s by {tr.method}")
+    table.add_column("quantity")
+    table.add_column("value", justify="right")
+    table.add_row("regime", exact.regime)
+    table.add_row("period of ω (s)", f"{exact.period:.10g}")
+    table.add_row("Jacobi parameter m", f"{exact.parameter:.10g}")
+    table.add_row("T (J) / |L| (kg·m²/s)", f"{exact.energy:.10g} / {data['angular_momentum_magnitude']:.10g}")
+    table.add_row("stability of axes 1, 2, 3", ", ".join(data["axis_stability"]))
+    table.add_row("max |ΔE/E| / max |Δ|L|/|L||", f"{data['max_energy_error']:.2e} / {data['max_momentum_error']:.2e}")
+    table.add_row("ω at the end (rad/s)", np.array2string(tr.omega[-1], precision=10))
+    table.add_row("|ω − ω_exact| / |q − q_exact|", f"{data['omega_error']:.2e} / {q_err:.2e}")
+    table.add_row("steps / wall time", f"{tr.steps} / {wall:.3g} s")
+    Console().print(table)
+
+
 @main.command()
 @click.option("--I1", "i1", type=float, required=True, help="Moment about a transverse axis through the pivot (kg·m²).")
 @click.option("--I3", "i3", type=float, required=True, help="Moment about the symmetry axis (kg·m², ≤ 2 I1).")
@@ -440,19 +461,6 @@ def top(i1: float, i3: float, mgl: float, theta: float, phi_dot: float, psi_dot:
     from rich.console import Console
     from rich.table import Table
 
-    table = Table(title=f"free rigid body I = {moments}, ω₀ = {omega}, {duration:g} s by {tr.method}")
-    table.add_column("quantity")
-    table.add_column("value", justify="right")
-    table.add_row("regime", exact.regime)
-    table.add_row("period of ω (s)", f"{exact.period:.10g}")
-    table.add_row("Jacobi parameter m", f"{exact.parameter:.10g}")
-    table.add_row("T (J) / |L| (kg·m²/s)", f"{exact.energy:.10g} / {data['angular_momentum_magnitude']:.10g}")
-    table.add_row("stability of axes 1, 2, 3", ", ".join(data["axis_stability"]))
-    table.add_row("max |ΔE/E| / max |Δ|L|/|L||", f"{data['max_energy_error']:.2e} / {data['max_momentum_error']:.2e}")
-    table.add_row("ω at the end (rad/s)", np.array2string(tr.omega[-1], precision=10))
-    table.add_row("|ω − ω_exact| / |q − q_exact|", f"{data['omega_error']:.2e} / {q_err:.2e}")
-    table.add_row("steps / wall time", f"{tr.steps} / {wall:.3g} s")
-    Console().print(table)
     table = Table(title=f"heavy top: I₁ = {i1:g} kg·m², I₃ = {i3:g} kg·m², m g l = {mgl:g} N·m, "
                         f"θ₀ = {theta0:.6g} rad")
     table.add_column("quantity")
