@@ -1,6 +1,7 @@
 # poinsot — the two commands that matter:
 #   make demo   set up (virtual environment, build, install with all extras) and run `poinsot tour`
-#   make test   the same set-up, then every test: cargo test, clippy, pytest, the examples
+#   make test   the same set-up, then every test: cargo test, clippy, pytest, the examples, the
+#               browser lab (needs the web tooling that .ci/run installs)
 #   make lab    build the browser lab (WebAssembly core + page) and serve it: `poinsot lab`
 SHELL := /bin/bash
 PYTHON ?= python3
@@ -22,10 +23,11 @@ setup: $(PY)
 demo: setup
 	$(VENV)/bin/poinsot tour
 
-test: setup test-rust lint test-python examples
+test: setup test-rust lint test-python examples test-web
 
 test-rust:
 	cargo test -p poinsot --release
+	cargo test -p poinsot-wasm --release
 
 lint: $(PY)
 	cargo clippy --workspace --all-targets --release -- -D warnings

@@ -51,6 +51,11 @@ async function main(): Promise<void> {
     lab.error = `${err.name ?? "Error"}: ${err.message ?? String(e)}`;
     alertBox.textContent = lab.error;
     alertBox.hidden = false;
+    // No stale numbers beside an error: the readouts wait for valid parameters.
+    for (const dd of cells.values()) {
+      dd.textContent = "—";
+      dd.dataset.value = "null";
+    }
   }
   function clearError(): void {
     lab.error = null;

@@ -59,7 +59,13 @@ export const freeTopScene: SceneDef = {
         const I1 = Number(p.I1), I3 = Number(p.I3);
         const omega0 = [Number(p.w1), 0, Number(p.w3)];
         const next = new FreeSymmetricTop(I1, I3, omega0);
-        const nextRigid = RigidBody.fromInertia(1, [I1, 0, 0, 0, I1, 0, 0, 0, I3], [0, 0, 0]);
+        let nextRigid: RigidBody;
+        try {
+          nextRigid = RigidBody.fromInertia(1, [I1, 0, 0, 0, I1, 0, 0, 0, I3], [0, 0, 0]);
+        } catch (e) {
+          next.free();
+          throw e;
+        }
         free();
         top = next;
         rigid = nextRigid;
