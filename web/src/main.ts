@@ -7,8 +7,9 @@ import { createView } from "./view";
 import { fmt, type Params, type Readout, type SceneDef, type SceneInstance } from "./scene";
 import { eulerScene } from "./scenes/euler";
 import { freeTopScene } from "./scenes/freetop";
+import { dropScene } from "./scenes/drop";
 
-const SCENES: SceneDef[] = [eulerScene, freeTopScene];
+const SCENES: SceneDef[] = [eulerScene, freeTopScene, dropScene];
 
 /** What the tests (and a curious user, from the console) can see: window.__lab. */
 interface LabHandle {
@@ -199,6 +200,8 @@ async function main(): Promise<void> {
       if ((b as HTMLElement).dataset.scene === d.id) b.setAttribute("aria-current", "page");
       else b.removeAttribute("aria-current");
     }
+    view.camera.position.set(5.5, 4.2, 3.4);
+    view.controls.target.set(0, 0, 0);
     current = d.create({ scene: view.scene, camera: view.camera });
     buildControls();
     configure();
@@ -250,7 +253,8 @@ async function main(): Promise<void> {
 
   let last = performance.now();
   const loop = (now: number) => {
-    const dt = Math.min(0.1, (now - last) / 1000);
+    // rAF's timestamp is the frame's start, which can precede `last` (taken with performance.now()).
+    const dt = Math.min(0.1, Math.max(0, (now - last) / 1000));
     last = now;
     if (lab.playing && lab.error === null) {
       lab.t += dt * speed;

@@ -14,7 +14,7 @@ import { chromium } from "playwright-core";
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const repo = path.resolve(here, "../..");
-const SCENES = ["euler", "freetop"];
+const SCENES = ["euler", "freetop", "drop"];
 /** Physics per frame must be a small fraction of the 16.7 ms frame budget. */
 const PHYSICS_BUDGET_MS = 2;
 /** The one console warning the tests cause themselves (reading the WebGL canvas back). */

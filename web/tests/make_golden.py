@@ -71,6 +71,23 @@ def free_top_case(params: dict[str, Any], t: float) -> dict[str, Any]:
     return {"scene": "freetop", "params": params, "t": t, "readouts": readouts}
 
 
+def drop_case(params: dict[str, Any], t: float) -> dict[str, Any]:
+    rate = poinsot.earth.SOLAR_DAY_RATE if params["rate"] == "solar day" else poinsot.earth.SIDEREAL_RATE
+    earth = poinsot.Earth(rate)
+    h, lat = params["height"], params["latitude"] * DEG
+    fall = earth.drop(h, lat)
+    first = float(earth.eastward_deflection(h, lat))
+    readouts = {
+        "time": fall.time,
+        "east": fall.east,
+        "north": fall.north,
+        "eastFirstOrder": first,
+        "ratio": fall.east / first,
+        "foucaultRate": float(earth.foucault_rate(lat)),
+    }
+    return {"scene": "drop", "params": params, "t": t, "readouts": readouts}
+
+
 EULER = {"seq": "zxz", "convention": "intrinsic", "phi": 30, "theta": 40, "psi": 20,
          "phiDot": 20, "thetaDot": 0, "psiDot": 45}
 
@@ -83,6 +100,8 @@ def cases() -> list[dict[str, Any]]:
         euler_case({**EULER, "seq": "zyx", "theta": 90, "thetaDot": 0}, 0.0),  # Tait–Bryan lock
         free_top_case({"I1": 1, "I3": 0.4, "w1": 0.6, "w3": 2}, 2.5),  # prolate
         free_top_case({"I1": 1, "I3": 1.7, "w1": 1.2, "w3": -0.8}, 7.125),  # oblate
+        drop_case({"height": 100, "latitude": 45, "rate": "sidereal", "exaggeration": "1000"}, 0.0),
+        drop_case({"height": 455, "latitude": -33, "rate": "solar day", "exaggeration": "10"}, 0.0),
     ]
 
 

@@ -20,16 +20,36 @@ pub struct Earth {
     inner: ea::Earth,
 }
 
-/// Where and when a dropped body lands (exact, integrated in the rotating frame).
+/// Where and when a dropped body lands (exact, integrated in the rotating frame), and its path.
 #[wasm_bindgen]
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Fall {
+    inner: ea::Fall,
+}
+
+#[wasm_bindgen]
+impl Fall {
     /// Time of flight (s).
-    pub time: f64,
+    #[wasm_bindgen(getter)]
+    pub fn time(&self) -> f64 {
+        self.inner.time
+    }
     /// Eastward displacement at landing (m).
-    pub east: f64,
+    #[wasm_bindgen(getter)]
+    pub fn east(&self) -> f64 {
+        self.inner.east
+    }
     /// Northward displacement at landing (m).
-    pub north: f64,
+    #[wasm_bindgen(getter)]
+    pub fn north(&self) -> f64 {
+        self.inner.north
+    }
+    /// The state `[x, y, z, vx, vy, vz]` (ENU, m and m/s, origin at the ground below the
+    /// release point) at time `t` (s, in [0, time]) from the integrator's dense output.
+    pub fn state(&self, t: f64) -> Out<Vec<f64>> {
+        poinsot::error::check_finite("t", &[t])?;
+        finite("state", self.inner.solution.at(t)?.to_vec())
+    }
 }
 
 #[wasm_bindgen]
@@ -100,11 +120,7 @@ impl Earth {
         };
         let f = self.inner.drop(height, latitude, &model)?;
         finite("fall", vec![f.time, f.east, f.north])?;
-        Ok(Fall {
-            time: f.time,
-            east: f.east,
-            north: f.north,
-        })
+        Ok(Fall { inner: f })
     }
 
     /// The precession rate (rad/s) of a Foucault pendulum's swing plane, ω sin λ (clockwise seen
@@ -164,12 +180,10 @@ mod tests {
             * (8.0 * h.powi(3) / Earth::standard_gravity()).sqrt();
         assert!((e.eastward_deflection(h, lat).unwrap() - expect).abs() < 1e-15);
         let exact = e.drop(h, lat).unwrap();
-        assert!(
-            (exact.east / expect - 1.0).abs() < 1e-3,
-            "{} vs {}",
-            exact.east,
-            expect
-        );
+        assert!((exact.east() / expect - 1.0).abs() < 1e-3, "{} vs {}", exact.east(), expect);
+        let land = exact.state(exact.time()).unwrap();
+        assert!((land[0] - exact.east()).abs() < 1e-9 && land[2].abs() < 1e-9, "{land:?}");
+        assert!(exact.state(-1.0).is_err());
     }
 
     #[test]
