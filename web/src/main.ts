@@ -202,7 +202,7 @@ async function main(): Promise<void> {
     }
     view.camera.position.set(5.5, 4.2, 3.4);
     view.controls.target.set(0, 0, 0);
-    current = d.create({ scene: view.scene, camera: view.camera });
+    current = d.create({ scene: view.scene, camera: view.camera, target: view.controls.target });
     buildControls();
     configure();
     writeUrl();

@@ -41,6 +41,8 @@ export interface Readout {
 export interface SceneContext {
   scene: THREE.Scene;
   camera: THREE.PerspectiveCamera;
+  /** The point the orbit controls turn about (the origin unless a scene moves it). */
+  target: THREE.Vector3;
 }
 
 export interface SceneInstance {

@@ -51,7 +51,8 @@ export const dropScene: SceneDef = {
     const path = new Trail(400, 0xe5484d);
     root.add(path.obj);
     // East (x) is the direction to look across: put the camera south-west, above.
-    ctx.camera.position.set(-1.5, -6.5, 3.2);
+    ctx.camera.position.set(-2.5, -8, 4);
+    ctx.target.set(0, 0, TOWER / 2);
 
     let p: Params = {};
     let earth: Earth | null = null;
