@@ -1,6 +1,8 @@
 # poinsot — the two commands that matter:
 #   make demo   set up (virtual environment, build, install with all extras) and run `poinsot tour`
-#   make test   the same set-up, then every test: cargo test, clippy, pytest, the examples
+#   make test   the same set-up, then every test: cargo test, clippy, pytest, the examples, the
+#               browser lab (needs the web tooling that .ci/run installs)
+#   make lab    build the browser lab (WebAssembly core + page) and serve it: `poinsot lab`
 SHELL := /bin/bash
 PYTHON ?= python3
 VENV ?= .venv
@@ -8,7 +10,7 @@ PY := $(VENV)/bin/python
 export PYO3_PYTHON := $(abspath $(PY))
 export MPLBACKEND := Agg
 
-.PHONY: setup demo test test-rust lint test-python examples bench stubtest clean
+.PHONY: setup demo test test-rust lint test-python examples bench stubtest clean lab lab-build test-web
 
 $(PY):
 	$(PYTHON) -m venv $(VENV)
@@ -21,10 +23,11 @@ setup: $(PY)
 demo: setup
 	$(VENV)/bin/poinsot tour
 
-test: setup test-rust lint test-python examples
+test: setup test-rust lint test-python examples test-web
 
 test-rust:
 	cargo test -p poinsot --release
+	cargo test -p poinsot-wasm --release
 
 lint: $(PY)
 	cargo clippy --workspace --all-targets --release -- -D warnings
@@ -40,6 +43,20 @@ bench: setup
 	$(PY) -m pip install -q mujoco  # a peer, for bench/free_body_vs_mujoco.py only
 	cargo bench -p poinsot
 	$(PY) bench/run_all.py
+
+# The browser lab (web/): the core compiled to WebAssembly, the page built by vite into
+# python/poinsot/lab (git-ignored, shipped in the wheel). Needs the rust wasm32 target,
+# wasm-bindgen-cli of the Cargo.lock version and node/npm (.ci/run installs them).
+lab-build: setup
+	bash web/build.sh
+
+lab: lab-build
+	$(VENV)/bin/poinsot lab
+
+# Browser tests (playwright-core + Debian chromium): scenes, controls, URL, parity with Python.
+test-web: lab-build
+	$(PY) web/tests/make_golden.py web/tests/golden.json
+	cd web && PYTHON=$(abspath $(PY)) node --test --test-concurrency=1 tests/
 
 clean:
 	cargo clean

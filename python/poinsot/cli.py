@@ -498,3 +498,39 @@ def top(i1: float, i3: float, mgl: float, theta: float, phi_dot: float, psi_dot:
     click.echo("* 2.120 corrected: the unit prints p_ψ/(2 I₁ cos θ₀), a factor 2 too small (see docs/heavy_top.md).")
     for p in saved:
         click.echo(f"saved {p}")
+
+
+@main.command()
+@click.option("--port", type=click.IntRange(0, 65535), default=0, show_default=True,
+              help="Port on 127.0.0.1 (0: a free one).")
+@click.option("--no-browser", "no_browser", is_flag=True, help="Do not open a web browser.")
+@click.option("--verbose", is_flag=True, help="Log every request.")
+def lab(port: int, no_browser: bool, verbose: bool) -> None:
+    """The browser lab: every scene of the unit to play with, on the same core (WebAssembly).
+
+    Serves the page built into the package on 127.0.0.1 only, and only the page's own files.
+    Stop it with Ctrl+C. Build the page from a source checkout with `make lab`.
+    """
+    from ._labserver import LabServer, page_dir
+
+    root = page_dir()
+    if not (root / "index.html").is_file():
+        raise click.ClickException(
+            f"the lab page is not built (no {root / 'index.html'}): run `make lab` in a source checkout "
+            "(it needs the rust wasm32 target, wasm-bindgen-cli and node)")
+    try:
+        server = LabServer(root, port, verbose=verbose)
+    except OSError as exc:
+        raise click.ClickException(f"port {port}: {exc.strerror or exc}") from exc
+    click.echo(f"poinsot lab: serving {server.url} (Ctrl+C to stop)")
+    sys.stdout.flush()
+    if not no_browser:
+        import webbrowser
+
+        webbrowser.open(server.url)
+    try:
+        server.serve_forever()
+    except KeyboardInterrupt:
+        click.echo("poinsot lab: stopped")
+    finally:
+        server.server_close()

@@ -1,0 +1,183 @@
+//! Bindings of `poinsot::analytic`: the exact torque-free motion of the symmetric top (the unit's
+//! 2.77–2.97) and of any rigid body (Jacobi elliptic functions). Body-frame ω, attitude
+//! quaternions scalar-first `[w, x, y, z]` mapping body to space components.
+
+use crate::convert::{array3, finite, quat, vec3, vec_out, Out};
+use poinsot::analytic as an;
+use wasm_bindgen::prelude::wasm_bindgen;
+
+/// The free symmetric top (`poinsot.FreeSymmetricTop` in Python).
+#[wasm_bindgen]
+#[derive(Debug, Clone)]
+pub struct FreeSymmetricTop {
+    inner: an::FreeSymmetricTop,
+}
+
+#[wasm_bindgen]
+impl FreeSymmetricTop {
+    /// A symmetric top with transverse moment `i1` and axial moment `i3` (kg·m²) spinning with
+    /// body angular velocity `omega0` (rad/s, 3 numbers) at t = 0, attitude the identity.
+    #[wasm_bindgen(constructor)]
+    pub fn new(i1: f64, i3: f64, omega0: &[f64]) -> Out<FreeSymmetricTop> {
+        Ok(FreeSymmetricTop {
+            inner: an::FreeSymmetricTop::new(i1, i3, vec3("omega0", omega0)?, None)?,
+        })
+    }
+    /// The unit's Ω = (I₁ − I₃) ω₃ / I₁ (rad/s, 2.83): the body-frame precession rate of ω.
+    #[wasm_bindgen(getter, js_name = precessionRate)]
+    pub fn precession_rate(&self) -> f64 {
+        self.inner.precession_rate()
+    }
+    /// The amplitude A of the transverse components of ω (rad/s).
+    #[wasm_bindgen(getter)]
+    pub fn amplitude(&self) -> f64 {
+        self.inner.amplitude()
+    }
+    /// Half-angle (rad) of the body cone (ω about the symmetry axis).
+    #[wasm_bindgen(getter, js_name = bodyConeAngle)]
+    pub fn body_cone_angle(&self) -> f64 {
+        self.inner.body_cone_angle()
+    }
+    /// Half-angle (rad) of the space cone (ω about L).
+    #[wasm_bindgen(getter, js_name = spaceConeAngle)]
+    pub fn space_cone_angle(&self) -> f64 {
+        self.inner.space_cone_angle()
+    }
+    /// Angle (rad) between the symmetry axis and L.
+    #[wasm_bindgen(getter, js_name = nutationAngle)]
+    pub fn nutation_angle(&self) -> f64 {
+        self.inner.nutation_angle()
+    }
+    /// Rate (rad/s) at which the symmetry axis precesses about L in space.
+    #[wasm_bindgen(getter, js_name = spacePrecessionRate)]
+    pub fn space_precession_rate(&self) -> f64 {
+        self.inner.space_precession_rate()
+    }
+    /// Kinetic energy (J), conserved.
+    #[wasm_bindgen(getter)]
+    pub fn energy(&self) -> f64 {
+        self.inner.energy()
+    }
+    /// Angular momentum in space components (kg·m²/s), conserved.
+    #[wasm_bindgen(getter, js_name = angularMomentum)]
+    pub fn angular_momentum(&self) -> Vec<f64> {
+        vec_out(&self.inner.angular_momentum())
+    }
+    /// "prolate", "oblate" or "spherical".
+    #[wasm_bindgen(getter)]
+    pub fn shape(&self) -> String {
+        self.inner.shape().as_str().to_string()
+    }
+    /// Body angular velocity (rad/s) at time `t` (s).
+    pub fn omega(&self, t: f64) -> Out<Vec<f64>> {
+        time_ok(t)?;
+        finite("omega", vec_out(&self.inner.omega(t)))
+    }
+    /// Attitude quaternion `[w, x, y, z]` at time `t` (s).
+    pub fn attitude(&self, t: f64) -> Out<Vec<f64>> {
+        time_ok(t)?;
+        finite("attitude", self.inner.attitude(t).to_vec())
+    }
+    /// The symmetry axis in space components at time `t` (s).
+    #[wasm_bindgen(js_name = symmetryAxis)]
+    pub fn symmetry_axis(&self, t: f64) -> Out<Vec<f64>> {
+        time_ok(t)?;
+        finite("axis", vec_out(&self.inner.symmetry_axis(t)))
+    }
+}
+
+fn time_ok(t: f64) -> Out<()> {
+    Ok(poinsot::error::check_finite("t", &[t])?)
+}
+
+/// The exact torque-free motion of any rigid body (`poinsot.FreeRigidBody` in Python).
+#[wasm_bindgen]
+#[derive(Debug, Clone)]
+pub struct FreeRigidBody {
+    inner: an::FreeRigidBody,
+}
+
+#[wasm_bindgen]
+impl FreeRigidBody {
+    /// A body of principal `moments` (kg·m², 3 numbers) with body angular velocity `omega0`
+    /// (rad/s) and attitude `attitude0` (`[w, x, y, z]`; an empty array means the identity) at t = 0.
+    #[wasm_bindgen(constructor)]
+    pub fn new(moments: &[f64], omega0: &[f64], attitude0: &[f64]) -> Out<FreeRigidBody> {
+        let q = if attitude0.is_empty() {
+            None
+        } else {
+            Some(quat("attitude0", attitude0)?)
+        };
+        Ok(FreeRigidBody {
+            inner: an::FreeRigidBody::new(array3("moments", moments)?, vec3("omega0", omega0)?, q)?,
+        })
+    }
+    /// Kinetic energy (J), conserved.
+    #[wasm_bindgen(getter)]
+    pub fn energy(&self) -> f64 {
+        self.inner.energy()
+    }
+    /// Angular momentum in space components (kg·m²/s), conserved.
+    #[wasm_bindgen(getter, js_name = angularMomentum)]
+    pub fn angular_momentum(&self) -> Vec<f64> {
+        vec_out(&self.inner.angular_momentum())
+    }
+    /// Period (s) of ω(t); `Infinity` on the separatrix.
+    #[wasm_bindgen(getter)]
+    pub fn period(&self) -> f64 {
+        self.inner.period()
+    }
+    /// The regime of the motion (the core's name for it).
+    #[wasm_bindgen(getter)]
+    pub fn regime(&self) -> String {
+        self.inner.regime().as_str().to_string()
+    }
+    /// Body angular velocity (rad/s) at time `t` (s).
+    pub fn omega(&self, t: f64) -> Out<Vec<f64>> {
+        time_ok(t)?;
+        finite("omega", vec_out(&self.inner.omega(t)))
+    }
+    /// Attitude quaternion `[w, x, y, z]` at time `t` (s).
+    pub fn attitude(&self, t: f64) -> Out<Vec<f64>> {
+        time_ok(t)?;
+        finite("attitude", self.inner.attitude(t).to_vec())
+    }
+    /// Body ω (3 numbers) then attitude (4 numbers) at time `t` (s), in one call.
+    pub fn state(&self, t: f64) -> Out<Vec<f64>> {
+        time_ok(t)?;
+        let (w, q) = self.inner.state(t);
+        finite("state", [w.x, w.y, w.z, q[0], q[1], q[2], q[3]].to_vec())
+    }
+    /// Angular momentum in body components (kg·m²/s) at time `t` (s).
+    #[wasm_bindgen(js_name = angularMomentumBody)]
+    pub fn angular_momentum_body(&self, t: f64) -> Out<Vec<f64>> {
+        time_ok(t)?;
+        finite("L", vec_out(&self.inner.angular_momentum_body(t)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn symmetric_top_precession_rate_is_the_units_omega() {
+        let top = FreeSymmetricTop::new(1.0, 2.0, &[0.1, 0.0, 3.0]).unwrap();
+        // Ω = (I₁ − I₃) ω₃ / I₁ (2.83) = (1 − 2)·3/1.
+        assert!((top.precession_rate() + 3.0).abs() < 1e-15);
+        assert_eq!(top.shape(), "oblate");
+    }
+
+    #[test]
+    fn free_body_conserves_energy_through_the_binding() {
+        let b = FreeRigidBody::new(&[1.0, 2.0, 3.0], &[0.3, 1.0, 0.2], &[]).unwrap();
+        let s = b.state(7.3).unwrap();
+        let t = 0.5 * (s[0] * s[0] + 2.0 * s[1] * s[1] + 3.0 * s[2] * s[2]);
+        assert!((t / b.energy() - 1.0).abs() < 1e-12);
+        assert!(b.omega(f64::NAN).unwrap_err().message.starts_with("t"));
+        assert!(FreeRigidBody::new(&[1.0, 2.0, 4.0], &[1.0; 3], &[])
+            .unwrap_err()
+            .message
+            .starts_with("moments"));
+    }
+}

@@ -1,0 +1,200 @@
+//! Bindings of `poinsot::rotation`: Euler angles (any of the 24 conventions), Euler's theorem,
+//! Chasles' screw and the Euler-angle kinematics (the unit's 2.98–2.99).
+
+use crate::convert::{array3, finite, mat3, mat_out, vec3, vec_out, Out};
+use poinsot::rotation::{self as rot, EulerSequence, Frame};
+use wasm_bindgen::prelude::wasm_bindgen;
+
+fn sequence(seq: &str, intrinsic: bool) -> Out<EulerSequence> {
+    Ok(EulerSequence::new(seq, intrinsic)?)
+}
+
+/// The rotation matrix (9 numbers, row-major) of Euler `angles` (rad, 3 numbers) in the
+/// sequence `seq` (three lowercase axis letters, e.g. `"zxz"`, the unit's φ, θ, ψ), intrinsic or
+/// extrinsic: intrinsic `R = R_a(α) R_b(β) R_c(γ)`, extrinsic `R = R_c(γ) R_b(β) R_a(α)`.
+#[wasm_bindgen(js_name = eulerToMatrix)]
+pub fn euler_to_matrix(angles: &[f64], seq: &str, intrinsic: bool) -> Out<Vec<f64>> {
+    let r = rot::euler_to_matrix(array3("angles", angles)?, sequence(seq, intrinsic)?)?;
+    finite("R", mat_out(&r))
+}
+
+/// Euler angles of a rotation matrix, with the gimbal-lock flag.
+#[wasm_bindgen]
+#[derive(Debug, Clone, PartialEq)]
+pub struct EulerAngles {
+    angles: Vec<f64>,
+    gimbal_lock: bool,
+}
+
+#[wasm_bindgen]
+impl EulerAngles {
+    /// The three angles (rad); at gimbal lock the third is set to zero (the core's convention).
+    #[wasm_bindgen(getter)]
+    pub fn angles(&self) -> Vec<f64> {
+        self.angles.clone()
+    }
+    /// Whether the middle angle sits at its singular value (only the sum or difference of the
+    /// outer two is then determined).
+    #[wasm_bindgen(getter, js_name = gimbalLock)]
+    pub fn gimbal_lock(&self) -> bool {
+        self.gimbal_lock
+    }
+}
+
+/// The Euler angles of the rotation matrix `r` (9 numbers, row-major; must be a proper rotation)
+/// in the sequence `seq`, intrinsic or extrinsic.
+#[wasm_bindgen(js_name = matrixToEuler)]
+pub fn matrix_to_euler(r: &[f64], seq: &str, intrinsic: bool) -> Out<EulerAngles> {
+    let e = rot::matrix_to_euler(&mat3("R", r)?, sequence(seq, intrinsic)?)?;
+    Ok(EulerAngles {
+        angles: finite("angles", e.angles.to_vec())?,
+        gimbal_lock: e.gimbal_lock,
+    })
+}
+
+/// Euler's theorem: `[ax, ay, az, angle]`, the unit axis and the angle (rad, in [0, π]) of the
+/// rotation matrix `r` (9 numbers, row-major).
+#[wasm_bindgen(js_name = rotationAxis)]
+pub fn rotation_axis(r: &[f64]) -> Out<Vec<f64>> {
+    let (axis, angle) = rot::rotation_axis(&mat3("R", r)?)?;
+    finite("axis", vec![axis.x, axis.y, axis.z, angle])
+}
+
+/// Chasles' screw of a displacement `x ↦ R x + t`.
+#[wasm_bindgen]
+#[derive(Debug, Clone, PartialEq)]
+pub struct Screw {
+    inner: rot::Screw,
+}
+
+#[wasm_bindgen]
+impl Screw {
+    /// Unit direction of the screw axis.
+    #[wasm_bindgen(getter)]
+    pub fn axis(&self) -> Vec<f64> {
+        vec_out(&self.inner.axis)
+    }
+    /// The point of the axis nearest the origin (m).
+    #[wasm_bindgen(getter)]
+    pub fn point(&self) -> Vec<f64> {
+        vec_out(&self.inner.point)
+    }
+    /// Rotation angle about the axis (rad, in [0, π]).
+    #[wasm_bindgen(getter)]
+    pub fn angle(&self) -> f64 {
+        self.inner.angle
+    }
+    /// Signed translation along the axis (m).
+    #[wasm_bindgen(getter)]
+    pub fn slide(&self) -> f64 {
+        self.inner.slide
+    }
+    /// `slide / angle` (m/rad); `Infinity` for a pure translation (never NaN).
+    #[wasm_bindgen(getter)]
+    pub fn pitch(&self) -> f64 {
+        self.inner.pitch
+    }
+}
+
+/// Chasles' theorem for the displacement `x ↦ R x + t` (`r` 9 numbers row-major, `t` 3 numbers, m).
+#[wasm_bindgen(js_name = screwAxis)]
+pub fn screw_axis(r: &[f64], t: &[f64]) -> Out<Screw> {
+    let s = rot::screw_axis(&mat3("R", r)?, &vec3("t", t)?)?;
+    finite(
+        "screw",
+        vec![
+            s.axis.x, s.axis.y, s.axis.z, s.point.x, s.point.y, s.point.z, s.angle, s.slide,
+        ],
+    )?;
+    if s.pitch.is_nan() {
+        return Err(crate::Failure {
+            name: "PoinsotError",
+            message: "pitch: the result is not a number".into(),
+        });
+    }
+    Ok(Screw { inner: s })
+}
+
+/// The body-frame angular velocity (rad/s, 3 numbers) for Euler `angles` (rad) and their time
+/// derivatives `rates` (rad/s) in sequence `seq` (the unit's 2.99 for intrinsic zxz).
+#[wasm_bindgen(js_name = bodyAngularVelocity)]
+pub fn body_angular_velocity(
+    angles: &[f64],
+    rates: &[f64],
+    seq: &str,
+    intrinsic: bool,
+) -> Out<Vec<f64>> {
+    let w = rot::body_angular_velocity(
+        array3("angles", angles)?,
+        array3("rates", rates)?,
+        sequence(seq, intrinsic)?,
+    )?;
+    finite("omega", vec_out(&w))
+}
+
+/// The Euler-angle rates (rad/s) that produce the body angular velocity `omega_body` (rad/s) at
+/// `angles` (rad); throws a `GimbalLockError` at the singular angles of the sequence.
+#[wasm_bindgen(js_name = eulerRates)]
+pub fn euler_rates(
+    angles: &[f64],
+    omega_body: &[f64],
+    seq: &str,
+    intrinsic: bool,
+) -> Out<Vec<f64>> {
+    let r = rot::euler_rates(
+        array3("angles", angles)?,
+        &vec3("omega_body", omega_body)?,
+        sequence(seq, intrinsic)?,
+        Frame::Body,
+    )?;
+    finite("rates", r.to_vec())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn zxz_matches_the_product_of_elementary_rotations() {
+        let (phi, theta, psi) = (0.3, 0.7, -1.1);
+        let r = euler_to_matrix(&[phi, theta, psi], "zxz", true).unwrap();
+        let expect = rot::rot_z(phi) * rot::rot_x(theta) * rot::rot_z(psi);
+        assert_eq!(r, mat_out(&expect));
+        let back = matrix_to_euler(&r, "zxz", true).unwrap();
+        assert!(!back.gimbal_lock());
+        for (a, b) in back.angles().iter().zip([phi, theta, psi]) {
+            assert!((a - b).abs() < 1e-14, "{a} vs {b}");
+        }
+    }
+
+    #[test]
+    fn gimbal_lock_is_reported_and_rates_throw() {
+        let r = euler_to_matrix(&[0.4, 0.0, 0.2], "zxz", true).unwrap();
+        assert!(matrix_to_euler(&r, "zxz", true).unwrap().gimbal_lock());
+        let e = euler_rates(&[0.4, 0.0, 0.2], &[0.0, 0.0, 1.0], "zxz", true).unwrap_err();
+        assert_eq!(e.name, "GimbalLockError");
+    }
+
+    #[test]
+    fn bad_input_is_an_error_not_nan() {
+        assert!(euler_to_matrix(&[f64::NAN, 0.0, 0.0], "zxz", true)
+            .unwrap_err()
+            .message
+            .starts_with("angles"));
+        assert!(euler_to_matrix(&[0.0; 3], "zqz", true).is_err());
+        assert_eq!(
+            rotation_axis(&[2.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0])
+                .unwrap_err()
+                .name,
+            "InvalidRotationError"
+        );
+    }
+
+    #[test]
+    fn pure_translation_has_infinite_pitch() {
+        let id = mat_out(&poinsot::Mat3::identity());
+        let s = screw_axis(&id, &[0.0, 0.0, 2.0]).unwrap();
+        assert!(s.pitch().is_infinite());
+        assert!((s.slide() - 2.0).abs() < 1e-15);
+    }
+}

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Build the browser lab: the core compiled to WebAssembly (poinsot-wasm), its JavaScript glue
+# (wasm-bindgen --target web, into src/wasm, git-ignored) and the page (vite, into
+# python/poinsot/lab, git-ignored, shipped in the wheel through maturin's python-source).
+#   bash web/build.sh          everything
+#   bash web/build.sh wasm     the WebAssembly module and its glue only
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(dirname "$here")"
+cd "$root"
+
+want="$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/version = |"/, ""); print; exit }' Cargo.lock)"
+have="$(wasm-bindgen --version 2>/dev/null | awk '{ print $2 }' || true)"
+if [[ "$have" != "$want" ]]; then
+  echo "web/build.sh: wasm-bindgen $want is needed (Cargo.lock), found '${have:-none}':" >&2
+  echo "  cargo install wasm-bindgen-cli --version $want" >&2
+  exit 1
+fi
+
+cargo build --target wasm32-unknown-unknown --release -p poinsot-wasm
+wasm-bindgen --target web --out-dir web/src/wasm \
+  target/wasm32-unknown-unknown/release/poinsot_wasm.wasm
+
+if [[ "${1:-all}" == "wasm" ]]; then exit 0; fi
+cd "$here"
+if [[ ! -d node_modules ]]; then npm ci --no-audit --no-fund; fi
+npx tsc --noEmit
+npx vite build

@@ -1,0 +1,221 @@
+// Browser tests of the lab (issue 6): Debian chromium driven by playwright-core, headless, WebGL
+// through SwiftShader. Run by `make test-web` (or `npm test` in web/ once the page is built).
+//
+// Environment: LAB_URL (a running `poinsot lab`; otherwise one is started with $PYTHON, default
+// ../.venv/bin/python), CHROMIUM (default /usr/bin/chromium), GOLDEN (default tests/golden.json,
+// written by tests/make_golden.py).
+import { test, before, after } from "node:test";
+import assert from "node:assert/strict";
+import { spawn } from "node:child_process";
+import { readFileSync } from "node:fs";
+import { fileURLToPath } from "node:url";
+import path from "node:path";
+import { chromium } from "playwright-core";
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const repo = path.resolve(here, "../..");
+const SCENES = ["euler", "freetop", "drop"];
+/** Physics per frame must be a small fraction of the 16.7 ms frame budget. */
+const PHYSICS_BUDGET_MS = 2;
+/** The one console warning the tests cause themselves (reading the WebGL canvas back). */
+const BENIGN_WARNING = /GL Driver Message \(OpenGL, Performance, [A-Z_]+, High\): GPU stall due to ReadPixels/;
+
+let browser;
+let server;
+let base;
+
+before(async () => {
+  if (process.env.LAB_URL) {
+    base = process.env.LAB_URL;
+  } else {
+    const python = process.env.PYTHON ?? path.join(repo, ".venv/bin/python");
+    server = spawn(python, ["-m", "poinsot", "lab", "--no-browser"], { stdio: ["ignore", "pipe", "inherit"] });
+    base = await new Promise((resolve, reject) => {
+      let text = "";
+      server.stdout.on("data", (d) => {
+        text += d;
+        const m = text.match(/serving (http:\/\/127\.0\.0\.1:\d+\/)/);
+        if (m) resolve(m[1]);
+      });
+      server.on("exit", (code) => reject(new Error(`poinsot lab exited (${code}): ${text}`)));
+      setTimeout(() => reject(new Error(`poinsot lab did not start: ${text}`)), 20000);
+    });
+  }
+  browser = await chromium.launch({
+    executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
+    headless: true,
+    args: ["--headless", "--no-sandbox", "--disable-gpu", "--enable-unsafe-swiftshader",
+      "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run"],
+  });
+});
+
+after(async () => {
+  await browser?.close();
+  server?.kill();
+});
+
+/** Open the page at `query`, collecting console errors and uncaught exceptions. */
+async function open(query, viewport = { width: 1200, height: 800 }) {
+  const page = await browser.newPage({ viewport });
+  const errors = [];
+  page.on("console", (msg) => {
+    // The tests' own pixel read-back makes SwiftShader log a performance note; anything else counts.
+    if (msg.type() === "warning" && BENIGN_WARNING.test(msg.text())) return;
+    if (msg.type() === "error" || msg.type() === "warning") errors.push(`${msg.type()}: ${msg.text()}`);
+  });
+  page.on("pageerror", (e) => errors.push(`pageerror: ${e.message}`));
+  await page.goto(new URL(query, base).href);
+  await page.waitForFunction(() => window.__lab?.ready && window.__lab.frames > 3, null, { timeout: 30000 });
+  return { page, errors };
+}
+
+/** Distinct colours on a 32×32 grid of the WebGL canvas, and the fraction of non-background cells. */
+async function pixels(page) {
+  return page.evaluate(() => {
+    const src = document.querySelector("#view canvas");
+    const c = document.createElement("canvas");
+    c.width = 32; c.height = 32;
+    const g = c.getContext("2d");
+    g.drawImage(src, 0, 0, 32, 32);
+    const d = g.getImageData(0, 0, 32, 32).data;
+    const colours = new Set();
+    let busy = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      colours.add((d[i] << 16) | (d[i + 1] << 8) | d[i + 2]);
+      if (Math.abs(d[i] - 0x10) + Math.abs(d[i + 1] - 0x14) + Math.abs(d[i + 2] - 0x18) > 24) busy++;
+    }
+    return { colours: colours.size, busy: busy / (d.length / 4) };
+  });
+}
+
+const readouts = (page) => page.evaluate(() => window.__lab.readouts());
+const state = (page) => page.evaluate(() => ({ scene: window.__lab.scene, params: window.__lab.params, t: window.__lab.t, playing: window.__lab.playing, error: window.__lab.error }));
+
+for (const scene of SCENES) {
+  test(`${scene}: loads without console errors and draws something`, async () => {
+    const { page, errors } = await open(`?scene=${scene}`);
+    await page.waitForTimeout(300);
+    const px = await pixels(page);
+    assert.ok(px.colours > 20 && px.busy > 0.03, `blank canvas: ${JSON.stringify(px)}`);
+    const s = await state(page);
+    assert.equal(s.scene, scene);
+    assert.equal(s.error, null);
+    const text = await page.locator("#readouts").innerText();
+    assert.ok(!/NaN|undefined/.test(text), text);
+    assert.deepEqual(errors, []);
+    await page.close();
+  });
+
+  test(`${scene}: a slider changes the state, the readouts and the URL; the URL round-trips`, async () => {
+    const { page, errors } = await open(`?scene=${scene}&paused=1`);
+    const slider = page.locator("#controls input[type=range]").first();
+    const key = await slider.getAttribute("name");
+    const before = await readouts(page);
+    const min = Number(await slider.getAttribute("min"));
+    const max = Number(await slider.getAttribute("max"));
+    const target = min + 0.75 * (max - min);
+    await slider.focus();
+    await slider.fill(String(target));
+    const s = await state(page);
+    assert.notEqual(JSON.stringify(await readouts(page)), JSON.stringify(before));
+    const url = new URL(page.url());
+    assert.equal(url.searchParams.get("scene"), scene);
+    assert.equal(Number(url.searchParams.get(key)), Number(s.params[key]));
+    // Keyboard: arrow keys move the focused slider.
+    await slider.press("ArrowLeft");
+    const moved = (await state(page)).params[key];
+    assert.ok(moved < s.params[key], `ArrowLeft did not move ${key}`);
+    // Round trip: a fresh page at the shared URL has the same parameters and readouts.
+    await page.locator("#share").click();
+    const shared = await page.locator("#share-url").inputValue();
+    const again = await open(shared);
+    assert.deepEqual((await state(again.page)).params, (await state(page)).params);
+    assert.deepEqual(await readouts(again.page), await readouts(page));
+    assert.deepEqual([...errors, ...again.errors], []);
+    await again.page.close();
+    await page.close();
+  });
+}
+
+test("transport: play/pause, reset, speed and scene keys", async () => {
+  const { page, errors } = await open("?scene=freetop");
+  const t1 = (await state(page)).t;
+  await page.waitForTimeout(300);
+  assert.ok((await state(page)).t > t1, "time does not advance while playing");
+  await page.locator("body").press("Space");
+  assert.equal((await state(page)).playing, false);
+  const frozen = (await state(page)).t;
+  await page.waitForTimeout(200);
+  assert.equal((await state(page)).t, frozen);
+  assert.equal(new URL(page.url()).searchParams.get("paused"), "1");
+  await page.locator("#reset").click();
+  assert.equal((await state(page)).t, 0);
+  await page.locator("#speed").selectOption("2");
+  assert.equal(new URL(page.url()).searchParams.get("speed"), "2");
+  await page.locator("body").press("1");
+  assert.equal((await state(page)).scene, "euler");
+  assert.deepEqual(errors, []);
+  await page.close();
+});
+
+test("bad parameters show the core's error, never NaN", async () => {
+  // I3 > 2 I1 violates the triangle inequality of the moments.
+  const { page, errors } = await open("?scene=freetop&I1=0.5&I3=3&paused=1");
+  const alert = page.locator("#alert");
+  assert.equal(await alert.isVisible(), true);
+  const msg = await alert.innerText();
+  assert.match(msg, /Error: /);
+  assert.ok(!/NaN/.test(await page.locator("#readouts").innerText()));
+  assert.deepEqual(errors, []);
+  await page.close();
+});
+
+test("gimbal lock is shown", async () => {
+  const { page } = await open("?scene=euler&theta=0&paused=1");
+  const r = await readouts(page);
+  assert.equal(r.gimbalLock, true);
+  assert.match(String(r.ratesFromOmega), /^GimbalLockError: /);
+  await page.close();
+});
+
+test("parity: the page's numbers equal the Python API's to 1e-12", async () => {
+  const golden = JSON.parse(readFileSync(process.env.GOLDEN ?? path.join(here, "golden.json"), "utf8"));
+  const tol = golden.tolerance;
+  let worst = 0;
+  for (const c of golden.cases) {
+    const q = new URLSearchParams({ scene: c.scene, ...Object.fromEntries(Object.entries(c.params).map(([k, v]) => [k, String(v)])), paused: "1", t: String(c.t) });
+    const { page, errors } = await open(`?${q}`);
+    const got = await readouts(page);
+    for (const [key, want] of Object.entries(c.readouts)) {
+      const have = got[key];
+      const where = `${c.scene} ${JSON.stringify(c.params)} t=${c.t} ${key}`;
+      if (want && typeof want === "object" && !Array.isArray(want) && want.error) {
+        assert.match(String(have), new RegExp(`^${want.error}: `), where);
+      } else if (typeof want === "number" || Array.isArray(want)) {
+        const w = [want].flat(), h = [have].flat();
+        assert.equal(h.length, w.length, where);
+        w.forEach((x, i) => {
+          const err = Math.abs(h[i] - x) / Math.max(1, Math.abs(x));
+          worst = Math.max(worst, err);
+          assert.ok(err <= tol, `${where}[${i}]: page ${h[i]} vs python ${x}`);
+        });
+      } else {
+        assert.equal(have, want, where);
+      }
+    }
+    assert.deepEqual(errors, []);
+    await page.close();
+  }
+  console.log(`parity: worst relative difference ${worst.toExponential(2)} over ${golden.cases.length} cases`);
+});
+
+test("physics cost per frame is a small fraction of 16 ms", async () => {
+  for (const scene of SCENES) {
+    const { page } = await open(`?scene=${scene}`);
+    await page.waitForTimeout(2500);
+    const ms = await page.evaluate(() => window.__lab.physicsMs);
+    console.log(`physics per frame, ${scene}: ${(ms * 1000).toFixed(1)} µs (headless chromium)`);
+    assert.ok(ms < PHYSICS_BUDGET_MS, `${scene}: ${ms} ms per frame`);
+    await page.close();
+  }
+});
