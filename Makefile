@@ -10,7 +10,7 @@ PY := $(VENV)/bin/python
 export PYO3_PYTHON := $(abspath $(PY))
 export MPLBACKEND := Agg
 
-.PHONY: setup demo test test-rust lint test-python examples bench stubtest clean lab lab-build test-web
+.PHONY: setup demo test test-rust lint test-python examples bench stubtest clean lab lab-build test-web web-setup
 
 $(PY):
 	$(PYTHON) -m venv $(VENV)
@@ -47,7 +47,10 @@ bench: setup
 # The browser lab (web/): the core compiled to WebAssembly, the page built by vite into
 # python/poinsot/lab (git-ignored, shipped in the wheel). Needs the rust wasm32 target,
 # wasm-bindgen-cli of the Cargo.lock version and node/npm (.ci/run installs them).
-lab-build: setup
+web-setup:
+	bash web/setup.sh
+
+lab-build: setup web-setup
 	bash web/build.sh
 
 lab: lab-build
