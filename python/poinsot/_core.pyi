@@ -168,6 +168,7 @@ def earth_coriolis_acceleration(
 def earth_latitude_scalar(
     rotation_rate: float, radius: float, g: float, quantity: str, latitude: NDArray[np.float64],
 ) -> NDArray[np.float64]: ...
+def earth_fall_time(rotation_rate: float, radius: float, g: float, height: float) -> float: ...
 def earth_deflection(
     rotation_rate: float, radius: float, g: float, direction: str, height: NDArray[np.float64],
     latitude: NDArray[np.float64],

@@ -221,7 +221,7 @@ def fall(height: float, latitude: float, degrees: bool, solar_day: bool, gravity
     table.add_column("quantity")
     table.add_column("exact (rotating frame)", justify="right")
     table.add_column("closed form", justify="right")
-    table.add_row("time of fall (s)", f"{data['time']:.9g}", f"{np.sqrt(2 * height / earth.g):.9g}  √(2h/g), 2.41")
+    table.add_row("time of fall (s)", f"{data['time']:.9g}", f"{earth.fall_time(height):.9g}  √(2h/g), 2.41")
     table.add_row("east (m)", f"{data['east']:.6e}", f"{res.first_order_east:.6e}  eq. 2.42")
     table.add_row("south (m)", f"{-data['north']:.6e}", f"{res.second_order_south:.6e}  ¾ω² sin2λ h²/g")
     Console().print(table)

@@ -329,6 +329,11 @@ class Earth:
         from ``height`` (m, ≥ 0): x = ⅓ ω cos λ √(8h³/g) (m). Broadcasts."""
         return self._deflection("east", height, latitude, degrees)
 
+    def fall_time(self, height: float) -> float:
+        """The unit's time of fall from rest from ``height`` (m, ≥ 0) without rotation,
+        t = √(2h/g) (s, eq. 2.41)."""
+        return _core.earth_fall_time(*self._p, as_scalar(height, "height"))
+
     def southward_deflection(self, height: Any, latitude: Any, degrees: bool = False) -> Any:
         """The second-order equatorward deflection ¾ ω² sin 2λ h²/g (m, positive south) of a
         body dropped from ``height`` in uniform gravity (⅓ from Coriolis, 5/12 from the

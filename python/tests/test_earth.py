@@ -215,3 +215,15 @@ def test_bad_input_names_the_argument(call, name) -> None:
     with pytest.raises(ps.PoinsotError, match=name) as info:
         call(ps.Earth())
     assert isinstance(info.value, ValueError)
+
+
+def test_fall_time_is_the_units_2_41() -> None:
+    """t = √(2h/g) (2.41), checked by hand; and the exact fall lands within 1e-6 of it
+    (rotation changes the time only at second order)."""
+    import math
+
+    earth = ps.Earth()
+    assert earth.fall_time(100.0) == pytest.approx(math.sqrt(2 * 100.0 / 9.80665), rel=1e-15)
+    assert earth.drop(100.0, 45, degrees=True).time == pytest.approx(earth.fall_time(100.0), rel=1e-6)
+    with pytest.raises(ps.PoinsotError, match="^height:"):
+        earth.fall_time(-1.0)

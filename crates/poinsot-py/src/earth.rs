@@ -100,6 +100,12 @@ fn earth_latitude_scalar<'py>(py: Python<'py>, rotation_rate: f64, radius: f64, 
     }
 }
 
+/// The time of fall (s) from `height` (m) without rotation, √(2h/g) (2.41).
+#[pyfunction]
+fn earth_fall_time(rotation_rate: f64, radius: f64, g: f64, height: f64) -> PyResult<f64> {
+    earth(rotation_rate, radius, g)?.fall_time(height).py()
+}
+
 /// First-order east (2.42) or second-order south deflection (m) for (N,) heights and latitudes.
 #[pyfunction]
 fn earth_deflection<'py>(
@@ -307,6 +313,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(earth_coriolis_acceleration, m)?)?;
     m.add_function(wrap_pyfunction!(earth_latitude_scalar, m)?)?;
     m.add_function(wrap_pyfunction!(earth_deflection, m)?)?;
+    m.add_function(wrap_pyfunction!(earth_fall_time, m)?)?;
     m.add_function(wrap_pyfunction!(earth_drop, m)?)?;
     m.add_function(wrap_pyfunction!(earth_projectile, m)?)?;
     m.add_function(wrap_pyfunction!(earth_foucault_release, m)?)?;
