@@ -5,16 +5,14 @@ import "./style.css";
 import init, { version } from "./wasm/poinsot_wasm.js";
 import { createView } from "./view";
 import { fmt, type Params, type Readout, type SceneDef, type SceneInstance } from "./scene";
-import { eulerScene } from "./scenes/euler";
-import { freeTopScene } from "./scenes/freetop";
-import { dropScene } from "./scenes/drop";
-
-const SCENES: SceneDef[] = [eulerScene, freeTopScene, dropScene];
+import { SCENES } from "./scenes";
 
 /** What the tests (and a curious user, from the console) can see: window.__lab. */
 interface LabHandle {
   ready: boolean;
   version: string;
+  /** The ids of every scene, in the order of the tabs. */
+  scenes: string[];
   scene: string;
   params: Params;
   t: number;
@@ -34,7 +32,7 @@ async function main(): Promise<void> {
   await init();
   const view = createView($("view"));
   const lab: LabHandle = {
-    ready: false, version: version(), scene: "", params: {}, t: 0, playing: true, frames: 0,
+    ready: false, version: version(), scenes: SCENES.map((d) => d.id), scene: "", params: {}, t: 0, playing: true, frames: 0,
     physicsMs: 0, error: null,
     readouts: () => Object.fromEntries(current.readouts().map((r) => [r.key, r.value])),
     seek: (t: number) => { lab.t = t; stepOnce(); },
@@ -150,6 +148,8 @@ async function main(): Promise<void> {
 
   // --- scenes -------------------------------------------------------------------------------
   const nav = $("scenes");
+  const panel = $("scene-extra");
+  const overlay = $("overlay");
   SCENES.forEach((d, i) => {
     const b = document.createElement("button");
     b.type = "button";
@@ -202,7 +202,9 @@ async function main(): Promise<void> {
     }
     view.camera.position.set(5.5, 4.2, 3.4);
     view.controls.target.set(0, 0, 0);
-    current = d.create({ scene: view.scene, camera: view.camera, target: view.controls.target });
+    panel.replaceChildren();
+    overlay.replaceChildren();
+    current = d.create({ scene: view.scene, camera: view.camera, target: view.controls.target, panel, overlay });
     buildControls();
     configure();
     writeUrl();
@@ -261,7 +263,8 @@ async function main(): Promise<void> {
       stepOnce();
     }
     view.controls.update();
-    view.renderer.render(view.scene, view.camera);
+    if (current.render) current.render(view.renderer, view.scene, view.camera);
+    else view.renderer.render(view.scene, view.camera);
     lab.frames++;
     requestAnimationFrame(loop);
   };

@@ -43,6 +43,12 @@ export interface SceneContext {
   camera: THREE.PerspectiveCamera;
   /** The point the orbit controls turn about (the origin unless a scene moves it). */
   target: THREE.Vector3;
+  /** An empty element under the parameter controls (cleared when the scene closes) for a
+   * scene's own widgets: a file picker, a 2-D plot, a legend. */
+  panel: HTMLElement;
+  /** An empty element over the 3-D view (cleared when the scene closes, pointer events off) for
+   * labels or an inset plot drawn on top of the canvas. */
+  overlay: HTMLElement;
 }
 
 export interface SceneInstance {
@@ -54,6 +60,9 @@ export interface SceneInstance {
   readouts(): Readout[];
   /** Release the wasm objects and the three.js objects. */
   dispose(): void;
+  /** Draw the frame yourself (e.g. two viewports side by side); without it the shell renders
+   * `scene` through `camera` on the whole canvas. */
+  render?(renderer: THREE.WebGLRenderer, scene: THREE.Scene, camera: THREE.PerspectiveCamera): void;
 }
 
 export interface SceneDef {

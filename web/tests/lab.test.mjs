@@ -1,95 +1,21 @@
-// Browser tests of the lab (issue 6): Debian chromium driven by playwright-core, headless, WebGL
-// through SwiftShader. Run by `make test-web` (or `npm test` in web/ once the page is built).
+// Browser tests of the lab shell and of every scene (issue 6): Debian chromium driven by
+// playwright-core, headless, WebGL through SwiftShader. Run by `make test-web` (or `npm test` in
+// web/ once the page is built). The per-scene tests below run for every scene the page lists, so a
+// new scene is covered by adding it to src/scenes/index.ts; scene-specific tests live in
+// tests/<scene>.test.mjs.
 //
-// Environment: LAB_URL (a running `poinsot lab`; otherwise one is started with $PYTHON, default
-// ../.venv/bin/python), CHROMIUM (default /usr/bin/chromium), GOLDEN (default tests/golden.json,
-// written by tests/make_golden.py).
-import { test, before, after } from "node:test";
+// Environment: see harness.mjs; GOLDEN (default tests/golden.json, written by tests/make_golden.py).
+import { test } from "node:test";
 import assert from "node:assert/strict";
-import { spawn } from "node:child_process";
 import { readFileSync } from "node:fs";
-import { fileURLToPath } from "node:url";
 import path from "node:path";
-import { chromium } from "playwright-core";
+import { here, open, pixels, readouts, sceneIds, startLab, state } from "./harness.mjs";
 
-const here = path.dirname(fileURLToPath(import.meta.url));
-const repo = path.resolve(here, "../..");
-const SCENES = ["euler", "freetop", "drop"];
 /** Physics per frame must be a small fraction of the 16.7 ms frame budget. */
 const PHYSICS_BUDGET_MS = 2;
-/** The one console warning the tests cause themselves (reading the WebGL canvas back). */
-const BENIGN_WARNING = /GL Driver Message \(OpenGL, Performance, [A-Z_]+, High\): GPU stall due to ReadPixels/;
 
-let browser;
-let server;
-let base;
-
-before(async () => {
-  if (process.env.LAB_URL) {
-    base = process.env.LAB_URL;
-  } else {
-    const python = process.env.PYTHON ?? path.join(repo, ".venv/bin/python");
-    server = spawn(python, ["-m", "poinsot", "lab", "--no-browser"], { stdio: ["ignore", "pipe", "inherit"] });
-    base = await new Promise((resolve, reject) => {
-      let text = "";
-      server.stdout.on("data", (d) => {
-        text += d;
-        const m = text.match(/serving (http:\/\/127\.0\.0\.1:\d+\/)/);
-        if (m) resolve(m[1]);
-      });
-      server.on("exit", (code) => reject(new Error(`poinsot lab exited (${code}): ${text}`)));
-      setTimeout(() => reject(new Error(`poinsot lab did not start: ${text}`)), 20000);
-    });
-  }
-  browser = await chromium.launch({
-    executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
-    headless: true,
-    args: ["--headless", "--no-sandbox", "--disable-gpu", "--enable-unsafe-swiftshader",
-      "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run"],
-  });
-});
-
-after(async () => {
-  await browser?.close();
-  server?.kill();
-});
-
-/** Open the page at `query`, collecting console errors and uncaught exceptions. */
-async function open(query, viewport = { width: 1200, height: 800 }) {
-  const page = await browser.newPage({ viewport });
-  const errors = [];
-  page.on("console", (msg) => {
-    // The tests' own pixel read-back makes SwiftShader log a performance note; anything else counts.
-    if (msg.type() === "warning" && BENIGN_WARNING.test(msg.text())) return;
-    if (msg.type() === "error" || msg.type() === "warning") errors.push(`${msg.type()}: ${msg.text()}`);
-  });
-  page.on("pageerror", (e) => errors.push(`pageerror: ${e.message}`));
-  await page.goto(new URL(query, base).href);
-  await page.waitForFunction(() => window.__lab?.ready && window.__lab.frames > 3, null, { timeout: 30000 });
-  return { page, errors };
-}
-
-/** Distinct colours on a 32×32 grid of the WebGL canvas, and the fraction of non-background cells. */
-async function pixels(page) {
-  return page.evaluate(() => {
-    const src = document.querySelector("#view canvas");
-    const c = document.createElement("canvas");
-    c.width = 32; c.height = 32;
-    const g = c.getContext("2d");
-    g.drawImage(src, 0, 0, 32, 32);
-    const d = g.getImageData(0, 0, 32, 32).data;
-    const colours = new Set();
-    let busy = 0;
-    for (let i = 0; i < d.length; i += 4) {
-      colours.add((d[i] << 16) | (d[i + 1] << 8) | d[i + 2]);
-      if (Math.abs(d[i] - 0x10) + Math.abs(d[i + 1] - 0x14) + Math.abs(d[i + 2] - 0x18) > 24) busy++;
-    }
-    return { colours: colours.size, busy: busy / (d.length / 4) };
-  });
-}
-
-const readouts = (page) => page.evaluate(() => window.__lab.readouts());
-const state = (page) => page.evaluate(() => ({ scene: window.__lab.scene, params: window.__lab.params, t: window.__lab.t, playing: window.__lab.playing, error: window.__lab.error }));
+await startLab();
+const SCENES = await sceneIds();
 
 for (const scene of SCENES) {
   test(`${scene}: loads without console errors and draws something`, async () => {
@@ -153,7 +79,7 @@ test("transport: play/pause, reset, speed and scene keys", async () => {
   await page.locator("#speed").selectOption("2");
   assert.equal(new URL(page.url()).searchParams.get("speed"), "2");
   await page.locator("body").press("1");
-  assert.equal((await state(page)).scene, "euler");
+  assert.equal((await state(page)).scene, SCENES[0]);
   assert.deepEqual(errors, []);
   await page.close();
 });
