@@ -189,6 +189,9 @@ def earth_foucault(
     atol: float, max_steps: int,
 ) -> dict[str, Any]: ...
 def earth_fit_precession_rate(turn_times: NDArray[np.float64], turn_angles: NDArray[np.float64]) -> float: ...
+def earth_jacobi_integral(
+    rotation_rate: float, radius: float, g: float, latitude: float, states: NDArray[np.float64],
+) -> NDArray[np.float64]: ...
 def earth_inertial_oscillation(
     rotation_rate: float, radius: float, g: float, latitude: float, velocity: NDArray[np.float64],
     t_end: float, times: NDArray[np.float64], rtol: float, atol: float, max_steps: int,

@@ -181,6 +181,13 @@ class LowFlow:
     sense:
         ``"counterclockwise"`` (the north: cyclones), ``"clockwise"`` (the south) or
         ``"none"`` (below round-off), from the simulated circulation.
+    energy:
+        (P, N): each parcel's energy per unit mass ½|v|² + ½k|r|² (J/kg; kinetic plus the
+        pressure potential, k = pull / radius), which the Coriolis force leaves unchanged.
+    dissipated:
+        (P, N): the work done against friction per unit mass since the start, ∫γ|v|² dt
+        (J/kg), integrated with the motion; ``energy + dissipated`` stays at its initial value
+        (the energy budget).
     """
 
     t: FloatArray = field(repr=False)
@@ -188,6 +195,8 @@ class LowFlow:
     velocity: FloatArray = field(repr=False)
     circulation: float = 0.0
     sense: str = "none"
+    energy: FloatArray = field(default_factory=lambda: np.zeros((0, 0)), repr=False)
+    dissipated: FloatArray = field(default_factory=lambda: np.zeros((0, 0)), repr=False)
 
 
 def _sense(rate: float, scale: float) -> str:
@@ -323,6 +332,27 @@ class Earth:
         """The period of inertial oscillations π/(ω |sin λ|) (s; inf at the equator)."""
         lat, shape = _angles(latitude, "latitude", degrees)
         return _shape_out(_core.earth_latitude_scalar(*self._p, "inertial_period", lat), shape)
+
+    def jacobi_integral(self, latitude: float, position: Any, velocity: Any, degrees: bool = False) -> Any:
+        """Jacobi's integral, the energy per unit mass in the rotating local frame (J/kg):
+        J = ½|v|² + g z − ½|ω × r|² for ENU ``position`` (m) and ``velocity`` (m/s), both
+        ``(..., 3)`` (broadcast together), at ``latitude``; a float for one state, else shape
+        ``(...)``. Gravity is uniform, ẑ the plumb line at the origin (eq. 2.30). The Coriolis
+        force and a pendulum's string do no work, so J is constant along :meth:`foucault` and
+        the uniform-gravity :meth:`drop`: its drift measures the integration error."""
+        lat = _angle(latitude, "latitude", degrees)
+        pos = as_float_array(position, "position")
+        vel = as_float_array(velocity, "velocity")
+        for name, arr in (("position", pos), ("velocity", vel)):
+            if arr.ndim == 0 or arr.shape[-1] != 3:
+                raise PoinsotError(f"{name}: must have shape (..., 3), got {arr.shape}")
+        try:
+            lead = np.broadcast_shapes(pos.shape[:-1], vel.shape[:-1])
+        except ValueError:
+            raise PoinsotError(f"velocity: shape {vel.shape} does not broadcast with position {pos.shape}") from None
+        states = np.concatenate([np.broadcast_to(pos, lead + (3,)), np.broadcast_to(vel, lead + (3,))], axis=-1)
+        out = _core.earth_jacobi_integral(*self._p, lat, np.ascontiguousarray(states.reshape(-1, 6)))
+        return _shape_out(out, lead)
 
     def eastward_deflection(self, height: Any, latitude: Any, degrees: bool = False) -> Any:
         """The unit's first-order eastward deflection (eq. 2.42) of a body dropped from rest
@@ -537,4 +567,4 @@ class Earth:
         # round-off (the equator): no sense.
         scale = rad * np.sqrt(as_scalar(pull, "pull") * rad)
         return LowFlow(out["t"], tracks[:, :, :2].copy(), tracks[:, :, 2:].copy(), circ,
-                       _sense(circ, scale))
+                       _sense(circ, scale), np.stack(out["energy"]), np.stack(out["dissipated"]))

@@ -88,6 +88,59 @@ def drop_case(params: dict[str, Any], t: float) -> dict[str, Any]:
     return {"scene": "drop", "params": params, "t": t, "readouts": readouts}
 
 
+FOUCAULT_DURATION, FOUCAULT_SAMPLES = 120.0, 2401  # web/src/scenes/foucault.ts
+LOW_RADIUS, LOW_PARCELS, LOW_DURATION, LOW_SAMPLES = 5e5, 8, 2 * 86400.0, 481  # web/src/scenes/low.ts
+LOW_SECONDS_PER_PAGE_SECOND, INERTIAL_SPEED, INERTIAL_EQUATOR_RUN = 3600.0, 10.0, 86400.0
+
+
+def foucault_case(params: dict[str, Any], i: int) -> dict[str, Any]:
+    """The Foucault scene at its i-th sample time (the page continues the integration between
+    samples; on a sample it shows the sample, which Python's run holds too)."""
+    earth = poinsot.Earth(poinsot.earth.SIDEREAL_RATE * float(params["spin"]))
+    lat = params["latitude"] * DEG
+    run = earth.foucault(lat, length=params["length"], amplitude=params["amplitude"], azimuth=0.0,
+                         duration=FOUCAULT_DURATION, samples=FOUCAULT_SAMPLES)
+    t = float(run.t[i])
+    tt = run.turn_times
+    j = earth.jacobi_integral(lat, run.position, run.velocity)
+    readouts = {
+        "tau": t,
+        "position": run.position[i].tolist(),
+        "expectedRate": run.expected_rate,
+        "precessionRate": run.precession_rate,
+        "sense": run.sense,
+        "period": 2 * (tt[-1] - tt[0]) / (len(tt) - 1),
+        "jacobi": float(j[i]),
+        "jacobiDrift": float(j[i] - j[0]),
+    }
+    return {"scene": "foucault", "params": params, "t": t, "readouts": readouts}
+
+
+def low_case(params: dict[str, Any], i: int) -> dict[str, Any]:
+    """The low at its i-th sample (one page second is an hour of the run)."""
+    earth = poinsot.Earth()
+    lat = params["latitude"] * DEG
+    flow = earth.flow_into_low(lat, radius=LOW_RADIUS, parcels=LOW_PARCELS, pull=params["pull"] * 1e-3,
+                               friction=params["friction"] * 1e-5, duration=LOW_DURATION, samples=LOW_SAMPLES)
+    tau = float(flow.t[i])
+    period = float(earth.inertial_period(lat))
+    osc = earth.inertial_oscillation(lat, [INERTIAL_SPEED, 0.0], duration=2 * period if math.isfinite(period) else INERTIAL_EQUATOR_RUN,
+                                     samples=401)
+    readouts: dict[str, Any] = {
+        "tau": tau,
+        "parcel": np.concatenate([flow.position[0, i], flow.velocity[0, i]]).tolist(),
+        "circulation": flow.circulation,
+        "sense": flow.sense,
+        "coriolis": float(earth.coriolis_parameter(lat)),
+        "inertialTurning": osc.turning_rate,
+        "energy": float(np.mean(flow.energy[:, i])),
+        "dissipated": float(np.mean(flow.dissipated[:, i])),
+    }
+    if math.isfinite(period):
+        readouts["inertialPeriod"] = period
+    return {"scene": "low", "params": params, "t": tau / LOW_SECONDS_PER_PAGE_SECOND, "readouts": readouts}
+
+
 EULER = {"seq": "zxz", "convention": "intrinsic", "phi": 30, "theta": 40, "psi": 20,
          "phiDot": 20, "thetaDot": 0, "psiDot": 45}
 
@@ -102,6 +155,12 @@ def cases() -> list[dict[str, Any]]:
         free_top_case({"I1": 1, "I3": 1.7, "w1": 1.2, "w3": -0.8}, 7.125),  # oblate
         drop_case({"height": 100, "latitude": 45, "rate": "sidereal", "exaggeration": "1000"}, 0.0),
         drop_case({"height": 455, "latitude": -33, "rate": "solar day", "exaggeration": "10"}, 0.0),
+        foucault_case({"latitude": 45, "length": 10, "amplitude": 1, "spin": "1000"}, 0),
+        foucault_case({"latitude": -60, "length": 25, "amplitude": 2.5, "spin": "100"}, 1234),  # south
+        foucault_case({"latitude": 0, "length": 10, "amplitude": 1, "spin": "1000"}, 2000),  # equator: no turn
+        low_case({"latitude": 45, "pull": 1, "friction": 1}, 0),
+        low_case({"latitude": -30, "pull": 2.5, "friction": 4}, 135),  # south: clockwise
+        low_case({"latitude": 0, "pull": 1, "friction": 1}, 240),  # equator: no circulation
     ]
 
 

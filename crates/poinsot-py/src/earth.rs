@@ -239,6 +239,15 @@ fn earth_foucault<'py>(
     Ok(d)
 }
 
+/// Jacobi's integral (N,) of (N, 6) ENU states at `latitude` (rad).
+#[pyfunction]
+fn earth_jacobi_integral<'py>(py: Python<'py>, rotation_rate: f64, radius: f64, g: f64, latitude: f64, states: PyReadonlyArray2<'py, f64>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    let e = earth(rotation_rate, radius, g)?;
+    let states = rows_in::<6>("states", &states)?;
+    let out: Vec<f64> = states.iter().map(|s| e.jacobi_integral(latitude, s)).collect::<poinsot::Result<_>>().py()?;
+    Ok(PyArray1::from_vec(py, out))
+}
+
 /// Least-squares rate (rad/s) of the swing-plane angle through the turning points.
 #[pyfunction]
 fn earth_fit_precession_rate(turn_times: PyReadonlyArray1<'_, f64>, turn_angles: PyReadonlyArray1<'_, f64>) -> PyResult<f64> {
@@ -303,6 +312,9 @@ fn earth_flow_into_low<'py>(
     let parcels: Vec<Bound<'py, PyArray2<f64>>> = run.parcels.iter().map(|p| rows_out(py, p)).collect();
     d.set_item("parcels", parcels)?;
     d.set_item("circulation", run.circulation)?;
+    let rows = |v: &Vec<Vec<f64>>| -> Vec<Bound<'py, PyArray1<f64>>> { v.iter().map(|r| PyArray1::from_vec(py, r.clone())).collect() };
+    d.set_item("energy", rows(&run.energy))?;
+    d.set_item("dissipated", rows(&run.dissipated))?;
     Ok(d)
 }
 
@@ -319,6 +331,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(earth_foucault_release, m)?)?;
     m.add_function(wrap_pyfunction!(earth_foucault, m)?)?;
     m.add_function(wrap_pyfunction!(earth_fit_precession_rate, m)?)?;
+    m.add_function(wrap_pyfunction!(earth_jacobi_integral, m)?)?;
     m.add_function(wrap_pyfunction!(earth_inertial_oscillation, m)?)?;
     m.add_function(wrap_pyfunction!(earth_flow_into_low, m)?)?;
     Ok(())

@@ -1,11 +1,86 @@
 //! Bindings of `poinsot::earth`: the falling body (the unit's 2.42 and the exact drop), effective
-//! gravity, the Coriolis acceleration and the Foucault rate. Local frame ENU, latitude in radians
-//! north-positive.
+//! gravity, the Coriolis acceleration, the Foucault pendulum, inertial oscillations and the flow
+//! into a low. Local frame ENU, latitude in radians north-positive.
+//!
+//! The runs ([`Foucault`], [`LowFlow`]) mirror the Python API's `Earth.foucault` and
+//! `Earth.flow_into_low`: the same arguments, defaults, sample grid (numpy's `linspace`) and
+//! tolerances, so that the page and Python show the same numbers. They keep their samples and
+//! give the state at any time by continuing the core's integration from the last sample
+//! before it (a step or two), so that an animation can be evaluated — or seeked — anywhere.
 
-use crate::convert::{finite, finite1, vec3, vec_out, Out};
-use poinsot::earth::{self as ea, FallModel, Gravity};
+use crate::convert::{finite, finite1, vec3, vec_out, Failure, Out};
+use poinsot::earth::{self as ea, fit_precession_rate, FallModel, FoucaultRun, Gravity, LowRun};
+use poinsot::frames::ParticleState;
 use poinsot::integrate::Options;
 use wasm_bindgen::prelude::wasm_bindgen;
+
+/// Tolerances of the Foucault run: the Python API's defaults (`Earth.foucault(rtol=1e-10,
+/// atol=1e-12, max_steps=10_000_000)`).
+pub const FOUCAULT_RTOL: f64 = 1e-10;
+/// Absolute tolerance of the Foucault run (m, m/s; the Python default).
+pub const FOUCAULT_ATOL: f64 = 1e-12;
+/// Step limit of the Foucault run (the Python default).
+pub const FOUCAULT_MAX_STEPS: usize = 10_000_000;
+/// Tolerances of the flow into a low and of inertial oscillations: the Python defaults
+/// (`rtol=1e-12`; `atol=1e-6` for the low, `1e-9` for the inertial oscillation, in m and m/s).
+pub const WINDS_RTOL: f64 = 1e-12;
+/// Absolute tolerance of the flow into a low (the Python default).
+pub const LOW_ATOL: f64 = 1e-6;
+/// Absolute tolerance of the inertial oscillation (the Python default).
+pub const INERTIAL_ATOL: f64 = 1e-9;
+/// Step limit of the winds (the Python default).
+pub const WINDS_MAX_STEPS: usize = 1_000_000;
+
+/// `n` evenly spaced times from 0 to `duration`, computed as numpy's `linspace(0, duration, n)`
+/// (`i · (duration / (n − 1))`, the last exactly `duration`), so that the samples are Python's.
+fn linspace(duration: f64, n: usize) -> Vec<f64> {
+    let step = duration / (n - 1) as f64;
+    let mut t: Vec<f64> = (0..n).map(|i| i as f64 * step).collect();
+    t[n - 1] = duration;
+    t
+}
+
+fn check_run(duration: f64, samples: usize) -> Out<()> {
+    if !(duration.is_finite() && duration > 0.0) {
+        return Err(Failure::invalid(
+            "duration",
+            &format!("must be finite and > 0, got {duration}"),
+        ));
+    }
+    if samples < 2 {
+        return Err(Failure::invalid(
+            "samples",
+            &format!("must be >= 2, got {samples}"),
+        ));
+    }
+    Ok(())
+}
+
+/// The Python API's sense of a rate or circulation: `"none"` within `1e-9 · scale` of zero,
+/// else counterclockwise (> 0, seen from above) or clockwise (`poinsot.earth._sense`).
+fn sense(value: f64, scale: f64) -> String {
+    if value.abs() <= 1e-9 * scale {
+        "none".into()
+    } else if value > 0.0 {
+        "counterclockwise".into()
+    } else {
+        "clockwise".into()
+    }
+}
+
+/// The index of the last of the increasing `times` at or before `t`, or an error naming `t`
+/// outside `[times[0], times[last]]`.
+fn sample_before(times: &[f64], t: f64) -> Out<usize> {
+    poinsot::error::check_finite("t", &[t])?;
+    let (lo, hi) = (times[0], times[times.len() - 1]);
+    if !(t >= lo && t <= hi) {
+        return Err(Failure::invalid(
+            "t",
+            &format!("must lie in [{lo}, {hi}], the run, got {t}"),
+        ));
+    }
+    Ok(times.partition_point(|&ti| ti <= t).saturating_sub(1))
+}
 
 /// Tolerances of the exact drop: the Python API's defaults (`Earth.drop(rtol=1e-12,
 /// atol=1e-12, max_steps=1_000_000)`), so that the page and Python give the same numbers.
@@ -159,6 +234,408 @@ impl Earth {
     }
 }
 
+/// A Foucault pendulum swung in the rotating frame (`Earth.foucault` in Python): its samples,
+/// its turning points, the fitted precession rate, and its state at any time of the run.
+#[wasm_bindgen]
+#[derive(Debug, Clone)]
+pub struct Foucault {
+    earth: ea::Earth,
+    latitude: f64,
+    length: f64,
+    run: FoucaultRun,
+    rate: f64,
+    expected: f64,
+}
+
+impl Foucault {
+    fn options() -> Options {
+        Options {
+            rtol: FOUCAULT_RTOL,
+            atol: FOUCAULT_ATOL,
+            max_steps: FOUCAULT_MAX_STEPS,
+            dense: false,
+            ..Options::default()
+        }
+    }
+
+    fn state_at(&self, t: f64) -> Out<ParticleState> {
+        let i = sample_before(&self.run.t, t)?;
+        if self.run.t[i] == t {
+            return Ok(self.run.states[i]);
+        }
+        let rest = self.earth.foucault(
+            self.latitude,
+            self.length,
+            self.run.states[i],
+            self.run.t[i],
+            t,
+            &[t],
+            &Self::options(),
+        )?;
+        Ok(rest.states[0])
+    }
+}
+
+#[wasm_bindgen]
+impl Foucault {
+    /// The length of the run (s).
+    #[wasm_bindgen(getter)]
+    pub fn duration(&self) -> f64 {
+        self.run.t[self.run.t.len() - 1]
+    }
+    /// The swing plane's rate of turn fitted through the turning points (rad/s,
+    /// counterclockwise seen from above positive): `FoucaultRun.precession_rate`.
+    #[wasm_bindgen(getter, js_name = precessionRate)]
+    pub fn precession_rate(&self) -> f64 {
+        self.rate
+    }
+    /// The theory's rate −ω sin λ (rad/s): `FoucaultRun.expected_rate`.
+    #[wasm_bindgen(getter, js_name = expectedRate)]
+    pub fn expected_rate(&self) -> f64 {
+        self.expected
+    }
+    /// `"clockwise"`, `"counterclockwise"` or `"none"` (|rate| ≤ 1e-3 ω), from the fitted rate:
+    /// `FoucaultRun.sense`.
+    #[wasm_bindgen(getter)]
+    pub fn sense(&self) -> String {
+        sense(self.rate, 1e6 * self.earth.rotation_rate)
+    }
+    /// The sample times (s).
+    pub fn times(&self) -> Vec<f64> {
+        self.run.t.clone()
+    }
+    /// The bob's positions at the sample times, `[x0, y0, z0, x1, ...]` (ENU, m, origin at the
+    /// point of suspension).
+    pub fn positions(&self) -> Vec<f64> {
+        self.run
+            .states
+            .iter()
+            .flat_map(|s| [s[0], s[1], s[2]])
+            .collect()
+    }
+    /// The times of the turning points of the swing (s).
+    #[wasm_bindgen(js_name = turnTimes)]
+    pub fn turn_times(&self) -> Vec<f64> {
+        self.run.turn_times.clone()
+    }
+    /// The bob's direction at each turning point, counterclockwise from east seen from above
+    /// (rad).
+    #[wasm_bindgen(js_name = turnAngles)]
+    pub fn turn_angles(&self) -> Vec<f64> {
+        self.run.turn_angles.clone()
+    }
+    /// The bob's state `[x, y, z, vx, vy, vz]` at time `t` (s, in [0, duration]): the sample at
+    /// `t`, or the core's integration continued from the last sample before `t`.
+    pub fn state(&self, t: f64) -> Out<Vec<f64>> {
+        finite("state", self.state_at(t)?.to_vec())
+    }
+    /// Jacobi's integral (J/kg) of the state at `t`: constant along the run.
+    #[wasm_bindgen(js_name = jacobiIntegral)]
+    pub fn jacobi_integral(&self, t: f64) -> Out<f64> {
+        let s = self.state_at(t)?;
+        finite1("jacobi", self.earth.jacobi_integral(self.latitude, &s)?)
+    }
+}
+
+/// Parcels drawn into a low-pressure centre (`Earth.flow_into_low` in Python): their tracks, the
+/// circulation measured from the run, and their states, energies and the work done against
+/// friction at any time of the run.
+#[wasm_bindgen]
+#[derive(Debug, Clone)]
+pub struct LowFlow {
+    earth: ea::Earth,
+    latitude: f64,
+    strength: f64,
+    friction: f64,
+    scale: f64,
+    run: LowRun,
+}
+
+impl LowFlow {
+    fn options() -> Options {
+        Options {
+            rtol: WINDS_RTOL,
+            atol: LOW_ATOL,
+            max_steps: WINDS_MAX_STEPS,
+            dense: false,
+            ..Options::default()
+        }
+    }
+}
+
+#[wasm_bindgen]
+impl LowFlow {
+    /// The length of the run (s).
+    #[wasm_bindgen(getter)]
+    pub fn duration(&self) -> f64 {
+        self.run.t[self.run.t.len() - 1]
+    }
+    /// The number of parcels.
+    #[wasm_bindgen(getter)]
+    pub fn parcels(&self) -> usize {
+        self.run.parcels.len()
+    }
+    /// The mean specific angular momentum about the centre over the run (m²/s, > 0
+    /// counterclockwise): `LowFlow.circulation`.
+    #[wasm_bindgen(getter)]
+    pub fn circulation(&self) -> f64 {
+        self.run.circulation
+    }
+    /// `"counterclockwise"`, `"clockwise"` or `"none"`, from the simulated circulation, with the
+    /// Python API's round-off threshold (1e-9 · radius · √(pull · radius)): `LowFlow.sense`.
+    #[wasm_bindgen(getter)]
+    pub fn sense(&self) -> String {
+        sense(self.run.circulation, self.scale)
+    }
+    /// The sample times (s).
+    pub fn times(&self) -> Vec<f64> {
+        self.run.t.clone()
+    }
+    /// The track of parcel `index`: `[x0, y0, x1, y1, ...]` (m, east and north) at the samples.
+    pub fn track(&self, index: usize) -> Out<Vec<f64>> {
+        let p = self.run.parcels.get(index).ok_or_else(|| {
+            Failure::invalid(
+                "index",
+                &format!("must be < {} parcels, got {index}", self.run.parcels.len()),
+            )
+        })?;
+        Ok(p.iter().flat_map(|s| [s[0], s[1]]).collect())
+    }
+    /// Every parcel at time `t` (s, in [0, duration]): six numbers each, `[x, y, vx, vy, energy,
+    /// dissipated]` (m, m/s, J/kg), from the samples or by continuing the core's integration
+    /// from the last sample before `t`; `energy + dissipated` is each parcel's initial energy.
+    pub fn at(&self, t: f64) -> Out<Vec<f64>> {
+        let i = sample_before(&self.run.t, t)?;
+        let n = self.run.parcels.len();
+        let mut out = Vec::with_capacity(6 * n);
+        if self.run.t[i] == t {
+            for p in 0..n {
+                let s = self.run.parcels[p][i];
+                out.extend_from_slice(&[
+                    s[0],
+                    s[1],
+                    s[2],
+                    s[3],
+                    self.run.energy[p][i],
+                    self.run.dissipated[p][i],
+                ]);
+            }
+        } else {
+            let from: Vec<[f64; 4]> = self.run.parcels.iter().map(|p| p[i]).collect();
+            let rest = self.earth.flow_into_low_from(
+                self.latitude,
+                &from,
+                self.run.t[i],
+                self.strength,
+                self.friction,
+                t,
+                &[t],
+                &Self::options(),
+            )?;
+            for p in 0..n {
+                let s = rest.parcels[p][0];
+                // The work against friction before the sample plus the work since.
+                let lost = self.run.dissipated[p][i] + rest.dissipated[p][0];
+                out.extend_from_slice(&[s[0], s[1], s[2], s[3], rest.energy[p][0], lost]);
+            }
+        }
+        finite("parcels", out)
+    }
+}
+
+/// An inertial oscillation (`Earth.inertial_oscillation` in Python): the measured turning rate.
+#[wasm_bindgen]
+#[derive(Debug, Clone)]
+pub struct InertialOscillation {
+    run: ea::InertialRun,
+}
+
+#[wasm_bindgen]
+impl InertialOscillation {
+    /// The rate at which the velocity turned, measured from the run (rad/s, counterclockwise
+    /// positive; the theory says −2 ω sin λ).
+    #[wasm_bindgen(getter, js_name = turningRate)]
+    pub fn turning_rate(&self) -> f64 {
+        self.run.turning_rate
+    }
+    /// The track `[x0, y0, x1, y1, ...]` (m) at the samples.
+    pub fn track(&self) -> Vec<f64> {
+        self.run.states.iter().flat_map(|s| [s[0], s[1]]).collect()
+    }
+}
+
+#[wasm_bindgen]
+impl Earth {
+    /// Swing a Foucault pendulum of `length` (m) released from rest at `amplitude` (m) towards
+    /// `azimuth` (rad, clockwise from north) at `latitude` (rad) for `duration` (s), sampled at
+    /// `samples` even times: `Earth.foucault` with the Python defaults.
+    pub fn foucault(
+        &self,
+        latitude: f64,
+        length: f64,
+        amplitude: f64,
+        azimuth: f64,
+        duration: f64,
+        samples: usize,
+    ) -> Out<Foucault> {
+        check_run(duration, samples)?;
+        let state0 = ea::Earth::foucault_release(length, amplitude, azimuth)?;
+        let times = linspace(duration, samples);
+        let run = self.inner.foucault(
+            latitude,
+            length,
+            state0,
+            0.0,
+            duration,
+            &times,
+            &Foucault::options(),
+        )?;
+        let rate = finite1(
+            "precession_rate",
+            fit_precession_rate(&run.turn_times, &run.turn_angles)?,
+        )?;
+        let expected = self.inner.foucault_rate(latitude)?;
+        Ok(Foucault {
+            earth: self.inner,
+            latitude,
+            length,
+            run,
+            rate,
+            expected,
+        })
+    }
+
+    /// Parcels starting at rest on a ring of `radius` (m) — `parcels` of them, the first due east,
+    /// counterclockwise — pulled into a low at the centre by `pull` (m/s² at the ring, growing
+    /// linearly with distance), slowed by `friction` (1/s) and turned by the Coriolis force at
+    /// `latitude` (rad), for `duration` (s) sampled at `samples` even times:
+    /// `Earth.flow_into_low` with the Python defaults.
+    #[wasm_bindgen(js_name = flowIntoLow)]
+    #[allow(clippy::too_many_arguments)]
+    pub fn flow_into_low(
+        &self,
+        latitude: f64,
+        radius: f64,
+        parcels: usize,
+        pull: f64,
+        friction: f64,
+        duration: f64,
+        samples: usize,
+    ) -> Out<LowFlow> {
+        if !(radius.is_finite() && radius > 0.0) {
+            return Err(Failure::invalid(
+                "radius",
+                &format!("must be finite and > 0, got {radius}"),
+            ));
+        }
+        if parcels < 1 {
+            return Err(Failure::invalid(
+                "parcels",
+                &format!("must be >= 1, got {parcels}"),
+            ));
+        }
+        poinsot::error::check_positive("pull", pull)?;
+        check_run(duration, samples)?;
+        let starts: Vec<[f64; 2]> = (0..parcels)
+            .map(|i| {
+                let a = 2.0 * std::f64::consts::PI * i as f64 / parcels as f64;
+                [radius * a.cos(), radius * a.sin()]
+            })
+            .collect();
+        let times = linspace(duration, samples);
+        let strength = pull / radius;
+        let run = self.inner.flow_into_low(
+            latitude,
+            &starts,
+            strength,
+            friction,
+            duration,
+            &times,
+            &LowFlow::options(),
+        )?;
+        finite1("circulation", run.circulation)?;
+        Ok(LowFlow {
+            earth: self.inner,
+            latitude,
+            strength,
+            friction,
+            scale: radius * (pull * radius).sqrt(),
+            run,
+        })
+    }
+
+    /// A parcel set moving with `[v_east, v_north]` (m/s) on a frictionless level surface at
+    /// `latitude` (rad) for `duration` (s), sampled at `samples` even times:
+    /// `Earth.inertial_oscillation` with the Python defaults.
+    #[wasm_bindgen(js_name = inertialOscillation)]
+    pub fn inertial_oscillation(
+        &self,
+        latitude: f64,
+        velocity: &[f64],
+        duration: f64,
+        samples: usize,
+    ) -> Out<InertialOscillation> {
+        let v: [f64; 2] = match velocity {
+            [a, b] => [*a, *b],
+            _ => {
+                return Err(Failure::invalid(
+                    "velocity",
+                    &format!(
+                        "must hold 2 numbers [v_east, v_north], got {}",
+                        velocity.len()
+                    ),
+                ))
+            }
+        };
+        check_run(duration, samples)?;
+        let opts = Options {
+            rtol: WINDS_RTOL,
+            atol: INERTIAL_ATOL,
+            max_steps: WINDS_MAX_STEPS,
+            dense: false,
+            ..Options::default()
+        };
+        let run = self.inner.inertial_oscillation(
+            latitude,
+            v,
+            duration,
+            &linspace(duration, samples),
+            &opts,
+        )?;
+        finite1("turning_rate", run.turning_rate)?;
+        Ok(InertialOscillation { run })
+    }
+
+    /// The period of inertial oscillations π/(ω |sin λ|) (s); `Infinity` at the equator (the
+    /// one non-finite number this module returns: there is no inertial oscillation there).
+    #[wasm_bindgen(js_name = inertialPeriod)]
+    pub fn inertial_period(&self, latitude: f64) -> Out<f64> {
+        Ok(self.inner.inertial_period(latitude)?)
+    }
+
+    /// The Coriolis parameter f = 2 ω sin λ (1/s) at `latitude` (rad).
+    #[wasm_bindgen(js_name = coriolisParameter)]
+    pub fn coriolis_parameter(&self, latitude: f64) -> Out<f64> {
+        finite1("f", self.inner.coriolis_parameter(latitude)?)
+    }
+
+    /// Jacobi's integral ½ |v|² + g z − ½ |ω × r|² (J/kg) of an ENU `state` `[x, y, z, vx, vy,
+    /// vz]` at `latitude` (rad): `Earth.jacobi_integral`.
+    #[wasm_bindgen(js_name = jacobiIntegral)]
+    pub fn jacobi_integral(&self, latitude: f64, state: &[f64]) -> Out<f64> {
+        let s: ParticleState = state.try_into().map_err(|_| {
+            Failure::invalid(
+                "state",
+                &format!(
+                    "must hold 6 numbers [x, y, z, vx, vy, vz], got {}",
+                    state.len()
+                ),
+            )
+        })?;
+        finite1("jacobi", self.inner.jacobi_integral(latitude, &s)?)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -180,9 +657,17 @@ mod tests {
             * (8.0 * h.powi(3) / Earth::standard_gravity()).sqrt();
         assert!((e.eastward_deflection(h, lat).unwrap() - expect).abs() < 1e-15);
         let exact = e.drop(h, lat).unwrap();
-        assert!((exact.east() / expect - 1.0).abs() < 1e-3, "{} vs {}", exact.east(), expect);
+        assert!(
+            (exact.east() / expect - 1.0).abs() < 1e-3,
+            "{} vs {}",
+            exact.east(),
+            expect
+        );
         let land = exact.state(exact.time()).unwrap();
-        assert!((land[0] - exact.east()).abs() < 1e-9 && land[2].abs() < 1e-9, "{land:?}");
+        assert!(
+            (land[0] - exact.east()).abs() < 1e-9 && land[2].abs() < 1e-9,
+            "{land:?}"
+        );
         assert!(exact.state(-1.0).is_err());
     }
 
@@ -195,5 +680,139 @@ mod tests {
             .unwrap_err()
             .message
             .starts_with("height"));
+    }
+
+    #[test]
+    fn linspace_is_numpys() {
+        let t = linspace(120.0, 1201);
+        assert_eq!(t[0], 0.0);
+        assert_eq!(t[1200], 120.0);
+        assert_eq!(t[7], 7.0 * (120.0 / 1200.0));
+        assert_eq!(linspace(1.0, 2), vec![0.0, 1.0]);
+    }
+
+    #[test]
+    fn foucault_turns_clockwise_in_the_north_and_seeks_by_continuing() {
+        let fast = Earth::new(
+            300.0 * Earth::sidereal_rate(),
+            Earth::mean_radius(),
+            Earth::standard_gravity(),
+        )
+        .unwrap();
+        let lat = 0.8;
+        let run = fast.foucault(lat, 10.0, 1.0, 0.0, 60.0, 601).unwrap();
+        // The fit agrees with −ω sin λ to the Airy and (ω/ω₀)² corrections (< 1 %).
+        assert!((run.precession_rate() / run.expected_rate() - 1.0).abs() < 1e-2);
+        assert_eq!(run.sense(), "clockwise");
+        let south = fast.foucault(-lat, 10.0, 1.0, 0.0, 60.0, 601).unwrap();
+        assert_eq!(south.sense(), "counterclockwise");
+        // On a sample: the sample itself; between samples: the continued integration, close to
+        // the neighbouring samples and on the sphere |r| = L.
+        let times = run.times();
+        assert_eq!(run.state(times[10]).unwrap(), run.state(times[10]).unwrap());
+        let mid = run.state(0.5 * (times[10] + times[11])).unwrap();
+        let r = (mid[0] * mid[0] + mid[1] * mid[1] + mid[2] * mid[2]).sqrt();
+        assert!((r - 10.0).abs() < 1e-8, "{r}");
+        let j0 = run.jacobi_integral(0.0).unwrap();
+        assert!((run.jacobi_integral(37.123).unwrap() - j0).abs() < 1e-8 * 98.0);
+        let e = run.state(61.0).unwrap_err();
+        assert!(
+            e.message.starts_with("t: must lie in [0, 60]"),
+            "{}",
+            e.message
+        );
+        assert!(fast
+            .foucault(lat, 10.0, 11.0, 0.0, 60.0, 601)
+            .unwrap_err()
+            .message
+            .starts_with("amplitude"));
+        assert!(fast
+            .foucault(lat, 10.0, 1.0, 0.0, 0.0, 601)
+            .unwrap_err()
+            .message
+            .starts_with("duration"));
+        assert!(fast
+            .foucault(lat, 10.0, 1.0, 0.0, 60.0, 1)
+            .unwrap_err()
+            .message
+            .starts_with("samples"));
+        assert!(fast
+            .foucault(2.0, 10.0, 1.0, 0.0, 60.0, 601)
+            .unwrap_err()
+            .message
+            .starts_with("latitude"));
+    }
+
+    #[test]
+    fn low_turns_with_the_hemisphere_and_closes_its_energy_budget() {
+        let e = earth();
+        let north = e
+            .flow_into_low(0.8, 5e5, 8, 1e-3, 1e-5, 172800.0, 481)
+            .unwrap();
+        let south = e
+            .flow_into_low(-0.8, 5e5, 8, 1e-3, 1e-5, 172800.0, 481)
+            .unwrap();
+        let equator = e
+            .flow_into_low(0.0, 5e5, 8, 1e-3, 1e-5, 172800.0, 481)
+            .unwrap();
+        assert_eq!(north.sense(), "counterclockwise");
+        assert_eq!(south.sense(), "clockwise");
+        assert_eq!(equator.sense(), "none");
+        let start = north.at(0.0).unwrap();
+        for t in [3600.0, 5000.5, 172800.0] {
+            let now = north.at(t).unwrap();
+            for p in 0..8 {
+                let budget = now[6 * p + 4] + now[6 * p + 5] - start[6 * p + 4];
+                assert!(
+                    budget.abs() < 1e-9 * start[6 * p + 4],
+                    "t {t} parcel {p}: {budget:e}"
+                );
+            }
+        }
+        assert_eq!(north.track(0).unwrap().len(), 2 * 481);
+        assert!(north.track(8).unwrap_err().message.starts_with("index"));
+        assert!(north.at(-1.0).unwrap_err().message.starts_with("t: "));
+        assert!(e
+            .flow_into_low(0.8, 5e5, 8, -1.0, 1e-5, 1e5, 11)
+            .unwrap_err()
+            .message
+            .starts_with("pull"));
+        assert!(e
+            .flow_into_low(0.8, 5e5, 8, 1e-3, -1.0, 1e5, 11)
+            .unwrap_err()
+            .message
+            .starts_with("friction"));
+        assert!(e
+            .flow_into_low(0.8, 0.0, 8, 1e-3, 0.0, 1e5, 11)
+            .unwrap_err()
+            .message
+            .starts_with("radius"));
+        assert!(e
+            .flow_into_low(0.8, 5e5, 0, 1e-3, 0.0, 1e5, 11)
+            .unwrap_err()
+            .message
+            .starts_with("parcels"));
+    }
+
+    #[test]
+    fn inertial_oscillation_and_period() {
+        let e = earth();
+        let f = e.coriolis_parameter(0.7).unwrap();
+        let period = e.inertial_period(0.7).unwrap();
+        let run = e
+            .inertial_oscillation(0.7, &[10.0, 0.0], 2.0 * period, 401)
+            .unwrap();
+        assert!((run.turning_rate() / -f - 1.0).abs() < 1e-9);
+        assert_eq!(e.inertial_period(0.0).unwrap(), f64::INFINITY);
+        assert!(e
+            .inertial_oscillation(0.7, &[10.0], 1.0, 11)
+            .unwrap_err()
+            .message
+            .starts_with("velocity"));
+        assert!(e
+            .jacobi_integral(0.7, &[0.0; 5])
+            .unwrap_err()
+            .message
+            .starts_with("state"));
     }
 }

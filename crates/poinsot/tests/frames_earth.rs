@@ -234,3 +234,83 @@ fn bad_input_names_the_argument() {
     assert_eq!(e.projectile(10.0, -0.5, 0.0, 0.0, 0.0, &FallModel::default()).unwrap_err().argument, "elevation");
     assert_eq!(Earth::foucault_release(1.0, 2.0, 0.0).unwrap_err().argument, "amplitude");
 }
+
+/// Jacobi's integral of the Foucault run: conserved to the integrator's tolerance, also on a
+/// fast-spinning planet where the centrifugal term matters; the plain energy ½v² + g z, which
+/// leaves the centrifugal potential out, drifts far more there (the negative control).
+#[test]
+fn foucault_conserves_jacobis_integral() {
+    // rtol 1e-10 over 120 s of a 10 m pendulum: the drift stays below 1e-8 of g L.
+    const DRIFT: f64 = 1e-8;
+    let e = Earth::new(1000.0 * SIDEREAL_RATE, poinsot::earth::MEAN_RADIUS, 9.80665).unwrap();
+    let (lat, len) = (deg(40.0), 10.0);
+    let s0 = Earth::foucault_release(len, 1.0, 0.3).unwrap();
+    let times: Vec<f64> = (0..=120).map(|i| i as f64).collect();
+    let run = e.foucault(lat, len, s0, 0.0, 120.0, &times, &Options::with_tolerances(1e-10, 1e-12)).unwrap();
+    let j0 = e.jacobi_integral(lat, &s0).unwrap();
+    let scale = e.g * len;
+    let mut worst: f64 = 0.0;
+    let mut plain_worst: f64 = 0.0;
+    let plain = |s: &ParticleState| 0.5 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]) + e.g * s[2];
+    for s in &run.states {
+        worst = worst.max((e.jacobi_integral(lat, s).unwrap() - j0).abs() / scale);
+        plain_worst = plain_worst.max((plain(s) - plain(&s0)).abs() / scale);
+    }
+    assert!(worst < DRIFT, "Jacobi drift {worst:e}");
+    assert!(plain_worst > 1e3 * DRIFT, "the plain energy should not be conserved: {plain_worst:e}");
+    // Its value: released from rest, J = g z − ½ |ω × r|².
+    let w = e.omega_enu(lat).unwrap();
+    let r = Vec3::new(s0[0], s0[1], s0[2]);
+    assert!((j0 - (e.g * s0[2] - 0.5 * w.cross(&r).norm_squared())).abs() < 1e-12 * scale);
+    assert_eq!(e.jacobi_integral(2.0, &s0).unwrap_err().argument, "latitude");
+    assert_eq!(e.jacobi_integral(lat, &[f64::NAN; 6]).unwrap_err().argument, "state");
+}
+
+/// The low's energy budget: energy + work against friction is constant; without friction the
+/// energy itself is; continuing a run from a sample reproduces the run.
+#[test]
+fn low_energy_budget_and_continuation() {
+    // rtol 1e-12: the budget closes to 1e-9 of the initial potential energy.
+    const BUDGET: f64 = 1e-9;
+    let e = Earth::default();
+    let opts = Options::with_tolerances(1e-12, 1e-6);
+    let starts = [[5e5, 0.0], [0.0, 5e5], [-3e5, -1e5]];
+    let times: Vec<f64> = (0..=48).map(|i| i as f64 * 3600.0).collect();
+    let k = 2e-9;
+    for gamma in [0.0, 1e-5, 5e-5] {
+        let run = e.flow_into_low(deg(45.0), &starts, k, gamma, 48.0 * 3600.0, &times, &opts).unwrap();
+        for p in 0..starts.len() {
+            let e0 = run.energy[p][0];
+            assert!((e0 - 0.5 * k * (starts[p][0].powi(2) + starts[p][1].powi(2))).abs() < 1e-12 * e0);
+            for i in 0..times.len() {
+                let budget = run.energy[p][i] + run.dissipated[p][i] - e0;
+                assert!(budget.abs() < BUDGET * e0, "gamma {gamma} parcel {p} sample {i}: {budget:e}");
+            }
+            let lost = run.dissipated[p][times.len() - 1];
+            if gamma == 0.0 {
+                assert_eq!(lost, 0.0);
+            } else {
+                // Friction takes a real share of the energy (the control: the budget is not trivial).
+                assert!(lost > 0.1 * e0, "gamma {gamma}: lost {lost:e} of {e0:e}");
+            }
+        }
+        // Continue from sample 10 to the end: the same states at the later samples.
+        let from: Vec<[f64; 4]> = run.parcels.iter().map(|p| p[10]).collect();
+        let rest = e.flow_into_low_from(deg(45.0), &from, times[10], k, gamma, times[48], &times[10..], &opts).unwrap();
+        for p in 0..starts.len() {
+            for (i, s) in rest.parcels[p].iter().enumerate() {
+                let want = run.parcels[p][10 + i];
+                let err = ((s[0] - want[0]).hypot(s[1] - want[1])) / 5e5;
+                assert!(err < 1e-8, "continuation parcel {p} sample {i}: {err:e}");
+                let d = rest.dissipated[p][i] + run.dissipated[p][10] - run.dissipated[p][10 + i];
+                assert!(d.abs() < BUDGET * run.energy[p][0]);
+            }
+        }
+    }
+    let bad = e.flow_into_low_from(0.5, &[[1.0, 0.0, 0.0, 0.0]], 10.0, k, 0.0, 5.0, &[], &opts).unwrap_err();
+    assert_eq!(bad.argument, "t_end");
+    let bad = e.flow_into_low_from(0.5, &[], 0.0, k, 0.0, 5.0, &[], &opts).unwrap_err();
+    assert_eq!(bad.argument, "states");
+    let bad = e.flow_into_low_from(0.5, &[[1.0, f64::NAN, 0.0, 0.0]], 0.0, k, 0.0, 5.0, &[], &opts).unwrap_err();
+    assert_eq!(bad.argument, "states");
+}

@@ -3,5 +3,7 @@ import type { SceneDef } from "../scene";
 import { eulerScene } from "./euler";
 import { freeTopScene } from "./freetop";
 import { dropScene } from "./drop";
+import { foucaultScene } from "./foucault";
+import { lowScene } from "./low";
 
-export const SCENES: SceneDef[] = [eulerScene, freeTopScene, dropScene];
+export const SCENES: SceneDef[] = [eulerScene, freeTopScene, dropScene, foucaultScene, lowScene];

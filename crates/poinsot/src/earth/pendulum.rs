@@ -57,6 +57,25 @@ pub fn fit_precession_rate(turn_times: &[f64], turn_angles: &[f64]) -> Result<f6
 }
 
 impl Earth {
+    /// The energy per unit mass in the rotating local frame (J/kg), Jacobi's integral, of a
+    /// particle in `state` `[x, y, z, vx, vy, vz]` (ENU, m and m/s) at `latitude` (rad):
+    ///
+    /// J = ½ |ṙ|² + g z − ½ |ω × r|²,
+    ///
+    /// the kinetic energy relative to the Earth plus the potentials of uniform gravity and of
+    /// the centrifugal force −ω × (ω × r) (eq. 2.30; ẑ is the plumb line at the origin, whose
+    /// centrifugal part is in g). The Coriolis force −2 ω × ṙ is perpendicular to ṙ and does no
+    /// work, and neither does a pendulum's string, so J is constant along [`Earth::foucault`]
+    /// and along the uniform-gravity [`Earth::drop`]: its drift measures the integration error.
+    pub fn jacobi_integral(&self, latitude: f64, state: &ParticleState) -> Result<f64> {
+        check_latitude(latitude)?;
+        check_finite("state", state)?;
+        let w = self.omega_enu_unchecked(latitude);
+        let r = Vec3::new(state[0], state[1], state[2]);
+        let v = Vec3::new(state[3], state[4], state[5]);
+        Ok(0.5 * v.norm_squared() + self.g * r.z - 0.5 * w.cross(&r).norm_squared())
+    }
+
     /// The state of a Foucault pendulum of `length` (m) released from rest in the rotating
     /// frame with its bob displaced horizontally by `amplitude` (m, < length) towards
     /// `azimuth` (rad, clockwise from north). Origin at the point of suspension.

@@ -25,6 +25,13 @@ pub struct LowRun {
     pub t: Vec<f64>,
     /// For each parcel, `[east, north, v_east, v_north]` at `t` (centre of the low at 0).
     pub parcels: Vec<Vec<[f64; 4]>>,
+    /// For each parcel, its energy per unit mass ½ |v|² + ½ k |r|² (J/kg: kinetic plus the
+    /// pressure potential; the Coriolis force does no work) at `t`.
+    pub energy: Vec<Vec<f64>>,
+    /// For each parcel, the work done against friction per unit mass since the start,
+    /// ∫ γ |v|² dt (J/kg), at `t`, integrated with the motion: `energy + dissipated` is
+    /// constant (the energy budget; its drift measures the integration error).
+    pub dissipated: Vec<Vec<f64>>,
     /// The specific angular momentum about the centre, x v_y − y v_x (m²/s), averaged over
     /// the parcels and the run: positive means counterclockwise circulation seen from above.
     pub circulation: f64,
@@ -65,32 +72,61 @@ impl Earth {
     /// counterclockwise in the north, clockwise in the south (Fig. 2.7).
     #[allow(clippy::too_many_arguments)]
     pub fn flow_into_low(&self, latitude: f64, starts: &[[f64; 2]], strength: f64, friction: f64, t_end: f64, times: &[f64], options: &Options) -> Result<LowRun> {
-        let f = self.coriolis_parameter(latitude)?;
-        crate::error::check_positive("strength", strength)?;
-        check_non_negative("friction", friction)?;
-        check_non_negative("t_end", t_end)?;
         if starts.is_empty() {
             return Err(Error::invalid("starts", "must hold at least one parcel"));
         }
         for s in starts {
             check_finite("starts", s)?;
         }
+        let states: Vec<[f64; 4]> = starts.iter().map(|s| [s[0], s[1], 0.0, 0.0]).collect();
+        self.flow_into_low_from(latitude, &states, 0.0, strength, friction, t_end, times, options)
+    }
+
+    /// [`Earth::flow_into_low`] from any states: parcels in `states` (`[east, north, v_east,
+    /// v_north]`, m and m/s) at time `t0` (s), integrated to `t_end` (≥ `t0`) and sampled at
+    /// `times` (in [`t0`, `t_end`], increasing). The circulation is averaged over
+    /// [`t0`, `t_end`] and the dissipated work counted from `t0`. Continuing a run from one of
+    /// its samples gives the state at any later time (the browser lab evaluates its
+    /// animation so).
+    #[allow(clippy::too_many_arguments)]
+    pub fn flow_into_low_from(&self, latitude: f64, states: &[[f64; 4]], t0: f64, strength: f64, friction: f64, t_end: f64, times: &[f64], options: &Options) -> Result<LowRun> {
+        let f = self.coriolis_parameter(latitude)?;
+        crate::error::check_positive("strength", strength)?;
+        check_non_negative("friction", friction)?;
+        check_finite("t0", &[t0])?;
+        check_finite("t_end", &[t_end])?;
+        if t_end < t0 {
+            return Err(Error::invalid("t_end", format!("must be >= t0 = {t0}, got {t_end}")));
+        }
+        if states.is_empty() {
+            return Err(Error::invalid("states", "must hold at least one parcel"));
+        }
+        for s in states {
+            check_finite("states", s)?;
+        }
         let (k, gamma) = (strength, friction);
-        let mut parcels = Vec::with_capacity(starts.len());
+        let energy_of = |y: &[f64]| 0.5 * (y[2] * y[2] + y[3] * y[3]) + 0.5 * k * (y[0] * y[0] + y[1] * y[1]);
+        let span = t_end - t0;
+        let mut parcels = Vec::with_capacity(states.len());
+        let mut energy = Vec::with_capacity(states.len());
+        let mut dissipated = Vec::with_capacity(states.len());
         let mut circulation = 0.0;
-        for s in starts {
-            // State: x, y, vx, vy and ∫ (x vy − y vx) dt.
-            let rhs = |_t: f64, y: &[f64; 5], dy: &mut [f64; 5]| {
+        for s in states {
+            // State: x, y, vx, vy, ∫ (x vy − y vx) dt and ∫ γ |v|² dt.
+            let rhs = |_t: f64, y: &[f64; 6], dy: &mut [f64; 6]| {
                 let (x, yy, vx, vy) = (y[0], y[1], y[2], y[3]);
-                *dy = [vx, vy, -k * x - gamma * vx + f * vy, -k * yy - gamma * vy - f * vx, x * vy - yy * vx];
+                *dy = [vx, vy, -k * x - gamma * vx + f * vy, -k * yy - gamma * vy - f * vx, x * vy - yy * vx, gamma * (vx * vx + vy * vy)];
             };
-            let scan = dop853_scan(rhs, 0.0, [s[0], s[1], 0.0, 0.0, 0.0], t_end, times, options, |_t, _y: &[f64; 5]| 1.0, Crossing::Any)?;
-            if t_end > 0.0 {
-                circulation += scan.y_final[4] / t_end;
+            let y0 = [s[0], s[1], s[2], s[3], 0.0, 0.0];
+            let scan = dop853_scan(rhs, t0, y0, t_end, times, options, |_t, _y: &[f64; 6]| 1.0, Crossing::Any)?;
+            if span > 0.0 {
+                circulation += scan.y_final[4] / span;
             }
             parcels.push(scan.y.iter().map(|y| [y[0], y[1], y[2], y[3]]).collect());
+            energy.push(scan.y.iter().map(|y| energy_of(y)).collect());
+            dissipated.push(scan.y.iter().map(|y| y[5]).collect());
         }
-        circulation /= starts.len() as f64;
-        Ok(LowRun { t: times.to_vec(), parcels, circulation })
+        circulation /= states.len() as f64;
+        Ok(LowRun { t: times.to_vec(), parcels, energy, dissipated, circulation })
     }
 }

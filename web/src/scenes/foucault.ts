@@ -1,0 +1,186 @@
+// The Foucault pendulum (the unit's 2.30 and 2.33 applied to a spherical pendulum): the core
+// integrates the bob in the rotating local frame (Coriolis and centrifugal terms, the string's
+// tension) and fits the turn of the swing plane through the turning points; the page draws the
+// bob, the wire, the trace on the floor (the rosette) and the swing plane, and reads the fitted
+// rate beside −Ω sin λ. The Earth turns once a sidereal day, so the plane needs a day/|sin λ| to
+// turn round; a planet spinning faster (the exaggeration factor) makes the turn visible.
+import * as THREE from "three";
+import { Earth, type Foucault } from "../wasm/poinsot_wasm.js";
+import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
+import { disposeTree, fixedAxes } from "../view";
+
+/** Height of the point of suspension above the floor (scene units). */
+const TOP = 3.4;
+/** Drawn length of the wire (scene units); the bob hangs TOP − WIRE above the floor. */
+const WIRE = 3.0;
+/** Drawn half-width of the swing (scene units): horizontal distances are scaled to it. */
+const SWING = 1.5;
+/** The run: 120 s sampled every 0.05 s (the trace is drawn through the samples). */
+export const FOUCAULT_DURATION = 120;
+export const FOUCAULT_SAMPLES = 2401;
+
+export const foucaultScene: SceneDef = {
+  id: "foucault",
+  title: "Foucault pendulum",
+  blurb:
+    "The swing plane turns at −Ω sin λ: clockwise seen from above in the north, counterclockwise in the south, not at all at the equator. " +
+    "The core integrates the bob in the rotating frame; white: the swing plane at the last turning point, grey: where it started, yellow: the bob's trace on the floor (the rosette). " +
+    "The real Earth needs a day/|sin λ| for a turn, so the spin factor puts the pendulum on a planet spinning that much faster — a physical parameter of the simulated planet, not a faster film. " +
+    "−Ω sin λ holds while Ω ≪ √(g/L) and the amplitude ≪ L: push the spin, length or amplitude up to watch the fitted rate part from it. " +
+    "Horizontal distances are drawn enlarged; red is east, green north.",
+  params: [
+    { kind: "number", key: "latitude", label: "latitude λ", unit: "°", min: -90, max: 90, step: 1, value: 49 },
+    { kind: "number", key: "length", label: "length L", unit: "m", min: 1, max: 100, step: 1, value: 10 },
+    { kind: "number", key: "amplitude", label: "amplitude", unit: "m", min: 0.1, max: 5, step: 0.1, value: 1 },
+    { kind: "choice", key: "spin", label: "planet's spin × Earth's", options: ["1", "10", "100", "1000"], value: "1000" },
+  ],
+  create(ctx) {
+    const root = new THREE.Group();
+    ctx.scene.add(root);
+    const floor = new THREE.Mesh(
+      new THREE.CircleGeometry(2.1, 96),
+      new THREE.MeshStandardMaterial({ color: 0x2a3139, roughness: 0.9, side: THREE.DoubleSide }),
+    );
+    root.add(floor);
+    const rings = new THREE.PolarGridHelper(2.1, 12, 4, 96, 0x3a4654, 0x3a4654);
+    rings.rotateX(Math.PI / 2);
+    rings.position.z = 0.002;
+    root.add(rings);
+    const axes = fixedAxes(2.2, 0.8);
+    axes.children[2].visible = false; // east and north only: the floor's compass
+    axes.position.z = 0.004;
+    root.add(axes);
+    // The support: a beam across the top.
+    const beam = new THREE.Mesh(new THREE.BoxGeometry(1.2, 0.12, 0.12), new THREE.MeshStandardMaterial({ color: 0x6b7785 }));
+    beam.position.set(0, 0, TOP + 0.06);
+    root.add(beam);
+    const wireGeom = new THREE.BufferGeometry().setFromPoints([new THREE.Vector3(0, 0, TOP), new THREE.Vector3(0, 0, TOP - WIRE)]);
+    const wire = new THREE.Line(wireGeom, new THREE.LineBasicMaterial({ color: 0xc9d1d9 }));
+    root.add(wire);
+    const bob = new THREE.Mesh(new THREE.SphereGeometry(0.13, 32, 20), new THREE.MeshStandardMaterial({ color: 0xe5484d, metalness: 0.3, roughness: 0.4 }));
+    root.add(bob);
+    const shadow = new THREE.Mesh(new THREE.CircleGeometry(0.06, 24), new THREE.MeshBasicMaterial({ color: 0x000000, transparent: true, opacity: 0.5 }));
+    root.add(shadow);
+    // The trace over the floor through every sample, drawn up to the current one.
+    const trace = new THREE.Line(new THREE.BufferGeometry(), new THREE.LineBasicMaterial({ color: 0xf2b84b }));
+    trace.frustumCulled = false;
+    root.add(trace);
+    const planeLine = (color: number, opacity: number) => {
+      const l = new THREE.Line(
+        new THREE.BufferGeometry().setFromPoints([new THREE.Vector3(-2.1, 0, 0), new THREE.Vector3(2.1, 0, 0)]),
+        new THREE.LineBasicMaterial({ color, transparent: true, opacity }),
+      );
+      l.position.z = 0.008;
+      root.add(l);
+      return l;
+    };
+    const startPlane = planeLine(0x9aa4b1, 0.6);
+    const nowPlane = planeLine(0xffffff, 1);
+    ctx.camera.position.set(3.2, -6.2, 5.2);
+    ctx.target.set(0, 0, 1.2);
+
+    let p: Params = {};
+    let earth: Earth | null = null;
+    let run: Foucault | null = null;
+    let times: Float64Array = new Float64Array();
+    let turnTimes: Float64Array = new Float64Array();
+    let turnAngles: Float64Array = new Float64Array();
+    let period = 0;
+    let j0 = 0;
+    let scaleH = 1;
+    let out: Readout[] = [];
+
+    const release = () => {
+      run?.free();
+      earth?.free();
+      run = null;
+      earth = null;
+    };
+    /** Scene position of an ENU position (m, origin at the suspension). */
+    const place = (x: number, y: number, z: number, L: number) =>
+      new THREE.Vector3(x * scaleH, y * scaleH, TOP + (z / L) * WIRE);
+
+    return {
+      configure(params) {
+        p = params;
+        const rate = Earth.siderealRate() * Number(p.spin);
+        const nextEarth = new Earth(rate, Earth.meanRadius(), Earth.standardGravity());
+        let nextRun: Foucault;
+        try {
+          nextRun = nextEarth.foucault(Number(p.latitude) * DEG, Number(p.length), Number(p.amplitude), 0, FOUCAULT_DURATION, FOUCAULT_SAMPLES);
+        } catch (e) {
+          nextEarth.free();
+          throw e;
+        }
+        release();
+        earth = nextEarth;
+        run = nextRun;
+        times = run.times();
+        turnTimes = run.turnTimes();
+        turnAngles = run.turnAngles();
+        // Two turning points per swing: the period is twice their mean spacing.
+        const n = turnTimes.length;
+        period = (2 * (turnTimes[n - 1] - turnTimes[0])) / (n - 1);
+        j0 = run.jacobiIntegral(0);
+        scaleH = SWING / Number(p.amplitude);
+        const pos = run.positions();
+        const pts = new Float32Array(times.length * 3);
+        for (let i = 0; i < times.length; i++) {
+          pts[3 * i] = pos[3 * i] * scaleH;
+          pts[3 * i + 1] = pos[3 * i + 1] * scaleH;
+          pts[3 * i + 2] = 0.006;
+        }
+        trace.geometry.dispose();
+        trace.geometry = new THREE.BufferGeometry();
+        trace.geometry.setAttribute("position", new THREE.BufferAttribute(pts, 3));
+        trace.geometry.setDrawRange(0, 1);
+        // Released towards north (azimuth 0): the starting plane is the north–south line.
+        startPlane.rotation.z = Math.atan2(pos[1], pos[0]);
+      },
+      step(t) {
+        if (!run) return;
+        const T = run.duration;
+        const tau = Math.max(0, t) % T;
+        const s = run.state(tau);
+        const L = Number(p.length);
+        const b = place(s[0], s[1], s[2], L);
+        bob.position.copy(b);
+        shadow.position.set(b.x, b.y, 0.007);
+        const w = wireGeom.getAttribute("position") as THREE.BufferAttribute;
+        w.setXYZ(1, b.x, b.y, b.z);
+        w.needsUpdate = true;
+        // The trace through the samples up to tau.
+        let k = 0;
+        while (k + 1 < times.length && times[k + 1] <= tau) k++;
+        trace.geometry.setDrawRange(0, k + 1);
+        // The swing plane at the last turning point before tau (the start before the first).
+        let m = -1;
+        while (m + 1 < turnTimes.length && turnTimes[m + 1] <= tau) m++;
+        nowPlane.visible = m >= 0;
+        if (m >= 0) nowPlane.rotation.z = turnAngles[m];
+        const j = earth!.jacobiIntegral(Number(p.latitude) * DEG, s);
+        const fitted = run.precessionRate;
+        const expected = run.expectedRate;
+        const degPerSecond = (r: number) => `${fmt(r / DEG, 4)}°/s`;
+        const sense = run.sense;
+        out = [
+          { key: "tau", label: "t in the run (s)", value: tau, text: fmt(tau, 5) },
+          { key: "position", label: "bob (x, y, z) (m)", value: Array.from(s.subarray(0, 3)), text: fmtVec(s.subarray(0, 3)) },
+          { key: "expectedRate", label: "−Ω sin λ (rad/s)", value: expected, text: `${fmt(expected, 6)} (${degPerSecond(expected)})` },
+          { key: "precessionRate", label: "fitted from the turning points (rad/s)", value: fitted, text: `${fmt(fitted, 6)} (${degPerSecond(fitted)}; ${turnTimes.length} points)` },
+          { key: "sense", label: "plane turns", value: sense, text: sense === "none" ? "not at all" : `${sense} (seen from above)` },
+          { key: "period", label: "swing period (s)", value: period, text: fmt(period, 7) },
+          { key: "jacobi", label: "J = ½v² + gz − ½|Ω×r|² (J/kg)", value: j, text: fmt(j, 12) },
+          { key: "jacobiDrift", label: "J(t) − J(0) (J/kg)", value: j - j0, text: fmt(j - j0, 3), warn: Math.abs(j - j0) > 1e-6 * Math.abs(j0) },
+        ];
+      },
+      readouts() {
+        return out;
+      },
+      dispose() {
+        release();
+        disposeTree(root);
+      },
+    };
+  },
+};
