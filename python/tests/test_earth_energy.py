@@ -58,8 +58,10 @@ def test_jacobi_integral_broadcasts_and_checks() -> None:
         e.jacobi_integral(0.3, [0, 0], [1.0, 0, 0])
     with pytest.raises(ps.PoinsotError, match="latitude"):
         e.jacobi_integral(2.0, [0, 0, 1.0], [1.0, 0, 0])
-    with pytest.raises(ps.PoinsotError, match="state"):
+    with pytest.raises(ps.PoinsotError, match="^position: must be finite"):
         e.jacobi_integral(0.3, [0, 0, np.nan], [1.0, 0, 0])
+    with pytest.raises(ps.PoinsotError, match="^velocity"):
+        e.jacobi_integral(0.3, [0, 0, 1.0], np.ones((2, 3)) * [[1], [np.inf]])
 
 
 @pytest.mark.parametrize("friction", [0.0, 1e-5, 4e-5])

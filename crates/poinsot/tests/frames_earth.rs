@@ -279,9 +279,9 @@ fn low_energy_budget_and_continuation() {
     let k = 2e-9;
     for gamma in [0.0, 1e-5, 5e-5] {
         let run = e.flow_into_low(deg(45.0), &starts, k, gamma, 48.0 * 3600.0, &times, &opts).unwrap();
-        for p in 0..starts.len() {
+        for (p, start) in starts.iter().enumerate() {
             let e0 = run.energy[p][0];
-            assert!((e0 - 0.5 * k * (starts[p][0].powi(2) + starts[p][1].powi(2))).abs() < 1e-12 * e0);
+            assert!((e0 - 0.5 * k * (start[0].powi(2) + start[1].powi(2))).abs() < 1e-12 * e0);
             for i in 0..times.len() {
                 let budget = run.energy[p][i] + run.dissipated[p][i] - e0;
                 assert!(budget.abs() < BUDGET * e0, "gamma {gamma} parcel {p} sample {i}: {budget:e}");

@@ -24,9 +24,10 @@ export const foucaultScene: SceneDef = {
   title: "Foucault pendulum",
   blurb:
     "The swing plane turns at −Ω sin λ: clockwise seen from above in the north, counterclockwise in the south, not at all at the equator. " +
-    "The core integrates the bob in the rotating frame; white: the swing plane at the last turning point, grey: where it started, yellow: the bob's trace on the floor (the rosette). " +
+    "The core integrates the bob in the rotating frame; white: the swing plane at the last turning point, yellow: the bob's trace on the floor (the rosette); it was released towards the north. " +
     "The real Earth needs a day/|sin λ| for a turn, so the spin factor puts the pendulum on a planet spinning that much faster — a physical parameter of the simulated planet, not a faster film. " +
     "−Ω sin λ holds while Ω ≪ √(g/L) and the amplitude ≪ L: push the spin, length or amplitude up to watch the fitted rate part from it. " +
+    "J = ½v² + gz − ½|Ω×r|², the energy in the rotating frame, is conserved (Coriolis and the wire do no work): its drift checks the integration. " +
     "Horizontal distances are drawn enlarged; red is east, green north.",
   params: [
     { kind: "number", key: "latitude", label: "latitude λ", unit: "°", min: -90, max: 90, step: 1, value: 49 },
@@ -74,7 +75,6 @@ export const foucaultScene: SceneDef = {
       root.add(l);
       return l;
     };
-    const startPlane = planeLine(0x9aa4b1, 0.6);
     const nowPlane = planeLine(0xffffff, 1);
     ctx.camera.position.set(3.2, -6.2, 5.2);
     ctx.target.set(0, 0, 1.2);
@@ -134,8 +134,6 @@ export const foucaultScene: SceneDef = {
         trace.geometry = new THREE.BufferGeometry();
         trace.geometry.setAttribute("position", new THREE.BufferAttribute(pts, 3));
         trace.geometry.setDrawRange(0, 1);
-        // Released towards north (azimuth 0): the starting plane is the north–south line.
-        startPlane.rotation.z = Math.atan2(pos[1], pos[0]);
       },
       step(t) {
         if (!run) return;
@@ -167,10 +165,11 @@ export const foucaultScene: SceneDef = {
           { key: "tau", label: "t in the run (s)", value: tau, text: fmt(tau, 5) },
           { key: "position", label: "bob (x, y, z) (m)", value: Array.from(s.subarray(0, 3)), text: fmtVec(s.subarray(0, 3)) },
           { key: "expectedRate", label: "−Ω sin λ (rad/s)", value: expected, text: `${fmt(expected, 6)} (${degPerSecond(expected)})` },
-          { key: "precessionRate", label: "fitted from the turning points (rad/s)", value: fitted, text: `${fmt(fitted, 6)} (${degPerSecond(fitted)}; ${turnTimes.length} points)` },
+          { key: "precessionRate", label: "fitted rate (rad/s)", value: fitted, text: `${fmt(fitted, 6)} (${degPerSecond(fitted)})` },
+          { key: "turningPoints", label: "turning points fitted", value: turnTimes.length, text: String(turnTimes.length) },
           { key: "sense", label: "plane turns", value: sense, text: sense === "none" ? "not at all" : `${sense} (seen from above)` },
           { key: "period", label: "swing period (s)", value: period, text: fmt(period, 7) },
-          { key: "jacobi", label: "J = ½v² + gz − ½|Ω×r|² (J/kg)", value: j, text: fmt(j, 12) },
+          { key: "jacobi", label: "Jacobi J (J/kg)", value: j, text: fmt(j, 12) },
           { key: "jacobiDrift", label: "J(t) − J(0) (J/kg)", value: j - j0, text: fmt(j - j0, 3), warn: Math.abs(j - j0) > 1e-6 * Math.abs(j0) },
         ];
       },

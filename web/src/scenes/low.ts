@@ -27,6 +27,7 @@ export const lowScene: SceneDef = {
   blurb:
     "Air at rest on a ring 500 km from a low-pressure centre is pulled in by the pressure gradient, turned by the Coriolis force (to the right in the north, to the left in the south, not at all at the equator) and slowed by friction. " +
     "The core integrates the parcels; the sense of the circulation is measured from the run: counterclockwise round a northern low, clockwise round a southern one. " +
+    "Circulation: the parcels' mean x v_y − y v_x over the run; energy, friction's work and their budget: means over the parcels. " +
     "Rings are isobars, arrows the winds; the dashed circle is an inertial oscillation (a parcel set moving at 10 m/s with no pressure gradient: it circles in 2π/|f|). One second is one hour; the run lasts two days.",
   params: [
     { kind: "number", key: "latitude", label: "latitude λ", unit: "°", min: -90, max: 90, step: 1, value: 40 },
@@ -162,15 +163,15 @@ export const lowScene: SceneDef = {
         const first = Array.from(now.subarray(0, 4));
         out = [
           { key: "tau", label: "t in the run (h)", value: tau, text: fmt(tau / 3600, 5) },
-          { key: "parcel", label: "parcel 1 (x, y, vx, vy) (km, m/s)", value: first, text: fmtVec([first[0] / 1e3, first[1] / 1e3, first[2], first[3]], 4) },
-          { key: "circulation", label: "circulation ⟨x v_y − y v_x⟩ (m²/s)", value: circ, text: fmt(circ, 8) },
+          { key: "parcel", label: "parcel 1: x, y (km), v (m/s)", value: first, text: fmtVec([first[0] / 1e3, first[1] / 1e3, first[2], first[3]], 4) },
+          { key: "circulation", label: "circulation (m²/s)", value: circ, text: fmt(circ, 8) },
           { key: "sense", label: "sense (from the run)", value: sense, text: sense === "none" ? "none (no turning)" : `${sense} (seen from above)` },
           { key: "coriolis", label: "f = 2Ω sin λ (1/s)", value: f, text: fmt(f, 6) },
-          { key: "inertialPeriod", label: "inertial period 2π/|f| (h)", value: period, text: Number.isFinite(period) ? fmt(period / 3600, 6) : "∞ (no inertial circle)" },
-          { key: "inertialTurning", label: "inertial turning, measured (rad/s)", value: turning, text: fmt(turning, 8) },
-          { key: "energy", label: "mean energy ½v² + ½k r² (J/kg)", value: energy, text: fmt(energy, 8) },
-          { key: "dissipated", label: "mean work against friction (J/kg)", value: lostMean, text: fmt(lostMean, 8) },
-          { key: "budgetDrift", label: "|E + W − E₀| / E₀ (worst parcel)", value: worst, text: fmt(worst, 3), warn: worst > 1e-8 },
+          { key: "inertialPeriod", label: "inertial period (h)", value: period, text: Number.isFinite(period) ? fmt(period / 3600, 6) : "∞ (no inertial circle)" },
+          { key: "inertialTurning", label: "inertial turning (rad/s)", value: turning, text: fmt(turning, 8) },
+          { key: "energy", label: "energy ½v²+½kr² (J/kg)", value: energy, text: fmt(energy, 8) },
+          { key: "dissipated", label: "friction's work (J/kg)", value: lostMean, text: fmt(lostMean, 8) },
+          { key: "budgetDrift", label: "budget |E+W−E₀|/E₀", value: worst, text: fmt(worst, 3), warn: worst > 1e-8 },
         ];
       },
       readouts() {
