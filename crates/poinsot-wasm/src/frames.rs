@@ -296,6 +296,13 @@ impl SpringParticle {
         Ok(vec_out(&self.inner.force(&r)))
     }
 
+    /// The acceleration F / m = −(k / m) r (m/s²) at `position` (m): the fixed-frame r̈'.
+    pub fn acceleration(&self, position: &[f64]) -> Out<Vec<f64>> {
+        let r = vec3("position", position)?;
+        poinsot::error::check_finite("position", r.as_slice())?;
+        Ok(vec_out(&self.inner.acceleration(&r)))
+    }
+
     /// The fixed-frame energy ½ m |ṙ'|² + ½ k |r'|² (J) from the fixed-frame `position` (m)
     /// and `velocity` (m/s).
     pub fn energy(&self, position: &[f64], velocity: &[f64]) -> Out<f64> {

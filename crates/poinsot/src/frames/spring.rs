@@ -48,6 +48,13 @@ impl SpringParticle {
         -self.stiffness * position
     }
 
+    /// The acceleration F / m = −(k / m) r (m/s²) at `position` r (m): in the fixed frame, the
+    /// particle's whole acceleration r̈' (eq. 2.25).
+    #[inline]
+    pub fn acceleration(&self, position: &Vec3) -> Vec3 {
+        self.force(position) / self.mass
+    }
+
     /// The potential energy U = ½ k |r|² (J).
     pub fn potential(&self, position: &Vec3) -> f64 {
         0.5 * self.stiffness * position.norm_squared()
@@ -191,6 +198,7 @@ mod tests {
         let turning = MovingFrame::rotating(Vec3::new(0.0, 0.0, 2.0)).unwrap();
         assert!((p.jacobi_integral(&turning, &r, &v) - (p.energy(&r, &v) - 1.5)).abs() < 1e-14);
         assert_eq!(p.force(&r), Vec3::new(-0.15, 0.2, -0.1));
+        assert!((p.acceleration(&r) - Vec3::new(-0.05, 0.2 / 3.0, -0.1 / 3.0)).norm() < 1e-16);
     }
 
     #[test]
