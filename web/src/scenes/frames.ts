@@ -80,7 +80,7 @@ export const framesScene: SceneDef = {
     "The core integrates it in the rotating frame, m a_rel = F − 2m ω×v − m ω×(ω×r) − m ω̇×r (2.26–2.28), and maps it back (2.20–2.21): " +
     "a free particle (k = 0) runs straight on the left and curves on the right. Arrows on the right: the relative acceleration and the forces per mass that make it.",
   params: [
-    { kind: "number", key: "omega", label: "table ω", unit: "rad/s", min: -2, max: 2, step: 0.05, value: 1 },
+    { kind: "number", key: "omega", label: "table ω", unit: "rad/s", min: -2, max: 2, step: 0.05, value: 0.8 },
     { kind: "number", key: "omegaDot", label: "table ω̇", unit: "rad/s²", min: -0.5, max: 0.5, step: 0.05, value: 0 },
     { kind: "number", key: "stiffness", label: "spring k (m = 1 kg)", unit: "N/m", min: 0, max: 4, step: 0.1, value: 0 },
     { kind: "number", key: "r0", label: "start radius r₀", unit: "m", min: 0, max: 1, step: 0.05, value: 0.8 },
