@@ -2,7 +2,7 @@
 //! fixed-frame acceleration split into the unit's terms (2.1–2.28); the steady motion of a frame
 //! (`MovingFrame.at`), and a particle on a spring (free when k = 0) integrated in a turning frame.
 
-use crate::convert::{finite, finite1, mat_out, vec3, vec_out, Failure, Out};
+use crate::convert::{finite, finite1, mat_out, vec3, vec_out, Out};
 use poinsot::frames as fr;
 use poinsot::integrate::Options;
 use wasm_bindgen::prelude::wasm_bindgen;
@@ -345,9 +345,7 @@ pub fn simulate_particle(
 ) -> Out<Vec<f64>> {
     let particle = fr::SpringParticle::new(mass, stiffness)?;
     let (r0, v0) = (vec3("position", position)?, vec3("velocity", velocity)?);
-    if !(duration >= 0.0) {
-        return Err(Failure::invalid("duration", "must be finite and >= 0"));
-    }
+    poinsot::error::check_non_negative("duration", duration)?;
     let motion = fr::SteadyMotion::new(frame.inner)?;
     let opts = Options {
         rtol: PARTICLE_RTOL,
