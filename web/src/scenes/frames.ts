@@ -327,7 +327,7 @@ export const framesScene: SceneDef = {
         const residual = Math.hypot(terms.sum[0] - aTrue[0], terms.sum[1] - aTrue[1], terms.sum[2] - aTrue[2]);
         const uniform = Number(p.omegaDot) === 0;
         const eDrift = energy - energy0, jDrift = jacobi - jacobi0;
-        const vecOut = (key: string, label: string, x: ArrayLike<number>, digits = 5): Readout => ({ key, label, value: Array.from(x), text: fmtVec(x, digits) });
+        const vecOut = (key: string, label: string, x: ArrayLike<number>, digits = 4): Readout => ({ key, label, value: Array.from(x), text: fmtVec(x, digits) });
         out = [
           { key: "tau", label: "t in the loop (s)", value: tau, text: fmt(tau, 5) },
           { key: "omegaNow", label: "ω(t) of the table (rad/s)", value: omegaNow[2], text: fmt(omegaNow[2], 6) },
@@ -344,12 +344,12 @@ export const framesScene: SceneDef = {
           vecOut("sum", "sum of the four (m/s²)", terms.sum),
           vecOut("accelerationFixed", "r̈′ = F/m (m/s²)", aTrue),
           { key: "residual", label: "|sum − F/m| (m/s²)", value: residual, text: fmt(residual, 3), warn: residual > 1e-12 },
-          { key: "energy", label: "E = ½mṙ′² + ½kr′² (J)", value: energy, text: `${fmt(energy, 10)} (drift ${fmt(eDrift, 2)})` },
+          { key: "energy", label: "E = ½mṙ′² + ½kr′² (J)", value: energy, text: `${fmt(energy, 9)} (drift ${fmt(eDrift, 2)})` },
           {
             key: "jacobi",
             label: "Jacobi ½mv² + ½kr² − ½m|ω×r|² (J)",
             value: jacobi,
-            text: `${fmt(jacobi, 10)} (${uniform ? "conserved, drift" : "not conserved: ω̇ ≠ 0, change"} ${fmt(jDrift, 2)})`,
+            text: `${fmt(jacobi, 9)} (${uniform ? "conserved, drift" : "not conserved: ω̇ ≠ 0, change"} ${fmt(jDrift, 2)})`,
           },
         ];
       },
