@@ -141,6 +141,83 @@ def low_case(params: dict[str, Any], i: int) -> dict[str, Any]:
     return {"scene": "low", "params": params, "t": tau / LOW_SECONDS_PER_PAGE_SECOND, "readouts": readouts}
 
 
+FRAMES_MASS = 1.0  # the page's particle mass (kg)
+FRAMES_SAMPLES = 600  # the page's path samples (TRAIL_SAMPLES)
+FRAMES_LOOP_MAX, FRAMES_LOOP_MIN, FRAMES_FREE_RUN = 8.0, 1.5, 3.0  # the page's loop (s, s, m)
+
+
+def frames_case(params: dict[str, Any], t: float) -> dict[str, Any]:
+    """The rotating-frames scene: the particle integrated in the turntable's frame by
+    ``simulate_particle`` (spring force −k r as a callable, none when k = 0), mapped back with
+    ``MovingFrame.at(t).to_fixed``; energies by NumPy (independent of the core's formulas)."""
+    w, wd, k = params["omega"], params["omegaDot"], params["stiffness"]
+    frame0 = poinsot.MovingFrame(angular_velocity=[0.0, 0.0, w], angular_acceleration=[0.0, 0.0, wd])
+    r0 = np.array([params["r0"], 0.0, 0.0])
+    d = params["direction"] * DEG
+    launch = np.array([params["speed"] * math.cos(d), params["speed"] * math.sin(d), 0.0])
+
+    def accel(x: np.ndarray) -> np.ndarray:
+        return -k * x / FRAMES_MASS
+
+    if params["launch"] == "rotating frame":
+        v0rel, v0fixed = launch, frame0.to_fixed(r0, launch).velocity
+    else:
+        v0rel, v0fixed = frame0.to_moving(r0, launch, accel(r0)).velocity, launch
+    s0 = float(np.linalg.norm(v0fixed))
+    free_loop = k == 0 and s0 * FRAMES_LOOP_MAX >= FRAMES_FREE_RUN
+    loop = max(FRAMES_LOOP_MIN, FRAMES_FREE_RUN / s0) if free_loop else FRAMES_LOOP_MAX
+    tau = t % loop
+    # The page's scheme: the path over the loop at FRAMES_SAMPLES times, then from the last sample
+    # before tau to tau.
+    n = FRAMES_SAMPLES
+    times = [loop if i == n - 1 else loop * i / (n - 1) for i in range(n)]
+    force = None if k == 0 else (lambda _t, x, _v: -k * x)
+    path = poinsot.simulate_particle(frame0, r0, v0rel, loop, t_eval=times, mass=FRAMES_MASS, force=force)
+    i = min(n - 1, math.floor(tau / loop * (n - 1)))
+    while i > 0 and times[i] > tau:
+        i -= 1
+    dt = tau - times[i]
+    if dt == 0:
+        r, v = path.position[i], path.velocity[i]
+    else:
+        traj = poinsot.simulate_particle(frame0.at(times[i]), path.position[i], path.velocity[i], dt, t_eval=[dt],
+                                         mass=FRAMES_MASS, force=force)
+        r, v = traj.position[0], traj.velocity[0]
+    f = frame0.at(tau)
+    fixed = f.to_fixed(r, v)
+    a_true = accel(fixed.position)
+    rel = f.to_moving(fixed.position, fixed.velocity, a_true)
+    fx = f.to_fixed(r, v, rel.acceleration)
+    terms = fx.acceleration_terms
+    w_moving = f.attitude.T @ f.angular_velocity
+    energy = 0.5 * FRAMES_MASS * fixed.velocity @ fixed.velocity + 0.5 * k * fixed.position @ fixed.position
+    wxr = np.cross(w_moving, r)
+    jacobi = 0.5 * FRAMES_MASS * (v @ v - wxr @ wxr) + 0.5 * k * r @ r
+    readouts = {
+        "tau": tau,
+        "omegaNow": float(f.angular_velocity[2]),
+        "positionFixed": fixed.position.tolist(),
+        "positionRotating": np.asarray(r).tolist(),
+        "velocityFixed": fixed.velocity.tolist(),
+        "velocityRotating": np.asarray(v).tolist(),
+        "speedFixed": float(np.linalg.norm(fixed.velocity)),
+        "speedRotating": float(np.linalg.norm(v)),
+        "relative": terms["relative"].tolist(),
+        "coriolis": terms["coriolis"].tolist(),
+        "centripetal": terms["centripetal"].tolist(),
+        "euler": terms["euler"].tolist(),
+        "sum": fx.acceleration.tolist(),
+        "accelerationFixed": a_true.tolist(),
+        "residual": float(np.linalg.norm(fx.acceleration - a_true)),
+        "energy": float(energy),
+        "jacobi": float(jacobi),
+    }
+    return {"scene": "frames", "params": params, "t": t, "readouts": readouts}
+
+
+FRAMES = {"omega": 1, "omegaDot": 0, "stiffness": 0, "r0": 0.8, "speed": 0.6, "direction": 150,
+          "launch": "fixed frame"}
+
 EULER = {"seq": "zxz", "convention": "intrinsic", "phi": 30, "theta": 40, "psi": 20,
          "phiDot": 20, "thetaDot": 0, "psiDot": 45}
 
@@ -161,6 +238,12 @@ def cases() -> list[dict[str, Any]]:
         low_case({"latitude": 45, "pull": 1, "friction": 1}, 0),
         low_case({"latitude": -30, "pull": 2.5, "friction": 4}, 135),  # south: clockwise
         low_case({"latitude": 0, "pull": 1, "friction": 1}, 240),  # equator: no circulation
+        frames_case(FRAMES, 0.0),
+        frames_case(FRAMES, 2.5),  # free particle: straight when fixed, curved when rotating
+        # Spinning up (Euler term) with a spring, launched across the table in its own frame.
+        frames_case({**FRAMES, "omega": -1.5, "omegaDot": 0.3, "stiffness": 2, "r0": 0.6, "speed": 0.4,
+                     "direction": 90, "launch": "rotating frame"}, 6.25),
+        frames_case({**FRAMES, "omega": 0, "stiffness": 1}, 1.7),  # no rotation: no fictitious terms
     ]
 
 

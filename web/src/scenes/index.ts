@@ -1,9 +1,10 @@
-// The lab's scenes, in the order of the tabs (and of the number keys 1–9).
+// The lab's scenes, in the order of the tabs (and of the number keys 1–9): the unit's order.
 import type { SceneDef } from "../scene";
-import { eulerScene } from "./euler";
-import { freeTopScene } from "./freetop";
+import { framesScene } from "./frames";
 import { dropScene } from "./drop";
 import { foucaultScene } from "./foucault";
 import { lowScene } from "./low";
+import { eulerScene } from "./euler";
+import { freeTopScene } from "./freetop";
 
-export const SCENES: SceneDef[] = [eulerScene, freeTopScene, dropScene, foucaultScene, lowScene];
+export const SCENES: SceneDef[] = [framesScene, dropScene, foucaultScene, lowScene, eulerScene, freeTopScene];
