@@ -88,6 +88,73 @@ def drop_case(params: dict[str, Any], t: float) -> dict[str, Any]:
     return {"scene": "drop", "params": params, "t": t, "readouts": readouts}
 
 
+INERTIA_MOTIONS = ("Chasles: rotation + translation", "Euler: rotation about the CM")
+
+
+def inertia_fraction(t: float) -> float:
+    """The page's clock of the screw motion (presentation): rest 0.5 s, move 4 s, rest; period 6 s."""
+    tau = max(0.0, t) % 6.0
+    return min(1.0, max(0.0, (tau - 0.5) / 4.0))
+
+
+def inertia_body(p: dict[str, Any]) -> poinsot.RigidBody:
+    m, a, b, c = p["mass"], p["a"], p["b"], p["c"]
+    rb = poinsot.RigidBody
+    return {
+        "cuboid": lambda: rb.cuboid(m, [a, b, c]),
+        "solidSphere": lambda: rb.solid_sphere(m, a),
+        "sphericalShell": lambda: rb.spherical_shell(m, a),
+        "solidCylinder": lambda: rb.solid_cylinder(m, a, b),
+        "solidCone": lambda: rb.solid_cone(m, a, b),
+        "ellipsoid": lambda: rb.ellipsoid(m, [a, b, c]),
+        "thinRod": lambda: rb.thin_rod(m, a),
+        "thinDisk": lambda: rb.thin_disk(m, a),
+        "thinRing": lambda: rb.thin_ring(m, a),
+    }[p["shape"]]()
+
+
+def inertia_case(params: dict[str, Any], t: float) -> dict[str, Any]:
+    body = inertia_body(params)
+    moments = np.asarray(body.principal_moments)
+    R = poinsot.euler_to_matrix([params["phi"] * DEG, params["theta"] * DEG, params["psi"] * DEG], "zxz")
+    tr = [0.0, 0.0, 0.0] if params["motion"] == INERTIA_MOTIONS[1] else [params["tx"], params["ty"], params["tz"]]
+    axis, angle = poinsot.rotation_axis(R)
+    screw = poinsot.screw_axis(R, tr)
+    s = inertia_fraction(t)
+    Rs, ts = screw.displacement_at(s)
+    com = np.asarray(body.center_of_mass)
+    moved = body.translated(-com).rotated(Rs).translated(ts)
+    readouts = {
+        "s": s,
+        "pose": np.concatenate([np.asarray(Rs).reshape(9), ts]).tolist(),
+        "movedCom": np.asarray(moved.center_of_mass).tolist(),
+        "movedInertia": np.asarray(moved.inertia).reshape(9).tolist(),
+        "mass": body.mass,
+        "com": com.tolist(),
+        "inertia": np.asarray(body.inertia).reshape(9).tolist(),
+        "principalMoments": moments.tolist(),
+        "principalAxes": np.asarray(body.principal_axes).reshape(9).tolist(),
+        "kind": body.kind,
+        # 2 x the second moments along the principal axes (independent of the core's method).
+        "triangleMargins": [moments[1] + moments[2] - moments[0], moments[2] + moments[0] - moments[1],
+                            moments[0] + moments[1] - moments[2]],
+        "R": np.asarray(R).reshape(9).tolist(),
+        "translation": tr,
+        "eulerAxis": np.asarray(axis).tolist(),
+        "eulerAngle": float(angle),
+        "screwAxis": np.asarray(screw.axis).tolist(),
+        "screwPoint": np.asarray(screw.point).tolist(),
+        "screwAngle": screw.angle,
+        "screwSlide": screw.slide,
+        "screwPitch": screw.pitch,
+    }
+    return {"scene": "inertia", "params": params, "t": t, "readouts": readouts}
+
+
+INERTIA = {"mass": 2, "shape": "cuboid", "a": 1.2, "b": 0.8, "c": 0.4, "density": 1000, "unit": "m",
+           "motion": INERTIA_MOTIONS[0], "phi": 40, "theta": 65, "psi": 20, "tx": 1.5, "ty": 0.5, "tz": 1}
+
+
 EULER = {"seq": "zxz", "convention": "intrinsic", "phi": 30, "theta": 40, "psi": 20,
          "phiDot": 20, "thetaDot": 0, "psiDot": 45}
 
@@ -102,6 +169,11 @@ def cases() -> list[dict[str, Any]]:
         free_top_case({"I1": 1, "I3": 1.7, "w1": 1.2, "w3": -0.8}, 7.125),  # oblate
         drop_case({"height": 100, "latitude": 45, "rate": "sidereal", "exaggeration": "1000"}, 0.0),
         drop_case({"height": 455, "latitude": -33, "rate": "solar day", "exaggeration": "10"}, 0.0),
+        inertia_case(INERTIA, 1.7),  # asymmetric top, mid-screw
+        inertia_case({**INERTIA, "shape": "solidCone", "a": 0.5, "b": 1.5, "mass": 3.3}, 3.25),  # CM off the origin
+        # Euler: a rotation about the CM of a lamina (I1 + I2 = I3), screw through the CM, pitch 0.
+        inertia_case({**INERTIA, "shape": "thinDisk", "motion": INERTIA_MOTIONS[1], "phi": -120, "psi": 75}, 5.5),
+        inertia_case({**INERTIA, "shape": "thinRod", "a": 1.7, "theta": 180, "phi": 0, "psi": 0}, 2.5),  # rotor, half turn
     ]
 
 
