@@ -152,7 +152,7 @@ def inertia_case(params: dict[str, Any], t: float) -> dict[str, Any]:
 
 
 INERTIA = {"mass": 2, "shape": "cuboid", "a": 1.2, "b": 0.8, "c": 0.4, "density": 1000, "unit": "m",
-           "motion": INERTIA_MOTIONS[0], "phi": 40, "theta": 65, "psi": 20, "tx": 1.5, "ty": 0.5, "tz": 1}
+           "motion": INERTIA_MOTIONS[0], "phi": 60, "theta": 30, "psi": 30, "tx": 2, "ty": 0, "tz": 0.8}
 
 
 EULER = {"seq": "zxz", "convention": "intrinsic", "phi": 30, "theta": 40, "psi": 20,

@@ -204,7 +204,13 @@ mod tests {
     /// The unit cube [0, 1]³ as 8 vertices and 12 outward triangles.
     fn cube() -> (Vec<f64>, Vec<f64>) {
         let v: Vec<f64> = (0..8)
-            .flat_map(|i: i32| [f64::from(i & 1), f64::from((i >> 1) & 1), f64::from((i >> 2) & 1)])
+            .flat_map(|i: i32| {
+                [
+                    f64::from(i & 1),
+                    f64::from((i >> 1) & 1),
+                    f64::from((i >> 2) & 1),
+                ]
+            })
             .collect();
         let f = [
             0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4,
@@ -222,10 +228,7 @@ mod tests {
         let b = RigidBody::from_mesh(&v, &f, 3.0).unwrap();
         let c = RigidBody::cuboid(3.0, &[1.0, 1.0, 1.0]).unwrap();
         assert!((b.mass() - 3.0).abs() < 1e-15);
-        assert!(b
-            .center_of_mass()
-            .iter()
-            .all(|x| (x - 0.5).abs() < 1e-15));
+        assert!(b.center_of_mass().iter().all(|x| (x - 0.5).abs() < 1e-15));
         for (x, y) in b.inertia().iter().zip(c.inertia()) {
             assert!((x - y).abs() < 1e-15, "{x} vs {y}");
         }
@@ -238,16 +241,25 @@ mod tests {
         // Shapes: a coordinate or an index too many.
         let e = RigidBody::from_mesh(&v[..23], &f, 1.0).unwrap_err();
         assert_eq!(e.name, "InvalidMeshError");
-        assert!(e.message.starts_with("vertices: must have shape (N, 3)"), "{}", e.message);
+        assert!(
+            e.message.starts_with("vertices: must have shape (N, 3)"),
+            "{}",
+            e.message
+        );
         let e = RigidBody::from_mesh(&v, &f[..35], 1.0).unwrap_err();
-        assert!(e.message.starts_with("faces: must have shape (M, 3)"), "{}", e.message);
+        assert!(
+            e.message.starts_with("faces: must have shape (M, 3)"),
+            "{}",
+            e.message
+        );
         // Index range: too large and negative, reported by the core with the index.
         let mut big = f.clone();
         big[7] = 8.0;
         let e = RigidBody::from_mesh(&v, &big, 1.0).unwrap_err();
         assert_eq!(e.name, "InvalidMeshError");
         assert!(
-            e.message.starts_with("faces: index 8 at face 2 (corner 1) is out of range"),
+            e.message
+                .starts_with("faces: index 8 at face 2 (corner 1) is out of range"),
             "{}",
             e.message
         );
@@ -262,7 +274,8 @@ mod tests {
             let e = RigidBody::from_mesh(&v, &g, 1.0).unwrap_err();
             assert_eq!(e.name, "InvalidMeshError");
             assert!(
-                e.message.starts_with("faces: must hold integer vertex indices")
+                e.message
+                    .starts_with("faces: must hold integer vertex indices")
                     && e.message.contains("at face 1 (corner 1)"),
                 "{}",
                 e.message
@@ -299,16 +312,24 @@ mod tests {
             assert!((x - y).abs() < 1e-14, "{x} vs {y}");
         }
         assert!(m.center_of_mass().iter().map(|x| x * x).sum::<f64>() > 13.99);
-        let e = b.rotated(&[2.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]).unwrap_err();
+        let e = b
+            .rotated(&[2.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0])
+            .unwrap_err();
         assert_eq!(e.name, "InvalidRotationError");
-        assert!(b.translated(&[1.0, 2.0]).unwrap_err().message.starts_with("offset"));
+        assert!(b
+            .translated(&[1.0, 2.0])
+            .unwrap_err()
+            .message
+            .starts_with("offset"));
     }
 
     #[test]
     fn triangle_margins_of_a_disk_and_a_cuboid() {
         let d = RigidBody::thin_disk(2.0, 0.5).unwrap().triangle_margins();
         assert!(d[2].abs() < 1e-16 && d[0] > 0.0, "{d:?}");
-        let c = RigidBody::cuboid(12.0, &[1.0, 2.0, 3.0]).unwrap().triangle_margins();
+        let c = RigidBody::cuboid(12.0, &[1.0, 2.0, 3.0])
+            .unwrap()
+            .triangle_margins();
         assert_eq!(c, vec![18.0, 8.0, 2.0]);
     }
 

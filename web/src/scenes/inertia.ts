@@ -96,19 +96,18 @@ export const inertiaScene: SceneDef = {
     { kind: "number", key: "density", label: "density ρ (STL)", unit: "kg/m³", min: 10, max: 20000, step: 10, value: 1000 },
     { kind: "choice", key: "unit", label: "STL unit", options: Object.keys(UNITS), value: "m" },
     { kind: "choice", key: "motion", label: "Displacement", options: MOTIONS, value: MOTIONS[0] },
-    { kind: "number", key: "phi", label: "φ", unit: "°", min: -180, max: 180, step: 1, value: 40 },
-    { kind: "number", key: "theta", label: "θ", unit: "°", min: -180, max: 180, step: 1, value: 65 },
-    { kind: "number", key: "psi", label: "ψ", unit: "°", min: -180, max: 180, step: 1, value: 20 },
-    { kind: "number", key: "tx", label: "t_x (Chasles)", unit: "m", min: -3, max: 3, step: 0.05, value: 1.5 },
-    { kind: "number", key: "ty", label: "t_y (Chasles)", unit: "m", min: -3, max: 3, step: 0.05, value: 0.5 },
-    { kind: "number", key: "tz", label: "t_z (Chasles)", unit: "m", min: -3, max: 3, step: 0.05, value: 1 },
+    { kind: "number", key: "phi", label: "φ", unit: "°", min: -180, max: 180, step: 1, value: 60 },
+    { kind: "number", key: "theta", label: "θ", unit: "°", min: -180, max: 180, step: 1, value: 30 },
+    { kind: "number", key: "psi", label: "ψ", unit: "°", min: -180, max: 180, step: 1, value: 30 },
+    { kind: "number", key: "tx", label: "t_x (Chasles)", unit: "m", min: -3, max: 3, step: 0.05, value: 2 },
+    { kind: "number", key: "ty", label: "t_y (Chasles)", unit: "m", min: -3, max: 3, step: 0.05, value: 0 },
+    { kind: "number", key: "tz", label: "t_z (Chasles)", unit: "m", min: -3, max: 3, step: 0.05, value: 0.8 },
   ],
   create(ctx) {
     const root = new THREE.Group();
     ctx.scene.add(root);
     root.add(fixedAxes(3.2, 0.3));
-    ctx.camera.position.set(6.5, 5.5, 4.2);
-    ctx.target.set(0.6, 0.3, 0.5);
+    ctx.camera.position.set(2.2, -5.2, 2.6);
 
     // Materials: the moving body, the two ghosts (first and second pose).
     const solidMat = new THREE.MeshStandardMaterial({ color: 0xc9d1d9, roughness: 0.55, side: THREE.DoubleSide, flatShading: false });
@@ -133,8 +132,8 @@ export const inertiaScene: SceneDef = {
     principal.matrixAutoUpdate = false;
     moving.pose.add(principal);
     const ellipsoid = new THREE.Mesh(
-      new THREE.SphereGeometry(1, 36, 18),
-      new THREE.MeshBasicMaterial({ color: 0x7fb4ff, wireframe: true, transparent: true, opacity: 0.35 }),
+      new THREE.SphereGeometry(1, 24, 12),
+      new THREE.MeshBasicMaterial({ color: 0x7fb4ff, wireframe: true, transparent: true, opacity: 0.3, depthWrite: false }),
     );
     ellipsoid.matrixAutoUpdate = false;
     principal.add(ellipsoid);
@@ -146,7 +145,9 @@ export const inertiaScene: SceneDef = {
     });
 
     // The screw axis (a long line with an arrow for its direction) and the CM's path.
-    const axisLine = new THREE.Line(new THREE.BufferGeometry(), new THREE.LineDashedMaterial({ color: 0xffe066, dashSize: 0.15, gapSize: 0.08 }));
+    // Lines drawn over the solids (depth test off) so that they read through the bodies.
+    const axisLine = new THREE.Line(new THREE.BufferGeometry(), new THREE.LineDashedMaterial({ color: 0xffe066, dashSize: 0.15, gapSize: 0.08, depthTest: false, transparent: true }));
+    axisLine.renderOrder = 2;
     root.add(axisLine);
     const axisArrow = new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1), new THREE.Vector3(), 1, 0xffe066, 0.2, 0.1);
     root.add(axisArrow);
@@ -154,8 +155,13 @@ export const inertiaScene: SceneDef = {
     const helixPos = new Float32Array(3 * HELIX);
     const helixGeom = new THREE.BufferGeometry();
     helixGeom.setAttribute("position", new THREE.BufferAttribute(helixPos, 3));
-    const helix = new THREE.Line(helixGeom, new THREE.LineBasicMaterial({ color: 0xf08c3c }));
+    const helix = new THREE.Line(helixGeom, new THREE.LineBasicMaterial({ color: 0xffa65c, depthTest: false, transparent: true }));
     helix.frustumCulled = false;
+    helix.renderOrder = 2;
+    // The CM of the moving body (a dot on the helix).
+    const cmDot = new THREE.Mesh(new THREE.SphereGeometry(0.045, 16, 8), new THREE.MeshBasicMaterial({ color: 0xffa65c, depthTest: false, transparent: true }));
+    cmDot.renderOrder = 3;
+    moving.pose.add(cmDot);
     root.add(helix);
 
     // Panel: the meaning of a, b, c; the STL file input; a legend.
@@ -285,15 +291,15 @@ export const inertiaScene: SceneDef = {
         geom.computeBoundingSphere();
         const size = Math.max(0.3, geom.boundingSphere!.radius);
 
-        // Principal axes and the ellipsoid of inertia: semi-axes ∝ 1/√I_k, the largest finite
-        // one drawn at 1.25× the body's size (a rotor's zero moment is drawn at 3× that).
+        // Principal axes and the ellipsoid of inertia: semi-axes ∝ 1/√I_k, the smallest drawn at
+        // 0.6× the body's size, capped at 2.2× (a rotor's zero moment, an infinite semi-axis).
         moments = Array.from(body.principalMoments);
         const axes = body.principalAxes;
         const top = Math.max(...moments);
         const semi = moments.map((I) => (I > 1e-12 * top ? 1 / Math.sqrt(I) : Infinity));
         const finite = semi.filter(Number.isFinite);
-        const k = (0.9 * size) / Math.min(...finite);
-        const r = semi.map((x) => (Number.isFinite(x) ? Math.min(x * k, 3.5 * size) : 3.5 * size));
+        const k = (0.6 * size) / Math.min(...finite);
+        const r = semi.map((x) => (Number.isFinite(x) ? Math.min(x * k, 2.2 * size) : 2.2 * size));
         principal.matrix.copy(matrix4(axes));
         ellipsoid.matrix.makeScale(r[0], r[1], r[2]);
         arrows.forEach((arr, i) => arr.setLength(Math.max(r[i], 0.5 * size) + 0.35, 0.16, 0.08));
@@ -313,6 +319,8 @@ export const inertiaScene: SceneDef = {
           helixPos.set([d[9], d[10], d[11]], 3 * i);
         }
         helixGeom.getAttribute("position").needsUpdate = true;
+        // Look at the middle of the displacement.
+        ctx.target.set(T[0] / 2, T[1] / 2, T[2] / 2);
         start.pose.matrix.identity();
         target.pose.matrix.copy(poseMatrix(R, T));
         for (const h of [start, target]) h.pose.matrixWorldNeedsUpdate = true;
@@ -365,12 +373,12 @@ export const inertiaScene: SceneDef = {
         const scale = Math.max(...moments);
         const drift = Math.max(...movedMoments.map((x, i) => Math.abs(x - moments[i]))) / scale;
         out = [
+          ...fixed,
           { key: "s", label: "screw motion: fraction s", value: s, text: fmt(s, 4) },
           { key: "pose", label: "pose at s: R(s) rows, t(s)", value: Array.from(d), text: rows(Rs, 3) + " " + fmtVec(ts, 4) },
           { key: "movedCom", label: "CM at s (m)", value: movedCom, text: fmtVec(movedCom) },
           { key: "movedInertia", label: "R(s) I R(s)ᵀ (kg·m², rows)", value: movedInertia, text: rows(movedInertia) },
           { key: "momentDrift", label: "principal moments of R(s) I R(s)ᵀ: relative drift", value: drift, text: fmt(drift, 3), warn: drift > 1e-12 },
-          ...fixed,
         ];
       },
       readouts() {

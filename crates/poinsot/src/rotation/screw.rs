@@ -54,7 +54,10 @@ impl Screw {
     pub fn displacement_at(&self, s: f64) -> Result<(Mat3, Vec3)> {
         check_finite("s", &[s])?;
         let r = rodrigues(&self.axis, s * self.angle);
-        Ok((r, self.point - r * self.point + (s * self.slide) * self.axis))
+        Ok((
+            r,
+            self.point - r * self.point + (s * self.slide) * self.axis,
+        ))
     }
 
     /// Applies the screw motion to point `x`: `point + R (x − point) + slide · axis`, i.e.
