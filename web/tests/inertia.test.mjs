@@ -191,7 +191,7 @@ test("inertia: Chasles — the screw recomposes the displacement to round-off; t
 });
 
 test("inertia: Euler — a rotation about the CM has its screw axis through the CM and no slide", async () => {
-  const { page, errors } = await open(`?scene=inertia&motion=${encodeURIComponent("Euler: rotation about the CM")}&phi=-120&theta=50&psi=75&paused=1&t=2.5`);
+  const { page, errors } = await open(`?scene=inertia&motion=${encodeURIComponent("Euler (R about CM)")}&phi=-120&theta=50&psi=75&paused=1&t=2.5`);
   const r = await readouts(page);
   assert.deepEqual(r.translation, [0, 0, 0]);
   close(r.screwPoint, [0, 0, 0], 0, "point");

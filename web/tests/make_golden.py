@@ -88,7 +88,7 @@ def drop_case(params: dict[str, Any], t: float) -> dict[str, Any]:
     return {"scene": "drop", "params": params, "t": t, "readouts": readouts}
 
 
-INERTIA_MOTIONS = ("Chasles: rotation + translation", "Euler: rotation about the CM")
+INERTIA_MOTIONS = ("Chasles (R, t)", "Euler (R about CM)")
 
 
 def inertia_fraction(t: float) -> float:

@@ -13,7 +13,7 @@ export const SHAPES = [
   "cuboid", "solidSphere", "sphericalShell", "solidCylinder", "solidCone",
   "ellipsoid", "thinRod", "thinDisk", "thinRing", "STL file",
 ];
-export const MOTIONS = ["Chasles: rotation + translation", "Euler: rotation about the CM"];
+export const MOTIONS = ["Chasles (R, t)", "Euler (R about CM)"];
 const UNITS: Record<string, number> = { m: 1, cm: 0.01, mm: 0.001 };
 
 /** What the sliders a, b, c mean for each shape (the core constructor's arguments). */
@@ -83,10 +83,11 @@ export const inertiaScene: SceneDef = {
   id: "inertia",
   title: "Inertia",
   blurb:
-    "A solid, its inertia tensor about the centre of mass (2.58–2.62), principal moments and axes (2.65–2.66: the arrows, gold I₁ ≤ violet I₂ ≤ teal I₃) " +
-    "and its ellipsoid of inertia x·I·x = 1 (wire: the ω of equal kinetic energy, 2.64; semi-axes ∝ 1/√I_k, scaled to the body). The body starts with its centre of mass at the origin (grey ghost) " +
-    "and is displaced by x ↦ R x + t to the orange ghost, R = R_z(φ) R_x(θ) R_z(ψ). Euler: a rotation about the CM turns about one axis through it. " +
-    "Chasles: any displacement is a screw — a turn about one line (yellow) and a slide along it; the body follows that screw motion (its CM traces the helix).",
+    "A solid's inertia tensor about its centre of mass (2.58–2.62), principal moments and axes (2.65–2.66; arrows gold I₁ ≤ violet I₂ ≤ teal I₃), " +
+    "kind of top, triangle margins I₂+I₃−I₁, I₃+I₁−I₂, I₁+I₂−I₃ (zero for a lamina) and ellipsoid of inertia x·I·x = 1 (blue wire, semi-axes ∝ 1/√I_k, scaled to the body). " +
+    "The body (CM at the origin, grey ghost) is displaced by x ↦ R x + t, R = R_z(φ) R_x(θ) R_z(ψ), to the orange ghost. " +
+    "Euler: a rotation about the CM is a turn about one axis through it. Chasles: any displacement is a screw — a turn about one line (yellow) and a slide along it; " +
+    "the body moves along that screw, its CM on the helix.",
   params: [
     { kind: "number", key: "mass", label: "mass m", unit: "kg", min: 0.1, max: 10, step: 0.1, value: 2 },
     { kind: "choice", key: "shape", label: "Shape", options: SHAPES, value: "cuboid" },
@@ -335,22 +336,22 @@ export const inertiaScene: SceneDef = {
         for (let i = 0; i < 3; i++) residual = Math.max(residual, Math.abs(whole[9 + i] - T[i]));
         fixed = [
           { key: "mass", label: "mass (kg)", value: body.mass, text: fmt(body.mass, 8) },
-          { key: "com", label: "centre of mass, body axes (m)", value: com, text: fmtVec(com) },
-          { key: "inertia", label: "I about the CM (kg·m², rows)", value: inertia, text: rows(inertia) },
-          { key: "principalMoments", label: "principal moments I₁ ≤ I₂ ≤ I₃ (kg·m²)", value: moments, text: fmtVec(moments, 6) },
-          { key: "principalAxes", label: "principal axes (columns; rows shown)", value: Array.from(axes), text: rows(axes) },
+          { key: "com", label: "CM, body axes (m)", value: com, text: fmtVec(com) },
+          { key: "inertia", label: "I about CM (kg·m²)", value: inertia, text: rows(inertia) },
+          { key: "principalMoments", label: "I₁ ≤ I₂ ≤ I₃ (kg·m²)", value: moments, text: fmtVec(moments, 6) },
+          { key: "principalAxes", label: "principal axes (columns)", value: Array.from(axes), text: rows(axes) },
           { key: "kind", label: "kind", value: kind, text: kind },
-          { key: "triangleMargins", label: "I₂+I₃−I₁, I₃+I₁−I₂, I₁+I₂−I₃ (kg·m²)", value: margins, text: fmtVec(margins, 5) + (margins[2] <= 1e-12 * top ? " — a lamina" : ""), warn: margins[2] <= 1e-12 * top },
+          { key: "triangleMargins", label: "triangle margins (kg·m²)", value: margins, text: fmtVec(margins, 5) + (margins[2] <= 1e-12 * top ? " — a lamina" : ""), warn: margins[2] <= 1e-12 * top },
           { key: "R", label: "R (rows)", value: Array.from(R), text: rows(R) },
           { key: "translation", label: "t (m)", value: T, text: fmtVec(T) },
-          { key: "eulerAxis", label: "Euler: rotation axis of R", value: [ax, ay, az], text: fmtVec([ax, ay, az]) },
-          { key: "eulerAngle", label: "Euler: rotation angle (rad)", value: angle, text: `${fmt(angle, 8)} (${fmt(angle / DEG, 6)}°)` },
-          { key: "screwAxis", label: "Chasles: screw axis", value: Array.from(screw.axis), text: fmtVec(screw.axis) },
-          { key: "screwPoint", label: "screw axis point nearest 0 (m)", value: Array.from(screw.point), text: fmtVec(screw.point) },
+          { key: "eulerAxis", label: "Euler axis of R", value: [ax, ay, az], text: fmtVec([ax, ay, az]) },
+          { key: "eulerAngle", label: "Euler angle (rad)", value: angle, text: `${fmt(angle, 8)} (${fmt(angle / DEG, 6)}°)` },
+          { key: "screwAxis", label: "screw axis", value: Array.from(screw.axis), text: fmtVec(screw.axis) },
+          { key: "screwPoint", label: "screw point (m)", value: Array.from(screw.point), text: fmtVec(screw.point) },
           { key: "screwAngle", label: "screw angle (rad)", value: screw.angle, text: `${fmt(screw.angle, 8)} (${fmt(screw.angle / DEG, 6)}°)` },
-          { key: "screwSlide", label: "screw slide (m)", value: screw.slide, text: fmt(screw.slide, 8) },
-          { key: "screwPitch", label: "screw pitch (m/rad)", value: screw.pitch, text: fmt(screw.pitch, 8) },
-          { key: "residual", label: "check: |screw at s=1 − (R, t)|∞", value: residual, text: fmt(residual, 3), warn: residual > 1e-12 },
+          { key: "screwSlide", label: "slide (m)", value: screw.slide, text: fmt(screw.slide, 8) },
+          { key: "screwPitch", label: "pitch (m/rad)", value: screw.pitch, text: fmt(screw.pitch, 8) },
+          { key: "residual", label: "check |D(1) − (R, t)|∞", value: residual, text: fmt(residual, 3), warn: residual > 1e-12 },
         ];
       },
       step(t) {
@@ -374,11 +375,11 @@ export const inertiaScene: SceneDef = {
         const drift = Math.max(...movedMoments.map((x, i) => Math.abs(x - moments[i]))) / scale;
         out = [
           ...fixed,
-          { key: "s", label: "screw motion: fraction s", value: s, text: fmt(s, 4) },
-          { key: "pose", label: "pose at s: R(s) rows, t(s)", value: Array.from(d), text: rows(Rs, 3) + " " + fmtVec(ts, 4) },
+          { key: "s", label: "s (screw fraction)", value: s, text: fmt(s, 4) },
+          { key: "pose", label: "pose R(s) rows, t(s)", value: Array.from(d), text: rows(Rs, 3) + " " + fmtVec(ts, 4) },
           { key: "movedCom", label: "CM at s (m)", value: movedCom, text: fmtVec(movedCom) },
-          { key: "movedInertia", label: "R(s) I R(s)ᵀ (kg·m², rows)", value: movedInertia, text: rows(movedInertia) },
-          { key: "momentDrift", label: "principal moments of R(s) I R(s)ᵀ: relative drift", value: drift, text: fmt(drift, 3), warn: drift > 1e-12 },
+          { key: "movedInertia", label: "R(s) I R(s)ᵀ (kg·m²)", value: movedInertia, text: rows(movedInertia) },
+          { key: "momentDrift", label: "moments of R(s) I R(s)ᵀ: drift", value: drift, text: fmt(drift, 3), warn: drift > 1e-12 },
         ];
       },
       readouts() {
