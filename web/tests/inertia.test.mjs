@@ -29,14 +29,14 @@ const ascending = (v) => [...v].sort((p, q) => p - q);
 const M = 2.5, A = 0.9, B = 1.4, C = 0.6;
 const SHAPES = {
   cuboid: { kind: "asymmetric top", I: [(M / 12) * (B * B + C * C), (M / 12) * (A * A + C * C), (M / 12) * (A * A + B * B)] },
-  solidSphere: { kind: "spherical top", I: [0.4 * M * A * A, 0.4 * M * A * A, 0.4 * M * A * A] },
-  sphericalShell: { kind: "spherical top", I: [(2 / 3) * M * A * A, (2 / 3) * M * A * A, (2 / 3) * M * A * A] },
-  solidCylinder: { kind: "symmetric top", I: [(M * (3 * A * A + B * B)) / 12, (M * (3 * A * A + B * B)) / 12, (M * A * A) / 2] },
-  solidCone: { kind: "symmetric top", I: [(3 / 20) * M * A * A + (3 / 80) * M * B * B, (3 / 20) * M * A * A + (3 / 80) * M * B * B, 0.3 * M * A * A] },
+  sphere: { kind: "spherical top", I: [0.4 * M * A * A, 0.4 * M * A * A, 0.4 * M * A * A] },
+  shell: { kind: "spherical top", I: [(2 / 3) * M * A * A, (2 / 3) * M * A * A, (2 / 3) * M * A * A] },
+  cylinder: { kind: "symmetric top", I: [(M * (3 * A * A + B * B)) / 12, (M * (3 * A * A + B * B)) / 12, (M * A * A) / 2] },
+  cone: { kind: "symmetric top", I: [(3 / 20) * M * A * A + (3 / 80) * M * B * B, (3 / 20) * M * A * A + (3 / 80) * M * B * B, 0.3 * M * A * A] },
   ellipsoid: { kind: "asymmetric top", I: [(M / 5) * (B * B + C * C), (M / 5) * (A * A + C * C), (M / 5) * (A * A + B * B)] },
-  thinRod: { kind: "rotor", I: [(M * A * A) / 12, (M * A * A) / 12, 0] },
-  thinDisk: { kind: "symmetric top", I: [(M * A * A) / 4, (M * A * A) / 4, (M * A * A) / 2] },
-  thinRing: { kind: "symmetric top", I: [(M * A * A) / 2, (M * A * A) / 2, M * A * A] },
+  rod: { kind: "rotor", I: [(M * A * A) / 12, (M * A * A) / 12, 0] },
+  disk: { kind: "symmetric top", I: [(M * A * A) / 4, (M * A * A) / 4, (M * A * A) / 2] },
+  ring: { kind: "symmetric top", I: [(M * A * A) / 2, (M * A * A) / 2, M * A * A] },
 };
 
 test("inertia: every shape loads and shows its textbook moments and kind", async () => {
@@ -168,7 +168,7 @@ test("inertia: STL chosen without a file says so (no numbers)", async () => {
 test("inertia: Chasles — the screw recomposes the displacement to round-off; the motion keeps the moments", async () => {
   const cases = ["phi=40&theta=65&psi=20&tx=1.5&ty=0.5&tz=1", "phi=-170&theta=120&psi=95&tx=-2.5&ty=3&tz=-0.4", "phi=3&theta=1&psi=-2&tx=0.1&ty=-2&tz=0.3"];
   for (const q of cases) {
-    const { page, errors } = await open(`?scene=inertia&shape=solidCone&${q}&paused=1`);
+    const { page, errors } = await open(`?scene=inertia&shape=cone&${q}&paused=1`);
     const r0 = await readouts(page);
     assert.ok(r0.residual <= ROUND_OFF, `${q}: residual ${r0.residual}`);
     // t = 0: the first pose; the middle of the motion; t = 4.5 s: the second pose (R, t).
@@ -191,7 +191,7 @@ test("inertia: Chasles — the screw recomposes the displacement to round-off; t
 });
 
 test("inertia: Euler — a rotation about the CM has its screw axis through the CM and no slide", async () => {
-  const { page, errors } = await open(`?scene=inertia&motion=${encodeURIComponent("Euler (R about CM)")}&phi=-120&theta=50&psi=75&paused=1&t=2.5`);
+  const { page, errors } = await open(`?scene=inertia&motion=${"Euler"}&phi=-120&theta=50&psi=75&paused=1&t=2.5`);
   const r = await readouts(page);
   assert.deepEqual(r.translation, [0, 0, 0]);
   close(r.screwPoint, [0, 0, 0], 0, "point");

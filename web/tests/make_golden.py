@@ -88,7 +88,7 @@ def drop_case(params: dict[str, Any], t: float) -> dict[str, Any]:
     return {"scene": "drop", "params": params, "t": t, "readouts": readouts}
 
 
-INERTIA_MOTIONS = ("Chasles (R, t)", "Euler (R about CM)")
+INERTIA_MOTIONS = ("Chasles", "Euler")
 
 
 def inertia_fraction(t: float) -> float:
@@ -102,14 +102,14 @@ def inertia_body(p: dict[str, Any]) -> poinsot.RigidBody:
     rb = poinsot.RigidBody
     return {
         "cuboid": lambda: rb.cuboid(m, [a, b, c]),
-        "solidSphere": lambda: rb.solid_sphere(m, a),
-        "sphericalShell": lambda: rb.spherical_shell(m, a),
-        "solidCylinder": lambda: rb.solid_cylinder(m, a, b),
-        "solidCone": lambda: rb.solid_cone(m, a, b),
+        "sphere": lambda: rb.solid_sphere(m, a),
+        "shell": lambda: rb.spherical_shell(m, a),
+        "cylinder": lambda: rb.solid_cylinder(m, a, b),
+        "cone": lambda: rb.solid_cone(m, a, b),
         "ellipsoid": lambda: rb.ellipsoid(m, [a, b, c]),
-        "thinRod": lambda: rb.thin_rod(m, a),
-        "thinDisk": lambda: rb.thin_disk(m, a),
-        "thinRing": lambda: rb.thin_ring(m, a),
+        "rod": lambda: rb.thin_rod(m, a),
+        "disk": lambda: rb.thin_disk(m, a),
+        "ring": lambda: rb.thin_ring(m, a),
     }[p["shape"]]()
 
 
@@ -170,10 +170,10 @@ def cases() -> list[dict[str, Any]]:
         drop_case({"height": 100, "latitude": 45, "rate": "sidereal", "exaggeration": "1000"}, 0.0),
         drop_case({"height": 455, "latitude": -33, "rate": "solar day", "exaggeration": "10"}, 0.0),
         inertia_case(INERTIA, 1.7),  # asymmetric top, mid-screw
-        inertia_case({**INERTIA, "shape": "solidCone", "a": 0.5, "b": 1.5, "mass": 3.3}, 3.25),  # CM off the origin
+        inertia_case({**INERTIA, "shape": "cone", "a": 0.5, "b": 1.5, "mass": 3.3}, 3.25),  # CM off the origin
         # Euler: a rotation about the CM of a lamina (I1 + I2 = I3), screw through the CM, pitch 0.
-        inertia_case({**INERTIA, "shape": "thinDisk", "motion": INERTIA_MOTIONS[1], "phi": -120, "psi": 75}, 5.5),
-        inertia_case({**INERTIA, "shape": "thinRod", "a": 1.7, "theta": 180, "phi": 0, "psi": 0}, 2.5),  # rotor, half turn
+        inertia_case({**INERTIA, "shape": "disk", "motion": INERTIA_MOTIONS[1], "phi": -120, "psi": 75}, 5.5),
+        inertia_case({**INERTIA, "shape": "rod", "a": 1.7, "theta": 180, "phi": 0, "psi": 0}, 2.5),  # rotor, half turn
     ]
 
 

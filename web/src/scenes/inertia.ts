@@ -9,25 +9,26 @@ import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../s
 import { disposeTree, fixedAxes, matrix4, vec } from "../view";
 import { mergeVertices, parseStl } from "../stl";
 
-export const SHAPES = [
-  "cuboid", "solidSphere", "sphericalShell", "solidCylinder", "solidCone",
-  "ellipsoid", "thinRod", "thinDisk", "thinRing", "STL file",
-];
-export const MOTIONS = ["Chasles (R, t)", "Euler (R about CM)"];
+/** The shapes of the choice; each is the core constructor named in MEANING (RigidBody.cuboid,
+ * .solidSphere, .sphericalShell, .solidCylinder, .solidCone, .ellipsoid, .thinRod, .thinDisk,
+ * .thinRing; .fromMesh for an STL file). */
+export const SHAPES = ["cuboid", "sphere", "shell", "cylinder", "cone", "ellipsoid", "rod", "disk", "ring", "STL file"];
+/** Chasles: the general displacement (R, t); Euler: the rotation R about the CM (t = 0). */
+export const MOTIONS = ["Chasles", "Euler"];
 const UNITS: Record<string, number> = { m: 1, cm: 0.01, mm: 0.001 };
 
 /** What the sliders a, b, c mean for each shape (the core constructor's arguments). */
 const MEANING: Record<string, string> = {
-  cuboid: "a, b, c = sides along x, y, z",
-  solidSphere: "a = radius (b, c unused)",
-  sphericalShell: "a = radius (b, c unused)",
-  solidCylinder: "a = radius, b = height along z (c unused)",
-  solidCone: "a = base radius, b = height (apex at the origin, axis +z; c unused)",
-  ellipsoid: "a, b, c = semi-axes along x, y, z",
-  thinRod: "a = length along z (b, c unused)",
-  thinDisk: "a = radius, in the xy plane (b, c unused)",
-  thinRing: "a = radius, in the xy plane (b, c unused)",
-  "STL file": "a, b, c and the mass unused: density ρ and the file's unit apply",
+  cuboid: "RigidBody.cuboid: a, b, c = sides along x, y, z",
+  sphere: "RigidBody.solidSphere: a = radius (b, c unused)",
+  shell: "RigidBody.sphericalShell (thin): a = radius (b, c unused)",
+  cylinder: "RigidBody.solidCylinder: a = radius, b = height along z (c unused)",
+  cone: "RigidBody.solidCone: a = base radius, b = height (apex at the origin, axis +z; c unused)",
+  ellipsoid: "RigidBody.ellipsoid: a, b, c = semi-axes along x, y, z",
+  rod: "RigidBody.thinRod: a = length along z (b, c unused)",
+  disk: "RigidBody.thinDisk: a = radius, in the xy plane (b, c unused)",
+  ring: "RigidBody.thinRing: a = radius, in the xy plane (b, c unused)",
+  "STL file": "RigidBody.fromMesh: m, a, b, c unused; the density ρ and the file's unit apply",
 };
 
 /** The screw motion's clock (s): rest at the first pose, move at a constant rate, rest at the
@@ -44,21 +45,21 @@ const PRINCIPAL_COLORS = [0xf2b84b, 0xc77dff, 0x2ec4b6];
 /** The solid's geometry in the core's body axes (presentation of the same dimensions). */
 function solidGeometry(shape: string, a: number, b: number, c: number, mesh: { vertices: Float64Array; faces: Float64Array } | null): THREE.BufferGeometry {
   switch (shape) {
-    case "solidSphere":
-    case "sphericalShell":
+    case "sphere":
+    case "shell":
       return new THREE.SphereGeometry(a, 48, 24);
-    case "solidCylinder":
+    case "cylinder":
       return new THREE.CylinderGeometry(a, a, b, 48).rotateX(Math.PI / 2);
-    case "solidCone":
+    case "cone":
       // three's cone has its apex at +y/2; the core's at the origin, base at z = h.
       return new THREE.ConeGeometry(a, b, 48).rotateX(-Math.PI / 2).translate(0, 0, b / 2);
     case "ellipsoid":
       return new THREE.SphereGeometry(1, 48, 24).scale(a, b, c);
-    case "thinRod":
+    case "rod":
       return new THREE.CylinderGeometry(0.025, 0.025, a, 12).rotateX(Math.PI / 2);
-    case "thinDisk":
+    case "disk":
       return new THREE.CircleGeometry(a, 72);
-    case "thinRing":
+    case "ring":
       return new THREE.TorusGeometry(a, 0.025, 10, 96);
     case "STL file": {
       const g = new THREE.BufferGeometry();
@@ -230,14 +231,14 @@ export const inertiaScene: SceneDef = {
 
     const build = (shape: string, m: number, a: number, b: number, c: number): RigidBody => {
       switch (shape) {
-        case "solidSphere": return RigidBody.solidSphere(m, a);
-        case "sphericalShell": return RigidBody.sphericalShell(m, a);
-        case "solidCylinder": return RigidBody.solidCylinder(m, a, b);
-        case "solidCone": return RigidBody.solidCone(m, a, b);
+        case "sphere": return RigidBody.solidSphere(m, a);
+        case "shell": return RigidBody.sphericalShell(m, a);
+        case "cylinder": return RigidBody.solidCylinder(m, a, b);
+        case "cone": return RigidBody.solidCone(m, a, b);
         case "ellipsoid": return RigidBody.ellipsoid(m, [a, b, c]);
-        case "thinRod": return RigidBody.thinRod(m, a);
-        case "thinDisk": return RigidBody.thinDisk(m, a);
-        case "thinRing": return RigidBody.thinRing(m, a);
+        case "rod": return RigidBody.thinRod(m, a);
+        case "disk": return RigidBody.thinDisk(m, a);
+        case "ring": return RigidBody.thinRing(m, a);
         case "STL file": {
           if (stlError) throw stlError;
           if (!stl) {
