@@ -46,6 +46,9 @@ def screw_axis(
 def screw_displacement(
     axis: NDArray[np.float64], point: NDArray[np.float64], angle: float, slide: float
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]: ...
+def screw_displacement_at(
+    axis: NDArray[np.float64], point: NDArray[np.float64], angle: float, slide: float, s: float
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]: ...
 def screw_apply(
     axis: NDArray[np.float64],
     point: NDArray[np.float64],

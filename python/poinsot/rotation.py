@@ -36,7 +36,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from . import _core
-from ._validate import _is_scipy_rotation, as_float_array
+from ._validate import _is_scipy_rotation, as_float_array, as_scalar
 from .errors import GimbalLockWarning, PoinsotError
 
 FloatArray = NDArray[np.float64]
@@ -356,6 +356,21 @@ class Screw:
         """The displacement ``(R, t)`` of this screw: ``R`` (3, 3) is the rotation by ``angle``
         about ``axis`` and ``t = point - R @ point + slide * axis`` (3,), m."""
         return _core.screw_displacement(self.axis, self.point, self.angle, self.slide)
+
+    def displacement_at(self, s: float) -> tuple[FloatArray, FloatArray]:
+        """The displacement ``(R(s), t(s))`` at fraction ``s`` (dimensionless) of the screw
+        motion: the rotation by ``s * angle`` about the screw axis together with the slide
+        ``s * slide`` along it (Chasles' theorem as a continuous motion). ``R(s)`` is (3, 3),
+        ``t(s) = point - R(s) @ point + s * slide * axis`` is (3,), m. ``s = 0`` gives the
+        identity, ``s = 1`` gives :meth:`displacement`; any finite ``s`` is accepted (negative
+        runs the motion backwards).
+
+        Raises:
+            PoinsotError: ``s`` not finite.
+        """
+        return _core.screw_displacement_at(
+            self.axis, self.point, self.angle, self.slide, as_scalar(s, "s")
+        )
 
     def apply(self, x: Any) -> FloatArray:
         """Moves points ``x`` (..., 3), m, by the screw motion:

@@ -218,6 +218,73 @@ def frames_case(params: dict[str, Any], t: float) -> dict[str, Any]:
 FRAMES = {"omega": 1, "omegaDot": 0, "stiffness": 0, "r0": 0.8, "speed": 0.6, "direction": 150,
           "launch": "fixed frame"}
 
+INERTIA_MOTIONS = ("Chasles", "Euler")
+
+
+def inertia_fraction(t: float) -> float:
+    """The page's clock of the screw motion (presentation): rest 0.5 s, move 4 s, rest; period 6 s."""
+    tau = max(0.0, t) % 6.0
+    return min(1.0, max(0.0, (tau - 0.5) / 4.0))
+
+
+def inertia_body(p: dict[str, Any]) -> poinsot.RigidBody:
+    m, a, b, c = p["mass"], p["a"], p["b"], p["c"]
+    rb = poinsot.RigidBody
+    return {
+        "cuboid": lambda: rb.cuboid(m, [a, b, c]),
+        "sphere": lambda: rb.solid_sphere(m, a),
+        "shell": lambda: rb.spherical_shell(m, a),
+        "cylinder": lambda: rb.solid_cylinder(m, a, b),
+        "cone": lambda: rb.solid_cone(m, a, b),
+        "ellipsoid": lambda: rb.ellipsoid(m, [a, b, c]),
+        "rod": lambda: rb.thin_rod(m, a),
+        "disk": lambda: rb.thin_disk(m, a),
+        "ring": lambda: rb.thin_ring(m, a),
+    }[p["shape"]]()
+
+
+def inertia_case(params: dict[str, Any], t: float) -> dict[str, Any]:
+    body = inertia_body(params)
+    moments = np.asarray(body.principal_moments)
+    R = poinsot.euler_to_matrix([params["phi"] * DEG, params["theta"] * DEG, params["psi"] * DEG], "zxz")
+    tr = [0.0, 0.0, 0.0] if params["motion"] == INERTIA_MOTIONS[1] else [params["tx"], params["ty"], params["tz"]]
+    axis, angle = poinsot.rotation_axis(R)
+    screw = poinsot.screw_axis(R, tr)
+    s = inertia_fraction(t)
+    Rs, ts = screw.displacement_at(s)
+    com = np.asarray(body.center_of_mass)
+    moved = body.translated(-com).rotated(Rs).translated(ts)
+    readouts = {
+        "s": s,
+        "pose": np.concatenate([np.asarray(Rs).reshape(9), ts]).tolist(),
+        "movedCom": np.asarray(moved.center_of_mass).tolist(),
+        "movedInertia": np.asarray(moved.inertia).reshape(9).tolist(),
+        "mass": body.mass,
+        "com": com.tolist(),
+        "inertia": np.asarray(body.inertia).reshape(9).tolist(),
+        "principalMoments": moments.tolist(),
+        "principalAxes": np.asarray(body.principal_axes).reshape(9).tolist(),
+        "kind": body.kind,
+        # 2 x the second moments along the principal axes (independent of the core's method).
+        "triangleMargins": [moments[1] + moments[2] - moments[0], moments[2] + moments[0] - moments[1],
+                            moments[0] + moments[1] - moments[2]],
+        "R": np.asarray(R).reshape(9).tolist(),
+        "translation": tr,
+        "eulerAxis": np.asarray(axis).tolist(),
+        "eulerAngle": float(angle),
+        "screwAxis": np.asarray(screw.axis).tolist(),
+        "screwPoint": np.asarray(screw.point).tolist(),
+        "screwAngle": screw.angle,
+        "screwSlide": screw.slide,
+        "screwPitch": screw.pitch,
+    }
+    return {"scene": "inertia", "params": params, "t": t, "readouts": readouts}
+
+
+INERTIA = {"mass": 2, "shape": "cuboid", "a": 1.2, "b": 0.8, "c": 0.4, "density": 1000, "unit": "m",
+           "motion": INERTIA_MOTIONS[0], "phi": 60, "theta": 30, "psi": 30, "tx": 2, "ty": 0, "tz": 0.8}
+
+
 EULER = {"seq": "zxz", "convention": "intrinsic", "phi": 30, "theta": 40, "psi": 20,
          "phiDot": 20, "thetaDot": 0, "psiDot": 45}
 
@@ -244,6 +311,11 @@ def cases() -> list[dict[str, Any]]:
         frames_case({**FRAMES, "omega": -1.5, "omegaDot": 0.3, "stiffness": 2, "r0": 0.6, "speed": 0.4,
                      "direction": 90, "launch": "rotating frame"}, 6.25),
         frames_case({**FRAMES, "omega": 0, "stiffness": 1}, 1.7),  # no rotation: no fictitious terms
+        inertia_case(INERTIA, 1.7),  # asymmetric top, mid-screw
+        inertia_case({**INERTIA, "shape": "cone", "a": 0.5, "b": 1.5, "mass": 3.3}, 3.25),  # CM off the origin
+        # Euler: a rotation about the CM of a lamina (I1 + I2 = I3), screw through the CM, pitch 0.
+        inertia_case({**INERTIA, "shape": "disk", "motion": INERTIA_MOTIONS[1], "phi": -120, "psi": 75}, 5.5),
+        inertia_case({**INERTIA, "shape": "rod", "a": 1.7, "theta": 180, "phi": 0, "psi": 0}, 2.5),  # rotor, half turn
     ]
 
 

@@ -272,6 +272,28 @@ fn screw_displacement<'py>(
     Ok((mat3_out(py, rows), vec3_out(py, t.into())))
 }
 
+/// The displacement `(R(s) (3, 3), t(s) (3,))` at fraction `s` of a screw motion.
+#[pyfunction]
+#[allow(clippy::type_complexity)]
+fn screw_displacement_at<'py>(
+    py: Python<'py>,
+    axis: numpy::PyReadonlyArray1<'py, f64>,
+    point: numpy::PyReadonlyArray1<'py, f64>,
+    angle: f64,
+    slide: f64,
+    s: f64,
+) -> PyResult<(Bound<'py, numpy::PyArray2<f64>>, Bound<'py, PyArray1<f64>>)> {
+    let (r, t) = screw_from_parts(&axis, &point, angle, slide)?
+        .displacement_at(s)
+        .py()?;
+    let rows = [
+        [r[(0, 0)], r[(0, 1)], r[(0, 2)]],
+        [r[(1, 0)], r[(1, 1)], r[(1, 2)]],
+        [r[(2, 0)], r[(2, 1)], r[(2, 2)]],
+    ];
+    Ok((mat3_out(py, rows), vec3_out(py, t.into())))
+}
+
 /// Applies a screw motion to points `x` `(N, 3)` → `(N, 3)`.
 #[pyfunction]
 fn screw_apply<'py>(
@@ -307,6 +329,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(euler_rates, m)?)?;
     m.add_function(wrap_pyfunction!(screw_axis, m)?)?;
     m.add_function(wrap_pyfunction!(screw_displacement, m)?)?;
+    m.add_function(wrap_pyfunction!(screw_displacement_at, m)?)?;
     m.add_function(wrap_pyfunction!(screw_apply, m)?)?;
     m.add("EULER_LOCK_TOL", rot::EULER_LOCK_TOL)?;
     m.add("RATES_LOCK_TOL", rot::RATES_LOCK_TOL)?;

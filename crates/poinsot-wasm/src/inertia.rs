@@ -1,8 +1,8 @@
 //! Bindings of `poinsot::inertia`: the standard solids (axes of symmetry along z, centred on the
 //! centre of mass except the cone, apex at the origin), inertia tensor, principal moments and
-//! axes, kind of top, L and T (the unit's 2.43–2.66).
+//! axes, kind of top, L and T (the unit's 2.43–2.66); closed triangle meshes (`fromMesh`).
 
-use crate::convert::{array3, finite, finite1, mat3, mat_out, vec3, vec_out, Out};
+use crate::convert::{array3, finite, finite1, mat3, mat_out, vec3, vec_out, Failure, Out};
 use poinsot::inertia::{self as inr, MassProperties, DEFAULT_KIND_RTOL};
 use wasm_bindgen::prelude::wasm_bindgen;
 
@@ -73,6 +73,22 @@ impl RigidBody {
         wrap(inr::thin_ring(mass, radius))
     }
 
+    /// The solid bounded by a closed triangle mesh of uniform `density` (kg/m³), by the core's
+    /// exact polyhedral integrals (2.61–2.62; `poinsot.RigidBody.from_mesh` in Python).
+    ///
+    /// `vertices`: `3·n` coordinates (m), row-major `(n, 3)`; `faces`: `3·m` vertex indices,
+    /// row-major `(m, 3)`, each face counter-clockwise seen from outside. Indices arrive as
+    /// JavaScript numbers: each must be an integer (a fraction or a non-finite number is refused
+    /// here; a negative or too large one by the core, which names it). The core refuses, with an
+    /// `InvalidMeshError` naming `faces` or `vertices`, a mesh that does not bound a solid (open,
+    /// non-manifold, inconsistently oriented, inside out, zero volume). Vertices are used as
+    /// given: merge the per-face copies of a triangle soup (an STL file) first.
+    #[wasm_bindgen(js_name = fromMesh)]
+    pub fn from_mesh(vertices: &[f64], faces: &[f64], density: f64) -> Out<RigidBody> {
+        let indices = face_indices(faces)?;
+        wrap(inr::mesh_mass_properties(vertices, &indices, density))
+    }
+
     /// Mass (kg).
     #[wasm_bindgen(getter)]
     pub fn mass(&self) -> f64 {
@@ -98,9 +114,29 @@ impl RigidBody {
     pub fn principal_axes(&self) -> Vec<f64> {
         mat_out(&self.inner.principal(DEFAULT_KIND_RTOL).axes)
     }
+    /// The margins of the triangle inequalities (kg·m²), `[I2 + I3 − I1, I3 + I1 − I2,
+    /// I1 + I2 − I3]` for the ascending principal moments: each is twice the second moment of
+    /// the mass along that principal axis, zero for a lamina ⟂ it.
+    #[wasm_bindgen(getter, js_name = triangleMargins)]
+    pub fn triangle_margins(&self) -> Vec<f64> {
+        self.inner
+            .principal(DEFAULT_KIND_RTOL)
+            .triangle_margins()
+            .to_vec()
+    }
     /// The kind of top: "spherical top", "symmetric top", "asymmetric top" or "rotor".
     pub fn kind(&self) -> Out<String> {
         Ok(self.inner.kind(DEFAULT_KIND_RTOL)?.as_str().to_string())
+    }
+    /// The same body moved by `offset` (m, 3 numbers): the centre of mass moves, the inertia
+    /// about it does not change (`RigidBody.translated` in Python).
+    pub fn translated(&self, offset: &[f64]) -> Out<RigidBody> {
+        wrap(self.inner.translated(&vec3("offset", offset)?))
+    }
+    /// The same body rotated actively by `rotation` (9 numbers row-major, a proper rotation)
+    /// about the origin of its axes: `com ↦ R com`, `I ↦ R I Rᵀ` (`RigidBody.rotated`).
+    pub fn rotated(&self, rotation: &[f64]) -> Out<RigidBody> {
+        wrap(self.inner.rotated(&mat3("rotation", rotation)?))
     }
     /// The inertia tensor about `point` (m), 9 numbers row-major (parallel-axis theorem).
     #[wasm_bindgen(js_name = inertiaAbout)]
@@ -136,9 +172,166 @@ impl RigidBody {
     }
 }
 
+/// Face indices from JavaScript numbers: each must be an integer that fits an `i64` (range
+/// against the vertex count is the core's check, which reports the offending index).
+fn face_indices(faces: &[f64]) -> Out<Vec<i64>> {
+    // 2⁶³ as f64: integers at or beyond it do not fit an i64.
+    const LIMIT: f64 = 9_223_372_036_854_775_808.0;
+    faces
+        .iter()
+        .enumerate()
+        .map(|(k, &x)| {
+            if x.is_finite() && x.fract() == 0.0 && x.abs() < LIMIT {
+                Ok(x as i64)
+            } else {
+                Err(Failure::from(poinsot::Error::mesh(
+                    "faces",
+                    format!(
+                        "must hold integer vertex indices, got {x} at face {} (corner {})",
+                        k / 3,
+                        k % 3
+                    ),
+                )))
+            }
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The unit cube [0, 1]³ as 8 vertices and 12 outward triangles.
+    fn cube() -> (Vec<f64>, Vec<f64>) {
+        let v: Vec<f64> = (0..8)
+            .flat_map(|i: i32| {
+                [
+                    f64::from(i & 1),
+                    f64::from((i >> 1) & 1),
+                    f64::from((i >> 2) & 1),
+                ]
+            })
+            .collect();
+        let f = [
+            0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4,
+            6, 1, 3, 5, 3, 7, 5,
+        ]
+        .iter()
+        .map(|&i: &i32| f64::from(i))
+        .collect();
+        (v, f)
+    }
+
+    #[test]
+    fn mesh_cube_is_the_cuboid() {
+        let (v, f) = cube();
+        let b = RigidBody::from_mesh(&v, &f, 3.0).unwrap();
+        let c = RigidBody::cuboid(3.0, &[1.0, 1.0, 1.0]).unwrap();
+        assert!((b.mass() - 3.0).abs() < 1e-15);
+        assert!(b.center_of_mass().iter().all(|x| (x - 0.5).abs() < 1e-15));
+        for (x, y) in b.inertia().iter().zip(c.inertia()) {
+            assert!((x - y).abs() < 1e-15, "{x} vs {y}");
+        }
+        assert_eq!(b.kind().unwrap(), "spherical top");
+    }
+
+    #[test]
+    fn mesh_shape_and_index_errors_name_the_argument() {
+        let (v, f) = cube();
+        // Shapes: a coordinate or an index too many.
+        let e = RigidBody::from_mesh(&v[..23], &f, 1.0).unwrap_err();
+        assert_eq!(e.name, "InvalidMeshError");
+        assert!(
+            e.message.starts_with("vertices: must have shape (N, 3)"),
+            "{}",
+            e.message
+        );
+        let e = RigidBody::from_mesh(&v, &f[..35], 1.0).unwrap_err();
+        assert!(
+            e.message.starts_with("faces: must have shape (M, 3)"),
+            "{}",
+            e.message
+        );
+        // Index range: too large and negative, reported by the core with the index.
+        let mut big = f.clone();
+        big[7] = 8.0;
+        let e = RigidBody::from_mesh(&v, &big, 1.0).unwrap_err();
+        assert_eq!(e.name, "InvalidMeshError");
+        assert!(
+            e.message
+                .starts_with("faces: index 8 at face 2 (corner 1) is out of range"),
+            "{}",
+            e.message
+        );
+        let mut neg = f.clone();
+        neg[0] = -1.0;
+        let e = RigidBody::from_mesh(&v, &neg, 1.0).unwrap_err();
+        assert!(e.message.contains("index -1 at face 0"), "{}", e.message);
+        // Not integers.
+        for bad in [0.5, f64::NAN, f64::INFINITY, 1e300] {
+            let mut g = f.clone();
+            g[4] = bad;
+            let e = RigidBody::from_mesh(&v, &g, 1.0).unwrap_err();
+            assert_eq!(e.name, "InvalidMeshError");
+            assert!(
+                e.message
+                    .starts_with("faces: must hold integer vertex indices")
+                    && e.message.contains("at face 1 (corner 1)"),
+                "{}",
+                e.message
+            );
+        }
+        // Density is the core's argument check.
+        let e = RigidBody::from_mesh(&v, &f, -1.0).unwrap_err();
+        assert_eq!(e.name, "PoinsotError");
+        assert!(e.message.starts_with("density"), "{}", e.message);
+    }
+
+    #[test]
+    fn open_mesh_is_refused_as_invalid_mesh() {
+        let (v, f) = cube();
+        let e = RigidBody::from_mesh(&v, &f[..33], 1.0).unwrap_err();
+        assert_eq!(e.name, "InvalidMeshError");
+        assert!(e.message.contains("the mesh is open"), "{}", e.message);
+        // A triangle soup (every face with its own vertices) looks open until merged.
+        let soup: Vec<f64> = f
+            .iter()
+            .flat_map(|&i| v[3 * i as usize..3 * i as usize + 3].to_vec())
+            .collect();
+        let idx: Vec<f64> = (0..36).map(f64::from).collect();
+        let e = RigidBody::from_mesh(&soup, &idx, 1.0).unwrap_err();
+        assert!(e.message.contains("open"), "{}", e.message);
+    }
+
+    #[test]
+    fn moved_bodies_keep_their_moments() {
+        let b = RigidBody::cuboid(2.0, &[1.0, 2.0, 3.0]).unwrap();
+        let r = crate::rotation::euler_to_matrix(&[0.3, 1.0, -0.4], "zxz", true).unwrap();
+        let m = b.translated(&[1.0, 2.0, 3.0]).unwrap().rotated(&r).unwrap();
+        for (x, y) in m.principal_moments().iter().zip(b.principal_moments()) {
+            assert!((x - y).abs() < 1e-14, "{x} vs {y}");
+        }
+        assert!(m.center_of_mass().iter().map(|x| x * x).sum::<f64>() > 13.99);
+        let e = b
+            .rotated(&[2.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0])
+            .unwrap_err();
+        assert_eq!(e.name, "InvalidRotationError");
+        assert!(b
+            .translated(&[1.0, 2.0])
+            .unwrap_err()
+            .message
+            .starts_with("offset"));
+    }
+
+    #[test]
+    fn triangle_margins_of_a_disk_and_a_cuboid() {
+        let d = RigidBody::thin_disk(2.0, 0.5).unwrap().triangle_margins();
+        assert!(d[2].abs() < 1e-16 && d[0] > 0.0, "{d:?}");
+        let c = RigidBody::cuboid(12.0, &[1.0, 2.0, 3.0])
+            .unwrap()
+            .triangle_margins();
+        assert_eq!(c, vec![18.0, 8.0, 2.0]);
+    }
 
     #[test]
     fn cuboid_moments_are_the_closed_form_and_kind_is_asymmetric() {

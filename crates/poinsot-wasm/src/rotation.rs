@@ -94,6 +94,17 @@ impl Screw {
     pub fn pitch(&self) -> f64 {
         self.inner.pitch
     }
+    /// The pose reached at fraction `s` of the screw motion (rotation by `s·angle` about the
+    /// axis while sliding `s·slide` along it; core `Screw::displacement_at`, Python
+    /// `Screw.displacement_at`): 12 numbers, `R(s)` row-major then `t(s)` (m). `s = 0` is the
+    /// identity, `s = 1` the displacement the screw was built from.
+    #[wasm_bindgen(js_name = displacementAt)]
+    pub fn displacement_at(&self, s: f64) -> Out<Vec<f64>> {
+        let (r, t) = self.inner.displacement_at(s)?;
+        let mut out = mat_out(&r);
+        out.extend(vec_out(&t));
+        finite("displacement", out)
+    }
 }
 
 /// Chasles' theorem for the displacement `x ↦ R x + t` (`r` 9 numbers row-major, `t` 3 numbers, m).
@@ -188,6 +199,24 @@ mod tests {
                 .name,
             "InvalidRotationError"
         );
+    }
+
+    #[test]
+    fn displacement_at_ends_and_errors() {
+        let r = euler_to_matrix(&[0.4, 1.1, -0.7], "zxz", true).unwrap();
+        let t = [0.8, -1.5, 2.0];
+        let s = screw_axis(&r, &t).unwrap();
+        let d0 = s.displacement_at(0.0).unwrap();
+        assert_eq!(&d0[..9], &mat_out(&poinsot::Mat3::identity())[..]);
+        assert_eq!(&d0[9..], &[0.0; 3]);
+        let d1 = s.displacement_at(1.0).unwrap();
+        assert_eq!(d1.len(), 12);
+        for (a, b) in d1.iter().zip(r.iter().chain(&t)) {
+            assert!((a - b).abs() < 1e-14, "{a} vs {b}");
+        }
+        let e = s.displacement_at(f64::NAN).unwrap_err();
+        assert_eq!(e.name, "PoinsotError");
+        assert!(e.message.starts_with("s: "), "{}", e.message);
     }
 
     #[test]

@@ -146,6 +146,19 @@ pub struct Principal {
     pub axes: Mat3,
 }
 
+impl Principal {
+    /// The margins of the triangle inequalities (kg·m²), `[I2 + I3 − I1, I3 + I1 − I2,
+    /// I1 + I2 − I3]` in the order of the (ascending) moments: each is `2 ∫ x_k² dm`, twice the
+    /// second moment of the mass along principal axis `k` (from 2.61–2.62), so none is negative
+    /// for a body, and a margin of zero means the mass lies in the plane ⟂ that axis (the
+    /// perpendicular-axis theorem of a lamina: a thin disk or ring has `I1 + I2 − I3 = 0`). The
+    /// last margin is the smallest.
+    pub fn triangle_margins(&self) -> [f64; 3] {
+        let [a, b, c] = self.moments;
+        [b + c - a, c + a - b, a + b - c]
+    }
+}
+
 /// Principal moments (ascending) and principal axes (columns of a proper rotation) of the
 /// symmetric tensor `inertia` (the unit's 2.65–2.66: in these axes the products vanish).
 ///
@@ -429,5 +442,18 @@ mod tests {
             .unwrap_err()
             .message
             .contains("triangle"));
+    }
+
+    #[test]
+    fn triangle_margins_are_twice_the_second_moments() {
+        // Cuboid m = 12, sides (1, 2, 3): I = (13, 10, 5), ascending (5, 10, 13) about z, y, x;
+        // I_j + I_k − I_i = 2 · m a_i² / 12 = 2 a_i²: (2·9, 2·4, 2·1) in that order.
+        let cub = crate::inertia::cuboid(12.0, [1.0, 2.0, 3.0]).unwrap();
+        let m = cub.principal(DEFAULT_KIND_RTOL).triangle_margins();
+        assert_eq!(m, [18.0, 8.0, 2.0]);
+        // A lamina: the thin disk sits on the boundary (perpendicular-axis theorem).
+        let disk = crate::inertia::thin_disk(2.0, 0.5).unwrap();
+        let m = disk.principal(DEFAULT_KIND_RTOL).triangle_margins();
+        assert!(m[2].abs() < 1e-16 && m[0] > 0.0 && m[1] > 0.0, "{m:?}");
     }
 }

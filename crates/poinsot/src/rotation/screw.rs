@@ -41,6 +41,25 @@ impl Screw {
         (r, self.point - r * self.point + self.slide * self.axis)
     }
 
+    /// The displacement `(R(s), t(s))` reached at fraction `s` of the screw motion: the rotation
+    /// by `s · angle` about the screw axis (through `point`, along `axis`) together with the
+    /// slide `s · slide` along it, `R(s) = R_axis(s · angle)` (Rodrigues) and
+    /// `t(s) = point − R(s) point + s · slide · axis`.
+    ///
+    /// This is the motion of Chasles' theorem made continuous: every point turns about the
+    /// axis at a constant rate while sliding along it, so `s = 0` is the identity, `s = 1` is
+    /// [`Screw::displacement`], and the poses compose, `D(s₁ + s₂) = D(s₁) ∘ D(s₂)` (one
+    /// screw, one axis). Any real `s` is accepted (`s < 0` runs the motion backwards, `s > 1`
+    /// continues it). Errors: non-finite `s` (naming `"s"`).
+    pub fn displacement_at(&self, s: f64) -> Result<(Mat3, Vec3)> {
+        check_finite("s", &[s])?;
+        let r = rodrigues(&self.axis, s * self.angle);
+        Ok((
+            r,
+            self.point - r * self.point + (s * self.slide) * self.axis,
+        ))
+    }
+
     /// Applies the screw motion to point `x`: `point + R (x − point) + slide · axis`, i.e.
     /// `R x + t` of the displacement it was built from. Errors: non-finite `x` (naming `"x"`).
     pub fn apply(&self, x: &Vec3) -> Result<Vec3> {
@@ -121,6 +140,41 @@ mod tests {
         assert!((r2 - r).norm() < 1e-14 && (t2 - t).norm() < 1e-14);
         let x = Vec3::new(-0.4, 0.9, 2.2);
         assert!((s.apply(&x).unwrap() - (r * x + t)).norm() < 1e-14);
+    }
+
+    #[test]
+    fn displacement_at_runs_from_identity_to_the_displacement_along_the_screw() {
+        let r = rot_z(2.3) * rot_x(0.8);
+        let t = Vec3::new(1.5, -0.2, 0.7);
+        let s = screw_axis(&r, &t).unwrap();
+        let (r0, t0) = s.displacement_at(0.0).unwrap();
+        assert!((r0 - Mat3::identity()).amax() == 0.0 && t0.amax() == 0.0);
+        let (r1, t1) = s.displacement_at(1.0).unwrap();
+        assert!((r1 - r).amax() < 1e-14 && (t1 - t).amax() < 1e-14);
+        // Half-way twice is the whole way (one screw composes with itself).
+        let (rh, th) = s.displacement_at(0.5).unwrap();
+        assert!((rh * rh - r).amax() < 1e-14);
+        assert!((rh * th + th - t).amax() < 1e-14);
+        // Every intermediate pose has the same screw axis, a fraction of the angle and slide.
+        for k in 1..10 {
+            let f = f64::from(k) / 10.0;
+            let (rf, tf) = s.displacement_at(f).unwrap();
+            let sf = screw_axis(&rf, &tf).unwrap();
+            assert!((sf.axis - s.axis).amax() < 1e-13, "{f}");
+            assert!((sf.point - s.point).amax() < 1e-13, "{f}");
+            assert!((sf.angle - f * s.angle).abs() < 1e-14, "{f}");
+            assert!((sf.slide - f * s.slide).abs() < 1e-14, "{f}");
+            // A point on the axis only slides.
+            let p = s.point + 0.3 * s.axis;
+            assert!((rf * p + tf - p - f * s.slide * s.axis).amax() < 1e-14);
+        }
+        // A pure translation moves in a straight line.
+        let s = screw_axis(&Mat3::identity(), &Vec3::new(0.0, 3.0, 4.0)).unwrap();
+        let (rq, tq) = s.displacement_at(0.25).unwrap();
+        assert_eq!(rq, Mat3::identity());
+        assert!((tq - Vec3::new(0.0, 0.75, 1.0)).amax() < 1e-15);
+        let e = s.displacement_at(f64::NAN).unwrap_err();
+        assert!(e.to_string().starts_with("s: "), "{e}");
     }
 
     #[test]
