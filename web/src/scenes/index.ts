@@ -3,5 +3,6 @@ import type { SceneDef } from "../scene";
 import { eulerScene } from "./euler";
 import { freeTopScene } from "./freetop";
 import { dropScene } from "./drop";
+import { poinsotScene } from "./poinsot";
 
-export const SCENES: SceneDef[] = [eulerScene, freeTopScene, dropScene];
+export const SCENES: SceneDef[] = [eulerScene, freeTopScene, dropScene, poinsotScene];
