@@ -136,26 +136,49 @@ mod tests {
         assert!((e - 1.0).abs() < 1e-12, "{e}");
         let n = b.invariable_plane_normal();
         let h = rs[0] * n[0] + rs[1] * n[1] + rs[2] * n[2];
-        assert!((h / b.invariable_plane_distance() - 1.0).abs() < 1e-12, "{h}");
+        assert!(
+            (h / b.invariable_plane_distance() - 1.0).abs() < 1e-12,
+            "{h}"
+        );
         // The batch agrees with the single call.
         let many = b.contact_points(&[0.0, t]).unwrap();
         assert_eq!(&many[3..], &rs[..]);
         assert_eq!(b.omegas(&[t]).unwrap(), b.omega(t).unwrap());
         // The flip interval is half the period.
         assert!((2.0 * b.flip_interval() / b.period() - 1.0).abs() < 1e-14);
-        assert_eq!(b.pole_axis(), Some(0));
+        // L² = 16.025 > 2T·I₂ = 16.02: just above the separatrix, ω circles the largest axis.
+        assert_eq!(b.pole_axis(), Some(2));
+        assert_eq!(b.regime(), "about max axis");
     }
 
     #[test]
     fn bad_input_names_the_argument() {
         let b = FreeRigidBody::new(&[1.0, 2.0, 3.0], &[0.3, 1.0, 0.2], &[]).unwrap();
-        assert!(b.contact_point(f64::INFINITY).unwrap_err().message.starts_with("t"));
-        assert!(b.contact_points(&[0.0, f64::NAN]).unwrap_err().message.starts_with("times"));
-        assert!(b.contact_polhode(1).unwrap_err().message.starts_with("samples"));
+        assert!(b
+            .contact_point(f64::INFINITY)
+            .unwrap_err()
+            .message
+            .starts_with("t"));
+        assert!(b
+            .contact_points(&[0.0, f64::NAN])
+            .unwrap_err()
+            .message
+            .starts_with("times"));
+        assert!(b
+            .contact_polhode(1)
+            .unwrap_err()
+            .message
+            .starts_with("samples"));
         let e = axis_stability(&[1.0, 2.0, 5.0], 1.0).unwrap_err();
         assert_eq!(e.name, "InvalidInertiaError");
-        assert!(axis_stability(&[1.0, 2.0], 1.0).unwrap_err().message.starts_with("moments"));
-        assert!(axis_stability(&[1.0, 2.0, 3.0], f64::NAN).unwrap_err().message.starts_with("spin"));
+        assert!(axis_stability(&[1.0, 2.0], 1.0)
+            .unwrap_err()
+            .message
+            .starts_with("moments"));
+        assert!(axis_stability(&[1.0, 2.0, 3.0], f64::NAN)
+            .unwrap_err()
+            .message
+            .starts_with("spin"));
     }
 
     #[test]

@@ -42,7 +42,11 @@ fn contact_point_is_on_the_ellipsoid_and_the_plane_and_tangent() {
     for k in 0..200 {
         let t = 0.37 * k as f64;
         for r in residuals(&body, t) {
-            assert!(r.abs() < CONTACT_TOL, "t = {t}: residuals {:?}", residuals(&body, t));
+            assert!(
+                r.abs() < CONTACT_TOL,
+                "t = {t}: residuals {:?}",
+                residuals(&body, t)
+            );
         }
     }
     // The plane's distance from the centre is (2T)^½/|L| (the unit's 2.91, 2.93 with ω·L = 2T).
@@ -54,7 +58,12 @@ fn contact_point_is_on_the_ellipsoid_and_the_plane_and_tangent() {
 
 #[test]
 fn contact_point_in_space_is_the_body_point_rotated() {
-    let body = FreeRigidBody::new([0.5, 1.1, 1.3], Vec3::new(0.2, 2.0, 0.05), Some([0.6, 0.0, 0.8, 0.0])).unwrap();
+    let body = FreeRigidBody::new(
+        [0.5, 1.1, 1.3],
+        Vec3::new(0.2, 2.0, 0.05),
+        Some([0.6, 0.0, 0.8, 0.0]),
+    )
+    .unwrap();
     for k in 0..50 {
         let t = 0.9 * k as f64;
         let e = rot(&body, t) * body.contact_point_body(t) - body.contact_point(t);
@@ -76,7 +85,11 @@ fn the_ellipsoid_rolls_without_slipping() {
         let off = rho + Vec3::new(0.0, 0.0, 0.5);
         let v_off = (rot(&body, t + h) * off - rot(&body, t - h) * off) / (2.0 * h);
         assert!(v.norm() < 1e-6, "t = {t}: contact velocity {}", v.norm());
-        assert!(v_off.norm() > 0.1, "negative control: an off-axis point moves ({})", v_off.norm());
+        assert!(
+            v_off.norm() > 0.1,
+            "negative control: an off-axis point moves ({})",
+            v_off.norm()
+        );
     }
 }
 
@@ -93,7 +106,11 @@ fn contact_polhode_is_the_polhode_on_the_inertia_ellipsoid() {
     }
     // One period: the curve closes.
     assert!((p[0] - p[100]).norm() < 1e-12);
-    assert!(body.contact_polhode(1).unwrap_err().to_string().starts_with("samples"));
+    assert!(body
+        .contact_polhode(1)
+        .unwrap_err()
+        .to_string()
+        .starts_with("samples"));
 }
 
 #[test]
