@@ -20,7 +20,7 @@ export const SPIN_AXES = ["intermediate", "smallest", "largest"];
 export const BOX_MASS = 1;
 /** Display radius of the ellipsoid's longest semi-axis and of the box's longest half-side. */
 const R_ELLIPSOID = 1.6;
-const R_BOX = 1.3;
+const R_BOX = 1.45;
 /** Display radius of the invariable plane. */
 const PLANE_RADIUS = 2.5;
 /** Samples of the closed polhode drawn on the ellipsoid. */
@@ -188,7 +188,12 @@ export const poinsotScene: SceneDef = {
     // The path of the spun axis's tip in space over the last period: a flip is a swing from
     // near +L to near −L and back.
     const tipTrail = new Polyline(TRAIL_POINTS + 1, 0xffffff, 0.8);
-    boxRoot.add(tipTrail.obj);
+    // The sphere that the tip moves on, faint.
+    const tipSphere = new THREE.Mesh(
+      new THREE.SphereGeometry(1, 48, 32),
+      new THREE.MeshStandardMaterial({ color: 0x3e7bfa, transparent: true, opacity: 0.1, depthWrite: false }),
+    );
+    boxRoot.add(tipTrail.obj, tipSphere);
     const omegaArrow = new Arrow(0xffffff);
     const lArrow = new Arrow(0x7cc4ff);
     boxRoot.add(omegaArrow.obj, lArrow.obj);
@@ -226,6 +231,8 @@ export const poinsotScene: SceneDef = {
     let omega0Norm = 1;
     let tNow = 0;
     let wasPoinsot: boolean | null = null;
+    /** The motion's constants, read from the core once per configure. */
+    let constants = { d: 0, T0: 0, L0: 0, period: 0, flip: 0, regime: "" };
     let out: Readout[] = [];
 
     const free = () => {
@@ -306,6 +313,14 @@ export const poinsotScene: SceneDef = {
         poinsotRoot.visible = poinsot;
         boxRoot.visible = !poinsot;
         lHat = vec(body.invariablePlaneNormal);
+        constants = {
+          d: body.invariablePlaneDistance,
+          T0: body.energy,
+          L0: vec(body.angularMomentum).length(),
+          period: body.period,
+          flip: body.flipInterval,
+          regime: body.regime,
+        };
         const w0 = vec(body.omega(0));
         omega0Norm = w0.length();
 
@@ -348,6 +363,7 @@ export const poinsotScene: SceneDef = {
         const half = sides.map((x) => 0.5 * x * kBox);
         boxAxes.forEach((a, k) => a.setLength(Math.max(1.4 * half[k], 0.35), 0.15, 0.07));
         tipLength = Math.max(1.4 * half[spunAxis], 0.35);
+        tipSphere.scale.setScalar(tipLength);
         const e = new THREE.Vector3().setComponent(spunAxis, tipLength);
         const tipSpan = Number.isFinite(body.period) ? Math.ceil(body.period / dtContact) : TRAIL_POINTS;
         tipCurve = new GridCurve(
@@ -373,7 +389,7 @@ export const poinsotScene: SceneDef = {
         const att = quaternion(q);
         const rhoBody = body.contactPointBody(t);
         const rho = body.contactPoint(t);
-        const d = body.invariablePlaneDistance;
+        const { d, T0, L0, period, flip, regime } = constants;
 
         if (view === POINSOT_VIEWS[0]) {
           ellBody.quaternion.copy(att);
@@ -393,17 +409,12 @@ export const poinsotScene: SceneDef = {
         omegaCurve?.update(t);
 
         // Conservation, recomputed from ω(t) by the rigid body's own T = ½ ω·I·ω (2.54) and L = I·ω (2.51).
-        const T0 = body.energy;
-        const L0 = vec(body.angularMomentum).length();
         const T = rigid.kineticEnergy(w);
         const L = vec(rigid.angularMomentum(w)).length();
         // The contact conditions, as relative residuals: ρ·I·ρ = 1 (by the rigid body's T at
         // ω = ρ) and ρ·L̂ = d.
         const onEllipsoid = 2 * rigid.kineticEnergy(rhoBody) - 1;
         const onPlane = (rho[0] * lHat.x + rho[1] * lHat.y + rho[2] * lHat.z) / d - 1;
-        const period = body.period;
-        const flip = body.flipInterval;
-        const regime = body.regime;
         out = [
           { key: "t", label: "t (s)", value: t, text: fmt(t, 5) },
           { key: "moments", label: "I (x, y, z) (kg·m²)", value: moments, text: fmtVec(moments) },
