@@ -167,9 +167,17 @@ fn perturbations_down_to_subnormal_give_a_finite_motion() {
                     .unwrap_or_else(|err| panic!("{moments:?} {:?}: {err}", w.as_slice()));
                 for t in [0.0, 0.7, 31.0] {
                     let p = body.contact_point(t);
-                    assert!(p.iter().all(|x| x.is_finite()), "{moments:?} {:?} t={t}", w.as_slice());
+                    assert!(
+                        p.iter().all(|x| x.is_finite()),
+                        "{moments:?} {:?} t={t}",
+                        w.as_slice()
+                    );
                     for r in residuals(&body, t) {
-                        assert!(r.abs() < CONTACT_TOL, "{moments:?} {:?} t={t}: {r}", w.as_slice());
+                        assert!(
+                            r.abs() < CONTACT_TOL,
+                            "{moments:?} {:?} t={t}: {r}",
+                            w.as_slice()
+                        );
                     }
                 }
             }
