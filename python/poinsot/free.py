@@ -296,6 +296,31 @@ class FreeRigidBody:
         plane at this distance from its centre, touching it at ω / (2T)^½."""
         return float(self._core.invariable_plane_distance)
 
+    @property
+    def invariable_plane_normal(self) -> FloatArray:
+        """L̂ = L / |L|, the unit normal of the invariable plane (space components, (3,))."""
+        return np.asarray(self._core.invariable_plane_normal)
+
+    def contact_point(self, t: Any, frame: str = "space") -> FloatArray:
+        """The point where the inertia ellipsoid ρ·I·ρ = 1 (fixed in the body) touches the
+        invariable plane ρ·L̂ = :attr:`invariable_plane_distance` in Poinsot's construction:
+        ρ = ω(t) / (2T)^½ (kg^-½·m^-1), shape t.shape + (3,).
+
+        ``frame="space"`` (default) gives space components (their locus is the herpolhode,
+        scaled), ``frame="body"`` body components (the polhode, scaled). The ellipsoid's normal
+        there, I·ρ, is parallel to L, and the body point at ρ is at rest: it rolls without
+        slipping. Raises PoinsotError for another ``frame`` or non-finite ``t``.
+        """
+        if frame not in ("space", "body"):
+            raise PoinsotError(f"frame: must be 'space' or 'body', got {frame!r}")
+        ts, shape = _times(t)
+        return np.asarray(self._core.contact_point(ts, frame == "body")).reshape(shape + (3,))
+
+    def contact_polhode(self, samples: int = 721) -> FloatArray:
+        """The polhode drawn on the inertia ellipsoid ρ·I·ρ = 1: :meth:`polhode` scaled by
+        (2T)^-½, body components, shape (samples, 3)."""
+        return np.asarray(self._core.contact_polhode(int(samples)))
+
     def state(self, t: Any) -> tuple[FloatArray, FloatArray]:
         """(ω (body, rad/s), attitude [w, x, y, z]) at ``t`` (s): shapes t.shape + (3,) and
         t.shape + (4,); quaternion signs are continuous along ``t``."""

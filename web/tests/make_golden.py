@@ -283,6 +283,52 @@ def inertia_case(params: dict[str, Any], t: float) -> dict[str, Any]:
 
 INERTIA = {"mass": 2, "shape": "cuboid", "a": 1.2, "b": 0.8, "c": 0.4, "density": 1000, "unit": "m",
            "motion": INERTIA_MOTIONS[0], "phi": 60, "theta": 30, "psi": 30, "tx": 2, "ty": 0, "tz": 0.8}
+POINSOT_SPIN_AXES = {"smallest": 0, "intermediate": 1, "largest": 2}
+
+
+def poinsot_case(params: dict[str, Any], t: float) -> dict[str, Any]:
+    """The Poinsot / tumbling-box scene: a uniform 1 kg box of sides a, b, c (m) along x, y, z,
+    spun at ``spin`` rad/s about the axis of the smallest, intermediate or largest moment with
+    ``eps``·spin on each of the other two axes (the page's set-up)."""
+    rigid = poinsot.RigidBody.cuboid(1.0, [params["a"], params["b"], params["c"]])
+    moments = np.diag(rigid.inertia).copy()
+    axis = int(np.argsort(moments, kind="stable")[POINSOT_SPIN_AXES[params["axis"]]])
+    spin, eps = float(params["spin"]), float(params["eps"])
+    omega0 = np.full(3, eps * spin)
+    omega0[axis] = spin
+    body = poinsot.FreeRigidBody(moments, omega0)
+    w, q = body.state(t)
+    stab = poinsot.axis_stability(moments, spin)
+    rho_body = body.contact_point(t, frame="body")
+    rho = body.contact_point(t)
+    normal = body.invariable_plane_normal
+    d = body.invariable_plane_distance
+    readouts = {
+        "t": t,
+        "moments": moments.tolist(),
+        "spunAxis": axis,
+        "stability": ", ".join(s.stability for s in stab),
+        "stabilityRates": [s.rate for s in stab],
+        "regime": body.regime,
+        "period": body.period,
+        "flipInterval": body.flip_interval,
+        "omega": np.asarray(w).tolist(),
+        "spinComponent": float(w[axis]),
+        "attitude": np.asarray(q).tolist(),
+        "planeDistance": d,
+        "planeNormal": np.asarray(normal).tolist(),
+        "contactPoint": np.asarray(rho).tolist(),
+        "contactResidual": [2 * float(rigid.kinetic_energy(rho_body)) - 1, float(rho @ normal) / d - 1],
+        "energy": body.energy,
+        "energyNow": float(rigid.kinetic_energy(w)),
+        "angularMomentum": float(np.linalg.norm(body.angular_momentum)),
+        "angularMomentumNow": float(np.linalg.norm(rigid.angular_momentum(w))),
+    }
+    return {"scene": "poinsot", "params": params, "t": t, "readouts": readouts}
+
+
+POINSOT = {"view": "Poinsot ellipsoid", "axis": "intermediate", "eps": 0.05, "spin": 4,
+           "a": 0.24, "b": 0.16, "c": 0.04}
 
 
 EULER = {"seq": "zxz", "convention": "intrinsic", "phi": 30, "theta": 40, "psi": 20,
@@ -316,6 +362,10 @@ def cases() -> list[dict[str, Any]]:
         # Euler: a rotation about the CM of a lamina (I1 + I2 = I3), screw through the CM, pitch 0.
         inertia_case({**INERTIA, "shape": "disk", "motion": INERTIA_MOTIONS[1], "phi": -120, "psi": 75}, 5.5),
         inertia_case({**INERTIA, "shape": "rod", "a": 1.7, "theta": 180, "phi": 0, "psi": 0}, 2.5),  # rotor, half turn
+        poinsot_case(POINSOT, 3.3),  # near the separatrix, above it: flips about y
+        poinsot_case({**POINSOT, "view": "tumbling box", "eps": 0.01, "spin": 6.5}, 11.75),
+        poinsot_case({**POINSOT, "axis": "smallest", "eps": 0.3, "a": 0.1, "b": 0.3, "c": 0.18}, 40.0),
+        poinsot_case({**POINSOT, "axis": "largest", "eps": 0.8, "spin": 2.5}, 0.0),
     ]
 
 

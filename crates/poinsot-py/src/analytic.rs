@@ -250,6 +250,45 @@ impl PyFreeBody {
         let rows: Vec<[f64; 3]> = self.inner.polhode(samples).py()?.iter().map(a3).collect();
         Ok(rows_out(py, &rows))
     }
+    /// The invariable plane's unit normal L̂ (3,).
+    #[getter]
+    fn invariable_plane_normal<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        vec3_out(py, a3(&self.inner.invariable_plane_normal()))
+    }
+    /// Poinsot's contact point at times t (N,) → (N, 3), space (`body` false) or body components.
+    fn contact_point<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyReadonlyArray1<'py, f64>,
+        body: bool,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let rows: Vec<[f64; 3]> = times_in(&t)?
+            .iter()
+            .map(|&t| {
+                a3(&if body {
+                    self.inner.contact_point_body(t)
+                } else {
+                    self.inner.contact_point(t)
+                })
+            })
+            .collect();
+        Ok(rows_out(py, &rows))
+    }
+    /// `samples` points of the polhode on the inertia ellipsoid (N, 3).
+    fn contact_polhode<'py>(
+        &self,
+        py: Python<'py>,
+        samples: usize,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let rows: Vec<[f64; 3]> = self
+            .inner
+            .contact_polhode(samples)
+            .py()?
+            .iter()
+            .map(a3)
+            .collect();
+        Ok(rows_out(py, &rows))
+    }
 }
 
 /// The stability of steady rotation about each principal axis: [(kind, rate)] × 3.

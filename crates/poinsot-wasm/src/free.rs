@@ -94,7 +94,7 @@ fn time_ok(t: f64) -> Out<()> {
 #[wasm_bindgen]
 #[derive(Debug, Clone)]
 pub struct FreeRigidBody {
-    inner: an::FreeRigidBody,
+    pub(crate) inner: an::FreeRigidBody,
 }
 
 #[wasm_bindgen]

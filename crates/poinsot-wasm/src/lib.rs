@@ -17,6 +17,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod construction;
 pub mod convert;
 pub mod earth;
 pub mod frames;

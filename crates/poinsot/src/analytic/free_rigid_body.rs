@@ -186,7 +186,10 @@ impl FreeRigidBody {
         );
         let energy = 0.5 * (l_body.x * omega0.x + l_body.y * omega0.y + l_body.z * omega0.z);
         let l_space = rotate(&attitude0, &l_body);
-        let nonzero = omega0.iter().filter(|w| **w != 0.0).count();
+        // A component whose square underflows (|ω_i| < ~1e-162) adds nothing to T or L in
+        // double precision, and would make the elliptic set-up divide 0 by 0: such a motion
+        // is the steady rotation about the one remaining axis, to round-off.
+        let nonzero = omega0.iter().filter(|w| **w * **w != 0.0).count();
         let (regime, motion) =
             if moments[0] == moments[1] && moments[1] == moments[2] || nonzero == 1 {
                 let rate = omega0.norm();

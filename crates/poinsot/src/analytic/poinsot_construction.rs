@@ -108,4 +108,36 @@ impl FreeRigidBody {
     pub fn invariable_plane_distance(&self) -> f64 {
         (2.0 * self.energy()).sqrt() / self.angular_momentum().norm()
     }
+
+    /// The unit normal L̂ = L / |L| of the invariable plane (space components, constant).
+    pub fn invariable_plane_normal(&self) -> Vec3 {
+        let l = self.angular_momentum();
+        l / l.norm()
+    }
+
+    /// The point of contact of Poinsot's construction at time `t` (s), in **body** components:
+    /// ρ = ω(t) / (2T)^½, the point of the inertia ellipsoid `ρ·I·ρ = 1` where it touches the
+    /// invariable plane (kg^-½·m^-1, the units of the inertia ellipsoid). Its locus over time
+    /// is the polhode, scaled by (2T)^-½.
+    pub fn contact_point_body(&self, t: f64) -> Vec3 {
+        self.omega(t) / (2.0 * self.energy()).sqrt()
+    }
+
+    /// The point of contact at time `t` (s) in **space** components: R(t) ω(t) / (2T)^½. It
+    /// lies on the invariable plane `ρ·L̂ = d` with d = [`Self::invariable_plane_distance`]
+    /// (because ω·L = 2T, the unit's 2.53), and the ellipsoid's normal there, R I ρ, is
+    /// parallel to L (so the ellipsoid is tangent to the plane). The contact point lies on the
+    /// instantaneous axis ω, so its velocity as a point of the body, ω × ρ, vanishes: the
+    /// ellipsoid rolls without slipping. Its locus over time is the herpolhode (scaled).
+    pub fn contact_point(&self, t: f64) -> Vec3 {
+        self.omega_space(t) / (2.0 * self.energy()).sqrt()
+    }
+
+    /// `samples` points of the polhode on the inertia ellipsoid `ρ·I·ρ = 1`: the
+    /// [`Self::polhode`] scaled by (2T)^-½, body components (the same times). Errors name
+    /// `samples` (must be ≥ 2).
+    pub fn contact_polhode(&self, samples: usize) -> Result<Vec<Vec3>> {
+        let s = (2.0 * self.energy()).sqrt();
+        Ok(self.polhode(samples)?.into_iter().map(|w| w / s).collect())
+    }
 }

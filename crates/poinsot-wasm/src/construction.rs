@@ -1,0 +1,191 @@
+//! Bindings of Poinsot's construction and of the stability of steady rotation
+//! (`poinsot::analytic`): the contact point of the inertia ellipsoid with the invariable plane,
+//! the polhode on the ellipsoid, the flip interval of the tumbling box (the Dzhanibekov effect)
+//! and the linear stability of each principal axis. More methods of [`FreeRigidBody`] (the class
+//! is defined in `free.rs`); body components along the principal axes, space components as the
+//! attitude maps them.
+
+use crate::convert::{array3, finite, vec_out, Failure, Out};
+use crate::free::FreeRigidBody;
+use poinsot::analytic as an;
+use wasm_bindgen::prelude::wasm_bindgen;
+
+fn time_ok(t: f64) -> Out<()> {
+    Ok(poinsot::error::check_finite("t", &[t])?)
+}
+
+fn flat(points: &[poinsot::Vec3]) -> Vec<f64> {
+    points.iter().flat_map(|p| [p.x, p.y, p.z]).collect()
+}
+
+#[wasm_bindgen]
+impl FreeRigidBody {
+    /// The Jacobi parameter m = k² (0 steady or symmetric, 1 on the separatrix).
+    #[wasm_bindgen(getter)]
+    pub fn parameter(&self) -> f64 {
+        self.inner.parameter()
+    }
+    /// λ of the Jacobi argument τ = λt + τ₀ (1/s).
+    #[wasm_bindgen(getter)]
+    pub fn frequency(&self) -> f64 {
+        self.inner.frequency()
+    }
+    /// Half the period (s): the interval between reversals of ω along the intermediate axis
+    /// (the Dzhanibekov flips near the separatrix); `Infinity` when the period is.
+    #[wasm_bindgen(getter, js_name = flipInterval)]
+    pub fn flip_interval(&self) -> f64 {
+        self.inner.flip_interval()
+    }
+    /// The principal axis (0, 1, 2) that ω circles; `undefined` when steady or on the separatrix.
+    #[wasm_bindgen(getter, js_name = poleAxis)]
+    pub fn pole_axis(&self) -> Option<u32> {
+        self.inner.pole_axis().map(|i| i as u32)
+    }
+    /// (2T)^½ / |L|: the distance of the invariable plane from the centre in Poinsot's
+    /// construction (the inertia ellipsoid ρ·I·ρ = 1).
+    #[wasm_bindgen(getter, js_name = invariablePlaneDistance)]
+    pub fn invariable_plane_distance(&self) -> f64 {
+        self.inner.invariable_plane_distance()
+    }
+    /// L̂, the invariable plane's unit normal (space components).
+    #[wasm_bindgen(getter, js_name = invariablePlaneNormal)]
+    pub fn invariable_plane_normal(&self) -> Vec<f64> {
+        vec_out(&self.inner.invariable_plane_normal())
+    }
+    /// The contact point ρ = R(t) ω(t) / (2T)^½ of the inertia ellipsoid with the invariable
+    /// plane at time `t` (s), space components.
+    #[wasm_bindgen(js_name = contactPoint)]
+    pub fn contact_point(&self, t: f64) -> Out<Vec<f64>> {
+        time_ok(t)?;
+        finite("contact point", vec_out(&self.inner.contact_point(t)))
+    }
+    /// The contact point ω(t) / (2T)^½ at time `t` (s), body components.
+    #[wasm_bindgen(js_name = contactPointBody)]
+    pub fn contact_point_body(&self, t: f64) -> Out<Vec<f64>> {
+        time_ok(t)?;
+        finite("contact point", vec_out(&self.inner.contact_point_body(t)))
+    }
+    /// The contact points (space components) at each of `times` (s): 3N numbers, the
+    /// herpolhode (scaled) when the times are consecutive.
+    #[wasm_bindgen(js_name = contactPoints)]
+    pub fn contact_points(&self, times: &[f64]) -> Out<Vec<f64>> {
+        poinsot::error::check_finite("times", times)?;
+        let pts: Vec<poinsot::Vec3> = times.iter().map(|&t| self.inner.contact_point(t)).collect();
+        finite("contact point", flat(&pts))
+    }
+    /// ω (body components, rad/s) at each of `times` (s): 3N numbers.
+    #[wasm_bindgen(js_name = omegas)]
+    pub fn omegas(&self, times: &[f64]) -> Out<Vec<f64>> {
+        poinsot::error::check_finite("times", times)?;
+        let pts: Vec<poinsot::Vec3> = times.iter().map(|&t| self.inner.omega(t)).collect();
+        finite("omega", flat(&pts))
+    }
+    /// `samples` points (3N numbers, body components) of the polhode on the inertia ellipsoid
+    /// ρ·I·ρ = 1, over one period (on the separatrix, the branch from −12/λ to 12/λ).
+    #[wasm_bindgen(js_name = contactPolhode)]
+    pub fn contact_polhode(&self, samples: usize) -> Out<Vec<f64>> {
+        finite("polhode", flat(&self.inner.contact_polhode(samples)?))
+    }
+}
+
+/// The linear stability of steady rotation about each principal axis
+/// (`poinsot.axis_stability` in Python).
+#[wasm_bindgen]
+#[derive(Debug, Clone)]
+pub struct AxisStability {
+    kinds: Vec<String>,
+    rates: Vec<f64>,
+}
+
+#[wasm_bindgen]
+impl AxisStability {
+    /// "stable", "unstable" or "neutral" for each axis, in the order of the moments.
+    #[wasm_bindgen(getter)]
+    pub fn kinds(&self) -> Vec<String> {
+        self.kinds.clone()
+    }
+    /// The oscillation frequency (stable) or growth rate (unstable) of each axis (1/s).
+    #[wasm_bindgen(getter)]
+    pub fn rates(&self) -> Vec<f64> {
+        self.rates.clone()
+    }
+}
+
+/// The stability of steady rotation at `spin` (rad/s) about each principal axis of a body with
+/// principal `moments` (kg·m², 3 numbers, any order): the intermediate axis is unstable.
+#[wasm_bindgen(js_name = axisStability)]
+pub fn axis_stability(moments: &[f64], spin: f64) -> Out<AxisStability> {
+    let s = an::axis_stability(array3("moments", moments)?, spin).map_err(Failure::from)?;
+    Ok(AxisStability {
+        kinds: s.iter().map(|a| a.stability.as_str().to_string()).collect(),
+        rates: s.iter().map(|a| a.rate).collect(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn contact_point_is_on_the_ellipsoid_and_the_plane() {
+        let b = FreeRigidBody::new(&[1.0, 2.0, 3.0], &[0.05, 2.0, 0.05], &[]).unwrap();
+        let t = 3.7;
+        let rb = b.contact_point_body(t).unwrap();
+        let rs = b.contact_point(t).unwrap();
+        let e = rb[0] * rb[0] + 2.0 * rb[1] * rb[1] + 3.0 * rb[2] * rb[2];
+        assert!((e - 1.0).abs() < 1e-12, "{e}");
+        let n = b.invariable_plane_normal();
+        let h = rs[0] * n[0] + rs[1] * n[1] + rs[2] * n[2];
+        assert!(
+            (h / b.invariable_plane_distance() - 1.0).abs() < 1e-12,
+            "{h}"
+        );
+        // The batch agrees with the single call.
+        let many = b.contact_points(&[0.0, t]).unwrap();
+        assert_eq!(&many[3..], &rs[..]);
+        assert_eq!(b.omegas(&[t]).unwrap(), b.omega(t).unwrap());
+        // The flip interval is half the period.
+        assert!((2.0 * b.flip_interval() / b.period() - 1.0).abs() < 1e-14);
+        // L² = 16.025 > 2T·I₂ = 16.02: just above the separatrix, ω circles the largest axis.
+        assert_eq!(b.pole_axis(), Some(2));
+        assert_eq!(b.regime(), "about max axis");
+    }
+
+    #[test]
+    fn bad_input_names_the_argument() {
+        let b = FreeRigidBody::new(&[1.0, 2.0, 3.0], &[0.3, 1.0, 0.2], &[]).unwrap();
+        assert!(b
+            .contact_point(f64::INFINITY)
+            .unwrap_err()
+            .message
+            .starts_with("t"));
+        assert!(b
+            .contact_points(&[0.0, f64::NAN])
+            .unwrap_err()
+            .message
+            .starts_with("times"));
+        assert!(b
+            .contact_polhode(1)
+            .unwrap_err()
+            .message
+            .starts_with("samples"));
+        let e = axis_stability(&[1.0, 2.0, 5.0], 1.0).unwrap_err();
+        assert_eq!(e.name, "InvalidInertiaError");
+        assert!(axis_stability(&[1.0, 2.0], 1.0)
+            .unwrap_err()
+            .message
+            .starts_with("moments"));
+        assert!(axis_stability(&[1.0, 2.0, 3.0], f64::NAN)
+            .unwrap_err()
+            .message
+            .starts_with("spin"));
+    }
+
+    #[test]
+    fn the_intermediate_axis_is_the_unstable_one() {
+        let s = axis_stability(&[3.0, 1.0, 2.0], 2.0).unwrap();
+        assert_eq!(s.kinds(), ["stable", "stable", "unstable"]);
+        // σ = |spin| ((I₂ − I₁)(I₃ − I₂)/(I₁I₃))^½ with sorted 1, 2, 3: 2·(1·1/3)^½.
+        assert!((s.rates()[2] - 2.0 * (1.0f64 / 3.0).sqrt()).abs() < 1e-15);
+    }
+}
