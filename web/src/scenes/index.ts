@@ -3,5 +3,6 @@ import type { SceneDef } from "../scene";
 import { eulerScene } from "./euler";
 import { freeTopScene } from "./freetop";
 import { dropScene } from "./drop";
+import { heavyTopScene } from "./heavytop";
 
-export const SCENES: SceneDef[] = [eulerScene, freeTopScene, dropScene];
+export const SCENES: SceneDef[] = [eulerScene, freeTopScene, dropScene, heavyTopScene];
