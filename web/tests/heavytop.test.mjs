@@ -144,7 +144,8 @@ test("heavytop: the V(θ) inset is drawn and its dot follows θ(t)", async () =>
   await page.waitForTimeout(200); // the inset is drawn with the next frame
   const b = await insetPixels(page);
   assert.notEqual(a.hash, b.hash, "the inset does not change with t");
-  assert.deepEqual(errors, []);
+  // Chromium's note on the test's own repeated getImageData is the only message allowed.
+  assert.deepEqual(errors.filter((e) => !/Multiple readback operations using getImageData/.test(e)), []);
   await page.close();
 });
 
