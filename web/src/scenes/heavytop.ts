@@ -130,7 +130,10 @@ class PotentialPlot {
     this.x1 = thetas[thetas.length - 1];
     const finite = values.filter((v) => Number.isFinite(v));
     const vmin = Math.min(...finite);
-    const vedge = Math.min(...[values[0], values[values.length - 1]].map((v) => (Number.isFinite(v) ? v : Math.max(...finite))));
+    // The lower edge sets the scale, unless the minimum is at that edge (an upright top).
+    const edges = [values[0], values[values.length - 1]].map((v) => (Number.isFinite(v) ? v : Math.max(...finite)));
+    let vedge = Math.min(...edges);
+    if (vedge - vmin <= 1e-6 * (1 + Math.abs(vmin))) vedge = Math.max(...edges);
     const span = Math.max(ePrime - vmin, 0.3 * (vedge - vmin), 1e-9 * (1 + Math.abs(vmin)));
     this.y0 = vmin - 0.12 * span;
     this.y1 = Math.max(ePrime, vmin) + 0.9 * span;
@@ -313,14 +316,18 @@ export const heavyTopScene: SceneDef = {
     const circle2 = latitude(0xf2b84b, true);
     root.add(equator, circle1, circle2);
 
-    // The pivot on a pedestal.
-    // A cone along y with its apex at +0.6: turned to z and lowered, apex on the pivot.
-    const pedestal = new THREE.Mesh(
-      new THREE.ConeGeometry(0.35, 1.2, 32).rotateX(Math.PI / 2).translate(0, 0, -0.6),
+    // The pivot on its post.
+    // A slim post under the pivot (a hanging top, θ > 90°, swings past it) on a small foot.
+    const post = new THREE.Mesh(
+      new THREE.CylinderGeometry(0.035, 0.05, 1.4, 16).rotateX(Math.PI / 2).translate(0, 0, -0.7),
+      new THREE.MeshStandardMaterial({ color: 0x6b7685, roughness: 0.7 }),
+    );
+    const foot = new THREE.Mesh(
+      new THREE.CylinderGeometry(0.3, 0.34, 0.06, 32).rotateX(Math.PI / 2).translate(0, 0, -1.43),
       new THREE.MeshStandardMaterial({ color: 0x4a5563, roughness: 0.8 }),
     );
     const pivot = new THREE.Mesh(new THREE.SphereGeometry(0.06, 16, 12), new THREE.MeshStandardMaterial({ color: 0xe6e9ee }));
-    root.add(pedestal, pivot);
+    root.add(post, foot, pivot);
 
     const body = new THREE.Group();
     body.matrixAutoUpdate = false;
