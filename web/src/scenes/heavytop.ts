@@ -227,6 +227,7 @@ class TipTrail {
   private start = 0;
   private end = -1;
   private span = 1;
+  private dt = 0.01;
 
   constructor(color: number) {
     const geom = new THREE.BufferGeometry();
@@ -235,8 +236,6 @@ class TipTrail {
     this.obj = new THREE.Line(geom, new THREE.LineBasicMaterial({ color }));
     this.obj.frustumCulled = false;
   }
-
-  private dt = 0.01;
 
   /** A new motion: grid step `dt` (s), `window` (s) of trail. */
   reset(dt: number, window: number): void {
