@@ -149,6 +149,39 @@ class HeavyTop:
         )
 
     @classmethod
+    def from_spin(
+        cls,
+        I1: float,  # noqa: N803
+        I3: float,  # noqa: N803
+        mgl: float,
+        theta: float,
+        omega3: float,
+        *,
+        theta_dot: float = 0.0,
+        phi_dot: float = 0.0,
+        phi: float = 0.0,
+        psi: float = 0.0,
+        degrees: bool = False,
+    ) -> HeavyTop:
+        """The top started at ``theta`` with the spin ``omega3`` (rad/s) given instead of
+        ``psi_dot``: ``psi_dot = omega3 - phi_dot cos(theta)`` (2.99), so that ``p_psi = I3 omega3``
+        whatever ``phi_dot`` (the rates as in :class:`HeavyTop`; ``omega3`` in deg/s with
+        ``degrees=True``). Raises as :class:`HeavyTop`, and naming ``omega3`` if not finite."""
+        top = cls.__new__(cls)
+        top._core = _core.HeavyTopCore.from_spin(
+            as_scalar(I1, "I1"),
+            as_scalar(I3, "I3"),
+            as_scalar(mgl, "mgl"),
+            _angle(phi, "phi", degrees),
+            _angle(theta, "theta", degrees),
+            _angle(psi, "psi", degrees),
+            _angle(phi_dot, "phi_dot", degrees),
+            _angle(theta_dot, "theta_dot", degrees),
+            _angle(omega3, "omega3", degrees),
+        )
+        return top
+
+    @classmethod
     def from_constants(
         cls,
         I1: float,  # noqa: N803
@@ -394,3 +427,33 @@ class HeavyTop:
             as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl"), as_scalar(theta, "theta"),
             as_scalar(theta_dot, "theta_dot"), as_scalar(phi_dot, "phi_dot"), as_scalar(psi_dot, "psi_dot"),
         )
+
+    @staticmethod
+    def constants_of_state(
+        I1: float,  # noqa: N803
+        I3: float,  # noqa: N803
+        mgl: float,
+        theta: float,
+        theta_dot: float,
+        phi_dot: float,
+        psi_dot: float,
+        *,
+        degrees: bool = False,
+    ) -> dict[str, float]:
+        """The constants of the motion evaluated at one state: ``{"p_phi", "p_psi", "energy"}``,
+        ``p_phi = I1 phi' sin^2 + p_psi cos`` (kg m^2/s, 2.104), ``p_psi = I3 (psi' + phi' cos)``
+        (kg m^2/s, 2.103) and ``E = I1 (theta'^2 + phi'^2 sin^2)/2 + I3 omega3^2/2 + m g l cos``
+        (J, 2.105), with ``theta`` in rad (in [0, pi]) and the rates in rad/s (degrees and deg/s
+        with ``degrees=True``).
+
+        Evaluated at ``euler_angles(t)`` and ``euler_rates(t)`` of a :class:`HeavyTop` they equal
+        its ``p_phi``, ``p_psi`` and ``energy`` to round-off (the difference is the drift of the
+        solution); at the initial state they are identical.
+
+        Raises :class:`PoinsotError` naming ``I1``, ``I3``, ``mgl``, ``theta`` or a rate."""
+        p_phi, p_psi, energy = _core.heavy_top_constants_of_state(
+            as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl"),
+            _angle(theta, "theta", degrees), _angle(theta_dot, "theta_dot", degrees),
+            _angle(phi_dot, "phi_dot", degrees), _angle(psi_dot, "psi_dot", degrees),
+        )
+        return {"p_phi": p_phi, "p_psi": p_psi, "energy": energy}

@@ -270,3 +270,46 @@ def test_bad_input_to_methods() -> None:
         HeavyTop.min_spin(1.0, 0.5, 1.0, 4.0)
     with pytest.raises(ps.PoinsotError, match="^p_phi:"):
         HeavyTop.from_constants(1.0, 0.5, 1.0, float("nan"), 1.0, 1.0)
+
+
+def test_constants_of_state_equal_the_constants_along_the_motion() -> None:
+    """HeavyTop.constants_of_state at the exact state at t equals the constants to round-off
+    (and the independent 2.103–2.105 of ``_constants``); a perturbed state does not."""
+    i1, i3, mgl = 1.3, 0.6, 0.9
+    top = HeavyTop(i1, i3, mgl, 0.7, theta_dot=0.2, phi_dot=-0.4, psi_dot=8.0)
+    c0 = HeavyTop.constants_of_state(i1, i3, mgl, 0.7, 0.2, -0.4, 8.0)
+    assert (c0["p_phi"], c0["p_psi"], c0["energy"]) == (top.p_phi, top.p_psi, top.energy)
+    ts = np.linspace(0.0, 6.0, 25)
+    _, th, _ = top.euler_angles(ts)
+    phd, thd, psd = top.euler_rates(ts)
+    for k in range(ts.size):
+        c = HeavyTop.constants_of_state(i1, i3, mgl, th[k], thd[k], phd[k], psd[k])
+        ref = _constants(i1, i3, mgl, th[k], thd[k], phd[k], psd[k])
+        assert c["energy"] == pytest.approx(top.energy, abs=ROUND_OFF * 50)
+        assert c["p_phi"] == pytest.approx(top.p_phi, abs=ROUND_OFF * 10)
+        assert c["p_psi"] == pytest.approx(top.p_psi, abs=ROUND_OFF * 10)
+        assert (c["p_phi"], c["p_psi"], c["energy"]) == pytest.approx(ref, abs=ROUND_OFF * 50)
+    k = int(np.argmax(np.abs(thd)))
+    bad = HeavyTop.constants_of_state(i1, i3, mgl, th[k], thd[k] + 1e-6, phd[k], psd[k])
+    assert abs(bad["energy"] - top.energy) > 1e-8
+    deg = HeavyTop.constants_of_state(i1, i3, mgl, math.degrees(0.7), math.degrees(0.2), math.degrees(-0.4),
+                                      math.degrees(8.0), degrees=True)
+    assert deg["energy"] == pytest.approx(top.energy, abs=ROUND_OFF)
+    with pytest.raises(ps.PoinsotError, match="^theta"):
+        HeavyTop.constants_of_state(i1, i3, mgl, 4.0, 0.0, 0.0, 1.0)
+    with pytest.raises(ps.PoinsotError, match="^psi_dot"):
+        HeavyTop.constants_of_state(i1, i3, mgl, 1.0, 0.0, 0.0, math.nan)
+
+
+def test_from_spin_sets_omega3_and_psi_dot_by_2_99() -> None:
+    top = HeavyTop.from_spin(1.0, 0.5, 1.0, 0.7, 9.0, phi_dot=-0.4, theta_dot=0.3)
+    assert top.omega3 == pytest.approx(9.0, abs=ROUND_OFF)
+    s = top.initial_state
+    assert s["psi_dot"] == pytest.approx(9.0 + 0.4 * math.cos(0.7), abs=ROUND_OFF)
+    assert (s["theta"], s["phi_dot"], s["theta_dot"]) == (0.7, -0.4, 0.3)
+    ref = HeavyTop(1.0, 0.5, 1.0, 0.7, phi_dot=-0.4, theta_dot=0.3, psi_dot=s["psi_dot"])
+    assert top.energy == ref.energy and top.p_phi == ref.p_phi
+    deg = HeavyTop.from_spin(1.0, 0.5, 1.0, 40.0, math.degrees(9.0), degrees=True)
+    assert deg.omega3 == pytest.approx(9.0, abs=ROUND_OFF)
+    with pytest.raises(ps.PoinsotError, match="^omega3"):
+        HeavyTop.from_spin(1.0, 0.5, 1.0, 0.7, math.inf)

@@ -329,6 +329,57 @@ def poinsot_case(params: dict[str, Any], t: float) -> dict[str, Any]:
 
 POINSOT = {"view": "Poinsot ellipsoid", "axis": "intermediate", "eps": 0.05, "spin": 4,
            "a": 0.24, "b": 0.16, "c": 0.04}
+def heavytop_case(params: dict[str, Any], t: float) -> dict[str, Any]:
+    """The heavy top (2.102–2.121): the page's preset → initial state (θ̇₀ = 0 and φ̇₀ a fraction of
+    the slow steady-precession rate; sleeping: θ₀ = 0; custom: the sliders), then the readouts."""
+    i1, i3, mgl, w3 = params["I1"], params["I3"], params["mgl"], params["w3"]
+    theta0 = params["theta0"] * DEG
+    preset = params["preset"]
+    theta_dot0, phi_dot0 = 0.0, 0.0
+    if preset == "sleeping":
+        theta0 = 0.0
+    elif preset == "custom":
+        theta_dot0, phi_dot0 = params["thetaDot0"], params["phiDot0"]
+    elif preset != "cusps":
+        slow = poinsot.HeavyTop.steady_precession(i1, i3, mgl, theta0, w3).slow
+        phi_dot0 = {"loops": -0.5, "waves": 0.5, "steady precession": 1.0}[preset] * slow
+    top = poinsot.HeavyTop.from_spin(i1, i3, mgl, theta0, w3, theta_dot=theta_dot0, phi_dot=phi_dot0)
+    phi, theta, psi = top.euler_angles(t)
+    phi_dot, theta_dot, psi_dot = top.euler_rates(t)
+    now = poinsot.HeavyTop.constants_of_state(i1, i3, mgl, theta, theta_dot, phi_dot, psi_dot)
+    init = top.initial_state
+    min_spin = poinsot.HeavyTop.min_spin(i1, i3, mgl, theta0)
+    steady: list[float] = []
+    if abs(w3) >= min_spin:
+        steady = list(poinsot.HeavyTop.steady_precession_rates(i1, i3, mgl, theta0, w3))
+    readouts = {
+        "t": t,
+        "angles": [phi, theta, psi],
+        "rates": [phi_dot, theta_dot, psi_dot],
+        "motionClass": top.motion_class,
+        "initialRates": [init["phi_dot"], init["theta_dot"], init["psi_dot"]],
+        "omega3": top.omega3,
+        "turningPoints": list(top.turning_points),
+        "nutationPeriod": top.nutation_period,
+        "meanPrecessionRate": top.mean_precession_rate,
+        "steadyRates": steady,
+        "minSpin": min_spin,
+        "sleepingThreshold": poinsot.HeavyTop.sleeping_threshold(i1, i3, mgl),
+        "sleepsStably": top.is_sleeping_stable,
+        "energy": top.energy,
+        "energyNow": now["energy"],
+        "pPhi": top.p_phi,
+        "pPhiNow": now["p_phi"],
+        "pPsi": top.p_psi,
+        "pPsiNow": now["p_psi"],
+        "reducedEnergy": top.reduced_energy,
+        "potentialNow": top.effective_potential(theta),
+    }
+    return {"scene": "heavytop", "params": params, "t": t, "readouts": readouts}
+
+
+HEAVYTOP = {"preset": "loops", "w3": 9, "theta0": 50, "phiDot0": 0.5, "thetaDot0": 0, "mgl": 1.5,
+            "I1": 1, "I3": 0.5}
 
 
 EULER = {"seq": "zxz", "convention": "intrinsic", "phi": 30, "theta": 40, "psi": 20,
@@ -366,6 +417,12 @@ def cases() -> list[dict[str, Any]]:
         poinsot_case({**POINSOT, "view": "tumbling box", "eps": 0.01, "spin": 6.5}, 11.75),
         poinsot_case({**POINSOT, "axis": "smallest", "eps": 0.3, "a": 0.1, "b": 0.3, "c": 0.18}, 40.0),
         poinsot_case({**POINSOT, "axis": "largest", "eps": 0.8, "spin": 2.5}, 0.0),
+        heavytop_case(HEAVYTOP, 3.7),  # loops
+        heavytop_case({**HEAVYTOP, "preset": "cusps", "w3": 12, "theta0": 30}, 5.25),
+        heavytop_case({**HEAVYTOP, "preset": "waves", "mgl": 2, "I1": 1.2, "I3": 0.7}, 1.1),
+        heavytop_case({**HEAVYTOP, "preset": "steady precession", "theta0": 120}, 2.0),
+        heavytop_case({**HEAVYTOP, "preset": "sleeping", "w3": 7}, 1.0),
+        heavytop_case({**HEAVYTOP, "preset": "custom", "theta0": 100, "phiDot0": -1.2, "thetaDot0": 0.7}, 4.0),
     ]
 
 

@@ -59,6 +59,23 @@ impl PyHeavyTop {
         Ok(Self { inner: HeavyTop::new(i1, i3, mgl, state).py()? })
     }
 
+    /// The top started from Euler angles, φ̇, θ̇ and the spin ω₃ (ψ̇ = ω₃ − φ̇ cos θ, 2.99).
+    #[staticmethod]
+    #[allow(clippy::too_many_arguments)]
+    fn from_spin(
+        i1: f64,
+        i3: f64,
+        mgl: f64,
+        phi: f64,
+        theta: f64,
+        psi: f64,
+        phi_dot: f64,
+        theta_dot: f64,
+        omega3: f64,
+    ) -> PyResult<Self> {
+        Ok(Self { inner: HeavyTop::with_spin(i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, omega3).py()? })
+    }
+
     /// The top given by p_φ, p_ψ (kg·m²/s) and E (J); t = 0 at the upper turning point.
     #[staticmethod]
     fn from_constants(i1: f64, i3: f64, mgl: f64, p_phi: f64, p_psi: f64, energy: f64) -> PyResult<Self> {
@@ -202,6 +219,22 @@ fn heavy_top_lagrangian(i1: f64, i3: f64, mgl: f64, theta: f64, theta_dot: f64, 
     analytic::lagrangian(i1, i3, mgl, &s).py()
 }
 
+/// (p_φ, p_ψ, E) of one state (2.103–2.105), for the drift of a solution.
+#[pyfunction]
+fn heavy_top_constants_of_state(
+    i1: f64,
+    i3: f64,
+    mgl: f64,
+    theta: f64,
+    theta_dot: f64,
+    phi_dot: f64,
+    psi_dot: f64,
+) -> PyResult<(f64, f64, f64)> {
+    let s = EulerState { theta, theta_dot, phi_dot, psi_dot, ..EulerState::default() };
+    let c = analytic::constants_of_state(i1, i3, mgl, &s).py()?;
+    Ok((c.p_phi, c.p_psi, c.energy))
+}
+
 /// Registers the heavy-top class and functions.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyHeavyTop>()?;
@@ -209,5 +242,6 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(heavy_top_min_spin, m)?)?;
     m.add_function(wrap_pyfunction!(heavy_top_sleeping_threshold, m)?)?;
     m.add_function(wrap_pyfunction!(heavy_top_lagrangian, m)?)?;
+    m.add_function(wrap_pyfunction!(heavy_top_constants_of_state, m)?)?;
     Ok(())
 }

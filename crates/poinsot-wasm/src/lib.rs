@@ -13,7 +13,7 @@
 //! logged by [`console_error_panic_hook`] and surfaces in JavaScript as a thrown `RuntimeError`.
 //!
 //! Naming: functions and methods use JavaScript's camelCase (`eulerToMatrix`), classes keep the
-//! Python API's names (`FreeSymmetricTop`, `RigidBody`, `Earth`, `MovingFrame`).
+//! Python API's names (`FreeSymmetricTop`, `RigidBody`, `Earth`, `MovingFrame`, `HeavyTop`).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -22,6 +22,7 @@ pub mod convert;
 pub mod earth;
 pub mod frames;
 pub mod free;
+pub mod heavy_top;
 pub mod inertia;
 pub mod rotation;
 

@@ -2,7 +2,8 @@
 //! classes, steady precession and the errata of the unit's 2.117 and 2.120.
 
 use poinsot::analytic::{
-    lagrangian, min_spin, sleeping_threshold, steady_precession, EulerState, HeavyTop, MotionClass,
+    constants_of_state, lagrangian, min_spin, sleeping_threshold, steady_precession, EulerState,
+    HeavyTop, MotionClass,
 };
 use poinsot::ErrorKind;
 use proptest::prelude::*;
@@ -550,4 +551,130 @@ proptest! {
             }
         }
     }
+}
+
+/// `constants_of_state` at the initial state is bit-identical to the top's constants; at the
+/// exact state at time t it equals them to round-off (the drift of the solution); the energy agrees
+/// with an independent form, ½ Σ Iᵢωᵢ² + m g l cos θ from the body angular velocity of the z-x-z
+/// Euler rates; a state perturbed by 1e-5 in θ̇ is detected (negative control).
+#[test]
+fn constants_of_state_equal_the_constants_along_the_motion() {
+    let (i1, i3, mgl) = (1.3, 0.7, 2.0);
+    for (th0, thd, phd, psd) in [
+        (0.6, 0.0, 0.0, 9.0),  // cusps
+        (0.6, 0.0, 1.5, 9.0),  // waves
+        (0.6, 0.0, -1.0, 9.0), // loops
+        (2.4, 0.4, 0.3, 1.0),  // below the horizontal
+    ] {
+        let st0 = EulerState {
+            phi: 0.3,
+            theta: th0,
+            psi: -0.2,
+            phi_dot: phd,
+            theta_dot: thd,
+            psi_dot: psd,
+        };
+        let t = HeavyTop::new(i1, i3, mgl, st0).unwrap();
+        let c0 = constants_of_state(i1, i3, mgl, &st0).unwrap();
+        assert_eq!(
+            (c0.p_phi, c0.p_psi, c0.energy),
+            (t.p_phi(), t.p_psi(), t.energy())
+        );
+        let scale_e = t.energy().abs() + 0.5 * i3 * t.omega3().powi(2) + mgl;
+        let scale_p = t.p_phi().abs() + t.p_psi().abs();
+        for k in 0..40 {
+            let time = 0.137 * k as f64;
+            let [ph, th, ps] = t.euler_angles(time);
+            let [phd, thd, psd] = t.euler_rates(time);
+            let st = EulerState {
+                phi: ph,
+                theta: th,
+                psi: ps,
+                phi_dot: phd,
+                theta_dot: thd,
+                psi_dot: psd,
+            };
+            let c = constants_of_state(i1, i3, mgl, &st).unwrap();
+            assert!(
+                (c.energy - t.energy()).abs() <= 1e-12 * scale_e,
+                "E at {time}"
+            );
+            assert!(
+                (c.p_phi - t.p_phi()).abs() <= 1e-12 * scale_p,
+                "p_phi at {time}"
+            );
+            assert!(
+                (c.p_psi - t.p_psi()).abs() <= 1e-12 * scale_p,
+                "p_psi at {time}"
+            );
+            // Independent: body ω of the z-x-z rates, T = ½ Σ Iᵢ ωᵢ².
+            let (sth, cth) = th.sin_cos();
+            let (sps, cps) = ps.sin_cos();
+            let w1 = phd * sth * sps + thd * cps;
+            let w2 = phd * sth * cps - thd * sps;
+            let w3 = phd * cth + psd;
+            let e = 0.5 * (i1 * (w1 * w1 + w2 * w2) + i3 * w3 * w3) + mgl * cth;
+            assert!(
+                (c.energy - e).abs() <= 1e-12 * scale_e,
+                "E vs body omega at {time}"
+            );
+            // Negative control: θ̇ off by 1e-5 rad/s shows in E (ΔE ≈ I₁ θ̇ · 1e-5, far above
+            // the tolerance wherever |θ̇| > 0.05).
+            if thd.abs() > 0.05 {
+                let bad = EulerState {
+                    theta_dot: thd + 1e-5,
+                    ..st
+                };
+                let cb = constants_of_state(i1, i3, mgl, &bad).unwrap();
+                assert!((cb.energy - t.energy()).abs() > 10.0 * 1e-12 * scale_e);
+            }
+        }
+    }
+    let st = EulerState {
+        theta: 4.0,
+        ..Default::default()
+    };
+    let e = constants_of_state(1.0, 0.5, 1.0, &st).unwrap_err();
+    assert!(e.to_string().starts_with("theta"), "{e}");
+    let st = EulerState {
+        theta: 1.0,
+        psi_dot: f64::NAN,
+        ..Default::default()
+    };
+    assert!(constants_of_state(1.0, 0.5, 1.0, &st)
+        .unwrap_err()
+        .to_string()
+        .starts_with("psi_dot"));
+    assert!(constants_of_state(1.0, 3.0, 1.0, &st)
+        .unwrap_err()
+        .to_string()
+        .starts_with("I3"));
+}
+
+/// `with_spin` sets ψ̇ = ω₃ − φ̇ cos θ (2.99): the top's ω₃ is the given spin (to round-off) and
+/// its initial ψ̇ satisfies 2.99 against an independent evaluation; errors name the argument.
+#[test]
+fn with_spin_gives_the_requested_omega3() {
+    for (th, phd, w3) in [
+        (0.7, -0.4, 9.0),
+        (0.0, 0.5, 6.0),
+        (2.0, 1.5, -3.0),
+        (1.2, 0.0, 0.0),
+    ] {
+        let t = HeavyTop::with_spin(1.0, 0.5, 1.0, 0.1, th, 0.2, phd, 0.3, w3).unwrap();
+        assert!(
+            (t.omega3() - w3).abs() <= 1e-14 * (1.0 + w3.abs() + phd.abs()),
+            "{th} {phd} {w3}"
+        );
+        let s = t.initial_state();
+        assert_eq!(
+            (s.phi, s.theta, s.psi, s.phi_dot, s.theta_dot),
+            (0.1, th, 0.2, phd, 0.3)
+        );
+        assert!((s.psi_dot + s.phi_dot * th.cos() - w3).abs() <= 1e-14 * (1.0 + w3.abs()));
+    }
+    let e = HeavyTop::with_spin(1.0, 0.5, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, f64::INFINITY).unwrap_err();
+    assert!(e.to_string().starts_with("omega3"), "{e}");
+    let e = HeavyTop::with_spin(1.0, 0.5, 1.0, 0.0, -1.0, 0.0, 0.0, 0.0, 1.0).unwrap_err();
+    assert!(e.to_string().starts_with("theta"), "{e}");
 }

@@ -209,6 +209,35 @@ impl HeavyTop {
         )
     }
 
+    /// The top started at time 0 from the angles φ, θ, ψ (rad), the rates φ̇, θ̇ (rad/s) and the
+    /// spin ω₃ (rad/s) instead of ψ̇: the state of [`HeavyTop::new`] with ψ̇ = ω₃ − φ̇ cos θ (2.99),
+    /// so that p_ψ = I₃ω₃ (2.103) whatever φ̇. Errors as [`HeavyTop::new`], `omega3` (finite).
+    #[allow(clippy::too_many_arguments)]
+    pub fn with_spin(
+        i1: f64,
+        i3: f64,
+        mgl: f64,
+        phi: f64,
+        theta: f64,
+        psi: f64,
+        phi_dot: f64,
+        theta_dot: f64,
+        omega3: f64,
+    ) -> Result<Self> {
+        check_theta("theta", theta)?;
+        check_finite("phi_dot", &[phi_dot])?;
+        check_finite("omega3", &[omega3])?;
+        let state = EulerState {
+            phi,
+            theta,
+            psi,
+            phi_dot,
+            theta_dot,
+            psi_dot: omega3 - phi_dot * theta.cos(), // 2.99
+        };
+        Self::new(i1, i3, mgl, state)
+    }
+
     /// The top given by its constants of motion instead of an initial state: p_φ and p_ψ
     /// (kg·m²/s, 2.103–2.104) and the total energy E (J, 2.105). Time 0 is then a moment when
     /// the axis is at its upper turning point θ₁, with φ = ψ = 0 there.
@@ -553,6 +582,49 @@ pub fn lagrangian(i1: f64, i3: f64, mgl: f64, state: &EulerState) -> Result<f64>
         0.5 * i1 * (state.theta_dot.powi(2) + (state.phi_dot * s).powi(2)) + 0.5 * i3 * w3 * w3
             - mgl * c,
     )
+}
+
+/// The constants of the motion evaluated at one state: p_φ, p_ψ and E (see
+/// [`constants_of_state`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StateConstants {
+    /// p_φ = I₁ φ̇ sin²θ + p_ψ cos θ (kg·m²/s, 2.104): the vertical angular momentum L_Z.
+    pub p_phi: f64,
+    /// p_ψ = I₃ (ψ̇ + φ̇ cos θ) = I₃ ω₃ (kg·m²/s, 2.99, 2.103).
+    pub p_psi: f64,
+    /// E = ½ I₁ (θ̇² + φ̇² sin²θ) + ½ I₃ ω₃² + m g l cos θ (J, 2.105).
+    pub energy: f64,
+}
+
+/// p_φ, p_ψ and E (2.103–2.105) of the heavy symmetric top at one state (angles in rad, rates in
+/// rad/s; φ and ψ do not enter). Along an exact motion they equal [`HeavyTop::p_phi`],
+/// [`HeavyTop::p_psi`] and [`HeavyTop::energy`] to round-off: evaluated at the state of
+/// [`HeavyTop::euler_angles`] and [`HeavyTop::euler_rates`] at time t, their difference from the
+/// constants is the drift of the solution. Uses the same arithmetic as [`HeavyTop::new`], so at
+/// the initial state they are bit-identical. Errors name `I1`, `I3`, `mgl`, `theta` (in [0, π])
+/// and the rates `phi_dot`, `theta_dot`, `psi_dot` (finite).
+pub fn constants_of_state(
+    i1: f64,
+    i3: f64,
+    mgl: f64,
+    state: &EulerState,
+) -> Result<StateConstants> {
+    check_top(i1, i3, mgl)?;
+    check_theta("theta", state.theta)?;
+    check_finite("phi_dot", &[state.phi_dot])?;
+    check_finite("theta_dot", &[state.theta_dot])?;
+    check_finite("psi_dot", &[state.psi_dot])?;
+    let (s, c) = state.theta.sin_cos();
+    let omega3 = state.psi_dot + state.phi_dot * c; // 2.99
+    let p_psi = i3 * omega3; // 2.103
+    let a = p_psi / i1;
+    let ps = state.phi_dot * (s * s);
+    let tperp = state.theta_dot * state.theta_dot + state.phi_dot * ps;
+    Ok(StateConstants {
+        p_phi: i1 * (ps + a * c), // 2.104
+        p_psi,
+        energy: (0.5 * i1 * tperp + mgl * c) + 0.5 * i3 * omega3 * omega3, // 2.105
+    })
 }
 
 /// w = 1 − cos θ and v = 1 + cos θ without cancellation.

@@ -1,0 +1,456 @@
+//! Bindings of `poinsot::analytic`'s heavy symmetric top (`poinsot.HeavyTop` in Python; the
+//! unit's 2.98–2.121): its constants, turning points, motion class, effective potential and the
+//! exact Euler angles (z-x-z: φ about Z, θ about the line of nodes, ψ about axis 3) at any time.
+//! Angles in rad, rates in rad/s, times in s. Batches are flat: N times in, N×3 numbers out
+//! (row-major, `[φ₀, θ₀, ψ₀, φ₁, ...]`).
+
+use crate::convert::{finite, finite1, Failure, Out};
+use poinsot::analytic as an;
+use poinsot::rotation::{euler_to_matrix_batch, EulerSequence};
+use wasm_bindgen::prelude::wasm_bindgen;
+
+/// A heavy symmetric top with its exact motion (`poinsot.HeavyTop` in Python).
+#[wasm_bindgen]
+#[derive(Debug, Clone)]
+pub struct HeavyTop {
+    inner: an::HeavyTop,
+}
+
+/// The steady-precession rates at one nutation angle and spin (`poinsot.SteadyPrecession`).
+#[wasm_bindgen]
+#[derive(Debug, Clone, Copy)]
+pub struct SteadyPrecession {
+    inner: an::SteadyPrecession,
+}
+
+#[wasm_bindgen]
+impl SteadyPrecession {
+    /// The exact slow rate (rad/s), the root of 2.116 of smaller magnitude.
+    #[wasm_bindgen(getter)]
+    pub fn slow(&self) -> f64 {
+        self.inner.slow
+    }
+    /// The exact fast rate (rad/s); `Infinity` at θ₀ = π/2.
+    #[wasm_bindgen(getter)]
+    pub fn fast(&self) -> f64 {
+        self.inner.fast
+    }
+    /// The unit's 2.121, m g l / p_ψ (rad/s).
+    #[wasm_bindgen(getter, js_name = slowApprox)]
+    pub fn slow_approx(&self) -> f64 {
+        self.inner.slow_approx
+    }
+    /// The unit's 2.120 corrected, p_ψ / (I₁ cos θ₀) (rad/s).
+    #[wasm_bindgen(getter, js_name = fastApprox)]
+    pub fn fast_approx(&self) -> f64 {
+        self.inner.fast_approx
+    }
+    /// The minimum spin 2.119 at this angle (rad/s).
+    #[wasm_bindgen(getter, js_name = minSpin)]
+    pub fn min_spin(&self) -> f64 {
+        self.inner.min_spin
+    }
+}
+
+fn time_ok(t: f64) -> Out<()> {
+    Ok(poinsot::error::check_finite("t", &[t])?)
+}
+
+/// Renames the core's `times` (its batch argument) to the binding's `t`.
+fn times_as_t(e: poinsot::Error) -> Failure {
+    let mut e = e;
+    if e.argument == "times" {
+        e.argument = "t".into();
+    }
+    Failure::from(e)
+}
+
+#[wasm_bindgen]
+impl HeavyTop {
+    /// The top with moments `i1` (about a transverse axis through the pivot) and `i3` (about the
+    /// symmetry axis, kg·m²) and `mgl` = m g l (N·m), started at t = 0 from θ = `theta` (rad) with
+    /// the rates `theta_dot`, `phi_dot`, `psi_dot` (rad/s), φ = ψ = 0. Errors name `I1`, `I3`,
+    /// `mgl`, `theta` (in [0, π]) or the rate.
+    #[wasm_bindgen(constructor)]
+    pub fn new(
+        i1: f64,
+        i3: f64,
+        mgl: f64,
+        theta: f64,
+        theta_dot: f64,
+        phi_dot: f64,
+        psi_dot: f64,
+    ) -> Out<HeavyTop> {
+        let state = an::EulerState {
+            theta,
+            theta_dot,
+            phi_dot,
+            psi_dot,
+            ..Default::default()
+        };
+        Ok(HeavyTop {
+            inner: an::HeavyTop::new(i1, i3, mgl, state)?,
+        })
+    }
+
+    /// The top started at θ = `theta` with θ̇, φ̇ and the spin `omega3` (rad/s) given instead of ψ̇
+    /// (ψ̇ = ω₃ − φ̇ cos θ, 2.99; `HeavyTop.from_spin` in Python), φ = ψ = 0.
+    #[wasm_bindgen(js_name = fromSpin)]
+    pub fn from_spin(
+        i1: f64,
+        i3: f64,
+        mgl: f64,
+        theta: f64,
+        theta_dot: f64,
+        phi_dot: f64,
+        omega3: f64,
+    ) -> Out<HeavyTop> {
+        Ok(HeavyTop {
+            inner: an::HeavyTop::with_spin(
+                i1, i3, mgl, 0.0, theta, 0.0, phi_dot, theta_dot, omega3,
+            )?,
+        })
+    }
+
+    /// The top with the constants p_φ, p_ψ (kg·m²/s) and E (J); t = 0 at the upper turning point.
+    #[wasm_bindgen(js_name = fromConstants)]
+    pub fn from_constants(
+        i1: f64,
+        i3: f64,
+        mgl: f64,
+        p_phi: f64,
+        p_psi: f64,
+        energy: f64,
+    ) -> Out<HeavyTop> {
+        Ok(HeavyTop {
+            inner: an::HeavyTop::from_constants(i1, i3, mgl, p_phi, p_psi, energy)?,
+        })
+    }
+
+    /// I₁ (kg·m²).
+    #[wasm_bindgen(getter, js_name = I1)]
+    pub fn i1(&self) -> f64 {
+        self.inner.i1()
+    }
+    /// I₃ (kg·m²).
+    #[wasm_bindgen(getter, js_name = I3)]
+    pub fn i3(&self) -> f64 {
+        self.inner.i3()
+    }
+    /// m g l (N·m).
+    #[wasm_bindgen(getter)]
+    pub fn mgl(&self) -> f64 {
+        self.inner.mgl()
+    }
+    /// p_φ = I₁ φ̇ sin²θ + p_ψ cos θ (kg·m²/s, 2.104), conserved.
+    #[wasm_bindgen(getter, js_name = pPhi)]
+    pub fn p_phi(&self) -> f64 {
+        self.inner.p_phi()
+    }
+    /// p_ψ = I₃ ω₃ (kg·m²/s, 2.103), conserved.
+    #[wasm_bindgen(getter, js_name = pPsi)]
+    pub fn p_psi(&self) -> f64 {
+        self.inner.p_psi()
+    }
+    /// The spin ω₃ = ψ̇ + φ̇ cos θ (rad/s, 2.99), constant.
+    #[wasm_bindgen(getter)]
+    pub fn omega3(&self) -> f64 {
+        self.inner.omega3()
+    }
+    /// The total energy E (J, 2.105), conserved.
+    #[wasm_bindgen(getter)]
+    pub fn energy(&self) -> f64 {
+        self.inner.energy()
+    }
+    /// E' = E − p_ψ²/(2I₃) = ½ I₁ θ̇² + V(θ) (J, 2.109).
+    #[wasm_bindgen(getter, js_name = reducedEnergy)]
+    pub fn reduced_energy(&self) -> f64 {
+        self.inner.reduced_energy()
+    }
+    /// The state at t = 0: `[φ, θ, ψ, φ̇, θ̇, ψ̇]`.
+    #[wasm_bindgen(getter, js_name = initialState)]
+    pub fn initial_state(&self) -> Vec<f64> {
+        let s = self.inner.initial_state();
+        vec![s.phi, s.theta, s.psi, s.phi_dot, s.theta_dot, s.psi_dot]
+    }
+    /// The turning points `[θ₁, θ₂]` (rad), θ₁ ≤ θ₂ (2.109–2.110).
+    #[wasm_bindgen(getter, js_name = turningPoints)]
+    pub fn turning_points(&self) -> Vec<f64> {
+        let (a, b) = self.inner.turning_points();
+        vec![a, b]
+    }
+    /// `[u₁, u₂, u₃]`, the roots of the cubic in u = cos θ (u₃ = `Infinity` when m g l = 0).
+    #[wasm_bindgen(getter, js_name = cubicRoots)]
+    pub fn cubic_roots(&self) -> Vec<f64> {
+        let (a, b, c) = self.inner.cubic_roots();
+        vec![a, b, c]
+    }
+    /// The shape of the axis' path: "waves", "loops", "cusps", "steady precession", "sleeping",
+    /// "hanging" or "through vertical".
+    #[wasm_bindgen(getter, js_name = motionClass)]
+    pub fn motion_class(&self) -> String {
+        self.inner.motion_class().name().to_string()
+    }
+    /// Whether this spin keeps an upright top asleep: ω₃² > 4 m g l I₁ / I₃².
+    #[wasm_bindgen(getter, js_name = isSleepingStable)]
+    pub fn is_sleeping_stable(&self) -> bool {
+        self.inner.is_sleeping_stable()
+    }
+    /// The period of θ(t) (s); for steady motion that of small nutations about it; `Infinity`
+    /// where θ never returns (an unstable sleeping top), as in Python.
+    #[wasm_bindgen(getter, js_name = nutationPeriod)]
+    pub fn nutation_period(&self) -> f64 {
+        self.inner.nutation_period().unwrap_or(f64::INFINITY)
+    }
+    /// The mean of φ̇ over a nutation period (rad/s).
+    #[wasm_bindgen(getter, js_name = meanPrecessionRate)]
+    pub fn mean_precession_rate(&self) -> f64 {
+        self.inner.mean_precession_rate()
+    }
+    /// The mean of ψ̇ over a nutation period (rad/s).
+    #[wasm_bindgen(getter, js_name = meanSpinRate)]
+    pub fn mean_spin_rate(&self) -> f64 {
+        self.inner.mean_spin_rate()
+    }
+
+    /// V(θ) (J, 2.110) at each θ of `theta` (rad, in [0, π]); `Infinity` at a pole unless the
+    /// numerator vanishes there. Errors name `theta`.
+    #[wasm_bindgen(js_name = effectivePotential)]
+    pub fn effective_potential(&self, theta: &[f64]) -> Out<Vec<f64>> {
+        theta
+            .iter()
+            .map(|&th| {
+                let v = self.inner.effective_potential(th)?;
+                if v.is_nan() {
+                    return Err(Failure::invalid("theta", "V(theta) is not a number"));
+                }
+                Ok(v)
+            })
+            .collect()
+    }
+    /// dV/dθ (N·m, 2.113) at each θ of `theta` (rad). Errors name `theta`.
+    #[wasm_bindgen(js_name = effectivePotentialDerivative)]
+    pub fn effective_potential_derivative(&self, theta: &[f64]) -> Out<Vec<f64>> {
+        theta
+            .iter()
+            .map(|&th| {
+                let v = self.inner.effective_potential_derivative(th)?;
+                if v.is_nan() {
+                    return Err(Failure::invalid("theta", "dV/dtheta is not a number"));
+                }
+                Ok(v)
+            })
+            .collect()
+    }
+
+    /// The exact Euler angles at the times `t` (s): N×3 numbers `[φ, θ, ψ]` per time (rad).
+    #[wasm_bindgen(js_name = eulerAngles)]
+    pub fn euler_angles(&self, t: &[f64]) -> Out<Vec<f64>> {
+        let mut out = vec![0.0; 3 * t.len()];
+        self.inner
+            .euler_angles_into(t, &mut out)
+            .map_err(times_as_t)?;
+        finite("euler_angles", out)
+    }
+    /// The Euler-angle rates at the times `t` (s): N×3 numbers `[φ̇, θ̇, ψ̇]` (rad/s).
+    #[wasm_bindgen(js_name = eulerRates)]
+    pub fn euler_rates(&self, t: &[f64]) -> Out<Vec<f64>> {
+        let mut out = vec![0.0; 3 * t.len()];
+        self.inner
+            .euler_rates_into(t, &mut out)
+            .map_err(times_as_t)?;
+        finite("euler_rates", out)
+    }
+    /// Angles and rates at one time `t` (s): `[φ, θ, ψ, φ̇, θ̇, ψ̇]`.
+    pub fn state(&self, t: f64) -> Out<Vec<f64>> {
+        time_ok(t)?;
+        let a = self.inner.euler_angles(t);
+        let r = self.inner.euler_rates(t);
+        finite("state", vec![a[0], a[1], a[2], r[0], r[1], r[2]])
+    }
+    /// The attitudes R(t) = R_z(φ) R_x(θ) R_z(ψ) at the times `t`: N×9 numbers (row-major, body
+    /// to space components).
+    pub fn attitude(&self, t: &[f64]) -> Out<Vec<f64>> {
+        let angles = self.euler_angles(t)?;
+        let mut out = vec![0.0; 9 * t.len()];
+        euler_to_matrix_batch(EulerSequence::new("zxz", true)?, &angles, &mut out)?;
+        finite("attitude", out)
+    }
+    /// The symmetry axis (body axis 3, a unit vector in space components) at the times `t`: N×3
+    /// numbers — the points that trace waves, loops or cusps on the unit sphere.
+    #[wasm_bindgen(js_name = symmetryAxis)]
+    pub fn symmetry_axis(&self, t: &[f64]) -> Out<Vec<f64>> {
+        let mats = self.attitude(t)?;
+        Ok(mats
+            .chunks_exact(9)
+            .flat_map(|r| [r[2], r[5], r[8]])
+            .collect())
+    }
+
+    /// Both steady-precession rates at `theta0` (rad) and spin `omega3` (rad/s), 2.114–2.121.
+    /// Errors name `omega3` below the minimum spin 2.119 (the message gives it).
+    #[wasm_bindgen(js_name = steadyPrecession)]
+    pub fn steady_precession(
+        i1: f64,
+        i3: f64,
+        mgl: f64,
+        theta0: f64,
+        omega3: f64,
+    ) -> Out<SteadyPrecession> {
+        Ok(SteadyPrecession {
+            inner: an::steady_precession(i1, i3, mgl, theta0, omega3)?,
+        })
+    }
+    /// The minimum spin for steady precession at `theta0` (rad/s, 2.119).
+    #[wasm_bindgen(js_name = minSpin)]
+    pub fn min_spin(i1: f64, i3: f64, mgl: f64, theta0: f64) -> Out<f64> {
+        finite1("min_spin", an::min_spin(i1, i3, mgl, theta0)?)
+    }
+    /// The spin above which an upright top sleeps stably, 2√(m g l I₁)/I₃ (rad/s).
+    #[wasm_bindgen(js_name = sleepingThreshold)]
+    pub fn sleeping_threshold(i1: f64, i3: f64, mgl: f64) -> Out<f64> {
+        finite1("sleeping_threshold", an::sleeping_threshold(i1, i3, mgl)?)
+    }
+    /// The Lagrangian 2.102 (J) at one state (rad, rad/s).
+    pub fn lagrangian(
+        i1: f64,
+        i3: f64,
+        mgl: f64,
+        theta: f64,
+        theta_dot: f64,
+        phi_dot: f64,
+        psi_dot: f64,
+    ) -> Out<f64> {
+        let s = an::EulerState {
+            theta,
+            theta_dot,
+            phi_dot,
+            psi_dot,
+            ..Default::default()
+        };
+        finite1("lagrangian", an::lagrangian(i1, i3, mgl, &s)?)
+    }
+    /// `[p_φ, p_ψ, E]` of one state (2.103–2.105; `HeavyTop.constants_of_state` in Python): at
+    /// the exact state at t they equal the constants to round-off (their drift).
+    #[wasm_bindgen(js_name = constantsOfState)]
+    pub fn constants_of_state(
+        i1: f64,
+        i3: f64,
+        mgl: f64,
+        theta: f64,
+        theta_dot: f64,
+        phi_dot: f64,
+        psi_dot: f64,
+    ) -> Out<Vec<f64>> {
+        let s = an::EulerState {
+            theta,
+            theta_dot,
+            phi_dot,
+            psi_dot,
+            ..Default::default()
+        };
+        let c = an::constants_of_state(i1, i3, mgl, &s)?;
+        finite("constants", vec![c.p_phi, c.p_psi, c.energy])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Round-off of O(1) quantities after a few dozen operations.
+    const ROUND_OFF: f64 = 1e-12;
+
+    #[test]
+    fn binding_matches_the_core_and_keeps_the_constants() {
+        let top = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.7, 0.0, 0.0, 8.0).unwrap();
+        assert_eq!(top.motion_class(), "cusps");
+        let core = an::HeavyTop::with_spin(1.0, 0.5, 1.5, 0.0, 0.7, 0.0, 0.0, 0.0, 8.0).unwrap();
+        assert_eq!(top.energy(), core.energy());
+        let ts = [0.0, 0.4, 1.3];
+        let a = top.euler_angles(&ts).unwrap();
+        let r = top.euler_rates(&ts).unwrap();
+        for (k, &t) in ts.iter().enumerate() {
+            assert_eq!(&a[3 * k..3 * k + 3], &core.euler_angles(t)[..]);
+            let s = top.state(t).unwrap();
+            assert_eq!(&s[..3], &a[3 * k..3 * k + 3]);
+            assert_eq!(&s[3..], &r[3 * k..3 * k + 3]);
+            // The energy recomputed from the state is E to round-off (2.105).
+            let c = HeavyTop::constants_of_state(1.0, 0.5, 1.5, s[1], s[4], s[3], s[5]).unwrap();
+            assert!((c[2] - top.energy()).abs() < ROUND_OFF * (1.0 + top.energy().abs()));
+            assert!((c[0] - top.p_phi()).abs() < ROUND_OFF * (1.0 + top.p_psi().abs()));
+            let (t1, t2) = core.turning_points();
+            assert!(s[1] >= t1 - ROUND_OFF && s[1] <= t2 + ROUND_OFF);
+        }
+        // The symmetry axis is the third column of the zxz matrix: (sinθ sinφ, −sinθ cosφ, cosθ).
+        let axis = top.symmetry_axis(&ts).unwrap();
+        for k in 0..ts.len() {
+            let (ph, th) = (a[3 * k], a[3 * k + 1]);
+            let want = [th.sin() * ph.sin(), -th.sin() * ph.cos(), th.cos()];
+            for i in 0..3 {
+                assert!((axis[3 * k + i] - want[i]).abs() < ROUND_OFF);
+            }
+        }
+        let tp = top.turning_points();
+        let v = top.effective_potential(&tp).unwrap();
+        for x in v {
+            assert!((x - top.reduced_energy()).abs() < ROUND_OFF * (1.0 + x.abs()));
+        }
+        assert_eq!(top.initial_state()[1], 0.7);
+        assert!(top.nutation_period().is_finite());
+    }
+
+    #[test]
+    fn errors_name_the_argument() {
+        let msg = |r: Out<HeavyTop>| r.unwrap_err().message;
+        assert!(msg(HeavyTop::new(1.0, 0.5, 1.0, 4.0, 0.0, 0.0, 1.0)).starts_with("theta"));
+        assert!(msg(HeavyTop::new(1.0, 0.5, -1.0, 1.0, 0.0, 0.0, 1.0)).starts_with("mgl"));
+        let e = HeavyTop::new(1.0, 3.0, 1.0, 1.0, 0.0, 0.0, 1.0).unwrap_err();
+        assert_eq!(e.name, "InvalidInertiaError");
+        assert!(
+            msg(HeavyTop::from_spin(1.0, 0.5, 1.0, 1.0, 0.0, 0.0, f64::NAN)).starts_with("omega3")
+        );
+        let top = HeavyTop::new(1.0, 0.5, 1.0, 1.0, 0.0, 0.0, 6.0).unwrap();
+        assert!(top
+            .euler_angles(&[0.0, f64::NAN])
+            .unwrap_err()
+            .message
+            .starts_with("t:"));
+        assert!(top
+            .state(f64::INFINITY)
+            .unwrap_err()
+            .message
+            .starts_with("t:"));
+        assert!(top
+            .effective_potential(&[-0.1])
+            .unwrap_err()
+            .message
+            .starts_with("theta"));
+        let e = HeavyTop::steady_precession(1.0, 0.5, 1.0, 0.3, 0.1).unwrap_err();
+        assert!(e.message.starts_with("omega3"), "{}", e.message);
+        assert!(
+            HeavyTop::constants_of_state(1.0, 0.5, 1.0, 1.0, 0.0, f64::NAN, 1.0)
+                .unwrap_err()
+                .message
+                .starts_with("phi_dot")
+        );
+    }
+
+    #[test]
+    fn steady_and_sleeping_statics() {
+        let s = HeavyTop::steady_precession(1.0, 0.5, 1.5, 0.7, 8.0).unwrap();
+        // The slow root solves I₁ cos θ₀ φ̇² − p_ψ φ̇ + m g l = 0 (2.116).
+        let res = 0.7f64.cos() * s.slow() * s.slow() - 4.0 * s.slow() + 1.5;
+        assert!(res.abs() < ROUND_OFF);
+        let top = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.7, 0.0, s.slow(), 8.0).unwrap();
+        assert_eq!(top.motion_class(), "steady precession");
+        let thr = HeavyTop::sleeping_threshold(1.0, 0.5, 1.5).unwrap();
+        assert!((thr - 2.0 * 1.5f64.sqrt() / 0.5).abs() < ROUND_OFF);
+        assert_eq!(HeavyTop::min_spin(1.0, 0.5, 1.5, 0.0).unwrap(), thr);
+        let up = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.0, 0.0, 0.0, 1.01 * thr).unwrap();
+        assert_eq!(up.motion_class(), "sleeping");
+        assert!(up.is_sleeping_stable());
+        let weak = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.0, 0.0, 0.0, 0.99 * thr).unwrap();
+        assert!(!weak.is_sleeping_stable());
+    }
+}

@@ -1,0 +1,474 @@
+// The heavy symmetric top (the unit's 2.102–2.121): a top spinning on a pivot under gravity,
+// its attitude from the core's exact Euler angles (z-x-z: φ precession, θ nutation, ψ spin); the
+// tip of its axis traces waves, loops or cusps on a sphere between the turning circles θ₁, θ₂;
+// the inset plots the effective potential V(θ) (2.110) against the reduced energy E' (2.109).
+// Every number comes from the core: the motion (Jacobi elliptic functions), the constants, V(θ),
+// the steady-precession roots used by the presets, and the energy recomputed from the state at t.
+import * as THREE from "three";
+import { eulerToMatrix, HeavyTop } from "../wasm/poinsot_wasm.js";
+import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
+import { disposeTree, fixedAxes, matrix4 } from "../view";
+
+export const PRESETS = ["loops", "waves", "cusps", "steady precession", "sleeping", "custom"];
+
+/** The radius of the sphere the axis' tip moves on (the top's length from pivot to stem tip). */
+const R_TIP = 2;
+/** Samples of the dim path drawn ahead of time, and of V(θ) in the inset. */
+const PATH_SAMPLES = 3000;
+const V_SAMPLES = 240;
+/** The bright trail keeps this many points at most. */
+const TRAIL_CAPACITY = 4000;
+
+/** The initial state a preset starts from: θ₀ (rad), θ̇₀, φ̇₀ (rad/s), given the spin ω₃ (the
+ * steady-precession root comes from the core). Choosing initial conditions is not physics:
+ * each preset is a fraction of the core's slow steady-precession rate at θ₀. */
+function initialState(p: Params): { theta0: number; thetaDot0: number; phiDot0: number } {
+  const I1 = Number(p.I1), I3 = Number(p.I3), mgl = Number(p.mgl), w3 = Number(p.w3);
+  const theta0 = Number(p.theta0) * DEG;
+  const preset = String(p.preset);
+  if (preset === "sleeping") return { theta0: 0, thetaDot0: 0, phiDot0: 0 };
+  if (preset === "custom") return { theta0, thetaDot0: Number(p.thetaDot0), phiDot0: Number(p.phiDot0) };
+  if (preset === "cusps") return { theta0, thetaDot0: 0, phiDot0: 0 };
+  // Loops: released against the precession; waves: with half of it; steady: exactly at it.
+  const s = HeavyTop.steadyPrecession(I1, I3, mgl, theta0, w3);
+  const slow = s.slow;
+  s.free();
+  const factor = preset === "loops" ? -0.5 : preset === "waves" ? 0.5 : 1;
+  return { theta0, thetaDot0: 0, phiDot0: factor * slow };
+}
+
+/** A latitude circle θ = const on the sphere of radius R_TIP. */
+function latitude(color: number, dashed: boolean): THREE.LineLoop {
+  const pts: THREE.Vector3[] = [];
+  for (let i = 0; i < 128; i++) {
+    const a = (2 * Math.PI * i) / 128;
+    pts.push(new THREE.Vector3(Math.cos(a), Math.sin(a), 0));
+  }
+  const geom = new THREE.BufferGeometry().setFromPoints(pts);
+  const mat = dashed
+    ? new THREE.LineDashedMaterial({ color, dashSize: 0.05, gapSize: 0.04, transparent: true, opacity: 0.9 })
+    : new THREE.LineBasicMaterial({ color, transparent: true, opacity: 0.35 });
+  const loop = new THREE.LineLoop(geom, mat);
+  if (dashed) loop.computeLineDistances();
+  return loop;
+}
+
+/** Places a unit latitude circle at polar angle θ on the sphere of radius R_TIP. */
+function placeLatitude(loop: THREE.LineLoop, theta: number): void {
+  const r = R_TIP * Math.sin(theta);
+  loop.visible = r > 1e-4;
+  loop.scale.set(Math.max(r, 1e-6), Math.max(r, 1e-6), 1);
+  loop.position.set(0, 0, R_TIP * Math.cos(theta));
+}
+
+/** The top: a body of revolution (lathe) with its point on the pivot, a stem along body z, and a
+ * coloured stripe (vertex colours of one sector) so that the spin is visible. */
+function topMesh(): THREE.Group {
+  const profile = [
+    [0, 0], [0.05, 0.12], [0.3, 0.5], [0.58, 0.9], [0.64, 1.0], [0.6, 1.1], [0.38, 1.24], [0.09, 1.32],
+    [0.05, 1.33], [0.05, 1.95], [0.0, R_TIP],
+  ].map(([r, h]) => new THREE.Vector2(r, h));
+  const geom = new THREE.LatheGeometry(profile, 72);
+  geom.rotateX(Math.PI / 2); // lathe axis (y) → body z
+  const pos = geom.getAttribute("position");
+  const colors = new Float32Array(pos.count * 3);
+  const base = new THREE.Color(0xc9d1d9), stripe = new THREE.Color(0xf2b84b), stem = new THREE.Color(0x8b949e);
+  for (let i = 0; i < pos.count; i++) {
+    const x = pos.getX(i), y = pos.getY(i), z = pos.getZ(i);
+    const a = Math.atan2(y, x);
+    const c = z > 1.34 ? stem : a > 0 && a < 0.55 ? stripe : base;
+    colors.set([c.r, c.g, c.b], 3 * i);
+  }
+  geom.setAttribute("color", new THREE.BufferAttribute(colors, 3));
+  geom.computeVertexNormals();
+  const mesh = new THREE.Mesh(geom, new THREE.MeshStandardMaterial({ vertexColors: true, roughness: 0.45, metalness: 0.1, side: THREE.DoubleSide }));
+  const g = new THREE.Group();
+  g.add(mesh);
+  return g;
+}
+
+/** The inset plot of V(θ): samples, the energy line and the turning points, all from the core. */
+class PotentialPlot {
+  readonly canvas: HTMLCanvasElement;
+  private readonly g: CanvasRenderingContext2D;
+  private thetas: number[] = [];
+  private values: number[] = [];
+  private x0 = 0;
+  private x1 = 1;
+  private y0 = 0;
+  private y1 = 1;
+  private ePrime = 0;
+  private turning: number[] = [];
+  private readonly W = 330;
+  private readonly H = 190;
+  private readonly pad = { l: 44, r: 10, t: 22, b: 28 };
+
+  constructor(host: HTMLElement) {
+    this.canvas = document.createElement("canvas");
+    this.canvas.className = "heavytop-potential";
+    const dpr = Math.min(2, window.devicePixelRatio || 1);
+    this.canvas.width = this.W * dpr;
+    this.canvas.height = this.H * dpr;
+    Object.assign(this.canvas.style, {
+      position: "absolute", left: "0.6rem", top: "0.6rem", width: `${this.W}px`, height: `${this.H}px`,
+      background: "rgba(16, 20, 24, 0.82)", border: "1px solid #2a323c", borderRadius: "4px",
+    });
+    this.canvas.setAttribute("role", "img");
+    this.canvas.setAttribute("aria-label", "effective potential V(θ) with the energy line E′ and the turning points");
+    host.append(this.canvas);
+    this.g = this.canvas.getContext("2d") as CanvasRenderingContext2D;
+    this.g.scale(dpr, dpr);
+  }
+
+  /** New samples: θ grid (rad), V(θ) from the core, E', turning points. */
+  set(thetas: number[], values: number[], ePrime: number, turning: number[]): void {
+    this.thetas = thetas;
+    this.values = values;
+    this.ePrime = ePrime;
+    this.turning = turning;
+    this.x0 = thetas[0];
+    this.x1 = thetas[thetas.length - 1];
+    const finite = values.filter((v) => Number.isFinite(v));
+    const vmin = Math.min(...finite);
+    // The lower edge sets the scale, unless the minimum is at that edge (an upright top).
+    const edges = [values[0], values[values.length - 1]].map((v) => (Number.isFinite(v) ? v : Math.max(...finite)));
+    let vedge = Math.min(...edges);
+    if (vedge - vmin <= 1e-6 * (1 + Math.abs(vmin))) vedge = Math.max(...edges);
+    const span = Math.max(ePrime - vmin, 0.3 * (vedge - vmin), 1e-9 * (1 + Math.abs(vmin)));
+    this.y0 = vmin - 0.12 * span;
+    this.y1 = Math.max(ePrime, vmin) + 0.9 * span;
+  }
+
+  private px(theta: number): number {
+    return this.pad.l + ((theta - this.x0) / (this.x1 - this.x0)) * (this.W - this.pad.l - this.pad.r);
+  }
+  private py(v: number): number {
+    const y = this.pad.t + ((this.y1 - v) / (this.y1 - this.y0)) * (this.H - this.pad.t - this.pad.b);
+    return Math.max(-10, Math.min(this.H + 10, y));
+  }
+
+  /** Draws the plot with the dot at the current θ and V(θ). */
+  draw(theta: number, vNow: number): void {
+    const g = this.g, W = this.W, H = this.H, P = this.pad;
+    g.clearRect(0, 0, W, H);
+    g.font = "11px system-ui, sans-serif";
+    g.fillStyle = "#9aa4b1";
+    g.fillText("V(θ) (J, 2.110)   E′ (2.109)", P.l, 14);
+    // Frame and θ ticks (degrees).
+    g.strokeStyle = "#3a4654";
+    g.lineWidth = 1;
+    g.strokeRect(P.l, P.t, W - P.l - P.r, H - P.t - P.b);
+    g.fillText(`${fmt(this.x0 / DEG, 3)}°`, P.l - 4, H - 10);
+    const right = `${fmt(this.x1 / DEG, 3)}°`;
+    g.fillText(right, W - P.r - g.measureText(right).width, H - 10);
+    g.fillText("θ", (P.l + W - P.r) / 2, H - 10);
+    g.save();
+    g.beginPath();
+    g.rect(P.l, P.t, W - P.l - P.r, H - P.t - P.b);
+    g.clip();
+    // Turning points θ₁, θ₂.
+    g.strokeStyle = "rgba(242, 184, 75, 0.55)";
+    g.setLineDash([3, 3]);
+    for (const th of this.turning) {
+      g.beginPath();
+      g.moveTo(this.px(th), P.t);
+      g.lineTo(this.px(th), H - P.b);
+      g.stroke();
+    }
+    // Energy line E'.
+    g.strokeStyle = "#f2b84b";
+    g.setLineDash([6, 4]);
+    g.beginPath();
+    g.moveTo(P.l, this.py(this.ePrime));
+    g.lineTo(W - P.r, this.py(this.ePrime));
+    g.stroke();
+    g.setLineDash([]);
+    // V(θ).
+    g.strokeStyle = "#7cc4ff";
+    g.lineWidth = 2;
+    g.beginPath();
+    let pen = false;
+    this.thetas.forEach((th, i) => {
+      const v = this.values[i];
+      if (!Number.isFinite(v)) { pen = false; return; }
+      if (pen) g.lineTo(this.px(th), this.py(v));
+      else g.moveTo(this.px(th), this.py(v));
+      pen = true;
+    });
+    g.stroke();
+    // The state: θ(t) on V, with the kinetic part ½I₁θ̇² = E' − V up to the energy line.
+    if (Number.isFinite(vNow)) {
+      g.strokeStyle = "rgba(255,255,255,0.5)";
+      g.lineWidth = 1;
+      g.beginPath();
+      g.moveTo(this.px(theta), this.py(vNow));
+      g.lineTo(this.px(theta), this.py(this.ePrime));
+      g.stroke();
+      g.fillStyle = "#ffffff";
+      g.beginPath();
+      g.arc(this.px(theta), this.py(vNow), 4, 0, 2 * Math.PI);
+      g.fill();
+    }
+    g.restore();
+    // Value ticks (J) at the edges of the vertical range.
+    g.fillStyle = "#9aa4b1";
+    g.fillText(fmt(this.y1, 3), 2, P.t + 9);
+    g.fillText(fmt(this.y0, 3), 2, H - P.b);
+  }
+}
+
+/** The bright trail of the axis' tip over the last stretch of time: points on a fixed time grid
+ * (multiples of `dt`, from the core in batches; only new grid points are computed each frame) plus
+ * the point at t, so that a seek shows the same trail as playing up to t. */
+class TipTrail {
+  readonly obj: THREE.Line;
+  private readonly ring = new Float64Array(3 * TRAIL_CAPACITY);
+  private readonly pos = new Float32Array(3 * (TRAIL_CAPACITY + 1));
+  private start = 0;
+  private end = -1;
+  private span = 1;
+  private dt = 0.01;
+
+  constructor(color: number) {
+    const geom = new THREE.BufferGeometry();
+    geom.setAttribute("position", new THREE.BufferAttribute(this.pos, 3));
+    geom.setDrawRange(0, 0);
+    this.obj = new THREE.Line(geom, new THREE.LineBasicMaterial({ color }));
+    this.obj.frustumCulled = false;
+  }
+
+  /** A new motion: grid step `dt` (s), `window` (s) of trail. */
+  reset(dt: number, window: number): void {
+    this.dt = dt;
+    this.span = Math.max(1, Math.min(TRAIL_CAPACITY - 1, Math.ceil(window / dt)));
+    this.start = 0;
+    this.end = -1;
+  }
+
+  update(top: HeavyTop, t: number, tip: THREE.Vector3): void {
+    const kEnd = Math.floor(t / this.dt + 1e-9);
+    const kStart = Math.max(0, kEnd - this.span + 1);
+    let from = kStart;
+    if (kStart >= this.start && kStart <= this.end + 1 && kEnd >= this.end) from = this.end + 1;
+    if (kEnd >= from) {
+      const times = new Float64Array(kEnd - from + 1);
+      for (let k = from; k <= kEnd; k++) times[k - from] = k * this.dt;
+      const axis = top.symmetryAxis(times);
+      for (let k = from; k <= kEnd; k++) {
+        const slot = 3 * (k % TRAIL_CAPACITY);
+        const i = 3 * (k - from);
+        this.ring[slot] = R_TIP * axis[i];
+        this.ring[slot + 1] = R_TIP * axis[i + 1];
+        this.ring[slot + 2] = R_TIP * axis[i + 2];
+      }
+    }
+    this.start = kStart;
+    this.end = kEnd;
+    let n = 0;
+    for (let k = kStart; k <= kEnd; k++, n++) {
+      const slot = 3 * (k % TRAIL_CAPACITY);
+      this.pos[3 * n] = this.ring[slot];
+      this.pos[3 * n + 1] = this.ring[slot + 1];
+      this.pos[3 * n + 2] = this.ring[slot + 2];
+    }
+    this.pos.set([tip.x, tip.y, tip.z], 3 * n);
+    n++;
+    const attr = this.obj.geometry.getAttribute("position") as THREE.BufferAttribute;
+    attr.needsUpdate = true;
+    this.obj.geometry.setDrawRange(0, n);
+  }
+}
+
+export const heavyTopScene: SceneDef = {
+  id: "heavytop",
+  title: "Heavy top",
+  blurb:
+    "A symmetric top on a pivot under gravity, exactly (θ by Jacobi's sn, φ and ψ by elliptic integrals; 2.102–2.121). " +
+    "The tip of its axis moves on the sphere between the turning circles θ₁, θ₂ (dashed), where E′ = V(θ) (inset): " +
+    "loops when φ̇ changes sign, waves when it does not, cusps when released at rest in θ and φ. " +
+    "Presets start at θ₀ with θ̇₀ = 0 and φ̇₀ a fraction of the slow steady precession (loops −½, cusps 0, waves ½, steady 1); " +
+    "“sleeping” stands the top upright (θ₀ = 0); “custom” uses the φ̇₀, θ̇₀ sliders.",
+  params: [
+    { kind: "choice", key: "preset", label: "Motion", options: PRESETS, value: "loops" },
+    { kind: "number", key: "w3", label: "spin ω₃", unit: "rad/s", min: 0, max: 40, step: 0.5, value: 9 },
+    { kind: "number", key: "theta0", label: "tilt θ₀", unit: "°", min: 0, max: 170, step: 1, value: 50 },
+    { kind: "number", key: "phiDot0", label: "φ̇₀ (custom)", unit: "rad/s", min: -3, max: 3, step: 0.05, value: 0.5 },
+    { kind: "number", key: "thetaDot0", label: "θ̇₀ (custom)", unit: "rad/s", min: -3, max: 3, step: 0.05, value: 0 },
+    { kind: "number", key: "mgl", label: "m g l", unit: "N·m", min: 0, max: 5, step: 0.05, value: 1.5 },
+    { kind: "number", key: "I1", label: "I₁ (pivot)", unit: "kg·m²", min: 0.2, max: 3, step: 0.05, value: 1 },
+    { kind: "number", key: "I3", label: "I₃", unit: "kg·m²", min: 0.1, max: 3, step: 0.05, value: 0.5 },
+  ],
+  create(ctx) {
+    const root = new THREE.Group();
+    ctx.scene.add(root);
+    root.add(fixedAxes(2.8, 0.3));
+
+    // The sphere of the tip, its equator, and the turning circles θ₁, θ₂.
+    const sphere = new THREE.Mesh(
+      new THREE.SphereGeometry(R_TIP, 64, 32),
+      new THREE.MeshStandardMaterial({ color: 0x3e7bfa, transparent: true, opacity: 0.1, depthWrite: false, side: THREE.DoubleSide }),
+    );
+    root.add(sphere);
+    const equator = latitude(0x9aa4b1, false);
+    placeLatitude(equator, Math.PI / 2);
+    const circle1 = latitude(0xf2b84b, true);
+    const circle2 = latitude(0xf2b84b, true);
+    root.add(equator, circle1, circle2);
+
+    // The pivot on its post.
+    // A slim post under the pivot (a hanging top, θ > 90°, swings past it) on a small foot.
+    const post = new THREE.Mesh(
+      new THREE.CylinderGeometry(0.035, 0.05, 1.4, 16).rotateX(Math.PI / 2).translate(0, 0, -0.7),
+      new THREE.MeshStandardMaterial({ color: 0x6b7685, roughness: 0.7 }),
+    );
+    const foot = new THREE.Mesh(
+      new THREE.CylinderGeometry(0.3, 0.34, 0.06, 32).rotateX(Math.PI / 2).translate(0, 0, -1.43),
+      new THREE.MeshStandardMaterial({ color: 0x4a5563, roughness: 0.8 }),
+    );
+    const pivot = new THREE.Mesh(new THREE.SphereGeometry(0.06, 16, 12), new THREE.MeshStandardMaterial({ color: 0xe6e9ee }));
+    root.add(post, foot, pivot);
+
+    const body = new THREE.Group();
+    body.matrixAutoUpdate = false;
+    body.add(topMesh());
+    root.add(body);
+    const tipDot = new THREE.Mesh(new THREE.SphereGeometry(0.045, 16, 12), new THREE.MeshBasicMaterial({ color: 0xffffff }));
+    root.add(tipDot);
+
+    // The path over the first stretch of time (dim, drawn at once) and the trail up to t (bright).
+    const pathPos = new Float32Array(3 * PATH_SAMPLES);
+    const pathGeom = new THREE.BufferGeometry();
+    pathGeom.setAttribute("position", new THREE.BufferAttribute(pathPos, 3));
+    const path = new THREE.Line(pathGeom, new THREE.LineBasicMaterial({ color: 0x7cc4ff, transparent: true, opacity: 0.35 }));
+    path.frustumCulled = false;
+    root.add(path);
+    const trail = new TipTrail(0xf2b84b);
+    root.add(trail.obj);
+
+    const plot = new PotentialPlot(ctx.overlay);
+
+    let top: HeavyTop | null = null;
+    let p: Params = {};
+    let fixed: Readout[] = [];
+    let out: Readout[] = [];
+    const tip = new THREE.Vector3();
+    // The state the inset shows (drawn in render, outside the physics step).
+    let drawn = { theta: NaN, vNow: NaN, dirty: false };
+
+    const free = () => {
+      top?.free();
+      top = null;
+    };
+
+    return {
+      configure(params) {
+        p = params;
+        const I1 = Number(p.I1), I3 = Number(p.I3), mgl = Number(p.mgl), w3 = Number(p.w3);
+        const s0 = initialState(p);
+        const next = HeavyTop.fromSpin(I1, I3, mgl, s0.theta0, s0.thetaDot0, s0.phiDot0, w3);
+        free();
+        top = next;
+
+        const [th1, th2] = top.turningPoints;
+        placeLatitude(circle1, th1);
+        placeLatitude(circle2, th2);
+        circle2.visible &&= th2 - th1 > 1e-9;
+
+        // Time scales of the drawing: the nutation period and one turn of mean precession.
+        const period = top.nutationPeriod;
+        const rate = Math.abs(top.meanPrecessionRate);
+        const turn = rate > 0 ? (2 * Math.PI) / rate : Infinity;
+        const nut = Number.isFinite(period) && period > 0 ? period : 1;
+        const window = Math.min(60, Math.max(6 * nut, Math.min(0.95 * turn, 30)));
+        const dt = Math.max(nut / 60, window / (TRAIL_CAPACITY - 2));
+        trail.reset(dt, window);
+        const times = new Float64Array(PATH_SAMPLES);
+        for (let i = 0; i < PATH_SAMPLES; i++) times[i] = (window * i) / (PATH_SAMPLES - 1);
+        const axis = top.symmetryAxis(times);
+        for (let i = 0; i < 3 * PATH_SAMPLES; i++) pathPos[i] = R_TIP * axis[i];
+        (pathGeom.getAttribute("position") as THREE.BufferAttribute).needsUpdate = true;
+
+        // V(θ) around the band [θ₁, θ₂].
+        const half = Math.max(0.35, 1.5 * (th2 - th1));
+        const lo = Math.max(1e-3, Math.min(th1, th2) - half);
+        const hi = Math.min(Math.PI - 1e-3, th2 + half);
+        const grid: number[] = [];
+        for (let i = 0; i < V_SAMPLES; i++) grid.push(lo + ((hi - lo) * i) / (V_SAMPLES - 1));
+        plot.set(grid, Array.from(top.effectivePotential(grid)), top.reducedEnergy, [th1, th2]);
+
+        const minSpin = HeavyTop.minSpin(I1, I3, mgl, s0.theta0);
+        const sleepAt = HeavyTop.sleepingThreshold(I1, I3, mgl);
+        const stable = top.isSleepingStable;
+        let steady: number[] = [];
+        let steadyText = `none: |ω₃| < ${fmt(minSpin, 4)} rad/s (2.119)`;
+        if (Math.abs(w3) >= minSpin) {
+          const s = HeavyTop.steadyPrecession(I1, I3, mgl, s0.theta0, w3);
+          steady = [s.slow, s.fast];
+          steadyText = `slow ${fmt(s.slow, 6)}, fast ${fmt(s.fast, 6)}`;
+          s.free();
+        }
+        const init = Array.from(top.initialState);
+        fixed = [
+          { key: "motionClass", label: "motion", value: top.motionClass, text: top.motionClass },
+          { key: "initialRates", label: "φ̇₀, θ̇₀, ψ̇₀ (rad/s)", value: init.slice(3), text: fmtVec(init.slice(3)) },
+          { key: "omega3", label: "ω₃ (rad/s, 2.99)", value: top.omega3, text: fmt(top.omega3) },
+          { key: "turningPoints", label: "θ₁, θ₂", value: [th1, th2], text: `${fmt(th1 / DEG, 7)}°, ${fmt(th2 / DEG, 7)}°` },
+          { key: "nutationPeriod", label: "nutation period (s)", value: top.nutationPeriod, text: fmt(top.nutationPeriod) },
+          { key: "meanPrecessionRate", label: "⟨φ̇⟩ (rad/s)", value: top.meanPrecessionRate, text: fmt(top.meanPrecessionRate) },
+          { key: "steadyRates", label: "steady φ̇ at θ₀ (2.116)", value: steady, text: steadyText },
+          { key: "minSpin", label: "min spin at θ₀ (2.119)", value: minSpin, text: `${fmt(minSpin)} rad/s` },
+          { key: "sleepingThreshold", label: "sleeping threshold", value: sleepAt, text: `${fmt(sleepAt)} rad/s` },
+          {
+            key: "sleepsStably", label: "upright top sleeps", value: stable,
+            text: stable ? "stably (ω₃² > 4mglI₁/I₃²)" : "no: it would fall (ω₃² ≤ 4mglI₁/I₃²)", warn: !stable,
+          },
+        ];
+      },
+      step(t) {
+        if (!top) return;
+        const s = top.state(t);
+        const [phi, theta, psi, phiDot, thetaDot, psiDot] = s;
+        const R = eulerToMatrix([phi, theta, psi], "zxz", true);
+        body.matrix.copy(matrix4(R));
+        body.matrixWorldNeedsUpdate = true;
+        tip.set(R[2], R[5], R[8]).multiplyScalar(R_TIP);
+        tipDot.position.copy(tip);
+        trail.update(top, t, tip);
+
+        const I1 = Number(p.I1), I3 = Number(p.I3), mgl = Number(p.mgl);
+        const [pPhiNow, pPsiNow, eNow] = HeavyTop.constantsOfState(I1, I3, mgl, theta, thetaDot, phiDot, psiDot);
+        const vNow = top.effectivePotential([theta])[0];
+        drawn = { theta, vNow, dirty: true };
+        const E = top.energy, pPhi = top.pPhi, pPsi = top.pPsi;
+        const rel = (a: number, b: number) => fmt(b !== 0 ? (a - b) / Math.abs(b) : a - b, 2);
+        out = [
+          { key: "t", label: "t (s)", value: t, text: fmt(t, 5) },
+          { key: "angles", label: "φ, θ, ψ (rad)", value: [phi, theta, psi], text: fmtVec([phi, theta, psi]) },
+          { key: "rates", label: "φ̇, θ̇, ψ̇ (rad/s)", value: [phiDot, thetaDot, psiDot], text: fmtVec([phiDot, thetaDot, psiDot]) },
+          ...fixed,
+          { key: "energy", label: "E (J, 2.105), conserved", value: E, text: fmt(E, 10) },
+          { key: "energyNow", label: "E(t) from the state", value: eNow, text: `${fmt(eNow, 10)} (rel. drift ${rel(eNow, E)})` },
+          { key: "pPhi", label: "p_φ (2.104)", value: pPhi, text: fmt(pPhi, 10) },
+          { key: "pPhiNow", label: "p_φ(t) from the state", value: pPhiNow, text: `${fmt(pPhiNow, 10)} (rel. drift ${rel(pPhiNow, pPhi)})` },
+          { key: "pPsi", label: "p_ψ = I₃ω₃ (2.103)", value: pPsi, text: fmt(pPsi, 10) },
+          { key: "pPsiNow", label: "p_ψ(t) from the state", value: pPsiNow, text: `${fmt(pPsiNow, 10)} (rel. drift ${rel(pPsiNow, pPsi)})` },
+          { key: "reducedEnergy", label: "E′ (J, 2.109)", value: top.reducedEnergy, text: fmt(top.reducedEnergy, 10) },
+          { key: "potentialNow", label: "V(θ(t)) (J, 2.110)", value: vNow, text: fmt(vNow, 10) },
+        ];
+      },
+      readouts() {
+        return out;
+      },
+      render(renderer, scene, camera) {
+        if (drawn.dirty) plot.draw(drawn.theta, drawn.vNow);
+        drawn.dirty = false;
+        renderer.render(scene, camera);
+      },
+      dispose() {
+        free();
+        disposeTree(root);
+        plot.canvas.remove();
+      },
+    };
+  },
+};
