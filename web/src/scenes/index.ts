@@ -4,7 +4,12 @@ import { framesScene } from "./frames";
 import { dropScene } from "./drop";
 import { foucaultScene } from "./foucault";
 import { lowScene } from "./low";
+import { inertiaScene } from "./inertia";
 import { eulerScene } from "./euler";
 import { freeTopScene } from "./freetop";
+import { poinsotScene } from "./poinsot";
+import { heavyTopScene } from "./heavytop";
 
-export const SCENES: SceneDef[] = [framesScene, dropScene, foucaultScene, lowScene, eulerScene, freeTopScene];
+export const SCENES: SceneDef[] = [
+  framesScene, dropScene, foucaultScene, lowScene, inertiaScene, eulerScene, freeTopScene, poinsotScene, heavyTopScene,
+];

@@ -53,11 +53,16 @@ impl Screw {
     /// continues it). Errors: non-finite `s` (naming `"s"`).
     pub fn displacement_at(&self, s: f64) -> Result<(Mat3, Vec3)> {
         check_finite("s", &[s])?;
-        let r = rodrigues(&self.axis, s * self.angle);
-        Ok((
-            r,
-            self.point - r * self.point + (s * self.slide) * self.axis,
-        ))
+        let phi = s * self.angle;
+        let r = rodrigues(&self.axis, phi);
+        // (I − R(φ)) p without the cancellation of p − R p, which loses |p|·ε when the axis lies
+        // far away (|p| ~ |t| / θ for a small angle): with p⊥ = p − (n·p) n,
+        // (I − R) p = 2 sin²(φ/2) p⊥ − sin φ (n × p).
+        let n = self.axis;
+        let p_perp = self.point - n.dot(&self.point) * n;
+        let half = (0.5 * phi).sin();
+        let moved = 2.0 * half * half * p_perp - phi.sin() * n.cross(&self.point);
+        Ok((r, moved + (s * self.slide) * n))
     }
 
     /// Applies the screw motion to point `x`: `point + R (x − point) + slide · axis`, i.e.
@@ -140,6 +145,23 @@ mod tests {
         assert!((r2 - r).norm() < 1e-14 && (t2 - t).norm() < 1e-14);
         let x = Vec3::new(-0.4, 0.9, 2.2);
         assert!((s.apply(&x).unwrap() - (r * x + t)).norm() < 1e-14);
+    }
+
+    #[test]
+    fn displacement_at_is_accurate_for_a_far_axis() {
+        // A tiny rotation with a perpendicular translation: the axis lies |t|/θ = 1e10 m away,
+        // where p − R p would cancel away ~|p|·ε ≈ 1e-6 (found by hypothesis in
+        // python/tests/test_screw_motion.py at 2.5e-11). The poses must stay at round-off of |t|.
+        let r = rot_x(1e-10);
+        let t = Vec3::new(0.0, 0.0, 1.0);
+        let s = screw_axis(&r, &t).unwrap();
+        assert!(s.point.norm() > 1e9);
+        let (r1, t1) = s.displacement_at(1.0).unwrap();
+        assert!((r1 - r).amax() < 1e-15 && (t1 - t).amax() < 1e-15, "{t1}");
+        let (rh, th) = s.displacement_at(0.5).unwrap();
+        assert!((rh * th + th - t).amax() < 1e-15, "{}", rh * th + th - t);
+        // To first order in θ the half-way pose translates by half of t.
+        assert!((th - 0.5 * t).amax() < 1e-9);
     }
 
     #[test]
