@@ -110,6 +110,17 @@ export function cone(half: number, slant: number, color: number, opacity = 0.28)
   return new THREE.Mesh(geom, mat);
 }
 
+/** A line drawn through the points stored in `pos` (3 numbers each; the caller rewrites them and
+ * sets the draw range), initially empty, never frustum-culled (its bounds change each frame). */
+export function bufferLine(pos: Float32Array, color: number, opacity = 1): THREE.Line {
+  const geom = new THREE.BufferGeometry();
+  geom.setAttribute("position", new THREE.BufferAttribute(pos, 3));
+  geom.setDrawRange(0, 0);
+  const line = new THREE.Line(geom, new THREE.LineBasicMaterial({ color, transparent: opacity < 1, opacity }));
+  line.frustumCulled = false;
+  return line;
+}
+
 /** A polyline of at most `capacity` points; `push` appends, dropping the oldest. */
 export class Trail {
   readonly obj: THREE.Line;
@@ -117,11 +128,7 @@ export class Trail {
   private n = 0;
   constructor(private capacity: number, color: number) {
     this.pos = new Float32Array(3 * capacity);
-    const geom = new THREE.BufferGeometry();
-    geom.setAttribute("position", new THREE.BufferAttribute(this.pos, 3));
-    geom.setDrawRange(0, 0);
-    this.obj = new THREE.Line(geom, new THREE.LineBasicMaterial({ color }));
-    this.obj.frustumCulled = false;
+    this.obj = bufferLine(this.pos, color);
   }
   clear(): void {
     this.n = 0;

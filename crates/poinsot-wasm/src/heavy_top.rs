@@ -217,30 +217,12 @@ impl HeavyTop {
     /// numerator vanishes there. Errors name `theta`.
     #[wasm_bindgen(js_name = effectivePotential)]
     pub fn effective_potential(&self, theta: &[f64]) -> Out<Vec<f64>> {
-        theta
-            .iter()
-            .map(|&th| {
-                let v = self.inner.effective_potential(th)?;
-                if v.is_nan() {
-                    return Err(Failure::invalid("theta", "V(theta) is not a number"));
-                }
-                Ok(v)
-            })
-            .collect()
+        each_theta(theta, "V(theta)", |th| self.inner.effective_potential(th))
     }
     /// dV/dθ (N·m, 2.113) at each θ of `theta` (rad). Errors name `theta`.
     #[wasm_bindgen(js_name = effectivePotentialDerivative)]
     pub fn effective_potential_derivative(&self, theta: &[f64]) -> Out<Vec<f64>> {
-        theta
-            .iter()
-            .map(|&th| {
-                let v = self.inner.effective_potential_derivative(th)?;
-                if v.is_nan() {
-                    return Err(Failure::invalid("theta", "dV/dtheta is not a number"));
-                }
-                Ok(v)
-            })
-            .collect()
+        each_theta(theta, "dV/dtheta", |th| self.inner.effective_potential_derivative(th))
     }
 
     /// The exact Euler angles at the times `t` (s): N×3 numbers `[φ, θ, ψ]` per time (rad).
@@ -352,6 +334,25 @@ impl HeavyTop {
         let c = an::constants_of_state(i1, i3, mgl, &s)?;
         finite("constants", vec![c.p_phi, c.p_psi, c.energy])
     }
+}
+
+/// `f` at each angle of `theta` (rad); the core's errors pass through, and a NaN (which the core
+/// never returns for a valid θ) becomes an error naming `theta` rather than reaching the page.
+fn each_theta(
+    theta: &[f64],
+    what: &str,
+    f: impl Fn(f64) -> poinsot::error::Result<f64>,
+) -> Out<Vec<f64>> {
+    theta
+        .iter()
+        .map(|&th| {
+            let v = f(th)?;
+            if v.is_nan() {
+                return Err(Failure::invalid("theta", &format!("{what} is not a number")));
+            }
+            Ok(v)
+        })
+        .collect()
 }
 
 #[cfg(test)]

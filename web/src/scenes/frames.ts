@@ -7,7 +7,7 @@
 import * as THREE from "three";
 import { MovingFrame, SpringParticle, simulateParticle } from "../wasm/poinsot_wasm.js";
 import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
-import { Arrow, disposeTree, fixedAxes, matrix4, vec } from "../view";
+import { Arrow, bufferLine, disposeTree, fixedAxes, matrix4, vec } from "../view";
 
 /** Drawn radius of the turntable (m). */
 const TABLE = 1;
@@ -55,11 +55,7 @@ class Path {
   private readonly pos: Float32Array;
   constructor(capacity: number, color: number) {
     this.pos = new Float32Array(3 * capacity);
-    const geom = new THREE.BufferGeometry();
-    geom.setAttribute("position", new THREE.BufferAttribute(this.pos, 3));
-    geom.setDrawRange(0, 0);
-    this.obj = new THREE.Line(geom, new THREE.LineBasicMaterial({ color }));
-    this.obj.frustumCulled = false;
+    this.obj = bufferLine(this.pos, color);
   }
   set(i: number, p: ArrayLike<number>): void {
     this.pos.set([p[0], p[1], p[2]], 3 * i);

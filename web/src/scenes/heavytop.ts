@@ -7,7 +7,7 @@
 import * as THREE from "three";
 import { eulerToMatrix, HeavyTop } from "../wasm/poinsot_wasm.js";
 import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
-import { disposeTree, fixedAxes, matrix4 } from "../view";
+import { bufferLine, disposeTree, fixedAxes, matrix4 } from "../view";
 
 export const PRESETS = ["loops", "waves", "cusps", "steady precession", "sleeping", "custom"];
 
@@ -230,11 +230,7 @@ class TipTrail {
   private dt = 0.01;
 
   constructor(color: number) {
-    const geom = new THREE.BufferGeometry();
-    geom.setAttribute("position", new THREE.BufferAttribute(this.pos, 3));
-    geom.setDrawRange(0, 0);
-    this.obj = new THREE.Line(geom, new THREE.LineBasicMaterial({ color }));
-    this.obj.frustumCulled = false;
+    this.obj = bufferLine(this.pos, color);
   }
 
   /** A new motion: grid step `dt` (s), `window` (s) of trail. */

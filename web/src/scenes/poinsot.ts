@@ -12,7 +12,7 @@
 import * as THREE from "three";
 import { axisStability, FreeRigidBody, RigidBody } from "../wasm/poinsot_wasm.js";
 import { fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
-import { Arrow, AXIS_COLORS, disposeTree, fixedAxes, quaternion, vec } from "../view";
+import { Arrow, AXIS_COLORS, bufferLine, disposeTree, fixedAxes, quaternion, vec } from "../view";
 
 export const POINSOT_VIEWS = ["Poinsot ellipsoid", "tumbling box"];
 export const SPIN_AXES = ["intermediate", "smallest", "largest"];
@@ -88,11 +88,7 @@ class Polyline {
   private readonly pos: Float32Array;
   constructor(capacity: number, color: number, opacity = 1) {
     this.pos = new Float32Array(3 * capacity);
-    const geom = new THREE.BufferGeometry();
-    geom.setAttribute("position", new THREE.BufferAttribute(this.pos, 3));
-    geom.setDrawRange(0, 0);
-    this.obj = new THREE.Line(geom, new THREE.LineBasicMaterial({ color, transparent: opacity < 1, opacity }));
-    this.obj.frustumCulled = false;
+    this.obj = bufferLine(this.pos, color, opacity);
   }
   set(points: ArrayLike<number>, scale: number, extra?: THREE.Vector3): void {
     const n = Math.min(points.length, this.pos.length - (extra ? 3 : 0));
