@@ -56,6 +56,18 @@ fn time_ok(t: f64) -> Out<()> {
     Ok(poinsot::error::check_finite("t", &[t])?)
 }
 
+/// The state at θ (rad) with the rates θ̇, φ̇, ψ̇ (rad/s), φ = ψ = 0 (the top's constants do not
+/// depend on φ and ψ).
+fn euler_state(theta: f64, theta_dot: f64, phi_dot: f64, psi_dot: f64) -> an::EulerState {
+    an::EulerState {
+        theta,
+        theta_dot,
+        phi_dot,
+        psi_dot,
+        ..Default::default()
+    }
+}
+
 /// Renames the core's `times` (its batch argument) to the binding's `t`.
 fn times_as_t(e: poinsot::Error) -> Failure {
     let mut e = e;
@@ -81,13 +93,7 @@ impl HeavyTop {
         phi_dot: f64,
         psi_dot: f64,
     ) -> Out<HeavyTop> {
-        let state = an::EulerState {
-            theta,
-            theta_dot,
-            phi_dot,
-            psi_dot,
-            ..Default::default()
-        };
+        let state = euler_state(theta, theta_dot, phi_dot, psi_dot);
         Ok(HeavyTop {
             inner: an::HeavyTop::new(i1, i3, mgl, state)?,
         })
@@ -303,13 +309,7 @@ impl HeavyTop {
         phi_dot: f64,
         psi_dot: f64,
     ) -> Out<f64> {
-        let s = an::EulerState {
-            theta,
-            theta_dot,
-            phi_dot,
-            psi_dot,
-            ..Default::default()
-        };
+        let s = euler_state(theta, theta_dot, phi_dot, psi_dot);
         finite1("lagrangian", an::lagrangian(i1, i3, mgl, &s)?)
     }
     /// `[p_φ, p_ψ, E]` of one state (2.103–2.105; `HeavyTop.constants_of_state` in Python): at
@@ -324,13 +324,7 @@ impl HeavyTop {
         phi_dot: f64,
         psi_dot: f64,
     ) -> Out<Vec<f64>> {
-        let s = an::EulerState {
-            theta,
-            theta_dot,
-            phi_dot,
-            psi_dot,
-            ..Default::default()
-        };
+        let s = euler_state(theta, theta_dot, phi_dot, psi_dot);
         let c = an::constants_of_state(i1, i3, mgl, &s)?;
         finite("constants", vec![c.p_phi, c.p_psi, c.energy])
     }
