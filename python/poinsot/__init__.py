@@ -15,7 +15,9 @@ The public API (see ``DESIGN.md``'s contract and the README):
   :mod:`poinsot.special` holds the Jacobi elliptic functions;
 * the heavy symmetric top: :class:`HeavyTop` (eqs. 2.98–2.121: constants, effective
   potential, turning points, steady precession, the exact motion by elliptic functions);
-* errors: :class:`PoinsotError` (a ``ValueError``) and its subclasses.
+* errors: :class:`PoinsotError` (a ``ValueError``) and its subclasses;
+* limits: :func:`memory_budget`, :func:`set_memory_budget` (the largest output of one call;
+  every long run also takes ``max_steps`` and stops on Ctrl-C).
 
 SI units and radians everywhere; quaternions are scalar-first ``[w, x, y, z]``.
 """
@@ -35,6 +37,8 @@ from .frames import *  # noqa: F401,F403
 from .frames import __all__ as _frames_all
 from .free import *  # noqa: F401,F403
 from .free import __all__ as _free_all
+from .limits import *  # noqa: F401,F403
+from .limits import __all__ as _limits_all
 from .rotation import *  # noqa: F401,F403
 from .rotation import __all__ as _rotation_all
 from .top import *  # noqa: F401,F403
@@ -50,4 +54,5 @@ __all__ = [
     *_dynamics_all,
     *_free_all,
     *_top_all,
+    *_limits_all,
 ]

@@ -7,6 +7,13 @@ import numpy as np
 from numpy.typing import NDArray
 
 __version__: str
+DEFAULT_MAX_STEPS: int
+DEFAULT_MEMORY_BUDGET: int
+
+def memory_budget() -> int: ...
+def set_memory_budget(bytes: int) -> int: ...
+def check_count(argument: str, count: int, minimum: int, bytes_each: int) -> None: ...
+def check_memory(argument: str, count: float, bytes_each: int) -> None: ...
 
 # ---- errors (errors.rs) ----
 class PoinsotError(ValueError): ...
@@ -303,6 +310,7 @@ def dynamics_simulate(
     samples: int,
     rtol: float,
     atol: float,
+    max_steps: int,
     progress: Callable[[float], Any] | None,
 ) -> dict[str, Any]: ...
 def dynamics_simulate_batch(
@@ -315,6 +323,8 @@ def dynamics_simulate_batch(
     torque_scalar: float,
     method: str,
     dt: float | None,
+    max_steps: int,
+    progress: Callable[[float], Any] | None,
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], int]: ...
 # ---- heavy top (heavy_top.rs) ----
 # Angles in rad, rates in rad/s, times in s; arrays C-contiguous float64 (N,); python/poinsot/top.py

@@ -3,23 +3,51 @@ errors name the argument. Physics never lives here."""
 
 from __future__ import annotations
 
+import sys
+from collections.abc import Iterator
+from contextlib import contextmanager
 from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
 
-from .errors import PoinsotError
+from .errors import ArgumentTypeError, PoinsotError
 
 FloatArray = NDArray[np.float64]
 
+#: The largest count (samples, parcels, steps) a call accepts before the core's memory budget
+#: and step limits are asked: what a C ``ssize_t`` holds.
+MAX_COUNT = sys.maxsize
+
 
 def as_float_array(value: Any, name: str, *, finite: bool = True) -> FloatArray:
-    """``value`` as a float64 array; raises :class:`PoinsotError` naming ``name`` if it cannot be
-    converted or (with ``finite``) holds NaN or infinity."""
-    try:
-        arr = np.asarray(value, dtype=np.float64)
-    except (TypeError, ValueError) as exc:
-        raise PoinsotError(f"{name}: must be an array of real numbers ({exc})") from None
+    """``value`` as a float64 array; raises :class:`ArgumentTypeError` naming ``name`` for text,
+    booleans or complex numbers (never silently dropping an imaginary part), and
+    :class:`PoinsotError` if it cannot be converted (ragged lists, numbers beyond the double
+    range) or, with ``finite``, holds NaN or infinity."""
+    if type(value) is not np.ndarray or value.dtype != np.float64:
+        try:
+            raw = np.asarray(value)
+        except (TypeError, ValueError) as exc:
+            raise PoinsotError(f"{name}: must be an array of real numbers ({exc})") from None
+        kind = raw.dtype.kind
+        if kind == "c":
+            raise ArgumentTypeError(f"{name}: must be real, got complex numbers")
+        if kind in "USbVMm":
+            what = {"U": "text", "S": "bytes", "b": "booleans"}.get(kind, str(raw.dtype))
+            raise ArgumentTypeError(f"{name}: must be real numbers, got {what}")
+        try:
+            with np.errstate(over="raise"):
+                value = raw.astype(np.float64)
+        except OverflowError:
+            raise PoinsotError(f"{name}: a number is beyond the range of doubles (about 1.8e308)") from None
+        except (TypeError, ValueError) as exc:
+            if any(isinstance(x, complex) for x in np.ravel(raw)):
+                raise ArgumentTypeError(f"{name}: must be real, got complex numbers") from None
+            raise ArgumentTypeError(f"{name}: must be an array of real numbers ({exc})") from None
+        except FloatingPointError:
+            raise PoinsotError(f"{name}: a number is beyond the range of doubles (about 1.8e308)") from None
+    arr = value
     if finite and not np.all(np.isfinite(arr)):
         bad = arr[~np.isfinite(arr)].ravel()[0]
         raise PoinsotError(f"{name}: must be finite, got {bad}")
@@ -32,6 +60,39 @@ def as_scalar(value: Any, name: str) -> float:
     if arr.ndim != 0:
         raise PoinsotError(f"{name}: must be a scalar, got shape {arr.shape}")
     return float(arr)
+
+
+def as_count(value: Any, name: str, minimum: int = 0) -> int:
+    """``value`` as a Python int ≥ ``minimum``: an ``int`` or numpy integer (not a bool, not a
+    float — ``2.5`` is refused, never truncated), else :class:`ArgumentTypeError` naming
+    ``name``; out of range, :class:`PoinsotError`. The core then checks it against the memory
+    budget."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise ArgumentTypeError(f"{name}: must be an integer, got {type(value).__name__} {value!r}")
+    count = int(value)
+    if count < minimum:
+        raise PoinsotError(f"{name}: must be >= {minimum}, got {count}")
+    if count > MAX_COUNT:
+        raise PoinsotError(f"{name}: must be <= {MAX_COUNT}, got {count}")
+    return count
+
+
+def as_flag(value: Any, name: str) -> bool:
+    """``value`` as a bool: ``True``/``False`` (or numpy booleans) only — never read by
+    truthiness (``"no"`` is refused) — else :class:`ArgumentTypeError` naming ``name``."""
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    raise ArgumentTypeError(f"{name}: must be True or False, got {type(value).__name__} {value!r}")
+
+
+def as_choice(value: Any, name: str, choices: tuple[str, ...]) -> str:
+    """``value`` as one of the strings ``choices``; :class:`ArgumentTypeError` for a
+    non-string, :class:`PoinsotError` for another string, both naming ``name``."""
+    if not isinstance(value, str):
+        raise ArgumentTypeError(f"{name}: must be one of {', '.join(map(repr, choices))}, got {type(value).__name__} {value!r}")
+    if value not in choices:
+        raise PoinsotError(f"{name}: must be one of {', '.join(map(repr, choices))}, got {value!r}")
+    return value
 
 
 def as_vectors(value: Any, name: str, size: int = 3) -> tuple[FloatArray, tuple[int, ...]]:
@@ -71,3 +132,28 @@ def as_matrices(value: Any, name: str) -> tuple[FloatArray, tuple[int, ...]]:
 def _is_scipy_rotation(value: Any) -> bool:
     cls = type(value)
     return cls.__name__ == "Rotation" and cls.__module__.startswith("scipy.spatial.transform")
+
+
+def as_callable(value: Any, name: str, *, optional: bool = True) -> Any:
+    """``value`` if it is callable (or None when ``optional``), else :class:`ArgumentTypeError`
+    naming ``name``."""
+    if value is None and optional:
+        return None
+    if not callable(value):
+        raise ArgumentTypeError(f"{name}: must be callable{' or None' if optional else ''}, got {type(value).__name__}")
+    return value
+
+
+@contextmanager
+def public_names(**names: str) -> Iterator[None]:
+    """Translate the argument names of errors from the core into the public API's: inside
+    ``with public_names(inertia="body", t="duration"):`` an error ``"t: ..."`` from the core is
+    raised as ``"duration: ..."`` (same type). For core functions whose arguments are derived
+    from the user's (a tensor from a body, a strength from a pull)."""
+    try:
+        yield
+    except PoinsotError as exc:
+        head, sep, rest = str(exc).partition(":")
+        if sep and head in names:
+            raise type(exc)(f"{names[head]}:{rest}") from None
+        raise

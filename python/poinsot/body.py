@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import dataclasses
 import os
+import stat
 import warnings
 from collections.abc import Callable, Iterable
 from typing import Any
@@ -38,13 +39,14 @@ import numpy as np
 from . import _core
 from ._validate import (
     FloatArray,
+    as_flag,
     as_float_array,
     as_matrices,
     as_scalar,
     as_vector3,
     as_vectors,
 )
-from .errors import InvalidMeshError, PoinsotError
+from .errors import ArgumentTypeError, InvalidMeshError, PoinsotError
 
 __all__ = [
     "RigidBody",
@@ -405,14 +407,17 @@ class RigidBody:
         v = as_float_array(vertices, "vertices", finite=False)
         if v.ndim != 2 or v.shape[1] != 3:
             raise InvalidMeshError(f"vertices: must have shape (N, 3), got {v.shape}")
-        f = np.asarray(faces)
+        try:
+            f = np.asarray(faces)
+        except (TypeError, ValueError) as exc:
+            raise InvalidMeshError(f"faces: must be an (M, 3) array of integer vertex indices ({exc})") from None
         if f.ndim != 2 or f.shape[1] != 3:
             raise InvalidMeshError(f"faces: must have shape (M, 3), got {f.shape}")
         if f.size and not np.issubdtype(f.dtype, np.integer):
             raise InvalidMeshError(f"faces: must be an array of integer vertex indices, got dtype {f.dtype}")
         if f.dtype == np.uint64 and f.size and int(f.max()) > np.iinfo(np.int64).max:
             raise InvalidMeshError(f"faces: index {int(f.max())} is out of range for {len(v)} vertices")
-        if merge_vertices:
+        if as_flag(merge_vertices, "merge_vertices"):
             v, f = _merge_vertices(v, f)
         rho = _scalar(density, "density")
         return cls._wrap(
@@ -447,7 +452,10 @@ class RigidBody:
 
         Raises:
             ImportError: trimesh is not installed.
-            InvalidMeshError: the file holds no triangles, or a mesh that does not bound a solid.
+            PoinsotError: ``path`` does not exist, is not a regular file (a directory, a device
+                such as ``/dev/zero``) or is larger than the memory budget.
+            InvalidMeshError: the file cannot be read as a mesh, holds no triangles, or holds a
+                mesh that does not bound a solid.
         """
         try:
             import trimesh
@@ -456,9 +464,27 @@ class RigidBody:
                 "RigidBody.load_mesh reads files with trimesh, which is not installed: "
                 "pip install 'poinsot[mesh]' (or pip install trimesh)"
             ) from None
-        loaded = trimesh.load(os.fspath(path), process=False, force="mesh")
+        if not isinstance(path, (str, os.PathLike)):
+            raise ArgumentTypeError(f"path: must be a file name (str or os.PathLike), got {type(path).__name__}")
+        name = os.fspath(path)
+        try:
+            info = os.stat(name)
+        except OSError as exc:
+            raise PoinsotError(f"path: cannot read {name!r}: {exc.strerror or exc}") from None
+        if not stat.S_ISREG(info.st_mode):
+            raise PoinsotError(f"path: {name!r} is not a regular file")
+        from .limits import memory_budget
+
+        if info.st_size > memory_budget():
+            raise PoinsotError(f"path: {name!r} has {info.st_size} bytes, more than the memory budget "
+                               f"of {memory_budget()} bytes (see poinsot.set_memory_budget)")
+        try:
+            loaded = trimesh.load(name, process=False, force="mesh")
+        except Exception as exc:  # noqa: BLE001 - a file parser may fail in any way
+            raise InvalidMeshError(f"path: {name!r} cannot be read as a triangle mesh "
+                                   f"({type(exc).__name__}: {exc})") from None
         if not isinstance(loaded, trimesh.Trimesh) or len(loaded.faces) == 0:
-            raise InvalidMeshError(f"path: {os.fspath(path)!r} holds no triangle mesh")
+            raise InvalidMeshError(f"path: {name!r} holds no triangle mesh")
         return cls.from_mesh(loaded.vertices, loaded.faces, density, merge_vertices=True)
 
     @classmethod
@@ -466,12 +492,15 @@ class RigidBody:
         """The body made of ``bodies`` rigidly joined: masses add, the centre of mass is the
         mass-weighted mean, each inertia is shifted to the common centre of mass by the
         parallel-axis theorem and summed. ``a + b`` is the same for two bodies."""
-        items = list(bodies)
+        try:
+            items = list(bodies)
+        except TypeError:
+            raise ArgumentTypeError(f"bodies: must be an iterable of RigidBody, got {type(bodies).__name__}") from None
         if not items:
             raise PoinsotError("bodies: must hold at least one body, got none")
         for i, b in enumerate(items):
             if not isinstance(b, RigidBody):
-                raise PoinsotError(f"bodies: item {i} is a {type(b).__name__}, not a RigidBody")
+                raise ArgumentTypeError(f"bodies: item {i} is a {type(b).__name__}, not a RigidBody")
         return cls._wrap(_core.MassProperties.combine([b._core for b in items]))
 
     # ---- attributes -----------------------------------------------------------------------
@@ -568,7 +597,7 @@ class RigidBody:
                 undefined (message names ``omega``).
         """
         a = self._per_omega("momentum_angle", omega, about, ())
-        return np.degrees(a)[()] if degrees else a
+        return np.degrees(a)[()] if as_flag(degrees, "degrees") else a
 
     def translated(self, offset: Any) -> RigidBody:
         """The same body moved by ``offset`` (m, (3,)): the centre of mass moves, the inertia

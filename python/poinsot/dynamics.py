@@ -27,8 +27,16 @@ from typing import Any, Union
 import numpy as np
 
 from . import _core
-from ._validate import FloatArray, as_float_array, as_scalar, as_vector3
-from .errors import PoinsotError
+from ._validate import (
+    FloatArray,
+    as_callable,
+    as_count,
+    as_float_array,
+    as_scalar,
+    as_vector3,
+    public_names,
+)
+from .errors import ArgumentTypeError, PoinsotError
 from .free import _quat
 
 __all__ = [
@@ -40,7 +48,11 @@ __all__ = [
     "simulate",
     "simulate_batch",
     "METHODS",
+    "DEFAULT_MAX_STEPS",
 ]
+
+#: The default step limit of :func:`simulate` and :func:`simulate_batch` (10⁸).
+DEFAULT_MAX_STEPS: int = _core.DEFAULT_MAX_STEPS
 
 #: The integration methods of :func:`simulate`.
 METHODS = ("auto", "exact", "rk4", "dop853", "splitting2", "splitting4", "splitting6")
@@ -52,6 +64,9 @@ class BodyTorque:
 
     torque: Any
 
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "torque", as_vector3(self.torque, "torque"))
+
     def _spec(self, body: Any) -> tuple[str, FloatArray, float]:
         return "body", as_vector3(self.torque, "torque"), 0.0
 
@@ -61,6 +76,9 @@ class SpaceTorque:
     """A constant torque in space components (N·m, (3,)): N_body = Rᵀ N_space."""
 
     torque: Any
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "torque", as_vector3(self.torque, "torque"))
 
     def _spec(self, body: Any) -> tuple[str, FloatArray, float]:
         return "space", as_vector3(self.torque, "torque"), 0.0
@@ -77,6 +95,14 @@ class GravityTorque:
 
     mgl: float | None = None
     g: float = 9.80665
+
+    def __post_init__(self) -> None:
+        if self.mgl is not None:
+            object.__setattr__(self, "mgl", as_scalar(self.mgl, "mgl"))
+        g = as_scalar(self.g, "g")
+        if not g > 0:
+            raise PoinsotError(f"g: must be > 0, got {g}")
+        object.__setattr__(self, "g", g)
 
     def _spec(self, body: Any) -> tuple[str, FloatArray, float]:
         if self.mgl is not None:
@@ -97,6 +123,9 @@ class GravityGradientTorque:
     N_body = 3 n² r̂_b × (I·r̂_b), r̂_b = Rᵀ r̂."""
 
     mean_motion: float
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "mean_motion", as_scalar(self.mean_motion, "mean_motion"))
 
     def _spec(self, body: Any) -> tuple[str, FloatArray, float]:
         return "gravity_gradient", np.zeros(3), as_scalar(self.mean_motion, "mean_motion")
@@ -197,15 +226,25 @@ def _torque_spec(torque: TorqueLike, body: Any) -> tuple[str, FloatArray, float,
         return kind, np.ascontiguousarray(vec, dtype=np.float64), scalar, None
     if callable(torque):
         return "callback", np.zeros(3), 0.0, torque
-    raise PoinsotError(
+    raise ArgumentTypeError(
         "torque: must be None, BodyTorque, SpaceTorque, GravityTorque, GravityGradientTorque or a callable "
         f"f(t, omega, attitude) -> (3,), got {type(torque).__name__}"
     )
 
 
+def _optional_step(dt: Any) -> float | None:
+    if dt is None:
+        return None
+    dt_f = as_scalar(dt, "dt")
+    if not dt_f > 0:
+        raise PoinsotError(f"dt: must be finite and > 0, got {dt}")
+    return dt_f
+
+
 def simulate(body: Any, omega0: Any, duration: float, *, attitude0: Any = None, torque: TorqueLike = None,
              method: str = "auto", dt: float | None = None, samples: int = 1001, rtol: float = 1e-10,
-             atol: float = 1e-12, progress: Callable[[float], Any] | None = None) -> Trajectory:
+             atol: float = 1e-12, max_steps: int = DEFAULT_MAX_STEPS,
+             progress: Callable[[float], Any] | None = None) -> Trajectory:
     """Simulates a rigid body turning under a torque (Euler's equations 2.71 with the attitude).
 
     Parameters
@@ -234,18 +273,30 @@ def simulate(body: Any, omega0: Any, duration: float, *, attitude0: Any = None, 
         ``samples`` only, never with the number of steps.
     rtol, atol:
         DOP853 tolerances.
+    max_steps:
+        Step limit (default 10⁸). A fixed-step method refuses a request that needs more before
+        the first step (the error says how many steps it needs); DOP853 stops when it reaches
+        the limit.
     progress:
-        Optional ``progress(fraction)`` called as the run advances (about 200 times).
+        Optional ``progress(fraction)``, called at most every 20 ms of wall-clock time with the
+        fraction done and once with 1.0 at the end. An exception it raises stops the run and
+        propagates.
+
+    The run can be stopped with Ctrl-C (``KeyboardInterrupt``, within a tenth of a second).
+    ``samples`` is checked against the memory budget (:func:`memory_budget`) before any work.
 
     Raises
     ------
     PoinsotError
         Bad input; the message names the argument (``omega0``, ``duration``, ``dt``,
-        ``samples``, ``method``, ``torque``, ...).
+        ``samples``, ``max_steps``, ``method``, ``torque``, ...).
+    ArgumentTypeError
+        An argument of the wrong type (a ``PoinsotError`` and a ``TypeError``).
     InvalidInertiaError, InvalidRotationError
-        Invalid inertia; non-unit or zero ``attitude0``.
+        Invalid inertia (naming ``body``); non-unit or zero ``attitude0``.
     IntegrationError
-        The motion diverged; the message says at which time.
+        The motion diverged (naming ``duration``, and the time it failed; ``torque`` when a
+        callable returned NaN).
     """
     kind, vec, scalar, fn = _torque_spec(torque, body)
     inertia = np.ascontiguousarray(_inertia_of(body, torque), dtype=np.float64)
@@ -253,29 +304,35 @@ def simulate(body: Any, omega0: Any, duration: float, *, attitude0: Any = None, 
     if w0.shape != (3,):
         raise PoinsotError(f"omega0: must have shape (3,), got {w0.shape}")
     dur = as_scalar(duration, "duration")
-    if dt is not None:
-        dt_f = float(as_float_array(dt, "dt", finite=False))
-        if not (math.isfinite(dt_f) and dt_f > 0):
-            raise PoinsotError(f"dt: must be finite and > 0, got {dt}")
-    else:
-        dt_f = None
-    if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)):
-        raise PoinsotError(f"samples: must be an integer >= 2, got {samples!r}")
-    if samples < 2:
-        raise PoinsotError(f"samples: must be >= 2 (both ends are sampled), got {samples}")
+    dt_f = _optional_step(dt)
+    n = as_count(samples, "samples", 2)
     q0 = _quat(attitude0, "attitude0")
+    method = _method(method)
+    steps = as_count(max_steps, "max_steps", 1)
+    progress = as_callable(progress, "progress")
     fn_wrapped = None
     if fn is not None:
         def fn_wrapped(t: float, w: FloatArray, q: FloatArray) -> Any:
-            return np.asarray(fn(t, w, q), dtype=np.float64).reshape(-1).tolist()
-    d = _core.dynamics_simulate(inertia, w0, q0, dur, kind, vec, scalar, fn_wrapped, str(method), dt_f,
-                                int(samples), float(rtol), float(atol), progress)
+            out = np.asarray(fn(t, w, q))
+            if out.dtype.kind not in "iuf":
+                raise PoinsotError(f"torque: the callable must return 3 real numbers, got {out!r}")
+            return out.astype(np.float64).reshape(-1).tolist()
+    with public_names(inertia="body", t="duration"):
+        d = _core.dynamics_simulate(inertia, w0, q0, dur, kind, vec, scalar, fn_wrapped, method, dt_f, n,
+                                    as_scalar(rtol, "rtol"), as_scalar(atol, "atol"), steps, progress)
     return Trajectory(d)
+
+
+def _method(method: Any) -> str:
+    if not isinstance(method, str):
+        raise ArgumentTypeError(f"method: must be one of {', '.join(map(repr, METHODS))}, got {type(method).__name__}")
+    return method
 
 
 def simulate_batch(moments: Any, omega0: Any, duration: float, *, attitude0: Any = None,
                    torque: TorqueLike = None, method: str = "rk4",
-                   dt: float | None = None) -> tuple[FloatArray, FloatArray]:
+                   dt: float | None = None, max_steps: int = DEFAULT_MAX_STEPS,
+                   progress: Callable[[float], Any] | None = None) -> tuple[FloatArray, FloatArray]:
     """Integrates many bodies at once, in parallel (all cores), and returns their final states.
 
     Parameters
@@ -295,6 +352,12 @@ def simulate_batch(moments: Any, omega0: Any, duration: float, *, attitude0: Any
         "exact", "rk4" (default), "dop853", "splitting2/4/6" or "auto".
     dt:
         Fixed step (s); None: each body's default.
+    max_steps:
+        Step limit per body (default 10⁸), checked before the first step for the fixed-step
+        methods (the error says how many steps the request needs).
+    progress:
+        Optional ``progress(fraction)`` (fraction of the bodies done), called at most every
+        20 ms; an exception it raises stops the run. Ctrl-C stops it too.
 
     Returns
     -------
@@ -312,8 +375,10 @@ def simulate_batch(moments: Any, omega0: Any, duration: float, *, attitude0: Any
         if q.ndim != 2 or q.shape[1] != 4:
             raise PoinsotError(f"attitude0: must have shape (N, 4), got {q.shape}")
     if torque is not None and not hasattr(torque, "_spec"):
-        raise PoinsotError("torque: simulate_batch takes the built-in torques only (no callables)")
+        raise ArgumentTypeError("torque: simulate_batch takes the built-in torques only (no callables)")
     kind, vec, scalar, _ = _torque_spec(torque, None)
-    w_out, q_out, _steps = _core.dynamics_simulate_batch(m, w, q, as_scalar(duration, "duration"), kind, vec,
-                                                         scalar, str(method), None if dt is None else float(dt))
+    with public_names(t="duration"):
+        w_out, q_out, _steps = _core.dynamics_simulate_batch(
+            m, w, q, as_scalar(duration, "duration"), kind, vec, scalar, _method(method), _optional_step(dt),
+            as_count(max_steps, "max_steps", 1), as_callable(progress, "progress"))
     return np.asarray(w_out), np.asarray(q_out)

@@ -14,8 +14,16 @@ from typing import Any
 import numpy as np
 
 from . import _core
-from ._validate import FloatArray, as_float_array, as_scalar
-from .errors import PoinsotError
+from ._validate import (
+    FloatArray,
+    as_choice,
+    as_count,
+    as_flag,
+    as_float_array,
+    as_scalar,
+    public_names,
+)
+from .errors import ArgumentTypeError, PoinsotError
 
 __all__ = ["Earth", "Fall", "Flight", "FoucaultRun", "InertialOscillation", "LowFlow",
            "SIDEREAL_RATE", "SOLAR_DAY_RATE"]
@@ -28,16 +36,31 @@ SOLAR_DAY_RATE = 2.0 * np.pi / 86400.0
 _DEFAULT_TOL = 1e-12
 
 
-def _angles(value: Any, name: str, degrees: bool) -> tuple[FloatArray, tuple[int, ...]]:
+_GRAVITY = ("uniform", "inverse-square")
+
+#: Bytes per sample of a run's output: t and a state of up to 6 numbers (and, for the flow into
+#: a low, two more rows per parcel: energy and work).
+_SAMPLE_BYTES = 8 * 8
+
+
+def _angles(value: Any, name: str, degrees: Any) -> tuple[FloatArray, tuple[int, ...]]:
     arr = as_float_array(value, name)
-    if degrees:
+    if as_flag(degrees, "degrees"):
         arr = np.radians(arr)
     return np.ascontiguousarray(arr.reshape(-1)), arr.shape
 
 
-def _angle(value: Any, name: str, degrees: bool) -> float:
+def _angle(value: Any, name: str, degrees: Any) -> float:
     x = as_scalar(value, name)
-    return float(np.radians(x)) if degrees else x
+    return float(np.radians(x)) if as_flag(degrees, "degrees") else x
+
+
+def _times(duration: float, samples: Any) -> FloatArray:
+    """``samples`` evenly spaced times over [0, duration], the count checked first (type,
+    ≥ 2, and its output within the memory budget)."""
+    n = as_count(samples, "samples", 2)
+    _core.check_count("samples", n, 2, _SAMPLE_BYTES)
+    return np.linspace(0.0, duration, n)
 
 
 def _shape_out(arr: FloatArray, shape: tuple[int, ...]) -> Any:
@@ -292,7 +315,7 @@ class Earth:
         line leans towards the equator, by at most about 0.1° near 45°."""
         lat, shape = _angles(latitude, "latitude", degrees)
         dev = _core.earth_effective_gravity(*self._p, lat)[2]
-        return _shape_out(np.degrees(dev) if degrees else dev, shape)
+        return _shape_out(np.degrees(dev) if as_flag(degrees, "degrees") else dev, shape)
 
     def centrifugal_acceleration(self, latitude: Any, degrees: bool = False) -> FloatArray:
         """−ω × (ω × r) at the surface (m/s², ENU), of magnitude ω²R cos λ (ω²R at the
@@ -312,7 +335,7 @@ class Earth:
             lead = np.broadcast_shapes(lat.shape, vel.shape[:-1])
         except ValueError:
             raise PoinsotError(f"velocity_enu: shape {vel.shape} does not broadcast with latitude {lat.shape}") from None
-        lat = np.broadcast_to(np.radians(lat) if degrees else lat, lead).reshape(-1)
+        lat = np.broadcast_to(np.radians(lat) if as_flag(degrees, "degrees") else lat, lead).reshape(-1)
         vel = np.broadcast_to(vel, lead + (3,)).reshape(-1, 3)
         out = _core.earth_coriolis_acceleration(*self._p, np.ascontiguousarray(lat), np.ascontiguousarray(vel))
         return out.reshape(lead + (3,))
@@ -377,7 +400,7 @@ class Earth:
             shape = np.broadcast_shapes(h.shape, lat.shape)
         except ValueError:
             raise PoinsotError(f"height: shape {h.shape} does not broadcast with latitude {lat.shape}") from None
-        lat = np.radians(lat) if degrees else lat
+        lat = np.radians(lat) if as_flag(degrees, "degrees") else lat
         hh = np.ascontiguousarray(np.broadcast_to(h, shape).reshape(-1))
         ll = np.ascontiguousarray(np.broadcast_to(lat, shape).reshape(-1))
         return _shape_out(_core.earth_deflection(*self._p, direction, hh, ll), shape)
@@ -405,9 +428,11 @@ class Earth:
         """
         h = as_scalar(height, "height")
         lat = _angle(latitude, "latitude", degrees)
-        out = _core.earth_drop(*self._p, h, lat, gravity, bool(rotation), bool(centrifugal),
-                               as_scalar(rtol, "rtol"), as_scalar(atol, "atol"), int(max_steps),
-                               int(samples))
+        with public_names(t="height", y0="height"):
+            out = _core.earth_drop(*self._p, h, lat, as_choice(gravity, "gravity", _GRAVITY),
+                                   as_flag(rotation, "rotation"), as_flag(centrifugal, "centrifugal"),
+                                   as_scalar(rtol, "rtol"), as_scalar(atol, "atol"),
+                                   as_count(max_steps, "max_steps", 1), as_count(samples, "samples", 2))
         states = out["states"]
         return Fall(out["time"], out["east"], out["north"], out["t"], states[:, :3].copy(),
                     states[:, 3:].copy(), self.eastward_deflection(h, lat),
@@ -428,12 +453,15 @@ class Earth:
             ``time``, ``east``, ``north``, ``range``, ``downrange``, ``drift`` (to the right
             > 0: the north's deflection) and the trajectory.
         """
-        out = _core.earth_projectile(*self._p, as_scalar(speed, "speed"),
-                                     _angle(elevation, "elevation", degrees),
-                                     _angle(azimuth, "azimuth", degrees),
-                                     _angle(latitude, "latitude", degrees), as_scalar(height, "height"),
-                                     gravity, bool(rotation), bool(centrifugal), as_scalar(rtol, "rtol"),
-                                     as_scalar(atol, "atol"), int(max_steps), int(samples))
+        with public_names(t="speed", y0="speed"):
+            out = _core.earth_projectile(*self._p, as_scalar(speed, "speed"),
+                                         _angle(elevation, "elevation", degrees),
+                                         _angle(azimuth, "azimuth", degrees),
+                                         _angle(latitude, "latitude", degrees), as_scalar(height, "height"),
+                                         as_choice(gravity, "gravity", _GRAVITY), as_flag(rotation, "rotation"),
+                                         as_flag(centrifugal, "centrifugal"), as_scalar(rtol, "rtol"),
+                                         as_scalar(atol, "atol"), as_count(max_steps, "max_steps", 1),
+                                         as_count(samples, "samples", 2))
         states = out["states"]
         return Flight(out["time"], out["east"], out["north"], out["range"], out["downrange"],
                       out["drift"], out["t"], states[:, :3].copy(), states[:, 3:].copy())
@@ -460,11 +488,12 @@ class Earth:
         dur = as_scalar(duration, "duration")
         if not dur > 0:
             raise PoinsotError(f"duration: must be > 0, got {dur}")
-        n = int(samples)
-        if n < 2:
-            raise PoinsotError(f"samples: must be >= 2, got {samples}")
-        state = _core.earth_foucault_release(as_scalar(length, "length"), as_scalar(amplitude, "amplitude"), az)
-        times = np.linspace(0.0, dur, n)
+        times = _times(dur, samples)
+        progress = as_flag(progress, "progress")
+        steps = as_count(max_steps, "max_steps", 1)
+        tols = as_scalar(rtol, "rtol"), as_scalar(atol, "atol")
+        length = as_scalar(length, "length")
+        state = _core.earth_foucault_release(length, as_scalar(amplitude, "amplitude"), az)
         chunks = max(1, min(100, int(np.ceil(dur / 60.0)))) if progress else 1
         edges = np.linspace(0.0, dur, chunks + 1)
         parts_t, parts_s, turn_t, turn_a = [], [], [], []
@@ -479,9 +508,9 @@ class Earth:
             for i in range(chunks):
                 a, b = edges[i], edges[i + 1]
                 sel = times[(times >= a) & ((times < b) | (i == chunks - 1))]
-                out = _core.earth_foucault(*self._p, lat, float(length), state, float(a), float(b),
-                                           np.ascontiguousarray(sel), as_scalar(rtol, "rtol"),
-                                           as_scalar(atol, "atol"), int(max_steps))
+                with public_names(t="duration", t_end="duration", y0="amplitude", state0="amplitude"):
+                    out = _core.earth_foucault(*self._p, lat, length, state, float(a), float(b),
+                                               np.ascontiguousarray(sel), *tols, steps)
                 parts_t.append(out["t"])
                 parts_s.append(out["states"])
                 turn_t.append(out["turn_times"])
@@ -493,7 +522,8 @@ class Earth:
             if bar is not None:
                 bar.stop()
         tt, ta = np.concatenate(turn_t), np.concatenate(turn_a)
-        rate = _core.earth_fit_precession_rate(tt, ta)
+        with public_names(turn_times="duration", turn_angles="duration"):
+            rate = _core.earth_fit_precession_rate(tt, ta)
         expected = float(self.foucault_rate(lat))
         states = np.concatenate(parts_s)
         return FoucaultRun(np.concatenate(parts_t), states[:, :3].copy(), states[:, 3:].copy(), tt, ta,
@@ -521,9 +551,11 @@ class Earth:
         dur = (2.0 * period if np.isfinite(period) else 86400.0) if duration is None else as_scalar(duration, "duration")
         if not dur > 0:
             raise PoinsotError(f"duration: must be > 0, got {dur}")
-        times = np.linspace(0.0, dur, max(2, int(samples)))
-        out = _core.earth_inertial_oscillation(*self._p, lat, np.ascontiguousarray(v), dur, times,
-                                               as_scalar(rtol, "rtol"), as_scalar(atol, "atol"), int(max_steps))
+        times = _times(dur, samples)
+        with public_names(t="duration", t_end="duration", y0="velocity"):
+            out = _core.earth_inertial_oscillation(*self._p, lat, np.ascontiguousarray(v), dur, times,
+                                                   as_scalar(rtol, "rtol"), as_scalar(atol, "atol"),
+                                                   as_count(max_steps, "max_steps", 1))
         s = out["states"]
         rate = out["turning_rate"]
         return InertialOscillation(out["t"], s[:, :2].copy(), s[:, 2:].copy(), rate, period,
@@ -549,18 +581,20 @@ class Earth:
         rad = as_scalar(radius, "radius")
         if not rad > 0:
             raise PoinsotError(f"radius: must be > 0, got {rad}")
-        p = int(parcels)
-        if p < 1:
-            raise PoinsotError(f"parcels: must be >= 1, got {parcels}")
+        p = as_count(parcels, "parcels", 1)
+        n = as_count(samples, "samples", 2)
+        _core.check_memory("parcels", float(p) * n, _SAMPLE_BYTES)  # P tracks of n samples
         ang = 2 * np.pi * np.arange(p) / p
         starts = np.ascontiguousarray(np.stack([rad * np.cos(ang), rad * np.sin(ang)], axis=1))
         dur = as_scalar(duration, "duration")
         if not dur > 0:
             raise PoinsotError(f"duration: must be > 0, got {dur}")
-        times = np.linspace(0.0, dur, max(2, int(samples)))
-        out = _core.earth_flow_into_low(*self._p, lat, starts, as_scalar(pull, "pull") / rad,
-                                        as_scalar(friction, "friction"), dur, times,
-                                        as_scalar(rtol, "rtol"), as_scalar(atol, "atol"), int(max_steps))
+        times = _times(dur, n)
+        strength = as_scalar(pull, "pull") / rad
+        with public_names(t="duration", t_end="duration", y0="pull", strength="pull", starts="radius"):
+            out = _core.earth_flow_into_low(*self._p, lat, starts, strength, as_scalar(friction, "friction"), dur,
+                                            times, as_scalar(rtol, "rtol"), as_scalar(atol, "atol"),
+                                            as_count(max_steps, "max_steps", 1))
         tracks = np.stack(out["parcels"])
         circ = out["circulation"]
         # Below 1e-9 of radius × the speed the pull alone would give, the circulation is

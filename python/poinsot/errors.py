@@ -9,10 +9,17 @@ Every error poinsot raises for bad input is a :class:`PoinsotError`, which is al
         ├── InvalidRotationError   a matrix that is not a proper rotation
         ├── InvalidMeshError       a mesh that does not bound a solid
         ├── GimbalLockError        Euler-angle rates at the singular angles
-        └── IntegrationError       an integration that diverged
+        ├── IntegrationError       an integration that diverged
+        └── ArgumentTypeError      an argument of the wrong type (also a TypeError)
 
-The types are created by the compiled core (so that Rust errors map to them in one place,
-``crates/poinsot-py/src/errors.rs``) and re-exported here.
+The types but the last are created by the compiled core (so that Rust errors map to them in
+one place, ``crates/poinsot-py/src/errors.rs``) and re-exported here.
+
+The contract (pinned by the fuzz suite, ``python/tests/test_fuzz.py``): every call either
+returns finite numbers only (but for documented infinities, such as the pitch of a pure
+translation) or raises one of these errors, whose message starts with the name of the argument
+at fault — ``"samples: must be >= 2, got 1"``. A long run is stopped by Ctrl-C
+(``KeyboardInterrupt``) within a tenth of a second.
 """
 
 from __future__ import annotations
@@ -27,6 +34,12 @@ from ._core import (
 )
 
 
+class ArgumentTypeError(PoinsotError, TypeError):
+    """An argument of the wrong type: text or complex numbers where real numbers are expected,
+    a float where a count is, a non-boolean flag. Both a :class:`PoinsotError` and a
+    ``TypeError``, so either ``except`` clause catches it."""
+
+
 class GimbalLockWarning(UserWarning):
     """Euler angles were extracted at gimbal lock: the triple is valid but not unique
     (poinsot sets the third angle to 0)."""
@@ -39,5 +52,6 @@ __all__ = [
     "InvalidMeshError",
     "GimbalLockError",
     "IntegrationError",
+    "ArgumentTypeError",
     "GimbalLockWarning",
 ]

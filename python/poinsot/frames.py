@@ -22,7 +22,7 @@ from typing import Any, Union
 import numpy as np
 
 from . import _core
-from ._validate import FloatArray, as_float_array, as_matrices, as_scalar
+from ._validate import FloatArray, as_count, as_float_array, as_matrices, as_scalar, public_names
 from .errors import PoinsotError
 
 __all__ = ["MovingFrame", "FrameTransform", "ParticleTrajectory", "simulate_particle"]
@@ -43,10 +43,11 @@ _ZERO3 = np.zeros(3)
 
 def _fast_scalar(value: Any, name: str) -> float:
     """A finite float (fast path for Python floats and ints)."""
-    if type(value) is float or type(value) is int:
-        f = float(value)
-        if math.isfinite(f):
-            return f
+    if type(value) is float:
+        if math.isfinite(value):
+            return value
+    elif type(value) is int and -(2**53) <= value <= 2**53:
+        return float(value)
     return as_scalar(value, name)
 
 
@@ -360,9 +361,15 @@ def _frame_callable(frame: Callable[[float], MovingFrame]) -> Callable[[float], 
 
 def _force_callable(force: Callable[..., Any]) -> Callable[..., tuple[float, float, float]]:
     def call(t: float, x: float, y: float, z: float, vx: float, vy: float, vz: float) -> tuple[float, float, float]:
-        f = np.asarray(force(t, np.array((x, y, z)), np.array((vx, vy, vz))), dtype=np.float64)
+        got = force(t, np.array((x, y, z)), np.array((vx, vy, vz)))
+        try:
+            f = as_float_array(got, "force", finite=False)
+        except PoinsotError:
+            raise PoinsotError(f"force: the callable must return 3 real numbers, got {got!r}") from None
         if f.shape != (3,):
             raise PoinsotError(f"force: the callable must return shape (3,), got {f.shape}")
+        if np.isnan(f).any() and math.isfinite(t) and all(map(math.isfinite, (x, y, z, vx, vy, vz))):
+            raise PoinsotError(f"force: the callable returned {f.tolist()} at t = {t} s: a force must be finite")
         return float(f[0]), float(f[1]), float(f[2])
 
     return call
@@ -417,12 +424,13 @@ def simulate_particle(frame: FrameLike, position: Any, velocity: Any, duration: 
     r0 = _fast_vector(position, "position")
     v0 = _fast_vector(velocity, "velocity")
     if t_eval is None:
-        n = int(samples)
-        if n < 2:
-            raise PoinsotError(f"samples: must be >= 2, got {samples}")
+        n = samples if type(samples) is int and 2 <= samples <= 100_000 else as_count(samples, "samples", 2)
         times = None
     else:
-        times = np.ascontiguousarray(as_float_array(t_eval, "t_eval").reshape(-1))
+        times = as_float_array(t_eval, "t_eval")
+        if times.ndim != 1:
+            raise PoinsotError(f"t_eval: must have shape (N,), got {times.shape}")
+        times = np.ascontiguousarray(times)
         if times.size == 0 or np.any(np.diff(times) < 0) or times[0] < 0 or times[-1] > dur:
             raise PoinsotError("t_eval: must be non-empty, increasing and inside [0, duration]")
         n = times.size
@@ -438,13 +446,12 @@ def simulate_particle(frame: FrameLike, position: Any, velocity: Any, duration: 
         packed, frame_fn = _IDENTITY_FRAME, _frame_callable(frame)
     else:
         raise PoinsotError(f"frame: must be a MovingFrame or a callable t -> MovingFrame, got {type(frame).__name__}")
-    steps = int(max_steps)
-    if steps < 1:
-        raise PoinsotError(f"max_steps: must be >= 1, got {max_steps}")
+    steps = max_steps if type(max_steps) is int and max_steps >= 1 else as_count(max_steps, "max_steps", 1)
     # Plain floats go straight to the core, which checks their ranges and names them.
     m = mass if type(mass) is float else _fast_scalar(mass, "mass")
     rt = rtol if type(rtol) is float else _fast_scalar(rtol, "rtol")
     at = atol if type(atol) is float else _fast_scalar(atol, "atol")
-    states, evaluations = _core.frame_simulate_particle(
-        packed, frame_fn, m, r0, v0, 0.0, dur, n, times, f_const, f_fn, rt, at, steps)
+    with public_names(t="duration", t_end="duration", y0="force", times="t_eval"):
+        states, evaluations = _core.frame_simulate_particle(
+            packed, frame_fn, m, r0, v0, 0.0, dur, n, times, f_const, f_fn, rt, at, steps)
     return ParticleTrajectory(times if times is not None else (dur, n), states, frame, evaluations)

@@ -21,7 +21,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from . import _core
-from ._validate import FloatArray, as_float_array, as_scalar, as_vector3
+from ._validate import FloatArray, as_choice, as_count, as_float_array, as_scalar, as_vector3
 from .errors import PoinsotError
 
 __all__ = ["FreeSymmetricTop", "FreeRigidBody", "AxisStability", "axis_stability"]
@@ -189,12 +189,23 @@ class FreeSymmetricTop:
     @staticmethod
     def omega3_squared_from(I1: float, I3: float, energy: float, angular_momentum: float) -> float:  # noqa: N803
         """ω₃² = (L² − 2 T I₁) / (I₃ (I₃ − I₁)) (2.95), from T (J) and |L| (kg·m²/s)."""
-        return float(_core.SymmetricTopSolution.omega3_squared_from(I1, I3, energy, angular_momentum))
+        return float(_core.SymmetricTopSolution.omega3_squared_from(
+            as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(energy, "energy"),
+            as_scalar(angular_momentum, "angular_momentum")))
 
     @staticmethod
     def amplitude_squared_from(I1: float, I3: float, energy: float, angular_momentum: float) -> float:  # noqa: N803
         """A² = (L² − 2 I₃ T) / (I₁ (I₁ − I₃)) (2.96), from T (J) and |L| (kg·m²/s)."""
-        return float(_core.SymmetricTopSolution.amplitude_squared_from(I1, I3, energy, angular_momentum))
+        return float(_core.SymmetricTopSolution.amplitude_squared_from(
+            as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(energy, "energy"),
+            as_scalar(angular_momentum, "angular_momentum")))
+
+
+def _samples(samples: Any) -> int:
+    """A polhode's point count: an int ≥ 2 whose (samples, 3) output fits the memory budget."""
+    n = as_count(samples, "samples", 2)
+    _core.check_count("samples", n, 2, 3 * 8)
+    return n
 
 
 class FreeRigidBody:
@@ -311,15 +322,14 @@ class FreeRigidBody:
         there, I·ρ, is parallel to L, and the body point at ρ is at rest: it rolls without
         slipping. Raises PoinsotError for another ``frame`` or non-finite ``t``.
         """
-        if frame not in ("space", "body"):
-            raise PoinsotError(f"frame: must be 'space' or 'body', got {frame!r}")
+        as_choice(frame, "frame", ("space", "body"))
         ts, shape = _times(t)
         return np.asarray(self._core.contact_point(ts, frame == "body")).reshape(shape + (3,))
 
     def contact_polhode(self, samples: int = 721) -> FloatArray:
         """The polhode drawn on the inertia ellipsoid ρ·I·ρ = 1: :meth:`polhode` scaled by
         (2T)^-½, body components, shape (samples, 3)."""
-        return np.asarray(self._core.contact_polhode(int(samples)))
+        return np.asarray(self._core.contact_polhode(_samples(samples)))
 
     def state(self, t: Any) -> tuple[FloatArray, FloatArray]:
         """(ω (body, rad/s), attitude [w, x, y, z]) at ``t`` (s): shapes t.shape + (3,) and
@@ -343,7 +353,7 @@ class FreeRigidBody:
     def polhode(self, samples: int = 721) -> FloatArray:
         """``samples`` points of the polhode — ω over one period in body components (rad/s),
         shape (samples, 3); on the separatrix the branch from t = −12/λ to 12/λ."""
-        return np.asarray(self._core.polhode(int(samples)))
+        return np.asarray(self._core.polhode(_samples(samples)))
 
     def herpolhode(self, t: Any) -> FloatArray:
         """ω(t) in space components (rad/s), shape t.shape + (3,): its tip traces the herpolhode

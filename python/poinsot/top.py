@@ -25,7 +25,7 @@ from typing import Any
 import numpy as np
 
 from . import _core
-from ._validate import FloatArray, as_float_array, as_scalar
+from ._validate import FloatArray, as_flag, as_float_array, as_scalar
 
 __all__ = ["HeavyTop", "SteadyPrecession", "MOTION_CLASSES"]
 
@@ -67,12 +67,12 @@ class SteadyPrecession:
 
 def _angle(value: Any, name: str, degrees: bool) -> float:
     x = as_scalar(value, name)
-    return math.radians(x) if degrees else x
+    return math.radians(x) if as_flag(degrees, "degrees") else x
 
 
 def _flat(value: Any, name: str, degrees: bool = False) -> tuple[FloatArray, tuple[int, ...]]:
     arr = as_float_array(value, name)
-    if degrees:
+    if as_flag(degrees, "degrees"):
         arr = np.radians(arr)
     return np.ascontiguousarray(arr.reshape(-1), dtype=np.float64), arr.shape
 
@@ -327,7 +327,7 @@ class HeavyTop:
         jumps of pi where the axis passes exactly through a pole."""
         flat, shape = _flat(t, "t")
         out = self._core.euler_angles(flat)
-        if degrees:
+        if as_flag(degrees, "degrees"):
             out = np.degrees(out)
         return _shaped(out[:, 0], shape), _shaped(out[:, 1], shape), _shaped(out[:, 2], shape)
 
@@ -336,7 +336,7 @@ class HeavyTop:
         ``phi'`` by 2.106, ``psi' = omega3 - phi' cos(theta)``, ``theta'`` from the solution."""
         flat, shape = _flat(t, "t")
         out = self._core.euler_rates(flat)
-        if degrees:
+        if as_flag(degrees, "degrees"):
             out = np.degrees(out)
         return _shaped(out[:, 0], shape), _shaped(out[:, 1], shape), _shaped(out[:, 2], shape)
 

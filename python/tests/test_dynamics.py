@@ -232,7 +232,7 @@ def test_progress_and_divergence():
 @pytest.mark.parametrize(
     ("kwargs", "exc", "name"),
     [
-        ({"body": [1.0, 1.0, 3.0]}, poinsot.InvalidInertiaError, "inertia"),
+        ({"body": [1.0, 1.0, 3.0]}, poinsot.InvalidInertiaError, "body"),
         ({"omega0": [np.nan, 0, 0]}, poinsot.PoinsotError, "omega0"),
         ({"omega0": [1, 0]}, poinsot.PoinsotError, "omega0"),
         ({"duration": 0.0}, poinsot.PoinsotError, "duration"),
@@ -246,7 +246,18 @@ def test_progress_and_divergence():
         ({"method": "splitting2", "torque": lambda t, w, q: w}, poinsot.PoinsotError, "method"),
         ({"torque": 3.0}, poinsot.PoinsotError, "torque"),
         ({"torque": lambda t, w, q: [1.0, 2.0]}, poinsot.PoinsotError, "torque"),
-        ({"torque": BodyTorque([np.inf, 0, 0])}, poinsot.PoinsotError, "torque"),
+        # Issue 10: a huge torque overflows the state under every method; the splittings used
+        # to return an infinite energy silently.
+        ({"torque": SpaceTorque([1e308] * 3), "method": "splitting2", "dt": 0.01, "samples": 11},
+         poinsot.PoinsotError, "torque"),
+        ({"torque": SpaceTorque([1e308, 0, 0]), "omega0": [0.0, 0.0, 1.0], "method": "splitting2",
+          "dt": 0.01, "samples": 11}, poinsot.IntegrationError, "duration"),
+        ({"torque": SpaceTorque([1e308, 0, 0]), "omega0": [0.0, 0.0, 1.0], "method": "splitting6",
+          "dt": 0.01, "samples": 11}, poinsot.IntegrationError, "duration"),
+        ({"torque": SpaceTorque([1e308, 0, 0]), "omega0": [0.0, 0.0, 1.0], "method": "rk4",
+          "dt": 0.01, "samples": 11}, poinsot.IntegrationError, "duration"),
+        ({"torque": SpaceTorque([1e308, 0, 0]), "omega0": [0.0, 0.0, 1.0], "method": "dop853",
+          "samples": 11}, poinsot.IntegrationError, "duration"),
     ],
 )
 def test_bad_input_names_the_argument(kwargs, exc, name):
@@ -255,3 +266,16 @@ def test_bad_input_names_the_argument(kwargs, exc, name):
     body, omega0, duration = args.pop("body"), args.pop("omega0"), args.pop("duration")
     with pytest.raises(exc, match=f"^{name}: "):
         simulate(body, omega0, duration, **args)
+
+
+def test_torques_are_checked_when_made():
+    """A torque holding NaN, infinity or the wrong shape is refused when it is made (issue 10)."""
+    for bad in ([np.inf, 0, 0], [np.nan, 0, 0], [1.0, 2.0], "x"):
+        with pytest.raises(poinsot.PoinsotError, match="^torque: "):
+            BodyTorque(bad)
+        with pytest.raises(poinsot.PoinsotError, match="^torque: "):
+            SpaceTorque(bad)
+    with pytest.raises(poinsot.PoinsotError, match="^mgl: "):
+        poinsot.GravityTorque(mgl=np.nan)
+    with pytest.raises(poinsot.PoinsotError, match="^mean_motion: "):
+        poinsot.GravityGradientTorque(np.inf)

@@ -15,6 +15,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::analytic::opt_quat;
+use crate::control::{run, run_attached};
 use crate::convert::{mat3, vec3};
 use crate::errors::{invalid, IntoPy};
 use crate::frames::{rows_in, rows_out};
@@ -28,12 +29,14 @@ fn torque_from(kind: &str, vector: [f64; 3], scalar: f64) -> PyResult<Torque> {
         "gravity_gradient" => Torque::GravityGradient {
             mean_motion: scalar,
         },
-        _ => return Err(invalid(
-            "torque",
-            format!(
+        _ => {
+            return Err(invalid(
+                "torque",
+                format!(
                 "must be none, body, space, gravity, gravity_gradient or callback, got {kind:?}"
             ),
-        )),
+            ))
+        }
     };
     t.validate().py()?;
     Ok(t)
@@ -66,6 +69,17 @@ impl TorqueModel for PyTorque<'_, '_> {
                     ),
                 ));
             }
+            let state_finite = ctx.omega.iter().all(|x| x.is_finite()) && ctx.t.is_finite();
+            if state_finite && v.iter().any(|x| x.is_nan()) {
+                return Err(crate::errors::to_py(poinsot::Error::diverged(
+                    "torque",
+                    format!(
+                        "the callback returned {v:?} at t = {} s for omega = {:?}: a torque must be finite",
+                        ctx.t,
+                        ctx.omega.as_slice()
+                    ),
+                )));
+            }
             Ok(Vec3::new(v[0], v[1], v[2]))
         });
         match got {
@@ -82,7 +96,7 @@ impl TorqueModel for PyTorque<'_, '_> {
 /// "attitude", "angular_momentum", "energy", "potential", "power") and counters ("method",
 /// "step", "steps", "torque_evaluations").
 #[pyfunction]
-#[pyo3(signature = (inertia, omega0, attitude0, duration, torque_kind, torque_vector, torque_scalar, torque_fn, method, dt, samples, rtol, atol, progress))]
+#[pyo3(signature = (inertia, omega0, attitude0, duration, torque_kind, torque_vector, torque_scalar, torque_fn, method, dt, samples, rtol, atol, max_steps, progress))]
 #[allow(clippy::too_many_arguments)]
 fn dynamics_simulate<'py>(
     py: Python<'py>,
@@ -99,6 +113,7 @@ fn dynamics_simulate<'py>(
     samples: usize,
     rtol: f64,
     atol: f64,
+    max_steps: usize,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let rows = mat3("inertia", &inertia)?;
@@ -113,23 +128,11 @@ fn dynamics_simulate<'py>(
         samples,
         rtol,
         atol,
-        ..SimulateOptions::default()
+        max_steps,
     };
     let vector = vec3("torque", &torque_vector)?;
     let error: RefCell<Option<PyErr>> = RefCell::new(None);
-    // Progress: at most ~200 calls into Python.
-    let mut next_report = 0.0;
-    let mut report = |f: f64| {
-        if let Some(cb) = &progress {
-            if f >= next_report || f >= 1.0 {
-                next_report = f + 0.005;
-                if let Err(e) = cb.call1((f,)) {
-                    error.borrow_mut().get_or_insert(e);
-                }
-            }
-        }
-    };
-    let result = if torque_kind == "callback" {
+    let tr = if torque_kind == "callback" {
         let Some(func) = &torque_fn else {
             return Err(invalid("torque", "a callback torque needs a callable"));
         };
@@ -138,21 +141,20 @@ fn dynamics_simulate<'py>(
             func,
             error: &error,
         };
-        dyn_core::simulate(&body, w0, q0, duration, &mut model, &opts, &mut report)
+        let result = run_attached(py, progress.as_ref(), || {
+            dyn_core::simulate(&body, w0, q0, duration, &mut model, &opts)
+        });
+        // The callback's own exception explains a run it stopped.
+        if let Some(e) = error.into_inner() {
+            return Err(e);
+        }
+        result?
     } else {
         let mut torque = torque_from(torque_kind, vector, torque_scalar)?;
-        if progress.is_none() {
-            py.detach(|| {
-                dyn_core::simulate(&body, w0, q0, duration, &mut torque, &opts, &mut |_| {})
-            })
-        } else {
-            dyn_core::simulate(&body, w0, q0, duration, &mut torque, &opts, &mut report)
-        }
+        run(py, progress.as_ref(), || {
+            dyn_core::simulate(&body, w0, q0, duration, &mut torque, &opts)
+        })?
     };
-    if let Some(e) = error.into_inner() {
-        return Err(e);
-    }
-    let tr = result.py()?;
     let d = PyDict::new(py);
     d.set_item("t", PyArray1::from_vec(py, tr.t))?;
     d.set_item("omega", rows_out(py, &tr.omega))?;
@@ -171,7 +173,7 @@ fn dynamics_simulate<'py>(
 /// Simulates many bodies in parallel (see `poinsot.simulate_batch`): principal moments (N, 3),
 /// ω₀ (N, 3), optional attitudes (N, 4) → (ω (N, 3), attitude (N, 4), steps per body).
 #[pyfunction]
-#[pyo3(signature = (moments, omega0, attitude0, duration, torque_kind, torque_vector, torque_scalar, method, dt))]
+#[pyo3(signature = (moments, omega0, attitude0, duration, torque_kind, torque_vector, torque_scalar, method, dt, max_steps, progress))]
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
 fn dynamics_simulate_batch<'py>(
     py: Python<'py>,
@@ -184,6 +186,8 @@ fn dynamics_simulate_batch<'py>(
     torque_scalar: f64,
     method: &str,
     dt: Option<f64>,
+    max_steps: usize,
+    progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<(
     Bound<'py, numpy::PyArray2<f64>>,
     Bound<'py, numpy::PyArray2<f64>>,
@@ -197,9 +201,18 @@ fn dynamics_simulate_batch<'py>(
     };
     let torque = torque_from(torque_kind, vec3("torque", &torque_vector)?, torque_scalar)?;
     let method = Method::parse(method).py()?;
-    let out = py
-        .detach(|| dyn_core::simulate_batch(&m, &w, q.as_deref(), duration, &torque, method, dt))
-        .py()?;
+    let out = run(py, progress.as_ref(), || {
+        dyn_core::simulate_batch(
+            &m,
+            &w,
+            q.as_deref(),
+            duration,
+            &torque,
+            method,
+            dt,
+            max_steps,
+        )
+    })?;
     Ok((
         rows_out(py, &out.omega),
         rows_out(py, &out.attitude),

@@ -53,6 +53,9 @@ pub fn to_py(e: Error) -> PyErr {
         ErrorKind::InvalidMesh => InvalidMeshError::new_err(msg),
         ErrorKind::GimbalLock => GimbalLockError::new_err(msg),
         ErrorKind::Diverged => IntegrationError::new_err(msg),
+        // A monitor stopped the run without keeping a Python exception (not expected: the
+        // Python monitor keeps the KeyboardInterrupt or the callback's exception).
+        ErrorKind::Interrupted => pyo3::exceptions::PyKeyboardInterrupt::new_err(msg),
     }
 }
 

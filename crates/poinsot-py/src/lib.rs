@@ -6,6 +6,7 @@
 #![forbid(unsafe_code)]
 
 mod analytic;
+mod control;
 mod convert;
 mod dynamics;
 mod earth;
@@ -18,10 +19,48 @@ mod special;
 
 use pyo3::prelude::*;
 
+/// The memory budget (bytes) of one call's outputs (see `poinsot.limits`).
+#[pyfunction]
+fn memory_budget() -> u64 {
+    poinsot::limits::memory_budget()
+}
+
+/// Sets the memory budget (bytes); returns the previous one.
+#[pyfunction]
+fn set_memory_budget(bytes: u64) -> PyResult<u64> {
+    use errors::IntoPy;
+    poinsot::limits::set_memory_budget(bytes).py()
+}
+
+/// Checks a user's count (samples, parcels): at least `minimum`, and `count` items of
+/// `bytes_each` bytes within the memory budget; the error names `argument`.
+#[pyfunction]
+fn check_count(argument: &str, count: usize, minimum: usize, bytes_each: usize) -> PyResult<()> {
+    use errors::IntoPy;
+    poinsot::limits::check_count(argument, count, minimum, bytes_each).py()
+}
+
+/// Checks that `count` items of `bytes_each` bytes fit in the memory budget (`count` a float:
+/// a product of counts); the error names `argument`.
+#[pyfunction]
+fn check_memory(argument: &str, count: f64, bytes_each: usize) -> PyResult<()> {
+    use errors::IntoPy;
+    poinsot::limits::check_memory(argument, count, bytes_each).py()
+}
+
 /// The compiled core of poinsot (private: use the `poinsot` package).
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add("DEFAULT_MAX_STEPS", poinsot::limits::DEFAULT_MAX_STEPS)?;
+    m.add(
+        "DEFAULT_MEMORY_BUDGET",
+        poinsot::limits::DEFAULT_MEMORY_BUDGET,
+    )?;
+    m.add_function(wrap_pyfunction!(memory_budget, m)?)?;
+    m.add_function(wrap_pyfunction!(set_memory_budget, m)?)?;
+    m.add_function(wrap_pyfunction!(check_count, m)?)?;
+    m.add_function(wrap_pyfunction!(check_memory, m)?)?;
     errors::register(m)?;
     rotation::register(m)?;
     inertia::register(m)?;

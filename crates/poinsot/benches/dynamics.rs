@@ -53,7 +53,6 @@ fn bench(c: &mut Criterion) {
                         10.0,
                         &mut Torque::None,
                         &opts,
-                        &mut |_| {},
                     )
                     .unwrap()
                 })
@@ -87,6 +86,7 @@ fn bench(c: &mut Criterion) {
                 &Torque::None,
                 Method::Rk4,
                 Some(1e-3),
+                poinsot::limits::DEFAULT_MAX_STEPS,
             )
             .unwrap()
         })
@@ -101,6 +101,7 @@ fn bench(c: &mut Criterion) {
                 &Torque::None,
                 Method::Splitting(2),
                 Some(1e-3),
+                poinsot::limits::DEFAULT_MAX_STEPS,
             )
             .unwrap()
         })

@@ -22,6 +22,9 @@ pub enum ErrorKind {
     GimbalLock,
     /// A numerical integration diverged or could not reach its tolerance.
     Diverged,
+    /// The caller stopped the computation ([`crate::control`]: Ctrl-C, a progress callback
+    /// that raised).
+    Interrupted,
 }
 
 /// An error of the physics core: the argument at fault and the condition it violates.
@@ -81,17 +84,41 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
+/// A number for an error message: as Rust's `Display` for ordinary magnitudes, in exponent
+/// form outside [1e-4, 1e16) — `1e308`, not 309 digits.
+pub fn num(x: f64) -> String {
+    let a = x.abs();
+    if x == 0.0 || !x.is_finite() || (1e-4..1e16).contains(&a) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
+/// A computed `value` if it is finite; otherwise an error naming the user's `argument` that
+/// says `what` cannot be represented (it overflows) — every returned number is finite.
+pub fn finite_result(argument: &str, what: &str, value: f64) -> Result<f64> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::invalid(
+            argument,
+            format!("{what} is not representable as a finite number for this value (it overflows)"),
+        ))
+    }
+}
+
 /// Checks that every value is finite; names `argument` otherwise.
 pub fn check_finite(argument: &str, values: &[f64]) -> Result<()> {
     match values.iter().position(|v| !v.is_finite()) {
         None => Ok(()),
         Some(i) if values.len() == 1 => Err(Error::invalid(
             argument,
-            format!("must be finite, got {}", values[i]),
+            format!("must be finite, got {}", num(values[i])),
         )),
         Some(i) => Err(Error::invalid(
             argument,
-            format!("must be finite, got {} at index {}", values[i], i),
+            format!("must be finite, got {} at index {}", num(values[i]), i),
         )),
     }
 }
@@ -103,7 +130,7 @@ pub fn check_positive(argument: &str, value: f64) -> Result<()> {
     } else {
         Err(Error::invalid(
             argument,
-            format!("must be finite and > 0, got {value}"),
+            format!("must be finite and > 0, got {}", num(value)),
         ))
     }
 }
@@ -115,7 +142,7 @@ pub fn check_non_negative(argument: &str, value: f64) -> Result<()> {
     } else {
         Err(Error::invalid(
             argument,
-            format!("must be finite and >= 0, got {value}"),
+            format!("must be finite and >= 0, got {}", num(value)),
         ))
     }
 }
@@ -135,5 +162,13 @@ mod tests {
             .contains("index 1"));
         assert!(check_non_negative("height", 0.0).is_ok());
         assert!(check_non_negative("height", -0.0 - 1e-300).is_err());
+        assert_eq!(num(1e308), "1e308");
+        assert_eq!(num(-2.5), "-2.5");
+        assert_eq!(num(5e-324), "5e-324");
+        assert!(check_positive("dt", 1e-308).is_ok());
+        assert!(check_positive("dt", -1e300)
+            .unwrap_err()
+            .message
+            .ends_with("got -1e300"));
     }
 }

@@ -14,6 +14,8 @@
 //! | [`integrate`] | ODE integrators that know no physics: adaptive DOP853 with dense output and events, RK4 | — |
 //! | [`dynamics`] | Euler's equations with torques, attitude quaternions, `simulate` (exact flow, Lie–Poisson splitting, RK4, DOP853), batches | 2.67–2.76 |
 //! | [`analytic`] | closed forms: the free symmetric top, the free asymmetric top (Jacobi functions, Π), Poinsot's construction, axis stability; the heavy symmetric top (Lagrangian, effective potential, turning points, steady precession, exact motion) | 2.77–2.121 |
+//! | [`control`] | stopping long computations (Ctrl-C) and reporting their progress | — |
+//! | [`limits`] | the memory budget and step limits checked before work starts | — |
 //! | [`special`] | Jacobi elliptic functions sn, cn, dn, am (parameter m = k²) and elliptic integrals F, E, K, Π | — |
 //!
 //! Conventions (see `CONVENTIONS.md` at the repository root): SI units, radians, right-handed
@@ -23,12 +25,14 @@
 #![warn(missing_docs)]
 
 pub mod analytic;
+pub mod control;
 pub mod dynamics;
 pub mod earth;
 pub mod error;
 pub mod frames;
 pub mod inertia;
 pub mod integrate;
+pub mod limits;
 pub mod rotation;
 pub mod special;
 

@@ -8,9 +8,13 @@ use super::model::BodyInertia;
 use super::simulate::{default_step, Method};
 use super::splitting::{free_steps, kicked_step, SplitState};
 use super::torque::{Torque, TorqueContext, TorqueModel};
+use std::sync::Arc;
+
 use crate::analytic::{check_moments, normalized, quaternion_matrix, FreeRigidBody};
+use crate::control;
 use crate::error::{Error, Result};
 use crate::integrate::{composition_coefficients, dop853, Options};
+use crate::limits::check_steps;
 use crate::rotation::{check_quaternion, Quaternion};
 use crate::Vec3;
 
@@ -30,9 +34,13 @@ pub struct BatchResult {
 /// each body's own inertia), with `method` and the fixed step `dt` (`None`: each body's
 /// [`default_step`]), in parallel. Returns the final states only.
 ///
-/// Errors name `moments`, `omega0` or `attitude0` with the row at fault, `duration`, `dt` or
-/// `method`; a diverging body stops everything with [`crate::ErrorKind::Diverged`] naming its
-/// row.
+/// Every body may take at most `max_steps` steps (checked before the first step for the
+/// fixed-step methods; DOP853 stops there). The run can be stopped through
+/// [`crate::control`] (a monitor on the calling thread), also while the workers run.
+///
+/// Errors name `moments`, `omega0` or `attitude0` with the row at fault, `duration`, `dt`,
+/// `max_steps` or `method`; a diverging body stops everything with
+/// [`crate::ErrorKind::Diverged`] naming its row.
 pub fn simulate_batch(
     moments: &[[f64; 3]],
     omega0: &[[f64; 3]],
@@ -41,6 +49,7 @@ pub fn simulate_batch(
     torque: &Torque,
     method: Method,
     dt: Option<f64>,
+    max_steps: usize,
 ) -> Result<BatchResult> {
     let n = moments.len();
     if omega0.len() != n {
@@ -70,9 +79,22 @@ pub fn simulate_batch(
         if !(h.is_finite() && h > 0.0) {
             return Err(Error::invalid(
                 "dt",
-                format!("must be finite and > 0, got {h}"),
+                format!("must be finite and > 0, got {}", crate::error::num(h)),
             ));
         }
+        if method.is_fixed_step() {
+            check_steps(
+                (duration / h).ceil(),
+                max_steps,
+                &format!(
+                    "take a larger dt (now {} s) or a shorter duration",
+                    crate::error::num(h)
+                ),
+            )?;
+        }
+    }
+    if max_steps == 0 {
+        return Err(Error::invalid("max_steps", "must be >= 1, got 0"));
     }
     torque.validate()?;
     let method = match method {
@@ -108,22 +130,34 @@ pub fn simulate_batch(
             None => [1.0, 0.0, 0.0, 0.0],
         });
     }
-    let results: Vec<Result<([f64; 3], Quaternion, usize)>> = (0..n)
-        .into_par_iter()
-        .with_min_len(256)
-        .map(|i| {
-            one_body(
-                &moments[i],
-                &omega0[i],
-                &q0[i],
-                duration,
-                *torque,
-                method,
-                dt,
-            )
-            .map_err(|e| Error::new(e.kind, e.argument, format!("body {i}: {}", e.message)))
-        })
-        .collect();
+    let q0 = &q0;
+    let results: Vec<Result<([f64; 3], Quaternion, usize)>> =
+        control::parallel(n as u64, |cancel| {
+            Ok((0..n)
+                .into_par_iter()
+                .with_min_len(256)
+                .map(|i| {
+                    cancel.check()?;
+                    // The worker's own loops (DOP853, RK4) poll the shared flag too.
+                    let (result, _) = control::watched(Arc::clone(cancel), || {
+                        one_body(
+                            &moments[i],
+                            &omega0[i],
+                            &q0[i],
+                            duration,
+                            *torque,
+                            method,
+                            dt,
+                            max_steps,
+                        )
+                    });
+                    cancel.advance(1);
+                    result.map_err(|e| {
+                        Error::new(e.kind, e.argument, format!("body {i}: {}", e.message))
+                    })
+                })
+                .collect())
+        })?;
     let mut out = BatchResult {
         omega: Vec::with_capacity(n),
         attitude: Vec::with_capacity(n),
@@ -138,6 +172,7 @@ pub fn simulate_batch(
     Ok(out)
 }
 
+#[allow(clippy::too_many_arguments)]
 fn one_body(
     moments: &[f64; 3],
     omega0: &[f64; 3],
@@ -146,6 +181,7 @@ fn one_body(
     torque: Torque,
     method: Method,
     dt: Option<f64>,
+    max_steps: usize,
 ) -> Result<([f64; 3], Quaternion, usize)> {
     let w0 = Vec3::from(*omega0);
     let inertia_t = crate::Mat3::from_diagonal(&Vec3::from(*moments));
@@ -166,13 +202,15 @@ fn one_body(
             inertia: &inertia_t,
         })
     };
-    let steps_for = |torque_norm: f64| -> (usize, f64) {
-        let inertia = BodyInertia::from_moments(*moments).expect("checked");
+    let steps_for = |torque_norm: f64| -> Result<(usize, f64)> {
+        let inertia = BodyInertia::from_moments(*moments)?;
         let h = dt
             .or_else(|| default_step(&inertia, &w0, torque_norm, torque.orbit_rate()))
             .unwrap_or(duration);
-        let k = (duration / h).ceil().max(1.0) as usize;
-        (k, duration / k as f64)
+        let k = (duration / h).ceil().max(1.0);
+        check_steps(k, max_steps, "take a larger dt or a shorter duration")?;
+        let k = k as usize;
+        Ok((k, duration / k as f64))
     };
     match method {
         Method::Exact => {
@@ -183,17 +221,19 @@ fn one_body(
             Ok(([w.x, w.y, w.z], q, 0))
         }
         Method::Rk4 => {
-            let (k, h) = steps_for(torque_at(0.0, &w0, q0).norm());
+            let (k, h) = steps_for(torque_at(0.0, &w0, q0).norm())?;
             let mut y = [w0.x, w0.y, w0.z, q0[0], q0[1], q0[2], q0[3]];
             let rigid = RigidRhs::new(moments);
             if torque.is_zero() {
                 let mut none = |_t: f64, _w: &Vec3, _q: &Quaternion| Vec3::zeros();
                 for s in 0..k {
+                    control::tick()?;
                     y = rigid.rk4_step(h * s as f64, &y, h, &mut none);
                 }
             } else {
                 let mut model = |t: f64, w: &Vec3, q: &Quaternion| torque_at(t, w, q);
                 for s in 0..k {
+                    control::tick()?;
                     y = rigid.rk4_step(h * s as f64, &y, h, &mut model);
                 }
             }
@@ -207,20 +247,27 @@ fn one_body(
         }
         Method::Splitting(order) => {
             let gammas = composition_coefficients(usize::from(order))?;
-            let (k, h) = steps_for(torque_at(0.0, &w0, q0).norm());
+            let (k, h) = steps_for(torque_at(0.0, &w0, q0).norm())?;
             let mut state = SplitState {
                 l: Vec3::new(moments[0] * w0.x, moments[1] * w0.y, moments[2] * w0.z),
                 q: *q0,
                 t: 0.0,
             };
             if torque.is_zero() {
-                free_steps(&mut state, moments, gammas, h, k);
+                let mut left = k;
+                while left > 0 {
+                    let chunk = left.min(4096);
+                    free_steps(&mut state, moments, gammas, h, chunk);
+                    left -= chunk;
+                    control::tick_by(chunk as u32)?;
+                }
             } else {
                 let mut kick = |s: &mut SplitState, dt: f64| {
                     let w = Vec3::new(s.l.x / moments[0], s.l.y / moments[1], s.l.z / moments[2]);
                     s.l += dt * torque_at(s.t, &w, &s.q);
                 };
                 for _ in 0..k {
+                    control::tick()?;
                     kicked_step(&mut state, moments, gammas, h, &mut kick);
                 }
             }
@@ -248,7 +295,7 @@ fn one_body(
             };
             let opts = Options {
                 dense: false,
-                max_steps: 100_000_000,
+                max_steps,
                 ..Options::with_tolerances(1e-10, 1e-12)
             };
             let sol = dop853(rhs, 0.0, y0, duration, &opts)?;

@@ -8,8 +8,10 @@ use super::torque::{TorqueContext, TorqueModel};
 use crate::analytic::{
     conj, hamilton, normalized, quaternion_matrix, same_hemisphere, FreeRigidBody,
 };
+use crate::control;
 use crate::error::{check_finite, Error, Result};
 use crate::integrate::{composition_coefficients, Dop853, Options};
+use crate::limits::{check_count, check_steps, DEFAULT_MAX_STEPS};
 use crate::rotation::{check_quaternion, Quaternion};
 use crate::{Mat3, Vec3};
 
@@ -87,7 +89,9 @@ pub struct SimulateOptions {
     pub rtol: f64,
     /// DOP853 absolute tolerance (default 1e-12).
     pub atol: f64,
-    /// DOP853 step limit (default 10⁸).
+    /// Step limit of every method but the exact flow (default
+    /// [`DEFAULT_MAX_STEPS`] = 10⁸): the fixed-step methods refuse, before the first step, a
+    /// request that needs more; DOP853 stops when it reaches it.
     pub max_steps: usize,
 }
 
@@ -99,10 +103,17 @@ impl Default for SimulateOptions {
             samples: 1001,
             rtol: 1e-10,
             atol: 1e-12,
-            max_steps: 100_000_000,
+            max_steps: DEFAULT_MAX_STEPS,
         }
     }
 }
+
+/// Bytes of output per sample of a [`Trajectory`]: t, ω (3), q (4), L (3), T, V, power.
+pub const TRAJECTORY_BYTES_PER_SAMPLE: usize = 14 * std::mem::size_of::<f64>();
+
+/// Steps of the splittings between two polls of [`crate::control`] (and between progress
+/// reports), about a millisecond of work.
+const STEPS_PER_CHUNK: usize = 4096;
 
 /// A sampled trajectory, in the body axes the user gave.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -250,9 +261,12 @@ fn resolve<T: TorqueModel + ?Sized>(method: Method, torque: &T) -> Result<Method
 /// and attitude `attitude0` (`[w, x, y, z]`, body → space; identity if `None`) for `duration`
 /// seconds under `torque`, sampling `opts.samples` evenly spaced times (both ends included).
 ///
-/// `progress(fraction)` is called after each sample. Errors name the argument at fault
-/// (`omega0`, `attitude0`, `duration`, `dt`, `samples`, `method`, `rtol`, ...); a diverging
-/// integration stops with [`crate::ErrorKind::Diverged`] naming `t` and saying when.
+/// Progress is reported to [`crate::control`] (which can also stop the run). Before any work,
+/// `samples` is checked against the memory budget ([`crate::limits`]) and the steps a
+/// fixed-step method needs against `opts.max_steps`. Errors name the argument at fault
+/// (`omega0`, `attitude0`, `duration`, `dt`, `samples`, `max_steps`, `method`, `rtol`, ...); a
+/// diverging integration — any output that stops being finite, energy included — stops with
+/// [`crate::ErrorKind::Diverged`] naming `t` and saying when.
 #[allow(clippy::needless_range_loop)]
 pub fn simulate<T: TorqueModel + ?Sized>(
     inertia: &BodyInertia,
@@ -261,35 +275,21 @@ pub fn simulate<T: TorqueModel + ?Sized>(
     duration: f64,
     torque: &mut T,
     opts: &SimulateOptions,
-    progress: &mut dyn FnMut(f64),
 ) -> Result<Trajectory> {
     let q0 = check_start(&omega0, attitude0, duration)?;
-    if opts.samples < 2 {
-        return Err(Error::invalid(
-            "samples",
-            format!("must be >= 2 (both ends are sampled), got {}", opts.samples),
-        ));
-    }
+    check_count("samples", opts.samples, 2, TRAJECTORY_BYTES_PER_SAMPLE)?;
     if let Some(dt) = opts.dt {
         if !(dt.is_finite() && dt > 0.0) {
             return Err(Error::invalid(
                 "dt",
-                format!("must be finite and > 0, got {dt}"),
+                format!("must be finite and > 0, got {}", crate::error::num(dt)),
             ));
         }
     }
     let method = resolve(opts.method, torque)?;
     let frames = Frames { inertia };
     let n = opts.samples;
-    let times: Vec<f64> = (0..n)
-        .map(|i| {
-            if i + 1 == n {
-                duration
-            } else {
-                duration * i as f64 / (n - 1) as f64
-            }
-        })
-        .collect();
+    let times = crate::integrate::even_times(0.0, duration, n);
     let mut out = Trajectory {
         method,
         ..Trajectory::default()
@@ -323,14 +323,27 @@ pub fn simulate<T: TorqueModel + ?Sized>(
             (torque.torque(&ctx), torque.potential(&ctx))
         };
         *evaluations += usize::from(!torque.is_zero());
+        let l_s = attitude * l_b;
+        let energy = 0.5 * w_b.dot(&l_b);
+        let p = power(&w_b, &n_b);
+        // Every returned number is finite: an overflow anywhere (ω, L, T, V, power) is the
+        // run diverging, reported with its time.
+        let finite = w_b.iter().chain(l_s.iter()).all(|x| x.is_finite())
+            && q_b.iter().all(|x| x.is_finite())
+            && energy.is_finite()
+            && v.is_finite()
+            && p.is_finite();
+        if !finite {
+            return Err(diverged(t));
+        }
         out.t.push(t);
         out.omega.push([w_b.x, w_b.y, w_b.z]);
         out.attitude.push(q_b);
-        let l_s = attitude * l_b;
         out.angular_momentum.push([l_s.x, l_s.y, l_s.z]);
-        out.energy.push(0.5 * w_b.dot(&l_b));
+        out.energy.push(energy);
         out.potential.push(v);
-        out.power.push(power(&w_b, &n_b));
+        out.power.push(p);
+        Ok(())
     };
     for v in [
         &mut out.t as &mut Vec<f64>,
@@ -347,20 +360,29 @@ pub fn simulate<T: TorqueModel + ?Sized>(
     let w0_p = frames.omega_p(&omega0);
     let q0_p = frames.q_p(&q0);
     let moments = inertia.moments;
-    record(&mut out, 0.0, &w0_p, &q0_p, torque, &mut evaluations);
+    record(&mut out, 0.0, &w0_p, &q0_p, torque, &mut evaluations).map_err(|_| {
+        // Which input overflows: ω₀ (through L or T), or else the torque (its power ω·N).
+        let l0 = inertia.tensor * omega0;
+        if l0.iter().all(|x| x.is_finite()) && (0.5 * omega0.dot(&l0)).is_finite() {
+            overflow_at_start("torque", "the torque's power ω·N or potential")
+        } else {
+            overflow_at_start("omega0", "the initial angular momentum or energy")
+        }
+    })?;
 
     match method {
         Method::Exact => {
             if omega0.norm() == 0.0 {
                 for &t in &times[1..] {
-                    record(&mut out, t, &w0_p, &q0_p, torque, &mut evaluations);
+                    record(&mut out, t, &w0_p, &q0_p, torque, &mut evaluations)?;
+                    control::report(t / duration)?;
                 }
             } else {
                 let body = FreeRigidBody::new(moments, w0_p, Some(normalized(&q0_p)))?;
                 for (i, &t) in times.iter().enumerate().skip(1) {
                     let (w, q) = body.state(t);
-                    record(&mut out, t, &w, &q, torque, &mut evaluations);
-                    progress(i as f64 / (n - 1) as f64);
+                    record(&mut out, t, &w, &q, torque, &mut evaluations)?;
+                    control::report(i as f64 / (n - 1) as f64)?;
                 }
             }
         }
@@ -376,12 +398,14 @@ pub fn simulate<T: TorqueModel + ?Sized>(
             };
             let interval = duration / (n - 1) as f64;
             let sub = (interval / dt).ceil().max(1.0);
-            if sub > 1e15 {
-                return Err(Error::invalid(
-                    "dt",
-                    format!("{dt} is too small for a duration of {duration} s"),
-                ));
-            }
+            check_steps(
+                sub * (n - 1) as f64,
+                opts.max_steps,
+                &format!(
+                    "take a larger dt (now {} s) or a shorter duration",
+                    crate::error::num(dt)
+                ),
+            )?;
             let sub = sub as usize;
             let h = interval / sub as f64;
             out.step = Some(h);
@@ -389,12 +413,21 @@ pub fn simulate<T: TorqueModel + ?Sized>(
                 let mut y = [w0_p.x, w0_p.y, w0_p.z, q0_p[0], q0_p[1], q0_p[2], q0_p[3]];
                 let zero = torque.is_zero();
                 let rigid = RigidRhs::new(&moments);
+                // Progress within the run, and a check that the state stays finite (a NaN from a
+                // torque callback, an overflow) at every step, not only at the samples.
+                let at =
+                    |i: usize, k: usize| ((i - 1) as f64 + k as f64 / sub as f64) / (n - 1) as f64;
+                let finite = |y: &[f64; 7]| y.iter().sum::<f64>().is_finite();
                 for i in 1..n {
                     let t_start = times[i - 1];
                     if zero {
                         let mut none = |_t: f64, _w: &Vec3, _q: &Quaternion| Vec3::zeros();
                         for k in 0..sub {
+                            control::report(at(i, k))?;
                             y = rigid.rk4_step(t_start + h * k as f64, &y, h, &mut none);
+                            if !finite(&y) {
+                                return Err(diverged(t_start + h * (k + 1) as f64));
+                            }
                         }
                     } else {
                         let torque = &mut *torque;
@@ -404,7 +437,11 @@ pub fn simulate<T: TorqueModel + ?Sized>(
                             frames.torque_p(torque, t, w, q)
                         };
                         for k in 0..sub {
+                            control::report(at(i, k))?;
                             y = rigid.rk4_step(t_start + h * k as f64, &y, h, &mut model);
+                            if !finite(&y) {
+                                return Err(diverged(t_start + h * (k + 1) as f64));
+                            }
                         }
                     }
                     if !y.iter().all(|v| v.is_finite()) {
@@ -412,8 +449,8 @@ pub fn simulate<T: TorqueModel + ?Sized>(
                     }
                     out.steps += sub;
                     let (w, q) = (Vec3::new(y[0], y[1], y[2]), [y[3], y[4], y[5], y[6]]);
-                    record(&mut out, times[i], &w, &q, torque, &mut evaluations);
-                    progress(i as f64 / (n - 1) as f64);
+                    record(&mut out, times[i], &w, &q, torque, &mut evaluations)?;
+                    control::report(i as f64 / (n - 1) as f64)?;
                 }
             } else {
                 let Method::Splitting(order) = method else {
@@ -430,9 +467,18 @@ pub fn simulate<T: TorqueModel + ?Sized>(
                     t: 0.0,
                 };
                 let zero = torque.is_zero();
+                let at =
+                    |i: usize, k: usize| ((i - 1) as f64 + k as f64 / sub as f64) / (n - 1) as f64;
                 for i in 1..n {
                     if zero {
-                        free_steps(&mut state, &moments, gammas, h, sub);
+                        let mut left = sub;
+                        while left > 0 {
+                            let k = left.min(STEPS_PER_CHUNK);
+                            free_steps(&mut state, &moments, gammas, h, k);
+                            left -= k;
+                            control::report(at(i, sub - left))?;
+                            control::tick_by(k as u32)?;
+                        }
                     } else {
                         let mut kick = |s: &mut SplitState, dt: f64| {
                             let w = Vec3::new(
@@ -444,8 +490,14 @@ pub fn simulate<T: TorqueModel + ?Sized>(
                             evaluations += 1;
                             s.l += dt * nt;
                         };
-                        for _ in 0..sub {
+                        for k in 0..sub {
+                            control::report(at(i, k))?;
                             kicked_step(&mut state, &moments, gammas, h, &mut kick);
+                            if !(state.l.sum().is_finite()
+                                && state.q.iter().sum::<f64>().is_finite())
+                            {
+                                return Err(diverged(times[i - 1] + h * (k + 1) as f64));
+                            }
                         }
                     }
                     state.t = times[i];
@@ -458,8 +510,8 @@ pub fn simulate<T: TorqueModel + ?Sized>(
                         return Err(diverged(times[i]));
                     }
                     out.steps += sub;
-                    record(&mut out, times[i], &w, &state.q, torque, &mut evaluations);
-                    progress(i as f64 / (n - 1) as f64);
+                    record(&mut out, times[i], &w, &state.q, torque, &mut evaluations)?;
+                    control::report(i as f64 / (n - 1) as f64)?;
                 }
             }
         }
@@ -495,6 +547,7 @@ pub fn simulate<T: TorqueModel + ?Sized>(
             let mut y = y0;
             while !stepper.is_finished() {
                 stepper.step()?;
+                control::report(stepper.t() / duration)?;
                 if next < n && times[next] <= stepper.t() {
                     let dense = stepper.dense_step();
                     while next < n && times[next] <= stepper.t() {
@@ -506,14 +559,14 @@ pub fn simulate<T: TorqueModel + ?Sized>(
                         pending.push((times[next], y));
                         next += 1;
                     }
-                    progress((next - 1) as f64 / (n - 1) as f64);
+                    control::report((next - 1) as f64 / (n - 1) as f64)?;
                 }
             }
             out.steps = stepper.stats().accepted;
             evaluations += evals;
             for (t, y) in pending {
                 let (w, q) = (Vec3::new(y[0], y[1], y[2]), [y[3], y[4], y[5], y[6]]);
-                record(&mut out, t, &w, &q, torque, &mut evaluations);
+                record(&mut out, t, &w, &q, torque, &mut evaluations)?;
             }
         }
         Method::Auto => unreachable!("resolved above"),
@@ -524,6 +577,13 @@ pub fn simulate<T: TorqueModel + ?Sized>(
 
 fn diverged(t: f64) -> Error {
     Error::diverged("t", format!("the state stopped being finite at t = {t} s: the motion diverged (reduce dt, or check the torque)"))
+}
+
+fn overflow_at_start(argument: &str, what: &str) -> Error {
+    Error::invalid(
+        argument,
+        format!("{what} at the start is not representable as a finite number (overflow): scale the problem (units) down"),
+    )
 }
 
 /// The orbital rate of a gravity-gradient torque (for the default step), else 0.

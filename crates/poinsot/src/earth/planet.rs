@@ -1,8 +1,10 @@
 //! The Earth's parameters and the local quantities of the unit (eqs. 2.29–2.33, 2.42).
 
-use std::f64::consts::{FRAC_PI_2, PI};
+use std::f64::consts::{FRAC_PI_2, PI, SQRT_2};
 
-use crate::error::{check_finite, check_non_negative, check_positive, Error, Result};
+use crate::error::{
+    check_finite, check_non_negative, check_positive, finite_result, Error, Result,
+};
 use crate::Vec3;
 
 /// The Earth's sidereal rotation rate, 2π / 86164.0905 s (rad/s): the true rate, the default.
@@ -34,7 +36,11 @@ pub struct Earth {
 impl Default for Earth {
     /// The sidereal rate, the mean radius and standard gravity.
     fn default() -> Self {
-        Self { rotation_rate: SIDEREAL_RATE, radius: MEAN_RADIUS, g: STANDARD_GRAVITY }
+        Self {
+            rotation_rate: SIDEREAL_RATE,
+            radius: MEAN_RADIUS,
+            g: STANDARD_GRAVITY,
+        }
     }
 }
 
@@ -69,12 +75,19 @@ impl Earth {
         check_non_negative("rotation_rate", rotation_rate)?;
         check_positive("radius", radius)?;
         check_positive("g", g)?;
-        Ok(Self { rotation_rate, radius, g })
+        Ok(Self {
+            rotation_rate,
+            radius,
+            g,
+        })
     }
 
     /// The unit's Earth: one turn per solar day (ω = 2π/86400 s), mean radius, standard gravity.
     pub fn solar_day() -> Self {
-        Self { rotation_rate: SOLAR_DAY_RATE, ..Self::default() }
+        Self {
+            rotation_rate: SOLAR_DAY_RATE,
+            ..Self::default()
+        }
     }
 
     /// ω in ENU components at `latitude` (rad): ω (0, cos λ, sin λ) (eq. 2.33).
@@ -102,7 +115,11 @@ impl Earth {
         let c = self.centrifugal_acceleration(latitude)?;
         let vector = Vec3::new(0.0, 0.0, -self.g) + c;
         let deviation = (-vector.y).atan2(-vector.z);
-        Ok(EffectiveGravity { vector, magnitude: vector.norm(), deviation })
+        Ok(EffectiveGravity {
+            vector,
+            magnitude: vector.norm(),
+            deviation,
+        })
     }
 
     /// The Coriolis acceleration −2 ω × v (m/s², ENU) of a particle moving with `velocity`
@@ -126,7 +143,12 @@ impl Earth {
     pub fn eastward_deflection(&self, height: f64, latitude: f64) -> Result<f64> {
         check_non_negative("height", height)?;
         check_latitude(latitude)?;
-        Ok(self.rotation_rate * latitude.cos() * (8.0 * height.powi(3) / self.g).sqrt() / 3.0)
+        // √(8h³/g) = 2√2 · h · √(h/g), without overflowing h³ on the way.
+        let x = self.rotation_rate
+            * latitude.cos()
+            * (2.0 * SQRT_2 * height * (height / self.g).sqrt())
+            / 3.0;
+        finite_result("height", "the eastward deflection", x)
     }
 
     /// The second-order southward deflection (m; equatorward: positive south in the north,
@@ -138,13 +160,19 @@ impl Earth {
         check_non_negative("height", height)?;
         check_latitude(latitude)?;
         let w = self.rotation_rate;
-        Ok(0.75 * w * w * (2.0 * latitude).sin() * height * height / self.g)
+        let wh = w * height;
+        finite_result(
+            "height",
+            "the southward deflection",
+            0.75 * (2.0 * latitude).sin() * wh * (wh / self.g),
+        )
     }
 
     /// The time of fall from `height` (m) without rotation, √(2h/g) (eq. 2.41).
     pub fn fall_time(&self, height: f64) -> Result<f64> {
         check_non_negative("height", height)?;
-        Ok((2.0 * height / self.g).sqrt())
+        // √(2h/g) = √2 · √(h/g): finite for every finite h.
+        Ok(SQRT_2 * (height / self.g).sqrt())
     }
 
     /// The rate at which a Foucault pendulum's swing plane turns (rad/s), counterclockwise
@@ -157,6 +185,10 @@ impl Earth {
     /// The period of inertial oscillations, 2π/|f| = π/(ω |sin λ|) (s); infinite at the equator.
     pub fn inertial_period(&self, latitude: f64) -> Result<f64> {
         let f = self.coriolis_parameter(latitude)?;
-        Ok(if f == 0.0 { f64::INFINITY } else { 2.0 * PI / f.abs() })
+        Ok(if f == 0.0 {
+            f64::INFINITY
+        } else {
+            2.0 * PI / f.abs()
+        })
     }
 }

@@ -2,7 +2,7 @@
 //! and the same particle integrated in the fixed frame for comparison.
 
 use super::motion::FrameMotion;
-use crate::error::{check_finite, check_positive, Result};
+use crate::error::{check_finite, check_positive, Error, Result};
 use crate::integrate::{dop853_scan, dop853_until, Crossing, Options, Scan, Solution};
 use crate::Vec3;
 
@@ -20,6 +20,49 @@ pub(crate) fn split(y: &ParticleState) -> (Vec3, Vec3) {
 fn fictitious_acceleration<M: FrameMotion + ?Sized>(frame: &M, t: f64, r: &Vec3, v: &Vec3) -> Vec3 {
     let (acc, w, wd) = frame.moving_components(t);
     -acc - 2.0 * w.cross(v) - w.cross(&w.cross(r)) - wd.cross(r)
+}
+
+/// Checks the start of a run in a moving frame: `1/mass` finite, and each fictitious term
+/// finite at `(t0, position, velocity)`, so that an overflow is blamed on the argument that
+/// causes it (`mass`, `frame`, `velocity` for Coriolis, `position` for the centrifugal and
+/// Euler terms) instead of on the integrator.
+fn check_start<M: FrameMotion + ?Sized>(
+    frame: &M,
+    mass: f64,
+    t0: f64,
+    r: &Vec3,
+    v: &Vec3,
+) -> Result<()> {
+    check_positive("mass", mass)?;
+    check_finite("position", r.as_slice())?;
+    check_finite("velocity", v.as_slice())?;
+    let finite = |x: Vec3| x.iter().all(|c| c.is_finite());
+    if !(1.0 / mass).is_finite() {
+        return Err(Error::invalid(
+            "mass",
+            format!("1/mass overflows for mass = {}", crate::error::num(mass)),
+        ));
+    }
+    let (acc, w, wd) = frame.moving_components(t0);
+    if !(finite(acc) && finite(w) && finite(wd)) {
+        return Err(Error::invalid(
+            "frame",
+            "the frame's acceleration or angular velocity is not finite at the start",
+        ));
+    }
+    if !finite(2.0 * w.cross(v)) {
+        return Err(Error::invalid(
+            "velocity",
+            "the Coriolis acceleration 2 ω × v overflows at the start",
+        ));
+    }
+    if !finite(w.cross(&w.cross(r)) + wd.cross(r)) {
+        return Err(Error::invalid(
+            "position",
+            "the centrifugal or Euler acceleration overflows at this position",
+        ));
+    }
+    Ok(())
 }
 
 /// Like [`simulate_particle`], but returns only the states at `times` (monotone, inside
@@ -40,17 +83,26 @@ where
     M: FrameMotion + ?Sized,
     F: FnMut(f64, &Vec3, &Vec3) -> Vec3,
 {
-    check_positive("mass", mass)?;
-    check_finite("position", position.as_slice())?;
-    check_finite("velocity", velocity.as_slice())?;
-    let y0 = [position.x, position.y, position.z, velocity.x, velocity.y, velocity.z];
+    check_start(frame, mass, t0, &position, &velocity)?;
+    let y0 = [
+        position.x, position.y, position.z, velocity.x, velocity.y, velocity.z,
+    ];
     let inv_mass = 1.0 / mass;
     let rhs = |t: f64, y: &ParticleState, dy: &mut ParticleState| {
         let (r, v) = split(y);
         let a = force(t, &r, &v) * inv_mass + fictitious_acceleration(frame, t, &r, &v);
         *dy = [v.x, v.y, v.z, a.x, a.y, a.z];
     };
-    dop853_scan(rhs, t0, y0, t_end, times, opts, |_t: f64, _y: &ParticleState| 1.0, Crossing::Any)
+    dop853_scan(
+        rhs,
+        t0,
+        y0,
+        t_end,
+        times,
+        opts,
+        |_t: f64, _y: &ParticleState| 1.0,
+        Crossing::Any,
+    )
 }
 
 /// Integrates a particle of `mass` (kg) relative to the moving `frame` from `t0` to `t_end`:
@@ -82,10 +134,10 @@ where
     F: FnMut(f64, &Vec3, &Vec3) -> Vec3,
     G: FnMut(f64, &ParticleState) -> f64,
 {
-    check_positive("mass", mass)?;
-    check_finite("position", position.as_slice())?;
-    check_finite("velocity", velocity.as_slice())?;
-    let y0 = [position.x, position.y, position.z, velocity.x, velocity.y, velocity.z];
+    check_start(frame, mass, t0, &position, &velocity)?;
+    let y0 = [
+        position.x, position.y, position.z, velocity.x, velocity.y, velocity.z,
+    ];
     let rhs = |t: f64, y: &ParticleState, dy: &mut ParticleState| {
         let (r, v) = split(y);
         let a = force(t, &r, &v) / mass + fictitious_acceleration(frame, t, &r, &v);
@@ -93,7 +145,15 @@ where
     };
     match event {
         Some((g, crossing)) => dop853_until(rhs, t0, y0, t_end, opts, g, crossing),
-        None => dop853_until(rhs, t0, y0, t_end, opts, |_t: f64, _y: &ParticleState| 1.0, Crossing::Any),
+        None => dop853_until(
+            rhs,
+            t0,
+            y0,
+            t_end,
+            opts,
+            |_t: f64, _y: &ParticleState| 1.0,
+            Crossing::Any,
+        ),
     }
 }
 
@@ -115,7 +175,9 @@ where
     check_positive("mass", mass)?;
     check_finite("position", position.as_slice())?;
     check_finite("velocity", velocity.as_slice())?;
-    let y0 = [position.x, position.y, position.z, velocity.x, velocity.y, velocity.z];
+    let y0 = [
+        position.x, position.y, position.z, velocity.x, velocity.y, velocity.z,
+    ];
     let rhs = |t: f64, y: &ParticleState, dy: &mut ParticleState| {
         let (r, v) = split(y);
         let a = force(t, &r, &v) / mass;

@@ -15,13 +15,17 @@
 mod composition;
 mod dop853;
 mod dop853_coefficients;
+mod grid;
 mod options;
 mod rk4;
 mod solution;
 mod state;
 
-pub use composition::{compose, composition_coefficients, SymmetricStep, KAHAN_LI_6, TRIPLE_JUMP_4};
+pub use composition::{
+    compose, composition_coefficients, SymmetricStep, KAHAN_LI_6, TRIPLE_JUMP_4,
+};
 pub use dop853::{dop853, dop853_scan, dop853_until, Dop853, Scan};
+pub use grid::even_times;
 pub use options::{Crossing, Options, Stats, MIN_RTOL};
 pub use rk4::{rk4, rk4_step};
 pub use solution::{DenseStep, EventHit, Solution};

@@ -329,6 +329,12 @@ pub fn angular_velocity_batch(
         check_rec("angles", a)?;
         check_rec("rates", r)?;
         let w = angular_velocity_unchecked(*a, *r, seq, frame);
+        if !w.iter().all(|c| c.is_finite()) {
+            return Err(Error::invalid(
+                "rates",
+                "the angular velocity overflows for these rates",
+            ));
+        }
         *y = [w.x, w.y, w.z];
         Ok(())
     })
@@ -357,6 +363,12 @@ pub fn euler_rates_batch(
         check_rec("angles", a)?;
         check_rec("omega_body", w)?;
         *y = euler_rates_checked_input(*a, &Vec3::from(*w), seq, frame)?;
+        if !y.iter().all(|c| c.is_finite()) {
+            return Err(Error::invalid(
+                "omega_body",
+                "the Euler-angle rates overflow for this angular velocity",
+            ));
+        }
         Ok(())
     })
 }

@@ -62,7 +62,14 @@ impl Screw {
         let p_perp = self.point - n.dot(&self.point) * n;
         let half = (0.5 * phi).sin();
         let moved = 2.0 * half * half * p_perp - phi.sin() * n.cross(&self.point);
-        Ok((r, moved + (s * self.slide) * n))
+        let t = moved + (s * self.slide) * n;
+        if !t.iter().all(|c| c.is_finite()) {
+            return Err(crate::Error::invalid(
+                "s",
+                "the translation overflows at this fraction of the screw motion",
+            ));
+        }
+        Ok((r, t))
     }
 
     /// Applies the screw motion to point `x`: `point + R (x − point) + slide · axis`, i.e.
@@ -118,6 +125,12 @@ pub fn screw_axis(r: &Mat3, t: &Vec3) -> Result<Screw> {
     let half = 0.5 * angle;
     let cot = half.cos() / half.sin();
     let point = 0.5 * (t_perp + cot * n.cross(&t_perp));
+    if !(point.iter().all(|c| c.is_finite()) && slide.is_finite()) {
+        return Err(crate::Error::invalid(
+            "t",
+            "the screw's point or slide overflows for this translation",
+        ));
+    }
     Ok(Screw {
         axis: n,
         point,

@@ -1,0 +1,146 @@
+"""Never stuck (issue 10): the memory budget and step limits are checked before any work, and
+every long run stops on Ctrl-C within a tenth of a second, or when its progress callback raises.
+
+The Ctrl-C tests run the call in a child process that sends itself SIGINT after 0.5 s (as a
+terminal does on Ctrl-C) and reports how long the call took to raise ``KeyboardInterrupt``; each
+call would run for minutes otherwise, so finishing without the interrupt fails the test.
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+import textwrap
+import time
+
+import numpy as np
+import pytest
+
+import poinsot as ps
+
+#: The issue's bound on the time from SIGINT to KeyboardInterrupt (s).
+INTERRUPT_LATENCY = 0.2
+
+
+def test_memory_budget_refuses_huge_outputs_before_allocating() -> None:
+    """``samples=10**12`` used to abort the interpreter (8 TB allocation); now every sized output
+    says how many bytes it would need, naming the argument."""
+    calls = [
+        lambda: ps.simulate([1, 2, 3], [0.1, 0.5, 1], 10.0, samples=10**12),
+        lambda: ps.simulate_particle(ps.MovingFrame(), [1, 0, 0], [0, 1, 0], 1.0, samples=10**12),
+        lambda: ps.Earth().drop(100.0, 0.5, samples=10**12),
+        lambda: ps.Earth().projectile(100.0, 0.7, 0.0, 0.5, samples=10**12),
+        lambda: ps.Earth().foucault(0.7, duration=10.0, samples=10**12),
+        lambda: ps.Earth().inertial_oscillation(0.7, samples=10**12),
+        lambda: ps.Earth().flow_into_low(0.7, samples=10**12),
+        lambda: ps.Earth().flow_into_low(0.7, parcels=10**12),
+        lambda: ps.FreeRigidBody([1, 2, 3], [1, 0.1, 1]).polhode(10**12),
+        lambda: ps.FreeRigidBody([1, 2, 3], [1, 0.1, 1]).contact_polhode(10**12),
+    ]
+    for call in calls:
+        with pytest.raises(ps.PoinsotError, match=r"^(samples|parcels): .*would need [0-9.e]+ bytes"):
+            call()
+
+
+@pytest.mark.parametrize("bad", [2**63, 2**64 + 1, 2.5, -1, 0, "10", True, None, np.float64(3.0)])
+def test_counts_are_integers_in_range(bad: object) -> None:
+    """Counts are refused, naming the argument, when not an integer ≥ 2 (2.5 was truncated to
+    2, -1 overflowed, 2**63 panicked with "capacity overflow")."""
+    with pytest.raises(ps.PoinsotError, match="^samples: "):
+        ps.simulate([1, 2, 3], [0.1, 0.5, 1], 1.0, samples=bad)
+    with pytest.raises(ps.PoinsotError, match="^samples: "):
+        ps.Earth().drop(100.0, 0.5, samples=bad)
+
+
+def test_a_smaller_budget_is_obeyed_and_restored() -> None:
+    old = ps.set_memory_budget(2**20)
+    try:
+        assert ps.memory_budget() == 2**20
+        with pytest.raises(ps.PoinsotError, match=r"^samples: 10001 would need 1120112 bytes"):
+            ps.simulate([1, 2, 3], [0.1, 0.5, 1], 1.0, samples=10_001)
+        ps.simulate([1, 2, 3], [0.1, 0.5, 1], 1.0, samples=9_000)  # 1.0 MB fits
+    finally:
+        assert ps.set_memory_budget(old) == 2**20
+    assert ps.memory_budget() == old == ps.DEFAULT_MEMORY_BUDGET
+    with pytest.raises(ps.PoinsotError, match="^bytes: "):
+        ps.set_memory_budget(1000)
+
+
+def test_step_limits_are_checked_before_the_first_step() -> None:
+    """``duration=1e12`` with ``dt=0.01`` needs 1e14 steps: refused at once with the count and
+    the keyword that raises the limit (it used to set out on them). The batch with
+    ``dt=1e-308`` used to hang."""
+    t0 = time.perf_counter()
+    with pytest.raises(ps.PoinsotError, match=r"^max_steps: the request needs 1\.0000e14 steps.*raise max_steps"):
+        ps.simulate([1, 2, 3], [0.1, 0.5, 1], 1e12, method="splitting4", dt=0.01)
+    with pytest.raises(ps.PoinsotError, match=r"^max_steps: the request needs 1\.0000e308 steps"):
+        ps.simulate_batch([[1, 2, 3]], [[0.1, 0.5, 1]], 1.0, method="rk4", dt=1e-308)
+    with pytest.raises(ps.PoinsotError, match="^max_steps: "):
+        ps.simulate([1, 2, 3], [0.1, 0.5, 1], 10.0, method="rk4", dt=0.01, max_steps=999)
+    assert time.perf_counter() - t0 < 1.0
+    # Raising the limit allows the request (negative control: the limit is what refused it).
+    tr = ps.simulate([1, 2, 3], [0.1, 0.5, 1], 10.0, method="rk4", dt=0.01, samples=11, max_steps=1000)
+    assert tr.steps == 1000
+
+
+def test_an_exception_in_progress_stops_the_run() -> None:
+    """The callback's exception propagates and the run stops there (it used to be kept and the
+    run went on to the end)."""
+    class Stop(Exception):
+        pass
+
+    calls: list[float] = []
+
+    def progress(fraction: float) -> None:
+        calls.append(fraction)
+        raise Stop
+
+    t0 = time.perf_counter()
+    with pytest.raises(Stop):
+        ps.simulate([1, 2, 3], [0.1, 0.5, 1], 1e6, method="rk4", dt=1e-3, samples=11, max_steps=10**10,
+                    progress=progress)
+    assert len(calls) == 1 and 0 <= calls[0] < 0.01
+    assert time.perf_counter() - t0 < 2.0  # the whole run takes minutes
+    with pytest.raises(Stop):
+        ps.simulate_batch(np.tile([1.0, 2.0, 3.0], (64, 1)), np.tile([0.1, 0.5, 1.0], (64, 1)), 1e5,
+                          dt=1e-3, max_steps=10**9, progress=progress)
+
+
+_CHILD = """
+import os, signal, sys, threading, time
+import numpy as np
+import poinsot as ps
+sent = []
+def fire():
+    time.sleep(0.5)
+    sent.append(time.perf_counter())
+    os.kill(os.getpid(), signal.SIGINT)
+threading.Thread(target=fire, daemon=True).start()
+start = time.perf_counter()
+try:
+    {call}
+except KeyboardInterrupt:
+    print("INTERRUPTED", time.perf_counter() - sent[0])
+else:
+    print("FINISHED", time.perf_counter() - start)
+"""
+
+LONG_CALLS = {
+    "simulate rk4": "ps.simulate([1, 2, 3], [0.1, 0.5, 1], 1e7, method='rk4', dt=1e-4, samples=11, max_steps=10**12)",
+    "simulate splitting4": "ps.simulate([1, 2, 3], [0.1, 0.5, 1], 1e7, method='splitting4', dt=1e-4, samples=2, max_steps=10**12)",
+    "simulate splitting6 gravity": "ps.simulate([1, 1, 0.5], [0.1, 0.2, 9], 1e7, torque=ps.GravityTorque(mgl=1.0), method='splitting6', dt=1e-4, samples=2, max_steps=10**12)",
+    "simulate dop853 gravity": "ps.simulate([1, 1, 0.5], [0.1, 0.2, 9], 1e8, torque=ps.GravityTorque(mgl=1.0), method='dop853', samples=2, rtol=1e-13, max_steps=10**12)",
+    "simulate callback": "ps.simulate([1, 2, 3], [0.1, 0.5, 1], 1e6, torque=lambda t, w, q: [0.0, 0.0, 0.0], method='rk4', dt=1e-3, samples=2, max_steps=10**12)",
+    "simulate_batch": "ps.simulate_batch(np.tile([1.0, 2.0, 3.0], (8, 1)), np.tile([0.1, 0.5, 1.0], (8, 1)), 1e6, dt=1e-4, max_steps=10**12)",
+    "Earth.foucault": "ps.Earth(rotation_rate=1e-3).foucault(0.7, duration=1e9, samples=2, max_steps=10**12)",
+}
+
+
+@pytest.mark.parametrize("name", sorted(LONG_CALLS))
+def test_ctrl_c_stops_long_runs(name: str) -> None:
+    code = textwrap.dedent(_CHILD).replace("{call}", LONG_CALLS[name])
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    word, seconds = proc.stdout.split()
+    assert word == "INTERRUPTED", f"{name} ran to the end in {seconds} s without seeing Ctrl-C"
+    assert float(seconds) < INTERRUPT_LATENCY, f"{name}: KeyboardInterrupt came {seconds} s after SIGINT"
