@@ -2,14 +2,25 @@
 
 Every computing command takes ``--json`` and then prints one JSON document on stdout and
 nothing else, so that its output can be piped into other programs.
+
+Failures never show a traceback: each ends with one line on stderr, ``error: ...``, naming the
+option (or argument) at fault, and an exit status (:data:`EXIT_STATUSES`, also in ``poinsot
+--help``): 2 when the command line itself is wrong, 1 when poinsot refuses the input or cannot
+finish, 130 when interrupted (Ctrl+C).
 """
 
 from __future__ import annotations
 
+import errno
 import json
+import math
+import os
+import stat
 import sys
+import warnings
+from collections.abc import Iterator
 from pathlib import Path
-from typing import Any
+from typing import Any, NoReturn
 
 import click
 import numpy as np
@@ -29,6 +40,220 @@ SHAPES = {
     "ring": ("thin_ring", ("radius",)),
 }
 
+#: Exit status of a command line that is wrong: an unknown command or option, a missing one, a
+#: value that is not a finite number or not one of the choices, options that do not go
+#: together, a path that does not exist or is of the wrong kind (a directory, a device).
+EXIT_USAGE = 2
+#: Exit status of input poinsot refuses, or of a run that cannot finish: a value outside the
+#: physics' range (poinsot's error, naming the option), a file that is not a readable mesh, an
+#: output that cannot be written, a result that is not a finite number, a missing extra.
+EXIT_REFUSED = 1
+#: Exit status after Ctrl+C (128 + SIGINT, as shells report it).
+EXIT_INTERRUPTED = 130
+
+EXIT_STATUSES = (
+    f"Exit status: 0 done; {EXIT_USAGE} the command line is wrong (unknown or missing option, a "
+    "value that is not a finite number, options that do not go together, a path that does not "
+    f"exist or is a directory or device); {EXIT_REFUSED} the input is refused or the run cannot "
+    "finish (a value out of range, a file that is not a readable mesh, an output that cannot be "
+    f"written, a result that is not a finite number, a missing extra); {EXIT_INTERRUPTED} "
+    'interrupted (Ctrl+C). Every failure is one line on stderr, "error: ...", naming the option.'
+    "\n\n"
+    'In --json output, "inf" stands for a value the API documents as infinite (the period of a '
+    "steady motion, the fast precession rate at 90°, ...); any other non-finite number is refused."
+)
+
+#: Largest mesh file `poinsot inertia` reads (bytes). A mesh at this size has millions of
+#: triangles (a binary STL stores 50 bytes a triangle); the check comes before any byte is
+#: read, so a device or an endless file is never read into memory.
+MAX_MESH_FILE_BYTES = 256 * 1024 * 1024
+
+#: Result fields that the API documents as infinite in limiting cases: the period of ω and
+#: the flip interval of a steady rotation (FreeRigidBody.period, .flip_interval), the nutation
+#: period of a top that never returns (HeavyTop.nutation_period), the cubic's root u3 when
+#: m g l = 0 (HeavyTop.cubic_roots), the fast steady-precession rate at θ0 = 90° and the
+#: fast-top approximations 2.120/2.121 where they diverge (HeavyTop.steady_precession), the
+#: hours of one full turn of the Foucault pendulum at the equator. NaN is refused everywhere,
+#: and any other infinity.
+MAY_BE_INFINITE = frozenset({"period", "flip_interval", "nutation_period", "cubic_roots",
+                             "steady_precession_at_theta0", "full_turn_hours"})
+
+#: Argument names of the Python API that a command's option spells differently (the error
+#: messages of the core name the API's argument; the command line names its option).
+API_NAMES = {
+    "free": {"omega0": "omega", "t_end": "duration"},
+    "inertia": {"path": "shape"},
+}
+
+
+class FiniteFloat(click.ParamType):
+    """A finite real number: ``nan``, ``inf`` and numbers that overflow a double (``1e400``)
+    are usage errors, like words that are not numbers."""
+
+    name = "number"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
+        if isinstance(value, float) and math.isfinite(value):
+            return value
+        try:
+            f = float(value)
+        except (TypeError, ValueError, OverflowError):
+            self.fail(f"{value!r} is not a number", param, ctx)
+        if not math.isfinite(f):
+            self.fail(f"{value!r} is not a finite number", param, ctx)
+        return f
+
+
+#: The type of every real-valued option.
+FINITE = FiniteFloat()
+
+
+class Refused(click.ClickException):
+    """Input poinsot refuses, or a run that cannot finish (exit status :data:`EXIT_REFUSED`)."""
+
+    exit_code = EXIT_REFUSED
+
+
+def _one_line(text: str) -> str:
+    return " ".join(str(text).split())
+
+
+def _fail(message: str, code: int) -> NoReturn:
+    """Ends the command: ``error: message`` as one line on stderr, exit status ``code``."""
+    try:
+        click.echo(f"error: {_one_line(message)}", err=True)
+    except OSError:  # stderr is gone too: the exit status still tells
+        pass
+    sys.exit(code)
+
+
+def _flag(param: click.Parameter) -> str:
+    if isinstance(param, click.Option):
+        return max(param.opts, key=len)
+    return (param.name or "").upper()
+
+
+def _given(ctx: click.Context) -> str:
+    """The options and arguments given on the command line, as the user could retype them."""
+    from click.core import ParameterSource
+
+    parts = []
+    for p in ctx.command.params:
+        if p.name is None or ctx.get_parameter_source(p.name) not in (ParameterSource.COMMANDLINE,
+                                                                     ParameterSource.ENVIRONMENT):
+            continue
+        value = ctx.params.get(p.name)
+        if isinstance(p, click.Option) and p.is_flag:
+            parts.append(_flag(p))
+            continue
+        shown = " ".join(str(v) for v in value) if isinstance(value, (tuple, list)) else str(value)
+        parts.append(shown if isinstance(p, click.Argument) else f"{_flag(p)} {shown}")
+    return " ".join(parts)
+
+
+def _option_for(ctx: click.Context, api_name: str) -> click.Parameter | None:
+    """The option of ``ctx``'s command that stands for the API's argument ``api_name``."""
+    alias = API_NAMES.get(ctx.command.name or "", {}).get(api_name, api_name)
+    for p in ctx.command.params:
+        if p.name is not None and p.name.lower() == alias.lower():
+            return p
+    return None
+
+
+def _explain(ctx: click.Context, exc: PoinsotError) -> str:
+    """poinsot's message with the API's argument replaced by the command's option; where the
+    message names a derived quantity instead, the options given are added."""
+    text = _one_line(str(exc))
+    name, sep, rest = text.partition(":")
+    if sep and name.replace("_", "").isalnum():
+        param = _option_for(ctx, name.strip())
+        if param is not None:
+            return f"{_flag(param)}:{rest}"
+    given = _given(ctx)
+    return f"{text} (given {given})" if given else text
+
+
+class _PoinsotCommand(click.Command):
+    """Runs a command so that it ends in one line, never a traceback: poinsot's errors name
+    the option (:data:`EXIT_REFUSED`), Ctrl+C prints "interrupted" (:data:`EXIT_INTERRUPTED`),
+    an output that cannot be written is refused, anything unforeseen is one line too."""
+
+    def invoke(self, ctx: click.Context) -> Any:
+        try:
+            return super().invoke(ctx)
+        except KeyboardInterrupt:
+            _fail_interrupted()
+        except PoinsotError as exc:
+            _fail(_explain(ctx, exc), EXIT_REFUSED)
+        except click.ClickException:
+            raise
+        except ImportError as exc:  # an optional extra (plot, mesh) that is not installed
+            _fail(f"{exc} (given {_given(ctx)})", EXIT_REFUSED)
+        except OSError as exc:
+            if exc.errno == errno.EPIPE:  # the reader of our output went away: nothing to say
+                _quiet_broken_pipe()
+            where = f" {exc.filename}" if exc.filename else " the output"
+            _fail(f"cannot write{where}: {exc.strerror or exc}", EXIT_REFUSED)
+        except MemoryError:
+            _fail(f"not enough memory for this request (given {_given(ctx)})", EXIT_REFUSED)
+        except Exception as exc:  # a bug: still one line, with what is needed to report it
+            if os.environ.get("POINSOT_TRACEBACK"):
+                raise
+            _fail(f"internal error, please report it: {type(exc).__name__}: {exc} (given {_given(ctx)}; "
+                  "POINSOT_TRACEBACK=1 shows where)", EXIT_REFUSED)
+
+
+def _fail_interrupted() -> NoReturn:
+    _fail_line("interrupted", EXIT_INTERRUPTED)
+
+
+def _fail_line(line: str, code: int) -> NoReturn:
+    try:
+        click.echo(line, err=True)
+    except OSError:
+        pass
+    sys.exit(code)
+
+
+def _quiet_broken_pipe() -> NoReturn:
+    # Point stdout at /dev/null so that the interpreter's final flush does not complain.
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):
+        pass
+    sys.exit(EXIT_REFUSED)
+
+
+class _PoinsotGroup(click.Group):
+    """The ``poinsot`` group: its commands are :class:`_PoinsotCommand`; usage errors are one
+    line (:data:`EXIT_USAGE`) instead of click's usage block."""
+
+    command_class = _PoinsotCommand
+
+    def main(self, args: Any = None, prog_name: str | None = None, complete_var: str | None = None,
+             standalone_mode: bool = True, **extra: Any) -> Any:
+        if not standalone_mode:
+            return super().main(args, prog_name, complete_var, standalone_mode=False, **extra)
+        try:
+            rv = super().main(args, prog_name, complete_var, standalone_mode=False, **extra)
+        except click.UsageError as exc:
+            no_args_help = getattr(click.exceptions, "NoArgsIsHelpError", None)
+            if no_args_help is not None and isinstance(exc, no_args_help):
+                exc.show()
+                sys.exit(EXIT_USAGE)
+            hint = f" (see '{exc.ctx.command_path} --help')" if exc.ctx is not None else ""
+            _fail(exc.format_message() + hint, EXIT_USAGE)
+        except click.ClickException as exc:
+            _fail(exc.format_message(), exc.exit_code)
+        except (click.Abort, KeyboardInterrupt, EOFError):
+            _fail_interrupted()
+        except OSError as exc:
+            if exc.errno == errno.EPIPE:
+                _quiet_broken_pipe()
+            raise
+        sys.exit(rv if isinstance(rv, int) else 0)
+
 
 def _jsonable(value: Any) -> Any:
     """numpy arrays and scalars → plain lists and floats (inf/nan → strings, as JSON has none)."""
@@ -46,23 +271,46 @@ def _jsonable(value: Any) -> Any:
     return value
 
 
+def _numbers(value: Any, path: str, top: str) -> Iterator[tuple[str, str, float]]:
+    """Every real number in a result: (where, its top-level field, value)."""
+    if isinstance(value, dict):
+        for k, v in value.items():
+            yield from _numbers(v, f"{path}.{k}" if path else str(k), top or str(k))
+    elif isinstance(value, (list, tuple, np.ndarray)):
+        items = value.ravel().tolist() if isinstance(value, np.ndarray) else value
+        for i, v in enumerate(items):
+            yield from _numbers(v, f"{path}[{i}]", top)
+    elif isinstance(value, (float, np.floating)):
+        yield path, top, float(value)
+
+
+def require_finite(data: dict[str, Any]) -> None:
+    """Refuses (:class:`Refused`, naming the options given) a result holding a NaN or an
+    infinity, except an infinity in the fields of :data:`MAY_BE_INFINITE` (documented limits,
+    such as the period of a steady motion)."""
+    for where, field, v in _numbers(data, "", ""):
+        if math.isnan(v) or (math.isinf(v) and field not in MAY_BE_INFINITE):
+            ctx = click.get_current_context(silent=True)
+            given = _given(ctx) if ctx is not None else ""
+            raise Refused(f"the result is not a finite number ({where} = {v}) for {given}: these inputs "
+                          "are beyond what poinsot can compute, so nothing is printed")
+
+
+def _interactive() -> bool:
+    """Whether stdout is a terminal: progress bars only there (piped output stays clean)."""
+    try:
+        return sys.stdout.isatty()
+    except (AttributeError, ValueError):
+        return False
+
+
 def emit_json(data: dict[str, Any]) -> None:
     """Print ``data`` as one JSON document on stdout."""
     click.echo(json.dumps(_jsonable(data), indent=2))
 
 
-class _PoinsotGroup(click.Group):
-    """Shows poinsot's errors as one clear line (exit status 2) instead of a traceback."""
-
-    def invoke(self, ctx: click.Context) -> Any:
-        try:
-            return super().invoke(ctx)
-        except PoinsotError as exc:
-            click.echo(f"error: {exc}", err=True)
-            sys.exit(2)
-
-
-@click.group(cls=_PoinsotGroup, context_settings={"help_option_names": ["-h", "--help"]})
+@click.group(cls=_PoinsotGroup, context_settings={"help_option_names": ["-h", "--help"]},
+             epilog=EXIT_STATUSES)
 @click.version_option(package_name="poinsot")
 def main() -> None:
     """poinsot: moving frames and the motion of rigid bodies.
@@ -81,13 +329,13 @@ def tour() -> None:
 
 @main.command()
 @click.argument("shape")
-@click.option("--mass", type=float, default=None, help="Mass in kg (standard shapes; default 1).")
-@click.option("--radius", type=float, default=None, help="Radius in m (sphere, shell, cylinder, cone, disk, ring).")
-@click.option("--height", type=float, default=None, help="Height in m (cylinder, cone).")
-@click.option("--length", type=float, default=None, help="Length in m (rod).")
-@click.option("--sides", type=float, nargs=3, default=None, help="Side lengths a b c in m along x y z (cuboid).")
-@click.option("--semi-axes", "semi_axes", type=float, nargs=3, default=None, help="Semi-axes a b c in m (ellipsoid).")
-@click.option("--density", type=float, default=None, help="Density in kg/m³ (mesh files; default 1).")
+@click.option("--mass", type=FINITE, default=None, help="Mass in kg (standard shapes; default 1).")
+@click.option("--radius", type=FINITE, default=None, help="Radius in m (sphere, shell, cylinder, cone, disk, ring).")
+@click.option("--height", type=FINITE, default=None, help="Height in m (cylinder, cone).")
+@click.option("--length", type=FINITE, default=None, help="Length in m (rod).")
+@click.option("--sides", type=FINITE, nargs=3, default=None, help="Side lengths a b c in m along x y z (cuboid).")
+@click.option("--semi-axes", "semi_axes", type=FINITE, nargs=3, default=None, help="Semi-axes a b c in m (ellipsoid).")
+@click.option("--density", type=FINITE, default=None, help="Density in kg/m³ (mesh files; default 1).")
 @click.option("--plot", "plot_path", type=click.Path(dir_okay=False), default=None,
               help="Save a picture of the inertia ellipsoid and principal axes to this file.")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
@@ -125,30 +373,118 @@ def inertia(shape: str, mass: float | None, radius: float | None, height: float 
             raise click.UsageError(f"shape '{shape}' does not take {opts}")
         if density is not None:
             raise click.UsageError("--density applies to mesh files; give --mass for standard shapes")
+        if plot_path is not None:
+            _check_picture_path(plot_path)
         body = getattr(RigidBody, ctor)(1.0 if mass is None else mass, *(given[n] for n in needs))
         source = shape
     else:
-        path = Path(shape)
-        if not path.exists():
-            raise click.UsageError(
-                f"'{shape}' is neither a shape ({', '.join(SHAPES)}) nor an existing mesh file")
+        path = _mesh_file(shape)
         if mass is not None:
             raise click.UsageError("--mass applies to standard shapes; give --density for a mesh")
-        body = RigidBody.load_mesh(path, density=1.0 if density is None else density)
+        if plot_path is not None:
+            _check_picture_path(plot_path)  # before a long mesh is read
+        body = _load_mesh(path, 1.0 if density is None else density)
         source = str(path)
 
+    data = {"source": source, **body.to_dict()}
+    require_finite(data)
     if plot_path is not None:
         from .plots import plot_inertia_ellipsoid
 
         fig = plot_inertia_ellipsoid(body, title=source)
-        fig.savefig(plot_path, dpi=120, bbox_inches="tight")
+        try:
+            fig.savefig(plot_path, dpi=120, bbox_inches="tight")
+        except OSError as exc:
+            raise Refused(f"--plot: cannot write {plot_path}: {exc.strerror or exc}") from exc
 
     if as_json:
-        emit_json({"source": source, **body.to_dict()})
+        emit_json(data)
         return
     _print_body(source, body)
     if plot_path is not None:
         click.echo(f"picture saved to {plot_path}")
+
+
+def _mesh_file(shape: str) -> Path:
+    """The mesh file that SHAPE names, checked before a byte is read: it must exist and be a
+    regular file (not a directory, device, pipe or socket) of 1 to MAX_MESH_FILE_BYTES bytes
+    (files under /proc report 0 bytes: refused too)."""
+    path = Path(shape)
+    try:
+        st = path.stat()
+    except (FileNotFoundError, NotADirectoryError):
+        raise click.UsageError(
+            f"'{shape}' is neither a shape ({', '.join(SHAPES)}) nor an existing mesh file") from None
+    except OSError as exc:
+        raise click.UsageError(f"SHAPE: cannot look up '{shape}': {exc.strerror or exc}") from None
+    if stat.S_ISDIR(st.st_mode):
+        raise click.UsageError(f"SHAPE: '{shape}' is a directory, not a mesh file")
+    if not stat.S_ISREG(st.st_mode):
+        raise click.UsageError(f"SHAPE: '{shape}' is not a regular file (a device, pipe or socket), "
+                               "not a mesh file")
+    if st.st_size == 0:
+        raise Refused(f"SHAPE: '{shape}' is empty (the file system reports 0 bytes): no mesh to read")
+    if st.st_size > MAX_MESH_FILE_BYTES:
+        raise Refused(f"SHAPE: '{shape}' is {st.st_size} bytes, more than the {MAX_MESH_FILE_BYTES} "
+                      "bytes (256 MiB) poinsot inertia reads")
+    if not os.access(path, os.R_OK):
+        raise Refused(f"SHAPE: cannot read '{shape}': permission denied")
+    return path
+
+
+def _load_mesh(path: Path, density: float) -> Any:
+    """RigidBody.load_mesh, its failures as one line: trimesh raises whatever its parsers
+    meet in a file that is not a mesh (ValueError, KeyError, IndexError, ...)."""
+    import logging
+
+    from .body import RigidBody
+
+    # trimesh logs parser warnings to stderr when logging is not set up: not ours to print.
+    trimesh_log = logging.getLogger("trimesh")
+    had_handlers = trimesh_log.handlers[:]
+    if not had_handlers:
+        trimesh_log.addHandler(logging.NullHandler())
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            return RigidBody.load_mesh(path, density=density)
+    except PoinsotError as exc:
+        text = _one_line(str(exc))
+        if text.startswith("density:"):
+            raise
+        if text.startswith("path:"):
+            raise Refused(f"SHAPE:{text[len('path:'):]}") from exc
+        raise Refused(f"SHAPE: '{path}' is not a valid mesh: {text}") from exc
+    except ImportError as exc:
+        missing = f"the Python package '{exc.name}'" if exc.name else "a Python package"
+        raise Refused(f"SHAPE: reading '{path}' needs {missing}, which is not installed: "
+                      "pip install 'poinsot[mesh]'") from exc
+    except (KeyboardInterrupt, MemoryError):
+        raise
+    except Exception as exc:
+        detail = _one_line(f"{type(exc).__name__}: {exc}")[:200]
+        raise Refused(f"SHAPE: trimesh cannot read '{path}' as a mesh ({detail})") from exc
+    finally:
+        if not had_handlers:
+            trimesh_log.handlers[:] = []
+
+
+def _check_picture_path(plot_path: str) -> None:
+    """--plot must name a file in an existing directory, with a suffix matplotlib can write."""
+    target = Path(plot_path)
+    parent = target.parent
+    if not parent.is_dir():
+        raise click.UsageError(f"--plot: no directory '{parent}' to save {target.name} into")
+    suffix = target.suffix.lower().lstrip(".")
+    if suffix:
+        try:
+            from matplotlib.backend_bases import FigureCanvasBase
+        except ImportError as exc:
+            raise Refused("--plot needs matplotlib, which is not installed: pip install 'poinsot[plot]'") from exc
+        kinds = FigureCanvasBase.get_supported_filetypes()
+        if suffix not in kinds:
+            raise click.UsageError(f"--plot: matplotlib cannot write '.{suffix}' files; use one of "
+                                   + ", ".join(sorted(kinds)))
 
 
 def _print_body(source: str, body: Any) -> None:
@@ -181,8 +517,8 @@ def _angle_unit(degrees: bool) -> str:
 
 
 @main.command()
-@click.option("--height", type=float, required=True, help="Drop height in m (> 0).")
-@click.option("--latitude", type=float, required=True, help="Latitude, north-positive (rad, or degrees with --degrees).")
+@click.option("--height", type=FINITE, required=True, help="Drop height in m (> 0).")
+@click.option("--latitude", type=FINITE, required=True, help="Latitude, north-positive (rad, or degrees with --degrees).")
 @click.option("--degrees", is_flag=True, help="Read --latitude in degrees.")
 @click.option("--solar-day", "solar_day", is_flag=True, help="Use the unit's rate 2π/86400 instead of the sidereal rate.")
 @click.option("--gravity", type=click.Choice(["uniform", "inverse-square"]), default="uniform", show_default=True,
@@ -210,6 +546,7 @@ def fall(height: float, latitude: float, degrees: bool, solar_day: bool, gravity
     if gravity != "uniform":
         res = earth.drop(height, latitude, degrees, gravity=gravity)
         data.update(time=res.time, east=res.east, north=res.north)
+    require_finite(data)
     if as_json:
         emit_json(data)
         return
@@ -228,11 +565,11 @@ def fall(height: float, latitude: float, degrees: bool, solar_day: bool, gravity
 
 
 @main.command()
-@click.option("--speed", type=float, required=True, help="Launch speed in m/s.")
-@click.option("--elevation", type=float, required=True, help="Elevation above the horizon (rad, or degrees with --degrees).")
-@click.option("--azimuth", type=float, default=0.0, show_default=True, help="Azimuth clockwise from north (0 north, 90° east).")
-@click.option("--latitude", type=float, required=True, help="Latitude, north-positive.")
-@click.option("--height", type=float, default=0.0, show_default=True, help="Launch height in m.")
+@click.option("--speed", type=FINITE, required=True, help="Launch speed in m/s.")
+@click.option("--elevation", type=FINITE, required=True, help="Elevation above the horizon (rad, or degrees with --degrees).")
+@click.option("--azimuth", type=FINITE, default=0.0, show_default=True, help="Azimuth clockwise from north (0 north, 90° east).")
+@click.option("--latitude", type=FINITE, required=True, help="Latitude, north-positive.")
+@click.option("--height", type=FINITE, default=0.0, show_default=True, help="Launch height in m.")
 @click.option("--degrees", is_flag=True, help="Read the angles in degrees.")
 @click.option("--solar-day", "solar_day", is_flag=True, help="Use the unit's rate 2π/86400.")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
@@ -256,6 +593,7 @@ def projectile(speed: float, elevation: float, azimuth: float, latitude: float, 
             "height": height, "degrees": degrees, "rotation_rate": earth.rotation_rate,
             "with_rotation": {k: getattr(spin, k) for k in keys},
             "without_rotation": {k: getattr(still, k) for k in keys}}
+    require_finite(data)
     if as_json:
         emit_json(data)
         return
@@ -276,11 +614,11 @@ def projectile(speed: float, elevation: float, azimuth: float, latitude: float, 
 
 
 @main.command()
-@click.option("--latitude", type=float, required=True, help="Latitude, north-positive.")
+@click.option("--latitude", type=FINITE, required=True, help="Latitude, north-positive.")
 @click.option("--degrees", is_flag=True, help="Read --latitude in degrees.")
-@click.option("--length", type=float, default=67.0, show_default=True, help="Pendulum length in m (the Panthéon's 67 m).")
-@click.option("--amplitude", type=float, default=1.0, show_default=True, help="Release displacement in m.")
-@click.option("--duration", type=float, default=3600.0, show_default=True, help="Simulated time in s.")
+@click.option("--length", type=FINITE, default=67.0, show_default=True, help="Pendulum length in m (the Panthéon's 67 m).")
+@click.option("--amplitude", type=FINITE, default=1.0, show_default=True, help="Release displacement in m.")
+@click.option("--duration", type=FINITE, default=3600.0, show_default=True, help="Simulated time in s.")
 @click.option("--solar-day", "solar_day", is_flag=True, help="Use the unit's rate 2π/86400.")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
 def foucault(latitude: float, degrees: bool, length: float, amplitude: float, duration: float,
@@ -296,12 +634,13 @@ def foucault(latitude: float, degrees: bool, length: float, amplitude: float, du
     """
     earth = _earth(solar_day)
     run = earth.foucault(latitude, degrees, length=length, amplitude=amplitude, duration=duration,
-                         samples=2, progress=not as_json)
+                         samples=2, progress=not as_json and _interactive())
     hours = 2 * np.pi / abs(run.expected_rate) / 3600 if run.expected_rate != 0 else float("inf")
     data = {"latitude": latitude, "degrees": degrees, "length": length, "amplitude": amplitude,
             "duration": duration, "rotation_rate": earth.rotation_rate,
             "precession_rate": run.precession_rate, "expected_rate": run.expected_rate,
             "sense": run.sense, "turning_points": len(run.turn_times), "full_turn_hours": hours}
+    require_finite(data)
     if as_json:
         emit_json(data)
         return
@@ -325,13 +664,13 @@ def _floats3(ctx: click.Context, param: click.Parameter, value: Any) -> Any:
 
 
 @main.command()
-@click.option("--moments", nargs=3, type=float, required=True, help="Principal moments I1 I2 I3 (kg·m²).")
-@click.option("--omega", nargs=3, type=float, required=True, help="Body angular velocity at t = 0 (rad/s).")
-@click.option("--duration", type=float, default=10.0, show_default=True, help="Simulated time in s.")
+@click.option("--moments", nargs=3, type=FINITE, required=True, help="Principal moments I1 I2 I3 (kg·m²).")
+@click.option("--omega", nargs=3, type=FINITE, required=True, help="Body angular velocity at t = 0 (rad/s).")
+@click.option("--duration", type=FINITE, default=10.0, show_default=True, help="Simulated time in s.")
 @click.option("--method", type=click.Choice(["auto", "exact", "rk4", "dop853", "splitting2", "splitting4",
                                              "splitting6"]), default="auto", show_default=True,
               help="Integrator (auto: the exact flow).")
-@click.option("--dt", type=float, default=None, help="Step of rk4/splitting (s); default 1/1000 turn.")
+@click.option("--dt", type=FINITE, default=None, help="Step of rk4/splitting (s); default 1/1000 turn.")
 @click.option("--samples", type=int, default=201, show_default=True, help="Evenly spaced output times.")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
 def free(moments: tuple[float, float, float], omega: tuple[float, float, float], duration: float, method: str,
@@ -351,7 +690,8 @@ def free(moments: tuple[float, float, float], omega: tuple[float, float, float],
     from .free import FreeRigidBody, axis_stability
 
     exact = FreeRigidBody(moments, omega)
-    show_bar = not as_json and method not in ("auto", "exact") and duration * np.linalg.norm(omega) > 1e4
+    show_bar = (not as_json and _interactive() and method not in ("auto", "exact")
+                and duration * np.linalg.norm(omega) > 1e4)
     t0 = time.perf_counter()
     if show_bar:
         from rich.progress import Progress
@@ -377,6 +717,7 @@ def free(moments: tuple[float, float, float], omega: tuple[float, float, float],
         "omega_error": float(np.linalg.norm(tr.omega[-1] - w_end)), "attitude_error": q_err,
         "axis_stability": [s.stability for s in stab],
     }
+    require_finite(data)
     if as_json:
         emit_json(data)
         return
@@ -399,13 +740,13 @@ def free(moments: tuple[float, float, float], omega: tuple[float, float, float],
 
 
 @main.command()
-@click.option("--I1", "i1", type=float, required=True, help="Moment about a transverse axis through the pivot (kg·m²).")
-@click.option("--I3", "i3", type=float, required=True, help="Moment about the symmetry axis (kg·m², ≤ 2 I1).")
-@click.option("--mgl", type=float, required=True, help="m g l: weight × pivot-to-centre-of-mass distance (N·m).")
-@click.option("--theta", type=float, required=True, help="Initial nutation angle θ₀ from the upward vertical (rad, or degrees).")
-@click.option("--phi-dot", "phi_dot", type=float, default=0.0, show_default=True, help="Initial precession rate φ̇₀ (rad/s).")
-@click.option("--psi-dot", "psi_dot", type=float, default=0.0, show_default=True, help="Initial spin rate ψ̇₀ (rad/s).")
-@click.option("--theta-dot", "theta_dot", type=float, default=0.0, show_default=True, help="Initial nutation rate θ̇₀ (rad/s).")
+@click.option("--I1", "i1", type=FINITE, required=True, help="Moment about a transverse axis through the pivot (kg·m²).")
+@click.option("--I3", "i3", type=FINITE, required=True, help="Moment about the symmetry axis (kg·m², ≤ 2 I1).")
+@click.option("--mgl", type=FINITE, required=True, help="m g l: weight × pivot-to-centre-of-mass distance (N·m).")
+@click.option("--theta", type=FINITE, required=True, help="Initial nutation angle θ₀ from the upward vertical (rad, or degrees).")
+@click.option("--phi-dot", "phi_dot", type=FINITE, default=0.0, show_default=True, help="Initial precession rate φ̇₀ (rad/s).")
+@click.option("--psi-dot", "psi_dot", type=FINITE, default=0.0, show_default=True, help="Initial spin rate ψ̇₀ (rad/s).")
+@click.option("--theta-dot", "theta_dot", type=FINITE, default=0.0, show_default=True, help="Initial nutation rate θ̇₀ (rad/s).")
 @click.option("--degrees", is_flag=True, help="Read θ₀ in degrees and the rates in degrees per second.")
 @click.option("--plot", "plot_dir", type=click.Path(file_okay=False), default=None,
               help="Save pictures (V(θ), the axis' locus, θ/φ̇/ψ̇ against t, steady rates against spin) "
@@ -449,11 +790,15 @@ def top(i1: float, i3: float, mgl: float, theta: float, phi_dot: float, psi_dot:
         "sleeping_threshold": HeavyTop.sleeping_threshold(i1, i3, mgl),
         "sleeping_stable": t.is_sleeping_stable,
     }
+    require_finite(data)
     saved: list[str] = []
     if plot_dir is not None:
         from .plots_top import save_top_plots
 
-        saved = [str(p) for p in save_top_plots(t, plot_dir, animation=True)]
+        try:
+            saved = [str(p) for p in save_top_plots(t, plot_dir, animation=True)]
+        except OSError as exc:
+            raise Refused(f"--plot: cannot write into {plot_dir}: {exc.strerror or exc}") from exc
         data["plots"] = saved
     if as_json:
         emit_json(data)
