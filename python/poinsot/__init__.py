@@ -56,3 +56,10 @@ __all__ = [
     *_top_all,
     *_limits_all,
 ]
+
+from . import special as _special  # noqa: E402
+from ._guard import guard as _guard  # noqa: E402
+
+# No Rust panic reaches a user as PanicException: see _guard.py.
+_guard(globals(), __all__)
+_guard(vars(_special), _special.__all__)

@@ -480,6 +480,9 @@ class RigidBody:
                                f"of {memory_budget()} bytes (see poinsot.set_memory_budget)")
         try:
             loaded = trimesh.load(name, process=False, force="mesh")
+        except ImportError as exc:  # a decoder trimesh needs for this file is missing
+            raise ImportError(f"path: reading {name!r} needs the Python package {exc.name!r}, which is not "
+                              "installed: pip install 'poinsot[mesh]'", name=exc.name) from None
         except Exception as exc:  # noqa: BLE001 - a file parser may fail in any way
             raise InvalidMeshError(f"path: {name!r} cannot be read as a triangle mesh "
                                    f"({type(exc).__name__}: {exc})") from None

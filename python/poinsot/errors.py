@@ -10,7 +10,8 @@ Every error poinsot raises for bad input is a :class:`PoinsotError`, which is al
         ├── InvalidMeshError       a mesh that does not bound a solid
         ├── GimbalLockError        Euler-angle rates at the singular angles
         ├── IntegrationError       an integration that diverged
-        └── ArgumentTypeError      an argument of the wrong type (also a TypeError)
+        ├── ArgumentTypeError      an argument of the wrong type (also a TypeError)
+        └── InternalError          a bug: a panic in the compiled core (please report it)
 
 The types but the last are created by the compiled core (so that Rust errors map to them in
 one place, ``crates/poinsot-py/src/errors.rs``) and re-exported here.
@@ -40,6 +41,12 @@ class ArgumentTypeError(PoinsotError, TypeError):
     ``TypeError``, so either ``except`` clause catches it."""
 
 
+class InternalError(PoinsotError):
+    """A bug in poinsot: the compiled core panicked (it validates its input first, so this
+    should never happen). Raised instead of ``pyo3_runtime.PanicException``, which would escape
+    ``except Exception``; the message asks for a report."""
+
+
 class GimbalLockWarning(UserWarning):
     """Euler angles were extracted at gimbal lock: the triple is valid but not unique
     (poinsot sets the third angle to 0)."""
@@ -53,5 +60,6 @@ __all__ = [
     "GimbalLockError",
     "IntegrationError",
     "ArgumentTypeError",
+    "InternalError",
     "GimbalLockWarning",
 ]

@@ -144,3 +144,42 @@ def test_ctrl_c_stops_long_runs(name: str) -> None:
     word, seconds = proc.stdout.split()
     assert word == "INTERRUPTED", f"{name} ran to the end in {seconds} s without seeing Ctrl-C"
     assert float(seconds) < INTERRUPT_LATENCY, f"{name}: KeyboardInterrupt came {seconds} s after SIGINT"
+
+
+def test_a_panic_never_reaches_the_user(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The last line of defence: a panic in the core (a bug) surfaces as InternalError, a
+    PoinsotError, from every public entry point — never as pyo3's PanicException, which
+    escapes ``except Exception``."""
+    from poinsot import _core
+
+    raw = None
+    try:
+        _core._test_panic("boom")
+    except BaseException as exc:  # noqa: BLE001 - the raw panic is what we look at
+        raw = exc
+    assert raw is not None and type(raw).__name__ == "PanicException"
+    assert not isinstance(raw, Exception)  # why it must not reach users
+
+    def panicking(*args: object, **kwargs: object) -> None:
+        _core._test_panic("boom")
+
+    # Through a public function, a constructor, a method and a property.
+    monkeypatch.setattr(_core, "euler_to_matrix", panicking)
+    with pytest.raises(ps.InternalError, match=r"^euler_to_matrix: internal error .*boom.*report"):
+        ps.euler_to_matrix([0.1, 0.2, 0.3])
+    body = ps.RigidBody.cuboid(1.0, (1, 2, 3))
+    monkeypatch.setattr(ps.RigidBody, "_wrap", classmethod(lambda cls, *a, **k: panicking()))
+    with pytest.raises(ps.InternalError, match="^RigidBody.translated: "):   # a method
+        body.translated([1, 0, 0])
+    with pytest.raises(ps.InternalError, match="^RigidBody.solid_sphere: "):  # a class method
+        ps.RigidBody.solid_sphere(1.0, 1.0)
+
+    class Panicky:
+        def __getattr__(self, name: str) -> object:
+            _core._test_panic("boom")
+
+    top = ps.HeavyTop(1.0, 0.5, 1.0, 0.5, psi_dot=6.0)
+    top._core = Panicky()
+    with pytest.raises(ps.InternalError, match="^HeavyTop.energy: "):  # a property
+        top.energy
+    assert isinstance(ps.InternalError("x"), ps.PoinsotError)

@@ -48,6 +48,14 @@ fn check_memory(argument: &str, count: f64, bytes_each: usize) -> PyResult<()> {
     poinsot::limits::check_memory(argument, count, bytes_each).py()
 }
 
+/// Panics on purpose: the test hook of the last line of defence at the Python boundary
+/// (`python/poinsot/_guard.py`), which must turn any panic into `poinsot.InternalError`. Never
+/// called by the package.
+#[pyfunction]
+fn _test_panic(message: &str) -> PyResult<()> {
+    panic!("{message}")
+}
+
 /// The compiled core of poinsot (private: use the `poinsot` package).
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -61,6 +69,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(set_memory_budget, m)?)?;
     m.add_function(wrap_pyfunction!(check_count, m)?)?;
     m.add_function(wrap_pyfunction!(check_memory, m)?)?;
+    m.add_function(wrap_pyfunction!(_test_panic, m)?)?;
     errors::register(m)?;
     rotation::register(m)?;
     inertia::register(m)?;
