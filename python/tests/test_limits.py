@@ -183,3 +183,16 @@ def test_a_panic_never_reaches_the_user(monkeypatch: pytest.MonkeyPatch) -> None
     with pytest.raises(ps.InternalError, match="^HeavyTop.energy: "):  # a property
         top.energy
     assert isinstance(ps.InternalError("x"), ps.PoinsotError)
+
+
+def test_docs_limits_blocks_run() -> None:
+    """Every ```python block of docs/limits.md runs (one namespace), its comments' claims too."""
+    import re
+    from pathlib import Path
+
+    doc = Path(__file__).resolve().parents[2] / "docs" / "limits.md"
+    blocks = re.findall(r"```python\n(.*?)```", doc.read_text(encoding="utf-8"), re.DOTALL)
+    assert len(blocks) >= 3
+    namespace: dict[str, object] = {"__name__": "__doc__"}
+    for i, block in enumerate(blocks):
+        exec(compile(block, f"docs/limits.md[block {i}]", "exec"), namespace)

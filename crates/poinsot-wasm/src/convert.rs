@@ -28,7 +28,7 @@ impl Failure {
 /// The Python exception class name of a core error kind (the browser shows the same names).
 pub fn class_name(kind: ErrorKind) -> &'static str {
     match kind {
-        ErrorKind::InvalidArgument | ErrorKind::Diverged => "PoinsotError",
+        ErrorKind::InvalidArgument | ErrorKind::Diverged | ErrorKind::Interrupted => "PoinsotError",
         ErrorKind::InvalidInertia => "InvalidInertiaError",
         ErrorKind::InvalidRotation => "InvalidRotationError",
         ErrorKind::InvalidMesh => "InvalidMeshError",
