@@ -102,7 +102,7 @@ def _rotations(value: Any, name: str = "R") -> tuple[FloatArray, tuple[int, ...]
 def _tol(tol: Any) -> float:
     try:
         return float(tol)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         raise PoinsotError(f"tol: must be a real number, got {tol!r}") from None
 
 

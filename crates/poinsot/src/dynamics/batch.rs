@@ -202,6 +202,16 @@ fn one_body(
             inertia: &inertia_t,
         })
     };
+    // The start must be representable: L = I ω and the torque (an overflow is blamed on the
+    // argument it comes from, not on the integrator).
+    // The exact flow rescales internally and needs neither.
+    let l0 = Vec3::new(moments[0] * w0.x, moments[1] * w0.y, moments[2] * w0.z);
+    if method != Method::Exact && !(l0.iter().all(|x| x.is_finite()) && (0.5 * w0.dot(&l0)).is_finite()) {
+        return Err(Error::invalid("omega0", "the initial angular momentum or energy overflows"));
+    }
+    if !torque_at(0.0, &w0, q0).iter().all(|x| x.is_finite()) {
+        return Err(Error::invalid("torque", "the torque at the start overflows"));
+    }
     let steps_for = |torque_norm: f64| -> Result<(usize, f64)> {
         let inertia = BodyInertia::from_moments(*moments)?;
         let h = dt
