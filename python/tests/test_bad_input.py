@@ -90,7 +90,7 @@ def test_errors_name_the_users_argument() -> None:
         ps.simulate([1.0, 1.0, 3.0], [0.1, 0.5, 1], 1.0)
     with pytest.raises(ps.PoinsotError, match="^pull: "):
         ps.Earth().flow_into_low(0.7, pull=-1.0, duration=3600.0)
-    with pytest.raises(ps.PoinsotError, match="^max_steps: "):
+    with pytest.raises(ps.PoinsotError, match="^height: "):
         ps.Earth().drop(1e308, 0.5)
     with pytest.raises(ps.PoinsotError, match="^height: .*overflows"):
         ps.Earth().eastward_deflection(1e308, 0.5)
