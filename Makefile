@@ -10,7 +10,7 @@ PY := $(VENV)/bin/python
 export PYO3_PYTHON := $(abspath $(PY))
 export MPLBACKEND := Agg
 
-.PHONY: setup demo test test-rust lint test-python examples bench stubtest clean lab lab-build test-web web-setup
+.PHONY: setup demo test test-rust lint test-python examples bench stubtest clean lab lab-build test-web web-setup fuzz-web
 
 $(PY):
 	$(PYTHON) -m venv $(VENV)
@@ -60,6 +60,14 @@ lab: lab-build
 test-web: lab-build
 	$(PY) web/tests/make_golden.py web/tests/golden.json
 	cd web && PYTHON=$(abspath $(PY)) node --test --test-concurrency=1 tests/
+
+# Long fuzzing of the WebAssembly core (issue 10, item 18): every export with adversarial values,
+# in node, a random seed (printed; FUZZ_SEED=<seed> repeats a run), FUZZ_CALLS calls (about 2 ms
+# each). `make test-web` runs a bounded, fixed-seed run (web/tests/wasm_fuzz.test.mjs).
+FUZZ_CALLS ?= 100000
+fuzz-web: web-setup
+	bash web/build.sh wasm
+	node web/tests/wasm_fuzz.mjs --calls $(FUZZ_CALLS) $(if $(FUZZ_SEED),--seed $(FUZZ_SEED))
 
 clean:
 	cargo clean

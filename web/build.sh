@@ -18,7 +18,9 @@ if [[ "$have" != "$want" ]]; then
 fi
 
 cargo build --target wasm32-unknown-unknown --release -p poinsot-wasm
-wasm-bindgen --target web --out-dir web/src/wasm \
+# --experimental-reset-state-function: the page's guard (src/protect.js) replaces an instance that
+# trapped (which must never happen) by a fresh one through the generated __wbg_reset_state.
+wasm-bindgen --target web --experimental-reset-state-function --out-dir web/src/wasm \
   target/wasm32-unknown-unknown/release/poinsot_wasm.wasm
 
 if [[ "${1:-all}" == "wasm" ]]; then exit 0; fi

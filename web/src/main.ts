@@ -2,7 +2,7 @@
 // and the readouts, runs the animation loop with the physics in it, and keeps the URL (the
 // "share" link) in step with the parameters.
 import "./style.css";
-import init, { version } from "./wasm/poinsot_wasm.js";
+import init, { coreStatus, version, type CoreStatus } from "./core";
 import { createView } from "./view";
 import { fmt, type Params, type Readout, type SceneDef, type SceneInstance } from "./scene";
 import { SCENES } from "./scenes";
@@ -21,6 +21,8 @@ interface LabHandle {
   /** Mean physics time per frame (ms) over the last `PHYSICS_WINDOW` frames. */
   physicsMs: number;
   error: string | null;
+  /** The core's guard: restarts of the WebAssembly instance after an internal error. */
+  core(): CoreStatus;
   readouts(): Record<string, Readout["value"]>;
   seek(t: number): void;
 }
@@ -33,7 +35,7 @@ async function main(): Promise<void> {
   const view = createView($("view"));
   const lab: LabHandle = {
     ready: false, version: version(), scenes: SCENES.map((d) => d.id), scene: "", params: {}, t: 0, playing: true, frames: 0,
-    physicsMs: 0, error: null,
+    physicsMs: 0, error: null, core: coreStatus,
     readouts: () => Object.fromEntries(current.readouts().map((r) => [r.key, r.value])),
     seek: (t: number) => { lab.t = t; stepOnce(); },
   };

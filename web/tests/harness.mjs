@@ -53,9 +53,11 @@ export async function startLab() {
 /** The page's URL for a query such as `?scene=top&paused=1`. */
 export const urlFor = (query) => new URL(query, base).href;
 
-/** Open the page at `query`, collecting console errors and uncaught exceptions. */
-export async function open(query, viewport = { width: 1200, height: 800 }) {
+/** Open the page at `query`, collecting console errors and uncaught exceptions; `beforeLoad`, a
+ * function, runs in the page before its scripts (playwright's addInitScript). */
+export async function open(query, viewport = { width: 1200, height: 800 }, { beforeLoad } = {}) {
   const page = await browser.newPage({ viewport });
+  if (beforeLoad) await page.addInitScript(beforeLoad);
   const errors = [];
   page.on("console", (msg) => {
     // The tests' own pixel read-back makes SwiftShader log a performance note; anything else counts.

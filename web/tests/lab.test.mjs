@@ -145,3 +145,69 @@ test("physics cost per frame is a small fraction of 16 ms", async () => {
     await page.close();
   }
 });
+
+/** Runs in the page before its scripts: the WebAssembly instances the page makes (the first one,
+ * through instantiateStreaming, and those of restarts, through new WebAssembly.Instance) get their
+ * exports wrapped so that `window.__armTrap(name)` makes the next call of the raw export `name`
+ * trap for real inside the instance (an impossible allocation aborts it, as a panic would). The
+ * shipped module has no trapping export; this is the test's fault injection. */
+function injectTraps() {
+  let armed = null;
+  window.__armTrap = (name) => { armed = name; };
+  const wrap = (instance) => {
+    const exports = {};
+    for (const [name, value] of Object.entries(instance.exports)) {
+      exports[name] = typeof value !== "function" ? value : function (...args) {
+        if (armed === name) {
+          armed = null;
+          instance.exports.__wbindgen_malloc(0xfffffff0, 8);
+        }
+        return value.apply(this, args);
+      };
+    }
+    return { exports };
+  };
+  const RealInstance = WebAssembly.Instance;
+  WebAssembly.Instance = function (module, imports) { return wrap(new RealInstance(module, imports)); };
+  const streaming = WebAssembly.instantiateStreaming;
+  WebAssembly.instantiateStreaming = async (...args) => {
+    const { module, instance } = await streaming(...args);
+    return { module, instance: wrap(instance) };
+  };
+}
+
+test("an internal error of the core is shown, the core restarts, and the page works on", async () => {
+  const { page, errors } = await open("?scene=heavytop&paused=1", undefined, { beforeLoad: injectTraps });
+  const before = await readouts(page);
+  // A trap inside the core while the scene evaluates the top's state.
+  await page.evaluate(() => window.__armTrap("heavytop_state"));
+  await page.evaluate(() => window.__lab.seek(1.25));
+  let s = await state(page);
+  assert.match(s.error ?? "", /^PoinsotError: internal error: the WebAssembly core failed in HeavyTop\.state \(unreachable\)\. .*please report/);
+  assert.equal(await page.locator("#alert").isVisible(), true);
+  const core = await page.evaluate(() => window.__lab.core());
+  assert.equal(core.restarts, 1);
+  assert.equal(core.broken, false);
+  // The scene's top belonged to the old instance: a parameter change makes a new one, and the
+  // page shows the same physics as before the trap.
+  const slider = page.locator("#controls input[type=range]").first();
+  const value = await slider.inputValue();
+  await slider.fill(String(Number(await slider.getAttribute("max"))));
+  await slider.fill(value);
+  s = await state(page);
+  assert.equal(s.error, null);
+  await page.evaluate(() => window.__lab.seek(0));
+  assert.deepEqual(await readouts(page), before);
+  // Other scenes run on the new instance, and the animation goes on.
+  await page.locator('#scenes button[data-scene="foucault"]').click();
+  const frames = await page.evaluate(() => window.__lab.frames);
+  await page.waitForTimeout(300);
+  s = await state(page);
+  assert.equal(s.scene, "foucault");
+  assert.equal(s.error, null);
+  assert.ok((await page.evaluate(() => window.__lab.frames)) > frames);
+  assert.ok(!/NaN|undefined/.test(await page.locator("#readouts").innerText()));
+  assert.equal((await page.evaluate(() => window.__lab.core())).restarts, 1);
+  assert.deepEqual(errors, []);
+  await page.close();
+});

@@ -5,14 +5,17 @@
 //! is defined in `free.rs`); body components along the principal axes, space components as the
 //! attitude maps them.
 
-use crate::convert::{array3, finite, vec_out, Failure, Out};
-use crate::free::FreeRigidBody;
+use crate::args::{count, number, numbers_each, triple, Count, Number, Numbers};
+use crate::convert::{finite, vec_out, Failure, Out};
+use crate::free::{time, FreeRigidBody};
 use poinsot::analytic as an;
 use wasm_bindgen::prelude::wasm_bindgen;
 
-fn time_ok(t: f64) -> Out<()> {
-    Ok(poinsot::error::check_finite("t", &[t])?)
-}
+/// Bytes per time of the batches (`contactPoints`, `omegas`): the copy of the time (8), the
+/// points (24) and the flat output (24).
+const BYTES_PER_TIME: usize = 8 + 24 + 24;
+/// Bytes per sample of `contactPolhode`: the core's points (24) and the flat output (24).
+const BYTES_PER_POLHODE_SAMPLE: usize = 24 + 24;
 
 fn flat(points: &[poinsot::Vec3]) -> Vec<f64> {
     points.iter().flat_map(|p| [p.x, p.y, p.z]).collect()
@@ -55,36 +58,64 @@ impl FreeRigidBody {
     /// The contact point ρ = R(t) ω(t) / (2T)^½ of the inertia ellipsoid with the invariable
     /// plane at time `t` (s), space components.
     #[wasm_bindgen(js_name = contactPoint)]
-    pub fn contact_point(&self, t: f64) -> Out<Vec<f64>> {
-        time_ok(t)?;
-        finite("contact point", vec_out(&self.inner.contact_point(t)))
+    pub fn contact_point(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
+    ) -> Out<Vec<f64>> {
+        let t = time(&t)?;
+        finite("t", "contact point", vec_out(&self.inner.contact_point(t)))
     }
     /// The contact point ω(t) / (2T)^½ at time `t` (s), body components.
     #[wasm_bindgen(js_name = contactPointBody)]
-    pub fn contact_point_body(&self, t: f64) -> Out<Vec<f64>> {
-        time_ok(t)?;
-        finite("contact point", vec_out(&self.inner.contact_point_body(t)))
+    pub fn contact_point_body(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
+    ) -> Out<Vec<f64>> {
+        let t = time(&t)?;
+        finite(
+            "t",
+            "contact point",
+            vec_out(&self.inner.contact_point_body(t)),
+        )
     }
     /// The contact points (space components) at each of `times` (s): 3N numbers, the
     /// herpolhode (scaled) when the times are consecutive.
     #[wasm_bindgen(js_name = contactPoints)]
-    pub fn contact_points(&self, times: &[f64]) -> Out<Vec<f64>> {
-        poinsot::error::check_finite("times", times)?;
+    pub fn contact_points(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] times: Numbers,
+    ) -> Out<Vec<f64>> {
+        let times = numbers_each("times", &times, BYTES_PER_TIME)?;
+        poinsot::error::check_finite("times", &times)?;
         let pts: Vec<poinsot::Vec3> = times.iter().map(|&t| self.inner.contact_point(t)).collect();
-        finite("contact point", flat(&pts))
+        finite("times", "contact point", flat(&pts))
     }
     /// ω (body components, rad/s) at each of `times` (s): 3N numbers.
     #[wasm_bindgen(js_name = omegas)]
-    pub fn omegas(&self, times: &[f64]) -> Out<Vec<f64>> {
-        poinsot::error::check_finite("times", times)?;
+    pub fn omegas(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] times: Numbers,
+    ) -> Out<Vec<f64>> {
+        let times = numbers_each("times", &times, BYTES_PER_TIME)?;
+        poinsot::error::check_finite("times", &times)?;
         let pts: Vec<poinsot::Vec3> = times.iter().map(|&t| self.inner.omega(t)).collect();
-        finite("omega", flat(&pts))
+        finite("times", "omega", flat(&pts))
     }
     /// `samples` points (3N numbers, body components) of the polhode on the inertia ellipsoid
     /// ρ·I·ρ = 1, over one period (on the separatrix, the branch from −12/λ to 12/λ).
     #[wasm_bindgen(js_name = contactPolhode)]
-    pub fn contact_polhode(&self, samples: usize) -> Out<Vec<f64>> {
-        finite("polhode", flat(&self.inner.contact_polhode(samples)?))
+    pub fn contact_polhode(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] samples: Count,
+    ) -> Out<Vec<f64>> {
+        // The memory budget is checked here until the core's own check (`poinsot::limits`, in
+        // `FreeRigidBody::polhode`) lands; the minimum of 2 samples is the core's.
+        let samples = count("samples", &samples, BYTES_PER_POLHODE_SAMPLE)?;
+        finite(
+            "samples",
+            "polhode",
+            flat(&self.inner.contact_polhode(samples)?),
+        )
     }
 }
 
@@ -114,11 +145,17 @@ impl AxisStability {
 /// The stability of steady rotation at `spin` (rad/s) about each principal axis of a body with
 /// principal `moments` (kg·m², 3 numbers, any order): the intermediate axis is unstable.
 #[wasm_bindgen(js_name = axisStability)]
-pub fn axis_stability(moments: &[f64], spin: f64) -> Out<AxisStability> {
-    let s = an::axis_stability(array3("moments", moments)?, spin).map_err(Failure::from)?;
+pub fn axis_stability(
+    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] moments: Numbers,
+    #[wasm_bindgen(unchecked_param_type = "number")] spin: Number,
+) -> Out<AxisStability> {
+    let moments = triple("moments", &moments)?;
+    let s = an::axis_stability(moments, number("spin", &spin)?).map_err(Failure::from)?;
+    let rates: Vec<f64> = s.iter().map(|a| a.rate).collect();
+    finite("moments, spin", "rates", rates.clone())?;
     Ok(AxisStability {
         kinds: s.iter().map(|a| a.stability.as_str().to_string()).collect(),
-        rates: s.iter().map(|a| a.rate).collect(),
+        rates,
     })
 }
 
@@ -128,7 +165,7 @@ mod tests {
 
     #[test]
     fn contact_point_is_on_the_ellipsoid_and_the_plane() {
-        let b = FreeRigidBody::new(&[1.0, 2.0, 3.0], &[0.05, 2.0, 0.05], &[]).unwrap();
+        let b = FreeRigidBody::new(vec![1.0, 2.0, 3.0], vec![0.05, 2.0, 0.05], vec![]).unwrap();
         let t = 3.7;
         let rb = b.contact_point_body(t).unwrap();
         let rs = b.contact_point(t).unwrap();
@@ -141,9 +178,9 @@ mod tests {
             "{h}"
         );
         // The batch agrees with the single call.
-        let many = b.contact_points(&[0.0, t]).unwrap();
+        let many = b.contact_points(vec![0.0, t]).unwrap();
         assert_eq!(&many[3..], &rs[..]);
-        assert_eq!(b.omegas(&[t]).unwrap(), b.omega(t).unwrap());
+        assert_eq!(b.omegas(vec![t]).unwrap(), b.omega(t).unwrap());
         // The flip interval is half the period.
         assert!((2.0 * b.flip_interval() / b.period() - 1.0).abs() < 1e-14);
         // L² = 16.025 > 2T·I₂ = 16.02: just above the separatrix, ω circles the largest axis.
@@ -153,29 +190,29 @@ mod tests {
 
     #[test]
     fn bad_input_names_the_argument() {
-        let b = FreeRigidBody::new(&[1.0, 2.0, 3.0], &[0.3, 1.0, 0.2], &[]).unwrap();
+        let b = FreeRigidBody::new(vec![1.0, 2.0, 3.0], vec![0.3, 1.0, 0.2], vec![]).unwrap();
         assert!(b
             .contact_point(f64::INFINITY)
             .unwrap_err()
             .message
             .starts_with("t"));
         assert!(b
-            .contact_points(&[0.0, f64::NAN])
+            .contact_points(vec![0.0, f64::NAN])
             .unwrap_err()
             .message
             .starts_with("times"));
         assert!(b
-            .contact_polhode(1)
+            .contact_polhode(1.0)
             .unwrap_err()
             .message
             .starts_with("samples"));
-        let e = axis_stability(&[1.0, 2.0, 5.0], 1.0).unwrap_err();
+        let e = axis_stability(vec![1.0, 2.0, 5.0], 1.0).unwrap_err();
         assert_eq!(e.name, "InvalidInertiaError");
-        assert!(axis_stability(&[1.0, 2.0], 1.0)
+        assert!(axis_stability(vec![1.0, 2.0], 1.0)
             .unwrap_err()
             .message
             .starts_with("moments"));
-        assert!(axis_stability(&[1.0, 2.0, 3.0], f64::NAN)
+        assert!(axis_stability(vec![1.0, 2.0, 3.0], f64::NAN)
             .unwrap_err()
             .message
             .starts_with("spin"));
@@ -183,7 +220,7 @@ mod tests {
 
     #[test]
     fn the_intermediate_axis_is_the_unstable_one() {
-        let s = axis_stability(&[3.0, 1.0, 2.0], 2.0).unwrap();
+        let s = axis_stability(vec![3.0, 1.0, 2.0], 2.0).unwrap();
         assert_eq!(s.kinds(), ["stable", "stable", "unstable"]);
         // σ = |spin| ((I₂ − I₁)(I₃ − I₂)/(I₁I₃))^½ with sorted 1, 2, 3: 2·(1·1/3)^½.
         assert!((s.rates()[2] - 2.0 * (1.0f64 / 3.0).sqrt()).abs() < 1e-15);

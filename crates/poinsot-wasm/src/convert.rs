@@ -9,7 +9,8 @@ use wasm_bindgen::JsValue;
 /// An error on its way to JavaScript: the exception class name and the core's message.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Failure {
-    /// The JavaScript `Error.name`: the Python exception class of the same kind.
+    /// The JavaScript `Error.name`: the Python exception class of the same kind, or `"TypeError"`
+    /// for an argument of the wrong JavaScript type (thrown as a real `TypeError`).
     pub name: &'static str,
     /// The core's message, `"argument: condition"`.
     pub message: String,
@@ -22,6 +23,15 @@ impl Failure {
     /// An invalid-argument failure naming `argument` and the violated `condition`.
     pub fn invalid(argument: &str, condition: &str) -> Self {
         Failure::from(Error::invalid(argument, condition))
+    }
+
+    /// A wrong JavaScript type (a string where a number is expected, ...): a `TypeError` whose
+    /// message names `argument`, as Python raises `TypeError` for a wrong type.
+    pub fn type_error(argument: &str, condition: &str) -> Self {
+        Failure {
+            name: "TypeError",
+            message: format!("{argument}: {condition}"),
+        }
     }
 }
 
@@ -45,6 +55,75 @@ impl From<Error> for Failure {
     }
 }
 
+/// Maps a core error about `from` (the core's or the Python API's name of an argument) to the
+/// same error about `to` (the binding's name of it), e.g. the core's `"R"` to the binding's `r`.
+pub fn renamed(from: &'static str, to: &'static str) -> impl Fn(Error) -> Failure {
+    renamed_all(&[]).with(from, to)
+}
+
+/// A map of the core's argument names to the binding's, for the errors of one call: see
+/// [`renamed_all`].
+pub struct Names {
+    pairs: Vec<(&'static str, &'static str)>,
+    rest: Option<&'static str>,
+}
+
+impl Names {
+    /// The map with `from` shown as `to` too.
+    pub fn with(mut self, from: &'static str, to: &'static str) -> impl Fn(Error) -> Failure {
+        self.pairs.push((from, to));
+        move |e| self.apply(e)
+    }
+
+    /// The map, and every other name that is not one of `arguments` attributed to them (see
+    /// [`attributed`]).
+    pub fn otherwise(mut self, arguments: &'static str) -> impl Fn(Error) -> Failure {
+        self.rest = Some(arguments);
+        move |e| self.apply(e)
+    }
+
+    fn apply(&self, mut e: Error) -> Failure {
+        if let Some((_, to)) = self.pairs.iter().find(|(from, _)| e.argument == *from) {
+            if e.argument == "max_steps" {
+                // The binding's fixed step limit is not an argument of the JavaScript API.
+                e.message = format!("too long for the step limit of the browser: {}", e.message);
+            }
+            e.argument = (*to).into();
+        } else if let Some(arguments) = self.rest {
+            return attributed(arguments)(e);
+        }
+        Failure::from(e)
+    }
+}
+
+/// Maps the arguments a core error may name to the binding's (`to` may list several, `"mass,
+/// stiffness"`): the core names its own internal quantities (`t_end`, `state0`, `strength`,
+/// `max_steps`) where the JavaScript call has other arguments. A `max_steps` error also says
+/// that the run is too long for the binding's fixed step limit.
+pub fn renamed_all(names: &[(&'static str, &'static str)]) -> Names {
+    Names {
+        pairs: names.to_vec(),
+        rest: None,
+    }
+}
+
+/// Attributes a core error to the call's `arguments` (`"i1, i3, mgl, p_phi, p_psi, energy"`)
+/// unless it already names one of them: the core names the internal quantity where a
+/// computation broke down (`m`, the Jacobi parameter; `theta`, a root of the cubic), which is not
+/// an argument of the JavaScript call; the message keeps that name after the arguments.
+pub fn attributed(arguments: &'static str) -> impl Fn(Error) -> Failure {
+    move |mut e: Error| {
+        if !arguments
+            .split(", ")
+            .any(|a| a.eq_ignore_ascii_case(&e.argument))
+        {
+            e.message = format!("{}: {}", e.argument, e.message);
+            e.argument = arguments.into();
+        }
+        Failure::from(e)
+    }
+}
+
 impl std::fmt::Display for Failure {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(f, "{}: {}", self.name, self.message)
@@ -53,6 +132,9 @@ impl std::fmt::Display for Failure {
 
 impl From<Failure> for JsValue {
     fn from(f: Failure) -> JsValue {
+        if f.name == "TypeError" {
+            return js_sys::TypeError::new(&f.message).into();
+        }
         let e = js_sys::Error::new(&f.message);
         e.set_name(f.name);
         e.into()
@@ -113,22 +195,38 @@ pub fn mat_out(m: &Mat3) -> Vec<f64> {
         .collect()
 }
 
-/// `values` unchanged if every one is finite; otherwise an error naming `quantity`. The core
-/// promises finite results for valid input, so this guard only stops a NaN reaching the page.
-pub fn finite(quantity: &str, values: Vec<f64>) -> Out<Vec<f64>> {
+/// `values` unchanged if every one is finite; otherwise an error naming the call's `arguments`
+/// (`"t"`, `"height, latitude"`): the `quantity` they ask for is not a finite number — too large
+/// for double precision (a time of 1e308 s, a body of 1e308 kg), or outside the range where it
+/// can be computed. The core promises finite results for valid input where it can; this guard
+/// keeps a NaN or an infinity from reaching the page, and says which arguments to change.
+pub fn finite(arguments: &str, quantity: &str, values: Vec<f64>) -> Out<Vec<f64>> {
     if values.iter().all(|v| v.is_finite()) {
         Ok(values)
     } else {
-        Err(Failure {
-            name: "PoinsotError",
-            message: format!("{quantity}: the result is not finite"),
-        })
+        Err(not_finite(arguments, quantity))
     }
 }
 
-/// `value` if finite, otherwise an error naming `quantity` (see [`finite`]).
-pub fn finite1(quantity: &str, value: f64) -> Out<f64> {
-    finite(quantity, vec![value]).map(|v| v[0])
+/// `value` if finite, otherwise the error of [`finite`].
+pub fn finite1(arguments: &str, quantity: &str, value: f64) -> Out<f64> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(not_finite(arguments, quantity))
+    }
+}
+
+/// The error of [`finite`]: `arguments` give a `quantity` that is not a finite number.
+pub fn not_finite(arguments: &str, quantity: &str) -> Failure {
+    Failure {
+        name: "PoinsotError",
+        message: format!(
+            "{arguments}: the result ({quantity}) is not a finite number for these values (too \
+             large for double precision, or outside the range where it can be computed); use \
+             smaller values"
+        ),
+    }
 }
 
 #[cfg(test)]
@@ -176,8 +274,20 @@ mod tests {
 
     #[test]
     fn non_finite_results_never_pass() {
-        assert!(finite("omega", vec![1.0, f64::NAN]).is_err());
-        assert!(finite1("energy", f64::INFINITY).is_err());
-        assert_eq!(finite1("energy", 2.0).unwrap(), 2.0);
+        let e = finite("t", "omega", vec![1.0, f64::NAN]).unwrap_err();
+        assert_eq!(e.name, "PoinsotError");
+        assert!(
+            e.message
+                .starts_with("t: the result (omega) is not a finite number for these values"),
+            "{}",
+            e.message
+        );
+        let e = finite1("omega, t", "energy", f64::INFINITY).unwrap_err();
+        assert!(
+            e.message.starts_with("omega, t: the result (energy)"),
+            "{}",
+            e.message
+        );
+        assert_eq!(finite1("omega", "energy", 2.0).unwrap(), 2.0);
     }
 }

@@ -8,7 +8,8 @@
 //! give the state at any time by continuing the core's integration from the last sample
 //! before it (a step or two), so that an animation can be evaluated — or seeked — anywhere.
 
-use crate::convert::{finite, finite1, vec3, vec_out, Failure, Out};
+use crate::args::{check_bytes, count, index_in, number, numbers, Count, Number, Numbers};
+use crate::convert::{finite, finite1, renamed, renamed_all, vec_out, Failure, Out};
 use poinsot::earth::{self as ea, fit_precession_rate, FallModel, FoucaultRun, Gravity, LowRun};
 use poinsot::frames::ParticleState;
 use poinsot::integrate::Options;
@@ -39,6 +40,14 @@ fn linspace(duration: f64, n: usize) -> Vec<f64> {
     t[n - 1] = duration;
     t
 }
+
+/// Bytes per sample of a Foucault run: the sample time (8) and the run's time and state (8 + 48).
+const BYTES_PER_FOUCAULT_SAMPLE: usize = 8 + 8 + 48;
+/// Bytes per sample of a run of parcels, shared by all parcels: the sample time and the run's time.
+const BYTES_PER_SAMPLE: usize = 8 + 8;
+/// Bytes per parcel and sample of the winds: the state (32), its energy and the work against
+/// friction (8 + 8).
+const BYTES_PER_PARCEL_SAMPLE: usize = 32 + 8 + 8;
 
 fn check_run(duration: f64, samples: usize) -> Out<()> {
     if !(duration.is_finite() && duration > 0.0) {
@@ -121,9 +130,13 @@ impl Fall {
     }
     /// The state `[x, y, z, vx, vy, vz]` (ENU, m and m/s, origin at the ground below the
     /// release point) at time `t` (s, in [0, time]) from the integrator's dense output.
-    pub fn state(&self, t: f64) -> Out<Vec<f64>> {
+    pub fn state(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
+    ) -> Out<Vec<f64>> {
+        let t = number("t", &t)?;
         poinsot::error::check_finite("t", &[t])?;
-        finite("state", self.inner.solution.at(t)?.to_vec())
+        finite("t", "state", self.inner.solution.at(t)?.to_vec())
     }
 }
 
@@ -132,7 +145,14 @@ impl Earth {
     /// An Earth of angular rate `rotation_rate` (rad/s), `radius` (m) and surface gravity `g`
     /// (m/s²). The Python defaults are [`Earth::sidereal_rate`], 6.371e6 m and 9.80665 m/s².
     #[wasm_bindgen(constructor)]
-    pub fn new(rotation_rate: f64, radius: f64, g: f64) -> Out<Earth> {
+    pub fn new(
+        #[wasm_bindgen(unchecked_param_type = "number")] rotation_rate: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] radius: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] g: Number,
+    ) -> Out<Earth> {
+        let rotation_rate = number("rotation_rate", &rotation_rate)?;
+        let radius = number("radius", &radius)?;
+        let g = number("g", &g)?;
         Ok(Earth {
             inner: ea::Earth::new(rotation_rate, radius, g)?,
         })
@@ -162,25 +182,55 @@ impl Earth {
     /// The first-order eastward deflection (m) of a body dropped from `height` (m) at
     /// `latitude` (rad): the unit's 2.42.
     #[wasm_bindgen(js_name = eastwardDeflection)]
-    pub fn eastward_deflection(&self, height: f64, latitude: f64) -> Out<f64> {
-        finite1("east", self.inner.eastward_deflection(height, latitude)?)
+    pub fn eastward_deflection(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] height: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
+    ) -> Out<f64> {
+        let height = number("height", &height)?;
+        let latitude = number("latitude", &latitude)?;
+        finite1(
+            "height, latitude",
+            "eastward deflection",
+            self.inner.eastward_deflection(height, latitude)?,
+        )
     }
 
     /// The second-order southward deflection (m) in the northern hemisphere.
     #[wasm_bindgen(js_name = southwardDeflection)]
-    pub fn southward_deflection(&self, height: f64, latitude: f64) -> Out<f64> {
-        finite1("south", self.inner.southward_deflection(height, latitude)?)
+    pub fn southward_deflection(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] height: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
+    ) -> Out<f64> {
+        let height = number("height", &height)?;
+        let latitude = number("latitude", &latitude)?;
+        finite1(
+            "height, latitude",
+            "southward deflection",
+            self.inner.southward_deflection(height, latitude)?,
+        )
     }
 
     /// The time (s) to fall `height` (m) in uniform gravity without rotation, √(2h/g).
     #[wasm_bindgen(js_name = fallTime)]
-    pub fn fall_time(&self, height: f64) -> Out<f64> {
-        finite1("time", self.inner.fall_time(height)?)
+    pub fn fall_time(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] height: Number,
+    ) -> Out<f64> {
+        let height = number("height", &height)?;
+        finite1("height", "fall time", self.inner.fall_time(height)?)
     }
 
     /// The exact drop from rest at `height` (m) and `latitude` (rad), with the Python API's
     /// defaults (uniform gravity, Coriolis and centrifugal terms, tolerances [`DROP_TOL`]).
-    pub fn drop(&self, height: f64, latitude: f64) -> Out<Fall> {
+    pub fn drop(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] height: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
+    ) -> Out<Fall> {
+        let height = number("height", &height)?;
+        let latitude = number("latitude", &latitude)?;
         let model = FallModel {
             gravity: Gravity::Uniform,
             rotation: true,
@@ -193,42 +243,84 @@ impl Earth {
                 ..Options::default()
             },
         };
-        let f = self.inner.drop(height, latitude, &model)?;
-        finite("fall", vec![f.time, f.east, f.north])?;
+        // The core names the integration's end (`t_end`, from the fall time) and its time `t`:
+        // both come from `height`.
+        let f = self.inner.drop(height, latitude, &model).map_err(
+            renamed_all(&[
+                ("t_end", "height"),
+                ("t", "height"),
+                ("max_steps", "height"),
+            ])
+            .otherwise("height, latitude"),
+        )?;
+        finite(
+            "height, latitude",
+            "landing point",
+            vec![f.time, f.east, f.north],
+        )?;
         Ok(Fall { inner: f })
     }
 
     /// The precession rate (rad/s) of a Foucault pendulum's swing plane, ω sin λ (clockwise seen
     /// from above in the north).
     #[wasm_bindgen(js_name = foucaultRate)]
-    pub fn foucault_rate(&self, latitude: f64) -> Out<f64> {
-        finite1("rate", self.inner.foucault_rate(latitude)?)
+    pub fn foucault_rate(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
+    ) -> Out<f64> {
+        let latitude = number("latitude", &latitude)?;
+        finite1(
+            "latitude",
+            "Foucault rate",
+            self.inner.foucault_rate(latitude)?,
+        )
     }
 
     /// The Earth's angular velocity in the local ENU frame, ω (0, cos λ, sin λ) (rad/s).
     #[wasm_bindgen(js_name = omegaEnu)]
-    pub fn omega_enu(&self, latitude: f64) -> Out<Vec<f64>> {
-        finite("omega", vec_out(&self.inner.omega_enu(latitude)?))
+    pub fn omega_enu(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
+    ) -> Out<Vec<f64>> {
+        let latitude = number("latitude", &latitude)?;
+        finite(
+            "latitude",
+            "omega",
+            vec_out(&self.inner.omega_enu(latitude)?),
+        )
     }
 
     /// The effective gravity vector (ENU, m/s²) at `latitude` (rad).
     #[wasm_bindgen(js_name = effectiveGravity)]
-    pub fn effective_gravity(&self, latitude: f64) -> Out<Vec<f64>> {
+    pub fn effective_gravity(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
+    ) -> Out<Vec<f64>> {
+        let latitude = number("latitude", &latitude)?;
         finite(
-            "g_eff",
+            "latitude",
+            "effective gravity",
             vec_out(&self.inner.effective_gravity(latitude)?.vector),
         )
     }
 
     /// The Coriolis acceleration −2 ω × v (ENU, m/s²) of a velocity `velocity` (ENU, m/s).
     #[wasm_bindgen(js_name = coriolisAcceleration)]
-    pub fn coriolis_acceleration(&self, latitude: f64, velocity: &[f64]) -> Out<Vec<f64>> {
+    pub fn coriolis_acceleration(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] velocity: Numbers,
+    ) -> Out<Vec<f64>> {
+        let latitude = number("latitude", &latitude)?;
+        let velocity = numbers("velocity", &velocity)?;
         finite(
-            "coriolis",
+            "latitude, velocity",
+            "Coriolis acceleration",
             vec_out(
-                &self
-                    .inner
-                    .coriolis_acceleration(latitude, &vec3("velocity", velocity)?)?,
+                &self.inner.coriolis_acceleration(
+                    latitude,
+                    &crate::convert::vec3("velocity", &velocity)?,
+                )?,
             ),
         )
     }
@@ -263,15 +355,18 @@ impl Foucault {
         if self.run.t[i] == t {
             return Ok(self.run.states[i]);
         }
-        let rest = self.earth.foucault(
-            self.latitude,
-            self.length,
-            self.run.states[i],
-            self.run.t[i],
-            t,
-            &[t],
-            &Self::options(),
-        )?;
+        let rest = self
+            .earth
+            .foucault(
+                self.latitude,
+                self.length,
+                self.run.states[i],
+                self.run.t[i],
+                t,
+                &[t],
+                &Self::options(),
+            )
+            .map_err(renamed_all(&[("t_end", "t"), ("max_steps", "t")]).otherwise("t"))?;
         Ok(rest.states[0])
     }
 }
@@ -326,14 +421,26 @@ impl Foucault {
     }
     /// The bob's state `[x, y, z, vx, vy, vz]` at time `t` (s, in [0, duration]): the sample at
     /// `t`, or the core's integration continued from the last sample before `t`.
-    pub fn state(&self, t: f64) -> Out<Vec<f64>> {
-        finite("state", self.state_at(t)?.to_vec())
+    pub fn state(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
+    ) -> Out<Vec<f64>> {
+        let t = number("t", &t)?;
+        finite("t", "state", self.state_at(t)?.to_vec())
     }
     /// Jacobi's integral (J/kg) of the state at `t`: constant along the run.
     #[wasm_bindgen(js_name = jacobiIntegral)]
-    pub fn jacobi_integral(&self, t: f64) -> Out<f64> {
+    pub fn jacobi_integral(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
+    ) -> Out<f64> {
+        let t = number("t", &t)?;
         let s = self.state_at(t)?;
-        finite1("jacobi", self.earth.jacobi_integral(self.latitude, &s)?)
+        finite1(
+            "t",
+            "Jacobi integral",
+            self.earth.jacobi_integral(self.latitude, &s)?,
+        )
     }
 }
 
@@ -392,19 +499,18 @@ impl LowFlow {
         self.run.t.clone()
     }
     /// The track of parcel `index`: `[x0, y0, x1, y1, ...]` (m, east and north) at the samples.
-    pub fn track(&self, index: usize) -> Out<Vec<f64>> {
-        let p = self.run.parcels.get(index).ok_or_else(|| {
-            Failure::invalid(
-                "index",
-                &format!("must be < {} parcels, got {index}", self.run.parcels.len()),
-            )
-        })?;
+    pub fn track(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] index: Count,
+    ) -> Out<Vec<f64>> {
+        let p = &self.run.parcels[index_in("index", &index, self.run.parcels.len(), "parcels")?];
         Ok(p.iter().flat_map(|s| [s[0], s[1]]).collect())
     }
     /// Every parcel at time `t` (s, in [0, duration]): six numbers each, `[x, y, vx, vy, energy,
     /// dissipated]` (m, m/s, J/kg), from the samples or by continuing the core's integration
     /// from the last sample before `t`; `energy + dissipated` is each parcel's initial energy.
-    pub fn at(&self, t: f64) -> Out<Vec<f64>> {
+    pub fn at(&self, #[wasm_bindgen(unchecked_param_type = "number")] t: Number) -> Out<Vec<f64>> {
+        let t = number("t", &t)?;
         let i = sample_before(&self.run.t, t)?;
         let n = self.run.parcels.len();
         let mut out = Vec::with_capacity(6 * n);
@@ -422,16 +528,19 @@ impl LowFlow {
             }
         } else {
             let from: Vec<[f64; 4]> = self.run.parcels.iter().map(|p| p[i]).collect();
-            let rest = self.earth.flow_into_low_from(
-                self.latitude,
-                &from,
-                self.run.t[i],
-                self.strength,
-                self.friction,
-                t,
-                &[t],
-                &Self::options(),
-            )?;
+            let rest = self
+                .earth
+                .flow_into_low_from(
+                    self.latitude,
+                    &from,
+                    self.run.t[i],
+                    self.strength,
+                    self.friction,
+                    t,
+                    &[t],
+                    &Self::options(),
+                )
+                .map_err(renamed_all(&[("t_end", "t"), ("max_steps", "t")]).otherwise("t"))?;
             for p in 0..n {
                 let s = rest.parcels[p][0];
                 // The work against friction before the sample plus the work since.
@@ -439,7 +548,7 @@ impl LowFlow {
                 out.extend_from_slice(&[s[0], s[1], s[2], s[3], rest.energy[p][0], lost]);
             }
         }
-        finite("parcels", out)
+        finite("t", "parcels' states", out)
     }
 }
 
@@ -471,28 +580,54 @@ impl Earth {
     /// `samples` even times: `Earth.foucault` with the Python defaults.
     pub fn foucault(
         &self,
-        latitude: f64,
-        length: f64,
-        amplitude: f64,
-        azimuth: f64,
-        duration: f64,
-        samples: usize,
+        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] length: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] amplitude: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] azimuth: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] duration: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] samples: Count,
     ) -> Out<Foucault> {
+        let latitude = number("latitude", &latitude)?;
+        let length = number("length", &length)?;
+        let amplitude = number("amplitude", &amplitude)?;
+        let azimuth = number("azimuth", &azimuth)?;
+        let duration = number("duration", &duration)?;
+        // The memory budget is checked here until the core's own check (`poinsot::limits`, in
+        // `Earth::foucault`) lands; it must come before the sample times are made.
+        let samples = count("samples", &samples, BYTES_PER_FOUCAULT_SAMPLE)?;
         check_run(duration, samples)?;
-        let state0 = ea::Earth::foucault_release(length, amplitude, azimuth)?;
+        // The core checks the release state it computes (`state0`): from `length` and `amplitude`.
+        let state0 = ea::Earth::foucault_release(length, amplitude, azimuth)
+            .map_err(renamed("state0", "length, amplitude"))?;
         let times = linspace(duration, samples);
-        let run = self.inner.foucault(
-            latitude,
-            length,
-            state0,
-            0.0,
-            duration,
-            &times,
-            &Foucault::options(),
+        let run = self
+            .inner
+            .foucault(
+                latitude,
+                length,
+                state0,
+                0.0,
+                duration,
+                &times,
+                &Foucault::options(),
+            )
+            .map_err(
+                renamed_all(&[
+                    ("state0", "length, amplitude"),
+                    ("t_end", "duration"),
+                    ("max_steps", "duration"),
+                ])
+                .otherwise("latitude, length, amplitude, azimuth, duration, samples"),
+            )?;
+        // Too short a run has too few turning points to fit a rate: the core names them.
+        let fitted = fit_precession_rate(&run.turn_times, &run.turn_angles).map_err(
+            renamed_all(&[("turn_times", "duration"), ("turn_angles", "duration")])
+                .with("t", "duration"),
         )?;
         let rate = finite1(
-            "precession_rate",
-            fit_precession_rate(&run.turn_times, &run.turn_angles)?,
+            "latitude, length, amplitude, azimuth, duration, samples",
+            "fitted precession rate",
+            fitted,
         )?;
         let expected = self.inner.foucault_rate(latitude)?;
         Ok(Foucault {
@@ -514,14 +649,33 @@ impl Earth {
     #[allow(clippy::too_many_arguments)]
     pub fn flow_into_low(
         &self,
-        latitude: f64,
-        radius: f64,
-        parcels: usize,
-        pull: f64,
-        friction: f64,
-        duration: f64,
-        samples: usize,
+        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] radius: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] parcels: Count,
+        #[wasm_bindgen(unchecked_param_type = "number")] pull: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] friction: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] duration: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] samples: Count,
     ) -> Out<LowFlow> {
+        let latitude = number("latitude", &latitude)?;
+        let radius = number("radius", &radius)?;
+        // The memory budget is checked here until the core's own check (`poinsot::limits`, in
+        // `Earth::flow_into_low`) lands; it must come before the starts and times are made.
+        let parcels = count("parcels", &parcels, 16 + BYTES_PER_PARCEL_SAMPLE)?;
+        let pull = number("pull", &pull)?;
+        let friction = number("friction", &friction)?;
+        let duration = number("duration", &duration)?;
+        let samples = count(
+            "samples",
+            &samples,
+            BYTES_PER_SAMPLE + BYTES_PER_PARCEL_SAMPLE,
+        )?;
+        let (np, ns) = (parcels as f64, samples as f64);
+        check_bytes(
+            "samples",
+            &format!("{parcels} parcels × {samples} samples"),
+            np * ns * BYTES_PER_PARCEL_SAMPLE as f64 + ns * BYTES_PER_SAMPLE as f64,
+        )?;
         if !(radius.is_finite() && radius > 0.0) {
             return Err(Failure::invalid(
                 "radius",
@@ -544,16 +698,30 @@ impl Earth {
             .collect();
         let times = linspace(duration, samples);
         let strength = pull / radius;
-        let run = self.inner.flow_into_low(
-            latitude,
-            &starts,
-            strength,
-            friction,
-            duration,
-            &times,
-            &LowFlow::options(),
+        let run = self
+            .inner
+            .flow_into_low(
+                latitude,
+                &starts,
+                strength,
+                friction,
+                duration,
+                &times,
+                &LowFlow::options(),
+            )
+            .map_err(
+                renamed_all(&[
+                    ("strength", "pull, radius"),
+                    ("t_end", "duration"),
+                    ("max_steps", "duration"),
+                ])
+                .otherwise("latitude, radius, parcels, pull, friction, duration, samples"),
+            )?;
+        finite1(
+            "latitude, radius, parcels, pull, friction, duration, samples",
+            "circulation",
+            run.circulation,
         )?;
-        finite1("circulation", run.circulation)?;
         Ok(LowFlow {
             earth: self.inner,
             latitude,
@@ -570,12 +738,18 @@ impl Earth {
     #[wasm_bindgen(js_name = inertialOscillation)]
     pub fn inertial_oscillation(
         &self,
-        latitude: f64,
-        velocity: &[f64],
-        duration: f64,
-        samples: usize,
+        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] velocity: Numbers,
+        #[wasm_bindgen(unchecked_param_type = "number")] duration: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] samples: Count,
     ) -> Out<InertialOscillation> {
-        let v: [f64; 2] = match velocity {
+        let latitude = number("latitude", &latitude)?;
+        let velocity = numbers("velocity", &velocity)?;
+        let duration = number("duration", &duration)?;
+        // The memory budget is checked here until the core's own check (`poinsot::limits`, in
+        // `Earth::inertial_oscillation`) lands; it must come before the sample times are made.
+        let samples = count("samples", &samples, BYTES_PER_SAMPLE + 32)?;
+        let v: [f64; 2] = match velocity.as_slice() {
             [a, b] => [*a, *b],
             _ => {
                 return Err(Failure::invalid(
@@ -595,35 +769,57 @@ impl Earth {
             dense: false,
             ..Options::default()
         };
-        let run = self.inner.inertial_oscillation(
-            latitude,
-            v,
-            duration,
-            &linspace(duration, samples),
-            &opts,
+        let run = self
+            .inner
+            .inertial_oscillation(latitude, v, duration, &linspace(duration, samples), &opts)
+            .map_err(
+                renamed_all(&[("t_end", "duration"), ("max_steps", "duration")])
+                    .otherwise("latitude, velocity, duration, samples"),
+            )?;
+        finite1(
+            "latitude, velocity, duration, samples",
+            "turning rate",
+            run.turning_rate,
         )?;
-        finite1("turning_rate", run.turning_rate)?;
         Ok(InertialOscillation { run })
     }
 
     /// The period of inertial oscillations π/(ω |sin λ|) (s); `Infinity` at the equator (the
     /// one non-finite number this module returns: there is no inertial oscillation there).
     #[wasm_bindgen(js_name = inertialPeriod)]
-    pub fn inertial_period(&self, latitude: f64) -> Out<f64> {
+    pub fn inertial_period(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
+    ) -> Out<f64> {
+        let latitude = number("latitude", &latitude)?;
         Ok(self.inner.inertial_period(latitude)?)
     }
 
     /// The Coriolis parameter f = 2 ω sin λ (1/s) at `latitude` (rad).
     #[wasm_bindgen(js_name = coriolisParameter)]
-    pub fn coriolis_parameter(&self, latitude: f64) -> Out<f64> {
-        finite1("f", self.inner.coriolis_parameter(latitude)?)
+    pub fn coriolis_parameter(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
+    ) -> Out<f64> {
+        let latitude = number("latitude", &latitude)?;
+        finite1(
+            "latitude",
+            "Coriolis parameter",
+            self.inner.coriolis_parameter(latitude)?,
+        )
     }
 
     /// Jacobi's integral ½ |v|² + g z − ½ |ω × r|² (J/kg) of an ENU `state` `[x, y, z, vx, vy,
     /// vz]` at `latitude` (rad): `Earth.jacobi_integral`.
     #[wasm_bindgen(js_name = jacobiIntegral)]
-    pub fn jacobi_integral(&self, latitude: f64, state: &[f64]) -> Out<f64> {
-        let s: ParticleState = state.try_into().map_err(|_| {
+    pub fn jacobi_integral(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] state: Numbers,
+    ) -> Out<f64> {
+        let latitude = number("latitude", &latitude)?;
+        let state = numbers("state", &state)?;
+        let s: ParticleState = state.as_slice().try_into().map_err(|_| {
             Failure::invalid(
                 "state",
                 &format!(
@@ -632,7 +828,11 @@ impl Earth {
                 ),
             )
         })?;
-        finite1("jacobi", self.inner.jacobi_integral(latitude, &s)?)
+        finite1(
+            "latitude, state",
+            "Jacobi integral",
+            self.inner.jacobi_integral(latitude, &s)?,
+        )
     }
 }
 
@@ -700,11 +900,11 @@ mod tests {
         )
         .unwrap();
         let lat = 0.8;
-        let run = fast.foucault(lat, 10.0, 1.0, 0.0, 60.0, 601).unwrap();
+        let run = fast.foucault(lat, 10.0, 1.0, 0.0, 60.0, 601.0).unwrap();
         // The fit agrees with −ω sin λ to the Airy and (ω/ω₀)² corrections (< 1 %).
         assert!((run.precession_rate() / run.expected_rate() - 1.0).abs() < 1e-2);
         assert_eq!(run.sense(), "clockwise");
-        let south = fast.foucault(-lat, 10.0, 1.0, 0.0, 60.0, 601).unwrap();
+        let south = fast.foucault(-lat, 10.0, 1.0, 0.0, 60.0, 601.0).unwrap();
         assert_eq!(south.sense(), "counterclockwise");
         // On a sample: the sample itself; between samples: the continued integration, close to
         // the neighbouring samples and on the sphere |r| = L.
@@ -722,22 +922,22 @@ mod tests {
             e.message
         );
         assert!(fast
-            .foucault(lat, 10.0, 11.0, 0.0, 60.0, 601)
+            .foucault(lat, 10.0, 11.0, 0.0, 60.0, 601.0)
             .unwrap_err()
             .message
             .starts_with("amplitude"));
         assert!(fast
-            .foucault(lat, 10.0, 1.0, 0.0, 0.0, 601)
+            .foucault(lat, 10.0, 1.0, 0.0, 0.0, 601.0)
             .unwrap_err()
             .message
             .starts_with("duration"));
         assert!(fast
-            .foucault(lat, 10.0, 1.0, 0.0, 60.0, 1)
+            .foucault(lat, 10.0, 1.0, 0.0, 60.0, 1.0)
             .unwrap_err()
             .message
             .starts_with("samples"));
         assert!(fast
-            .foucault(2.0, 10.0, 1.0, 0.0, 60.0, 601)
+            .foucault(2.0, 10.0, 1.0, 0.0, 60.0, 601.0)
             .unwrap_err()
             .message
             .starts_with("latitude"));
@@ -747,13 +947,13 @@ mod tests {
     fn low_turns_with_the_hemisphere_and_closes_its_energy_budget() {
         let e = earth();
         let north = e
-            .flow_into_low(0.8, 5e5, 8, 1e-3, 1e-5, 172800.0, 481)
+            .flow_into_low(0.8, 5e5, 8.0, 1e-3, 1e-5, 172800.0, 481.0)
             .unwrap();
         let south = e
-            .flow_into_low(-0.8, 5e5, 8, 1e-3, 1e-5, 172800.0, 481)
+            .flow_into_low(-0.8, 5e5, 8.0, 1e-3, 1e-5, 172800.0, 481.0)
             .unwrap();
         let equator = e
-            .flow_into_low(0.0, 5e5, 8, 1e-3, 1e-5, 172800.0, 481)
+            .flow_into_low(0.0, 5e5, 8.0, 1e-3, 1e-5, 172800.0, 481.0)
             .unwrap();
         assert_eq!(north.sense(), "counterclockwise");
         assert_eq!(south.sense(), "clockwise");
@@ -769,26 +969,26 @@ mod tests {
                 );
             }
         }
-        assert_eq!(north.track(0).unwrap().len(), 2 * 481);
-        assert!(north.track(8).unwrap_err().message.starts_with("index"));
+        assert_eq!(north.track(0.0).unwrap().len(), 2 * 481);
+        assert!(north.track(8.0).unwrap_err().message.starts_with("index"));
         assert!(north.at(-1.0).unwrap_err().message.starts_with("t: "));
         assert!(e
-            .flow_into_low(0.8, 5e5, 8, -1.0, 1e-5, 1e5, 11)
+            .flow_into_low(0.8, 5e5, 8.0, -1.0, 1e-5, 1e5, 11.0)
             .unwrap_err()
             .message
             .starts_with("pull"));
         assert!(e
-            .flow_into_low(0.8, 5e5, 8, 1e-3, -1.0, 1e5, 11)
+            .flow_into_low(0.8, 5e5, 8.0, 1e-3, -1.0, 1e5, 11.0)
             .unwrap_err()
             .message
             .starts_with("friction"));
         assert!(e
-            .flow_into_low(0.8, 0.0, 8, 1e-3, 0.0, 1e5, 11)
+            .flow_into_low(0.8, 0.0, 8.0, 1e-3, 0.0, 1e5, 11.0)
             .unwrap_err()
             .message
             .starts_with("radius"));
         assert!(e
-            .flow_into_low(0.8, 5e5, 0, 1e-3, 0.0, 1e5, 11)
+            .flow_into_low(0.8, 5e5, 0.0, 1e-3, 0.0, 1e5, 11.0)
             .unwrap_err()
             .message
             .starts_with("parcels"));
@@ -800,17 +1000,17 @@ mod tests {
         let f = e.coriolis_parameter(0.7).unwrap();
         let period = e.inertial_period(0.7).unwrap();
         let run = e
-            .inertial_oscillation(0.7, &[10.0, 0.0], 2.0 * period, 401)
+            .inertial_oscillation(0.7, vec![10.0, 0.0], 2.0 * period, 401.0)
             .unwrap();
         assert!((run.turning_rate() / -f - 1.0).abs() < 1e-9);
         assert_eq!(e.inertial_period(0.0).unwrap(), f64::INFINITY);
         assert!(e
-            .inertial_oscillation(0.7, &[10.0], 1.0, 11)
+            .inertial_oscillation(0.7, vec![10.0], 1.0, 11.0)
             .unwrap_err()
             .message
             .starts_with("velocity"));
         assert!(e
-            .jacobi_integral(0.7, &[0.0; 5])
+            .jacobi_integral(0.7, vec![0.0; 5])
             .unwrap_err()
             .message
             .starts_with("state"));

@@ -2,7 +2,8 @@
 //! fixed-frame acceleration split into the unit's terms (2.1–2.28); the steady motion of a frame
 //! (`MovingFrame.at`), and a particle on a spring (free when k = 0) integrated in a turning frame.
 
-use crate::convert::{finite, finite1, mat_out, vec3, vec_out, Out};
+use crate::args::{number, numbers_each, vector, Number, Numbers};
+use crate::convert::{finite, finite1, mat_out, renamed_all, vec_out, Out};
 use poinsot::frames as fr;
 use poinsot::integrate::Options;
 use wasm_bindgen::prelude::wasm_bindgen;
@@ -15,6 +16,10 @@ pub const PARTICLE_RTOL: f64 = 1e-10;
 pub const PARTICLE_ATOL: f64 = 1e-12;
 /// Step limit of `simulateParticle` (the Python default).
 pub const PARTICLE_MAX_STEPS: usize = 1_000_000;
+
+/// Bytes per time of `simulateParticle`: the copy of the time (8), the core's time and state
+/// (8 + 48) and the flat output (48).
+const BYTES_PER_TIME: usize = 8 + 8 + 48 + 48;
 
 /// The state of a moving frame at one instant (vectors in fixed-frame components, axes
 /// momentarily aligned with the fixed axes), as `poinsot.MovingFrame` in Python.
@@ -135,9 +140,17 @@ impl RelativeMotion {
     }
 }
 
-/// Flattens vectors into one list, refusing a non-finite value (naming `quantity`).
-fn pack(quantity: &str, parts: &[poinsot::Vec3]) -> Out<Vec<f64>> {
+/// A particle's `position` and `velocity` must be finite (the errors name them).
+fn check_state(r: &poinsot::Vec3, v: &poinsot::Vec3) -> Out<()> {
+    poinsot::error::check_finite("position", r.as_slice())?;
+    poinsot::error::check_finite("velocity", v.as_slice())?;
+    Ok(())
+}
+
+/// Flattens vectors into one list, refusing a non-finite value (see [`finite`]).
+fn pack(arguments: &str, quantity: &str, parts: &[poinsot::Vec3]) -> Out<Vec<f64>> {
     finite(
+        arguments,
         quantity,
         parts.iter().flat_map(|x| [x.x, x.y, x.z]).collect(),
     )
@@ -149,18 +162,18 @@ impl MovingFrame {
     /// (rad/s) and angular acceleration (rad/s²), each 3 numbers in fixed components.
     #[wasm_bindgen(constructor)]
     pub fn new(
-        origin: &[f64],
-        velocity: &[f64],
-        acceleration: &[f64],
-        angular_velocity: &[f64],
-        angular_acceleration: &[f64],
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] origin: Numbers,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] velocity: Numbers,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] acceleration: Numbers,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] angular_velocity: Numbers,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] angular_acceleration: Numbers,
     ) -> Out<MovingFrame> {
         let inner = fr::MovingFrame::new(
-            vec3("origin", origin)?,
-            vec3("velocity", velocity)?,
-            vec3("acceleration", acceleration)?,
-            vec3("angular_velocity", angular_velocity)?,
-            vec3("angular_acceleration", angular_acceleration)?,
+            vector("origin", &origin)?,
+            vector("velocity", &velocity)?,
+            vector("acceleration", &acceleration)?,
+            vector("angular_velocity", &angular_velocity)?,
+            vector("angular_acceleration", &angular_acceleration)?,
         )?;
         Ok(MovingFrame { inner })
     }
@@ -170,14 +183,14 @@ impl MovingFrame {
     #[wasm_bindgen(js_name = toFixed)]
     pub fn to_fixed(
         &self,
-        position: &[f64],
-        velocity: &[f64],
-        acceleration: &[f64],
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] position: Numbers,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] velocity: Numbers,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] acceleration: Numbers,
     ) -> Out<FixedMotion> {
         let (r, v, a) = (
-            vec3("position", position)?,
-            vec3("velocity", velocity)?,
-            vec3("acceleration", acceleration)?,
+            vector("position", &position)?,
+            vector("velocity", &velocity)?,
+            vector("acceleration", &acceleration)?,
         );
         for (name, x) in [("position", &r), ("velocity", &v), ("acceleration", &a)] {
             poinsot::error::check_finite(name, x.as_slice())?;
@@ -198,7 +211,7 @@ impl MovingFrame {
         .flat_map(|x| [x.x, x.y, x.z])
         .collect();
         Ok(FixedMotion {
-            values: finite("acceleration", values)?,
+            values: finite("position, velocity, acceleration", "acceleration", values)?,
         })
     }
 
@@ -207,14 +220,14 @@ impl MovingFrame {
     #[wasm_bindgen(js_name = toMoving)]
     pub fn to_moving(
         &self,
-        position: &[f64],
-        velocity: &[f64],
-        acceleration: &[f64],
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] position: Numbers,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] velocity: Numbers,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] acceleration: Numbers,
     ) -> Out<RelativeMotion> {
         let (r, v, a) = (
-            vec3("position", position)?,
-            vec3("velocity", velocity)?,
-            vec3("acceleration", acceleration)?,
+            vector("position", &position)?,
+            vector("velocity", &velocity)?,
+            vector("acceleration", &acceleration)?,
         );
         for (name, x) in [("position", &r), ("velocity", &v), ("acceleration", &a)] {
             poinsot::error::check_finite(name, x.as_slice())?;
@@ -232,18 +245,30 @@ impl MovingFrame {
             t.euler,
         ];
         Ok(RelativeMotion {
-            values: pack("acceleration", &parts)?,
+            values: pack("position, velocity, acceleration", "acceleration", &parts)?,
         })
     }
 
     /// The state at time `t` (s) of the steady motion that starts from this state at t = 0:
     /// origin at constant acceleration, axes turning about the fixed axis of ω with constant ω̇
     /// (which must be parallel to ω), as `MovingFrame.at` in Python.
-    pub fn at(&self, t: f64) -> Out<MovingFrame> {
-        poinsot::error::check_finite("t", &[t])?;
+    pub fn at(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
+    ) -> Out<MovingFrame> {
+        let t = crate::free::time(&t)?;
         let motion = fr::SteadyMotion::new(self.inner)?;
         let inner = fr::FrameMotion::at(&motion, t);
-        finite("attitude", mat_out(&inner.attitude))?;
+        // Every number the getters of the frame at t return (origin, ω, ω̇, attitude).
+        let mut values = mat_out(&inner.attitude);
+        for v in [
+            &inner.origin,
+            &inner.angular_velocity,
+            &inner.angular_acceleration,
+        ] {
+            values.extend(vec_out(v));
+        }
+        finite("t", "state of the frame", values)?;
         Ok(MovingFrame { inner })
     }
 
@@ -283,31 +308,53 @@ pub struct SpringParticle {
 impl SpringParticle {
     /// A particle of `mass` (kg, > 0) on a spring of `stiffness` (N/m, ≥ 0).
     #[wasm_bindgen(constructor)]
-    pub fn new(mass: f64, stiffness: f64) -> Out<SpringParticle> {
+    pub fn new(
+        #[wasm_bindgen(unchecked_param_type = "number")] mass: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] stiffness: Number,
+    ) -> Out<SpringParticle> {
+        let (mass, stiffness) = (number("mass", &mass)?, number("stiffness", &stiffness)?);
         Ok(SpringParticle {
             inner: fr::SpringParticle::new(mass, stiffness)?,
         })
     }
 
     /// The spring force −k r (N) at `position` (m), in the components of `position`.
-    pub fn force(&self, position: &[f64]) -> Out<Vec<f64>> {
-        let r = vec3("position", position)?;
+    pub fn force(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] position: Numbers,
+    ) -> Out<Vec<f64>> {
+        let r = vector("position", &position)?;
         poinsot::error::check_finite("position", r.as_slice())?;
-        Ok(vec_out(&self.inner.force(&r)))
+        finite("position", "force", vec_out(&self.inner.force(&r)))
     }
 
     /// The acceleration F / m = −(k / m) r (m/s²) at `position` (m): the fixed-frame r̈'.
-    pub fn acceleration(&self, position: &[f64]) -> Out<Vec<f64>> {
-        let r = vec3("position", position)?;
+    pub fn acceleration(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] position: Numbers,
+    ) -> Out<Vec<f64>> {
+        let r = vector("position", &position)?;
         poinsot::error::check_finite("position", r.as_slice())?;
-        Ok(vec_out(&self.inner.acceleration(&r)))
+        finite(
+            "position",
+            "acceleration",
+            vec_out(&self.inner.acceleration(&r)),
+        )
     }
 
     /// The fixed-frame energy ½ m |ṙ'|² + ½ k |r'|² (J) from the fixed-frame `position` (m)
     /// and `velocity` (m/s).
-    pub fn energy(&self, position: &[f64], velocity: &[f64]) -> Out<f64> {
-        let (r, v) = (vec3("position", position)?, vec3("velocity", velocity)?);
-        finite1("energy", self.inner.energy(&r, &v))
+    pub fn energy(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] position: Numbers,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] velocity: Numbers,
+    ) -> Out<f64> {
+        let (r, v) = (
+            vector("position", &position)?,
+            vector("velocity", &velocity)?,
+        );
+        check_state(&r, &v)?;
+        finite1("position, velocity", "energy", self.inner.energy(&r, &v))
     }
 
     /// The Jacobi integral ½ m |ṙ|² + ½ k |r|² − ½ m |ω × r|² (J) in the turning `frame`, from the
@@ -316,12 +363,17 @@ impl SpringParticle {
     pub fn jacobi_integral(
         &self,
         frame: &MovingFrame,
-        position: &[f64],
-        velocity: &[f64],
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] position: Numbers,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] velocity: Numbers,
     ) -> Out<f64> {
-        let (r, v) = (vec3("position", position)?, vec3("velocity", velocity)?);
+        let (r, v) = (
+            vector("position", &position)?,
+            vector("velocity", &velocity)?,
+        );
+        check_state(&r, &v)?;
         finite1(
-            "jacobi_integral",
+            "frame, position, velocity",
+            "Jacobi integral",
             self.inner.jacobi_integral(&frame.inner, &r, &v),
         )
     }
@@ -336,16 +388,22 @@ impl SpringParticle {
 #[wasm_bindgen(js_name = simulateParticle)]
 pub fn simulate_particle(
     frame: &MovingFrame,
-    position: &[f64],
-    velocity: &[f64],
-    duration: f64,
-    t_eval: &[f64],
-    mass: f64,
-    stiffness: f64,
+    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] position: Numbers,
+    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] velocity: Numbers,
+    #[wasm_bindgen(unchecked_param_type = "number")] duration: Number,
+    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] t_eval: Numbers,
+    #[wasm_bindgen(unchecked_param_type = "number")] mass: Number,
+    #[wasm_bindgen(unchecked_param_type = "number")] stiffness: Number,
 ) -> Out<Vec<f64>> {
+    let (mass, stiffness) = (number("mass", &mass)?, number("stiffness", &stiffness)?);
     let particle = fr::SpringParticle::new(mass, stiffness)?;
-    let (r0, v0) = (vec3("position", position)?, vec3("velocity", velocity)?);
+    let (r0, v0) = (
+        vector("position", &position)?,
+        vector("velocity", &velocity)?,
+    );
+    let duration = number("duration", &duration)?;
     poinsot::error::check_non_negative("duration", duration)?;
+    let t_eval = numbers_each("t_eval", &t_eval, BYTES_PER_TIME)?;
     let motion = fr::SteadyMotion::new(frame.inner)?;
     let opts = Options {
         rtol: PARTICLE_RTOL,
@@ -354,8 +412,24 @@ pub fn simulate_particle(
         dense: false,
         ..Options::default()
     };
-    let scan = particle.simulate_at(&motion, r0, v0, duration, t_eval, &opts)?;
-    finite("state", scan.y.iter().flatten().copied().collect())
+    let scan = particle
+        .simulate_at(&motion, r0, v0, duration, &t_eval, &opts)
+        .map_err(
+            renamed_all(&[
+                ("times", "t_eval"),
+                ("t_end", "duration"),
+                ("max_steps", "duration"),
+                // An integration that fails (a step size below round-off) is the particle's:
+                // its state, mass and stiffness.
+                ("t", "position, velocity, mass, stiffness"),
+            ])
+            .otherwise("frame, position, velocity, duration, t_eval, mass, stiffness"),
+        )?;
+    finite(
+        "frame, position, velocity, duration, t_eval, mass, stiffness",
+        "state",
+        scan.y.iter().flatten().copied().collect(),
+    )
 }
 
 #[cfg(test)]
@@ -364,10 +438,16 @@ mod tests {
 
     #[test]
     fn terms_sum_to_the_acceleration_and_coriolis_is_two_omega_cross_v() {
-        let f =
-            MovingFrame::new(&[0.0; 3], &[0.0; 3], &[0.0; 3], &[0.0, 0.0, 2.0], &[0.0; 3]).unwrap();
+        let f = MovingFrame::new(
+            vec![0.0; 3],
+            vec![0.0; 3],
+            vec![0.0; 3],
+            vec![0.0, 0.0, 2.0],
+            vec![0.0; 3],
+        )
+        .unwrap();
         let m = f
-            .to_fixed(&[1.0, 0.0, 0.0], &[0.0, 3.0, 0.0], &[0.0; 3])
+            .to_fixed(vec![1.0, 0.0, 0.0], vec![0.0, 3.0, 0.0], vec![0.0; 3])
             .unwrap();
         assert_eq!(m.coriolis(), vec![-12.0, 0.0, 0.0]);
         assert_eq!(m.centripetal(), vec![-4.0, 0.0, 0.0]);
@@ -385,10 +465,16 @@ mod tests {
 
     #[test]
     fn non_finite_particle_state_is_refused() {
-        let f =
-            MovingFrame::new(&[0.0; 3], &[0.0; 3], &[0.0; 3], &[0.0, 0.0, 1.0], &[0.0; 3]).unwrap();
+        let f = MovingFrame::new(
+            vec![0.0; 3],
+            vec![0.0; 3],
+            vec![0.0; 3],
+            vec![0.0, 0.0, 1.0],
+            vec![0.0; 3],
+        )
+        .unwrap();
         assert!(f
-            .to_fixed(&[f64::NAN, 0.0, 0.0], &[0.0; 3], &[0.0; 3])
+            .to_fixed(vec![f64::NAN, 0.0, 0.0], vec![0.0; 3], vec![0.0; 3])
             .unwrap_err()
             .message
             .starts_with("position"));
@@ -396,11 +482,11 @@ mod tests {
 
     fn table(rate: f64, rate_dot: f64) -> MovingFrame {
         MovingFrame::new(
-            &[0.0; 3],
-            &[0.0; 3],
-            &[0.0; 3],
-            &[0.0, 0.0, rate],
-            &[0.0, 0.0, rate_dot],
+            vec![0.0; 3],
+            vec![0.0; 3],
+            vec![0.0; 3],
+            vec![0.0, 0.0, rate],
+            vec![0.0, 0.0, rate_dot],
         )
         .unwrap()
     }
@@ -424,9 +510,9 @@ mod tests {
     fn to_moving_inverts_to_fixed_and_its_terms_are_the_fictitious_ones() {
         let f = table(0.7, 0.4).at(1.3).unwrap();
         let (r, v, a) = ([0.3, -0.2, 0.1], [0.5, 0.25, -0.1], [0.05, 0.0, 0.2]);
-        let fixed = f.to_fixed(&r, &v, &a).unwrap();
+        let fixed = f.to_fixed(r.to_vec(), v.to_vec(), a.to_vec()).unwrap();
         let back = f
-            .to_moving(&fixed.position(), &fixed.velocity(), &fixed.acceleration())
+            .to_moving(fixed.position(), fixed.velocity(), fixed.acceleration())
             .unwrap();
         for (x, y) in back
             .position()
@@ -439,7 +525,7 @@ mod tests {
         }
         // Negative control: with ω = 0 the Coriolis and centrifugal terms vanish.
         let still = table(0.0, 0.0);
-        let m = still.to_moving(&r, &v, &a).unwrap();
+        let m = still.to_moving(r.to_vec(), v.to_vec(), a.to_vec()).unwrap();
         assert_eq!(m.coriolis(), vec![0.0; 3]);
         assert_eq!(m.centrifugal(), vec![0.0; 3]);
     }
@@ -448,14 +534,16 @@ mod tests {
     fn simulated_free_particle_is_straight_in_the_fixed_frame() {
         let f0 = table(1.5, 0.2);
         let (r0, v0) = ([0.8, 0.0, 0.0], [-0.4, 0.3, 0.0]);
-        let rel = f0.to_moving(&r0, &v0, &[0.0; 3]).unwrap();
+        let rel = f0
+            .to_moving(r0.to_vec(), v0.to_vec(), vec![0.0; 3])
+            .unwrap();
         let t = 3.0;
         let y = simulate_particle(
             &f0,
-            &rel.position(),
-            &rel.velocity(),
+            rel.position(),
+            rel.velocity(),
             t,
-            &[0.0, t],
+            vec![0.0, t],
             1.0,
             0.0,
         )
@@ -468,7 +556,7 @@ mod tests {
         let fixed = f0
             .at(t)
             .unwrap()
-            .to_fixed(&y[6..9], &y[9..12], &[0.0; 3])
+            .to_fixed(y[6..9].to_vec(), y[9..12].to_vec(), vec![0.0; 3])
             .unwrap();
         for i in 0..3 {
             // DOP853 at rtol 1e-10 over ~5 rad: ~1e-10 (measured 2e-11).
@@ -479,11 +567,11 @@ mod tests {
     #[test]
     fn bad_arguments_of_the_turning_frame_are_named() {
         let tilted = MovingFrame::new(
-            &[0.0; 3],
-            &[0.0; 3],
-            &[0.0; 3],
-            &[0.0, 0.0, 1.0],
-            &[1.0, 0.0, 0.0],
+            vec![0.0; 3],
+            vec![0.0; 3],
+            vec![0.0; 3],
+            vec![0.0, 0.0, 1.0],
+            vec![1.0, 0.0, 0.0],
         )
         .unwrap();
         assert!(tilted
@@ -497,33 +585,46 @@ mod tests {
             .message
             .starts_with("t:"));
         let f = table(1.0, 0.0);
-        let run = |d: f64, times: &[f64], m: f64, k: f64| {
-            simulate_particle(&f, &[1.0, 0.0, 0.0], &[0.0; 3], d, times, m, k).unwrap_err()
+        let run = |d: f64, times: Vec<f64>, m: f64, k: f64| {
+            simulate_particle(&f, vec![1.0, 0.0, 0.0], vec![0.0; 3], d, times, m, k).unwrap_err()
         };
-        assert!(run(-1.0, &[0.0], 1.0, 0.0).message.starts_with("duration"));
-        assert!(run(1.0, &[2.0], 1.0, 0.0).message.starts_with("times"));
-        assert!(run(1.0, &[1.0], 0.0, 0.0).message.starts_with("mass"));
-        let e = run(1.0, &[1.0], 1.0, -2.0);
+        assert!(run(-1.0, vec![0.0], 1.0, 0.0)
+            .message
+            .starts_with("duration"));
+        assert!(run(1.0, vec![2.0], 1.0, 0.0).message.starts_with("t_eval"));
+        assert!(run(1.0, vec![1.0], 0.0, 0.0).message.starts_with("mass"));
+        let e = run(1.0, vec![1.0], 1.0, -2.0);
         assert!(e.message.starts_with("stiffness") && e.name == "PoinsotError");
         let p = SpringParticle::new(1.0, 2.0).unwrap();
         assert!(p
-            .force(&[1.0, f64::NAN, 0.0])
+            .force(vec![1.0, f64::NAN, 0.0])
             .unwrap_err()
             .message
             .starts_with("position"));
         assert!(p
-            .energy(&[1.0, 0.0], &[0.0; 3])
+            .energy(vec![1.0, 0.0], vec![0.0; 3])
             .unwrap_err()
             .message
             .starts_with("position"));
+        // A NaN in the state names the argument (it used to surface as "energy: the result is
+        // not finite", naming no argument).
         assert!(p
-            .energy(&[f64::NAN, 0.0, 0.0], &[0.0; 3])
+            .energy(vec![f64::NAN, 0.0, 0.0], vec![0.0; 3])
             .unwrap_err()
             .message
-            .starts_with("energy"));
+            .starts_with("position: must be finite"));
+        assert!(p
+            .jacobi_integral(
+                &table(1.0, 0.0),
+                vec![0.0; 3],
+                vec![0.0, f64::INFINITY, 0.0]
+            )
+            .unwrap_err()
+            .message
+            .starts_with("velocity: must be finite"));
         // ½·2·1² + ½·1·(1² − (2·1)²) at ω = 2 ẑ, r = x̂, v = ŷ: 1 + ½(1 − 4) = −0.5.
         let j = p
-            .jacobi_integral(&table(2.0, 0.0), &[1.0, 0.0, 0.0], &[0.0, 1.0, 0.0])
+            .jacobi_integral(&table(2.0, 0.0), vec![1.0, 0.0, 0.0], vec![0.0, 1.0, 0.0])
             .unwrap();
         assert_eq!(j, -0.5);
     }

@@ -2,7 +2,8 @@
 //! 2.77–2.97) and of any rigid body (Jacobi elliptic functions). Body-frame ω, attitude
 //! quaternions scalar-first `[w, x, y, z]` mapping body to space components.
 
-use crate::convert::{array3, finite, quat, vec3, vec_out, Out};
+use crate::args::{number, numbers, triple, vector, Number, Numbers};
+use crate::convert::{finite, quat, vec_out, Out};
 use poinsot::analytic as an;
 use wasm_bindgen::prelude::wasm_bindgen;
 
@@ -18,10 +19,27 @@ impl FreeSymmetricTop {
     /// A symmetric top with transverse moment `i1` and axial moment `i3` (kg·m²) spinning with
     /// body angular velocity `omega0` (rad/s, 3 numbers) at t = 0, attitude the identity.
     #[wasm_bindgen(constructor)]
-    pub fn new(i1: f64, i3: f64, omega0: &[f64]) -> Out<FreeSymmetricTop> {
-        Ok(FreeSymmetricTop {
-            inner: an::FreeSymmetricTop::new(i1, i3, vec3("omega0", omega0)?, None)?,
-        })
+    pub fn new(
+        #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] omega0: Numbers,
+    ) -> Out<FreeSymmetricTop> {
+        let (i1, i3) = (number("i1", &i1)?, number("i3", &i3)?);
+        let omega0 = vector("omega0", &omega0)?;
+        let inner = an::FreeSymmetricTop::new(i1, i3, omega0, None)?;
+        // Every number the getters return must be finite (ω₀ = 1e300 overflows the energy).
+        let mut values = vec![
+            inner.precession_rate(),
+            inner.amplitude(),
+            inner.body_cone_angle(),
+            inner.space_cone_angle(),
+            inner.nutation_angle(),
+            inner.space_precession_rate(),
+            inner.energy(),
+        ];
+        values.extend(vec_out(&inner.angular_momentum()));
+        finite("i1, i3, omega0", "motion", values)?;
+        Ok(FreeSymmetricTop { inner })
     }
     /// The unit's Ω = (I₁ − I₃) ω₃ / I₁ (rad/s, 2.83): the body-frame precession rate of ω.
     #[wasm_bindgen(getter, js_name = precessionRate)]
@@ -69,25 +87,37 @@ impl FreeSymmetricTop {
         self.inner.shape().as_str().to_string()
     }
     /// Body angular velocity (rad/s) at time `t` (s).
-    pub fn omega(&self, t: f64) -> Out<Vec<f64>> {
-        time_ok(t)?;
-        finite("omega", vec_out(&self.inner.omega(t)))
+    pub fn omega(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
+    ) -> Out<Vec<f64>> {
+        let t = time(&t)?;
+        finite("t", "omega", vec_out(&self.inner.omega(t)))
     }
     /// Attitude quaternion `[w, x, y, z]` at time `t` (s).
-    pub fn attitude(&self, t: f64) -> Out<Vec<f64>> {
-        time_ok(t)?;
-        finite("attitude", self.inner.attitude(t).to_vec())
+    pub fn attitude(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
+    ) -> Out<Vec<f64>> {
+        let t = time(&t)?;
+        finite("t", "attitude", self.inner.attitude(t).to_vec())
     }
     /// The symmetry axis in space components at time `t` (s).
     #[wasm_bindgen(js_name = symmetryAxis)]
-    pub fn symmetry_axis(&self, t: f64) -> Out<Vec<f64>> {
-        time_ok(t)?;
-        finite("axis", vec_out(&self.inner.symmetry_axis(t)))
+    pub fn symmetry_axis(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
+    ) -> Out<Vec<f64>> {
+        let t = time(&t)?;
+        finite("t", "axis", vec_out(&self.inner.symmetry_axis(t)))
     }
 }
 
-fn time_ok(t: f64) -> Out<()> {
-    Ok(poinsot::error::check_finite("t", &[t])?)
+/// The time argument `t` (s): a finite number.
+pub(crate) fn time(t: &Number) -> Out<f64> {
+    let t = number("t", t)?;
+    poinsot::error::check_finite("t", &[t])?;
+    Ok(t)
 }
 
 /// The exact torque-free motion of any rigid body (`poinsot.FreeRigidBody` in Python).
@@ -102,15 +132,39 @@ impl FreeRigidBody {
     /// A body of principal `moments` (kg·m², 3 numbers) with body angular velocity `omega0`
     /// (rad/s) and attitude `attitude0` (`[w, x, y, z]`; an empty array means the identity) at t = 0.
     #[wasm_bindgen(constructor)]
-    pub fn new(moments: &[f64], omega0: &[f64], attitude0: &[f64]) -> Out<FreeRigidBody> {
+    pub fn new(
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] moments: Numbers,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] omega0: Numbers,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] attitude0: Numbers,
+    ) -> Out<FreeRigidBody> {
+        let moments = triple("moments", &moments)?;
+        let omega0 = vector("omega0", &omega0)?;
+        let attitude0 = numbers("attitude0", &attitude0)?;
         let q = if attitude0.is_empty() {
             None
         } else {
-            Some(quat("attitude0", attitude0)?)
+            Some(quat("attitude0", &attitude0)?)
         };
-        Ok(FreeRigidBody {
-            inner: an::FreeRigidBody::new(array3("moments", moments)?, vec3("omega0", omega0)?, q)?,
-        })
+        let inner = an::FreeRigidBody::new(moments, omega0, q)?;
+        // Every number the getters return must be finite, but the period and the flip interval,
+        // which are Infinity on the separatrix (never NaN).
+        let mut values = vec![
+            inner.energy(),
+            inner.parameter(),
+            inner.frequency(),
+            inner.invariable_plane_distance(),
+        ];
+        values.extend(vec_out(&inner.angular_momentum()));
+        values.extend(vec_out(&inner.invariable_plane_normal()));
+        values.extend([inner.period(), inner.flip_interval()].iter().map(|x| {
+            if x.is_nan() {
+                *x
+            } else {
+                0.0
+            }
+        }));
+        finite("moments, omega0, attitude0", "motion", values)?;
+        Ok(FreeRigidBody { inner })
     }
     /// Kinetic energy (J), conserved.
     #[wasm_bindgen(getter)]
@@ -133,26 +187,46 @@ impl FreeRigidBody {
         self.inner.regime().as_str().to_string()
     }
     /// Body angular velocity (rad/s) at time `t` (s).
-    pub fn omega(&self, t: f64) -> Out<Vec<f64>> {
-        time_ok(t)?;
-        finite("omega", vec_out(&self.inner.omega(t)))
+    pub fn omega(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
+    ) -> Out<Vec<f64>> {
+        let t = time(&t)?;
+        finite("t", "omega", vec_out(&self.inner.omega(t)))
     }
     /// Attitude quaternion `[w, x, y, z]` at time `t` (s).
-    pub fn attitude(&self, t: f64) -> Out<Vec<f64>> {
-        time_ok(t)?;
-        finite("attitude", self.inner.attitude(t).to_vec())
+    pub fn attitude(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
+    ) -> Out<Vec<f64>> {
+        let t = time(&t)?;
+        finite("t", "attitude", self.inner.attitude(t).to_vec())
     }
     /// Body ω (3 numbers) then attitude (4 numbers) at time `t` (s), in one call.
-    pub fn state(&self, t: f64) -> Out<Vec<f64>> {
-        time_ok(t)?;
+    pub fn state(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
+    ) -> Out<Vec<f64>> {
+        let t = time(&t)?;
         let (w, q) = self.inner.state(t);
-        finite("state", [w.x, w.y, w.z, q[0], q[1], q[2], q[3]].to_vec())
+        finite(
+            "t",
+            "state",
+            [w.x, w.y, w.z, q[0], q[1], q[2], q[3]].to_vec(),
+        )
     }
     /// Angular momentum in body components (kg·m²/s) at time `t` (s).
     #[wasm_bindgen(js_name = angularMomentumBody)]
-    pub fn angular_momentum_body(&self, t: f64) -> Out<Vec<f64>> {
-        time_ok(t)?;
-        finite("L", vec_out(&self.inner.angular_momentum_body(t)))
+    pub fn angular_momentum_body(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
+    ) -> Out<Vec<f64>> {
+        let t = time(&t)?;
+        finite(
+            "t",
+            "angular momentum",
+            vec_out(&self.inner.angular_momentum_body(t)),
+        )
     }
 }
 
@@ -162,7 +236,7 @@ mod tests {
 
     #[test]
     fn symmetric_top_precession_rate_is_the_units_omega() {
-        let top = FreeSymmetricTop::new(1.0, 2.0, &[0.1, 0.0, 3.0]).unwrap();
+        let top = FreeSymmetricTop::new(1.0, 2.0, vec![0.1, 0.0, 3.0]).unwrap();
         // Ω = (I₁ − I₃) ω₃ / I₁ (2.83) = (1 − 2)·3/1.
         assert!((top.precession_rate() + 3.0).abs() < 1e-15);
         assert_eq!(top.shape(), "oblate");
@@ -170,14 +244,16 @@ mod tests {
 
     #[test]
     fn free_body_conserves_energy_through_the_binding() {
-        let b = FreeRigidBody::new(&[1.0, 2.0, 3.0], &[0.3, 1.0, 0.2], &[]).unwrap();
+        let b = FreeRigidBody::new(vec![1.0, 2.0, 3.0], vec![0.3, 1.0, 0.2], vec![]).unwrap();
         let s = b.state(7.3).unwrap();
         let t = 0.5 * (s[0] * s[0] + 2.0 * s[1] * s[1] + 3.0 * s[2] * s[2]);
         assert!((t / b.energy() - 1.0).abs() < 1e-12);
         assert!(b.omega(f64::NAN).unwrap_err().message.starts_with("t"));
-        assert!(FreeRigidBody::new(&[1.0, 2.0, 4.0], &[1.0; 3], &[])
-            .unwrap_err()
-            .message
-            .starts_with("moments"));
+        assert!(
+            FreeRigidBody::new(vec![1.0, 2.0, 4.0], vec![1.0; 3], vec![])
+                .unwrap_err()
+                .message
+                .starts_with("moments")
+        );
     }
 }

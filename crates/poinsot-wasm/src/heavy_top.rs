@@ -4,7 +4,9 @@
 //! Angles in rad, rates in rad/s, times in s. Batches are flat: N times in, N×3 numbers out
 //! (row-major, `[φ₀, θ₀, ψ₀, φ₁, ...]`).
 
-use crate::convert::{finite, finite1, Failure, Out};
+use crate::args::{number, numbers_each, Number, Numbers};
+use crate::convert::{attributed, finite, finite1, Failure, Out};
+use crate::free::time;
 use poinsot::analytic as an;
 use poinsot::rotation::{euler_to_matrix_batch, EulerSequence};
 use wasm_bindgen::prelude::wasm_bindgen;
@@ -52,10 +54,6 @@ impl SteadyPrecession {
     }
 }
 
-fn time_ok(t: f64) -> Out<()> {
-    Ok(poinsot::error::check_finite("t", &[t])?)
-}
-
 /// The state at θ (rad) with the rates θ̇, φ̇, ψ̇ (rad/s), φ = ψ = 0 (the top's constants do not
 /// depend on φ and ψ).
 fn euler_state(theta: f64, theta_dot: f64, phi_dot: f64, psi_dot: f64) -> an::EulerState {
@@ -66,6 +64,40 @@ fn euler_state(theta: f64, theta_dot: f64, phi_dot: f64, psi_dot: f64) -> an::Eu
         psi_dot,
         ..Default::default()
     }
+}
+
+/// The top, once every number its getters return is known to be finite (but the documented
+/// infinities: the third cubic root u₃ when m g l = 0 and the nutation period where θ never
+/// returns, never NaN); otherwise an error naming the `arguments` it was made from.
+fn checked(arguments: &str, inner: an::HeavyTop) -> Out<HeavyTop> {
+    let s = inner.initial_state();
+    let (t1, t2) = inner.turning_points();
+    let (u1, u2, u3) = inner.cubic_roots();
+    let period = inner.nutation_period().unwrap_or(f64::INFINITY);
+    let not_nan = |x: f64| if x.is_nan() { x } else { 0.0 };
+    let values = vec![
+        inner.p_phi(),
+        inner.p_psi(),
+        inner.omega3(),
+        inner.energy(),
+        inner.reduced_energy(),
+        s.phi,
+        s.theta,
+        s.psi,
+        s.phi_dot,
+        s.theta_dot,
+        s.psi_dot,
+        t1,
+        t2,
+        u1,
+        u2,
+        not_nan(u3),
+        not_nan(period),
+        inner.mean_precession_rate(),
+        inner.mean_spin_rate(),
+    ];
+    finite(arguments, "motion", values)?;
+    Ok(HeavyTop { inner })
 }
 
 /// Renames the core's `times` (its batch argument) to the binding's `t`.
@@ -85,52 +117,73 @@ impl HeavyTop {
     /// `mgl`, `theta` (in [0, π]) or the rate.
     #[wasm_bindgen(constructor)]
     pub fn new(
-        i1: f64,
-        i3: f64,
-        mgl: f64,
-        theta: f64,
-        theta_dot: f64,
-        phi_dot: f64,
-        psi_dot: f64,
+        #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] theta: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] theta_dot: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] phi_dot: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] psi_dot: Number,
     ) -> Out<HeavyTop> {
+        let i1 = number("i1", &i1)?;
+        let i3 = number("i3", &i3)?;
+        let mgl = number("mgl", &mgl)?;
+        let theta = number("theta", &theta)?;
+        let theta_dot = number("theta_dot", &theta_dot)?;
+        let phi_dot = number("phi_dot", &phi_dot)?;
+        let psi_dot = number("psi_dot", &psi_dot)?;
         let state = euler_state(theta, theta_dot, phi_dot, psi_dot);
-        Ok(HeavyTop {
-            inner: an::HeavyTop::new(i1, i3, mgl, state)?,
-        })
+        const ARGUMENTS: &str = "i1, i3, mgl, theta, theta_dot, phi_dot, psi_dot";
+        let inner = an::HeavyTop::new(i1, i3, mgl, state).map_err(attributed(ARGUMENTS))?;
+        checked(ARGUMENTS, inner)
     }
 
     /// The top started at θ = `theta` with θ̇, φ̇ and the spin `omega3` (rad/s) given instead of ψ̇
     /// (ψ̇ = ω₃ − φ̇ cos θ, 2.99; `HeavyTop.from_spin` in Python), φ = ψ = 0.
     #[wasm_bindgen(js_name = fromSpin)]
     pub fn from_spin(
-        i1: f64,
-        i3: f64,
-        mgl: f64,
-        theta: f64,
-        theta_dot: f64,
-        phi_dot: f64,
-        omega3: f64,
+        #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] theta: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] theta_dot: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] phi_dot: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] omega3: Number,
     ) -> Out<HeavyTop> {
-        Ok(HeavyTop {
-            inner: an::HeavyTop::with_spin(
-                i1, i3, mgl, 0.0, theta, 0.0, phi_dot, theta_dot, omega3,
-            )?,
-        })
+        let i1 = number("i1", &i1)?;
+        let i3 = number("i3", &i3)?;
+        let mgl = number("mgl", &mgl)?;
+        let theta = number("theta", &theta)?;
+        let theta_dot = number("theta_dot", &theta_dot)?;
+        let phi_dot = number("phi_dot", &phi_dot)?;
+        let omega3 = number("omega3", &omega3)?;
+        const ARGUMENTS: &str = "i1, i3, mgl, theta, theta_dot, phi_dot, omega3";
+        let inner =
+            an::HeavyTop::with_spin(i1, i3, mgl, 0.0, theta, 0.0, phi_dot, theta_dot, omega3)
+                .map_err(attributed(ARGUMENTS))?;
+        checked(ARGUMENTS, inner)
     }
 
     /// The top with the constants p_φ, p_ψ (kg·m²/s) and E (J); t = 0 at the upper turning point.
     #[wasm_bindgen(js_name = fromConstants)]
     pub fn from_constants(
-        i1: f64,
-        i3: f64,
-        mgl: f64,
-        p_phi: f64,
-        p_psi: f64,
-        energy: f64,
+        #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] p_phi: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] p_psi: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] energy: Number,
     ) -> Out<HeavyTop> {
-        Ok(HeavyTop {
-            inner: an::HeavyTop::from_constants(i1, i3, mgl, p_phi, p_psi, energy)?,
-        })
+        let i1 = number("i1", &i1)?;
+        let i3 = number("i3", &i3)?;
+        let mgl = number("mgl", &mgl)?;
+        let p_phi = number("p_phi", &p_phi)?;
+        let p_psi = number("p_psi", &p_psi)?;
+        let energy = number("energy", &energy)?;
+        const ARGUMENTS: &str = "i1, i3, mgl, p_phi, p_psi, energy";
+        let inner = an::HeavyTop::from_constants(i1, i3, mgl, p_phi, p_psi, energy)
+            .map_err(attributed(ARGUMENTS))?;
+        checked(ARGUMENTS, inner)
     }
 
     /// I₁ (kg·m²).
@@ -222,53 +275,73 @@ impl HeavyTop {
     /// V(θ) (J, 2.110) at each θ of `theta` (rad, in [0, π]); `Infinity` at a pole unless the
     /// numerator vanishes there. Errors name `theta`.
     #[wasm_bindgen(js_name = effectivePotential)]
-    pub fn effective_potential(&self, theta: &[f64]) -> Out<Vec<f64>> {
-        each_theta(theta, "V(theta)", |th| self.inner.effective_potential(th))
+    pub fn effective_potential(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] theta: Numbers,
+    ) -> Out<Vec<f64>> {
+        let theta = numbers_each("theta", &theta, 8 + 8)?;
+        each_theta(&theta, "V(theta)", |th| self.inner.effective_potential(th))
     }
-    /// dV/dθ (N·m, 2.113) at each θ of `theta` (rad). Errors name `theta`.
+    /// dV/dθ (N·m, 2.113) at each θ of `theta` (rad); ±`Infinity` at a pole where V is
+    /// infinite. Errors name `theta`.
     #[wasm_bindgen(js_name = effectivePotentialDerivative)]
-    pub fn effective_potential_derivative(&self, theta: &[f64]) -> Out<Vec<f64>> {
-        each_theta(theta, "dV/dtheta", |th| self.inner.effective_potential_derivative(th))
+    pub fn effective_potential_derivative(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] theta: Numbers,
+    ) -> Out<Vec<f64>> {
+        let theta = numbers_each("theta", &theta, 8 + 8)?;
+        each_theta(&theta, "dV/dtheta", |th| {
+            self.inner.effective_potential_derivative(th)
+        })
     }
 
     /// The exact Euler angles at the times `t` (s): N×3 numbers `[φ, θ, ψ]` per time (rad).
     #[wasm_bindgen(js_name = eulerAngles)]
-    pub fn euler_angles(&self, t: &[f64]) -> Out<Vec<f64>> {
-        let mut out = vec![0.0; 3 * t.len()];
-        self.inner
-            .euler_angles_into(t, &mut out)
-            .map_err(times_as_t)?;
-        finite("euler_angles", out)
+    pub fn euler_angles(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] t: Numbers,
+    ) -> Out<Vec<f64>> {
+        self.angles_at(&numbers_each("t", &t, 8 + 24)?)
     }
     /// The Euler-angle rates at the times `t` (s): N×3 numbers `[φ̇, θ̇, ψ̇]` (rad/s).
     #[wasm_bindgen(js_name = eulerRates)]
-    pub fn euler_rates(&self, t: &[f64]) -> Out<Vec<f64>> {
+    pub fn euler_rates(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] t: Numbers,
+    ) -> Out<Vec<f64>> {
+        let t = numbers_each("t", &t, 8 + 24)?;
         let mut out = vec![0.0; 3 * t.len()];
         self.inner
-            .euler_rates_into(t, &mut out)
+            .euler_rates_into(&t, &mut out)
             .map_err(times_as_t)?;
-        finite("euler_rates", out)
+        finite("t", "Euler-angle rates", out)
     }
     /// Angles and rates at one time `t` (s): `[φ, θ, ψ, φ̇, θ̇, ψ̇]`.
-    pub fn state(&self, t: f64) -> Out<Vec<f64>> {
-        time_ok(t)?;
+    pub fn state(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
+    ) -> Out<Vec<f64>> {
+        let t = time(&t)?;
         let a = self.inner.euler_angles(t);
         let r = self.inner.euler_rates(t);
-        finite("state", vec![a[0], a[1], a[2], r[0], r[1], r[2]])
+        finite("t", "state", vec![a[0], a[1], a[2], r[0], r[1], r[2]])
     }
     /// The attitudes R(t) = R_z(φ) R_x(θ) R_z(ψ) at the times `t`: N×9 numbers (row-major, body
     /// to space components).
-    pub fn attitude(&self, t: &[f64]) -> Out<Vec<f64>> {
-        let angles = self.euler_angles(t)?;
-        let mut out = vec![0.0; 9 * t.len()];
-        euler_to_matrix_batch(EulerSequence::new("zxz", true)?, &angles, &mut out)?;
-        finite("attitude", out)
+    pub fn attitude(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] t: Numbers,
+    ) -> Out<Vec<f64>> {
+        self.attitudes_at(&numbers_each("t", &t, BYTES_PER_ATTITUDE)?)
     }
     /// The symmetry axis (body axis 3, a unit vector in space components) at the times `t`: N×3
     /// numbers — the points that trace waves, loops or cusps on the unit sphere.
     #[wasm_bindgen(js_name = symmetryAxis)]
-    pub fn symmetry_axis(&self, t: &[f64]) -> Out<Vec<f64>> {
-        let mats = self.attitude(t)?;
+    pub fn symmetry_axis(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] t: Numbers,
+    ) -> Out<Vec<f64>> {
+        let mats = self.attitudes_at(&numbers_each("t", &t, BYTES_PER_ATTITUDE + 24)?)?;
         Ok(mats
             .chunks_exact(9)
             .flat_map(|r| [r[2], r[5], r[8]])
@@ -279,54 +352,138 @@ impl HeavyTop {
     /// Errors name `omega3` below the minimum spin 2.119 (the message gives it).
     #[wasm_bindgen(js_name = steadyPrecession)]
     pub fn steady_precession(
-        i1: f64,
-        i3: f64,
-        mgl: f64,
-        theta0: f64,
-        omega3: f64,
+        #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] theta0: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] omega3: Number,
     ) -> Out<SteadyPrecession> {
-        Ok(SteadyPrecession {
-            inner: an::steady_precession(i1, i3, mgl, theta0, omega3)?,
-        })
+        let i1 = number("i1", &i1)?;
+        let i3 = number("i3", &i3)?;
+        let mgl = number("mgl", &mgl)?;
+        let theta0 = number("theta0", &theta0)?;
+        let omega3 = number("omega3", &omega3)?;
+        let inner = an::steady_precession(i1, i3, mgl, theta0, omega3)?;
+        // All finite but the fast rate, Infinity at θ₀ = π/2 (never NaN).
+        let fast = if inner.fast.is_nan() { f64::NAN } else { 0.0 };
+        finite(
+            "i1, i3, mgl, theta0, omega3",
+            "steady precession",
+            vec![
+                inner.slow,
+                inner.slow_approx,
+                inner.fast_approx,
+                inner.min_spin,
+                fast,
+            ],
+        )?;
+        Ok(SteadyPrecession { inner })
     }
     /// The minimum spin for steady precession at `theta0` (rad/s, 2.119).
     #[wasm_bindgen(js_name = minSpin)]
-    pub fn min_spin(i1: f64, i3: f64, mgl: f64, theta0: f64) -> Out<f64> {
-        finite1("min_spin", an::min_spin(i1, i3, mgl, theta0)?)
+    pub fn min_spin(
+        #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] theta0: Number,
+    ) -> Out<f64> {
+        let i1 = number("i1", &i1)?;
+        let i3 = number("i3", &i3)?;
+        let mgl = number("mgl", &mgl)?;
+        let theta0 = number("theta0", &theta0)?;
+        finite1(
+            "i1, i3, mgl, theta0",
+            "minimum spin",
+            an::min_spin(i1, i3, mgl, theta0)?,
+        )
     }
     /// The spin above which an upright top sleeps stably, 2√(m g l I₁)/I₃ (rad/s).
     #[wasm_bindgen(js_name = sleepingThreshold)]
-    pub fn sleeping_threshold(i1: f64, i3: f64, mgl: f64) -> Out<f64> {
-        finite1("sleeping_threshold", an::sleeping_threshold(i1, i3, mgl)?)
+    pub fn sleeping_threshold(
+        #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
+    ) -> Out<f64> {
+        let i1 = number("i1", &i1)?;
+        let i3 = number("i3", &i3)?;
+        let mgl = number("mgl", &mgl)?;
+        finite1(
+            "i1, i3, mgl",
+            "sleeping threshold",
+            an::sleeping_threshold(i1, i3, mgl)?,
+        )
     }
     /// The Lagrangian 2.102 (J) at one state (rad, rad/s).
     pub fn lagrangian(
-        i1: f64,
-        i3: f64,
-        mgl: f64,
-        theta: f64,
-        theta_dot: f64,
-        phi_dot: f64,
-        psi_dot: f64,
+        #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] theta: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] theta_dot: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] phi_dot: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] psi_dot: Number,
     ) -> Out<f64> {
+        let i1 = number("i1", &i1)?;
+        let i3 = number("i3", &i3)?;
+        let mgl = number("mgl", &mgl)?;
+        let theta = number("theta", &theta)?;
+        let theta_dot = number("theta_dot", &theta_dot)?;
+        let phi_dot = number("phi_dot", &phi_dot)?;
+        let psi_dot = number("psi_dot", &psi_dot)?;
         let s = euler_state(theta, theta_dot, phi_dot, psi_dot);
-        finite1("lagrangian", an::lagrangian(i1, i3, mgl, &s)?)
+        finite1(
+            "i1, i3, mgl, theta, theta_dot, phi_dot, psi_dot",
+            "lagrangian",
+            an::lagrangian(i1, i3, mgl, &s)?,
+        )
     }
     /// `[p_φ, p_ψ, E]` of one state (2.103–2.105; `HeavyTop.constants_of_state` in Python): at
     /// the exact state at t they equal the constants to round-off (their drift).
     #[wasm_bindgen(js_name = constantsOfState)]
     pub fn constants_of_state(
-        i1: f64,
-        i3: f64,
-        mgl: f64,
-        theta: f64,
-        theta_dot: f64,
-        phi_dot: f64,
-        psi_dot: f64,
+        #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] theta: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] theta_dot: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] phi_dot: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] psi_dot: Number,
     ) -> Out<Vec<f64>> {
+        let i1 = number("i1", &i1)?;
+        let i3 = number("i3", &i3)?;
+        let mgl = number("mgl", &mgl)?;
+        let theta = number("theta", &theta)?;
+        let theta_dot = number("theta_dot", &theta_dot)?;
+        let phi_dot = number("phi_dot", &phi_dot)?;
+        let psi_dot = number("psi_dot", &psi_dot)?;
         let s = euler_state(theta, theta_dot, phi_dot, psi_dot);
         let c = an::constants_of_state(i1, i3, mgl, &s)?;
-        finite("constants", vec![c.p_phi, c.p_psi, c.energy])
+        finite(
+            "i1, i3, mgl, theta, theta_dot, phi_dot, psi_dot",
+            "constants of the motion",
+            vec![c.p_phi, c.p_psi, c.energy],
+        )
+    }
+}
+
+/// Bytes per time of `attitude`: the copy of the time (8), the angles (24) and the matrix (72).
+const BYTES_PER_ATTITUDE: usize = 8 + 24 + 72;
+
+impl HeavyTop {
+    /// The Euler angles at the times `t` (N×3).
+    fn angles_at(&self, t: &[f64]) -> Out<Vec<f64>> {
+        let mut out = vec![0.0; 3 * t.len()];
+        self.inner
+            .euler_angles_into(t, &mut out)
+            .map_err(times_as_t)?;
+        finite("t", "Euler angles", out)
+    }
+    /// The attitude matrices at the times `t` (N×9, row-major).
+    fn attitudes_at(&self, t: &[f64]) -> Out<Vec<f64>> {
+        let angles = self.angles_at(t)?;
+        let mut out = vec![0.0; 9 * t.len()];
+        euler_to_matrix_batch(EulerSequence::new("zxz", true)?, &angles, &mut out)?;
+        finite("t", "attitude", out)
     }
 }
 
@@ -342,7 +499,10 @@ fn each_theta(
         .map(|&th| {
             let v = f(th)?;
             if v.is_nan() {
-                return Err(Failure::invalid("theta", &format!("{what} is not a number")));
+                return Err(Failure::invalid(
+                    "theta",
+                    &format!("{what} is not a number"),
+                ));
             }
             Ok(v)
         })
@@ -363,8 +523,8 @@ mod tests {
         let core = an::HeavyTop::with_spin(1.0, 0.5, 1.5, 0.0, 0.7, 0.0, 0.0, 0.0, 8.0).unwrap();
         assert_eq!(top.energy(), core.energy());
         let ts = [0.0, 0.4, 1.3];
-        let a = top.euler_angles(&ts).unwrap();
-        let r = top.euler_rates(&ts).unwrap();
+        let a = top.euler_angles(ts.to_vec()).unwrap();
+        let r = top.euler_rates(ts.to_vec()).unwrap();
         for (k, &t) in ts.iter().enumerate() {
             assert_eq!(&a[3 * k..3 * k + 3], &core.euler_angles(t)[..]);
             let s = top.state(t).unwrap();
@@ -378,7 +538,7 @@ mod tests {
             assert!(s[1] >= t1 - ROUND_OFF && s[1] <= t2 + ROUND_OFF);
         }
         // The symmetry axis is the third column of the zxz matrix: (sinθ sinφ, −sinθ cosφ, cosθ).
-        let axis = top.symmetry_axis(&ts).unwrap();
+        let axis = top.symmetry_axis(ts.to_vec()).unwrap();
         for k in 0..ts.len() {
             let (ph, th) = (a[3 * k], a[3 * k + 1]);
             let want = [th.sin() * ph.sin(), -th.sin() * ph.cos(), th.cos()];
@@ -387,7 +547,7 @@ mod tests {
             }
         }
         let tp = top.turning_points();
-        let v = top.effective_potential(&tp).unwrap();
+        let v = top.effective_potential(tp.clone()).unwrap();
         for x in v {
             assert!((x - top.reduced_energy()).abs() < ROUND_OFF * (1.0 + x.abs()));
         }
@@ -407,7 +567,7 @@ mod tests {
         );
         let top = HeavyTop::new(1.0, 0.5, 1.0, 1.0, 0.0, 0.0, 6.0).unwrap();
         assert!(top
-            .euler_angles(&[0.0, f64::NAN])
+            .euler_angles(vec![0.0, f64::NAN])
             .unwrap_err()
             .message
             .starts_with("t:"));
@@ -417,7 +577,7 @@ mod tests {
             .message
             .starts_with("t:"));
         assert!(top
-            .effective_potential(&[-0.1])
+            .effective_potential(vec![-0.1])
             .unwrap_err()
             .message
             .starts_with("theta"));

@@ -2,6 +2,7 @@
 //! centre of mass except the cone, apex at the origin), inertia tensor, principal moments and
 //! axes, kind of top, L and T (the unit's 2.43–2.66); closed triangle meshes (`fromMesh`).
 
+use crate::args::{number, numbers, Number, Numbers};
 use crate::convert::{array3, finite, finite1, mat3, mat_out, vec3, vec_out, Failure, Out};
 use poinsot::inertia::{self as inr, MassProperties, DEFAULT_KIND_RTOL};
 use wasm_bindgen::prelude::wasm_bindgen;
@@ -13,8 +14,20 @@ pub struct RigidBody {
     inner: MassProperties,
 }
 
-fn wrap(r: poinsot::Result<MassProperties>) -> Out<RigidBody> {
-    Ok(RigidBody { inner: r? })
+/// The body, once every number its getters return is known to be finite (mass, centre of mass,
+/// inertia, principal moments and axes, triangle margins); otherwise an error naming the
+/// `arguments` it was made from (a mass of 1e308 kg gives an infinite inertia).
+fn wrap(arguments: &str, r: poinsot::Result<MassProperties>) -> Out<RigidBody> {
+    let inner = r?;
+    let p = inner.principal(DEFAULT_KIND_RTOL);
+    let mut values = vec![inner.mass()];
+    values.extend(vec_out(&inner.center_of_mass()));
+    values.extend(mat_out(&inner.inertia()));
+    values.extend(p.moments);
+    values.extend(mat_out(&p.axes));
+    values.extend(p.triangle_margins());
+    finite(arguments, "mass properties", values)?;
+    Ok(RigidBody { inner })
 }
 
 #[wasm_bindgen]
@@ -22,55 +35,123 @@ impl RigidBody {
     /// A body of `mass` (kg) with inertia tensor `inertia` (kg·m², 9 numbers row-major, about the
     /// centre of mass, body axes) and centre of mass `center_of_mass` (m).
     #[wasm_bindgen(js_name = fromInertia)]
-    pub fn from_inertia(mass: f64, inertia: &[f64], center_of_mass: &[f64]) -> Out<RigidBody> {
-        wrap(MassProperties::new(
-            mass,
-            vec3("center_of_mass", center_of_mass)?,
-            mat3("inertia", inertia)?,
-        ))
+    pub fn from_inertia(
+        #[wasm_bindgen(unchecked_param_type = "number")] mass: Number,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] inertia: Numbers,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] center_of_mass: Numbers,
+    ) -> Out<RigidBody> {
+        let mass = number("mass", &mass)?;
+        let inertia = numbers("inertia", &inertia)?;
+        let center_of_mass = numbers("center_of_mass", &center_of_mass)?;
+        wrap(
+            "mass, inertia, center_of_mass",
+            MassProperties::new(
+                mass,
+                vec3("center_of_mass", &center_of_mass)?,
+                mat3("inertia", &inertia)?,
+            ),
+        )
     }
     /// A solid sphere of `mass` (kg) and `radius` (m).
     #[wasm_bindgen(js_name = solidSphere)]
-    pub fn solid_sphere(mass: f64, radius: f64) -> Out<RigidBody> {
-        wrap(inr::solid_sphere(mass, radius))
+    pub fn solid_sphere(
+        #[wasm_bindgen(unchecked_param_type = "number")] mass: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] radius: Number,
+    ) -> Out<RigidBody> {
+        let mass = number("mass", &mass)?;
+        let radius = number("radius", &radius)?;
+        wrap("mass, radius", inr::solid_sphere(mass, radius))
     }
     /// A thin spherical shell.
     #[wasm_bindgen(js_name = sphericalShell)]
-    pub fn spherical_shell(mass: f64, radius: f64) -> Out<RigidBody> {
-        wrap(inr::spherical_shell(mass, radius))
+    pub fn spherical_shell(
+        #[wasm_bindgen(unchecked_param_type = "number")] mass: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] radius: Number,
+    ) -> Out<RigidBody> {
+        let mass = number("mass", &mass)?;
+        let radius = number("radius", &radius)?;
+        wrap("mass, radius", inr::spherical_shell(mass, radius))
     }
     /// A solid cylinder, axis along z.
     #[wasm_bindgen(js_name = solidCylinder)]
-    pub fn solid_cylinder(mass: f64, radius: f64, height: f64) -> Out<RigidBody> {
-        wrap(inr::solid_cylinder(mass, radius, height))
+    pub fn solid_cylinder(
+        #[wasm_bindgen(unchecked_param_type = "number")] mass: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] radius: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] height: Number,
+    ) -> Out<RigidBody> {
+        let mass = number("mass", &mass)?;
+        let radius = number("radius", &radius)?;
+        let height = number("height", &height)?;
+        wrap(
+            "mass, radius, height",
+            inr::solid_cylinder(mass, radius, height),
+        )
     }
     /// A solid cone, apex at the origin, axis along +z.
     #[wasm_bindgen(js_name = solidCone)]
-    pub fn solid_cone(mass: f64, radius: f64, height: f64) -> Out<RigidBody> {
-        wrap(inr::solid_cone(mass, radius, height))
+    pub fn solid_cone(
+        #[wasm_bindgen(unchecked_param_type = "number")] mass: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] radius: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] height: Number,
+    ) -> Out<RigidBody> {
+        let mass = number("mass", &mass)?;
+        let radius = number("radius", &radius)?;
+        let height = number("height", &height)?;
+        wrap(
+            "mass, radius, height",
+            inr::solid_cone(mass, radius, height),
+        )
     }
     /// A cuboid of `sides` (m, 3 numbers: x, y, z).
-    pub fn cuboid(mass: f64, sides: &[f64]) -> Out<RigidBody> {
-        wrap(inr::cuboid(mass, array3("sides", sides)?))
+    pub fn cuboid(
+        #[wasm_bindgen(unchecked_param_type = "number")] mass: Number,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] sides: Numbers,
+    ) -> Out<RigidBody> {
+        let mass = number("mass", &mass)?;
+        let sides = numbers("sides", &sides)?;
+        wrap("mass, sides", inr::cuboid(mass, array3("sides", &sides)?))
     }
     /// A solid ellipsoid of `semi_axes` (m, 3 numbers).
-    pub fn ellipsoid(mass: f64, semi_axes: &[f64]) -> Out<RigidBody> {
-        wrap(inr::ellipsoid(mass, array3("semi_axes", semi_axes)?))
+    pub fn ellipsoid(
+        #[wasm_bindgen(unchecked_param_type = "number")] mass: Number,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] semi_axes: Numbers,
+    ) -> Out<RigidBody> {
+        let mass = number("mass", &mass)?;
+        let semi_axes = numbers("semi_axes", &semi_axes)?;
+        wrap(
+            "mass, semi_axes",
+            inr::ellipsoid(mass, array3("semi_axes", &semi_axes)?),
+        )
     }
     /// A thin rod of `length` (m) along z.
     #[wasm_bindgen(js_name = thinRod)]
-    pub fn thin_rod(mass: f64, length: f64) -> Out<RigidBody> {
-        wrap(inr::thin_rod(mass, length))
+    pub fn thin_rod(
+        #[wasm_bindgen(unchecked_param_type = "number")] mass: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] length: Number,
+    ) -> Out<RigidBody> {
+        let mass = number("mass", &mass)?;
+        let length = number("length", &length)?;
+        wrap("mass, length", inr::thin_rod(mass, length))
     }
     /// A thin disk in the xy-plane.
     #[wasm_bindgen(js_name = thinDisk)]
-    pub fn thin_disk(mass: f64, radius: f64) -> Out<RigidBody> {
-        wrap(inr::thin_disk(mass, radius))
+    pub fn thin_disk(
+        #[wasm_bindgen(unchecked_param_type = "number")] mass: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] radius: Number,
+    ) -> Out<RigidBody> {
+        let mass = number("mass", &mass)?;
+        let radius = number("radius", &radius)?;
+        wrap("mass, radius", inr::thin_disk(mass, radius))
     }
     /// A thin ring in the xy-plane.
     #[wasm_bindgen(js_name = thinRing)]
-    pub fn thin_ring(mass: f64, radius: f64) -> Out<RigidBody> {
-        wrap(inr::thin_ring(mass, radius))
+    pub fn thin_ring(
+        #[wasm_bindgen(unchecked_param_type = "number")] mass: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] radius: Number,
+    ) -> Out<RigidBody> {
+        let mass = number("mass", &mass)?;
+        let radius = number("radius", &radius)?;
+        wrap("mass, radius", inr::thin_ring(mass, radius))
     }
 
     /// The solid bounded by a closed triangle mesh of uniform `density` (kg/m³), by the core's
@@ -84,9 +165,19 @@ impl RigidBody {
     /// non-manifold, inconsistently oriented, inside out, zero volume). Vertices are used as
     /// given: merge the per-face copies of a triangle soup (an STL file) first.
     #[wasm_bindgen(js_name = fromMesh)]
-    pub fn from_mesh(vertices: &[f64], faces: &[f64], density: f64) -> Out<RigidBody> {
-        let indices = face_indices(faces)?;
-        wrap(inr::mesh_mass_properties(vertices, &indices, density))
+    pub fn from_mesh(
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] vertices: Numbers,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] faces: Numbers,
+        #[wasm_bindgen(unchecked_param_type = "number")] density: Number,
+    ) -> Out<RigidBody> {
+        let vertices = numbers("vertices", &vertices)?;
+        let faces = numbers("faces", &faces)?;
+        let density = number("density", &density)?;
+        let indices = face_indices(&faces)?;
+        wrap(
+            "vertices, faces, density",
+            inr::mesh_mass_properties(&vertices, &indices, density),
+        )
     }
 
     /// Mass (kg).
@@ -130,44 +221,75 @@ impl RigidBody {
     }
     /// The same body moved by `offset` (m, 3 numbers): the centre of mass moves, the inertia
     /// about it does not change (`RigidBody.translated` in Python).
-    pub fn translated(&self, offset: &[f64]) -> Out<RigidBody> {
-        wrap(self.inner.translated(&vec3("offset", offset)?))
+    pub fn translated(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] offset: Numbers,
+    ) -> Out<RigidBody> {
+        let offset = numbers("offset", &offset)?;
+        wrap("offset", self.inner.translated(&vec3("offset", &offset)?))
     }
     /// The same body rotated actively by `rotation` (9 numbers row-major, a proper rotation)
     /// about the origin of its axes: `com ↦ R com`, `I ↦ R I Rᵀ` (`RigidBody.rotated`).
-    pub fn rotated(&self, rotation: &[f64]) -> Out<RigidBody> {
-        wrap(self.inner.rotated(&mat3("rotation", rotation)?))
+    pub fn rotated(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] rotation: Numbers,
+    ) -> Out<RigidBody> {
+        let rotation = numbers("rotation", &rotation)?;
+        wrap(
+            "rotation",
+            self.inner.rotated(&mat3("rotation", &rotation)?),
+        )
     }
     /// The inertia tensor about `point` (m), 9 numbers row-major (parallel-axis theorem).
     #[wasm_bindgen(js_name = inertiaAbout)]
-    pub fn inertia_about(&self, point: &[f64]) -> Out<Vec<f64>> {
+    pub fn inertia_about(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] point: Numbers,
+    ) -> Out<Vec<f64>> {
+        let point = numbers("point", &point)?;
         finite(
-            "inertia",
-            mat_out(&self.inner.inertia_about(&vec3("point", point)?)?),
+            "point",
+            "inertia tensor",
+            mat_out(&self.inner.inertia_about(&vec3("point", &point)?)?),
         )
     }
     /// L = I·ω (kg·m²/s) about the centre of mass for `omega` (rad/s).
     #[wasm_bindgen(js_name = angularMomentum)]
-    pub fn angular_momentum(&self, omega: &[f64]) -> Out<Vec<f64>> {
+    pub fn angular_momentum(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] omega: Numbers,
+    ) -> Out<Vec<f64>> {
+        let omega = numbers("omega", &omega)?;
         finite(
-            "L",
-            vec_out(&self.inner.angular_momentum(&vec3("omega", omega)?, None)?),
+            "omega",
+            "angular momentum",
+            vec_out(&self.inner.angular_momentum(&vec3("omega", &omega)?, None)?),
         )
     }
     /// T = ½ ω·I·ω (J) about the centre of mass.
     #[wasm_bindgen(js_name = kineticEnergy)]
-    pub fn kinetic_energy(&self, omega: &[f64]) -> Out<f64> {
+    pub fn kinetic_energy(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] omega: Numbers,
+    ) -> Out<f64> {
+        let omega = numbers("omega", &omega)?;
         finite1(
-            "T",
-            self.inner.kinetic_energy(&vec3("omega", omega)?, None)?,
+            "omega",
+            "kinetic energy",
+            self.inner.kinetic_energy(&vec3("omega", &omega)?, None)?,
         )
     }
     /// ω × L (N·m): the torque that keeps the body turning at constant ω.
     #[wasm_bindgen(js_name = holdingTorque)]
-    pub fn holding_torque(&self, omega: &[f64]) -> Out<Vec<f64>> {
+    pub fn holding_torque(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] omega: Numbers,
+    ) -> Out<Vec<f64>> {
+        let omega = numbers("omega", &omega)?;
         finite(
-            "torque",
-            vec_out(&self.inner.holding_torque(&vec3("omega", omega)?, None)?),
+            "omega",
+            "holding torque",
+            vec_out(&self.inner.holding_torque(&vec3("omega", &omega)?, None)?),
         )
     }
 }
@@ -225,8 +347,8 @@ mod tests {
     #[test]
     fn mesh_cube_is_the_cuboid() {
         let (v, f) = cube();
-        let b = RigidBody::from_mesh(&v, &f, 3.0).unwrap();
-        let c = RigidBody::cuboid(3.0, &[1.0, 1.0, 1.0]).unwrap();
+        let b = RigidBody::from_mesh(v.clone(), f.clone(), 3.0).unwrap();
+        let c = RigidBody::cuboid(3.0, vec![1.0, 1.0, 1.0]).unwrap();
         assert!((b.mass() - 3.0).abs() < 1e-15);
         assert!(b.center_of_mass().iter().all(|x| (x - 0.5).abs() < 1e-15));
         for (x, y) in b.inertia().iter().zip(c.inertia()) {
@@ -239,14 +361,14 @@ mod tests {
     fn mesh_shape_and_index_errors_name_the_argument() {
         let (v, f) = cube();
         // Shapes: a coordinate or an index too many.
-        let e = RigidBody::from_mesh(&v[..23], &f, 1.0).unwrap_err();
+        let e = RigidBody::from_mesh(v[..23].to_vec(), f.clone(), 1.0).unwrap_err();
         assert_eq!(e.name, "InvalidMeshError");
         assert!(
             e.message.starts_with("vertices: must have shape (N, 3)"),
             "{}",
             e.message
         );
-        let e = RigidBody::from_mesh(&v, &f[..35], 1.0).unwrap_err();
+        let e = RigidBody::from_mesh(v.clone(), f[..35].to_vec(), 1.0).unwrap_err();
         assert!(
             e.message.starts_with("faces: must have shape (M, 3)"),
             "{}",
@@ -255,7 +377,7 @@ mod tests {
         // Index range: too large and negative, reported by the core with the index.
         let mut big = f.clone();
         big[7] = 8.0;
-        let e = RigidBody::from_mesh(&v, &big, 1.0).unwrap_err();
+        let e = RigidBody::from_mesh(v.clone(), big.clone(), 1.0).unwrap_err();
         assert_eq!(e.name, "InvalidMeshError");
         assert!(
             e.message
@@ -265,13 +387,13 @@ mod tests {
         );
         let mut neg = f.clone();
         neg[0] = -1.0;
-        let e = RigidBody::from_mesh(&v, &neg, 1.0).unwrap_err();
+        let e = RigidBody::from_mesh(v.clone(), neg.clone(), 1.0).unwrap_err();
         assert!(e.message.contains("index -1 at face 0"), "{}", e.message);
         // Not integers.
         for bad in [0.5, f64::NAN, f64::INFINITY, 1e300] {
             let mut g = f.clone();
             g[4] = bad;
-            let e = RigidBody::from_mesh(&v, &g, 1.0).unwrap_err();
+            let e = RigidBody::from_mesh(v.clone(), g.clone(), 1.0).unwrap_err();
             assert_eq!(e.name, "InvalidMeshError");
             assert!(
                 e.message
@@ -282,7 +404,7 @@ mod tests {
             );
         }
         // Density is the core's argument check.
-        let e = RigidBody::from_mesh(&v, &f, -1.0).unwrap_err();
+        let e = RigidBody::from_mesh(v.clone(), f.clone(), -1.0).unwrap_err();
         assert_eq!(e.name, "PoinsotError");
         assert!(e.message.starts_with("density"), "{}", e.message);
     }
@@ -290,7 +412,7 @@ mod tests {
     #[test]
     fn open_mesh_is_refused_as_invalid_mesh() {
         let (v, f) = cube();
-        let e = RigidBody::from_mesh(&v, &f[..33], 1.0).unwrap_err();
+        let e = RigidBody::from_mesh(v.clone(), f[..33].to_vec(), 1.0).unwrap_err();
         assert_eq!(e.name, "InvalidMeshError");
         assert!(e.message.contains("the mesh is open"), "{}", e.message);
         // A triangle soup (every face with its own vertices) looks open until merged.
@@ -299,25 +421,29 @@ mod tests {
             .flat_map(|&i| v[3 * i as usize..3 * i as usize + 3].to_vec())
             .collect();
         let idx: Vec<f64> = (0..36).map(f64::from).collect();
-        let e = RigidBody::from_mesh(&soup, &idx, 1.0).unwrap_err();
+        let e = RigidBody::from_mesh(soup, idx, 1.0).unwrap_err();
         assert!(e.message.contains("open"), "{}", e.message);
     }
 
     #[test]
     fn moved_bodies_keep_their_moments() {
-        let b = RigidBody::cuboid(2.0, &[1.0, 2.0, 3.0]).unwrap();
-        let r = crate::rotation::euler_to_matrix(&[0.3, 1.0, -0.4], "zxz", true).unwrap();
-        let m = b.translated(&[1.0, 2.0, 3.0]).unwrap().rotated(&r).unwrap();
+        let b = RigidBody::cuboid(2.0, vec![1.0, 2.0, 3.0]).unwrap();
+        let r = crate::rotation::euler_to_matrix(vec![0.3, 1.0, -0.4], "zxz".into(), true).unwrap();
+        let m = b
+            .translated(vec![1.0, 2.0, 3.0])
+            .unwrap()
+            .rotated(r)
+            .unwrap();
         for (x, y) in m.principal_moments().iter().zip(b.principal_moments()) {
             assert!((x - y).abs() < 1e-14, "{x} vs {y}");
         }
         assert!(m.center_of_mass().iter().map(|x| x * x).sum::<f64>() > 13.99);
         let e = b
-            .rotated(&[2.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0])
+            .rotated(vec![2.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0])
             .unwrap_err();
         assert_eq!(e.name, "InvalidRotationError");
         assert!(b
-            .translated(&[1.0, 2.0])
+            .translated(vec![1.0, 2.0])
             .unwrap_err()
             .message
             .starts_with("offset"));
@@ -327,7 +453,7 @@ mod tests {
     fn triangle_margins_of_a_disk_and_a_cuboid() {
         let d = RigidBody::thin_disk(2.0, 0.5).unwrap().triangle_margins();
         assert!(d[2].abs() < 1e-16 && d[0] > 0.0, "{d:?}");
-        let c = RigidBody::cuboid(12.0, &[1.0, 2.0, 3.0])
+        let c = RigidBody::cuboid(12.0, vec![1.0, 2.0, 3.0])
             .unwrap()
             .triangle_margins();
         assert_eq!(c, vec![18.0, 8.0, 2.0]);
@@ -335,7 +461,7 @@ mod tests {
 
     #[test]
     fn cuboid_moments_are_the_closed_form_and_kind_is_asymmetric() {
-        let b = RigidBody::cuboid(12.0, &[1.0, 2.0, 3.0]).unwrap();
+        let b = RigidBody::cuboid(12.0, vec![1.0, 2.0, 3.0]).unwrap();
         let m = b.principal_moments();
         // m/12 (b² + c²), ... with m = 12, sides 1, 2, 3; ascending.
         let e = [1.0 + 4.0, 1.0 + 9.0, 4.0 + 9.0];
@@ -353,8 +479,8 @@ mod tests {
     fn unphysical_inertia_is_an_inertia_error() {
         let e = RigidBody::from_inertia(
             1.0,
-            &[1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 5.0],
-            &[0.0; 3],
+            vec![1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 5.0],
+            vec![0.0; 3],
         )
         .unwrap_err();
         assert_eq!(e.name, "InvalidInertiaError");

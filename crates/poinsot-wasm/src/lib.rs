@@ -8,15 +8,26 @@
 //! Error contract: every fallible export returns `Result<_, Failure>`. At the JavaScript boundary
 //! a [`Failure`] becomes a thrown `Error` whose `name` is the Python exception class of the same
 //! kind (`"InvalidInertiaError"`, `"GimbalLockError"`, ...) and whose `message` is the core's
-//! `"argument: condition"` text. A result that is not finite where the contract promises a finite
-//! number is turned into an error rather than shown. A Rust panic, which must never happen, is
-//! logged by [`console_error_panic_hook`] and surfaces in JavaScript as a thrown `RuntimeError`.
+//! `"argument: condition"` text, or a real `TypeError` for an argument of the wrong JavaScript
+//! type. Arguments arrive as plain JavaScript values and are converted in [`args`] before any
+//! allocation or indexing: nothing is coerced (a string is not a number, `"no"` is not a flag,
+//! 2.5 is not a count), counts and arrays are checked against a memory budget. A result that is
+//! not finite where the contract promises a finite number is turned into an error naming the
+//! call's arguments rather than shown (the documented infinities: an infinite period on the
+//! separatrix, the pitch of a pure translation, ...).
+//!
+//! A Rust panic or a failed allocation must never happen; on `wasm32-unknown-unknown` it would
+//! abort the instance (`RuntimeError: unreachable`), after [`console_error_panic_hook`] logged
+//! it. The page's last line of defence, `web/src/protect.js`, turns such a trap into a
+//! `PoinsotError` ("internal error: ... please report") and replaces the instance with a fresh
+//! one (wasm-bindgen's `--experimental-reset-state-function`).
 //!
 //! Naming: functions and methods use JavaScript's camelCase (`eulerToMatrix`), classes keep the
 //! Python API's names (`FreeSymmetricTop`, `RigidBody`, `Earth`, `MovingFrame`, `HeavyTop`).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod args;
 pub mod construction;
 pub mod convert;
 pub mod earth;

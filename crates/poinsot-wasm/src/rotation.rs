@@ -1,21 +1,32 @@
 //! Bindings of `poinsot::rotation`: Euler angles (any of the 24 conventions), Euler's theorem,
 //! Chasles' screw and the Euler-angle kinematics (the unit's 2.98–2.99).
 
-use crate::convert::{array3, finite, mat3, mat_out, vec3, vec_out, Out};
+use crate::args::{flag, matrix, number, text, triple, vector, Flag, Number, Numbers, Text};
+use crate::convert::{finite, mat_out, renamed, vec_out, Out};
 use poinsot::rotation::{self as rot, EulerSequence, Frame};
 use wasm_bindgen::prelude::wasm_bindgen;
 
-fn sequence(seq: &str, intrinsic: bool) -> Out<EulerSequence> {
-    Ok(EulerSequence::new(seq, intrinsic)?)
+/// The sequence `seq` (a string), intrinsic or extrinsic (a boolean).
+fn sequence(seq: &Text, intrinsic: &Flag) -> Out<EulerSequence> {
+    Ok(EulerSequence::new(
+        &text("seq", seq)?,
+        flag("intrinsic", intrinsic)?,
+    )?)
 }
 
 /// The rotation matrix (9 numbers, row-major) of Euler `angles` (rad, 3 numbers) in the
 /// sequence `seq` (three lowercase axis letters, e.g. `"zxz"`, the unit's φ, θ, ψ), intrinsic or
-/// extrinsic: intrinsic `R = R_a(α) R_b(β) R_c(γ)`, extrinsic `R = R_c(γ) R_b(β) R_a(α)`.
+/// extrinsic (`intrinsic`, a boolean): intrinsic `R = R_a(α) R_b(β) R_c(γ)`, extrinsic
+/// `R = R_c(γ) R_b(β) R_a(α)`.
 #[wasm_bindgen(js_name = eulerToMatrix)]
-pub fn euler_to_matrix(angles: &[f64], seq: &str, intrinsic: bool) -> Out<Vec<f64>> {
-    let r = rot::euler_to_matrix(array3("angles", angles)?, sequence(seq, intrinsic)?)?;
-    finite("R", mat_out(&r))
+pub fn euler_to_matrix(
+    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] angles: Numbers,
+    #[wasm_bindgen(unchecked_param_type = "string")] seq: Text,
+    #[wasm_bindgen(unchecked_param_type = "boolean")] intrinsic: Flag,
+) -> Out<Vec<f64>> {
+    let angles = triple("angles", &angles)?;
+    let r = rot::euler_to_matrix(angles, sequence(&seq, &intrinsic)?)?;
+    finite("angles, seq, intrinsic", "rotation matrix", mat_out(&r))
 }
 
 /// Euler angles of a rotation matrix, with the gimbal-lock flag.
@@ -44,10 +55,15 @@ impl EulerAngles {
 /// The Euler angles of the rotation matrix `r` (9 numbers, row-major; must be a proper rotation)
 /// in the sequence `seq`, intrinsic or extrinsic.
 #[wasm_bindgen(js_name = matrixToEuler)]
-pub fn matrix_to_euler(r: &[f64], seq: &str, intrinsic: bool) -> Out<EulerAngles> {
-    let e = rot::matrix_to_euler(&mat3("R", r)?, sequence(seq, intrinsic)?)?;
+pub fn matrix_to_euler(
+    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] r: Numbers,
+    #[wasm_bindgen(unchecked_param_type = "string")] seq: Text,
+    #[wasm_bindgen(unchecked_param_type = "boolean")] intrinsic: Flag,
+) -> Out<EulerAngles> {
+    let r = matrix("r", &r)?;
+    let e = rot::matrix_to_euler(&r, sequence(&seq, &intrinsic)?).map_err(renamed("R", "r"))?;
     Ok(EulerAngles {
-        angles: finite("angles", e.angles.to_vec())?,
+        angles: finite("r, seq, intrinsic", "angles", e.angles.to_vec())?,
         gimbal_lock: e.gimbal_lock,
     })
 }
@@ -55,9 +71,11 @@ pub fn matrix_to_euler(r: &[f64], seq: &str, intrinsic: bool) -> Out<EulerAngles
 /// Euler's theorem: `[ax, ay, az, angle]`, the unit axis and the angle (rad, in [0, π]) of the
 /// rotation matrix `r` (9 numbers, row-major).
 #[wasm_bindgen(js_name = rotationAxis)]
-pub fn rotation_axis(r: &[f64]) -> Out<Vec<f64>> {
-    let (axis, angle) = rot::rotation_axis(&mat3("R", r)?)?;
-    finite("axis", vec![axis.x, axis.y, axis.z, angle])
+pub fn rotation_axis(
+    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] r: Numbers,
+) -> Out<Vec<f64>> {
+    let (axis, angle) = rot::rotation_axis(&matrix("r", &r)?).map_err(renamed("R", "r"))?;
+    finite("r", "axis", vec![axis.x, axis.y, axis.z, angle])
 }
 
 /// Chasles' screw of a displacement `x ↦ R x + t`.
@@ -99,19 +117,26 @@ impl Screw {
     /// `Screw.displacement_at`): 12 numbers, `R(s)` row-major then `t(s)` (m). `s = 0` is the
     /// identity, `s = 1` the displacement the screw was built from.
     #[wasm_bindgen(js_name = displacementAt)]
-    pub fn displacement_at(&self, s: f64) -> Out<Vec<f64>> {
-        let (r, t) = self.inner.displacement_at(s)?;
+    pub fn displacement_at(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] s: Number,
+    ) -> Out<Vec<f64>> {
+        let (r, t) = self.inner.displacement_at(number("s", &s)?)?;
         let mut out = mat_out(&r);
         out.extend(vec_out(&t));
-        finite("displacement", out)
+        finite("s", "displacement", out)
     }
 }
 
 /// Chasles' theorem for the displacement `x ↦ R x + t` (`r` 9 numbers row-major, `t` 3 numbers, m).
 #[wasm_bindgen(js_name = screwAxis)]
-pub fn screw_axis(r: &[f64], t: &[f64]) -> Out<Screw> {
-    let s = rot::screw_axis(&mat3("R", r)?, &vec3("t", t)?)?;
+pub fn screw_axis(
+    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] r: Numbers,
+    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] t: Numbers,
+) -> Out<Screw> {
+    let s = rot::screw_axis(&matrix("r", &r)?, &vector("t", &t)?).map_err(renamed("R", "r"))?;
     finite(
+        "r, t",
         "screw",
         vec![
             s.axis.x, s.axis.y, s.axis.z, s.point.x, s.point.y, s.point.z, s.angle, s.slide,
@@ -130,35 +155,35 @@ pub fn screw_axis(r: &[f64], t: &[f64]) -> Out<Screw> {
 /// derivatives `rates` (rad/s) in sequence `seq` (the unit's 2.99 for intrinsic zxz).
 #[wasm_bindgen(js_name = bodyAngularVelocity)]
 pub fn body_angular_velocity(
-    angles: &[f64],
-    rates: &[f64],
-    seq: &str,
-    intrinsic: bool,
+    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] angles: Numbers,
+    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] rates: Numbers,
+    #[wasm_bindgen(unchecked_param_type = "string")] seq: Text,
+    #[wasm_bindgen(unchecked_param_type = "boolean")] intrinsic: Flag,
 ) -> Out<Vec<f64>> {
     let w = rot::body_angular_velocity(
-        array3("angles", angles)?,
-        array3("rates", rates)?,
-        sequence(seq, intrinsic)?,
+        triple("angles", &angles)?,
+        triple("rates", &rates)?,
+        sequence(&seq, &intrinsic)?,
     )?;
-    finite("omega", vec_out(&w))
+    finite("angles, rates, seq, intrinsic", "omega", vec_out(&w))
 }
 
 /// The Euler-angle rates (rad/s) that produce the body angular velocity `omega_body` (rad/s) at
 /// `angles` (rad); throws a `GimbalLockError` at the singular angles of the sequence.
 #[wasm_bindgen(js_name = eulerRates)]
 pub fn euler_rates(
-    angles: &[f64],
-    omega_body: &[f64],
-    seq: &str,
-    intrinsic: bool,
+    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] angles: Numbers,
+    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] omega_body: Numbers,
+    #[wasm_bindgen(unchecked_param_type = "string")] seq: Text,
+    #[wasm_bindgen(unchecked_param_type = "boolean")] intrinsic: Flag,
 ) -> Out<Vec<f64>> {
     let r = rot::euler_rates(
-        array3("angles", angles)?,
-        &vec3("omega_body", omega_body)?,
-        sequence(seq, intrinsic)?,
+        triple("angles", &angles)?,
+        &vector("omega_body", &omega_body)?,
+        sequence(&seq, &intrinsic)?,
         Frame::Body,
     )?;
-    finite("rates", r.to_vec())
+    finite("angles, omega_body, seq, intrinsic", "rates", r.to_vec())
 }
 
 #[cfg(test)]
@@ -168,10 +193,10 @@ mod tests {
     #[test]
     fn zxz_matches_the_product_of_elementary_rotations() {
         let (phi, theta, psi) = (0.3, 0.7, -1.1);
-        let r = euler_to_matrix(&[phi, theta, psi], "zxz", true).unwrap();
+        let r = euler_to_matrix(vec![phi, theta, psi], "zxz".into(), true).unwrap();
         let expect = rot::rot_z(phi) * rot::rot_x(theta) * rot::rot_z(psi);
         assert_eq!(r, mat_out(&expect));
-        let back = matrix_to_euler(&r, "zxz", true).unwrap();
+        let back = matrix_to_euler(r.clone(), "zxz".into(), true).unwrap();
         assert!(!back.gimbal_lock());
         for (a, b) in back.angles().iter().zip([phi, theta, psi]) {
             assert!((a - b).abs() < 1e-14, "{a} vs {b}");
@@ -180,21 +205,26 @@ mod tests {
 
     #[test]
     fn gimbal_lock_is_reported_and_rates_throw() {
-        let r = euler_to_matrix(&[0.4, 0.0, 0.2], "zxz", true).unwrap();
-        assert!(matrix_to_euler(&r, "zxz", true).unwrap().gimbal_lock());
-        let e = euler_rates(&[0.4, 0.0, 0.2], &[0.0, 0.0, 1.0], "zxz", true).unwrap_err();
+        let r = euler_to_matrix(vec![0.4, 0.0, 0.2], "zxz".into(), true).unwrap();
+        assert!(matrix_to_euler(r, "zxz".into(), true)
+            .unwrap()
+            .gimbal_lock());
+        let e =
+            euler_rates(vec![0.4, 0.0, 0.2], vec![0.0, 0.0, 1.0], "zxz".into(), true).unwrap_err();
         assert_eq!(e.name, "GimbalLockError");
     }
 
     #[test]
     fn bad_input_is_an_error_not_nan() {
-        assert!(euler_to_matrix(&[f64::NAN, 0.0, 0.0], "zxz", true)
-            .unwrap_err()
-            .message
-            .starts_with("angles"));
-        assert!(euler_to_matrix(&[0.0; 3], "zqz", true).is_err());
+        assert!(
+            euler_to_matrix(vec![f64::NAN, 0.0, 0.0], "zxz".into(), true)
+                .unwrap_err()
+                .message
+                .starts_with("angles")
+        );
+        assert!(euler_to_matrix(vec![0.0; 3], "zqz".into(), true).is_err());
         assert_eq!(
-            rotation_axis(&[2.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0])
+            rotation_axis(vec![2.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0])
                 .unwrap_err()
                 .name,
             "InvalidRotationError"
@@ -203,12 +233,12 @@ mod tests {
 
     #[test]
     fn displacement_at_ends_and_errors() {
-        let r = euler_to_matrix(&[0.4, 1.1, -0.7], "zxz", true).unwrap();
+        let r = euler_to_matrix(vec![0.4, 1.1, -0.7], "zxz".into(), true).unwrap();
         let t = [0.8, -1.5, 2.0];
-        let s = screw_axis(&r, &t).unwrap();
+        let s = screw_axis(r.clone(), t.to_vec()).unwrap();
         let d0 = s.displacement_at(0.0).unwrap();
         assert_eq!(&d0[..9], &mat_out(&poinsot::Mat3::identity())[..]);
-        assert_eq!(&d0[9..], &[0.0; 3]);
+        assert_eq!(&d0[9..], vec![0.0; 3]);
         let d1 = s.displacement_at(1.0).unwrap();
         assert_eq!(d1.len(), 12);
         for (a, b) in d1.iter().zip(r.iter().chain(&t)) {
@@ -222,7 +252,7 @@ mod tests {
     #[test]
     fn pure_translation_has_infinite_pitch() {
         let id = mat_out(&poinsot::Mat3::identity());
-        let s = screw_axis(&id, &[0.0, 0.0, 2.0]).unwrap();
+        let s = screw_axis(id, vec![0.0, 0.0, 2.0]).unwrap();
         assert!(s.pitch().is_infinite());
         assert!((s.slide() - 2.0).abs() < 1e-15);
     }

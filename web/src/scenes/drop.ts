@@ -3,7 +3,7 @@
 // frame by the core (Coriolis and centrifugal terms), with the Foucault rate at the same latitude.
 // Horizontal distances are exaggerated (the factor is a control) so that centimetres show.
 import * as THREE from "three";
-import { Earth, type Fall } from "../wasm/poinsot_wasm.js";
+import { Earth, type Fall } from "../core";
 import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
 import { disposeTree, Trail } from "../view";
 

@@ -2,7 +2,7 @@
 // conventions, the three rotation discs of a gimbal, the line of nodes, and gimbal lock made
 // visible (discs 1 and 3 coincide; the rates of 2.99 become undefined and the core says so).
 import * as THREE from "three";
-import { bodyAngularVelocity, eulerRates, eulerToMatrix, matrixToEuler, rotationAxis } from "../wasm/poinsot_wasm.js";
+import { bodyAngularVelocity, eulerRates, eulerToMatrix, matrixToEuler, rotationAxis } from "../core";
 import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
 import { AXIS_COLORS, bodyAxes, disposeTree, fixedAxes, matrix4 } from "../view";
 

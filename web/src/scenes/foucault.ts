@@ -5,7 +5,7 @@
 // rate beside −Ω sin λ. The Earth turns once a sidereal day, so the plane needs a day/|sin λ| to
 // turn round; a planet spinning faster (the exaggeration factor) makes the turn visible.
 import * as THREE from "three";
-import { Earth, type Foucault } from "../wasm/poinsot_wasm.js";
+import { Earth, type Foucault } from "../core";
 import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
 import { disposeTree, fixedAxes } from "../view";
 

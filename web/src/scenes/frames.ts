@@ -5,7 +5,7 @@
 // acceleration into the relative, Coriolis, centripetal and Euler terms. Every number comes from
 // the core; the scene only draws.
 import * as THREE from "three";
-import { MovingFrame, SpringParticle, simulateParticle } from "../wasm/poinsot_wasm.js";
+import { MovingFrame, SpringParticle, simulateParticle } from "../core";
 import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
 import { Arrow, bufferLine, disposeTree, fixedAxes, matrix4, vec } from "../view";
 

@@ -3,7 +3,7 @@
 // Prolate (I₃ < I₁): the body cone rolls on the outside; oblate (I₃ > I₁): it surrounds the
 // space cone. Every number comes from the core's exact solution.
 import * as THREE from "three";
-import { FreeSymmetricTop, RigidBody } from "../wasm/poinsot_wasm.js";
+import { FreeSymmetricTop, RigidBody } from "../core";
 import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
 import { Arrow, bodyAxes, cone, disposeTree, fixedAxes, quaternion, Trail, vec } from "../view";
 

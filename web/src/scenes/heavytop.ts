@@ -5,7 +5,7 @@
 // Every number comes from the core: the motion (Jacobi elliptic functions), the constants, V(θ),
 // the steady-precession roots used by the presets, and the energy recomputed from the state at t.
 import * as THREE from "three";
-import { eulerToMatrix, HeavyTop } from "../wasm/poinsot_wasm.js";
+import { eulerToMatrix, HeavyTop } from "../core";
 import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
 import { bufferLine, disposeTree, fixedAxes, matrix4 } from "../view";
 

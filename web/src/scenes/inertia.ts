@@ -4,7 +4,7 @@
 // (Euler) and its screw axis (Chasles), and the body carried from the first pose to the second by
 // the screw motion — every pose from the core (Screw.displacementAt).
 import * as THREE from "three";
-import { eulerToMatrix, RigidBody, rotationAxis, screwAxis, type Screw } from "../wasm/poinsot_wasm.js";
+import { eulerToMatrix, RigidBody, rotationAxis, screwAxis, type Screw } from "../core";
 import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
 import { disposeTree, fixedAxes, matrix4, vec } from "../view";
 import { mergeVertices, parseStl } from "../stl";

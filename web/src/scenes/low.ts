@@ -4,7 +4,7 @@
 // integrates them; the page draws the map, the tracks and the winds, and reads the sense of the
 // circulation out of the simulation. One second of the page is one hour of the simulation.
 import * as THREE from "three";
-import { Earth, type LowFlow } from "../wasm/poinsot_wasm.js";
+import { Earth, type LowFlow } from "../core";
 import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
 import { Arrow, disposeTree } from "../view";
 

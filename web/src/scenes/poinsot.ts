@@ -10,7 +10,7 @@
 // the intermediate axis it flips every half period (the Dzhanibekov effect); about the others it
 // only wobbles. Every number comes from the core.
 import * as THREE from "three";
-import { axisStability, FreeRigidBody, RigidBody } from "../wasm/poinsot_wasm.js";
+import { axisStability, FreeRigidBody, RigidBody } from "../core";
 import { fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
 import { Arrow, AXIS_COLORS, bufferLine, disposeTree, fixedAxes, quaternion, vec } from "../view";
 
