@@ -10,7 +10,7 @@ PY := $(VENV)/bin/python
 export PYO3_PYTHON := $(abspath $(PY))
 export MPLBACKEND := Agg
 
-.PHONY: setup demo test test-rust lint test-python examples bench stubtest clean lab lab-build test-web web-setup fuzz-web
+.PHONY: setup demo test test-rust lint test-python examples bench stubtest clean lab lab-build test-web web-setup fuzz fuzz-python fuzz-web
 
 $(PY):
 	$(PYTHON) -m venv $(VENV)
@@ -60,6 +60,15 @@ lab: lab-build
 test-web: lab-build
 	$(PY) web/tests/make_golden.py web/tests/golden.json
 	cd web && PYTHON=$(abspath $(PY)) node --test --test-concurrency=1 tests/
+
+# Long fuzzing of the whole public surface (issue 10, item 18): `make test` runs bounded,
+# fixed-seed campaigns (python/tests/test_fuzz.py, web/tests/wasm_fuzz.test.mjs); these run long
+# ones. FUZZ_EXAMPLES sets the number of random Python calls (hypothesis, random seed).
+FUZZ_EXAMPLES ?= 20000
+fuzz: fuzz-python fuzz-web
+
+fuzz-python: setup
+	POINSOT_FUZZ_EXAMPLES=$(FUZZ_EXAMPLES) $(PY) -m pytest -q -s python/tests/test_fuzz.py
 
 # Long fuzzing of the WebAssembly core (issue 10, item 18): every export with adversarial values,
 # in node, a random seed (printed; FUZZ_SEED=<seed> repeats a run), FUZZ_CALLS calls (about 2 ms

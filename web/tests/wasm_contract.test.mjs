@@ -42,7 +42,7 @@ test("item 9: samples and parcels of -1, -2^31 and 1e9 are refused by name, neve
     for (const n of [-1, -(2 ** 31)]) refuses(() => run(n), "PoinsotError", `${arg}: must be a whole number >= 0, got ${n}`);
     // 1e9 is a whole number: refused by the memory budget, with the bytes it would need.
     const e = refuses(() => run(1e9), "PoinsotError", `${arg}: 1000000000 would need `);
-    assert.match(e.message, /would need \d+ bytes \(\d+\.\d GB\) of memory, more than the budget of 1073741824 bytes/);
+    assert.match(e.message, /would need \d+ bytes \(\d+\.\d GB\) of output, more than the memory budget of 1073741824 bytes/);
   }
   // The instance is intact: the same calls with valid counts work.
   assert.equal(body().contactPolhode(5).length, 15);
@@ -120,7 +120,7 @@ test("item 8: arrays and the outputs they ask for are checked against the memory
   const top = new raw.HeavyTop(1, 0.5, 1, 0.8, 0, 0, 6);
   const t = new Float64Array(12_000_000);
   const t0 = performance.now();
-  refuses(() => top.attitude(t), "PoinsotError", "t: 12000000 would need 1248000000 bytes (1.2 GB) of memory");
+  refuses(() => top.attitude(t), "PoinsotError", "t: 12000000 would need 1248000000 bytes (1.2 GB) of output");
   // Refused before the copy: far faster than evaluating 1.2e7 attitudes (~15 s).
   assert.ok(performance.now() - t0 < 2000, `took ${performance.now() - t0} ms`);
   // Within the budget it works; a product of counts is checked as a product.

@@ -64,36 +64,19 @@ pub type Numbers = wasm_bindgen::JsValue;
 #[cfg(not(target_arch = "wasm32"))]
 pub type Numbers = Vec<f64>;
 
-/// The memory budget of one call in WebAssembly (bytes): 1 GiB of the 4 GiB address space.
-///
-/// **A local stand-in** for the core's memory budget (`poinsot::limits`, being added to the
-/// core): when it lands, [`check_budget`] becomes a call of `poinsot::limits::check_memory` (same
-/// arguments) and this constant goes away. The value is the core's planned wasm32 default.
-pub const LOCAL_MEMORY_BUDGET: u64 = 1 << 30;
-
-/// Checks that `count` items of `bytes_each` bytes fit the memory budget; the error names
-/// `argument` (the user's count or array) and says how many bytes the request would need.
-/// `count` is a float so that it may be astronomically large (a length, a product of counts).
+/// Checks that `count` items of `bytes_each` bytes fit the core's memory budget
+/// ([`poinsot::limits`]: 1 GiB in WebAssembly); the error names `argument` (the user's count or
+/// array) and says how many bytes the request would need. `count` is a float so that it may be
+/// astronomically large (a length, a product of counts).
 pub fn check_budget(argument: &str, count: f64, bytes_each: usize) -> Out<()> {
-    check_bytes(argument, &format!("{count}"), count * bytes_each as f64)
+    poinsot::limits::check_memory(argument, count, bytes_each).map_err(Failure::from)
 }
 
-/// Checks that a request of `needed` bytes fits the memory budget; the error names `argument`,
-/// says `what` was asked for (`"1000000000"`, `"8 parcels × 10000000 samples"`) and how many
-/// bytes it would need.
+/// Checks that a request of `needed` bytes fits the core's memory budget; the error names
+/// `argument`, says `what` was asked for (`"1000000000"`, `"8 parcels × 10000000 samples"`) and
+/// how many bytes it would need.
 pub fn check_bytes(argument: &str, what: &str, needed: f64) -> Out<()> {
-    if needed.is_finite() && needed <= LOCAL_MEMORY_BUDGET as f64 {
-        return Ok(());
-    }
-    Err(Failure::invalid(
-        argument,
-        &format!(
-            "{what} would need {needed:.0} bytes ({:.1} GB) of memory, more than the budget of \
-             {LOCAL_MEMORY_BUDGET} bytes ({:.1} GB) of one call in WebAssembly; ask for fewer",
-            needed / 1e9,
-            LOCAL_MEMORY_BUDGET as f64 / 1e9
-        ),
-    ))
+    poinsot::limits::check_bytes(argument, what, needed).map_err(Failure::from)
 }
 
 /// `value` as a whole number ≥ 0 (still a float: the caller checks the upper bound — the
@@ -260,7 +243,7 @@ export function poinsot_numbers(value, maxLength) {
 
     pub fn numbers(argument: &str, value: &Numbers, bytes_each: usize) -> Out<Vec<f64>> {
         // The longest array within the budget; a longer one is refused before it is copied.
-        let max_length = (super::LOCAL_MEMORY_BUDGET / bytes_each.max(1) as u64) as f64;
+        let max_length = (poinsot::limits::memory_budget() / bytes_each.max(1) as u64) as f64;
         let read = poinsot_numbers(value, max_length).map_err(|e| {
             Failure::type_error(
                 argument,
@@ -331,7 +314,7 @@ mod tests {
             e.message
         );
         // The boundary: exactly the budget passes, one more item does not.
-        let most = (LOCAL_MEMORY_BUDGET / 8) as f64;
+        let most = (poinsot::limits::memory_budget() / 8) as f64;
         assert!(count("samples", &most, 8).is_ok());
         assert!(count("samples", &(most + 1.0), 8).is_err());
     }
@@ -353,8 +336,8 @@ mod tests {
     #[test]
     fn arrays_longer_than_the_budget_are_refused_before_the_copy() {
         assert_eq!(numbers("t", &vec![1.0, 2.0]).unwrap(), vec![1.0, 2.0]);
-        // 24 bytes per time: the budget allows LOCAL_MEMORY_BUDGET / 24 of them.
-        let e = numbers_each("t", &vec![0.0; 3], LOCAL_MEMORY_BUDGET as usize / 2).unwrap_err();
+        // 24 bytes per time: the budget allows poinsot::limits::memory_budget() / 24 of them.
+        let e = numbers_each("t", &vec![0.0; 3], poinsot::limits::memory_budget() as usize / 2).unwrap_err();
         assert!(e.message.starts_with("t: 3 would need"), "{}", e.message);
     }
 

@@ -81,17 +81,22 @@ fn whole(x: f64) -> String {
 ///
 /// `count` is a float so that products of counts (samples × parcels) cannot overflow on the way.
 pub fn check_memory(argument: &str, count: f64, bytes_each: usize) -> Result<()> {
+    check_bytes(argument, &whole(count), count * bytes_each as f64)
+}
+
+/// Checks that a request of `needed` bytes fits in the memory budget; the error names
+/// `argument`, says `what` was asked for (`"1000000000"`, `"8 parcels × 10000000 samples"`) and
+/// how many bytes it would need.
+pub fn check_bytes(argument: &str, what: &str, needed: f64) -> Result<()> {
     let budget = memory_budget();
-    let needed = count * bytes_each as f64;
-    if count.is_finite() && needed <= budget as f64 {
+    if needed.is_finite() && needed <= budget as f64 {
         return Ok(());
     }
     Err(Error::invalid(
         argument,
         format!(
-            "{} would need {} bytes ({}) of output, more than the memory budget of {budget} bytes \
+            "{what} would need {} bytes ({}) of output, more than the memory budget of {budget} bytes \
              ({}); ask for fewer, or raise the budget with set_memory_budget",
-            whole(count),
             whole(needed),
             human_bytes(needed),
             human_bytes(budget as f64)
