@@ -201,17 +201,14 @@ fn dynamics_simulate_batch<'py>(
     };
     let torque = torque_from(torque_kind, vec3("torque", &torque_vector)?, torque_scalar)?;
     let method = Method::parse(method).py()?;
+    let opts = SimulateOptions {
+        method,
+        dt,
+        max_steps,
+        ..SimulateOptions::default()
+    };
     let out = run(py, progress.as_ref(), || {
-        dyn_core::simulate_batch(
-            &m,
-            &w,
-            q.as_deref(),
-            duration,
-            &torque,
-            method,
-            dt,
-            max_steps,
-        )
+        dyn_core::simulate_batch(&m, &w, q.as_deref(), duration, &torque, &opts)
     })?;
     Ok((
         rows_out(py, &out.omega),

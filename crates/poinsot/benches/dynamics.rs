@@ -84,9 +84,11 @@ fn bench(c: &mut Criterion) {
                 None,
                 0.02,
                 &Torque::None,
-                Method::Rk4,
-                Some(1e-3),
-                poinsot::limits::DEFAULT_MAX_STEPS,
+                &SimulateOptions {
+                    method: Method::Rk4,
+                    dt: Some(1e-3),
+                    ..SimulateOptions::default()
+                },
             )
             .unwrap()
         })
@@ -99,9 +101,11 @@ fn bench(c: &mut Criterion) {
                 None,
                 0.02,
                 &Torque::None,
-                Method::Splitting(2),
-                Some(1e-3),
-                poinsot::limits::DEFAULT_MAX_STEPS,
+                &SimulateOptions {
+                    method: Method::Splitting(2),
+                    dt: Some(1e-3),
+                    ..SimulateOptions::default()
+                },
             )
             .unwrap()
         })

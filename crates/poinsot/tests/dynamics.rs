@@ -505,9 +505,11 @@ fn batch_agrees_with_single_runs() {
             None,
             3.0,
             &Torque::None,
-            method,
-            Some(1e-3),
-            poinsot::limits::DEFAULT_MAX_STEPS,
+            &SimulateOptions {
+                method,
+                dt: Some(1e-3),
+                ..SimulateOptions::default()
+            },
         )
         .unwrap();
         for i in 0..3 {
@@ -526,9 +528,11 @@ fn batch_agrees_with_single_runs() {
         None,
         3.0,
         &Torque::None,
-        Method::Rk4,
-        None,
-        poinsot::limits::DEFAULT_MAX_STEPS,
+        &SimulateOptions {
+            method: Method::Rk4,
+            dt: None,
+            ..SimulateOptions::default()
+        },
     )
     .unwrap_err();
     assert_eq!(e.argument, "omega0");
@@ -539,9 +543,11 @@ fn batch_agrees_with_single_runs() {
         None,
         1.0,
         &Torque::None,
-        Method::Rk4,
-        None,
-        poinsot::limits::DEFAULT_MAX_STEPS,
+        &SimulateOptions {
+            method: Method::Rk4,
+            dt: None,
+            ..SimulateOptions::default()
+        },
     )
     .unwrap_err();
     assert_eq!(

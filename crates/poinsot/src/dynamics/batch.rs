@@ -5,7 +5,7 @@ use rayon::prelude::*;
 
 use super::equations::{angular_acceleration_principal, quaternion_rate, RigidRhs};
 use super::model::BodyInertia;
-use super::simulate::{default_step, Method};
+use super::simulate::{default_step, Method, SimulateOptions};
 use super::splitting::{free_steps, kicked_step, SplitState};
 use super::torque::{Torque, TorqueContext, TorqueModel};
 use std::sync::Arc;
@@ -31,10 +31,11 @@ pub struct BatchResult {
 
 /// Integrates `moments.len()` bodies (principal moments, body axes principal) from `omega0`
 /// and `attitude0` (identity if `None`) over `duration` under the same `torque` (evaluated with
-/// each body's own inertia), with `method` and the fixed step `dt` (`None`: each body's
-/// [`default_step`]), in parallel. Returns the final states only.
+/// each body's own inertia), with `opts.method`, the fixed step `opts.dt` (`None`: each body's
+/// [`default_step`]) and DOP853's `opts.rtol`/`opts.atol` (`opts.samples` is not used: only
+/// the final states are returned), in parallel.
 ///
-/// Every body may take at most `max_steps` steps (checked before the first step for the
+/// Every body may take at most `opts.max_steps` steps (checked before the first step for the
 /// fixed-step methods; DOP853 stops there). The run can be stopped through
 /// [`crate::control`] (a monitor on the calling thread), also while the workers run.
 ///
@@ -47,10 +48,16 @@ pub fn simulate_batch(
     attitude0: Option<&[Quaternion]>,
     duration: f64,
     torque: &Torque,
-    method: Method,
-    dt: Option<f64>,
-    max_steps: usize,
+    opts: &SimulateOptions,
 ) -> Result<BatchResult> {
+    let SimulateOptions {
+        method,
+        dt,
+        max_steps,
+        rtol,
+        atol,
+        ..
+    } = *opts;
     let n = moments.len();
     if omega0.len() != n {
         return Err(Error::invalid(
@@ -149,6 +156,7 @@ pub fn simulate_batch(
                             method,
                             dt,
                             max_steps,
+                            (rtol, atol),
                         )
                     });
                     cancel.advance(1);
@@ -182,6 +190,7 @@ fn one_body(
     method: Method,
     dt: Option<f64>,
     max_steps: usize,
+    (rtol, atol): (f64, f64),
 ) -> Result<([f64; 3], Quaternion, usize)> {
     let w0 = Vec3::from(*omega0);
     let inertia_t = crate::Mat3::from_diagonal(&Vec3::from(*moments));
@@ -306,7 +315,7 @@ fn one_body(
             let opts = Options {
                 dense: false,
                 max_steps,
-                ..Options::with_tolerances(1e-10, 1e-12)
+                ..Options::with_tolerances(rtol, atol)
             };
             let sol = dop853(rhs, 0.0, y0, duration, &opts)?;
             let y = sol.y_final();
