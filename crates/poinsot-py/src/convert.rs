@@ -59,8 +59,8 @@ pub fn vec3_out<'py>(py: Python<'py>, v: [f64; 3]) -> Bound<'py, PyArray1<f64>> 
 
 /// Row-major 3×3 → a new numpy array of shape (3, 3).
 pub fn mat3_out<'py>(py: Python<'py>, m: [[f64; 3]; 3]) -> Bound<'py, PyArray2<f64>> {
-    PyArray2::from_vec2(py, &m.iter().map(|r| r.to_vec()).collect::<Vec<_>>())
-        .expect("3x3 rows have equal length")
+    use numpy::IntoPyArray;
+    numpy::ndarray::Array2::from_shape_fn((3, 3), |(i, j)| m[i][j]).into_pyarray(py)
 }
 
 /// A C-contiguous float array of shape `(N, *tail)` → its flat data and `N` (for the batch
