@@ -130,7 +130,7 @@ proptest! {
             let exp = largest.log2().floor() as i32 + k;
             match f(scaled(m, a), scaled(l, b)) {
                 Ok(body) => {
-                    prop_assert!(exp >= -1022 && exp <= 1023, "{} accepted out of range", name);
+                    prop_assert!((-1022..=1023).contains(&exp), "{} accepted out of range", name);
                     let expect = scaled_mat(&unit.inertia(), k);
                     for (x, y) in body.inertia().iter().zip(expect.iter()) {
                         // Bit for bit where normal; one rounding of a subnormal otherwise.

@@ -11,25 +11,40 @@
 //! ∫ x xᵀ dV = D / 120 · (a aᵀ + b bᵀ + c cᵀ + s sᵀ),   s = a + b + c
 //! ```
 //!
-//! (exact for polynomials of degree ≤ 2; Tonon 2004). `p₀` is the centre of the bounding box,
-//! which keeps the terms small and the sums accurate. The second moments about the centre of
+//! (exact for polynomials of degree ≤ 2; Tonon 2004). The second moments about the centre of
 //! mass give the inertia `I = tr(C) 1 − C` (the unit's 2.61–2.62 with uniform ρ).
+//!
+//! **Accuracy and range.** Each closed component (faces connected across edges) is summed about
+//! its own `p₀`, the centre of the box of the vertices **it** uses, on coordinates scaled by a
+//! power of two to `[-2, 2]`; the components are then composed about their common centre of
+//! mass by the parallel-axis theorem on the moments (exact for the signed volumes of cavities),
+//! lengths and volumes carried in separate power-of-two units. So unused vertices play no part,
+//! components far apart (two unit cubes 1e7 apart) keep their accuracy, and a mesh of 1e±100 m
+//! neither overflows nor underflows: a mass or inertia beyond `f64::MAX`, or whose largest
+//! moment is below the smallest normal double, is an [`Error::invalid`] naming `vertices` or
+//! `density`. The physical check of the tensor allows 16 ε of the magnitude of what was summed
+//! ([`tensor::check_inertia_scaled`]; for a convex body that is the largest moment, Drake's
+//! tolerance).
 //!
 //! **Checks** (each refusal is an [`Error::mesh`] naming `faces` or `vertices` and saying what
 //! is wrong and where): face indices in range; finite vertices; not every face degenerate;
 //! closed (every edge shared by exactly two faces: the number of boundary edges is reported);
 //! manifold (no edge shared by more than two faces); consistently oriented (each edge traversed
 //! once in each direction); outward (positive total volume, else "faces are oriented inward;
-//! reverse the winding"); non-zero volume. Faces with a repeated vertex index are degenerate
-//! (they have no area) and are left out of the edge checks; faces of zero area with three
-//! distinct indices take part in them as usual. Self-intersection is not checked.
+//! reverse the winding"); non-zero volume; no self-intersection (two faces meeting beyond the
+//! vertex or edge they share by index: "faces i and j intersect"); components nested properly
+//! (a shell inside another of the same winding would be counted twice; a cavity must be inside
+//! a solid). Faces with a repeated vertex index are degenerate (they have no area) and are left
+//! out of the edge checks; faces of zero area with three distinct indices take part in them as
+//! usual. The last two checks, with their limits, are in `mesh_embedding.rs`.
 //!
 //! **Edge check without hashing.** Each use of an undirected edge `{a, b}` (`a < b`) by a face
-//! is filed under its low vertex `a`, with `b` and a direction bit, by a counting sort into a
-//! compressed (CSR) list; each vertex's short list is then sorted and its runs counted: one
-//! use is a boundary edge, more than two a non-manifold edge, two in the same direction an
-//! inconsistent orientation. `O(n · degree)`, parallel (rayon: each task owns a range of low
-//! vertices, so no atomics and no `unsafe`).
+//! is filed under its low vertex `a`, with `b`, a direction bit and the face, by a counting
+//! sort into a compressed (CSR) list; each vertex's short list is then sorted and its runs
+//! counted: one use is a boundary edge, more than two a non-manifold edge, two in the same
+//! direction an inconsistent orientation; the two faces of a manifold edge are joined in a
+//! lock-free union-find (the components). `O(n · degree)`, parallel (rayon: each task owns a
+//! range of low vertices; no `unsafe`).
 
 use rayon::prelude::*;
 
@@ -698,7 +713,7 @@ fn check_embedding(
 ) -> Result<()> {
     let pts = Points::new(vertices);
     let index = Index::new(pts, tris, |f| comp[f] == UNUSED);
-    let (count, first) = index.intersections(pts, tris);
+    let (count, first) = index.intersections();
     if let Some((i, j)) = first {
         return Err(Error::mesh(
             "faces",
@@ -729,7 +744,7 @@ fn check_embedding(
             ));
         };
         let k32 = k as u32;
-        let w = match index.winding(pts, tris, pts_at(pts, v), |g| comp[g] != k32) {
+        let w = match index.winding(pts_at(pts, v), |g| comp[g] != k32) {
             Some(w) => w,
             None => {
                 return Some(format!(

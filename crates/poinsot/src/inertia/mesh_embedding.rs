@@ -122,6 +122,41 @@ fn o3(a: P3, b: P3, c: P3, d: P3) -> i8 {
     -sign(robust::orient3d(c3(a), c3(b), c3(c), c3(d)))
 }
 
+/// [`o3`]`(t[0], t[1], t[2], d)` for each `d`, with the plane of `t` computed once: a float
+/// evaluation whose sign is certain beyond Shewchuk's error bound for this computation
+/// (`(7 + 56ε) ε` times the permanent; 2e-15 here), else the exact predicate. For points of
+/// extent in `[2^-60, 2^60]` (no overflow or underflow), as the callers ensure.
+#[inline]
+fn o3_plane<const N: usize>(t: &[P3; 3], ds: [P3; N]) -> [i8; N] {
+    let a = t[0];
+    let u = [t[1][0] - a[0], t[1][1] - a[1], t[1][2] - a[2]];
+    let w = [t[2][0] - a[0], t[2][1] - a[1], t[2][2] - a[2]];
+    let n = [
+        u[1] * w[2] - u[2] * w[1],
+        u[2] * w[0] - u[0] * w[2],
+        u[0] * w[1] - u[1] * w[0],
+    ];
+    let na = [
+        (u[1] * w[2]).abs() + (u[2] * w[1]).abs(),
+        (u[2] * w[0]).abs() + (u[0] * w[2]).abs(),
+        (u[0] * w[1]).abs() + (u[1] * w[0]).abs(),
+    ];
+    ds.map(|d| {
+        let v = [d[0] - a[0], d[1] - a[1], d[2] - a[2]];
+        let det = n[0] * v[0] + n[1] * v[1] + n[2] * v[2];
+        let perm = na[0] * v[0].abs() + na[1] * v[1].abs() + na[2] * v[2].abs();
+        if det.abs() > O3_FILTER * perm {
+            sign(det)
+        } else {
+            o3(t[0], t[1], t[2], d)
+        }
+    })
+}
+
+/// The relative error bound of the float filter of [`o3_plane`] (Shewchuk's o3derrboundA,
+/// `(7 + 56ε) ε ≈ 1.554e-15`, rounded up).
+const O3_FILTER: f64 = 2e-15;
+
 /// The projection dropping axis `k` (cyclic, so orientations are the sign of the normal's `k`
 /// component).
 #[inline]
@@ -171,7 +206,12 @@ fn fit(pts: &mut [P3]) {
 /// a non-zero component, preferably the largest), or `None` for a triangle of zero area.
 fn drop_axis(t: &[P3; 3]) -> Option<u8> {
     let mut t = *t;
-    fit(&mut t);
+    let extent = (0..3).fold(0.0f64, |m, k| {
+        m.max(t[0][k].max(t[1][k]).max(t[2][k]) - t[0][k].min(t[1][k]).min(t[2][k]))
+    });
+    if !well_scaled(extent) {
+        fit(&mut t);
+    }
     let [a, b, c] = t;
     let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
     let w = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
@@ -180,9 +220,17 @@ fn drop_axis(t: &[P3; 3]) -> Option<u8> {
         (u[2] * w[0] - u[0] * w[2]).abs(),
         (u[0] * w[1] - u[1] * w[0]).abs(),
     ];
-    let mut axes = [0u8, 1, 2];
-    axes.sort_by(|&i, &j| n[j as usize].total_cmp(&n[i as usize]));
-    axes.into_iter().find(|&k| o2(a, b, c, k) != 0)
+    let best = if n[0] >= n[1] && n[0] >= n[2] {
+        0
+    } else if n[1] >= n[2] {
+        1
+    } else {
+        2
+    };
+    if o2(a, b, c, best) != 0 {
+        return Some(best);
+    }
+    (0u8..3).find(|&k| k != best && o2(a, b, c, k) != 0)
 }
 
 /// `p` in the closed triangle `t` (all coplanar), in the projection along `k`.
@@ -256,11 +304,18 @@ fn in_wedge2(v: P3, p1: P3, p2: P3, x: P3, k: u8) -> bool {
 /// Do the faces `p` and `q` (indices `pi`, `qi`, drop axes `kp`, `kq`) meet anywhere but in the
 /// vertices they share by index?
 fn faces_cross(p: &[P3; 3], q: &[P3; 3], pi: &[u32; 3], qi: &[u32; 3], kp: u8, kq: u8) -> bool {
-    let shared: Vec<(usize, usize)> = (0..3)
-        .flat_map(|i| (0..3).map(move |j| (i, j)))
-        .filter(|&(i, j)| pi[i] == qi[j])
-        .collect();
-    match shared.len() {
+    let mut shared = [(0usize, 0usize); 3];
+    let mut n = 0;
+    for (i, a) in pi.iter().enumerate() {
+        for (j, b) in qi.iter().enumerate() {
+            if a == b && n < 3 {
+                shared[n] = (i, j);
+                n += 1;
+            }
+        }
+    }
+    let shared = &shared[..n];
+    match n {
         0 => triangles_meet(p, q, kp, kq),
         1 => {
             // Rotate both so that the shared vertex comes first (windings kept).
@@ -279,7 +334,7 @@ fn faces_cross(p: &[P3; 3], q: &[P3; 3], pi: &[u32; 3], qi: &[u32; 3], kp: u8, k
                 .find(|&j| !shared.iter().any(|s| s.1 == j))
                 .unwrap_or(0);
             let (a, b) = (p[shared[0].0], p[shared[1].0]);
-            o3(a, b, p[pk], q[qk]) == 0 && o2(a, b, p[pk], kp) == o2(a, b, q[qk], kp)
+            o3_plane(&[a, b, p[pk]], [q[qk]])[0] == 0 && o2(a, b, p[pk], kp) == o2(a, b, q[qk], kp)
         }
         // The same three vertices: the two sides of a flat, closed sliver of zero volume.
         _ => false,
@@ -288,22 +343,14 @@ fn faces_cross(p: &[P3; 3], q: &[P3; 3], pi: &[u32; 3], qi: &[u32; 3], kp: u8, k
 
 /// Closed triangles with no vertex in common meet.
 fn triangles_meet(p: &[P3; 3], q: &[P3; 3], kp: u8, kq: u8) -> bool {
-    let dq = [
-        o3(p[0], p[1], p[2], q[0]),
-        o3(p[0], p[1], p[2], q[1]),
-        o3(p[0], p[1], p[2], q[2]),
-    ];
+    let dq = o3_plane(p, *q);
     if dq[0] != 0 && dq[0] == dq[1] && dq[1] == dq[2] {
         return false;
     }
     if dq == [0, 0, 0] {
         return triangles_meet2(p, q, kp);
     }
-    let dp = [
-        o3(q[0], q[1], q[2], p[0]),
-        o3(q[0], q[1], q[2], p[1]),
-        o3(q[0], q[1], q[2], p[2]),
-    ];
+    let dp = o3_plane(q, *p);
     if dp[0] != 0 && dp[0] == dp[1] && dp[1] == dp[2] {
         return false;
     }
@@ -315,11 +362,11 @@ fn triangles_meet(p: &[P3; 3], q: &[P3; 3], kp: u8, kq: u8) -> bool {
 /// Triangles `p = (v, p1, p2)` and `q = (v, q1, q2)` sharing the vertex `v` meet elsewhere.
 fn meet_beyond_vertex(p: &[P3; 3], q: &[P3; 3], kp: u8, kq: u8) -> bool {
     let v = p[0];
-    let dq = [o3(p[0], p[1], p[2], q[1]), o3(p[0], p[1], p[2], q[2])];
+    let dq = o3_plane(p, [q[1], q[2]]);
     if dq[0] != 0 && dq[0] == dq[1] {
         return false;
     }
-    let dp = [o3(q[0], q[1], q[2], p[1]), o3(q[0], q[1], q[2], p[2])];
+    let dp = o3_plane(q, [p[1], p[2]]);
     if dp[0] != 0 && dp[0] == dp[1] {
         return false;
     }
@@ -361,7 +408,7 @@ fn box32(t: &[P3; 3]) -> AABB<[f32; 3]> {
 fn down32(x: f64) -> f32 {
     let y = x as f32;
     if f64::from(y) > x {
-        y.next_down()
+        -step_up(-y)
     } else {
         y
     }
@@ -370,9 +417,22 @@ fn down32(x: f64) -> f32 {
 fn up32(x: f64) -> f32 {
     let y = x as f32;
     if f64::from(y) < x {
-        y.next_up()
+        step_up(y)
     } else {
         y
+    }
+}
+
+/// The next `f32` above `y` (`f32::next_up`, which needs Rust 1.86).
+fn step_up(y: f32) -> f32 {
+    if y.is_nan() || y == f32::INFINITY {
+        y
+    } else if y == 0.0 {
+        f32::from_bits(1)
+    } else if y > 0.0 {
+        f32::from_bits(y.to_bits() + 1)
+    } else {
+        f32::from_bits(y.to_bits() - 1)
     }
 }
 
@@ -393,8 +453,14 @@ pub(crate) struct Index {
     order: Vec<u32>,
     /// The box of `order[k]`.
     boxes: Vec<AABB<[f32; 3]>>,
-    /// The drop axis of every face (`u8::MAX` for faces left out).
-    axis: Vec<u8>,
+    /// The corners of `order[k]` (contiguous for the narrow phase).
+    corners: Vec<[P3; 3]>,
+    /// The vertex indices of `order[k]`.
+    indices: Vec<[u32; 3]>,
+    /// The drop axis of `order[k]`.
+    axes: Vec<u8>,
+    /// Whether face `f` takes part (non-degenerate), by face index.
+    used: Vec<bool>,
     tree: RTree<Leaf, Params>,
 }
 
@@ -425,26 +491,26 @@ impl Index {
         tris: &[[u32; 3]],
         skip: impl Fn(usize) -> bool + Sync,
     ) -> Self {
-        // Drop axes (exact degeneracy) and boxes.
-        let axis: Vec<u8> = tris
+        // One pass: drop axis (exact degeneracy), box.
+        let faces: Vec<(u8, AABB<[f32; 3]>)> = tris
             .par_iter()
             .enumerate()
             .with_min_len(1024)
             .map(|(f, t)| {
-                if skip(f) {
+                let p = pts.tri(t);
+                let axis = if skip(f) {
                     u8::MAX
                 } else {
-                    drop_axis(&pts.tri(t)).unwrap_or(u8::MAX)
-                }
+                    drop_axis(&p).unwrap_or(u8::MAX)
+                };
+                (axis, box32(&p))
             })
             .collect();
-        let (lo, hi) = tris
+        let (lo, hi) = faces
             .par_iter()
-            .zip(&axis)
             .with_min_len(1024)
-            .filter(|(_, a)| **a != u8::MAX)
-            .map(|(t, _)| box32(&pts.tri(t)))
-            .map(|b| (b.lower(), b.upper()))
+            .filter(|(a, _)| *a != u8::MAX)
+            .map(|(_, b)| (b.lower(), b.upper()))
             .reduce(
                 || ([f32::MAX; 3], [f32::MIN; 3]),
                 |(l1, h1), (l2, h2)| {
@@ -455,17 +521,15 @@ impl Index {
                 },
             );
         let span = [0, 1, 2].map(|k| f64::from(hi[k]) - f64::from(lo[k]));
-        let mut keyed: Vec<(u64, u32)> = tris
+        let mut keyed: Vec<(u64, u32)> = faces
             .par_iter()
-            .zip(&axis)
             .enumerate()
             .with_min_len(1024)
-            .filter(|(_, (_, a))| **a != u8::MAX)
-            .map(|(f, (t, _))| {
-                let b = box32(&pts.tri(t));
+            .filter(|(_, (a, _))| *a != u8::MAX)
+            .map(|(f, (_, b))| {
                 let q = |k: usize| {
                     let c = 0.5 * (f64::from(b.lower()[k]) + f64::from(b.upper()[k]));
-                    let x = if span[k] > 0.0 {
+                    let x = if span[k] > 0.0 && span[k].is_finite() {
                         (c - f64::from(lo[k])) / span[k]
                     } else {
                         0.0
@@ -480,11 +544,11 @@ impl Index {
             .collect();
         keyed.par_sort_unstable();
         let order: Vec<u32> = keyed.into_par_iter().map(|(_, f)| f).collect();
-        let boxes: Vec<AABB<[f32; 3]>> = order
-            .par_iter()
-            .with_min_len(1024)
-            .map(|&f| box32(&pts.tri(&tris[f as usize])))
-            .collect();
+        let boxes: Vec<AABB<[f32; 3]>> = order.par_iter().map(|&f| faces[f as usize].1).collect();
+        let axes: Vec<u8> = order.par_iter().map(|&f| faces[f as usize].0).collect();
+        let indices: Vec<[u32; 3]> = order.par_iter().map(|&f| tris[f as usize]).collect();
+        let corners: Vec<[P3; 3]> = indices.par_iter().map(|t| pts.tri(t)).collect();
+        let used = faces.par_iter().map(|(a, _)| *a != u8::MAX).collect();
         let leaves: Vec<Leaf> = boxes
             .par_chunks(LEAF)
             .enumerate()
@@ -501,23 +565,18 @@ impl Index {
         Self {
             order,
             boxes,
-            axis,
+            corners,
+            indices,
+            axes,
+            used,
             tree,
         }
     }
 
     /// Pairs of faces that meet anywhere but in what they share by index: how many, and the
     /// first pair `(i, j)`, `i < j`.
-    pub(crate) fn intersections(
-        &self,
-        pts: Points<'_>,
-        tris: &[[u32; 3]],
-    ) -> (u64, Option<(u32, u32)>) {
-        let ctx = Ctx {
-            index: self,
-            pts,
-            tris,
-        };
+    pub(crate) fn intersections(&self) -> (u64, Option<(u32, u32)>) {
+        let ctx = Ctx { index: self };
         let f = if self.tree.size() == 0 {
             Found::default()
         } else {
@@ -530,22 +589,16 @@ impl Index {
     /// `keep(f)`, counted exactly along the ray from `p` in `+x`, symbolically perturbed to
     /// `p + (0, δ, δ²)` so that it never meets an edge or a vertex. `None` if `p` lies on one of
     /// those faces (the callers' checks rule that out).
-    pub(crate) fn winding(
-        &self,
-        pts: Points<'_>,
-        tris: &[[u32; 3]],
-        p: P3,
-        keep: impl Fn(usize) -> bool,
-    ) -> Option<i64> {
+    pub(crate) fn winding(&self, p: P3, keep: impl Fn(usize) -> bool) -> Option<i64> {
         let ray = Ray { p };
         let mut w = 0i64;
         for leaf in self.tree.locate_with_selection_function(ray) {
             for k in leaf.start..leaf.start + leaf.len {
-                let f = self.order[k as usize] as usize;
-                if !keep(f) {
+                let k = k as usize;
+                if !keep(self.order[k] as usize) {
                     continue;
                 }
-                match crossing(&pts.tri(&tris[f]), p) {
+                match crossing(&self.corners[k], p) {
                     Some(c) => w += i64::from(c),
                     None => return None,
                 }
@@ -622,8 +675,6 @@ fn crossing(t: &[P3; 3], p: P3) -> Option<i8> {
 /// The join of the tree with itself.
 struct Ctx<'a> {
     index: &'a Index,
-    pts: Points<'a>,
-    tris: &'a [[u32; 3]],
 }
 
 impl Ctx<'_> {
@@ -637,14 +688,16 @@ impl Ctx<'_> {
                     RTreeNode::Leaf(l) => self.leaf_self(l),
                 };
                 for d in &ch[i + 1..] {
-                    f = f.merge(self.join_two(c, d));
+                    f = f.merge(self.join_two(c, d, 0));
                 }
                 f
             })
             .reduce(Found::default, Found::merge)
     }
 
-    fn join_two(&self, a: &RTreeNode<Leaf>, b: &RTreeNode<Leaf>) -> Found {
+    /// The pairs between two subtrees; in parallel near the root (`depth` < 2), where the
+    /// subtrees are large.
+    fn join_two(&self, a: &RTreeNode<Leaf>, b: &RTreeNode<Leaf>, depth: u32) -> Found {
         let (ea, eb) = (node_envelope(a), node_envelope(b));
         if !ea.intersects(&eb) {
             return Found::default();
@@ -654,23 +707,35 @@ impl Ctx<'_> {
             (RTreeNode::Parent(p), RTreeNode::Leaf(_)) => p
                 .children()
                 .iter()
-                .map(|c| self.join_two(c, b))
+                .map(|c| self.join_two(c, b, depth + 1))
                 .fold(Found::default(), Found::merge),
             (RTreeNode::Leaf(_), RTreeNode::Parent(q)) => q
                 .children()
                 .iter()
-                .map(|c| self.join_two(a, c))
+                .map(|c| self.join_two(a, c, depth + 1))
                 .fold(Found::default(), Found::merge),
-            (RTreeNode::Parent(p), RTreeNode::Parent(q)) => p
-                .children()
-                .par_iter()
-                .map(|c| {
+            (RTreeNode::Parent(p), RTreeNode::Parent(q)) => {
+                let row = |c: &RTreeNode<Leaf>| {
+                    if !node_envelope(c).intersects(&eb) {
+                        return Found::default();
+                    }
                     q.children()
                         .iter()
-                        .map(|d| self.join_two(c, d))
+                        .map(|d| self.join_two(c, d, depth + 1))
                         .fold(Found::default(), Found::merge)
-                })
-                .reduce(Found::default, Found::merge),
+                };
+                if depth < 2 {
+                    p.children()
+                        .par_iter()
+                        .map(row)
+                        .reduce(Found::default, Found::merge)
+                } else {
+                    p.children()
+                        .iter()
+                        .map(row)
+                        .fold(Found::default(), Found::merge)
+                }
+            }
         }
     }
 
@@ -688,8 +753,9 @@ impl Ctx<'_> {
     fn leaf_pair(&self, a: &Leaf, b: &Leaf) -> Found {
         let mut f = Found::default();
         let boxes = &self.index.boxes;
-        for i in a.start as usize..(a.start + a.len) as usize {
-            if !boxes[i].intersects(&b.envelope) {
+        let (start, end) = (a.start as usize, (a.start + a.len) as usize);
+        for (i, bi) in boxes.iter().enumerate().take(end).skip(start) {
+            if !bi.intersects(&b.envelope) {
                 continue;
             }
             for j in b.start as usize..(b.start + b.len) as usize {
@@ -706,9 +772,8 @@ impl Ctx<'_> {
         if !ix.boxes[i].intersects(&ix.boxes[j]) {
             return;
         }
-        let (fi, fj) = (ix.order[i], ix.order[j]);
-        let (ti, tj) = (&self.tris[fi as usize], &self.tris[fj as usize]);
-        let (mut p, mut q) = (self.pts.tri(ti), self.pts.tri(tj));
+        let (ti, tj) = (&ix.indices[i], &ix.indices[j]);
+        let (mut p, mut q) = (ix.corners[i], ix.corners[j]);
         let both = ix.boxes[i].merged(&ix.boxes[j]);
         let (lo, hi) = (both.lower(), both.upper());
         let extent = (0..3).fold(0.0f64, |m, k| m.max(f64::from(hi[k]) - f64::from(lo[k])));
@@ -718,8 +783,9 @@ impl Ctx<'_> {
             p = [all[0], all[1], all[2]];
             q = [all[3], all[4], all[5]];
         }
-        let (kp, kq) = (ix.axis[fi as usize], ix.axis[fj as usize]);
+        let (kp, kq) = (ix.axes[i], ix.axes[j]);
         if faces_cross(&p, &q, ti, tj, kp, kq) {
+            let (fi, fj) = (ix.order[i], ix.order[j]);
             found.count += 1;
             let pair = (fi.min(fj), fi.max(fj));
             found.first = Some(found.first.map_or(pair, |x| x.min(pair)));
@@ -821,7 +887,7 @@ pub(crate) fn probe_vertices(
         .with_min_len(1024)
         .for_each(|(f, t)| {
             let c = comp[f];
-            if c == UNUSED || index.axis[f] == u8::MAX {
+            if c == UNUSED || !index.used[f] {
                 return;
             }
             if let Some(&v) = t.iter().find(|&&v| owner[v as usize] == c) {
@@ -905,6 +971,33 @@ mod tests {
         let b = [[1.0, 0.0, 1.0], [1.0, 0.0, -1.0], [1.0, 1.0, 0.0]];
         let sum = crossing(&a, [0.0; 3]).unwrap() + crossing(&b, [0.0; 3]).unwrap();
         assert_eq!(sum.abs(), 1);
+    }
+
+    #[test]
+    fn plane_filter_agrees_with_the_exact_predicate() {
+        // Points on, one ulp off, and far from a tilted plane.
+        let t = [[0.1, 0.2, 0.3], [1.7, 0.4, 0.9], [0.3, 1.9, 1.3]];
+        let mut ds = Vec::new();
+        for k in 0..200 {
+            let s = k as f64 / 199.0;
+            let on =
+                [0, 1, 2].map(|i| t[0][i] + s * (t[1][i] - t[0][i]) + 0.3 * (t[2][i] - t[0][i]));
+            ds.push(on);
+            ds.push([on[0], on[1], on[2] + f64::EPSILON]);
+            ds.push([on[0], on[1] + 1e-3, on[2]]);
+        }
+        for d in ds {
+            assert_eq!(o3_plane(&t, [d])[0], o3(t[0], t[1], t[2], d), "{d:?}");
+        }
+    }
+
+    #[test]
+    fn outward_rounding_to_f32() {
+        for x in [0.1, -0.1, 1e-50, -1e-50, 1e300, -1e300, 0.0, 3.0] {
+            assert!(f64::from(down32(x)) <= x && x <= f64::from(up32(x)), "{x}");
+        }
+        assert_eq!(step_up(1.0), 1.0 + f32::EPSILON);
+        assert_eq!(-step_up(-1.0), 1.0 - f32::EPSILON / 2.0);
     }
 
     #[test]
