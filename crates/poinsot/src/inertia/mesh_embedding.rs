@@ -315,6 +315,41 @@ fn faces_cross(p: &[P3; 3], q: &[P3; 3], pi: &[u32; 3], qi: &[u32; 3], kp: u8, k
         }
     }
     let shared = &shared[..n];
+    // Cheap exits first, in the projection along p's drop axis (injective on p's plane, so
+    // a point where the faces meet projects to a point of both projections; orient2d is fast
+    // unless three projected points are collinear): flat regions, where the exact
+    // orient3d would have to prove a zero, are settled here.
+    match n {
+        0 if separated2(p, q, kp) => return false,
+        1 => {
+            let (i, j) = shared[0];
+            let (v, p1, p2) = (p[i], p[(i + 1) % 3], p[(i + 2) % 3]);
+            let (q1, q2) = (q[(j + 1) % 3], q[(j + 2) % 3]);
+            let s = o2(v, p1, p2, kp);
+            // Both q1, q2 strictly beyond the line v–p1, or strictly beyond the line v–p2: the
+            // wedges at v touch only at v.
+            if (o2(v, p1, q1, kp) == -s && o2(v, p1, q2, kp) == -s)
+                || (o2(v, p2, q1, kp) == s && o2(v, p2, q2, kp) == s)
+            {
+                return false;
+            }
+        }
+        2 => {
+            // The third vertices strictly on opposite sides of the shared edge: not folded.
+            let pk = (0..3)
+                .find(|&i| !shared.iter().any(|s| s.0 == i))
+                .unwrap_or(0);
+            let qk = (0..3)
+                .find(|&j| !shared.iter().any(|s| s.1 == j))
+                .unwrap_or(0);
+            let (a, b) = (p[shared[0].0], p[shared[1].0]);
+            let (sp, sq) = (o2(a, b, p[pk], kp), o2(a, b, q[qk], kp));
+            if sp != 0 && sq == -sp {
+                return false;
+            }
+        }
+        _ => {}
+    }
     match n {
         0 => triangles_meet(p, q, kp, kq),
         1 => {
@@ -339,6 +374,28 @@ fn faces_cross(p: &[P3; 3], q: &[P3; 3], pi: &[u32; 3], qi: &[u32; 3], kp: u8, k
         // The same three vertices: the two sides of a flat, closed sliver of zero volume.
         _ => false,
     }
+}
+
+/// The projections along `k` (`p`'s drop axis) of `p` and `q` are strictly separated by a
+/// line through an edge of one of them: then the triangles cannot meet.
+fn separated2(p: &[P3; 3], q: &[P3; 3], k: u8) -> bool {
+    let sp = o2(p[0], p[1], p[2], k);
+    for i in 0..3 {
+        let (a, b) = (p[i], p[(i + 1) % 3]);
+        if q.iter().all(|x| o2(a, b, *x, k) == -sp) {
+            return true;
+        }
+    }
+    let sq = o2(q[0], q[1], q[2], k);
+    if sq != 0 {
+        for j in 0..3 {
+            let (a, b) = (q[j], q[(j + 1) % 3]);
+            if p.iter().all(|x| o2(a, b, *x, k) == -sq) {
+                return true;
+            }
+        }
+    }
+    false
 }
 
 /// Closed triangles with no vertex in common meet.
@@ -580,7 +637,7 @@ impl Index {
         let f = if self.tree.size() == 0 {
             Found::default()
         } else {
-            ctx.join_self(self.tree.root())
+            ctx.join_self(self.tree.root(), 0)
         };
         (f.count, f.first)
     }
@@ -678,24 +735,33 @@ struct Ctx<'a> {
 }
 
 impl Ctx<'_> {
-    fn join_self(&self, node: &ParentNode<Leaf>) -> Found {
+    /// The pairs within a subtree; in parallel near the root (`depth` < 3).
+    fn join_self(&self, node: &ParentNode<Leaf>, depth: u32) -> Found {
         let ch = node.children();
-        ch.par_iter()
-            .enumerate()
-            .map(|(i, c)| {
-                let mut f = match c {
-                    RTreeNode::Parent(p) => self.join_self(p),
-                    RTreeNode::Leaf(l) => self.leaf_self(l),
-                };
-                for d in &ch[i + 1..] {
-                    f = f.merge(self.join_two(c, d, 0));
-                }
-                f
-            })
-            .reduce(Found::default, Found::merge)
+        let one = |(i, c): (usize, &RTreeNode<Leaf>)| {
+            let mut f = match c {
+                RTreeNode::Parent(p) => self.join_self(p, depth + 1),
+                RTreeNode::Leaf(l) => self.leaf_self(l),
+            };
+            for d in &ch[i + 1..] {
+                f = f.merge(self.join_two(c, d, depth));
+            }
+            f
+        };
+        if depth < 3 {
+            ch.par_iter()
+                .enumerate()
+                .map(one)
+                .reduce(Found::default, Found::merge)
+        } else {
+            ch.iter()
+                .enumerate()
+                .map(one)
+                .fold(Found::default(), Found::merge)
+        }
     }
 
-    /// The pairs between two subtrees; in parallel near the root (`depth` < 2), where the
+    /// The pairs between two subtrees; in parallel near the root (`depth` < 3), where the
     /// subtrees are large.
     fn join_two(&self, a: &RTreeNode<Leaf>, b: &RTreeNode<Leaf>, depth: u32) -> Found {
         let (ea, eb) = (node_envelope(a), node_envelope(b));
@@ -724,7 +790,7 @@ impl Ctx<'_> {
                         .map(|d| self.join_two(c, d, depth + 1))
                         .fold(Found::default(), Found::merge)
                 };
-                if depth < 2 {
+                if depth < 3 {
                     p.children()
                         .par_iter()
                         .map(row)
@@ -971,6 +1037,46 @@ mod tests {
         let b = [[1.0, 0.0, 1.0], [1.0, 0.0, -1.0], [1.0, 1.0, 0.0]];
         let sum = crossing(&a, [0.0; 3]).unwrap() + crossing(&b, [0.0; 3]).unwrap();
         assert_eq!(sum.abs(), 1);
+    }
+
+    use proptest::prelude::*;
+
+    fn small_point() -> impl Strategy<Value = P3> {
+        proptest::array::uniform3(-3i32..=3).prop_map(|a| a.map(f64::from))
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 4000, rng_seed: proptest::test_runner::RngSeed::Fixed(20261123), ..ProptestConfig::default() })]
+
+        /// On small integer coordinates (coplanar, collinear and touching configurations are
+        /// frequent) the cheap exits of `faces_cross` agree with the full tests, and the
+        /// answer does not depend on the order of the faces or the rotation of their corners.
+        #[test]
+        fn narrow_phase_is_consistent(a in small_point(), b in small_point(), c in small_point(),
+                                      d in small_point(), e in small_point(), f in small_point(),
+                                      share in 0usize..3, rot in 0usize..3) {
+            let p = [a, b, c];
+            let Some(kp) = drop_axis(&p) else { return Ok(()) };
+            // q shares `share` leading corners of p (reversed, as a consistent neighbour would).
+            let (q, qi): ([P3; 3], [u32; 3]) = match share {
+                0 => ([d, e, f], [3, 4, 5]),
+                1 => ([a, e, f], [0, 4, 5]),
+                _ => ([b, a, f], [1, 0, 5]),
+            };
+            let Some(kq) = drop_axis(&q) else { return Ok(()) };
+            let pi = [0u32, 1, 2];
+            let got = faces_cross(&p, &q, &pi, &qi, kp, kq);
+            let full = match share {
+                0 => triangles_meet(&p, &q, kp, kq),
+                1 => meet_beyond_vertex(&p, &q, kp, kq),
+                _ => o3(a, b, c, f) == 0 && o2(a, b, c, kp) == o2(a, b, f, kp),
+            };
+            prop_assert_eq!(got, full);
+            prop_assert_eq!(faces_cross(&q, &p, &qi, &pi, kq, kp), got);
+            let r = |t: [P3; 3]| [t[rot], t[(rot + 1) % 3], t[(rot + 2) % 3]];
+            let ri = |t: [u32; 3]| [t[rot], t[(rot + 1) % 3], t[(rot + 2) % 3]];
+            prop_assert_eq!(faces_cross(&r(p), &q, &ri(pi), &qi, kp, kq), got);
+        }
     }
 
     #[test]
