@@ -28,14 +28,12 @@ fn torque_from(kind: &str, vector: [f64; 3], scalar: f64) -> PyResult<Torque> {
         "gravity_gradient" => Torque::GravityGradient {
             mean_motion: scalar,
         },
-        _ => {
-            return Err(invalid(
-                "torque",
-                format!(
+        _ => return Err(invalid(
+            "torque",
+            format!(
                 "must be none, body, space, gravity, gravity_gradient or callback, got {kind:?}"
             ),
-            ))
-        }
+        )),
     };
     t.validate().py()?;
     Ok(t)

@@ -17,42 +17,21 @@ fn gravity(name: &str) -> PyResult<Gravity> {
     match name {
         "uniform" => Ok(Gravity::Uniform),
         "inverse-square" => Ok(Gravity::InverseSquare),
-        _ => Err(invalid(
-            "gravity",
-            format!("must be 'uniform' or 'inverse-square', got {name:?}"),
-        )),
+        _ => Err(invalid("gravity", format!("must be 'uniform' or 'inverse-square', got {name:?}"))),
     }
 }
 
 /// A per-latitude scalar quantity over an array of latitudes.
-fn per_latitude<'py>(
-    py: Python<'py>,
-    latitude: &PyReadonlyArray1<'py, f64>,
-    f: impl Fn(f64) -> poinsot::Result<f64>,
-) -> PyResult<Bound<'py, PyArray1<f64>>> {
-    let out: Vec<f64> = vec_in(latitude)
-        .into_iter()
-        .map(f)
-        .collect::<poinsot::Result<_>>()
-        .py()?;
+fn per_latitude<'py>(py: Python<'py>, latitude: &PyReadonlyArray1<'py, f64>, f: impl Fn(f64) -> poinsot::Result<f64>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    let out: Vec<f64> = vec_in(latitude).into_iter().map(f).collect::<poinsot::Result<_>>().py()?;
     Ok(PyArray1::from_vec(py, out))
 }
 
 /// ω in ENU components, (N, 3), at (N,) latitudes (rad).
 #[pyfunction]
-fn earth_omega_enu<'py>(
-    py: Python<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    latitude: PyReadonlyArray1<'py, f64>,
-) -> PyResult<Bound<'py, PyArray2<f64>>> {
+fn earth_omega_enu<'py>(py: Python<'py>, rotation_rate: f64, radius: f64, g: f64, latitude: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let e = earth(rotation_rate, radius, g)?;
-    let rows: Vec<[f64; 3]> = vec_in(&latitude)
-        .into_iter()
-        .map(|l| e.omega_enu(l).map(|w| [w.x, w.y, w.z]))
-        .collect::<poinsot::Result<_>>()
-        .py()?;
+    let rows: Vec<[f64; 3]> = vec_in(&latitude).into_iter().map(|l| e.omega_enu(l).map(|w| [w.x, w.y, w.z])).collect::<poinsot::Result<_>>().py()?;
     Ok(rows_out(py, &rows))
 }
 
@@ -65,15 +44,9 @@ fn earth_effective_gravity<'py>(
     radius: f64,
     g: f64,
     latitude: PyReadonlyArray1<'py, f64>,
-) -> PyResult<(
-    Bound<'py, PyArray2<f64>>,
-    Bound<'py, PyArray1<f64>>,
-    Bound<'py, PyArray1<f64>>,
-    Bound<'py, PyArray2<f64>>,
-)> {
+) -> PyResult<(Bound<'py, PyArray2<f64>>, Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>, Bound<'py, PyArray2<f64>>)> {
     let e = earth(rotation_rate, radius, g)?;
-    let (mut vecs, mut mags, mut devs, mut cents) =
-        (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let (mut vecs, mut mags, mut devs, mut cents) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
     for l in vec_in(&latitude) {
         let eg = e.effective_gravity(l).py()?;
         let c = e.centrifugal_acceleration(l).py()?;
@@ -82,12 +55,7 @@ fn earth_effective_gravity<'py>(
         devs.push(eg.deviation);
         cents.push([c.x, c.y, c.z]);
     }
-    Ok((
-        rows_out(py, &vecs),
-        PyArray1::from_vec(py, mags),
-        PyArray1::from_vec(py, devs),
-        rows_out(py, &cents),
-    ))
+    Ok((rows_out(py, &vecs), PyArray1::from_vec(py, mags), PyArray1::from_vec(py, devs), rows_out(py, &cents)))
 }
 
 /// −2 ω × v (N, 3) for (N,) latitudes and (N, 3) ENU velocities.
@@ -108,14 +76,12 @@ fn earth_coriolis_acceleration<'py>(
     }
     let mut rows = Vec::with_capacity(lats.len());
     for (l, v) in lats.iter().zip(&vels) {
-        let a = e
-            .coriolis_acceleration(*l, &Vec3::new(v[0], v[1], v[2]))
-            .map_err(|mut err| {
-                if err.argument == "velocity" {
-                    err.argument = "velocity_enu".into();
-                }
-                err
-            });
+        let a = e.coriolis_acceleration(*l, &Vec3::new(v[0], v[1], v[2])).map_err(|mut err| {
+            if err.argument == "velocity" {
+                err.argument = "velocity_enu".into();
+            }
+            err
+        });
         let a = a.py()?;
         rows.push([a.x, a.y, a.z]);
     }
@@ -124,23 +90,13 @@ fn earth_coriolis_acceleration<'py>(
 
 /// A scalar per latitude: "coriolis_parameter", "foucault_rate" or "inertial_period".
 #[pyfunction]
-fn earth_latitude_scalar<'py>(
-    py: Python<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    quantity: &str,
-    latitude: PyReadonlyArray1<'py, f64>,
-) -> PyResult<Bound<'py, PyArray1<f64>>> {
+fn earth_latitude_scalar<'py>(py: Python<'py>, rotation_rate: f64, radius: f64, g: f64, quantity: &str, latitude: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyArray1<f64>>> {
     let e = earth(rotation_rate, radius, g)?;
     match quantity {
         "coriolis_parameter" => per_latitude(py, &latitude, |l| e.coriolis_parameter(l)),
         "foucault_rate" => per_latitude(py, &latitude, |l| e.foucault_rate(l)),
         "inertial_period" => per_latitude(py, &latitude, |l| e.inertial_period(l)),
-        _ => Err(invalid(
-            "quantity",
-            format!("unknown quantity {quantity:?}"),
-        )),
+        _ => Err(invalid("quantity", format!("unknown quantity {quantity:?}"))),
     }
 }
 
@@ -178,20 +134,8 @@ fn earth_deflection<'py>(
     Ok(PyArray1::from_vec(py, out))
 }
 
-fn model(
-    gravity_name: &str,
-    rotation: bool,
-    centrifugal: bool,
-    rtol: f64,
-    atol: f64,
-    max_steps: usize,
-) -> PyResult<FallModel> {
-    Ok(FallModel {
-        gravity: gravity(gravity_name)?,
-        rotation,
-        centrifugal,
-        options: options(rtol, atol, max_steps, true),
-    })
+fn model(gravity_name: &str, rotation: bool, centrifugal: bool, rtol: f64, atol: f64, max_steps: usize) -> PyResult<FallModel> {
+    Ok(FallModel { gravity: gravity(gravity_name)?, rotation, centrifugal, options: options(rtol, atol, max_steps, true) })
 }
 
 /// The exact drop: {"time", "east", "north", "t", "states", ...}.
@@ -247,18 +191,9 @@ fn earth_projectile<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let e = earth(rotation_rate, radius, g)?;
     let m = model(gravity, rotation, centrifugal, rtol, atol, max_steps)?;
-    let fl = py
-        .detach(|| e.projectile(speed, elevation, azimuth, latitude, height, &m))
-        .py()?;
+    let fl = py.detach(|| e.projectile(speed, elevation, azimuth, latitude, height, &m)).py()?;
     let d = solution_dict(py, &fl.solution, &even_times(0.0, fl.time, samples))?;
-    for (k, v) in [
-        ("time", fl.time),
-        ("east", fl.east),
-        ("north", fl.north),
-        ("range", fl.range),
-        ("downrange", fl.downrange),
-        ("drift", fl.drift),
-    ] {
+    for (k, v) in [("time", fl.time), ("east", fl.east), ("north", fl.north), ("range", fl.range), ("downrange", fl.downrange), ("drift", fl.drift)] {
         d.set_item(k, v)?;
     }
     Ok(d)
@@ -266,18 +201,8 @@ fn earth_projectile<'py>(
 
 /// The released state (6,) of a Foucault pendulum.
 #[pyfunction]
-fn earth_foucault_release<'py>(
-    py: Python<'py>,
-    length: f64,
-    amplitude: f64,
-    azimuth: f64,
-) -> PyResult<Bound<'py, PyArray1<f64>>> {
-    Ok(PyArray1::from_vec(
-        py,
-        Earth::foucault_release(length, amplitude, azimuth)
-            .py()?
-            .to_vec(),
-    ))
+fn earth_foucault_release<'py>(py: Python<'py>, length: f64, amplitude: f64, azimuth: f64) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    Ok(PyArray1::from_vec(py, Earth::foucault_release(length, amplitude, azimuth).py()?.to_vec()))
 }
 
 /// One stretch of a Foucault run: {"t", "states", "turn_times", "turn_angles", "final_state", ...}.
@@ -303,48 +228,29 @@ fn earth_foucault<'py>(
     let s0 = array_in::<6>("state0", &state0)?;
     let times = vec_in(&times);
     let opts = options(rtol, atol, max_steps, false);
-    let run = py
-        .detach(|| e.foucault(latitude, length, s0, t0, t_end, &times, &opts))
-        .py()?;
+    let run = py.detach(|| e.foucault(latitude, length, s0, t0, t_end, &times, &opts)).py()?;
     let d = PyDict::new(py);
     d.set_item("t", PyArray1::from_vec(py, run.t))?;
     d.set_item("states", rows_out(py, &run.states))?;
     d.set_item("turn_times", PyArray1::from_vec(py, run.turn_times))?;
     d.set_item("turn_angles", PyArray1::from_vec(py, run.turn_angles))?;
-    d.set_item(
-        "final_state",
-        PyArray1::from_vec(py, run.final_state.to_vec()),
-    )?;
+    d.set_item("final_state", PyArray1::from_vec(py, run.final_state.to_vec()))?;
     d.set_item("evaluations", run.stats.evaluations)?;
     Ok(d)
 }
 
 /// Jacobi's integral (N,) of (N, 6) ENU states at `latitude` (rad).
 #[pyfunction]
-fn earth_jacobi_integral<'py>(
-    py: Python<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    latitude: f64,
-    states: PyReadonlyArray2<'py, f64>,
-) -> PyResult<Bound<'py, PyArray1<f64>>> {
+fn earth_jacobi_integral<'py>(py: Python<'py>, rotation_rate: f64, radius: f64, g: f64, latitude: f64, states: PyReadonlyArray2<'py, f64>) -> PyResult<Bound<'py, PyArray1<f64>>> {
     let e = earth(rotation_rate, radius, g)?;
     let states = rows_in::<6>("states", &states)?;
-    let out: Vec<f64> = states
-        .iter()
-        .map(|s| e.jacobi_integral(latitude, s))
-        .collect::<poinsot::Result<_>>()
-        .py()?;
+    let out: Vec<f64> = states.iter().map(|s| e.jacobi_integral(latitude, s)).collect::<poinsot::Result<_>>().py()?;
     Ok(PyArray1::from_vec(py, out))
 }
 
 /// Least-squares rate (rad/s) of the swing-plane angle through the turning points.
 #[pyfunction]
-fn earth_fit_precession_rate(
-    turn_times: PyReadonlyArray1<'_, f64>,
-    turn_angles: PyReadonlyArray1<'_, f64>,
-) -> PyResult<f64> {
+fn earth_fit_precession_rate(turn_times: PyReadonlyArray1<'_, f64>, turn_angles: PyReadonlyArray1<'_, f64>) -> PyResult<f64> {
     fit_precession_rate(&vec_in(&turn_times), &vec_in(&turn_angles)).py()
 }
 
@@ -369,9 +275,7 @@ fn earth_inertial_oscillation<'py>(
     let v = array_in::<2>("velocity", &velocity)?;
     let times = vec_in(&times);
     let opts = options(rtol, atol, max_steps, false);
-    let run = py
-        .detach(|| e.inertial_oscillation(latitude, v, t_end, &times, &opts))
-        .py()?;
+    let run = py.detach(|| e.inertial_oscillation(latitude, v, t_end, &times, &opts)).py()?;
     let d = PyDict::new(py);
     d.set_item("t", PyArray1::from_vec(py, run.t))?;
     d.set_item("states", rows_out(py, &run.states))?;
@@ -402,20 +306,13 @@ fn earth_flow_into_low<'py>(
     let starts = rows_in::<2>("starts", &starts)?;
     let times = vec_in(&times);
     let opts = options(rtol, atol, max_steps, false);
-    let run = py
-        .detach(|| e.flow_into_low(latitude, &starts, strength, friction, t_end, &times, &opts))
-        .py()?;
+    let run = py.detach(|| e.flow_into_low(latitude, &starts, strength, friction, t_end, &times, &opts)).py()?;
     let d = PyDict::new(py);
     d.set_item("t", PyArray1::from_vec(py, run.t))?;
-    let parcels: Vec<Bound<'py, PyArray2<f64>>> =
-        run.parcels.iter().map(|p| rows_out(py, p)).collect();
+    let parcels: Vec<Bound<'py, PyArray2<f64>>> = run.parcels.iter().map(|p| rows_out(py, p)).collect();
     d.set_item("parcels", parcels)?;
     d.set_item("circulation", run.circulation)?;
-    let rows = |v: &Vec<Vec<f64>>| -> Vec<Bound<'py, PyArray1<f64>>> {
-        v.iter()
-            .map(|r| PyArray1::from_vec(py, r.clone()))
-            .collect()
-    };
+    let rows = |v: &Vec<Vec<f64>>| -> Vec<Bound<'py, PyArray1<f64>>> { v.iter().map(|r| PyArray1::from_vec(py, r.clone())).collect() };
     d.set_item("energy", rows(&run.energy))?;
     d.set_item("dissipated", rows(&run.dissipated))?;
     Ok(d)

@@ -6,11 +6,9 @@
 use std::cell::RefCell;
 
 use numpy::ndarray::Array2;
-use numpy::{
-    IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods,
-};
-use poinsot::frames::ParticleState;
+use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
 use poinsot::frames::{simulate_particle_at, FrameMotion, MovingFrame, SteadyMotion};
+use poinsot::frames::ParticleState;
 use poinsot::integrate::{Options, Scan, Solution};
 use poinsot::{Mat3, Vec3};
 use pyo3::prelude::*;
@@ -20,33 +18,18 @@ use crate::convert::{mat3, mat3_out, rows3, vec3, vec3_out};
 use crate::errors::{invalid, IntoPy};
 
 /// Rows of K floats → a new (N, K) numpy array.
-pub(crate) fn rows_out<'py, const K: usize>(
-    py: Python<'py>,
-    rows: &[[f64; K]],
-) -> Bound<'py, PyArray2<f64>> {
+pub(crate) fn rows_out<'py, const K: usize>(py: Python<'py>, rows: &[[f64; K]]) -> Bound<'py, PyArray2<f64>> {
     let flat: Vec<f64> = rows.iter().flat_map(|r| r.iter().copied()).collect();
-    Array2::from_shape_vec((rows.len(), K), flat)
-        .expect("rows have K columns")
-        .into_pyarray(py)
+    Array2::from_shape_vec((rows.len(), K), flat).expect("rows have K columns").into_pyarray(py)
 }
 
 /// An (N, K) float array → rows of K floats, naming `argument` on a shape error.
-pub(crate) fn rows_in<const K: usize>(
-    argument: &str,
-    a: &PyReadonlyArray2<'_, f64>,
-) -> PyResult<Vec<[f64; K]>> {
+pub(crate) fn rows_in<const K: usize>(argument: &str, a: &PyReadonlyArray2<'_, f64>) -> PyResult<Vec<[f64; K]>> {
     let shape = a.shape();
     if shape.len() != 2 || shape[1] != K {
-        return Err(invalid(
-            argument,
-            format!("must have shape (N, {K}), got {shape:?}"),
-        ));
+        return Err(invalid(argument, format!("must have shape (N, {K}), got {shape:?}")));
     }
-    Ok(a.as_array()
-        .rows()
-        .into_iter()
-        .map(|r| std::array::from_fn(|i| r[i]))
-        .collect())
+    Ok(a.as_array().rows().into_iter().map(|r| std::array::from_fn(|i| r[i])).collect())
 }
 
 /// A 1-D float array → a vector.
@@ -55,16 +38,10 @@ pub(crate) fn vec_in(a: &PyReadonlyArray1<'_, f64>) -> Vec<f64> {
 }
 
 /// A length-K float array → `[f64; K]`.
-pub(crate) fn array_in<const K: usize>(
-    argument: &str,
-    a: &PyReadonlyArray1<'_, f64>,
-) -> PyResult<[f64; K]> {
+pub(crate) fn array_in<const K: usize>(argument: &str, a: &PyReadonlyArray1<'_, f64>) -> PyResult<[f64; K]> {
     let v = vec_in(a);
     if v.len() != K {
-        return Err(invalid(
-            argument,
-            format!("must have shape ({K},), got ({},)", v.len()),
-        ));
+        return Err(invalid(argument, format!("must have shape ({K},), got ({},)", v.len())));
     }
     Ok(std::array::from_fn(|i| v[i]))
 }
@@ -80,23 +57,14 @@ fn a3(v: &Vec3) -> [f64; 3] {
 /// 15 floats and a row-major attitude → a checked core frame.
 fn frame_from(s: &[f64], attitude: [[f64; 3]; 3]) -> PyResult<MovingFrame> {
     if s.len() != 15 {
-        return Err(invalid(
-            "frame",
-            format!("must hold 15 numbers, got {}", s.len()),
-        ));
+        return Err(invalid("frame", format!("must hold 15 numbers, got {}", s.len())));
     }
     let v = |i: usize| Vec3::new(s[i], s[i + 1], s[i + 2]);
     let att = Mat3::from_fn(|i, j| attitude[i][j]);
-    MovingFrame::new(v(0), v(3), v(6), v(9), v(12))
-        .py()?
-        .with_attitude(att)
-        .py()
+    MovingFrame::new(v(0), v(3), v(6), v(9), v(12)).py()?.with_attitude(att).py()
 }
 
-fn frame_arg(
-    frame: &PyReadonlyArray1<'_, f64>,
-    attitude: &PyReadonlyArray2<'_, f64>,
-) -> PyResult<MovingFrame> {
+fn frame_arg(frame: &PyReadonlyArray1<'_, f64>, attitude: &PyReadonlyArray2<'_, f64>) -> PyResult<MovingFrame> {
     frame_from(&vec_in(frame), mat3("attitude", attitude)?)
 }
 
@@ -109,24 +77,14 @@ fn transform_rows<'py>(
     acceleration: &PyReadonlyArray2<'py, f64>,
     transform: impl Fn(&Vec3, &Vec3, &Vec3) -> [Vec3; 8],
 ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
-    let (r, v, a) = (
-        rows3("position", position)?,
-        rows3("velocity", velocity)?,
-        rows3("acceleration", acceleration)?,
-    );
+    let (r, v, a) = (rows3("position", position)?, rows3("velocity", velocity)?, rows3("acceleration", acceleration)?);
     let n = r.len();
     if v.len() != n || a.len() != n {
-        return Err(invalid(
-            "velocity",
-            "position, velocity and acceleration must have the same number of rows",
-        ));
+        return Err(invalid("velocity", "position, velocity and acceleration must have the same number of rows"));
     }
     let mut out: Vec<Vec<[f64; 3]>> = (0..8).map(|_| Vec::with_capacity(n)).collect();
     for i in 0..n {
-        for (k, x) in transform(&v3(&r[i]), &v3(&v[i]), &v3(&a[i]))
-            .iter()
-            .enumerate()
-        {
+        for (k, x) in transform(&v3(&r[i]), &v3(&v[i]), &v3(&a[i])).iter().enumerate() {
             out[k].push(a3(x));
         }
     }
@@ -149,16 +107,7 @@ fn frame_to_fixed<'py>(
     transform_rows(py, &position, &velocity, &acceleration, |r, v, a| {
         let m = f.to_fixed(r, v, a);
         let t = m.terms;
-        [
-            m.position,
-            m.velocity,
-            m.acceleration,
-            t.relative,
-            t.origin,
-            t.coriolis,
-            t.centripetal,
-            t.euler,
-        ]
+        [m.position, m.velocity, m.acceleration, t.relative, t.origin, t.coriolis, t.centripetal, t.euler]
     })
 }
 
@@ -178,16 +127,7 @@ fn frame_to_moving<'py>(
     transform_rows(py, &position, &velocity, &acceleration, |r, v, a| {
         let m = f.to_moving(r, v, a);
         let t = m.terms;
-        [
-            m.position,
-            m.velocity,
-            m.acceleration,
-            t.inertial,
-            t.translational,
-            t.coriolis,
-            t.centrifugal,
-            t.euler,
-        ]
+        [m.position, m.velocity, m.acceleration, t.inertial, t.translational, t.coriolis, t.centrifugal, t.euler]
     })
 }
 
@@ -207,18 +147,12 @@ fn frame_fictitious_forces<'py>(
     let (r, v) = (rows3("position", &position)?, rows3("velocity", &velocity)?);
     let n = r.len();
     if v.len() != n || m.len() != n {
-        return Err(invalid(
-            "velocity",
-            "mass, position and velocity must have the same number of rows",
-        ));
+        return Err(invalid("velocity", "mass, position and velocity must have the same number of rows"));
     }
     let mut out: Vec<Vec<[f64; 3]>> = (0..4).map(|_| Vec::with_capacity(n)).collect();
     for i in 0..n {
         let ff = f.fictitious_forces(m[i], &v3(&r[i]), &v3(&v[i])).py()?;
-        for (k, x) in [ff.translational, ff.coriolis, ff.centrifugal, ff.euler]
-            .iter()
-            .enumerate()
-        {
+        for (k, x) in [ff.translational, ff.coriolis, ff.centrifugal, ff.euler].iter().enumerate() {
             out[k].push(a3(x));
         }
     }
@@ -227,27 +161,14 @@ fn frame_fictitious_forces<'py>(
 
 /// Integrator options from the Python keywords.
 pub(crate) fn options(rtol: f64, atol: f64, max_steps: usize, dense: bool) -> Options {
-    Options {
-        rtol,
-        atol,
-        max_steps,
-        dense,
-        ..Options::default()
-    }
+    Options { rtol, atol, max_steps, dense, ..Options::default() }
 }
 
 /// The solution's samples at `times` (or every step if `times` is empty) as a dict
 /// {"t", "states", "accepted", "rejected", "evaluations"}.
-pub(crate) fn solution_dict<'py>(
-    py: Python<'py>,
-    sol: &Solution<ParticleState>,
-    times: &[f64],
-) -> PyResult<Bound<'py, PyDict>> {
-    let (t, states): (Vec<f64>, Vec<ParticleState>) = if times.is_empty() {
-        (sol.t.clone(), sol.y.clone())
-    } else {
-        (times.to_vec(), sol.sample(times).py()?)
-    };
+pub(crate) fn solution_dict<'py>(py: Python<'py>, sol: &Solution<ParticleState>, times: &[f64]) -> PyResult<Bound<'py, PyDict>> {
+    let (t, states): (Vec<f64>, Vec<ParticleState>) =
+        if times.is_empty() { (sol.t.clone(), sol.y.clone()) } else { (times.to_vec(), sol.sample(times).py()?) };
     let d = PyDict::new(py);
     d.set_item("t", PyArray1::from_vec(py, t))?;
     d.set_item("states", rows_out(py, &states))?;
@@ -277,10 +198,7 @@ impl FrameMotion for PyFrame<'_, '_> {
             Ok(f) => f,
             Err(e) => {
                 self.error.borrow_mut().get_or_insert(e);
-                MovingFrame {
-                    acceleration: Vec3::repeat(f64::NAN),
-                    ..MovingFrame::default()
-                }
+                MovingFrame { acceleration: Vec3::repeat(f64::NAN), ..MovingFrame::default() }
             }
         }
     }
@@ -319,14 +237,10 @@ fn frame_simulate_particle<'py>(
     // The frame travels packed: 15 state numbers then the attitude, row-major.
     let packed = vec_in(&frame);
     if packed.len() != 24 {
-        return Err(invalid(
-            "frame",
-            format!("must hold 24 numbers, got {}", packed.len()),
-        ));
+        return Err(invalid("frame", format!("must hold 24 numbers, got {}", packed.len())));
     }
     let steady = || -> PyResult<SteadyMotion> {
-        let att: [[f64; 3]; 3] =
-            std::array::from_fn(|i| std::array::from_fn(|j| packed[15 + 3 * i + j]));
+        let att: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| packed[15 + 3 * i + j]));
         SteadyMotion::new(frame_from(&packed[..15], att)?).py()
     };
     let times = match &times {
@@ -339,19 +253,7 @@ fn frame_simulate_particle<'py>(
         let motion = steady()?;
         // Release the GIL only for long outputs: for a handful of samples the release costs
         // more than it frees.
-        let run = || {
-            simulate_particle_at(
-                &motion,
-                mass,
-                r0,
-                v0,
-                t0,
-                t_end,
-                &times,
-                |_t, _r, _v| f_const,
-                &opts,
-            )
-        };
+        let run = || simulate_particle_at(&motion, mass, r0, v0, t0, t_end, &times, |_t, _r, _v| f_const, &opts);
         if times.len() > 64 {
             py.detach(run)
         } else {
@@ -361,10 +263,7 @@ fn frame_simulate_particle<'py>(
         let force_call = |t: f64, r: &Vec3, v: &Vec3| -> Vec3 {
             match &force_fn {
                 None => f_const,
-                Some(func) => match func
-                    .call1((t, r.x, r.y, r.z, v.x, v.y, v.z))
-                    .and_then(|o| o.extract::<(f64, f64, f64)>())
-                {
+                Some(func) => match func.call1((t, r.x, r.y, r.z, v.x, v.y, v.z)).and_then(|o| o.extract::<(f64, f64, f64)>()) {
                     Ok((a, b, c)) => f_const + Vec3::new(a, b, c),
                     Err(e) => {
                         error.borrow_mut().get_or_insert(e);
@@ -375,11 +274,7 @@ fn frame_simulate_particle<'py>(
         };
         match &frame_fn {
             Some(func) => {
-                let motion = PyFrame {
-                    py,
-                    func,
-                    error: &error,
-                };
+                let motion = PyFrame { py, func, error: &error };
                 simulate_particle_at(&motion, mass, r0, v0, t0, t_end, &times, force_call, &opts)
             }
             None => {
@@ -399,15 +294,7 @@ pub(crate) fn even_times(t0: f64, t_end: f64, n: usize) -> Vec<f64> {
     if n < 2 {
         return vec![t_end];
     }
-    (0..n)
-        .map(|i| {
-            if i + 1 == n {
-                t_end
-            } else {
-                t0 + (t_end - t0) * i as f64 / (n - 1) as f64
-            }
-        })
-        .collect()
+    (0..n).map(|i| if i + 1 == n { t_end } else { t0 + (t_end - t0) * i as f64 / (n - 1) as f64 }).collect()
 }
 
 /// A scan's samples as (states (N, 6): position then velocity, evaluations).
@@ -430,16 +317,7 @@ fn frame_steady_at<'py>(
     let motion = SteadyMotion::new(frame_arg(&frame, &attitude)?).py()?;
     poinsot::error::check_finite("t", &[t]).py()?;
     let f = motion.at(t);
-    let vecs = [
-        f.origin,
-        f.velocity,
-        f.acceleration,
-        f.angular_velocity,
-        f.angular_acceleration,
-    ]
-    .iter()
-    .map(|v| vec3_out(py, a3(v)))
-    .collect();
+    let vecs = [f.origin, f.velocity, f.acceleration, f.angular_velocity, f.angular_acceleration].iter().map(|v| vec3_out(py, a3(v))).collect();
     let att: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| f.attitude[(i, j)]));
     Ok((vecs, mat3_out(py, att)))
 }

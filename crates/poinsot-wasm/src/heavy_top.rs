@@ -228,9 +228,7 @@ impl HeavyTop {
     /// dV/dθ (N·m, 2.113) at each θ of `theta` (rad). Errors name `theta`.
     #[wasm_bindgen(js_name = effectivePotentialDerivative)]
     pub fn effective_potential_derivative(&self, theta: &[f64]) -> Out<Vec<f64>> {
-        each_theta(theta, "dV/dtheta", |th| {
-            self.inner.effective_potential_derivative(th)
-        })
+        each_theta(theta, "dV/dtheta", |th| self.inner.effective_potential_derivative(th))
     }
 
     /// The exact Euler angles at the times `t` (s): N×3 numbers `[φ, θ, ψ]` per time (rad).
@@ -344,10 +342,7 @@ fn each_theta(
         .map(|&th| {
             let v = f(th)?;
             if v.is_nan() {
-                return Err(Failure::invalid(
-                    "theta",
-                    &format!("{what} is not a number"),
-                ));
+                return Err(Failure::invalid("theta", &format!("{what} is not a number")));
             }
             Ok(v)
         })

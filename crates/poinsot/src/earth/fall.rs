@@ -39,12 +39,7 @@ pub struct FallModel {
 
 impl Default for FallModel {
     fn default() -> Self {
-        Self {
-            gravity: Gravity::Uniform,
-            rotation: true,
-            centrifugal: true,
-            options: Options::with_tolerances(1e-12, 1e-12),
-        }
+        Self { gravity: Gravity::Uniform, rotation: true, centrifugal: true, options: Options::with_tolerances(1e-12, 1e-12) }
     }
 }
 
@@ -85,13 +80,7 @@ impl Earth {
     /// The acceleration (m/s², ENU) of a free particle at `r` with velocity `v` in the local
     /// frame whose angular velocity is `w` (ENU), under `model`.
     #[inline]
-    pub(crate) fn local_acceleration(
-        &self,
-        w: &Vec3,
-        r: &Vec3,
-        v: &Vec3,
-        model: &FallModel,
-    ) -> Vec3 {
+    pub(crate) fn local_acceleration(&self, w: &Vec3, r: &Vec3, v: &Vec3, model: &FallModel) -> Vec3 {
         let mut a = match model.gravity {
             Gravity::Uniform => Vec3::new(0.0, 0.0, -self.g),
             Gravity::InverseSquare => {
@@ -123,33 +112,16 @@ impl Earth {
 
     /// Integrates a particle in the local frame at `latitude` from `(position, velocity)`
     /// until it reaches the ground (or `t_end`).
-    fn fly(
-        &self,
-        latitude: f64,
-        position: Vec3,
-        velocity: Vec3,
-        t_end: f64,
-        model: &FallModel,
-    ) -> Result<Solution<ParticleState>> {
+    fn fly(&self, latitude: f64, position: Vec3, velocity: Vec3, t_end: f64, model: &FallModel) -> Result<Solution<ParticleState>> {
         let w = self.omega_enu(latitude)?;
-        let y0 = [
-            position.x, position.y, position.z, velocity.x, velocity.y, velocity.z,
-        ];
+        let y0 = [position.x, position.y, position.z, velocity.x, velocity.y, velocity.z];
         let rhs = |_t: f64, y: &ParticleState, dy: &mut ParticleState| {
             let r = Vec3::new(y[0], y[1], y[2]);
             let v = Vec3::new(y[3], y[4], y[5]);
             let a = self.local_acceleration(&w, &r, &v, model);
             *dy = [y[3], y[4], y[5], a.x, a.y, a.z];
         };
-        dop853_until(
-            rhs,
-            0.0,
-            y0,
-            t_end,
-            &model.options,
-            |_t, y: &ParticleState| self.height_above_ground(y, model),
-            Crossing::Falling,
-        )
+        dop853_until(rhs, 0.0, y0, t_end, &model.options, |_t, y: &ParticleState| self.height_above_ground(y, model), Crossing::Falling)
     }
 
     /// A body dropped from rest at `height` (m, > 0) above the ground at `latitude` (rad),
@@ -162,57 +134,29 @@ impl Earth {
         check_positive("height", height)?;
         check_latitude(latitude)?;
         let t0 = (2.0 * height / self.g).sqrt();
-        let sol = self.fly(
-            latitude,
-            Vec3::new(0.0, 0.0, height),
-            Vec3::zeros(),
-            4.0 * t0 + 1.0,
-            model,
-        )?;
+        let sol = self.fly(latitude, Vec3::new(0.0, 0.0, height), Vec3::zeros(), 4.0 * t0 + 1.0, model)?;
         let hit = sol.event.as_ref().ok_or_else(|| {
-            Error::diverged(
-                "t",
-                format!("the body did not land within t = {} s", 4.0 * t0 + 1.0),
-            )
+            Error::diverged("t", format!("the body did not land within t = {} s", 4.0 * t0 + 1.0))
         })?;
         let (time, east, north) = (hit.t, hit.y[0], hit.y[1]);
-        Ok(Fall {
-            time,
-            east,
-            north,
-            solution: sol,
-        })
+        Ok(Fall { time, east, north, solution: sol })
     }
 
     /// A projectile launched from `height` (m, ≥ 0) at `speed` (m/s, > 0), `elevation`
     /// (rad above the horizontal, in [−π/2, π/2]; > 0 from the ground) and `azimuth` (rad,
     /// clockwise from north: 0 north, π/2 east) at `latitude` (rad), flown until it lands.
     #[allow(clippy::too_many_arguments)]
-    pub fn projectile(
-        &self,
-        speed: f64,
-        elevation: f64,
-        azimuth: f64,
-        latitude: f64,
-        height: f64,
-        model: &FallModel,
-    ) -> Result<Flight> {
+    pub fn projectile(&self, speed: f64, elevation: f64, azimuth: f64, latitude: f64, height: f64, model: &FallModel) -> Result<Flight> {
         check_positive("speed", speed)?;
         check_finite("elevation", &[elevation])?;
         check_finite("azimuth", &[azimuth])?;
         check_non_negative("height", height)?;
         check_latitude(latitude)?;
         if elevation.abs() > std::f64::consts::FRAC_PI_2 {
-            return Err(Error::invalid(
-                "elevation",
-                format!("must be in [-pi/2, pi/2] rad, got {elevation}"),
-            ));
+            return Err(Error::invalid("elevation", format!("must be in [-pi/2, pi/2] rad, got {elevation}")));
         }
         if height == 0.0 && elevation <= 0.0 {
-            return Err(Error::invalid(
-                "elevation",
-                format!("must be > 0 for a launch from the ground, got {elevation}"),
-            ));
+            return Err(Error::invalid("elevation", format!("must be > 0 for a launch from the ground, got {elevation}")));
         }
         let (sa, ca) = azimuth.sin_cos();
         let (se, ce) = elevation.sin_cos();
@@ -228,14 +172,6 @@ impl Earth {
         let (east, north) = (hit.y[0], hit.y[1]);
         let downrange = east * sa + north * ca;
         let drift = east * ca - north * sa;
-        Ok(Flight {
-            time: hit.t,
-            east,
-            north,
-            range: east.hypot(north),
-            downrange,
-            drift,
-            solution: sol,
-        })
+        Ok(Flight { time: hit.t, east, north, range: east.hypot(north), downrange, drift, solution: sol })
     }
 }

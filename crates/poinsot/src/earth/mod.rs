@@ -13,8 +13,5 @@ mod winds;
 
 pub use fall::{Fall, FallModel, Flight, Gravity};
 pub use pendulum::{fit_precession_rate, FoucaultRun};
-pub use planet::{
-    check_latitude, Earth, EffectiveGravity, MEAN_RADIUS, SIDEREAL_RATE, SOLAR_DAY_RATE,
-    STANDARD_GRAVITY,
-};
+pub use planet::{check_latitude, EffectiveGravity, Earth, MEAN_RADIUS, SIDEREAL_RATE, SOLAR_DAY_RATE, STANDARD_GRAVITY};
 pub use winds::{InertialRun, LowRun};

@@ -31,23 +31,10 @@ pub struct FoucaultRun {
 /// `turn_times` if fewer than 3 turning points are given or the arrays differ in length.
 pub fn fit_precession_rate(turn_times: &[f64], turn_angles: &[f64]) -> Result<f64> {
     if turn_times.len() != turn_angles.len() {
-        return Err(Error::invalid(
-            "turn_times",
-            format!(
-                "must have the length of turn_angles ({} != {})",
-                turn_times.len(),
-                turn_angles.len()
-            ),
-        ));
+        return Err(Error::invalid("turn_times", format!("must have the length of turn_angles ({} != {})", turn_times.len(), turn_angles.len())));
     }
     if turn_times.len() < 3 {
-        return Err(Error::invalid(
-            "turn_times",
-            format!(
-                "need at least 3 turning points to fit a rate, got {} (run longer)",
-                turn_times.len()
-            ),
-        ));
+        return Err(Error::invalid("turn_times", format!("need at least 3 turning points to fit a rate, got {} (run longer)", turn_times.len())));
     }
     let mut unwrapped = Vec::with_capacity(turn_angles.len());
     let mut prev = turn_angles[0];
@@ -97,10 +84,7 @@ impl Earth {
         check_positive("amplitude", amplitude)?;
         check_finite("azimuth", &[azimuth])?;
         if amplitude >= length {
-            return Err(Error::invalid(
-                "amplitude",
-                format!("must be < length ({length} m), got {amplitude}"),
-            ));
+            return Err(Error::invalid("amplitude", format!("must be < length ({length} m), got {amplitude}")));
         }
         let (s, c) = azimuth.sin_cos();
         let z = -(length * length - amplitude * amplitude).sqrt();
@@ -117,28 +101,13 @@ impl Earth {
     /// point of the swing; fit them with [`fit_precession_rate`]: the plane turns at
     /// [`Earth::foucault_rate`] = −ω sin λ, clockwise seen from above in the north.
     #[allow(clippy::too_many_arguments)]
-    pub fn foucault(
-        &self,
-        latitude: f64,
-        length: f64,
-        state0: ParticleState,
-        t0: f64,
-        t_end: f64,
-        times: &[f64],
-        options: &Options,
-    ) -> Result<FoucaultRun> {
+    pub fn foucault(&self, latitude: f64, length: f64, state0: ParticleState, t0: f64, t_end: f64, times: &[f64], options: &Options) -> Result<FoucaultRun> {
         check_latitude(latitude)?;
         check_positive("length", length)?;
         check_finite("state0", &state0)?;
         let r0 = Vec3::new(state0[0], state0[1], state0[2]);
         if ((r0.norm() - length) / length).abs() > 1e-6 {
-            return Err(Error::invalid(
-                "state0",
-                format!(
-                    "the bob must be at distance length = {length} m from the suspension, got {}",
-                    r0.norm()
-                ),
-            ));
+            return Err(Error::invalid("state0", format!("the bob must be at distance length = {length} m from the suspension, got {}", r0.norm())));
         }
         let w = self.omega_enu_unchecked(latitude);
         let g = self.g;
@@ -150,35 +119,14 @@ impl Earth {
             let r2 = r.norm_squared();
             // C = (|r|² − L²)/2, Ċ = r·v, and C̈ + 2βĊ + β²C = 0 fixes the tension.
             let c = 0.5 * (r2 - length * length);
-            let lambda =
-                -(v.norm_squared() + r.dot(&free) + 2.0 * beta * r.dot(&v) + beta * beta * c) / r2;
+            let lambda = -(v.norm_squared() + r.dot(&free) + 2.0 * beta * r.dot(&v) + beta * beta * c) / r2;
             let a = free + lambda * r;
             *dy = [v.x, v.y, v.z, a.x, a.y, a.z];
         };
         // Turning points: d(x² + y²)/dt = 2 (x vx + y vy) goes from + to −.
-        let scan = dop853_scan(
-            rhs,
-            t0,
-            state0,
-            t_end,
-            times,
-            options,
-            |_t, y: &ParticleState| y[0] * y[3] + y[1] * y[4],
-            Crossing::Falling,
-        )?;
+        let scan = dop853_scan(rhs, t0, state0, t_end, times, options, |_t, y: &ParticleState| y[0] * y[3] + y[1] * y[4], Crossing::Falling)?;
         let turn_times = scan.crossings.iter().map(|h| h.t).collect();
-        let turn_angles = scan
-            .crossings
-            .iter()
-            .map(|h| h.y[1].atan2(h.y[0]))
-            .collect();
-        Ok(FoucaultRun {
-            t: scan.t,
-            states: scan.y,
-            turn_times,
-            turn_angles,
-            final_state: scan.y_final,
-            stats: scan.stats,
-        })
+        let turn_angles = scan.crossings.iter().map(|h| h.y[1].atan2(h.y[0])).collect();
+        Ok(FoucaultRun { t: scan.t, states: scan.y, turn_times, turn_angles, final_state: scan.y_final, stats: scan.stats })
     }
 }

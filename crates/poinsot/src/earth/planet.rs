@@ -34,11 +34,7 @@ pub struct Earth {
 impl Default for Earth {
     /// The sidereal rate, the mean radius and standard gravity.
     fn default() -> Self {
-        Self {
-            rotation_rate: SIDEREAL_RATE,
-            radius: MEAN_RADIUS,
-            g: STANDARD_GRAVITY,
-        }
+        Self { rotation_rate: SIDEREAL_RATE, radius: MEAN_RADIUS, g: STANDARD_GRAVITY }
     }
 }
 
@@ -73,19 +69,12 @@ impl Earth {
         check_non_negative("rotation_rate", rotation_rate)?;
         check_positive("radius", radius)?;
         check_positive("g", g)?;
-        Ok(Self {
-            rotation_rate,
-            radius,
-            g,
-        })
+        Ok(Self { rotation_rate, radius, g })
     }
 
     /// The unit's Earth: one turn per solar day (ω = 2π/86400 s), mean radius, standard gravity.
     pub fn solar_day() -> Self {
-        Self {
-            rotation_rate: SOLAR_DAY_RATE,
-            ..Self::default()
-        }
+        Self { rotation_rate: SOLAR_DAY_RATE, ..Self::default() }
     }
 
     /// ω in ENU components at `latitude` (rad): ω (0, cos λ, sin λ) (eq. 2.33).
@@ -113,11 +102,7 @@ impl Earth {
         let c = self.centrifugal_acceleration(latitude)?;
         let vector = Vec3::new(0.0, 0.0, -self.g) + c;
         let deviation = (-vector.y).atan2(-vector.z);
-        Ok(EffectiveGravity {
-            vector,
-            magnitude: vector.norm(),
-            deviation,
-        })
+        Ok(EffectiveGravity { vector, magnitude: vector.norm(), deviation })
     }
 
     /// The Coriolis acceleration −2 ω × v (m/s², ENU) of a particle moving with `velocity`
@@ -172,10 +157,6 @@ impl Earth {
     /// The period of inertial oscillations, 2π/|f| = π/(ω |sin λ|) (s); infinite at the equator.
     pub fn inertial_period(&self, latitude: f64) -> Result<f64> {
         let f = self.coriolis_parameter(latitude)?;
-        Ok(if f == 0.0 {
-            f64::INFINITY
-        } else {
-            2.0 * PI / f.abs()
-        })
+        Ok(if f == 0.0 { f64::INFINITY } else { 2.0 * PI / f.abs() })
     }
 }

@@ -44,21 +44,11 @@ impl Earth {
     /// `velocity` `[v_east, v_north]`, integrated to `t_end` and sampled at `times`.
     /// The parcel turns clockwise (right) in the north, counterclockwise in the south, not at
     /// all at the equator; it circles in the inertial period π/(ω |sin λ|).
-    pub fn inertial_oscillation(
-        &self,
-        latitude: f64,
-        velocity: [f64; 2],
-        t_end: f64,
-        times: &[f64],
-        options: &Options,
-    ) -> Result<InertialRun> {
+    pub fn inertial_oscillation(&self, latitude: f64, velocity: [f64; 2], t_end: f64, times: &[f64], options: &Options) -> Result<InertialRun> {
         let f = self.coriolis_parameter(latitude)?;
         check_finite("velocity", &velocity)?;
         if velocity[0] == 0.0 && velocity[1] == 0.0 {
-            return Err(Error::invalid(
-                "velocity",
-                "must be non-zero (a parcel at rest stays at rest)",
-            ));
+            return Err(Error::invalid("velocity", "must be non-zero (a parcel at rest stays at rest)"));
         }
         check_non_negative("t_end", t_end)?;
         // State: x, y, vx, vy and the turning angle of the velocity θ, θ̇ = (vx ay − vy ax)/|v|².
@@ -68,27 +58,10 @@ impl Earth {
             *dy = [vx, vy, ax, ay, (vx * ay - vy * ax) / (vx * vx + vy * vy)];
         };
         let y0 = [0.0, 0.0, velocity[0], velocity[1], 0.0];
-        let scan = dop853_scan(
-            rhs,
-            0.0,
-            y0,
-            t_end,
-            times,
-            options,
-            |_t, _y: &[f64; 5]| 1.0,
-            Crossing::Any,
-        )?;
-        let turning_rate = if t_end > 0.0 {
-            scan.y_final[4] / t_end
-        } else {
-            0.0
-        };
+        let scan = dop853_scan(rhs, 0.0, y0, t_end, times, options, |_t, _y: &[f64; 5]| 1.0, Crossing::Any)?;
+        let turning_rate = if t_end > 0.0 { scan.y_final[4] / t_end } else { 0.0 };
         let states = scan.y.iter().map(|s| [s[0], s[1], s[2], s[3]]).collect();
-        Ok(InertialRun {
-            t: scan.t,
-            states,
-            turning_rate,
-        })
+        Ok(InertialRun { t: scan.t, states, turning_rate })
     }
 
     /// Parcels starting at rest at `starts` (`[east, north]`, m) around a low-pressure centre
@@ -98,16 +71,7 @@ impl Earth {
     /// The sense of the circulation is measured from the run ([`LowRun::circulation`]):
     /// counterclockwise in the north, clockwise in the south (Fig. 2.7).
     #[allow(clippy::too_many_arguments)]
-    pub fn flow_into_low(
-        &self,
-        latitude: f64,
-        starts: &[[f64; 2]],
-        strength: f64,
-        friction: f64,
-        t_end: f64,
-        times: &[f64],
-        options: &Options,
-    ) -> Result<LowRun> {
+    pub fn flow_into_low(&self, latitude: f64, starts: &[[f64; 2]], strength: f64, friction: f64, t_end: f64, times: &[f64], options: &Options) -> Result<LowRun> {
         if starts.is_empty() {
             return Err(Error::invalid("starts", "must hold at least one parcel"));
         }
@@ -115,9 +79,7 @@ impl Earth {
             check_finite("starts", s)?;
         }
         let states: Vec<[f64; 4]> = starts.iter().map(|s| [s[0], s[1], 0.0, 0.0]).collect();
-        self.flow_into_low_from(
-            latitude, &states, 0.0, strength, friction, t_end, times, options,
-        )
+        self.flow_into_low_from(latitude, &states, 0.0, strength, friction, t_end, times, options)
     }
 
     /// [`Earth::flow_into_low`] from any states: parcels in `states` (`[east, north, v_east,
@@ -127,27 +89,14 @@ impl Earth {
     /// its samples gives the state at any later time (the browser lab evaluates its
     /// animation so).
     #[allow(clippy::too_many_arguments)]
-    pub fn flow_into_low_from(
-        &self,
-        latitude: f64,
-        states: &[[f64; 4]],
-        t0: f64,
-        strength: f64,
-        friction: f64,
-        t_end: f64,
-        times: &[f64],
-        options: &Options,
-    ) -> Result<LowRun> {
+    pub fn flow_into_low_from(&self, latitude: f64, states: &[[f64; 4]], t0: f64, strength: f64, friction: f64, t_end: f64, times: &[f64], options: &Options) -> Result<LowRun> {
         let f = self.coriolis_parameter(latitude)?;
         crate::error::check_positive("strength", strength)?;
         check_non_negative("friction", friction)?;
         check_finite("t0", &[t0])?;
         check_finite("t_end", &[t_end])?;
         if t_end < t0 {
-            return Err(Error::invalid(
-                "t_end",
-                format!("must be >= t0 = {t0}, got {t_end}"),
-            ));
+            return Err(Error::invalid("t_end", format!("must be >= t0 = {t0}, got {t_end}")));
         }
         if states.is_empty() {
             return Err(Error::invalid("states", "must hold at least one parcel"));
@@ -156,8 +105,7 @@ impl Earth {
             check_finite("states", s)?;
         }
         let (k, gamma) = (strength, friction);
-        let energy_of =
-            |y: &[f64]| 0.5 * (y[2] * y[2] + y[3] * y[3]) + 0.5 * k * (y[0] * y[0] + y[1] * y[1]);
+        let energy_of = |y: &[f64]| 0.5 * (y[2] * y[2] + y[3] * y[3]) + 0.5 * k * (y[0] * y[0] + y[1] * y[1]);
         let span = t_end - t0;
         let mut parcels = Vec::with_capacity(states.len());
         let mut energy = Vec::with_capacity(states.len());
@@ -167,26 +115,10 @@ impl Earth {
             // State: x, y, vx, vy, ∫ (x vy − y vx) dt and ∫ γ |v|² dt.
             let rhs = |_t: f64, y: &[f64; 6], dy: &mut [f64; 6]| {
                 let (x, yy, vx, vy) = (y[0], y[1], y[2], y[3]);
-                *dy = [
-                    vx,
-                    vy,
-                    -k * x - gamma * vx + f * vy,
-                    -k * yy - gamma * vy - f * vx,
-                    x * vy - yy * vx,
-                    gamma * (vx * vx + vy * vy),
-                ];
+                *dy = [vx, vy, -k * x - gamma * vx + f * vy, -k * yy - gamma * vy - f * vx, x * vy - yy * vx, gamma * (vx * vx + vy * vy)];
             };
             let y0 = [s[0], s[1], s[2], s[3], 0.0, 0.0];
-            let scan = dop853_scan(
-                rhs,
-                t0,
-                y0,
-                t_end,
-                times,
-                options,
-                |_t, _y: &[f64; 6]| 1.0,
-                Crossing::Any,
-            )?;
+            let scan = dop853_scan(rhs, t0, y0, t_end, times, options, |_t, _y: &[f64; 6]| 1.0, Crossing::Any)?;
             if span > 0.0 {
                 circulation += scan.y_final[4] / span;
             }
@@ -195,12 +127,6 @@ impl Earth {
             dissipated.push(scan.y.iter().map(|y| y[5]).collect());
         }
         circulation /= states.len() as f64;
-        Ok(LowRun {
-            t: times.to_vec(),
-            parcels,
-            energy,
-            dissipated,
-            circulation,
-        })
+        Ok(LowRun { t: times.to_vec(), parcels, energy, dissipated, circulation })
     }
 }

@@ -139,38 +139,19 @@ const ROTATION_TOLERANCE: f64 = 1e-9;
 impl MovingFrame {
     /// A frame with the given state and axes aligned with the fixed axes. Errors name the
     /// first non-finite argument.
-    pub fn new(
-        origin: Vec3,
-        velocity: Vec3,
-        acceleration: Vec3,
-        angular_velocity: Vec3,
-        angular_acceleration: Vec3,
-    ) -> Result<Self> {
+    pub fn new(origin: Vec3, velocity: Vec3, acceleration: Vec3, angular_velocity: Vec3, angular_acceleration: Vec3) -> Result<Self> {
         check_finite("origin", origin.as_slice())?;
         check_finite("velocity", velocity.as_slice())?;
         check_finite("acceleration", acceleration.as_slice())?;
         check_finite("angular_velocity", angular_velocity.as_slice())?;
         check_finite("angular_acceleration", angular_acceleration.as_slice())?;
-        Ok(Self {
-            origin,
-            velocity,
-            acceleration,
-            angular_velocity,
-            angular_acceleration,
-            attitude: Mat3::identity(),
-        })
+        Ok(Self { origin, velocity, acceleration, angular_velocity, angular_acceleration, attitude: Mat3::identity() })
     }
 
     /// A frame rotating at constant `omega` about the fixed origin (the unit's rotating
     /// system, eqs. 2.6–2.18).
     pub fn rotating(omega: Vec3) -> Result<Self> {
-        Self::new(
-            Vec3::zeros(),
-            Vec3::zeros(),
-            Vec3::zeros(),
-            omega,
-            Vec3::zeros(),
-        )
+        Self::new(Vec3::zeros(), Vec3::zeros(), Vec3::zeros(), omega, Vec3::zeros())
     }
 
     /// The same frame with its axes turned to `attitude` (columns: the moving axes in fixed
@@ -178,9 +159,7 @@ impl MovingFrame {
     /// rotation within 1e-9.
     pub fn with_attitude(mut self, attitude: Mat3) -> Result<Self> {
         check_finite("attitude", attitude.as_slice())?;
-        let orth = (attitude.transpose() * attitude - Mat3::identity())
-            .abs()
-            .max();
+        let orth = (attitude.transpose() * attitude - Mat3::identity()).abs().max();
         let det = attitude.determinant();
         if orth > ROTATION_TOLERANCE || (det - 1.0).abs() > ROTATION_TOLERANCE {
             return Err(Error::rotation(
@@ -219,22 +198,12 @@ impl MovingFrame {
             centripetal: w.cross(&wxr),
             euler: self.angular_acceleration.cross(&r),
         };
-        FixedMotion {
-            position: self.origin + r,
-            velocity: self.velocity + v + wxr,
-            acceleration: terms.total(),
-            terms,
-        }
+        FixedMotion { position: self.origin + r, velocity: self.velocity + v + wxr, acceleration: terms.total(), terms }
     }
 
     /// The moving-frame position, velocity and acceleration (moving components) of a particle
     /// whose fixed-frame ones are given: the inverse of [`MovingFrame::to_fixed`].
-    pub fn to_moving(
-        &self,
-        position: &Vec3,
-        velocity: &Vec3,
-        acceleration: &Vec3,
-    ) -> RelativeMotion {
+    pub fn to_moving(&self, position: &Vec3, velocity: &Vec3, acceleration: &Vec3) -> RelativeMotion {
         let at = self.attitude.transpose();
         let w = &self.angular_velocity;
         let r = position - self.origin;
@@ -247,23 +216,13 @@ impl MovingFrame {
             centrifugal: -(at * w.cross(&wxr)),
             euler: -(at * self.angular_acceleration.cross(&r)),
         };
-        RelativeMotion {
-            position: at * r,
-            velocity: at * v,
-            acceleration: terms.total(),
-            terms,
-        }
+        RelativeMotion { position: at * r, velocity: at * v, acceleration: terms.total(), terms }
     }
 
     /// The fictitious forces (moving components, N) on a particle of `mass` (kg) at
     /// `position` moving with `velocity` relative to the frame (moving components).
     /// Errors name `mass` (must be > 0), `position` or `velocity` (must be finite).
-    pub fn fictitious_forces(
-        &self,
-        mass: f64,
-        position: &Vec3,
-        velocity: &Vec3,
-    ) -> Result<FictitiousForces> {
+    pub fn fictitious_forces(&self, mass: f64, position: &Vec3, velocity: &Vec3) -> Result<FictitiousForces> {
         check_positive("mass", mass)?;
         check_finite("position", position.as_slice())?;
         check_finite("velocity", velocity.as_slice())?;
@@ -273,12 +232,7 @@ impl MovingFrame {
     /// [`MovingFrame::fictitious_forces`] without the argument checks (the hot path of the
     /// particle integrator).
     #[inline]
-    pub fn fictitious_forces_unchecked(
-        &self,
-        mass: f64,
-        position: &Vec3,
-        velocity: &Vec3,
-    ) -> FictitiousForces {
+    pub fn fictitious_forces_unchecked(&self, mass: f64, position: &Vec3, velocity: &Vec3) -> FictitiousForces {
         let at = self.attitude.transpose();
         let w = at * self.angular_velocity;
         let wd = at * self.angular_acceleration;

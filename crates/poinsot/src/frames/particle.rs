@@ -43,25 +43,14 @@ where
     check_positive("mass", mass)?;
     check_finite("position", position.as_slice())?;
     check_finite("velocity", velocity.as_slice())?;
-    let y0 = [
-        position.x, position.y, position.z, velocity.x, velocity.y, velocity.z,
-    ];
+    let y0 = [position.x, position.y, position.z, velocity.x, velocity.y, velocity.z];
     let inv_mass = 1.0 / mass;
     let rhs = |t: f64, y: &ParticleState, dy: &mut ParticleState| {
         let (r, v) = split(y);
         let a = force(t, &r, &v) * inv_mass + fictitious_acceleration(frame, t, &r, &v);
         *dy = [v.x, v.y, v.z, a.x, a.y, a.z];
     };
-    dop853_scan(
-        rhs,
-        t0,
-        y0,
-        t_end,
-        times,
-        opts,
-        |_t: f64, _y: &ParticleState| 1.0,
-        Crossing::Any,
-    )
+    dop853_scan(rhs, t0, y0, t_end, times, opts, |_t: f64, _y: &ParticleState| 1.0, Crossing::Any)
 }
 
 /// Integrates a particle of `mass` (kg) relative to the moving `frame` from `t0` to `t_end`:
@@ -96,9 +85,7 @@ where
     check_positive("mass", mass)?;
     check_finite("position", position.as_slice())?;
     check_finite("velocity", velocity.as_slice())?;
-    let y0 = [
-        position.x, position.y, position.z, velocity.x, velocity.y, velocity.z,
-    ];
+    let y0 = [position.x, position.y, position.z, velocity.x, velocity.y, velocity.z];
     let rhs = |t: f64, y: &ParticleState, dy: &mut ParticleState| {
         let (r, v) = split(y);
         let a = force(t, &r, &v) / mass + fictitious_acceleration(frame, t, &r, &v);
@@ -106,15 +93,7 @@ where
     };
     match event {
         Some((g, crossing)) => dop853_until(rhs, t0, y0, t_end, opts, g, crossing),
-        None => dop853_until(
-            rhs,
-            t0,
-            y0,
-            t_end,
-            opts,
-            |_t: f64, _y: &ParticleState| 1.0,
-            Crossing::Any,
-        ),
+        None => dop853_until(rhs, t0, y0, t_end, opts, |_t: f64, _y: &ParticleState| 1.0, Crossing::Any),
     }
 }
 
@@ -136,9 +115,7 @@ where
     check_positive("mass", mass)?;
     check_finite("position", position.as_slice())?;
     check_finite("velocity", velocity.as_slice())?;
-    let y0 = [
-        position.x, position.y, position.z, velocity.x, velocity.y, velocity.z,
-    ];
+    let y0 = [position.x, position.y, position.z, velocity.x, velocity.y, velocity.z];
     let rhs = |t: f64, y: &ParticleState, dy: &mut ParticleState| {
         let (r, v) = split(y);
         let a = force(t, &r, &v) / mass;

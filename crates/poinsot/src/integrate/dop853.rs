@@ -8,9 +8,7 @@
 // Index loops mirror the Butcher-tableau formulas they implement.
 #![allow(clippy::needless_range_loop)]
 
-use super::dop853_coefficients::{
-    A, C, D, E3_SHIFT, E5, INTERPOLATOR_POWER, N_STAGES, N_STAGES_EXTENDED,
-};
+use super::dop853_coefficients::{A, C, D, E3_SHIFT, E5, INTERPOLATOR_POWER, N_STAGES, N_STAGES_EXTENDED};
 use super::options::{Crossing, Options, Stats};
 use super::solution::{DenseStep, EventHit, Solution};
 use super::state::{OdeState, OdeSystem};
@@ -60,10 +58,7 @@ impl<S: OdeState, F: OdeSystem<S>> Dop853<S, F> {
         let mut f0 = y0.clone();
         system.rhs(t0, &y0, &mut f0);
         if f0.as_slice().iter().any(|v| !v.is_finite()) {
-            return Err(Error::diverged(
-                "t",
-                format!("the right-hand side is not finite at t = {t0} (the initial point)"),
-            ));
+            return Err(Error::diverged("t", format!("the right-hand side is not finite at t = {t0} (the initial point)")));
         }
         let mut k: [S; N_STAGES_EXTENDED] = std::array::from_fn(|_| y0.clone());
         k[0] = f0;
@@ -84,10 +79,7 @@ impl<S: OdeState, F: OdeSystem<S>> Dop853<S, F> {
             y_new: y0,
             dense_ready: false,
             fsal_pending: false,
-            stats: Stats {
-                evaluations: 1,
-                ..Stats::default()
-            },
+            stats: Stats { evaluations: 1, ..Stats::default() },
         };
         me.h_abs = match opts.first_step {
             Some(h) => h.min((t_end - t0).abs()),
@@ -137,11 +129,7 @@ impl<S: OdeState, F: OdeSystem<S>> Dop853<S, F> {
             s1 += (f0[i] / scale).powi(2);
         }
         let (d0, d1) = ((s0 / n as f64).sqrt(), (s1 / n as f64).sqrt());
-        let mut h0 = if d0 < 1e-5 || d1 < 1e-5 {
-            1e-6
-        } else {
-            0.01 * d0 / d1
-        };
+        let mut h0 = if d0 < 1e-5 || d1 < 1e-5 { 1e-6 } else { 0.01 * d0 / d1 };
         h0 = h0.min(interval);
         {
             let y1 = self.tmp.as_mut_slice();
@@ -150,8 +138,7 @@ impl<S: OdeState, F: OdeSystem<S>> Dop853<S, F> {
             }
         }
         let mut f1 = self.y.clone();
-        self.system
-            .rhs(self.t + h0 * self.direction, &self.tmp, &mut f1);
+        self.system.rhs(self.t + h0 * self.direction, &self.tmp, &mut f1);
         self.stats.evaluations += 1;
         let mut s2 = 0.0;
         for i in 0..n {
@@ -174,11 +161,7 @@ impl<S: OdeState, F: OdeSystem<S>> Dop853<S, F> {
         for s in 1..=N_STAGES {
             {
                 let (done, _) = k.split_at(s);
-                let out = if s < N_STAGES {
-                    tmp.as_mut_slice()
-                } else {
-                    y_new.as_mut_slice()
-                };
+                let out = if s < N_STAGES { tmp.as_mut_slice() } else { y_new.as_mut_slice() };
                 let out = &mut out[..n];
                 out.copy_from_slice(y.as_slice());
                 // out = y + h Σ_j a_sj k_j, column by column (skipping the tableau's zeros) so
@@ -266,11 +249,7 @@ impl<S: OdeState, F: OdeSystem<S>> Dop853<S, F> {
                 ));
             }
             if h_abs < min_step {
-                let why = if nonfinite {
-                    "the right-hand side is not finite"
-                } else {
-                    "the error cannot be controlled"
-                };
+                let why = if nonfinite { "the right-hand side is not finite" } else { "the error cannot be controlled" };
                 return Err(Error::diverged(
                     "t",
                     format!("integration failed at t = {t}: the step size fell below {min_step:e} ({why}; the solution may blow up there)"),
@@ -283,25 +262,11 @@ impl<S: OdeState, F: OdeSystem<S>> Dop853<S, F> {
             }
             h = t_new - t;
             h_abs = h.abs();
-            Self::rk_step(
-                &mut self.system,
-                t,
-                &self.y,
-                h,
-                &mut self.k[..],
-                &mut self.tmp,
-                &mut self.y_new,
-            );
+            Self::rk_step(&mut self.system, t, &self.y, h, &mut self.k[..], &mut self.tmp, &mut self.y_new);
             self.stats.evaluations += N_STAGES;
             let finite = self.y_new.as_slice().iter().all(|v| v.is_finite())
-                && self.k[..=N_STAGES]
-                    .iter()
-                    .all(|kj| kj.as_slice().iter().all(|v| v.is_finite()));
-            let err = if finite {
-                self.error_norm(h)
-            } else {
-                f64::INFINITY
-            };
+                && self.k[..=N_STAGES].iter().all(|kj| kj.as_slice().iter().all(|v| v.is_finite()));
+            let err = if finite { self.error_norm(h) } else { f64::INFINITY };
             if !(err.is_finite()) {
                 nonfinite = !finite;
                 self.stats.rejected += 1;
@@ -356,8 +321,7 @@ impl<S: OdeState, F: OdeSystem<S>> Dop853<S, F> {
                     }
                 }
                 let (_, tail) = self.k.split_at_mut(s);
-                self.system
-                    .rhs(self.t_old + C[s] * h, &self.tmp, &mut tail[0]);
+                self.system.rhs(self.t_old + C[s] * h, &self.tmp, &mut tail[0]);
                 self.stats.evaluations += 1;
             }
             self.dense_ready = true;
@@ -389,15 +353,7 @@ impl<S: OdeState, F: OdeSystem<S>> Dop853<S, F> {
         let mut tmp = self.tmp.clone();
         let mut out = self.y_old.clone();
         if h != 0.0 {
-            Self::rk_step(
-                &mut self.system,
-                self.t_old,
-                &self.y_old,
-                h,
-                &mut k[..],
-                &mut tmp,
-                &mut out,
-            );
+            Self::rk_step(&mut self.system, self.t_old, &self.y_old, h, &mut k[..], &mut tmp, &mut out);
             self.stats.evaluations += N_STAGES;
         }
         out
@@ -445,15 +401,7 @@ where
     S: OdeState,
     F: OdeSystem<S>,
 {
-    dop853_until(
-        system,
-        t0,
-        y0,
-        t_end,
-        opts,
-        |_t: f64, _y: &S| 1.0,
-        Crossing::Any,
-    )
+    dop853_until(system, t0, y0, t_end, opts, |_t: f64, _y: &S| 1.0, Crossing::Any)
 }
 
 /// Like [`dop853`], but stops at the first zero crossing of `event(t, y)` of the kind
@@ -486,20 +434,8 @@ where
         if opts.dense || hit {
             let dense = stepper.dense_step();
             if hit {
-                let t_hit = find_root(
-                    &dense,
-                    &mut event,
-                    stepper.t_old,
-                    g_old,
-                    stepper.t,
-                    g_new,
-                    &stepper.y,
-                );
-                let y_hit = if t_hit == stepper.t {
-                    stepper.y.clone()
-                } else {
-                    stepper.state_by_step(t_hit)
-                };
+                let t_hit = find_root(&dense, &mut event, stepper.t_old, g_old, stepper.t, g_new, &stepper.y);
+                let y_hit = if t_hit == stepper.t { stepper.y.clone() } else { stepper.state_by_step(t_hit) };
                 sol.t.push(t_hit);
                 sol.y.push(y_hit.clone());
                 if opts.dense {
@@ -536,11 +472,7 @@ fn find_root<S: OdeState, G: FnMut(f64, &S) -> f64>(
     let (mut a, mut ga, mut b, mut gb) = (a, ga, b, gb);
     for _ in 0..200 {
         let c = b - gb * (b - a) / (gb - ga);
-        let c = if c.is_finite() && (c - a) * (c - b) <= 0.0 {
-            c
-        } else {
-            0.5 * (a + b)
-        };
+        let c = if c.is_finite() && (c - a) * (c - b) <= 0.0 { c } else { 0.5 * (a + b) };
         dense.eval_into(c, y.as_mut_slice());
         let gc = event(c, &y);
         if gc == 0.0 {
@@ -603,16 +535,10 @@ where
     crate::error::check_finite("times", times)?;
     for (i, &t) in times.iter().enumerate() {
         if dir * (t - t0) < 0.0 || dir * (t - t_end) > 0.0 {
-            return Err(Error::invalid(
-                "times",
-                format!("must lie between t0 = {t0} and t_end = {t_end}, got {t} at index {i}"),
-            ));
+            return Err(Error::invalid("times", format!("must lie between t0 = {t0} and t_end = {t_end}, got {t} at index {i}")));
         }
         if i > 0 && dir * (t - times[i - 1]) < 0.0 {
-            return Err(Error::invalid(
-                "times",
-                format!("must be monotone in the direction of integration (index {i})"),
-            ));
+            return Err(Error::invalid("times", format!("must be monotone in the direction of integration (index {i})")));
         }
     }
     let mut out = Vec::with_capacity(times.len());
@@ -634,20 +560,9 @@ where
             let mut dense: Option<DenseStep> = None;
             if hit {
                 let d = dense.get_or_insert_with(|| stepper.dense_step());
-                let t_hit = find_root(
-                    d,
-                    &mut event,
-                    stepper.t_old,
-                    g_old,
-                    stepper.t,
-                    g_new,
-                    &stepper.y,
-                );
+                let t_hit = find_root(d, &mut event, stepper.t_old, g_old, stepper.t, g_new, &stepper.y);
                 d.eval_into(t_hit, y.as_mut_slice());
-                crossings.push(EventHit {
-                    t: t_hit,
-                    y: y.clone(),
-                });
+                crossings.push(EventHit { t: t_hit, y: y.clone() });
             }
             while next < times.len() && dir * (times[next] - stepper.t) <= 0.0 {
                 if times[next] == stepper.t {
@@ -662,11 +577,5 @@ where
         }
         g_old = g_new;
     }
-    Ok(Scan {
-        t: times.to_vec(),
-        y: out,
-        crossings,
-        y_final: stepper.y.clone(),
-        stats: stepper.stats(),
-    })
+    Ok(Scan { t: times.to_vec(), y: out, crossings, y_final: stepper.y.clone(), stats: stepper.stats() })
 }

@@ -20,9 +20,7 @@ mod rk4;
 mod solution;
 mod state;
 
-pub use composition::{
-    compose, composition_coefficients, SymmetricStep, KAHAN_LI_6, TRIPLE_JUMP_4,
-};
+pub use composition::{compose, composition_coefficients, SymmetricStep, KAHAN_LI_6, TRIPLE_JUMP_4};
 pub use dop853::{dop853, dop853_scan, dop853_until, Dop853, Scan};
 pub use options::{Crossing, Options, Stats, MIN_RTOL};
 pub use rk4::{rk4, rk4_step};

@@ -31,72 +31,43 @@ pub struct Options {
 
 impl Default for Options {
     fn default() -> Self {
-        Self {
-            rtol: 1e-10,
-            atol: 1e-12,
-            max_steps: 1_000_000,
-            first_step: None,
-            max_step: f64::INFINITY,
-            dense: true,
-        }
+        Self { rtol: 1e-10, atol: 1e-12, max_steps: 1_000_000, first_step: None, max_step: f64::INFINITY, dense: true }
     }
 }
 
 impl Options {
     /// Default options with the given tolerances.
     pub fn with_tolerances(rtol: f64, atol: f64) -> Self {
-        Self {
-            rtol,
-            atol,
-            ..Self::default()
-        }
+        Self { rtol, atol, ..Self::default() }
     }
 
     /// Checks every field; the error names the field at fault.
     pub fn validate(&self) -> Result<()> {
         if !(self.rtol.is_finite() && self.rtol > 0.0) {
-            return Err(Error::invalid(
-                "rtol",
-                format!("must be finite and > 0, got {}", self.rtol),
-            ));
+            return Err(Error::invalid("rtol", format!("must be finite and > 0, got {}", self.rtol)));
         }
         if self.rtol < MIN_RTOL {
             return Err(Error::invalid(
                 "rtol",
-                format!(
-                    "must be >= {MIN_RTOL:e} (100 machine epsilons), got {:e}",
-                    self.rtol
-                ),
+                format!("must be >= {MIN_RTOL:e} (100 machine epsilons), got {:e}", self.rtol),
             ));
         }
         if self.rtol >= 1.0 {
-            return Err(Error::invalid(
-                "rtol",
-                format!("must be < 1, got {}", self.rtol),
-            ));
+            return Err(Error::invalid("rtol", format!("must be < 1, got {}", self.rtol)));
         }
         if !(self.atol.is_finite() && self.atol > 0.0) {
-            return Err(Error::invalid(
-                "atol",
-                format!("must be finite and > 0, got {}", self.atol),
-            ));
+            return Err(Error::invalid("atol", format!("must be finite and > 0, got {}", self.atol)));
         }
         if self.max_steps == 0 {
             return Err(Error::invalid("max_steps", "must be >= 1, got 0"));
         }
         if let Some(h) = self.first_step {
             if !(h.is_finite() && h > 0.0) {
-                return Err(Error::invalid(
-                    "first_step",
-                    format!("must be finite and > 0, got {h}"),
-                ));
+                return Err(Error::invalid("first_step", format!("must be finite and > 0, got {h}")));
             }
         }
         if self.max_step.is_nan() || self.max_step <= 0.0 {
-            return Err(Error::invalid(
-                "max_step",
-                format!("must be > 0, got {}", self.max_step),
-            ));
+            return Err(Error::invalid("max_step", format!("must be > 0, got {}", self.max_step)));
         }
         Ok(())
     }

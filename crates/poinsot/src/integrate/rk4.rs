@@ -31,12 +31,7 @@ pub fn rk4_step<S: OdeState, F: OdeSystem<S>>(system: &mut F, t: f64, y: &S, h: 
     system.rhs(t + h, &tmp, &mut k4);
     let mut out = y.clone();
     for i in 0..n {
-        let (a, b, c, d) = (
-            k1.as_slice()[i],
-            k2.as_slice()[i],
-            k3.as_slice()[i],
-            k4.as_slice()[i],
-        );
+        let (a, b, c, d) = (k1.as_slice()[i], k2.as_slice()[i], k3.as_slice()[i], k4.as_slice()[i]);
         out.as_mut_slice()[i] = ys[i] + h / 6.0 * (a + 2.0 * b + 2.0 * c + d);
     }
     out
@@ -46,13 +41,7 @@ pub fn rk4_step<S: OdeState, F: OdeSystem<S>>(system: &mut F, t: f64, y: &S, h: 
 ///
 /// The solution holds every step (no dense output). Errors name `t0`, `t_end`, `y0` or
 /// `steps`; a state that stops being finite is reported as `Diverged` naming `t`.
-pub fn rk4<S: OdeState, F: OdeSystem<S>>(
-    mut system: F,
-    t0: f64,
-    y0: S,
-    t_end: f64,
-    steps: usize,
-) -> Result<Solution<S>> {
+pub fn rk4<S: OdeState, F: OdeSystem<S>>(mut system: F, t0: f64, y0: S, t_end: f64, steps: usize) -> Result<Solution<S>> {
     check_finite("t0", &[t0])?;
     check_finite("t_end", &[t_end])?;
     check_finite("y0", y0.as_slice())?;
@@ -66,23 +55,12 @@ pub fn rk4<S: OdeState, F: OdeSystem<S>>(
         let t = t0 + h * i as f64;
         y = rk4_step(&mut system, t, &y, h);
         if y.as_slice().iter().any(|v| !v.is_finite()) {
-            return Err(Error::diverged(
-                "t",
-                format!("the state stopped being finite at t = {}", t + h),
-            ));
+            return Err(Error::diverged("t", format!("the state stopped being finite at t = {}", t + h)));
         }
-        let t_next = if i + 1 == steps {
-            t_end
-        } else {
-            t0 + h * (i + 1) as f64
-        };
+        let t_next = if i + 1 == steps { t_end } else { t0 + h * (i + 1) as f64 };
         sol.t.push(t_next);
         sol.y.push(y.clone());
     }
-    sol.stats = Stats {
-        accepted: steps,
-        rejected: 0,
-        evaluations: 4 * steps,
-    };
+    sol.stats = Stats { accepted: steps, rejected: 0, evaluations: 4 * steps };
     Ok(sol)
 }

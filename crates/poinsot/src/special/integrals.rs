@@ -122,10 +122,7 @@ pub fn ellippiinc_complement(phi: f64, n: f64, mc: f64) -> Result<f64> {
     check_finite("phi", &[phi])?;
     check_finite("n", &[n])?;
     if !(mc.is_finite() && mc > 0.0 && mc <= 1.0) {
-        return Err(Error::invalid(
-            "mc",
-            format!("the complementary parameter must be in (0, 1], got {mc}"),
-        ));
+        return Err(Error::invalid("mc", format!("the complementary parameter must be in (0, 1], got {mc}")));
     }
     if n >= 1.0 {
         return Err(Error::invalid("n", format!("must be < 1, got {n}")));

@@ -11,7 +11,6 @@ mod integrals;
 mod jacobi;
 
 pub use integrals::{
-    ellipe, ellipeinc, ellipf, ellipf_complement, ellipk, ellippi, ellippiinc,
-    ellippiinc_complement,
+    ellipe, ellipeinc, ellipf, ellipf_complement, ellipk, ellippi, ellippiinc, ellippiinc_complement,
 };
 pub use jacobi::{am, cn, dn, jacobi_all, sn, sncndn, Jacobi, JacobiValues};
