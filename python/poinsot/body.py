@@ -395,8 +395,10 @@ class RigidBody:
         The mesh is checked before integrating and refused, never silently integrated, if it
         does not bound a solid: indices out of range, non-finite vertices, all faces degenerate,
         open (boundary edges), non-manifold (an edge shared by more than two faces),
-        inconsistently oriented, inside-out (inward normals) or of zero volume.
-        Self-intersection is not detected.
+        inconsistently oriented, inside-out (inward normals), of zero volume, self-intersecting
+        (two faces meet beyond a vertex or edge they share; faces that merely touch count),
+        or with shells nested wrongly (a shell inside another of the same winding, a cavity
+        outside any solid). Vertices that no face uses are ignored.
 
         Raises:
             InvalidMeshError: one of the conditions above; the message names ``faces`` or

@@ -455,3 +455,17 @@ def test_triangle_message_says_by_how_much() -> None:
         ps.check_inertia([[1, 0.5, 0], [0, 1, 0], [0, 0, 1]])
     with pytest.raises(ps.PoinsotError, match=r"index 1"):
         ps.RigidBody.from_point_masses([1.0, -1.0], [[0, 0, 0], [1, 0, 0]])
+
+
+def test_extreme_sizes_are_exact_or_refused_naming_the_argument() -> None:
+    """Issue 10, 1.4: solid_sphere(1.0, 1e308) returned an infinite inertia."""
+    with pytest.raises(ps.PoinsotError, match="^radius: .*largest finite"):
+        ps.RigidBody.solid_sphere(1.0, 1e308)
+    # Representable although r² overflows: exact (2/5 m r² = 0.4e100).
+    b = ps.RigidBody.solid_sphere(1e-300, 1e200)
+    assert b.inertia[0, 0] == pytest.approx(0.4e100, rel=1e-15)
+    assert np.isfinite(b.inertia).all()
+    with pytest.raises(ps.PoinsotError, match="^omega: "):
+        ps.RigidBody.solid_sphere(1.0, 1.0).kinetic_energy([1e200, 0.0, 0.0])
+    with pytest.raises(ps.PoinsotError, match="^point: "):
+        ps.RigidBody.solid_sphere(1.0, 1.0).inertia_about([1e200, 0.0, 0.0])

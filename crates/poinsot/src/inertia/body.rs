@@ -1,10 +1,28 @@
 //! Mass properties of a rigid body (mass, centre of mass, inertia about the centre of mass),
 //! their composition, and the angular momentum, kinetic energy and holding torque of a body
 //! turning with angular velocity ω (the unit's 2.43–2.64).
+//!
+//! **Range.** Every returned number is finite, or the call is an error naming the argument
+//! that leads out of the range of doubles. Sums and products of extreme magnitudes (`m |d|²`
+//! with `|d| = 1e200`, `ω·I·ω`) are computed on mantissas scaled by exact powers of two, so a
+//! result that is representable is exact (the unit-scale bits times the power of two) even when
+//! a naive intermediate would overflow or underflow. Bodies whose largest moment would fall
+//! below the smallest normal double (`2.2e-308`) are refused (their tensor would have lost
+//! its precision); angular momenta, energies and torques that small are returned as IEEE
+//! subnormals (the correctly rounded value).
 
 use crate::error::{check_finite, check_positive, Error, Result};
+use crate::inertia::scaling::{
+    check_overflow, check_range, exponent_of_max, ldexp, ldexp_mat, ldexp_vec, split,
+};
 use crate::inertia::tensor::{self, Principal, TopKind};
 use crate::{Mat3, Vec3};
+
+/// What to do when a result leaves the range of doubles.
+const HINT: &str = "express the body in other units (e.g. g and mm, or t and km)";
+
+/// What to do when ω makes a result overflow.
+const HINT_OMEGA: &str = "no body turning this fast has a finite value here";
 
 /// Tolerance of the rotation check of [`MassProperties::rotated`]: `|RᵀR − 1|` entrywise and
 /// `|det R − 1|` (a rotation matrix that went through text or single precision passes).
@@ -45,7 +63,7 @@ impl MassProperties {
     /// Builds without checks, for values that are valid by construction inside the crate
     /// (formulas of solids, exact integrals); the inertia is symmetrised.
     pub(crate) fn from_parts(mass: f64, center_of_mass: Vec3, inertia: Mat3) -> Self {
-        let inertia = (inertia + inertia.transpose()) * 0.5;
+        let inertia = tensor::symmetrised(&inertia);
         Self {
             mass,
             center_of_mass,
@@ -69,6 +87,13 @@ impl MassProperties {
         check_finite("inertia", inertia_about_point.as_slice())
             .map_err(|e| Error::inertia("inertia", e.message))?;
         let cm = tensor::shift_to_com(&inertia_about_point, mass, &center_of_mass, &point);
+        if !cm.iter().all(|x| x.is_finite()) {
+            return Err(Error::invalid(
+                "point",
+                "is so far from the centre of mass that the parallel-axis term m (|d|² 1 − d dᵀ) \
+                 exceeds the largest finite double (1.8e+308 kg·m²)",
+            ));
+        }
         // Round-off of the cancellation is relative to the tensor about the point.
         let inertia = tensor::check_inertia_scaled("inertia", &cm, inertia_about_point.amax())?;
         Ok(Self {
@@ -108,20 +133,46 @@ impl MassProperties {
             ));
         }
         check_finite("positions", positions.as_flattened())?;
-        let mass: f64 = masses.iter().sum();
-        let first: Vec3 = masses
+        // On mantissas: masses scaled by 2^-em, positions by 2^-er (exact), so that neither
+        // m r nor |d|² leaves the range when the results do not.
+        let em = exponent_of_max(masses);
+        let er = exponent_of_max(positions.as_flattened());
+        let ms: Vec<f64> = masses.iter().map(|m| ldexp(*m, -em)).collect();
+        let rs: Vec<Vec3> = positions
             .iter()
-            .zip(positions)
-            .map(|(m, r)| Vec3::from(*r) * *m)
-            .sum();
+            .map(|r| ldexp_vec(&Vec3::from(*r), -er))
+            .collect();
+        let mass: f64 = ms.iter().sum();
+        check_range("masses", "the total mass (kg)", mass, em, HINT)?;
+        let first: Vec3 = ms.iter().zip(&rs).map(|(m, r)| r * *m).sum();
         let com = first / mass;
         // Second pass about the centre of mass: no cancellation of large parallel-axis terms.
-        let inertia = masses
+        let inertia: Mat3 = ms
             .iter()
-            .zip(positions)
-            .map(|(m, r)| tensor::point_inertia(*m, &(Vec3::from(*r) - com)))
+            .zip(&rs)
+            .map(|(m, r)| {
+                let d = r - com;
+                (Mat3::identity() * d.norm_squared() - d * d.transpose()) * *m
+            })
             .sum();
-        Ok(Self::from_parts(mass, com, inertia))
+        let k = em + 2 * er;
+        let blame = if (2 * er).abs() >= em.abs() {
+            "positions"
+        } else {
+            "masses"
+        };
+        check_range(
+            blame,
+            "the largest moment of inertia (kg·m²)",
+            inertia.amax(),
+            k,
+            HINT,
+        )?;
+        Ok(Self::from_parts(
+            ldexp(mass, em),
+            ldexp_vec(&com, er),
+            ldexp_mat(&inertia, k),
+        ))
     }
 
     /// The mass (kg).
@@ -140,14 +191,36 @@ impl MassProperties {
     }
 
     /// The inertia tensor about the point `point` (m), in the same axes (kg·m²): the
-    /// parallel-axis theorem `I_P = I_cm + m (|d|² 1 − d dᵀ)`, `d = com − P`.
+    /// parallel-axis theorem `I_P = I_cm + m (|d|² 1 − d dᵀ)`, `d = com − P`. An error names
+    /// `point` when the result would exceed the range of doubles.
     pub fn inertia_about(&self, point: &Vec3) -> Result<Mat3> {
-        check_finite("point", point.as_slice())?;
-        Ok(tensor::shift_from_com(
-            &self.inertia,
-            self.mass,
-            &self.center_of_mass,
-            point,
+        self.shifted("point", point)
+    }
+
+    /// The inertia about `point`, or an error naming `argument` (non-finite point, or a
+    /// result beyond the range of doubles).
+    fn shifted(&self, argument: &str, point: &Vec3) -> Result<Mat3> {
+        check_finite(argument, point.as_slice())?;
+        let d = self.center_of_mass - point;
+        let i = tensor::shift_from_com(&self.inertia, self.mass, &self.center_of_mass, point);
+        if d.iter().all(|x| x.is_finite()) && i.iter().all(|x| x.is_finite()) {
+            return Ok(i);
+        }
+        // The magnitude m |d|² on mantissas, for the message.
+        let (m, em) = split(self.mass);
+        let ed = exponent_of_max(&[self.center_of_mass.amax(), point.amax()]);
+        let ds = ldexp_vec(&self.center_of_mass, -ed) - ldexp_vec(point, -ed);
+        let value = m * ds.norm_squared();
+        check_overflow(
+            argument,
+            "the inertia about this point (kg·m²)",
+            value,
+            em + 2 * ed,
+            "the point is too far from the centre of mass for this mass",
+        )?;
+        Err(Error::invalid(
+            argument,
+            "the inertia about this point exceeds the largest finite double (1.8e+308)",
         ))
     }
 
@@ -155,16 +228,17 @@ impl MassProperties {
     fn inertia_at(&self, about: Option<&Vec3>) -> Result<Mat3> {
         match about {
             None => Ok(self.inertia),
-            Some(p) => {
-                check_finite("about", p.as_slice())?;
-                Ok(tensor::shift_from_com(
-                    &self.inertia,
-                    self.mass,
-                    &self.center_of_mass,
-                    p,
-                ))
-            }
+            Some(p) => self.shifted("about", p),
         }
+    }
+
+    /// `(I·2^-eI, ω·2^-eω, eI, eω)`: the tensor about `about` and ω on mantissas.
+    fn scaled_omega(&self, omega: &Vec3, about: Option<&Vec3>) -> Result<(Mat3, Vec3, i32, i32)> {
+        check_finite("omega", omega.as_slice())?;
+        let i = self.inertia_at(about)?;
+        let ei = exponent_of_max(i.as_slice());
+        let ew = exponent_of_max(omega.as_slice());
+        Ok((ldexp_mat(&i, -ei), ldexp_vec(omega, -ew), ei, ew))
     }
 
     /// Principal moments (kg·m², ascending) and principal axes (columns of a proper rotation);
@@ -179,30 +253,51 @@ impl MassProperties {
     }
 
     /// The same body moved by `offset` (m): the centre of mass moves, the inertia about it does
-    /// not change.
+    /// not change. An error names `offset` when the new centre of mass would not be finite.
     pub fn translated(&self, offset: &Vec3) -> Result<Self> {
         check_finite("offset", offset.as_slice())?;
+        let com = self.center_of_mass + offset;
+        if !com.iter().all(|x| x.is_finite()) {
+            return Err(Error::invalid(
+                "offset",
+                format!(
+                    "moves the centre of mass from {:?} to beyond the largest finite double \
+                     (1.8e+308 m)",
+                    self.center_of_mass.as_slice()
+                ),
+            ));
+        }
         Ok(Self {
-            center_of_mass: self.center_of_mass + offset,
+            center_of_mass: com,
             ..*self
         })
     }
 
     /// The same body rotated actively by the rotation matrix `rotation` about the origin of its
     /// axes: `com ↦ R com`, `I ↦ R I Rᵀ`. `rotation` must be orthonormal with `det = +1` within
-    /// [`ROTATION_TOL`], else an [`Error::rotation`] naming `rotation`.
+    /// [`ROTATION_TOL`], else an [`Error::rotation`] naming `rotation`; an [`Error::invalid`]
+    /// naming `rotation` when a rotated entry would exceed the range of doubles (a centre of
+    /// mass or a tensor at the very top of the range).
     pub fn rotated(&self, rotation: &Mat3) -> Result<Self> {
         check_rotation("rotation", rotation)?;
-        Ok(Self::from_parts(
-            self.mass,
-            rotation * self.center_of_mass,
-            tensor::rotate(rotation, &self.inertia),
-        ))
+        let ec = exponent_of_max(self.center_of_mass.as_slice());
+        let com = ldexp_vec(&(rotation * ldexp_vec(&self.center_of_mass, -ec)), ec);
+        let inertia = tensor::rotate(rotation, &self.inertia);
+        if !(com.iter().all(|x| x.is_finite()) && inertia.iter().all(|x| x.is_finite())) {
+            return Err(Error::invalid(
+                "rotation",
+                "turns the body so that an entry of its centre of mass or inertia tensor \
+                 exceeds the largest finite double (1.8e+308)",
+            ));
+        }
+        Ok(Self::from_parts(self.mass, com, inertia))
     }
 
     /// The body made of all of `bodies` rigidly joined: the masses add, the centre of mass is
     /// the mass-weighted mean, and each inertia is shifted to the common centre of mass by the
-    /// parallel-axis theorem before summing. Errors name `bodies` when it is empty.
+    /// parallel-axis theorem before summing. Errors name `bodies` when it is empty, or when the
+    /// total mass or the combined inertia would leave the range of doubles (beyond `f64::MAX`,
+    /// or a largest moment below the smallest normal double).
     pub fn combine(bodies: &[MassProperties]) -> Result<Self> {
         if bodies.is_empty() {
             return Err(Error::invalid(
@@ -210,17 +305,49 @@ impl MassProperties {
                 "must hold at least one body, got none",
             ));
         }
-        let mass: f64 = bodies.iter().map(|b| b.mass).sum();
-        let com: Vec3 = bodies
-            .iter()
-            .map(|b| b.center_of_mass * b.mass)
-            .sum::<Vec3>()
-            / mass;
+        // Masses and centres of mass on mantissas (exact powers of two).
+        let masses: Vec<f64> = bodies.iter().map(|b| b.mass).collect();
+        let em = exponent_of_max(&masses);
+        let ec = exponent_of_max(
+            &bodies
+                .iter()
+                .map(|b| b.center_of_mass.amax())
+                .collect::<Vec<_>>(),
+        );
+        let mass: f64 = masses.iter().map(|m| ldexp(*m, -em)).sum();
+        check_range("bodies", "the total mass (kg)", mass, em, HINT)?;
+        let com = ldexp_vec(
+            &(bodies
+                .iter()
+                .map(|b| ldexp_vec(&b.center_of_mass, -ec) * ldexp(b.mass, -em))
+                .sum::<Vec3>()
+                / mass),
+            ec,
+        );
         let inertia: Mat3 = bodies
             .iter()
             .map(|b| tensor::shift_from_com(&b.inertia, b.mass, &b.center_of_mass, &com))
             .sum();
-        Ok(Self::from_parts(mass, com, inertia))
+        if !inertia.iter().all(|x| x.is_finite()) {
+            return Err(Error::invalid(
+                "bodies",
+                "the combined inertia tensor would exceed the largest finite double \
+                 (1.8e+308 kg·m²): the bodies are too heavy or too far apart; express them in \
+                 other units",
+            ));
+        }
+        let largest = inertia.amax();
+        if largest > 0.0 && largest < f64::MIN_POSITIVE {
+            return Err(Error::invalid(
+                "bodies",
+                format!(
+                    "the combined inertia tensor would be about {largest:.3e} kg·m², below the \
+                     smallest normal double (2.2e-308), where it cannot be represented to full \
+                     precision; {HINT}"
+                ),
+            ));
+        }
+        Ok(Self::from_parts(ldexp(mass, em), com, inertia))
     }
 
     /// Angular momentum `L = I·ω` (kg·m²/s; 2.51 with the errata's summation index, 2.63) of the
@@ -228,34 +355,60 @@ impl MassProperties {
     /// is `None` (the spin angular momentum), else about the fixed point `about` (m) around
     /// which the body turns (`L_P = I_P·ω`, equal to Σ m r × (ω × r) with r from P, 2.44).
     pub fn angular_momentum(&self, omega: &Vec3, about: Option<&Vec3>) -> Result<Vec3> {
-        check_finite("omega", omega.as_slice())?;
-        Ok(self.inertia_at(about)? * omega)
+        let (i, w, ei, ew) = self.scaled_omega(omega, about)?;
+        let l = i * w;
+        check_overflow(
+            "omega",
+            "the angular momentum (kg·m²/s)",
+            l.amax(),
+            ei + ew,
+            HINT_OMEGA,
+        )?;
+        Ok(ldexp_vec(&l, ei + ew))
     }
 
     /// Kinetic energy of rotation `T = ½ ω·I·ω = ½ ω·L` (J; 2.53, 2.64): about the centre of mass
     /// when `about` is `None`, else the whole kinetic energy of the body turning about the fixed
     /// point `about` (m) with angular velocity `omega` (rad/s).
     pub fn kinetic_energy(&self, omega: &Vec3, about: Option<&Vec3>) -> Result<f64> {
-        let l = self.angular_momentum(omega, about)?;
-        Ok(0.5 * omega.dot(&l))
+        let (i, w, ei, ew) = self.scaled_omega(omega, about)?;
+        let t = 0.5 * w.dot(&(i * w));
+        check_overflow(
+            "omega",
+            "the kinetic energy (J)",
+            t,
+            ei + 2 * ew,
+            HINT_OMEGA,
+        )?;
+        Ok(ldexp(t, ei + 2 * ew))
     }
 
     /// The torque `N = ω × L` (N·m) that keeps the body turning at the constant angular velocity
     /// `omega` (rad/s), about `about` (m; `None`: the centre of mass): L is carried round by the
     /// rotation, `dL/dt = ω × L = N` (2.58–2.59). Zero exactly when ω is along a principal axis.
     pub fn holding_torque(&self, omega: &Vec3, about: Option<&Vec3>) -> Result<Vec3> {
-        let l = self.angular_momentum(omega, about)?;
-        Ok(omega.cross(&l))
+        let (i, w, ei, ew) = self.scaled_omega(omega, about)?;
+        let n = w.cross(&(i * w));
+        check_overflow(
+            "omega",
+            "the holding torque (N·m)",
+            n.amax(),
+            ei + 2 * ew,
+            HINT_OMEGA,
+        )?;
+        Ok(ldexp_vec(&n, ei + 2 * ew))
     }
 
     /// The angle (rad, in `[0, π/2]` for a physical body) between the angular momentum `L` and
     /// the angular velocity `omega` (rad/s), about `about` (m; `None`: the centre of mass):
     /// zero when ω is along a principal axis (2.57: in general L is not parallel to ω).
     /// Errors name `omega` when ω = 0 or when L = 0 (ω along the axis of a zero moment), where
-    /// the angle is undefined.
+    /// the angle is undefined. Computed on mantissas, so it is defined however small or large
+    /// L is.
     pub fn momentum_angle(&self, omega: &Vec3, about: Option<&Vec3>) -> Result<f64> {
-        let l = self.angular_momentum(omega, about)?;
-        if omega.norm() == 0.0 {
+        let (i, w, _, _) = self.scaled_omega(omega, about)?;
+        let l = i * w;
+        if w.norm() == 0.0 {
             return Err(Error::invalid(
                 "omega",
                 "must be non-zero for the angle between L and ω",
@@ -268,7 +421,7 @@ impl MassProperties {
                  between L and ω is undefined",
             ));
         }
-        Ok(omega.cross(&l).norm().atan2(omega.dot(&l)))
+        Ok(w.cross(&l).norm().atan2(w.dot(&l)))
     }
 }
 

@@ -215,16 +215,9 @@ where
             ),
         ));
     }
-    let c0 = [
-        0.5 * (bounds[0][0] + bounds[0][1]),
-        0.5 * (bounds[1][0] + bounds[1][1]),
-        0.5 * (bounds[2][0] + bounds[2][1]),
-    ];
-    let h0 = [
-        0.5 * (bounds[0][1] - bounds[0][0]),
-        0.5 * (bounds[1][1] - bounds[1][0]),
-        0.5 * (bounds[2][1] - bounds[2][0]),
-    ];
+    // Halves first, so that bounds near ±1.8e308 do not overflow.
+    let c0 = bounds.map(|b| 0.5 * b[0] + 0.5 * b[1]);
+    let h0 = bounds.map(|b| 0.5 * b[1] - 0.5 * b[0]);
     let radius = (h0[0] * h0[0] + h0[1] * h0[1] + h0[2] * h0[2]).sqrt();
     let mut cub = Cubature {
         c0,
@@ -253,6 +246,7 @@ where
     let mut regions = cub.evaluate(&todo, &mut density)?;
     loop {
         let (total, err) = totals(&regions);
+        check_representable(&total, &err)?;
         let est = Estimate::new(&total, &err, c0);
         let scales = Scales::new(&est, radius, options);
         let converged = est.mass > 0.0 && scales.within(&est);
@@ -539,7 +533,41 @@ impl Scales {
     }
 }
 
+/// An error naming `density` when a moment or its error estimate overflowed: the mass,
+/// first or second moments of this density over these bounds exceed the range of doubles.
+/// (Without it the refinement would chase infinite errors one region at a time.)
+fn check_representable(total: &[f64; 10], err: &[f64; 10]) -> Result<()> {
+    if total.iter().chain(err).all(|x| x.is_finite()) {
+        return Ok(());
+    }
+    Err(Error::invalid(
+        "density",
+        format!(
+            "its integrals over the bounds exceed the largest finite double (1.8e+308): mass \
+             {:e} kg, second moments up to {:e} kg·m²; no finite answer exists, express the \
+             density and the bounds in other units",
+            total[0],
+            total[4..].iter().fold(0.0f64, |a, x| a.max(x.abs()))
+        ),
+    ))
+}
+
 fn finish(est: Estimate, evaluations: usize, converged: bool) -> Result<DensityIntegral> {
+    let finite = est.mass.is_finite()
+        && est.com.iter().all(|x| x.is_finite())
+        && est.inertia.iter().all(|x| x.is_finite());
+    if !finite {
+        return Err(Error::invalid(
+            "density",
+            format!(
+                "its mass properties over the bounds exceed the largest finite double \
+                 (1.8e+308): mass {:e} kg, centre of mass {:?} m; express the density and the \
+                 bounds in other units",
+                est.mass,
+                est.com.as_slice()
+            ),
+        ));
+    }
     if est.mass.is_nan() || est.mass <= 0.0 {
         return Err(Error::invalid(
             "density",

@@ -11,30 +11,51 @@
 //! ∫ x xᵀ dV = D / 120 · (a aᵀ + b bᵀ + c cᵀ + s sᵀ),   s = a + b + c
 //! ```
 //!
-//! (exact for polynomials of degree ≤ 2; Tonon 2004). `p₀` is the centre of the bounding box,
-//! which keeps the terms small and the sums accurate. The second moments about the centre of
+//! (exact for polynomials of degree ≤ 2; Tonon 2004). The second moments about the centre of
 //! mass give the inertia `I = tr(C) 1 − C` (the unit's 2.61–2.62 with uniform ρ).
+//!
+//! **Accuracy and range.** Each closed component (faces connected across edges) is summed about
+//! its own `p₀`, the centre of the box of the vertices **it** uses, on coordinates scaled by a
+//! power of two to `[-2, 2]`; the components are then composed about their common centre of
+//! mass by the parallel-axis theorem on the moments (exact for the signed volumes of cavities),
+//! lengths and volumes carried in separate power-of-two units. So unused vertices play no part,
+//! components far apart (two unit cubes 1e7 apart) keep their accuracy, and a mesh of 1e±100 m
+//! neither overflows nor underflows: a mass or inertia beyond `f64::MAX`, or whose largest
+//! moment is below the smallest normal double, is an [`Error::invalid`] naming `vertices` or
+//! `density`. The physical check of the tensor allows 16 ε of the magnitude of what was summed
+//! ([`tensor::check_inertia_scaled`]; for a convex body that is the largest moment, Drake's
+//! tolerance).
 //!
 //! **Checks** (each refusal is an [`Error::mesh`] naming `faces` or `vertices` and saying what
 //! is wrong and where): face indices in range; finite vertices; not every face degenerate;
 //! closed (every edge shared by exactly two faces: the number of boundary edges is reported);
 //! manifold (no edge shared by more than two faces); consistently oriented (each edge traversed
 //! once in each direction); outward (positive total volume, else "faces are oriented inward;
-//! reverse the winding"); non-zero volume. Faces with a repeated vertex index are degenerate
-//! (they have no area) and are left out of the edge checks; faces of zero area with three
-//! distinct indices take part in them as usual. Self-intersection is not checked.
+//! reverse the winding"); non-zero volume; no self-intersection (two faces meeting beyond the
+//! vertex or edge they share by index: "faces i and j intersect"); components nested properly
+//! (a shell inside another of the same winding would be counted twice; a cavity must be inside
+//! a solid). Faces with a repeated vertex index are degenerate (they have no area) and are left
+//! out of the edge checks; faces of zero area with three distinct indices take part in them as
+//! usual. The last two checks, with their limits, are in `mesh_embedding.rs`.
 //!
 //! **Edge check without hashing.** Each use of an undirected edge `{a, b}` (`a < b`) by a face
-//! is filed under its low vertex `a`, with `b` and a direction bit, by a counting sort into a
-//! compressed (CSR) list; each vertex's short list is then sorted and its runs counted: one
-//! use is a boundary edge, more than two a non-manifold edge, two in the same direction an
-//! inconsistent orientation. `O(n · degree)`, parallel (rayon: each task owns a range of low
-//! vertices, so no atomics and no `unsafe`).
+//! is filed under its low vertex `a`, with `b`, a direction bit and the face, by a counting
+//! sort into a compressed (CSR) list; each vertex's short list is then sorted and its runs
+//! counted: one use is a boundary edge, more than two a non-manifold edge, two in the same
+//! direction an inconsistent orientation; the two faces of a manifold edge are joined in a
+//! lock-free union-find (the components). `O(n · degree)`, parallel (rayon: each task owns a
+//! range of low vertices; no `unsafe`).
 
 use rayon::prelude::*;
 
 use crate::error::{check_positive, Error, Result};
 use crate::inertia::body::MassProperties;
+use crate::inertia::mesh_embedding::{
+    probe_vertices, vertex_owners, Index, Points, UnionFind, UNUSED,
+};
+use crate::inertia::scaling::{
+    check_range, exponent, exponent_of_max, ldexp, ldexp_mat, ldexp_vec, magnitude, split,
+};
 use crate::inertia::tensor;
 use crate::{Mat3, Vec3};
 
@@ -73,8 +94,11 @@ pub fn mesh_mass_properties<I: FaceIndex>(
 ) -> Result<MassProperties> {
     check_positive("density", density)?;
     let tris = checked_arrays(vertices, faces)?;
-    check_topology(vertices.len() / 3, &tris)?;
-    integrate(vertices, &tris, density)
+    let (comp, ncomp) = check_topology(vertices.len() / 3, &tris)?;
+    let parts = integrate_parts(vertices, &tris, &comp, ncomp);
+    let whole = assemble(&parts, tris.len())?;
+    check_embedding(vertices, &tris, &comp, &parts)?;
+    finish(&whole, density)
 }
 
 /// [`mesh_mass_properties`] for vertices as `[x, y, z]` rows and faces as `[i, j, k]` rows.
@@ -236,7 +260,9 @@ impl EdgeDefects {
 /// vertices (each task scans all faces and files only its own edges). Then each vertex's short
 /// list is sorted and its runs classified: one use is a boundary edge, more than two a
 /// non-manifold edge, two uses in the same direction an inconsistent orientation.
-fn check_topology(nv: usize, tris: &[[u32; 3]]) -> Result<()> {
+/// On success, returns each face's component (faces connected across shared edges; `UNUSED`
+/// for faces with a repeated index) and the number of components.
+fn check_topology(nv: usize, tris: &[[u32; 3]]) -> Result<(Vec<u32>, usize)> {
     let tasks = rayon::current_num_threads().clamp(1, 64);
     let span = nv.div_ceil(tasks).max(1);
     // Per-vertex counts, each task filling its own range.
@@ -265,7 +291,8 @@ fn check_topology(nv: usize, tris: &[[u32; 3]]) -> Result<()> {
     start.push(acc);
     drop(count);
     // Fill: the ranges of vertices map to disjoint ranges of the list.
-    let mut list = vec![0u32; acc];
+    // Entries: (high vertex << 1 | direction) << 32 | face.
+    let mut list = vec![0u64; acc];
     let mut pieces = Vec::with_capacity(tasks);
     let mut rest = list.as_mut_slice();
     for k in 0..nv.div_ceil(span) {
@@ -278,14 +305,14 @@ fn check_topology(nv: usize, tris: &[[u32; 3]]) -> Result<()> {
         let base = start[*v0];
         let mut cursor: Vec<usize> = start[*v0..*v1].iter().map(|s| s - base).collect();
         let (lo, hi) = (*v0 as u32, *v1 as u32);
-        for t in tris {
+        for (f, t) in tris.iter().enumerate() {
             if index_degenerate(t) {
                 continue;
             }
             for (a, entry) in half_edges(t) {
                 if a >= lo && a < hi {
                     let c = &mut cursor[(a - lo) as usize];
-                    piece[*c] = entry;
+                    piece[*c] = u64::from(entry) << 32 | f as u64;
                     *c += 1;
                 }
             }
@@ -302,6 +329,7 @@ fn check_topology(nv: usize, tris: &[[u32; 3]]) -> Result<()> {
         blocks.push((v0, v1, piece));
         rest = tail;
     }
+    let components = UnionFind::new(tris.len());
     let defects = blocks
         .into_par_iter()
         .map(|(v0, v1, piece)| {
@@ -312,15 +340,19 @@ fn check_topology(nv: usize, tris: &[[u32; 3]]) -> Result<()> {
                 edges.sort_unstable();
                 let mut i = 0;
                 while i < edges.len() {
-                    let b = edges[i] >> 1;
+                    let b = (edges[i] >> 33) as u32;
                     let mut j = i;
                     let mut up = 0u32;
-                    while j < edges.len() && edges[j] >> 1 == b {
-                        up += edges[j] & 1;
+                    while j < edges.len() && (edges[j] >> 33) as u32 == b {
+                        up += ((edges[j] >> 32) & 1) as u32;
                         j += 1;
                     }
                     let uses = (j - i) as u32;
                     let a = a as u32;
+                    if uses == 2 {
+                        // The two faces of a manifold edge are in one component.
+                        components.union(edges[i] as u32, edges[i + 1] as u32);
+                    }
                     if uses == 1 {
                         d.boundary += 1;
                         d.first_boundary = min_opt(d.first_boundary, Some((a, b)));
@@ -368,155 +400,426 @@ fn check_topology(nv: usize, tris: &[[u32; 3]]) -> Result<()> {
             face_of(a, b)
         ));
     }
-    if problems.is_empty() {
-        Ok(())
-    } else {
-        Err(Error::mesh("faces", problems.join("; ")))
+    if !problems.is_empty() {
+        return Err(Error::mesh("faces", problems.join("; ")));
     }
-}
-
-/// Sums over faces: `[Σ D, Σ D s (3), Σ D (a aᵀ + b bᵀ + c cᵀ + s sᵀ) (6: xx yy zz xy yz zx),
-/// Σ |D|]` and the number of zero-area faces.
-#[derive(Clone, Copy)]
-struct Sums([f64; 11], u64);
-
-impl Sums {
-    fn zero() -> Self {
-        Sums([0.0; 11], 0)
-    }
-    fn merge(mut self, o: Self) -> Self {
-        for (x, y) in self.0.iter_mut().zip(o.0) {
-            *x += y;
-        }
-        self.1 += o.1;
-        self
-    }
-}
-
-/// The exact polyhedral integrals (module docs), then mass, centre of mass and inertia.
-fn integrate(vertices: &[f64], tris: &[[u32; 3]], density: f64) -> Result<MassProperties> {
-    // Reference point: the centre of the bounding box.
-    let (lo, hi) = vertices
-        .par_chunks_exact(3)
+    // Compact component labels, in order of each component's lowest face.
+    let roots: Vec<u32> = (0..tris.len() as u32)
+        .into_par_iter()
         .with_min_len(CHUNK)
-        .fold(
-            || ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
-            |(mut lo, mut hi), v| {
-                for i in 0..3 {
-                    lo[i] = lo[i].min(v[i]);
-                    hi[i] = hi[i].max(v[i]);
-                }
-                (lo, hi)
-            },
-        )
-        .reduce(
-            || ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
-            |(l1, h1), (l2, h2)| {
-                (
-                    [l1[0].min(l2[0]), l1[1].min(l2[1]), l1[2].min(l2[2])],
-                    [h1[0].max(h2[0]), h1[1].max(h2[1]), h1[2].max(h2[2])],
-                )
-            },
-        );
-    let p0 = [
-        0.5 * (lo[0] + hi[0]),
-        0.5 * (lo[1] + hi[1]),
-        0.5 * (lo[2] + hi[2]),
-    ];
-    let Sums(s, degenerate) = tris
+        .map(|f| {
+            if index_degenerate(&tris[f as usize]) {
+                UNUSED
+            } else {
+                components.find(f)
+            }
+        })
+        .collect();
+    let mut label = vec![UNUSED; tris.len()];
+    let mut n = 0u32;
+    for (f, r) in roots.iter().enumerate() {
+        if *r == f as u32 {
+            label[f] = n;
+            n += 1;
+        }
+    }
+    let comp = roots
         .par_iter()
         .with_min_len(CHUNK)
-        .fold(Sums::zero, |mut acc, t| {
-            let p = |i: u32| {
-                let k = 3 * i as usize;
-                let v = &vertices[k..k + 3];
-                [v[0] - p0[0], v[1] - p0[1], v[2] - p0[2]]
-            };
-            let (a, b, c) = (p(t[0]), p(t[1]), p(t[2]));
-            // Zero area: (b − a) × (c − a) = 0.
-            let (u, w) = (
-                [b[0] - a[0], b[1] - a[1], b[2] - a[2]],
-                [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
-            );
-            let n = [
-                u[1] * w[2] - u[2] * w[1],
-                u[2] * w[0] - u[0] * w[2],
-                u[0] * w[1] - u[1] * w[0],
-            ];
-            if n == [0.0; 3] {
-                acc.1 += 1;
-                return acc;
+        .map(|&r| {
+            if r == UNUSED {
+                UNUSED
+            } else {
+                label[r as usize]
             }
-            let bc = [
-                b[1] * c[2] - b[2] * c[1],
-                b[2] * c[0] - b[0] * c[2],
-                b[0] * c[1] - b[1] * c[0],
-            ];
-            let d = a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2];
-            let sv = [a[0] + b[0] + c[0], a[1] + b[1] + c[1], a[2] + b[2] + c[2]];
-            let m = &mut acc.0;
-            m[0] += d;
-            m[1] += d * sv[0];
-            m[2] += d * sv[1];
-            m[3] += d * sv[2];
-            let q = |i: usize, j: usize| a[i] * a[j] + b[i] * b[j] + c[i] * c[j] + sv[i] * sv[j];
-            m[4] += d * q(0, 0);
-            m[5] += d * q(1, 1);
-            m[6] += d * q(2, 2);
-            m[7] += d * q(0, 1);
-            m[8] += d * q(1, 2);
-            m[9] += d * q(2, 0);
-            m[10] += d.abs();
-            acc
         })
-        .reduce(Sums::zero, Sums::merge);
-    if degenerate as usize == tris.len() {
+        .collect();
+    Ok((comp, n as usize))
+}
+
+/// The face sums of one component, on coordinates relative to its reference point `p` (the
+/// centre of the box of its vertices) scaled by `2^-e` (its half-extent in `[1, 2)`):
+/// `[Σ D, Σ D s (3), Σ D (a aᵀ + b bᵀ + c cᵀ + s sᵀ) (6: xx yy zz xy yz zx), Σ |D|,
+/// Σ |D| (|a|² + |b|² + |c|² + |s|²)]`, and its number of zero-area faces.
+#[derive(Clone, Copy)]
+struct Part {
+    p: [f64; 3],
+    e: i32,
+    s: [f64; 12],
+    degenerate: u64,
+}
+
+/// Integrates each component about a point of its own (module docs).
+fn integrate_parts(vertices: &[f64], tris: &[[u32; 3]], comp: &[u32], ncomp: usize) -> Vec<Part> {
+    // Faces grouped by component (a counting sort).
+    let mut start = vec![0usize; ncomp + 1];
+    for &c in comp {
+        if c != UNUSED {
+            start[c as usize + 1] += 1;
+        }
+    }
+    for k in 0..ncomp {
+        start[k + 1] += start[k];
+    }
+    let mut members = vec![0u32; start[ncomp]];
+    let mut cursor = start.clone();
+    for (f, &c) in comp.iter().enumerate() {
+        if c != UNUSED {
+            members[cursor[c as usize]] = f as u32;
+            cursor[c as usize] += 1;
+        }
+    }
+    let vertex = |i: u32| {
+        let k = 3 * i as usize;
+        [vertices[k], vertices[k + 1], vertices[k + 2]]
+    };
+    (0..ncomp)
+        .into_par_iter()
+        .map(|k| {
+            let faces = &members[start[k]..start[k + 1]];
+            // The box of the component's vertices (unused vertices play no part).
+            let (lo, hi) = faces
+                .par_iter()
+                .with_min_len(CHUNK)
+                .fold(
+                    || ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
+                    |(mut lo, mut hi), &f| {
+                        for &i in &tris[f as usize] {
+                            let v = vertex(i);
+                            for j in 0..3 {
+                                lo[j] = lo[j].min(v[j]);
+                                hi[j] = hi[j].max(v[j]);
+                            }
+                        }
+                        (lo, hi)
+                    },
+                )
+                .reduce(
+                    || ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
+                    |(l1, h1), (l2, h2)| {
+                        (
+                            [0, 1, 2].map(|j| l1[j].min(l2[j])),
+                            [0, 1, 2].map(|j| h1[j].max(h2[j])),
+                        )
+                    },
+                );
+            // Halves first: no overflow for coordinates near ±1.8e308.
+            let p = [0, 1, 2].map(|j| 0.5 * lo[j] + 0.5 * hi[j]);
+            let half = (0..3).fold(0.0f64, |m, j| m.max(0.5 * hi[j] - 0.5 * lo[j]));
+            let e = exponent(half);
+            let ps = p.map(|x| ldexp(x, -e));
+            let (s, degenerate) = faces
+                .par_iter()
+                .with_min_len(CHUNK)
+                .fold(
+                    || ([0.0; 12], 0u64),
+                    |(mut m, mut degenerate), &f| {
+                        let q = |i: u32| {
+                            let v = vertex(i);
+                            [0, 1, 2].map(|j| ldexp(v[j], -e) - ps[j])
+                        };
+                        let t = &tris[f as usize];
+                        let (a, b, c) = (q(t[0]), q(t[1]), q(t[2]));
+                        // Zero area: (b − a) × (c − a) = 0.
+                        let (u, w) = (
+                            [b[0] - a[0], b[1] - a[1], b[2] - a[2]],
+                            [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
+                        );
+                        let n = [
+                            u[1] * w[2] - u[2] * w[1],
+                            u[2] * w[0] - u[0] * w[2],
+                            u[0] * w[1] - u[1] * w[0],
+                        ];
+                        if n == [0.0; 3] {
+                            degenerate += 1;
+                            return (m, degenerate);
+                        }
+                        let bc = [
+                            b[1] * c[2] - b[2] * c[1],
+                            b[2] * c[0] - b[0] * c[2],
+                            b[0] * c[1] - b[1] * c[0],
+                        ];
+                        let d = a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2];
+                        let sv = [a[0] + b[0] + c[0], a[1] + b[1] + c[1], a[2] + b[2] + c[2]];
+                        m[0] += d;
+                        m[1] += d * sv[0];
+                        m[2] += d * sv[1];
+                        m[3] += d * sv[2];
+                        let sq = |i: usize, j: usize| {
+                            a[i] * a[j] + b[i] * b[j] + c[i] * c[j] + sv[i] * sv[j]
+                        };
+                        m[4] += d * sq(0, 0);
+                        m[5] += d * sq(1, 1);
+                        m[6] += d * sq(2, 2);
+                        m[7] += d * sq(0, 1);
+                        m[8] += d * sq(1, 2);
+                        m[9] += d * sq(2, 0);
+                        m[10] += d.abs();
+                        m[11] += d.abs() * (sq(0, 0) + sq(1, 1) + sq(2, 2));
+                        (m, degenerate)
+                    },
+                )
+                .reduce(
+                    || ([0.0; 12], 0u64),
+                    |(mut x, d1), (y, d2)| {
+                        for (a, b) in x.iter_mut().zip(y) {
+                            *a += b;
+                        }
+                        (x, d1 + d2)
+                    },
+                );
+            Part {
+                p,
+                e,
+                s,
+                degenerate,
+            }
+        })
+        .collect()
+}
+
+/// The signed volume of a part relative to the tetrahedra it was summed from: `+1`, `−1`, or
+/// `0` for a component that encloses no volume (within round-off, as for the whole mesh).
+fn part_sign(part: &Part) -> i8 {
+    let (v, a) = (part.s[0], part.s[10]);
+    if v.abs() <= ZERO_VOLUME_RTOL * a || v == 0.0 {
+        0
+    } else if v > 0.0 {
+        1
+    } else {
+        -1
+    }
+}
+
+/// A signed volume within this fraction of the volume of the tetrahedra summed is zero (the
+/// round-off of the sum of `|D|`, with a wide margin: a real solid is far from it).
+const ZERO_VOLUME_RTOL: f64 = 1e-12;
+
+/// What to do when the mass properties leave the range of doubles.
+const HINT: &str = "express the mesh and the density in other units (e.g. mm and g/mm³, or km)";
+
+/// The whole mesh about the point `g`, with lengths in units of `2^e` and volumes in units of
+/// `2^(3 ev)` (the largest component's scale: a tiny component far away neither underflows
+/// nor spoils the others): volume, centre of mass, inertia per unit density (units
+/// `2^(3 ev + 2 e)`), and the magnitude of what was summed into the inertia (its round-off
+/// scale).
+struct Whole {
+    g: [f64; 3],
+    e: i32,
+    ev: i32,
+    volume: f64,
+    com: Vec3,
+    inertia: Mat3,
+    roundoff: f64,
+}
+
+/// Composes the parts about their common centre of mass (the parallel-axis theorem on the
+/// moments, exact for signed volumes), after the volume checks.
+fn assemble(parts: &[Part], nf: usize) -> Result<Whole> {
+    let degenerate: u64 = parts.iter().map(|p| p.degenerate).sum();
+    if parts.is_empty() || degenerate as usize == nf {
         return Err(Error::mesh(
             "faces",
-            format!("all {} faces are degenerate (zero area)", tris.len()),
+            format!("all {nf} faces are degenerate (zero area)"),
         ));
     }
-    let six_volume = s[0];
-    if six_volume.abs() <= 1e-12 * s[10] || six_volume == 0.0 {
+    // The common reference point and scales.
+    let g = [0, 1, 2].map(|j| {
+        let lo = parts.iter().fold(f64::INFINITY, |m, p| m.min(p.p[j]));
+        let hi = parts.iter().fold(f64::NEG_INFINITY, |m, p| m.max(p.p[j]));
+        0.5 * lo + 0.5 * hi
+    });
+    let half_offset = |p: &Part| [0, 1, 2].map(|j| 0.5 * p.p[j] - 0.5 * g[j]);
+    let ev = parts.iter().map(|p| p.e).max().unwrap_or(0);
+    let e = parts
+        .iter()
+        .map(|p| {
+            let d = half_offset(p);
+            if d == [0.0; 3] {
+                p.e
+            } else {
+                p.e.max(exponent_of_max(&d) + 1)
+            }
+        })
+        .max()
+        .unwrap_or(0);
+    // Per part: volume (2^3ev), offset from g (2^e), first moment about its point (2^(3ev+e)),
+    // second moments about it and their round-off scale (2^(3ev+2e)).
+    let scaled = |p: &Part| {
+        let v = ldexp(p.s[0] / 6.0, 3 * (p.e - ev));
+        let at = Vec3::from(half_offset(p).map(|x| ldexp(x, 1 - e)));
+        let m1 = Vec3::new(p.s[1], p.s[2], p.s[3]).map(|x| ldexp(x / 24.0, 4 * p.e - 3 * ev - e));
+        let s = p.s.map(|x| ldexp(x / 120.0, 5 * p.e - 3 * ev - 2 * e));
+        let m2 = Mat3::new(s[4], s[7], s[9], s[7], s[5], s[8], s[9], s[8], s[6]);
+        (v, at, m1, m2, s[11])
+    };
+    let mut volume = 0.0;
+    let mut tetrahedra = 0.0;
+    let mut first = Vec3::zeros();
+    for p in parts {
+        let (v, at, m1, _, _) = scaled(p);
+        volume += v;
+        tetrahedra += ldexp(p.s[10] / 6.0, 3 * (p.e - ev));
+        first += at * v + m1;
+    }
+    if volume.abs() <= ZERO_VOLUME_RTOL * tetrahedra || volume == 0.0 {
         return Err(Error::mesh(
             "vertices",
             format!(
-                "the mesh encloses zero volume (signed volume {:.3e} m³ against {:.3e} m³ of \
+                "the mesh encloses zero volume (signed volume {} m³ against {} m³ of \
                  tetrahedra); a flat or collapsed mesh does not bound a solid",
-                six_volume / 6.0,
-                s[10] / 6.0
+                magnitude(volume, 3 * ev),
+                magnitude(tetrahedra, 3 * ev)
             ),
         ));
     }
-    if six_volume < 0.0 {
+    if volume < 0.0 {
         return Err(Error::mesh(
             "faces",
             format!(
                 "faces are oriented inward; reverse the winding (e.g. faces[:, ::-1]) so that \
-                 face normals point out of the solid (the total signed volume is {:.6e} m³ < 0)",
-                six_volume / 6.0
+                 face normals point out of the solid (the total signed volume is {} m³ < 0)",
+                magnitude(volume, 3 * ev)
             ),
         ));
     }
-    let volume = six_volume / 6.0;
-    // Centre of mass relative to p0, and second moments about it.
-    let c = Vec3::new(s[1], s[2], s[3]) / (24.0 * volume);
-    let second = Mat3::new(s[4], s[7], s[9], s[7], s[5], s[8], s[9], s[8], s[6]) / 120.0
-        - c * c.transpose() * volume;
-    let inertia = (Mat3::identity() * second.trace() - second) * density;
-    let com = c + Vec3::from(p0);
-    let mass = density * volume;
-    if let Err(e) = tensor::check_inertia("inertia", &inertia) {
+    let com = first / volume;
+    let mut second = Mat3::zeros();
+    let mut roundoff = 0.0;
+    for p in parts {
+        let (v, at, m1, m2, r) = scaled(p);
+        let d = at - com;
+        second += m2 + m1 * d.transpose() + d * m1.transpose() + d * d.transpose() * v;
+        roundoff += r + 2.0 * m1.norm() * d.norm() + v.abs() * d.norm_squared();
+    }
+    let inertia = Mat3::identity() * second.trace() - second;
+    Ok(Whole {
+        g,
+        e,
+        ev,
+        volume,
+        com,
+        inertia,
+        roundoff: 2.0 * roundoff,
+    })
+}
+
+/// No self-intersection, and winding numbers 0 or 1 ([`mesh_embedding`]).
+fn check_embedding(
+    vertices: &[f64],
+    tris: &[[u32; 3]],
+    comp: &[u32],
+    parts: &[Part],
+) -> Result<()> {
+    let pts = Points::new(vertices);
+    let index = Index::new(pts, tris, |f| comp[f] == UNUSED);
+    let (count, first) = index.intersections();
+    if let Some((i, j)) = first {
         return Err(Error::mesh(
             "faces",
             format!(
-                "the mesh integrals give a non-physical inertia tensor ({}); is the mesh \
-                 self-intersecting?",
-                e.message
+                "the mesh intersects itself: faces {i} and {j} intersect ({count} pair(s) of \
+                 faces meet beyond a vertex or edge they share); a self-intersecting surface \
+                 does not bound a solid, and where it overlaps the volume would be counted \
+                 twice: repair it (e.g. a boolean union of the overlapping parts), or build the \
+                 parts as separate bodies and combine them"
             ),
         ));
     }
-    MassProperties::new(mass, com, inertia).map_err(|e| Error::mesh("faces", e.to_string()))
+    if parts.len() < 2 {
+        return Ok(());
+    }
+    let owner = vertex_owners(vertices.len() / 3, tris, comp);
+    let probes = probe_vertices(&index, tris, comp, &owner, parts.len());
+    let bad = (0..parts.len()).into_par_iter().find_map_first(|k| {
+        let sigma = part_sign(&parts[k]);
+        if sigma == 0 {
+            return None;
+        }
+        let Some((f, v)) = probes[k] else {
+            return Some(format!(
+                "the closed component that includes face {} shares every vertex with other \
+                 components, so which side of them it lies on cannot be decided; separate it",
+                comp.iter().position(|&c| c == k as u32).unwrap_or(0)
+            ));
+        };
+        let k32 = k as u32;
+        let w = match index.winding(pts_at(pts, v), |g| comp[g] != k32) {
+            Some(w) => w,
+            None => {
+                return Some(format!(
+                    "the closed component that includes face {f} touches another component at \
+                     vertex {v}"
+                ))
+            }
+        };
+        match (sigma, w) {
+            (1, 0) | (-1, 1) => None,
+            (1, 1) => Some(format!(
+                "the closed component that includes face {f} lies inside another component \
+                 of the same orientation, so its volume would be counted twice; if it is \
+                 meant as a cavity, reverse its winding (normals pointing into the cavity)"
+            )),
+            (-1, 0) => Some(format!(
+                "the closed component that includes face {f} is oriented inward (a cavity) \
+                 but is not inside any solid; reverse its winding"
+            )),
+            (s, w) => Some(format!(
+                "the closed component that includes face {f} lies where the other components \
+                 already have winding number {w}, so the solid would be counted {} times \
+                 there",
+                w + i64::from(s)
+            )),
+        }
+    });
+    match bad {
+        Some(message) => Err(Error::mesh("faces", message)),
+        None => Ok(()),
+    }
+}
+
+/// Vertex `v` of the scaled mesh.
+fn pts_at(pts: Points<'_>, v: u32) -> [f64; 3] {
+    pts.point(v)
+}
+
+/// Mass, centre of mass and inertia in SI units from the composed mesh, checked against the
+/// range of doubles and (allowing for the round-off of the sums) physically.
+fn finish(whole: &Whole, density: f64) -> Result<MassProperties> {
+    let (rho, er) = split(density);
+    let (km, ki) = (3 * whole.ev, 3 * whole.ev + 2 * whole.e);
+    let blame = |k: i32| {
+        if er.abs() > k.abs() {
+            "density"
+        } else {
+            "vertices"
+        }
+    };
+    let m = rho * whole.volume;
+    check_range(blame(km), "the mass (kg)", m, er + km, HINT)?;
+    let i = whole.inertia * rho;
+    check_range(
+        blame(ki),
+        "the largest moment of inertia (kg·m²)",
+        i.amax(),
+        er + ki,
+        HINT,
+    )?;
+    let checked =
+        tensor::check_inertia_scaled("inertia", &whole.inertia, whole.roundoff).map_err(|err| {
+            Error::mesh(
+                "faces",
+                format!(
+                    "the mesh integrals give a non-physical inertia tensor even allowing for \
+                     their round-off ({}); the mesh is too thin or too detailed for double \
+                     precision",
+                    err.message
+                ),
+            )
+        })?;
+    let inertia = ldexp_mat(&(checked * rho), er + ki);
+    let com = Vec3::from(whole.g) + ldexp_vec(&whole.com, whole.e);
+    Ok(MassProperties::from_parts(ldexp(m, er + km), com, inertia))
 }
 
 #[cfg(test)]

@@ -11,6 +11,8 @@
 pub mod body;
 pub mod density;
 pub mod mesh;
+mod mesh_embedding;
+mod scaling;
 pub mod shapes;
 pub mod tensor;
 

@@ -5,29 +5,77 @@
 //! of mass is at `(0, 0, 3h/4)`. Masses in kg, lengths in m, inertia in kg·m² about the centre
 //! of mass. Each function checks that `mass` and the dimensions are finite and `> 0` and names
 //! the argument otherwise.
+//!
+//! **Range.** The moments are computed on mantissas (mass and lengths scaled by exact powers of
+//! two) and the exponent is applied last, so a moment that is a normal double is exact (the
+//! same bits as the formula at unit scale, times the power of two) even when `r²` alone would
+//! overflow (`r = 1e200`) or underflow (`r = 1e-200`). A moment beyond `f64::MAX` (no finite
+//! answer: `solid_sphere(1.0, 1e308)`) or a largest moment below the smallest normal double
+//! (`2.2e-308`, where precision is lost) is an [`Error::invalid`](crate::Error::invalid)
+//! naming the more extreme of `mass` and the dimension, with the magnitude it would have.
 
 use crate::error::{check_positive, Result};
 use crate::inertia::body::MassProperties;
+use crate::inertia::scaling::{check_range, exponent, ldexp, split};
 use crate::{Mat3, Vec3};
 
-fn diag(mass: f64, com: Vec3, d: [f64; 3]) -> MassProperties {
-    MassProperties::from_parts(mass, com, Mat3::from_diagonal(&Vec3::from(d)))
+/// What to do when the moments leave the range of doubles.
+const HINT: &str = "express the body in other units (e.g. g and mm, or t and km)";
+
+/// The body with centre of mass `com` and principal moments `m · q(l / 2^e) · 2^(2e)` about the
+/// axes, where `l` are the dimensions (named `length`), `2^e` their largest power of two and
+/// `q` the formula of the solid on scaled dimensions (a homogeneous quadratic). Errors name
+/// `mass` or `length`, whichever is further from 1 in order of magnitude.
+fn solid(
+    mass: f64,
+    length: &str,
+    dims: &[f64],
+    com: Vec3,
+    q: impl Fn(&[f64]) -> [f64; 3],
+) -> Result<MassProperties> {
+    let (m, em) = split(mass);
+    let e = exponent(dims.iter().fold(0.0f64, |a, x| a.max(*x)));
+    let scaled: Vec<f64> = dims.iter().map(|x| ldexp(*x, -e)).collect();
+    let d = q(&scaled).map(|x| m * x);
+    let k = em + 2 * e;
+    let largest = d.iter().fold(0.0f64, |a, x| a.max(*x));
+    let blame = if (2 * e).abs() >= em.abs() {
+        length
+    } else {
+        "mass"
+    };
+    check_range(
+        blame,
+        "the largest moment of inertia (kg·m²)",
+        largest,
+        k,
+        HINT,
+    )?;
+    Ok(MassProperties::from_parts(
+        mass,
+        com,
+        Mat3::from_diagonal(&Vec3::from(d.map(|x| ldexp(x, k)))),
+    ))
 }
 
 /// A solid sphere of radius `radius`: `I = 2/5 m r²` about every axis.
 pub fn solid_sphere(mass: f64, radius: f64) -> Result<MassProperties> {
     check_positive("mass", mass)?;
     check_positive("radius", radius)?;
-    let i = 0.4 * mass * radius * radius;
-    Ok(diag(mass, Vec3::zeros(), [i, i, i]))
+    solid(mass, "radius", &[radius], Vec3::zeros(), |l| {
+        let i = 0.4 * l[0] * l[0];
+        [i, i, i]
+    })
 }
 
 /// A thin spherical shell of radius `radius`: `I = 2/3 m r²` about every axis.
 pub fn spherical_shell(mass: f64, radius: f64) -> Result<MassProperties> {
     check_positive("mass", mass)?;
     check_positive("radius", radius)?;
-    let i = 2.0 / 3.0 * mass * radius * radius;
-    Ok(diag(mass, Vec3::zeros(), [i, i, i]))
+    solid(mass, "radius", &[radius], Vec3::zeros(), |l| {
+        let i = 2.0 / 3.0 * l[0] * l[0];
+        [i, i, i]
+    })
 }
 
 /// A solid cylinder of radius `radius` and height `height` along `z`:
@@ -36,12 +84,12 @@ pub fn solid_cylinder(mass: f64, radius: f64, height: f64) -> Result<MassPropert
     check_positive("mass", mass)?;
     check_positive("radius", radius)?;
     check_positive("height", height)?;
-    let ixx = mass * (3.0 * radius * radius + height * height) / 12.0;
-    Ok(diag(
-        mass,
-        Vec3::zeros(),
-        [ixx, ixx, 0.5 * mass * radius * radius],
-    ))
+    let length = if height > radius { "height" } else { "radius" };
+    solid(mass, length, &[radius, height], Vec3::zeros(), |l| {
+        let (r, h) = (l[0], l[1]);
+        let ixx = (3.0 * r * r + h * h) / 12.0;
+        [ixx, ixx, 0.5 * r * r]
+    })
 }
 
 /// A solid right circular cone of base radius `radius` and height `height`, **apex at the
@@ -51,13 +99,13 @@ pub fn solid_cone(mass: f64, radius: f64, height: f64) -> Result<MassProperties>
     check_positive("mass", mass)?;
     check_positive("radius", radius)?;
     check_positive("height", height)?;
-    let r2 = radius * radius;
-    let ixx = mass * (3.0 / 20.0 * r2 + 3.0 / 80.0 * height * height);
-    Ok(diag(
-        mass,
-        Vec3::new(0.0, 0.0, 0.75 * height),
-        [ixx, ixx, 0.3 * mass * r2],
-    ))
+    let length = if height > radius { "height" } else { "radius" };
+    let com = Vec3::new(0.0, 0.0, 0.75 * height);
+    solid(mass, length, &[radius, height], com, |l| {
+        let (r2, h) = (l[0] * l[0], l[1]);
+        let ixx = 3.0 / 20.0 * r2 + 3.0 / 80.0 * h * h;
+        [ixx, ixx, 0.3 * r2]
+    })
 }
 
 /// A solid cuboid with sides `sides = [a, b, c]` along `x, y, z`:
@@ -67,16 +115,10 @@ pub fn cuboid(mass: f64, sides: [f64; 3]) -> Result<MassProperties> {
     for s in sides {
         check_positive("sides", s)?;
     }
-    let [a, b, c] = sides.map(|s| s * s);
-    Ok(diag(
-        mass,
-        Vec3::zeros(),
-        [
-            mass * (b + c) / 12.0,
-            mass * (c + a) / 12.0,
-            mass * (a + b) / 12.0,
-        ],
-    ))
+    solid(mass, "sides", &sides, Vec3::zeros(), |l| {
+        let [a, b, c] = [l[0] * l[0], l[1] * l[1], l[2] * l[2]];
+        [(b + c) / 12.0, (c + a) / 12.0, (a + b) / 12.0]
+    })
 }
 
 /// A solid ellipsoid with semi-axes `semi_axes = [a, b, c]` along `x, y, z`:
@@ -86,24 +128,20 @@ pub fn ellipsoid(mass: f64, semi_axes: [f64; 3]) -> Result<MassProperties> {
     for s in semi_axes {
         check_positive("semi_axes", s)?;
     }
-    let [a, b, c] = semi_axes.map(|s| s * s);
-    Ok(diag(
-        mass,
-        Vec3::zeros(),
-        [
-            mass * (b + c) / 5.0,
-            mass * (c + a) / 5.0,
-            mass * (a + b) / 5.0,
-        ],
-    ))
+    solid(mass, "semi_axes", &semi_axes, Vec3::zeros(), |l| {
+        let [a, b, c] = [l[0] * l[0], l[1] * l[1], l[2] * l[2]];
+        [(b + c) / 5.0, (c + a) / 5.0, (a + b) / 5.0]
+    })
 }
 
 /// A thin rod of length `length` along `z`: `I_xx = I_yy = m L²/12`, `I_zz = 0` (a rotor).
 pub fn thin_rod(mass: f64, length: f64) -> Result<MassProperties> {
     check_positive("mass", mass)?;
     check_positive("length", length)?;
-    let i = mass * length * length / 12.0;
-    Ok(diag(mass, Vec3::zeros(), [i, i, 0.0]))
+    solid(mass, "length", &[length], Vec3::zeros(), |l| {
+        let i = l[0] * l[0] / 12.0;
+        [i, i, 0.0]
+    })
 }
 
 /// A thin uniform disk of radius `radius` in the `xy` plane: `I_xx = I_yy = m r²/4`,
@@ -111,8 +149,10 @@ pub fn thin_rod(mass: f64, length: f64) -> Result<MassProperties> {
 pub fn thin_disk(mass: f64, radius: f64) -> Result<MassProperties> {
     check_positive("mass", mass)?;
     check_positive("radius", radius)?;
-    let i = 0.25 * mass * radius * radius;
-    Ok(diag(mass, Vec3::zeros(), [i, i, 2.0 * i]))
+    solid(mass, "radius", &[radius], Vec3::zeros(), |l| {
+        let i = 0.25 * l[0] * l[0];
+        [i, i, 2.0 * i]
+    })
 }
 
 /// A thin ring (hoop) of radius `radius` in the `xy` plane: `I_xx = I_yy = m r²/2`,
@@ -120,6 +160,8 @@ pub fn thin_disk(mass: f64, radius: f64) -> Result<MassProperties> {
 pub fn thin_ring(mass: f64, radius: f64) -> Result<MassProperties> {
     check_positive("mass", mass)?;
     check_positive("radius", radius)?;
-    let i = 0.5 * mass * radius * radius;
-    Ok(diag(mass, Vec3::zeros(), [i, i, 2.0 * i]))
+    solid(mass, "radius", &[radius], Vec3::zeros(), |l| {
+        let i = 0.5 * l[0] * l[0];
+        [i, i, 2.0 * i]
+    })
 }

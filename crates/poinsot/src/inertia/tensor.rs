@@ -15,6 +15,7 @@
 use nalgebra::SymmetricEigen;
 
 use crate::error::{check_finite, Error, Result};
+use crate::inertia::scaling::{exponent, exponent_of_max, ldexp, ldexp_mat, split};
 use crate::{Mat3, Vec3};
 
 /// Relative tolerance of the symmetry check of an inertia tensor: `|I_ij − I_ji|` may be at
@@ -33,8 +34,16 @@ pub const DEFAULT_KIND_RTOL: f64 = 1e-9;
 
 /// The parallel-axis term `m (|d|² 1 − d dᵀ)`: the inertia of a point mass `m` at offset `d`
 /// (2.46–2.50 for one particle). `I_P = I_cm + m (|d|² 1 − d dᵀ)` with `d = com − P`.
+///
+/// Computed on mantissas (`m` and `d` scaled by powers of two, the exponent applied last), so
+/// that `|d|²` does not overflow for `|d| = 1e200` when `m |d|²` is representable; entries
+/// beyond the range of doubles are `±inf` (callers check).
 pub fn point_inertia(mass: f64, d: &Vec3) -> Mat3 {
-    (Mat3::identity() * d.norm_squared() - d * d.transpose()) * mass
+    let (m, em) = split(mass);
+    let ed = exponent_of_max(d.as_slice());
+    let d = d.map(|x| ldexp(x, -ed));
+    let t = (Mat3::identity() * d.norm_squared() - d * d.transpose()) * m;
+    ldexp_mat(&t, em + 2 * ed)
 }
 
 /// The inertia about the point `point` (kg·m²) of a body of mass `mass` (kg) whose inertia about
@@ -50,10 +59,18 @@ pub fn shift_to_com(inertia_p: &Mat3, mass: f64, com: &Vec3, point: &Vec3) -> Ma
     inertia_p - point_inertia(mass, &(com - point))
 }
 
+/// `(I + Iᵀ)/2`, halving first so that entries near `f64::MAX` do not overflow.
+pub(crate) fn symmetrised(inertia: &Mat3) -> Mat3 {
+    inertia * 0.5 + inertia.transpose() * 0.5
+}
+
 /// The same tensor expressed in rotated axes: `R I Rᵀ` (the inertia of the body rotated actively
-/// by `R`, in the original axes).
+/// by `R`, in the original axes). Computed on the tensor scaled by a power of two, so that the
+/// sums of products do not overflow for entries near `f64::MAX`.
 pub fn rotate(rotation: &Mat3, inertia: &Mat3) -> Mat3 {
-    rotation * inertia * rotation.transpose()
+    let e = exponent_of_max(inertia.as_slice());
+    let t = ldexp_mat(inertia, -e);
+    ldexp_mat(&(rotation * t * rotation.transpose()), e)
 }
 
 /// Checks that `inertia` (kg·m²) can be the inertia tensor of a body about its centre of mass and
@@ -93,8 +110,11 @@ pub fn check_inertia_scaled(argument: &str, inertia: &Mat3, scale: f64) -> Resul
             ));
         }
     }
-    let sym = (inertia + inertia.transpose()) * 0.5;
-    let moments = sorted_eigenvalues(&sym);
+    let sym = symmetrised(inertia);
+    // The eigenvalues of the tensor scaled by a power of two (exact), so that the solver's
+    // squares neither overflow (entries near 1e308) nor underflow (near 1e-308).
+    let e = exponent(entries.max(f64::MIN_POSITIVE));
+    let moments = sorted_eigenvalues(&ldexp_mat(&sym, -e)).map(|x| ldexp(x, e));
     let largest = moments[2].abs().max(moments[0].abs());
     let tol = PHYSICAL_RTOL * largest.max(scale);
     if moments[0] < -tol {
@@ -170,14 +190,16 @@ impl Principal {
 /// sign that makes their largest component positive; the last column is the cross product of
 /// the first two, so `det = +1` always.
 pub fn principal(inertia: &Mat3, rtol: f64) -> Principal {
-    let sym = (inertia + inertia.transpose()) * 0.5;
-    let eig = SymmetricEigen::new(sym);
+    let sym = symmetrised(inertia);
+    // Decompose the tensor scaled by a power of two (exact), as in [`check_inertia_scaled`].
+    let e = exponent_of_max(sym.as_slice());
+    let eig = SymmetricEigen::new(ldexp_mat(&sym, -e));
     let mut order = [0usize, 1, 2];
     order.sort_by(|&a, &b| eig.eigenvalues[a].total_cmp(&eig.eigenvalues[b]));
     let moments = [
-        eig.eigenvalues[order[0]],
-        eig.eigenvalues[order[1]],
-        eig.eigenvalues[order[2]],
+        ldexp(eig.eigenvalues[order[0]], e),
+        ldexp(eig.eigenvalues[order[1]], e),
+        ldexp(eig.eigenvalues[order[2]], e),
     ];
     let vec = |k: usize| -> Vec3 { eig.eigenvectors.column(order[k]).into_owned() };
     let tol = rtol.max(0.0) * moments[0].abs().max(moments[2].abs());
