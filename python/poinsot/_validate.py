@@ -71,7 +71,8 @@ def as_count(value: Any, name: str, minimum: int = 0) -> int:
         raise ArgumentTypeError(f"{name}: must be an integer, got {type(value).__name__} {value!r}")
     count = int(value)
     if count < minimum:
-        raise PoinsotError(f"{name}: must be >= {minimum}, got {count}")
+        what = "a positive integer" if minimum == 1 else f">= {minimum}"
+        raise PoinsotError(f"{name}: must be {what}, got {count}")
     if count > MAX_COUNT:
         raise PoinsotError(f"{name}: must be <= {MAX_COUNT}, got {count}")
     return count

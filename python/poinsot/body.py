@@ -39,6 +39,8 @@ import numpy as np
 from . import _core
 from ._validate import (
     FloatArray,
+    as_callable,
+    as_count,
     as_flag,
     as_float_array,
     as_matrices,
@@ -345,11 +347,15 @@ class RigidBody:
             raise PoinsotError(
                 f"bounds: must have shape (3, 2) ((xmin, xmax), (ymin, ymax), (zmin, zmax)), got {b.shape}"
             )
-        if isinstance(max_evals, bool) or not isinstance(max_evals, (int, np.integer)) or max_evals <= 0:
-            raise PoinsotError(f"max_evals: must be a positive integer, got {max_evals!r}")
+        max_evals = as_count(max_evals, "max_evals", 1)
+        as_callable(density, "density", optional=False)
 
         def batched(points: FloatArray) -> FloatArray:
-            values = np.asarray(density(points), dtype=np.float64)
+            got = density(points)
+            try:
+                values = as_float_array(got, "density", finite=False)
+            except PoinsotError:
+                raise PoinsotError(f"density: the callable must return real numbers, got {type(got).__name__}") from None
             if values.ndim == 0:
                 values = np.full(points.shape[0], float(values))
             if values.shape != (points.shape[0],):

@@ -115,6 +115,12 @@ pub fn check_inertia_scaled(argument: &str, inertia: &Mat3, scale: f64) -> Resul
     // squares neither overflow (entries near 1e308) nor underflow (near 1e-308).
     let e = exponent(entries.max(f64::MIN_POSITIVE));
     let moments = sorted_eigenvalues(&ldexp_mat(&sym, -e)).map(|x| ldexp(x, e));
+    if !moments.iter().all(|m| m.is_finite()) {
+        return Err(Error::inertia(
+            argument,
+            "its principal moments are beyond the largest double (they overflow): rescale the units",
+        ));
+    }
     let largest = moments[2].abs().max(moments[0].abs());
     let tol = PHYSICAL_RTOL * largest.max(scale);
     if moments[0] < -tol {
