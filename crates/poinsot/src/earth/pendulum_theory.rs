@@ -28,7 +28,7 @@
 //!
 //! with a bounded wobble. At the pole (κ = 0) Δ = −ω exactly and ν± = √(g/L) ± ω: the swing is
 //! the inertial frame's fixed swing seen from the turning Earth. Elsewhere Δ → −ω sin λ as
-//! ω/√(g/L) → 0 (−ω sin λ to 1e-8 relative on the Earth). Where |√k_e − √k_n| is not small
+//! ω/√(g/L) → 0 (within 1e-7 relative on the Earth). Where |√k_e − √k_n| is not small
 //! against 2|w| — near the equator, or on a planet spinning fast against the pendulum — the two
 //! modes are nearly straight swings of different frequencies and the plane rocks instead of
 //! turning: [`super::FoucaultRegime::Unsteady`].
