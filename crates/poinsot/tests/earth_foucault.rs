@@ -220,6 +220,22 @@ fn closed_form_swing_matches_integrations() {
                 "{rate} {lat} t={t}: {dq:e} {dv:e}"
             );
         }
+        // From rest the release is itself a turning point, not counted; the next ones follow
+        // half a swing apart (to the wobble).
+        let rest_swing = modes.swing(q0, [0.0, 0.0], 0.0).unwrap();
+        let mut times_found = Vec::new();
+        rest_swing.turning_points(0.0, t_end, usize::MAX, |t, _| times_found.push(t));
+        let half = PI / modes.swing_frequency;
+        assert!(
+            (times_found[0] / half - 1.0).abs() < 0.1,
+            "{rate} {lat}: first turning point at {}",
+            times_found[0]
+        );
+        assert!(
+            times_found.len() as f64 >= t_end / half - 1.5,
+            "{rate} {lat}: {} turning points",
+            times_found.len()
+        );
         // The nonlinear pendulum released from rest at A = 1e-4 L: the same swing to O(A/L).
         let amp = 1e-4 * len;
         let s0 = e.foucault_release(lat, len, amp, 0.4).unwrap();

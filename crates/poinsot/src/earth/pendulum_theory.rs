@@ -91,6 +91,9 @@ pub struct FoucaultModes {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LinearSwing {
     t0: f64,
+    /// q(t₀)·q̇(t₀) from the initial data themselves (0 for a release from rest), so that the
+    /// start is not taken for a turning point by the modal sum's round-off.
+    start_rate: f64,
     nu: [f64; 2],
     /// c_m U_m, per mode, in (east, north) components.
     terms: [[C64; 2]; 2],
@@ -273,6 +276,7 @@ impl FoucaultModes {
         let (c_m, c_p) = (C64::new(c[0], c[1]), C64::new(c[2], c[3]));
         Ok(LinearSwing {
             t0,
+            start_rate: q0[0] * v0[0] + q0[1] * v0[1],
             nu: [nu_m, nu_p],
             terms: [[c_m * u_m[0], c_m * u_m[1]], [c_p * u_p[0], c_p * u_p[1]]],
         })
@@ -354,7 +358,12 @@ impl LinearSwing {
         let h = 2.0 * PI / (nu_max * SCAN_PER_PERIOD);
         let steps = ((t_end - t_start) / h).ceil();
         let mut count = 0;
-        let (mut t_prev, mut g_prev) = (t_start, rate(t_start));
+        let g_start = if t_start == self.t0 {
+            self.start_rate
+        } else {
+            rate(t_start)
+        };
+        let (mut t_prev, mut g_prev) = (t_start, g_start);
         let mut i = 1.0;
         while i <= steps && count < max_count {
             let t = (t_start + i * h).min(t_end);
