@@ -626,7 +626,8 @@ def foucault(latitude: float, degrees: bool, length: float, amplitude: float, du
     """The Foucault pendulum, simulated in the rotating frame.
 
     Measures the turn of the swing plane from the simulation and compares it with ω sin λ
-    (clockwise seen from above in the northern hemisphere).
+    (clockwise seen from above in the northern hemisphere), and says when the run shows no
+    steady turn (the regime: near the equator, too few swings, a planet spinning fast).
 
     \b
     Example:
@@ -639,7 +640,8 @@ def foucault(latitude: float, degrees: bool, length: float, amplitude: float, du
     data = {"latitude": latitude, "degrees": degrees, "length": length, "amplitude": amplitude,
             "duration": duration, "rotation_rate": earth.rotation_rate,
             "precession_rate": run.precession_rate, "expected_rate": run.expected_rate,
-            "sense": run.sense, "turning_points": len(run.turn_times), "full_turn_hours": hours}
+            "theory_rate": run.theory_rate, "sense": run.sense, "regime": run.regime,
+            "regime_note": run.regime_note, "turning_points": len(run.turn_times), "full_turn_hours": hours}
     require_finite(data)
     if as_json:
         emit_json(data)
@@ -647,16 +649,23 @@ def foucault(latitude: float, degrees: bool, length: float, amplitude: float, du
     from rich.console import Console
     from rich.table import Table
 
+    def rate(value: float | None) -> str:
+        return "—" if value is None else f"{value:.6e}"
+
     table = Table(title=f"Foucault pendulum, L = {length:g} m, latitude {latitude:g}{_angle_unit(degrees)}, "
                         f"{duration:g} s simulated")
     table.add_column("quantity")
     table.add_column("value", justify="right")
-    table.add_row("swing-plane rate, simulated (rad/s)", f"{run.precession_rate:.6e}")
+    table.add_row("regime", run.regime)
+    table.add_row("swing-plane rate, simulated (rad/s)", rate(run.precession_rate))
+    table.add_row("small-swing theory (rad/s)", rate(run.theory_rate))
     table.add_row("−ω sin λ (rad/s)", f"{run.expected_rate:.6e}")
     table.add_row("sense seen from above", run.sense)
     table.add_row("one full turn (h)", f"{hours:.4g}")
     table.add_row("turning points used", str(len(run.turn_times)))
-    Console().print(table)
+    console = Console()
+    console.print(table)
+    console.print(run.regime_note)
 
 
 def _floats3(ctx: click.Context, param: click.Parameter, value: Any) -> Any:

@@ -132,23 +132,37 @@ class Flight:
 
 @dataclass(frozen=True)
 class FoucaultRun:
-    """A Foucault pendulum integrated in the rotating frame.
+    """A Foucault pendulum integrated in the rotating frame, and what its swing plane did.
 
     Attributes
     ----------
     t, position, velocity:
         Samples (N,), (N, 3), (N, 3): the bob in ENU, origin at the point of suspension.
     turn_times, turn_angles:
-        The turning points of the swing and the bob's direction there, counterclockwise from
-        east seen from above (rad).
+        The turning points of the swing — the bob's largest distances from its rest position —
+        and the bob's direction from its rest position there, counterclockwise from east seen
+        from above (rad).
     precession_rate:
         The swing plane's rate of turn fitted through the turning points (rad/s,
-        counterclockwise seen from above positive).
+        counterclockwise seen from above positive), or ``None`` where the run shows no steady
+        turn (see ``regime``); ≈ 0 when ``regime == "still"``.
     expected_rate:
-        −ω sin λ, the theory (rad/s).
+        −ω sin λ, the unit's rate (rad/s).
     sense:
-        ``"clockwise"``, ``"counterclockwise"`` (seen from above) or ``"none"`` (|rate| below
-        1e-3 ω), from the fitted rate.
+        ``"clockwise"``, ``"counterclockwise"`` (seen from above; always the theory's sense),
+        ``"none"`` (``regime == "still"``) or ``"undefined"`` (no rate).
+    regime:
+        ``"precessing"`` (the plane turns steadily), ``"still"`` (it does not turn measurably:
+        the equator, or no spin), ``"too_short"`` (too few swings, or a turn within the plane's
+        wobble), ``"unsteady"`` (the plane rocks: near the equator, or a planet spinning fast
+        against the pendulum), ``"wide_swing"`` (the amplitude's own precession competes),
+        ``"not_a_swing"`` (the plane would turn by over a quarter turn per swing) or
+        ``"no_rest"`` (the spin flings the bob off any rest position).
+    regime_note:
+        One sentence on the regime, with its figures.
+    theory_rate:
+        The exact small-swing theory's mean rate of turn (rad/s): −ω sin λ for a slow spin, exactly
+        −ω at the poles; ``None`` where the bob has no stable rest position.
     """
 
     t: FloatArray = field(repr=False)
@@ -156,9 +170,12 @@ class FoucaultRun:
     velocity: FloatArray = field(repr=False)
     turn_times: FloatArray = field(repr=False)
     turn_angles: FloatArray = field(repr=False)
-    precession_rate: float = 0.0
+    precession_rate: float | None = None
     expected_rate: float = 0.0
-    sense: str = "none"
+    sense: str = "undefined"
+    regime: str = "too_short"
+    regime_note: str = ""
+    theory_rate: float | None = None
 
 
 @dataclass(frozen=True)
@@ -471,17 +488,25 @@ class Earth:
                  samples: int = 1001, rtol: float = 1e-10, atol: float = 1e-12,
                  max_steps: int = 10_000_000, progress: bool = False) -> FoucaultRun:
         """Swing a Foucault pendulum — a spherical pendulum of ``length`` (m; default the
-        Panthéon's 67 m) released from rest at ``amplitude`` (m) towards ``azimuth``
-        (clockwise from north; radians unless ``degrees``) — for ``duration`` s in the rotating
-        frame, and measure the turn of its swing plane: −ω sin λ, clockwise in the north.
+        Panthéon's 67 m) released from rest ``amplitude`` (m) from its rest position towards
+        ``azimuth`` (clockwise from north; radians unless ``degrees``) — for ``duration`` s in
+        the rotating frame, and measure the turn of its swing plane: −ω sin λ, clockwise in the
+        north, on a slowly turning planet.
+
+        The result says whether the run shows a steadily turning swing plane at all
+        (``regime``, ``regime_note``): on a planet spinning fast against the pendulum
+        (ω not ≪ √(g/L)), near the equator or over too few swings it may not, and then no rate
+        is given. A rate comes only with the sense of the exact small-swing theory
+        (``theory_rate``).
 
         ``progress=True`` shows a progress bar (rich) while it runs.
 
         Returns
         -------
         FoucaultRun
-            Samples, turning points, the fitted ``precession_rate`` and the theory's
-            ``expected_rate`` (rad/s, counterclockwise positive), and the ``sense``.
+            Samples, turning points, the fitted ``precession_rate`` (or ``None``), the unit's
+            ``expected_rate`` and the small-swing ``theory_rate`` (rad/s, counterclockwise
+            positive), the ``sense`` and the ``regime``.
         """
         lat = _angle(latitude, "latitude", degrees)
         az = _angle(azimuth, "azimuth", degrees)
@@ -493,7 +518,9 @@ class Earth:
         steps = as_count(max_steps, "max_steps", 1)
         tols = as_scalar(rtol, "rtol"), as_scalar(atol, "atol")
         length = as_scalar(length, "length")
-        state = _core.earth_foucault_release(length, as_scalar(amplitude, "amplitude"), az)
+        with public_names(state0="amplitude"):
+            state = _core.earth_foucault_release(*self._p, lat, length, as_scalar(amplitude, "amplitude"), az)
+        state0 = state
         chunks = max(1, min(100, int(np.ceil(dur / 60.0)))) if progress else 1
         edges = np.linspace(0.0, dur, chunks + 1)
         parts_t, parts_s, turn_t, turn_a = [], [], [], []
@@ -522,12 +549,12 @@ class Earth:
             if bar is not None:
                 bar.stop()
         tt, ta = np.concatenate(turn_t), np.concatenate(turn_a)
-        with public_names(turn_times="duration", turn_angles="duration"):
-            rate = _core.earth_fit_precession_rate(tt, ta)
-        expected = float(self.foucault_rate(lat))
+        with public_names(turn_times="duration", turn_angles="duration", state0="amplitude", t_end="duration"):
+            m = _core.earth_foucault_measurement(*self._p, lat, length, state0, 0.0, dur, tt, ta)
         states = np.concatenate(parts_s)
         return FoucaultRun(np.concatenate(parts_t), states[:, :3].copy(), states[:, 3:].copy(), tt, ta,
-                           rate, expected, _sense(rate, 1e6 * self._rate))
+                           m["precession_rate"], m["expected_rate"], m["sense"], m["regime"], m["note"],
+                           m["theory_rate"])
 
     def inertial_oscillation(self, latitude: float, velocity: Any = (10.0, 0.0), degrees: bool = False, *,
                              duration: float | None = None, samples: int = 401, rtol: float = _DEFAULT_TOL,

@@ -121,8 +121,8 @@ def plot_foucault_rosette(run: FoucaultRun, ax: Any = None, *, title: str | None
     ax.set_aspect("equal")
     ax.set_xlabel("east (m)")
     ax.set_ylabel("north (m)")
-    ax.set_title(title or f"Foucault: {run.sense}, {run.precession_rate:.3e} rad/s "
-                          f"(−ω sin λ = {run.expected_rate:.3e})")
+    rate = f"{run.precession_rate:.3e} rad/s" if run.precession_rate is not None else f"no rate ({run.regime})"
+    ax.set_title(title or f"Foucault: {run.sense}, {rate} (−ω sin λ = {run.expected_rate:.3e})")
     return fig
 
 

@@ -10,7 +10,7 @@
 
 use crate::args::{check_bytes, count, index_in, number, numbers, Count, Number, Numbers};
 use crate::convert::{finite, finite1, renamed, renamed_all, vec_out, Failure, Out};
-use poinsot::earth::{self as ea, fit_precession_rate, FallModel, FoucaultRun, Gravity, LowRun};
+use poinsot::earth::{self as ea, FallModel, FoucaultMeasurement, FoucaultRun, Gravity, LowRun};
 use poinsot::frames::ParticleState;
 use poinsot::integrate::Options;
 use wasm_bindgen::prelude::wasm_bindgen;
@@ -327,7 +327,8 @@ impl Earth {
 }
 
 /// A Foucault pendulum swung in the rotating frame (`Earth.foucault` in Python): its samples,
-/// its turning points, the fitted precession rate, and its state at any time of the run.
+/// its turning points, the core's measurement of its swing plane (rate and regime), and its
+/// state at any time of the run.
 #[wasm_bindgen]
 #[derive(Debug, Clone)]
 pub struct Foucault {
@@ -335,8 +336,7 @@ pub struct Foucault {
     latitude: f64,
     length: f64,
     run: FoucaultRun,
-    rate: f64,
-    expected: f64,
+    measurement: FoucaultMeasurement,
 }
 
 impl Foucault {
@@ -379,21 +379,40 @@ impl Foucault {
         self.run.t[self.run.t.len() - 1]
     }
     /// The swing plane's rate of turn fitted through the turning points (rad/s,
-    /// counterclockwise seen from above positive): `FoucaultRun.precession_rate`.
+    /// counterclockwise seen from above positive), or `undefined` where the run shows no
+    /// steady turn (see `regime`): `FoucaultRun.precession_rate`.
     #[wasm_bindgen(getter, js_name = precessionRate)]
-    pub fn precession_rate(&self) -> f64 {
-        self.rate
+    pub fn precession_rate(&self) -> Option<f64> {
+        self.measurement.precession_rate
     }
-    /// The theory's rate −ω sin λ (rad/s): `FoucaultRun.expected_rate`.
+    /// The unit's rate −ω sin λ (rad/s): `FoucaultRun.expected_rate`.
     #[wasm_bindgen(getter, js_name = expectedRate)]
     pub fn expected_rate(&self) -> f64 {
-        self.expected
+        self.measurement.expected_rate
     }
-    /// `"clockwise"`, `"counterclockwise"` or `"none"` (|rate| ≤ 1e-3 ω), from the fitted rate:
-    /// `FoucaultRun.sense`.
+    /// The exact small-swing theory's mean rate (rad/s), or `undefined` without a stable rest
+    /// position: `FoucaultRun.theory_rate`.
+    #[wasm_bindgen(getter, js_name = theoryRate)]
+    pub fn theory_rate(&self) -> Option<f64> {
+        self.measurement.theory_rate
+    }
+    /// `"clockwise"`, `"counterclockwise"`, `"none"` (the plane does not turn) or
+    /// `"undefined"` (no rate): `FoucaultRun.sense`.
     #[wasm_bindgen(getter)]
     pub fn sense(&self) -> String {
-        sense(self.rate, 1e6 * self.earth.rotation_rate)
+        self.measurement.sense_name().into()
+    }
+    /// Whether the run shows a steadily turning swing plane: `"precessing"`, `"still"`,
+    /// `"too_short"`, `"unsteady"`, `"wide_swing"`, `"not_a_swing"` or `"no_rest"`:
+    /// `FoucaultRun.regime`.
+    #[wasm_bindgen(getter)]
+    pub fn regime(&self) -> String {
+        self.measurement.regime.name().into()
+    }
+    /// One sentence on the regime, with its figures: `FoucaultRun.regime_note`.
+    #[wasm_bindgen(getter, js_name = regimeNote)]
+    pub fn regime_note(&self) -> String {
+        self.measurement.note.clone()
     }
     /// The sample times (s).
     pub fn times(&self) -> Vec<f64> {
@@ -575,9 +594,10 @@ impl InertialOscillation {
 
 #[wasm_bindgen]
 impl Earth {
-    /// Swing a Foucault pendulum of `length` (m) released from rest at `amplitude` (m) towards
-    /// `azimuth` (rad, clockwise from north) at `latitude` (rad) for `duration` (s), sampled at
-    /// `samples` even times: `Earth.foucault` with the Python defaults.
+    /// Swing a Foucault pendulum of `length` (m) released from rest `amplitude` (m) from its
+    /// rest position towards `azimuth` (rad, clockwise from north) at `latitude` (rad) for
+    /// `duration` (s), sampled at `samples` even times, and measure its swing plane:
+    /// `Earth.foucault` with the Python defaults.
     pub fn foucault(
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
@@ -597,7 +617,9 @@ impl Earth {
         let samples = count("samples", &samples, BYTES_PER_FOUCAULT_SAMPLE)?;
         check_run(duration, samples)?;
         // The core checks the release state it computes (`state0`): from `length` and `amplitude`.
-        let state0 = ea::Earth::foucault_release(length, amplitude, azimuth)
+        let state0 = self
+            .inner
+            .foucault_release(latitude, length, amplitude, azimuth)
             .map_err(renamed("state0", "length, amplitude"))?;
         let times = linspace(duration, samples);
         let run = self
@@ -619,24 +641,29 @@ impl Earth {
                 ])
                 .otherwise("latitude, length, amplitude, azimuth, duration, samples"),
             )?;
-        // Too short a run has too few turning points to fit a rate: the core names them.
-        let fitted = fit_precession_rate(&run.turn_times, &run.turn_angles).map_err(
-            renamed_all(&[("turn_times", "duration"), ("turn_angles", "duration")])
-                .with("t", "duration"),
-        )?;
-        let rate = finite1(
-            "latitude, length, amplitude, azimuth, duration, samples",
-            "fitted precession rate",
-            fitted,
-        )?;
-        let expected = self.inner.foucault_rate(latitude)?;
+        // Too short a run has too few turning points to fit a rate: the measurement says so in
+        // its regime; its own errors name the run's arguments.
+        let measurement = self
+            .inner
+            .foucault_measurement(
+                latitude,
+                length,
+                &state0,
+                0.0,
+                duration,
+                &run.turn_times,
+                &run.turn_angles,
+            )
+            .map_err(
+                renamed_all(&[("turn_times", "duration"), ("turn_angles", "duration")])
+                    .otherwise("latitude, length, amplitude, azimuth, duration, samples"),
+            )?;
         Ok(Foucault {
             earth: self.inner,
             latitude,
             length,
             run,
-            rate,
-            expected,
+            measurement,
         })
     }
 
@@ -902,8 +929,13 @@ mod tests {
         let lat = 0.8;
         let run = fast.foucault(lat, 10.0, 1.0, 0.0, 60.0, 601.0).unwrap();
         // The fit agrees with −ω sin λ to the Airy and (ω/ω₀)² corrections (< 1 %).
-        assert!((run.precession_rate() / run.expected_rate() - 1.0).abs() < 1e-2);
-        assert_eq!(run.sense(), "clockwise");
+        let rate = run.precession_rate().unwrap();
+        assert!((rate / run.expected_rate() - 1.0).abs() < 1e-2);
+        assert!((rate / run.theory_rate().unwrap() - 1.0).abs() < 1e-2);
+        assert_eq!(
+            (run.sense(), run.regime()),
+            ("clockwise".into(), "precessing".into())
+        );
         let south = fast.foucault(-lat, 10.0, 1.0, 0.0, 60.0, 601.0).unwrap();
         assert_eq!(south.sense(), "counterclockwise");
         // On a sample: the sample itself; between samples: the continued integration, close to

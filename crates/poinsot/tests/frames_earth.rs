@@ -172,7 +172,7 @@ fn foucault_plane_turns_at_omega_sin_latitude() {
     let e = Earth::new(1e-3, 6.371e6, 9.81).unwrap();
     let opts = Options { dense: false, ..Options::with_tolerances(1e-11, 1e-12) };
     for lat in [deg(50.0), deg(-50.0), FRAC_PI_2] {
-        let s0 = Earth::foucault_release(10.0, 0.1, 0.0).unwrap();
+        let s0 = e.foucault_release(lat, 10.0, 0.1, 0.0).unwrap();
         let run = e.foucault(lat, 10.0, s0, 0.0, 600.0, &[0.0, 600.0], &opts).unwrap();
         let rate = fit_precession_rate(&run.turn_times, &run.turn_angles).unwrap();
         let expect = e.foucault_rate(lat).unwrap();
@@ -184,7 +184,7 @@ fn foucault_plane_turns_at_omega_sin_latitude() {
     // Clockwise (negative) in the north.
     assert!(e.foucault_rate(deg(50.0)).unwrap() < 0.0);
     // At the equator the plane does not turn.
-    let s0 = Earth::foucault_release(10.0, 0.1, 0.3).unwrap();
+    let s0 = e.foucault_release(0.0, 10.0, 0.1, 0.3).unwrap();
     let run = e.foucault(0.0, 10.0, s0, 0.0, 600.0, &[], &opts).unwrap();
     let rate = fit_precession_rate(&run.turn_times, &run.turn_angles).unwrap();
     assert!(rate.abs() < 1e-3 * e.rotation_rate, "{rate}");
@@ -232,7 +232,7 @@ fn bad_input_names_the_argument() {
     assert_eq!(Earth::new(1.0, 0.0, 1.0).unwrap_err().argument, "radius");
     assert_eq!(e.projectile(0.0, 0.5, 0.0, 0.0, 0.0, &FallModel::default()).unwrap_err().argument, "speed");
     assert_eq!(e.projectile(10.0, -0.5, 0.0, 0.0, 0.0, &FallModel::default()).unwrap_err().argument, "elevation");
-    assert_eq!(Earth::foucault_release(1.0, 2.0, 0.0).unwrap_err().argument, "amplitude");
+    assert_eq!(e.foucault_release(0.3, 1.0, 2.0, 0.0).unwrap_err().argument, "amplitude");
 }
 
 /// Jacobi's integral of the Foucault run: conserved to the integrator's tolerance, also on a
@@ -244,7 +244,7 @@ fn foucault_conserves_jacobis_integral() {
     const DRIFT: f64 = 1e-8;
     let e = Earth::new(1000.0 * SIDEREAL_RATE, poinsot::earth::MEAN_RADIUS, 9.80665).unwrap();
     let (lat, len) = (deg(40.0), 10.0);
-    let s0 = Earth::foucault_release(len, 1.0, 0.3).unwrap();
+    let s0 = e.foucault_release(lat, len, 1.0, 0.3).unwrap();
     let times: Vec<f64> = (0..=120).map(|i| i as f64).collect();
     let run = e.foucault(lat, len, s0, 0.0, 120.0, &times, &Options::with_tolerances(1e-10, 1e-12)).unwrap();
     let j0 = e.jacobi_integral(lat, &s0).unwrap();

@@ -26,7 +26,8 @@ export const foucaultScene: SceneDef = {
     "The swing plane turns at −Ω sin λ: clockwise seen from above in the north, counterclockwise in the south, not at all at the equator. " +
     "The core integrates the bob in the rotating frame; white: the swing plane at the last turning point, yellow: the bob's trace on the floor (the rosette); it was released towards the north. " +
     "The real Earth needs a day/|sin λ| for a turn, so the spin factor puts the pendulum on a planet spinning that much faster — a physical parameter of the simulated planet, not a faster film. " +
-    "−Ω sin λ holds while Ω ≪ √(g/L) and the amplitude ≪ L: push the spin, length or amplitude up to watch the fitted rate part from it. " +
+    "−Ω sin λ holds while Ω ≪ √(g/L) and the amplitude ≪ L: push the spin, length or amplitude up to watch the fitted rate part from it — " +
+    "and where the plane no longer turns steadily (near the equator of a fast planet, a spin not small against √(g/L), a swing too wide) the core's regime says so and gives no rate. " +
     "J = ½v² + gz − ½|Ω×r|², the energy in the rotating frame, is conserved (Coriolis and the wire do no work): its drift checks the integration. " +
     "Horizontal distances are drawn enlarged; red is east, green north.",
   params: [
@@ -120,7 +121,7 @@ export const foucaultScene: SceneDef = {
         turnAngles = run.turnAngles();
         // Two turning points per swing: the period is twice their mean spacing.
         const n = turnTimes.length;
-        period = (2 * (turnTimes[n - 1] - turnTimes[0])) / (n - 1);
+        period = n > 1 ? (2 * (turnTimes[n - 1] - turnTimes[0])) / (n - 1) : 0;
         j0 = run.jacobiIntegral(0);
         scaleH = SWING / Number(p.amplitude);
         const pos = run.positions();
@@ -157,17 +158,23 @@ export const foucaultScene: SceneDef = {
         nowPlane.visible = m >= 0;
         if (m >= 0) nowPlane.rotation.z = turnAngles[m];
         const j = earth!.jacobiIntegral(Number(p.latitude) * DEG, s);
+        // The core's measurement: a rate only where the plane turns steadily (the regime).
         const fitted = run.precessionRate;
+        const theory = run.theoryRate;
         const expected = run.expectedRate;
+        const regime = run.regime;
         const degPerSecond = (r: number) => `${fmt(r / DEG, 4)}°/s`;
+        const rateText = (r: number | undefined) => (r === undefined ? "—" : `${fmt(r, 6)} (${degPerSecond(r)})`);
         const sense = run.sense;
         out = [
           { key: "tau", label: "t in the run (s)", value: tau, text: fmt(tau, 5) },
           { key: "position", label: "bob (x, y, z) (m)", value: Array.from(s.subarray(0, 3)), text: fmtVec(s.subarray(0, 3)) },
           { key: "expectedRate", label: "−Ω sin λ (rad/s)", value: expected, text: `${fmt(expected, 6)} (${degPerSecond(expected)})` },
-          { key: "precessionRate", label: "fitted rate (rad/s)", value: fitted, text: `${fmt(fitted, 6)} (${degPerSecond(fitted)})` },
+          { key: "regime", label: "regime", value: regime, text: regime === "precessing" ? regime : `${regime}: ${run.regimeNote}`, warn: regime !== "precessing" && regime !== "still" },
+          { key: "precessionRate", label: "fitted rate (rad/s)", value: fitted ?? "undefined", text: rateText(fitted) },
+          { key: "theoryRate", label: "small-swing theory (rad/s)", value: theory ?? "undefined", text: rateText(theory) },
           { key: "turningPoints", label: "turning points fitted", value: turnTimes.length, text: String(turnTimes.length) },
-          { key: "sense", label: "plane turns", value: sense, text: sense === "none" ? "not at all" : `${sense} (seen from above)` },
+          { key: "sense", label: "plane turns", value: sense, text: sense === "none" ? "not at all" : sense === "undefined" ? "— (see the regime)" : `${sense} (seen from above)` },
           { key: "period", label: "swing period (s)", value: period, text: fmt(period, 7) },
           { key: "jacobi", label: "Jacobi J (J/kg)", value: j, text: fmt(j, 12) },
           { key: "jacobiDrift", label: "J(t) − J(0) (J/kg)", value: j - j0, text: fmt(j - j0, 3), warn: Math.abs(j - j0) > 1e-6 * Math.abs(j0) },

@@ -8,10 +8,20 @@
 
 mod fall;
 mod pendulum;
+mod pendulum_measurement;
+mod pendulum_theory;
 mod planet;
 mod winds;
 
 pub use fall::{Fall, FallModel, Flight, Gravity};
 pub use pendulum::{fit_precession_rate, FoucaultRun};
-pub use planet::{check_latitude, EffectiveGravity, Earth, MEAN_RADIUS, SIDEREAL_RATE, SOLAR_DAY_RATE, STANDARD_GRAVITY};
+pub use pendulum_measurement::{
+    FoucaultMeasurement, FoucaultRegime, Sense, AMPLITUDE_TOLERANCE, MAX_TURN_PER_SWING,
+    MAX_WOBBLE, MIN_TURNING_POINTS, SCATTER_TOLERANCE, STEADY_TOLERANCE, STILL_ANGLE,
+};
+pub use pendulum_theory::{FoucaultModes, FoucaultTheory, LinearSwing};
+pub use planet::{
+    check_latitude, Earth, EffectiveGravity, MEAN_RADIUS, SIDEREAL_RATE, SOLAR_DAY_RATE,
+    STANDARD_GRAVITY,
+};
 pub use winds::{InertialRun, LowRun};

@@ -1,7 +1,6 @@
 //! The Foucault pendulum, integrated in the rotating local frame.
 
-use std::f64::consts::PI;
-
+use super::pendulum_measurement::{check_turning_points, PlaneFit};
 use super::planet::{check_latitude, Earth};
 use crate::error::{check_finite, check_positive, Error, Result};
 use crate::frames::ParticleState;
@@ -15,10 +14,11 @@ pub struct FoucaultRun {
     pub t: Vec<f64>,
     /// The bob's state `[x, y, z, vx, vy, vz]` (ENU, origin at the point of suspension) at `t`.
     pub states: Vec<ParticleState>,
-    /// Times of the turning points of the swing (largest horizontal distance) (s).
+    /// Times of the turning points of the swing: the largest distances of the bob from its
+    /// rest position ([`super::FoucaultTheory::rest`]), located by the integrator's events (s).
     pub turn_times: Vec<f64>,
-    /// Direction of the bob at each turning point, counterclockwise from east seen from
-    /// above (rad, in (−π, π]).
+    /// Direction of the bob from its rest position at each turning point, in the plane of
+    /// small swings, counterclockwise from east seen from above (rad, in (−π, π]).
     pub turn_angles: Vec<f64>,
     /// The state at the end of the run.
     pub final_state: ParticleState,
@@ -28,32 +28,26 @@ pub struct FoucaultRun {
 
 /// The slope (rad/s) of the swing-plane angle through the turning points, by least squares
 /// after unwrapping the angles modulo π (a swing plane has no head or tail). Errors name
-/// `turn_times` if fewer than 3 turning points are given or the arrays differ in length.
+/// `turn_times` if fewer than 3 turning points are given, the arrays differ in length or the
+/// times do not increase, and `turn_angles` if an angle is not finite. Whether the slope is a
+/// rate of turn at all is [`Earth::foucault_measurement`]'s to say.
 pub fn fit_precession_rate(turn_times: &[f64], turn_angles: &[f64]) -> Result<f64> {
-    if turn_times.len() != turn_angles.len() {
-        return Err(Error::invalid("turn_times", format!("must have the length of turn_angles ({} != {})", turn_times.len(), turn_angles.len())));
-    }
+    check_turning_points(turn_times, turn_angles)?;
     if turn_times.len() < 3 {
-        return Err(Error::invalid("turn_times", format!("need at least 3 turning points to fit a rate, got {} (run longer)", turn_times.len())));
+        return Err(Error::invalid(
+            "turn_times",
+            format!(
+                "need at least 3 turning points to fit a rate, got {} (run longer)",
+                turn_times.len()
+            ),
+        ));
     }
-    let mut unwrapped = Vec::with_capacity(turn_angles.len());
-    let mut prev = turn_angles[0];
-    unwrapped.push(prev);
-    for &a in &turn_angles[1..] {
-        let m = ((prev - a) / PI).round();
-        let u = a + m * PI;
-        unwrapped.push(u);
-        prev = u;
+    let mut fit = PlaneFit::new(0.0);
+    for (&t, &a) in turn_times.iter().zip(turn_angles) {
+        fit.push(t, a);
     }
-    let n = turn_times.len() as f64;
-    let tm = turn_times.iter().sum::<f64>() / n;
-    let am = unwrapped.iter().sum::<f64>() / n;
-    let (mut num, mut den) = (0.0, 0.0);
-    for (t, a) in turn_times.iter().zip(&unwrapped) {
-        num += (t - tm) * (a - am);
-        den += (t - tm) * (t - tm);
-    }
-    Ok(num / den)
+    debug_assert_eq!(fit.len(), turn_times.len());
+    Ok(fit.slope().unwrap_or(0.0))
 }
 
 impl Earth {
@@ -76,19 +70,33 @@ impl Earth {
         Ok(0.5 * v.norm_squared() + self.g * r.z - 0.5 * w.cross(&r).norm_squared())
     }
 
-    /// The state of a Foucault pendulum of `length` (m) released from rest in the rotating
-    /// frame with its bob displaced horizontally by `amplitude` (m, < length) towards
-    /// `azimuth` (rad, clockwise from north). Origin at the point of suspension.
-    pub fn foucault_release(length: f64, amplitude: f64, azimuth: f64) -> Result<ParticleState> {
-        check_positive("length", length)?;
+    /// The state of a Foucault pendulum of `length` (m) at `latitude` (rad) released from
+    /// rest in the rotating frame, its bob moved by `amplitude` (m, < length) from its rest
+    /// position ([`Earth::foucault_theory`]) towards `azimuth` (rad, clockwise from north) along
+    /// the sphere of the string: at distance `amplitude` from the string's line at rest. Origin
+    /// at the point of suspension. (The rest position hangs off the plumb line of the
+    /// suspension by the tilt φ ≈ (ω²L/2g) sin 2λ: 1e-8 rad on the Earth, 0.02 rad for a 80 m
+    /// pendulum on a planet turning in 86 s.)
+    pub fn foucault_release(
+        &self,
+        latitude: f64,
+        length: f64,
+        amplitude: f64,
+        azimuth: f64,
+    ) -> Result<ParticleState> {
+        let theory = self.foucault_theory(latitude, length)?;
         check_positive("amplitude", amplitude)?;
         check_finite("azimuth", &[azimuth])?;
         if amplitude >= length {
-            return Err(Error::invalid("amplitude", format!("must be < length ({length} m), got {amplitude}")));
+            return Err(Error::invalid(
+                "amplitude",
+                format!("must be < length ({length} m), got {amplitude}"),
+            ));
         }
         let (s, c) = azimuth.sin_cos();
-        let z = -(length * length - amplitude * amplitude).sqrt();
-        Ok([amplitude * s, amplitude * c, z, 0.0, 0.0, 0.0])
+        let along = (length - amplitude).sqrt() * (length + amplitude).sqrt();
+        let r = along / length * theory.rest + amplitude * (s * theory.east + c * theory.north);
+        Ok([r.x, r.y, r.z, 0.0, 0.0, 0.0])
     }
 
     /// Integrates a Foucault pendulum — a spherical pendulum of `length` (m) — in the
@@ -98,16 +106,34 @@ impl Earth {
     ///
     /// the string tension λ r keeping |r| = length (with Baumgarte stabilisation at the
     /// pendulum's own frequency √(g/L)). Returns the states at `times` and every turning
-    /// point of the swing; fit them with [`fit_precession_rate`]: the plane turns at
-    /// [`Earth::foucault_rate`] = −ω sin λ, clockwise seen from above in the north.
+    /// point of the swing — the largest distances from the rest position of
+    /// [`Earth::foucault_theory`], about which the bob swings (on a fast planet it hangs
+    /// visibly off the plumb line of the suspension; distances from that line would mix the
+    /// offset into the swing). [`Earth::foucault_measurement`] fits them and says whether the
+    /// plane turns steadily: at ≈ [`Earth::foucault_rate`] = −ω sin λ on a slowly turning
+    /// planet, clockwise seen from above in the north.
     #[allow(clippy::too_many_arguments)]
-    pub fn foucault(&self, latitude: f64, length: f64, state0: ParticleState, t0: f64, t_end: f64, times: &[f64], options: &Options) -> Result<FoucaultRun> {
-        check_latitude(latitude)?;
-        check_positive("length", length)?;
+    pub fn foucault(
+        &self,
+        latitude: f64,
+        length: f64,
+        state0: ParticleState,
+        t0: f64,
+        t_end: f64,
+        times: &[f64],
+        options: &Options,
+    ) -> Result<FoucaultRun> {
+        let theory = self.foucault_theory(latitude, length)?;
         check_finite("state0", &state0)?;
         let r0 = Vec3::new(state0[0], state0[1], state0[2]);
         if ((r0.norm() - length) / length).abs() > 1e-6 {
-            return Err(Error::invalid("state0", format!("the bob must be at distance length = {length} m from the suspension, got {}", r0.norm())));
+            return Err(Error::invalid(
+                "state0",
+                format!(
+                    "the bob must be at distance length = {length} m from the suspension, got {}",
+                    r0.norm()
+                ),
+            ));
         }
         let w = self.omega_enu_unchecked(latitude);
         let g = self.g;
@@ -119,14 +145,39 @@ impl Earth {
             let r2 = r.norm_squared();
             // C = (|r|² − L²)/2, Ċ = r·v, and C̈ + 2βĊ + β²C = 0 fixes the tension.
             let c = 0.5 * (r2 - length * length);
-            let lambda = -(v.norm_squared() + r.dot(&free) + 2.0 * beta * r.dot(&v) + beta * beta * c) / r2;
+            let lambda =
+                -(v.norm_squared() + r.dot(&free) + 2.0 * beta * r.dot(&v) + beta * beta * c) / r2;
             let a = free + lambda * r;
             *dy = [v.x, v.y, v.z, a.x, a.y, a.z];
         };
-        // Turning points: d(x² + y²)/dt = 2 (x vx + y vy) goes from + to −.
-        let scan = dop853_scan(rhs, t0, state0, t_end, times, options, |_t, y: &ParticleState| y[0] * y[3] + y[1] * y[4], Crossing::Falling)?;
+        // Turning points: d|r − rest|²/dt = 2 (r − rest)·v goes from + to −.
+        let rest = theory.rest;
+        let event = |_t: f64, y: &ParticleState| {
+            (y[0] - rest.x) * y[3] + (y[1] - rest.y) * y[4] + (y[2] - rest.z) * y[5]
+        };
+        let scan = dop853_scan(
+            rhs,
+            t0,
+            state0,
+            t_end,
+            times,
+            options,
+            event,
+            Crossing::Falling,
+        )?;
         let turn_times = scan.crossings.iter().map(|h| h.t).collect();
-        let turn_angles = scan.crossings.iter().map(|h| h.y[1].atan2(h.y[0])).collect();
-        Ok(FoucaultRun { t: scan.t, states: scan.y, turn_times, turn_angles, final_state: scan.y_final, stats: scan.stats })
+        let turn_angles = scan
+            .crossings
+            .iter()
+            .map(|h| theory.swing_angle(&Vec3::new(h.y[0], h.y[1], h.y[2])))
+            .collect();
+        Ok(FoucaultRun {
+            t: scan.t,
+            states: scan.y,
+            turn_times,
+            turn_angles,
+            final_state: scan.y_final,
+            stats: scan.stats,
+        })
     }
 }
