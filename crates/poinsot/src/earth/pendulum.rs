@@ -67,7 +67,14 @@ impl Earth {
         let w = self.omega_enu_unchecked(latitude);
         let r = Vec3::new(state[0], state[1], state[2]);
         let v = Vec3::new(state[3], state[4], state[5]);
-        Ok(0.5 * v.norm_squared() + self.g * r.z - 0.5 * w.cross(&r).norm_squared())
+        // Each term finite, or the error names the half of the state it comes from.
+        let kinetic = crate::error::finite_result("velocity", "the kinetic energy ½|v|²", 0.5 * v.norm_squared())?;
+        let potential = crate::error::finite_result(
+            "position",
+            "the potential g z − ½|ω × r|²",
+            self.g * r.z - 0.5 * w.cross(&r).norm_squared(),
+        )?;
+        crate::error::finite_result("velocity", "Jacobi's integral", kinetic + potential)
     }
 
     /// The state of a Foucault pendulum of `length` (m) at `latitude` (rad) released from
@@ -138,6 +145,13 @@ impl Earth {
         let w = self.omega_enu_unchecked(latitude);
         let g = self.g;
         let beta = (g / length).sqrt();
+        // DOP853 takes several steps per swing: one per swing is a lower bound on the steps the
+        // request needs, checked before the first (a century-long run is refused at once).
+        crate::limits::check_steps(
+            (t_end - t0).abs() * (beta + w.norm()) / std::f64::consts::TAU,
+            options.max_steps,
+            "shorten the run",
+        )?;
         let rhs = |_t: f64, y: &ParticleState, dy: &mut ParticleState| {
             let r = Vec3::new(y[0], y[1], y[2]);
             let v = Vec3::new(y[3], y[4], y[5]);

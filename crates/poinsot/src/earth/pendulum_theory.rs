@@ -146,10 +146,13 @@ impl Earth {
         // Dimensionless: frequencies in units of s, stiffnesses in units of s².
         let s = omega.max(w0);
         if !(s * s).is_finite() {
-            return Err(Error::invalid(
-                "rotation_rate",
-                format!("the spin's square overflows a double: rotation_rate = {omega} rad/s is beyond any pendulum"),
-            ));
+            // The larger of the two frequencies overflows when squared: blame its source.
+            let (argument, what) = if w0 >= omega {
+                ("length", format!("the pendulum's frequency squared g/length overflows a double for length = {length} m"))
+            } else {
+                ("rotation_rate", format!("the spin's square overflows a double: rotation_rate = {omega} rad/s is beyond any pendulum"))
+            };
+            return Err(Error::invalid(argument, what));
         }
         let (wh, w0h) = (omega / s, w0 / s);
         let tilt = rest_tilt(latitude, wh, w0h);

@@ -74,6 +74,9 @@ impl Earth {
             ));
         }
         check_non_negative("t_end", t_end)?;
+        // At least one step per inertial turn (DOP853 takes several): refuse at once a run
+        // that needs more than max_steps.
+        crate::limits::check_steps(t_end * f.abs() / std::f64::consts::TAU, options.max_steps, "shorten the run")?;
         // State: x, y, vx, vy and the turning angle of the velocity θ, θ̇ = (vx ay − vy ax)/|v|².
         let rhs = |_t: f64, y: &[f64; 5], dy: &mut [f64; 5]| {
             let (vx, vy) = (y[2], y[3]);
@@ -170,6 +173,12 @@ impl Earth {
             check_finite("states", s)?;
         }
         let (k, gamma) = (strength, friction);
+        // At least one step per turn at the fastest rate, per parcel: a lower bound on the steps.
+        crate::limits::check_steps(
+            (t_end - t0) * (k.sqrt() + f.abs() + gamma) / std::f64::consts::TAU,
+            options.max_steps,
+            "shorten the run",
+        )?;
         // k |r|² as (k x) x: no overflow of x² for a large ring with a weak pull.
         let energy_of = |y: &[f64]| {
             0.5 * (y[2] * y[2] + y[3] * y[3]) + 0.5 * ((k * y[0]) * y[0] + (k * y[1]) * y[1])
