@@ -266,6 +266,9 @@ impl Nutation {
         let dv = t.v_hi - t.v_lo;
         let v_series = match self.v_form {
             None => None,
+            // v constant to double precision (a nutation near the upper pole): ∫dτ/v = τ/v₁ is
+            // all in the mean rate.
+            Some(VForm::FromLower { .. }) if dv == 0.0 => None,
             Some(VForm::FromLower { .. }) => Some((
                 ThirdSeries::hyperbolic(dv / t.v_lo, t.v_hi / t.v_lo, self.m, mc, self.k)?,
                 1.0 / t.v_lo,
@@ -311,6 +314,28 @@ impl Nutation {
         p.is_finite().then_some(p)
     }
 
+    /// Carries the solution, built in a time unit 1/σ, to seconds: every rate times σ (exact for
+    /// σ a power of two; the dimensionless constants are unchanged).
+    pub(crate) fn rescale_time(&mut self, sigma: f64) {
+        self.kappa *= sigma;
+        self.half_d *= sigma;
+        self.half_e *= sigma;
+        self.c_psi *= sigma;
+        if let Some(f) = self.fourier.as_mut() {
+            f.rescale_time(sigma);
+        }
+    }
+
+    /// The rate (rad/s) of the motion's phase: the nutation phase πτ/K = 2π t/period, or for
+    /// an asymptotic motion (m = 1, no period) τ itself.
+    pub(crate) fn phase_rate(&self) -> f64 {
+        if self.k.is_finite() {
+            PI * self.kappa / self.k
+        } else {
+            self.kappa
+        }
+    }
+
     /// ⟨φ̇⟩ and ⟨ψ̇⟩ over a period (rad/s).
     pub(crate) fn mean_rates(&self) -> (f64, f64) {
         if !self.k.is_finite() {
@@ -347,11 +372,27 @@ impl Nutation {
         let mut out = Integrals::default();
         if let Some(th) = self.w_third {
             // 1 − n sn² = w/w₂ = cn² + (w₁/w₂) sn².
-            let p = c2 + (self.t.w_lo / self.t.w_hi) * s2;
-            out.iw = (2.0 * j * th.complete + third_reduced(r, &jv, th.n, p)) / self.t.w_hi;
+            let one_minus_n = self.t.w_lo / self.t.w_hi;
+            let p = c2 + one_minus_n * s2;
+            out.iw = if self.k.is_finite() {
+                (2.0 * j * th.complete + third_reduced(r, &jv, th.n, p)) / self.t.w_hi
+            } else {
+                // m = 1, 0 ≤ n < 1: ∫₀^τ dx/(1 − n tanh²x) = (τ − √n atanh(√n tanh τ))/(1 − n),
+                // atanh x = ½ ln((1 + x)²/(1 − x²)) with 1 − n tanh² = (1 − n) + n sech² exact.
+                let sq = th.n.sqrt();
+                let at = 0.5 * ((1.0 + sq * jv.sn).powi(2) / (one_minus_n + th.n * c2)).ln();
+                (r - sq * at) / (one_minus_n * self.t.w_hi)
+            };
         }
         match self.v_form {
             None => {}
+            Some(VForm::FromLower { third, .. }) if !self.k.is_finite() => {
+                // m = 1 (the asymptotic motion towards the upright pole): sn = tanh, and with
+                // n' = −k², ∫₀^τ dx/(1 + k² tanh²x) = (τ + k atan(k tanh τ))/(1 + k²), which stays
+                // finite where cn² = sech²τ underflows and R_J would see two zero arguments.
+                let kk = (-third.n).sqrt();
+                out.iv = (r + kk * (kk * jv.sn).atan()) / ((1.0 - third.n) * self.t.v_lo);
+            }
             Some(VForm::FromLower { third, ratio }) => {
                 // 1 − n' sn² = v/v₁ = cn² + (v₂/v₁) sn².
                 let p = c2 + ratio * s2;
@@ -388,8 +429,9 @@ impl Nutation {
                         },
                     )
                 };
-                // 1 − N sn²σ = (1 − m)(sn²r + (v₁/v₂) cn²r)/dn²r.
-                let p = (1.0 - self.m) * (s2 + ratio * c2) / (jv.dn * jv.dn);
+                // 1 − N sn²σ = (1 − m)(sn²r + (v₁/v₂) cn²r)/dn²r, with 1 − m = kc² (1.0 − m
+                // would be 0 where m rounds to 1: a top falling from near upright).
+                let p = self.kc * self.kc * (s2 + ratio * c2) / (jv.dn * jv.dn);
                 let sigma = tau - self.k;
                 out.iv = coef_lin * sigma
                     + coef_pi * (2.0 * js * third.complete + third_reduced(rs, &sv, third.n, p));
