@@ -35,9 +35,9 @@ impl SteadyPrecession {
     pub fn fast(&self) -> f64 {
         self.inner.fast
     }
-    /// The unit's 2.121, m g l / p_ψ (rad/s).
+    /// The unit's 2.121, m g l / p_ψ (rad/s); `undefined` without spin (p_ψ = 0).
     #[wasm_bindgen(getter, js_name = slowApprox)]
-    pub fn slow_approx(&self) -> f64 {
+    pub fn slow_approx(&self) -> Option<f64> {
         self.inner.slow_approx
     }
     /// The unit's 2.120 corrected, p_ψ / (I₁ cos θ₀) (rad/s).
@@ -219,8 +219,8 @@ impl HeavyTop {
         self.inner.mean_spin_rate()
     }
 
-    /// V(θ) (J, 2.110) at each θ of `theta` (rad, in [0, π]); `Infinity` at a pole unless the
-    /// numerator vanishes there. Errors name `theta`.
+    /// V(θ) (J, 2.110) at each θ of `theta` (rad, in [0, π]). Errors name `theta`, also where V is
+    /// infinite (a pole the axis never reaches) or beyond the largest double.
     #[wasm_bindgen(js_name = effectivePotential)]
     pub fn effective_potential(&self, theta: &[f64]) -> Out<Vec<f64>> {
         each_theta(theta, "V(theta)", |th| self.inner.effective_potential(th))

@@ -29,11 +29,12 @@ pub const STEADY_NUTATION_TOLERANCE: f64 = 1e-10;
 
 /// The closest approach (rad) to a vertical that the solution resolves, other than passing
 /// exactly through it: the axis' distance from the pole is carried as 1 − cos θ = 2 sin²(θ/2)
-/// ≈ θ²/2, and products of two such distances (in the cubic, 2.109–2.110 with u = cos θ) leave
-/// the range of double precision below θ ≈ 1e-153. A start `theta` in (0, 1e-140), or a motion
-/// whose turning point comes that close to a pole it does not pass through, is refused (the
-/// margin, 1e-13 in 1 − cos θ, covers the products with the rates); θ = 0 itself is exact.
-pub const MIN_POLE_DISTANCE: f64 = 1e-140;
+/// ≈ θ²/2, and the terms of the cubic near the pole (2.109–2.110 with u = cos θ; e.g.
+/// sin²θ₀ θ̇₀²) are products of two such distances, ~θ⁴ in the top's time unit, which leave
+/// the normal range of double precision below θ ≈ 1e-77. A start `theta` in (0, 1e-60), or a
+/// motion whose turning point comes that close to a pole it does not pass through, is refused
+/// (the margin, 1e-60 in θ⁴, leaves room for rates 1e-30 of the fastest); θ = 0 itself is exact.
+pub const MIN_POLE_DISTANCE: f64 = 1e-60;
 
 /// The largest phase (rad) at which the motion is evaluated: `|t|` times the fastest of the
 /// motion's rates (the nutation's 2π/period, ⟨φ̇⟩, ⟨ψ̇⟩). Each rate is known to a few ulp, so the
@@ -207,9 +208,9 @@ impl HeavyTop {
             (2.0 * mgl).sqrt() / i1.sqrt(),
         ]);
         let (theta_dot, phi_dot, psi_dot) = (
-            ts.to_unit(st.theta_dot),
-            ts.to_unit(st.phi_dot),
-            ts.to_unit(st.psi_dot),
+            ts.in_unit(st.theta_dot),
+            ts.in_unit(st.phi_dot),
+            ts.in_unit(st.psi_dot),
         );
         let omega3 = psi_dot + phi_dot * c; // 2.99
         let beta = ts.beta(mgl, i1);
@@ -247,7 +248,7 @@ impl HeavyTop {
             f2: 2.0 * beta * c - a * a - tperp,
         };
         let turning = turning_points_from_state(&r, &local);
-        check_pole_distance("theta", &turning)?;
+        let turning = resolve_pole_passage("theta", turning)?;
         Self::assemble(
             i1,
             i3,
@@ -361,7 +362,7 @@ impl HeavyTop {
         } else {
             turning
         };
-        check_pole_distance("p_phi", &turning)?;
+        let turning = resolve_pole_passage("p_phi", turning)?;
         let (theta1, _) = turning.thetas();
         let start = EulerState {
             theta: theta1,
@@ -477,7 +478,11 @@ impl HeavyTop {
 
     /// Checks one time: finite and within [`MAX_PHASE`] of this motion. The error names
     /// `argument` (`t`, or `times` with the index `at`).
+    #[inline]
     fn check_time(&self, argument: &str, t: f64, at: Option<usize>) -> Result<()> {
+        if t.abs() <= self.max_time && t.is_finite() {
+            return Ok(());
+        }
         let index = at.map_or(String::new(), |i| format!(" at index {i}"));
         if !t.is_finite() {
             return Err(Error::invalid(
@@ -742,9 +747,6 @@ impl HeavyTop {
         f: impl Fn(&[f64], &mut [f64]) + Sync,
     ) -> Result<()> {
         use rayon::prelude::*;
-        for (i, &t) in times.iter().enumerate() {
-            self.check_time("times", t, Some(i))?;
-        }
         if out.len() != 3 * times.len() {
             return Err(Error::invalid(
                 "out",
@@ -757,15 +759,36 @@ impl HeavyTop {
             ));
         }
         const CHUNK: usize = 8192;
-        out.par_chunks_mut(3 * CHUNK)
+        // Per chunk, in parallel: the times checked, evaluated, and the results checked finite
+        // (the last line of defence of "finite or an error", see `finite_at_t`); the first
+        // failing index is reported.
+        let first_bad = out
+            .par_chunks_mut(3 * CHUNK)
             .zip(times.par_chunks(CHUNK))
-            .for_each(|(o, ts)| f(ts, o));
-        // The last line of defence of "finite or an error" (see `finite_at_t`).
-        match out.iter().position(|v| !v.is_finite()) {
+            .enumerate()
+            .filter_map(|(c, (o, ts))| {
+                if let Some(i) = ts
+                    .iter()
+                    .position(|&t| self.check_time("times", t, None).is_err())
+                {
+                    return Some(c * CHUNK + i);
+                }
+                f(ts, o);
+                o.iter()
+                    .position(|v| !v.is_finite())
+                    .map(|i| c * CHUNK + i / 3)
+            })
+            .min();
+        match first_bad {
             None => Ok(()),
-            Some(i) => finite_at_t(times[i / 3], [out[i]; 3])
-                .map(|_| ())
-                .map_err(|e| Error::invalid("times", format!("at index {}: {}", i / 3, e.message))),
+            Some(i) => {
+                let t = times[i];
+                self.check_time("times", t, Some(i))?;
+                Err(Error::invalid(
+                    "times",
+                    format!("at index {i}: the solution at t = {t:e} s is not finite"),
+                ))
+            }
         }
     }
 }
@@ -784,9 +807,9 @@ pub fn lagrangian(i1: f64, i3: f64, mgl: f64, state: &EulerState) -> Result<f64>
     // overflows where the Lagrangian itself is representable.
     let ts = TimeScale::of(&[state.theta_dot, state.phi_dot, state.psi_dot]);
     let (thd, phd, psd) = (
-        ts.to_unit(state.theta_dot),
-        ts.to_unit(state.phi_dot),
-        ts.to_unit(state.psi_dot),
+        ts.in_unit(state.theta_dot),
+        ts.in_unit(state.phi_dot),
+        ts.in_unit(state.psi_dot),
     );
     let w3 = psd + phd * c;
     let l = ts.rate2_to_si(0.5 * i1 * (thd.powi(2) + (phd * s).powi(2)))
@@ -830,9 +853,9 @@ pub fn constants_of_state(
     // The arithmetic of `HeavyTop::new`, in the unit of the fastest rate (exact).
     let ts = TimeScale::of(&[state.theta_dot, state.phi_dot, state.psi_dot]);
     let (thd, phd, psd) = (
-        ts.to_unit(state.theta_dot),
-        ts.to_unit(state.phi_dot),
-        ts.to_unit(state.psi_dot),
+        ts.in_unit(state.theta_dot),
+        ts.in_unit(state.phi_dot),
+        ts.in_unit(state.psi_dot),
     );
     let omega3 = psd + phd * c; // 2.99
     let a = i3 * omega3 / i1; // p_ψ/I₁ (2.103)
@@ -861,13 +884,30 @@ fn w_v(theta: f64) -> (f64, f64) {
 
 /// Refuses (naming `argument`) a motion whose turning point comes closer to a pole than
 /// [`MIN_POLE_DISTANCE`] without passing through it.
-fn check_pole_distance(argument: &str, t: &Turning) -> Result<()> {
+///
+/// A turning point that close to a pole *and* closer than ε of the other one (θ₁ < ε θ₂: a
+/// spin of 1e-295 rad/s swinging through the bottom) is a passage through the pole as far as
+/// double precision goes: the distance is set to 0, and the axis passes through it with φ and ψ
+/// turning by π in the sense of p_φ ∓ p_ψ (what the passage at θ₁ does, up to θ₁/θ₂). Only a
+/// motion that stays within ~θ₁/ε of the pole is refused.
+fn resolve_pole_passage(argument: &str, t: Turning) -> Result<Turning> {
     // 1 − cos θ at θ = MIN_POLE_DISTANCE (and 1 + cos θ at π − MIN_POLE_DISTANCE).
     let min = 0.5 * MIN_POLE_DISTANCE * MIN_POLE_DISTANCE;
-    let (theta1, theta2) = t.thetas();
     let close = |x: f64| x > 0.0 && x < min;
-    if close(t.w_lo) || close(t.v_lo) {
-        let (which, at) = if close(t.w_lo) {
+    // θ₁ < ε θ₂ ⇔ w₁ < ε² w₂ (near the pole w ≈ θ²/2).
+    let eps2 = f64::EPSILON * f64::EPSILON;
+    let mut out = t;
+    if close(t.w_lo) && t.w_lo < eps2 * t.w_hi {
+        out.w_lo = 0.0;
+        out.v_hi = 2.0;
+    }
+    if close(t.v_lo) && t.v_lo < eps2 * t.v_hi {
+        out.v_lo = 0.0;
+        out.w_hi = 2.0;
+    }
+    let (theta1, theta2) = out.thetas();
+    if close(out.w_lo) || close(out.v_lo) {
+        let (which, at) = if close(out.w_lo) {
             ("upright", theta1)
         } else {
             ("hanging", std::f64::consts::PI - theta2)
@@ -875,13 +915,14 @@ fn check_pole_distance(argument: &str, t: &Turning) -> Result<()> {
         return Err(Error::invalid(
             argument,
             format!(
-                "this motion comes within {at:e} rad of the {which} vertical without passing through it, \
-                 closer than the solution resolves ({MIN_POLE_DISTANCE:e} rad: 1 - cos theta ~ theta^2/2 \
-                 leaves double precision)"
+                "this motion stays within {:e} rad of the {which} vertical and comes within {at:e} rad \
+                 of it without passing through: closer than the solution resolves \
+                 ({MIN_POLE_DISTANCE:e} rad: 1 - cos theta ~ theta^2/2 leaves double precision)",
+                if which == "upright" { theta2 } else { std::f64::consts::PI - theta1 }
             ),
         ));
     }
-    Ok(())
+    Ok(out)
 }
 
 /// The values at time `t` if they are finite, else an error naming `t`: the last line of
@@ -1087,7 +1128,7 @@ impl TimeScale {
         }
     }
     /// A rate (1/s) in the unit σ.
-    fn to_unit(&self, rate: f64) -> f64 {
+    fn in_unit(&self, rate: f64) -> f64 {
         rate * self.inv
     }
     /// A quantity ∝ one rate back to SI (it overflows only where the SI value does).

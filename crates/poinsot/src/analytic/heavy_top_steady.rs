@@ -21,8 +21,10 @@ pub struct SteadyPrecession {
     /// The exact fast rate φ̇_fast (rad/s), the other root; infinite at θ₀ = π/2, where 2.116
     /// degenerates to a linear equation and only the slow rate exists.
     pub fast: f64,
-    /// The unit's 2.121, `m g l / p_ψ` (rad/s): the slow rate of a fast top.
-    pub slow_approx: f64,
+    /// The unit's 2.121, `m g l / p_ψ` (rad/s): the slow rate of a fast top; `None` where it does
+    /// not exist (no spin, p_ψ = 0: a conical pendulum, whose exact rates are still `slow` and
+    /// `fast`) or exceeds the largest double.
+    pub slow_approx: Option<f64>,
     /// The unit's 2.120 corrected, `p_ψ / (I₁ cos θ₀)` (rad/s): the fast rate of a fast top.
     pub fast_approx: f64,
     /// 2.120 as the unit prints it, `p_ψ / (2 I₁ cos θ₀)` (rad/s) — a misprint, kept to show
@@ -183,20 +185,18 @@ pub fn steady_precession(
     let out = SteadyPrecession {
         slow,
         fast,
-        slow_approx: mgl / p_psi,
+        slow_approx: Some(mgl / p_psi).filter(|x| x.is_finite()),
         fast_approx: p_psi / (i1 * c),
         fast_approx_as_printed: p_psi / (2.0 * i1 * c),
         min_spin: min,
     };
-    // Every rate finite, or an error that says which does not exist or is out of range.
-    if !(out.slow.is_finite() && out.slow_approx.is_finite()) {
+    // Every rate finite, or an error that says which is out of range.
+    if !out.slow.is_finite() {
         return Err(Error::invalid(
             "omega3",
             format!(
-                "the slow rate of 2.116 ({slow:e}) or its fast-top form m g l/p_psi of 2.121 \
-                 ({:e}) is not finite for omega3 = {omega3:e}: 2.121 needs a spin (p_psi = {p_psi:e}); \
-                 the fast rate of 2.116 is {fast:e} rad/s",
-                out.slow_approx
+                "the slow rate of 2.116, m g l/q = {slow:e}, exceeds the largest double for omega3 = \
+                 {omega3:e} (p_psi = {p_psi:e})"
             ),
         ));
     }
