@@ -838,7 +838,8 @@ def top(i1: float, i3: float, mgl: float, theta: float, phi_dot: float, psi_dot:
     else:
         rows += [
             ("steady precession at θ₀: slow / fast (rad/s)", f"{steady['slow']:.8g} / {steady['fast']:.8g}", "2.116"),
-            ("  fast-top slow ≈ mgl/p_ψ (rad/s)", f"{steady['slow_approx_2_121']:.8g}", "2.121"),
+            ("  fast-top slow ≈ mgl/p_ψ (rad/s)", "none (no spin)" if steady["slow_approx_2_121"] is None
+             else f"{steady['slow_approx_2_121']:.8g}", "2.121"),
             ("  fast-top fast ≈ p_ψ/(I₁ cos θ₀) (rad/s)", f"{steady['fast_approx_2_120']:.8g}", "2.120*"),
         ]
     rows += [

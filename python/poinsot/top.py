@@ -46,9 +46,12 @@ class SteadyPrecession:
     ----------
     slow, fast:
         The two exact roots of 2.116, ``I1 cos(theta0) phi'**2 - p_psi phi' + m g l = 0``
-        (``fast`` is ``inf`` at ``theta0 = pi/2``, where only the slow rate exists).
+        (near ``theta0 = pi/2``, where the fast rate leaves the range of doubles and only the
+        slow one exists, :meth:`HeavyTop.steady_precession` raises, naming ``theta0``).
     slow_approx:
-        The unit's 2.121, ``m g l / p_psi``: the slow rate of a fast top.
+        The unit's 2.121, ``m g l / p_psi``: the slow rate of a fast top; ``None`` without spin
+        (``p_psi = 0``, a conical pendulum: its exact rates are ``slow`` and ``fast``) or where it
+        exceeds the largest double.
     fast_approx:
         The unit's 2.120 *corrected*, ``p_psi / (I1 cos theta0)``: the fast rate of a fast top.
     fast_approx_as_printed:
@@ -59,7 +62,7 @@ class SteadyPrecession:
 
     slow: float
     fast: float
-    slow_approx: float
+    slow_approx: float | None
     fast_approx: float
     fast_approx_as_printed: float
     min_spin: float
@@ -269,8 +272,10 @@ class HeavyTop:
     # ---- the analysis of the unit ----------------------------------------------------------
     def effective_potential(self, theta: Any, *, degrees: bool = False) -> Any:
         """The effective potential ``V(theta) = (p_phi - p_psi cos)^2 / (2 I1 sin^2) + m g l cos``
-        (J, 2.110), broadcasting over ``theta`` (rad, in [0, pi]); ``inf`` at a pole unless the
-        numerator vanishes there."""
+        (J, 2.110), broadcasting over ``theta`` (rad, in [0, pi]). At a pole it is the limit
+        ``m g l cos`` where the numerator vanishes there; where V is infinite (a pole the axis
+        never reaches) or beyond the largest double next to it, :class:`PoinsotError` names
+        ``theta``."""
         flat, shape = _flat(theta, "theta", degrees)
         return _shaped(self._core.effective_potential(flat), shape)
 
@@ -324,7 +329,10 @@ class HeavyTop:
         """The exact Euler angles ``(phi, theta, psi)`` at times ``t`` (s; the initial state is at
         ``t = 0``), each shaped like ``t`` (floats for a scalar ``t``), in rad (degrees with
         ``degrees=True``). ``phi`` and ``psi`` are continuous, not reduced modulo 2 pi, except for
-        jumps of pi where the axis passes exactly through a pole."""
+        jumps of pi where the axis passes exactly through a pole. θ keeps its relative accuracy
+        however close to upright (down to 1e-60 rad). Raises :class:`PoinsotError` naming ``t``
+        beyond ``|t| = 4.5e9 rad / (the motion's fastest rate)``, where the phase would carry more
+        than 1e-6 rad of rounding (see docs/heavy_top.md, *Range of validity*)."""
         flat, shape = _flat(t, "t")
         out = self._core.euler_angles(flat)
         if as_flag(degrees, "degrees"):
@@ -368,7 +376,8 @@ class HeavyTop:
         spin 2.119. With ``degrees=True``, ``theta0`` is in degrees (rates stay in rad/s).
 
         Raises :class:`PoinsotError` naming ``omega3`` when ``|omega3|`` is below the minimum
-        spin (the message gives it)."""
+        spin (the message gives it), and ``theta0`` where the fast rate exceeds the largest double
+        (``slow_approx`` is ``None`` without spin)."""
         d = _core.heavy_top_steady_precession(
             as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl"),
             _angle(theta0, "theta0", degrees), as_scalar(omega3, "omega3"),

@@ -180,7 +180,7 @@ impl PyHeavyTop {
     fn euler_angles_carlson<'py>(&self, py: Python<'py>, t: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyArray2<f64>>> {
         let ts = slice("t", &t)?;
         poinsot::error::check_finite("t", ts).py()?;
-        let rows: Vec<[f64; 3]> = ts.iter().map(|&x| self.inner.euler_angles_carlson(x)).collect();
+        let rows: Vec<[f64; 3]> = ts.iter().map(|&x| self.inner.euler_angles_carlson(x)).collect::<poinsot::Result<_>>().py()?;
         Ok(crate::frames::rows_out(py, &rows))
     }
 }

@@ -37,9 +37,9 @@ impl SteadyPrecession {
     pub fn fast(&self) -> f64 {
         self.inner.fast
     }
-    /// The unit's 2.121, m g l / p_ψ (rad/s).
+    /// The unit's 2.121, m g l / p_ψ (rad/s); `undefined` without spin (p_ψ = 0).
     #[wasm_bindgen(getter, js_name = slowApprox)]
-    pub fn slow_approx(&self) -> f64 {
+    pub fn slow_approx(&self) -> Option<f64> {
         self.inner.slow_approx
     }
     /// The unit's 2.120 corrected, p_ψ / (I₁ cos θ₀) (rad/s).
@@ -272,8 +272,8 @@ impl HeavyTop {
         self.inner.mean_spin_rate()
     }
 
-    /// V(θ) (J, 2.110) at each θ of `theta` (rad, in [0, π]); `Infinity` at a pole unless the
-    /// numerator vanishes there. Errors name `theta`.
+    /// V(θ) (J, 2.110) at each θ of `theta` (rad, in [0, π]). Errors name `theta`, also where V is
+    /// infinite (a pole the axis never reaches) or beyond the largest double.
     #[wasm_bindgen(js_name = effectivePotential)]
     pub fn effective_potential(
         &self,
@@ -322,8 +322,8 @@ impl HeavyTop {
         #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
     ) -> Out<Vec<f64>> {
         let t = time(&t)?;
-        let a = self.inner.euler_angles(t);
-        let r = self.inner.euler_rates(t);
+        let a = self.inner.euler_angles(t)?;
+        let r = self.inner.euler_rates(t)?;
         finite("t", "state", vec![a[0], a[1], a[2], r[0], r[1], r[2]])
     }
     /// The attitudes R(t) = R_z(φ) R_x(θ) R_z(ψ) at the times `t`: N×9 numbers (row-major, body
@@ -371,7 +371,7 @@ impl HeavyTop {
             "steady precession",
             vec![
                 inner.slow,
-                inner.slow_approx,
+                inner.slow_approx.unwrap_or(0.0),
                 inner.fast_approx,
                 inner.min_spin,
                 fast,
@@ -526,7 +526,7 @@ mod tests {
         let a = top.euler_angles(ts.to_vec()).unwrap();
         let r = top.euler_rates(ts.to_vec()).unwrap();
         for (k, &t) in ts.iter().enumerate() {
-            assert_eq!(&a[3 * k..3 * k + 3], &core.euler_angles(t)[..]);
+            assert_eq!(&a[3 * k..3 * k + 3], &core.euler_angles(t).unwrap()[..]);
             let s = top.state(t).unwrap();
             assert_eq!(&s[..3], &a[3 * k..3 * k + 3]);
             assert_eq!(&s[3..], &r[3 * k..3 * k + 3]);

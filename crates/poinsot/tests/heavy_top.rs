@@ -55,7 +55,7 @@ fn test_erratum_2_120_fast_precession_has_no_factor_half() {
     // The misprint is a factor 2 away from the truth.
     assert!((s.fast_approx_as_printed / s.fast - 0.5).abs() < 1e-3);
     // The slow root and 2.121 agree to the same order (m g l I₁ cos θ₀ / p_ψ² ≈ 6e-4).
-    assert!((s.slow - s.slow_approx).abs() / s.slow < 1e-3);
+    assert!((s.slow - s.slow_approx.unwrap()).abs() / s.slow < 1e-3);
 }
 
 /// 2.117 with the erratum fixed: the discriminant is 1 − 4 m g l I₁ cos θ₀ / p_ψ² (the unit
@@ -121,7 +121,7 @@ fn fast_top_approximations_converge_quadratically() {
     let rel = |w3: f64| {
         let s = steady_precession(i1, i3, mgl, th0, w3).unwrap();
         (
-            (s.slow_approx - s.slow).abs() / s.slow,
+            (s.slow_approx.unwrap() - s.slow).abs() / s.slow,
             (s.fast_approx - s.fast).abs() / s.fast,
         )
     };
@@ -232,7 +232,7 @@ fn turning_points_are_where_the_effective_potential_meets_e_prime() {
         }
         let period = t.nutation_period().unwrap();
         for k in 0..200 {
-            let th = t.euler_angles(period * k as f64 / 97.0)[1];
+            let th = t.euler_angles(period * k as f64 / 97.0).unwrap()[1];
             assert!(th >= t1 - 1e-14 && th <= t2 + 1e-14);
         }
     }
@@ -268,7 +268,7 @@ fn classes_match_the_sign_of_phi_dot_along_the_motion() {
         assert_eq!(t.motion_class(), class);
         let period = t.nutation_period().unwrap();
         let rates: Vec<f64> = (0..400)
-            .map(|k| t.euler_rates(period * k as f64 / 400.0)[0])
+            .map(|k| t.euler_rates(period * k as f64 / 400.0).unwrap()[0])
             .collect();
         let (lo, hi) = rates
             .iter()
@@ -297,8 +297,8 @@ fn constants_are_conserved_along_the_exact_solution() {
         let t = top(i1, i3, mgl, th0, thd, phd, psd);
         for k in 0..50 {
             let time = 0.173 * k as f64;
-            let [ph, th, ps] = t.euler_angles(time);
-            let [phd, thd, psd] = t.euler_rates(time);
+            let [ph, th, ps] = t.euler_angles(time).unwrap();
+            let [phd, thd, psd] = t.euler_rates(time).unwrap();
             let st = EulerState {
                 phi: ph,
                 theta: th,
@@ -319,7 +319,10 @@ fn constants_are_conserved_along_the_exact_solution() {
             assert!((c.energy() - t.energy()).abs() < 1e-12 * (1.0 + t.energy().abs()));
             // Rates against central differences of the angles (h³ error of the difference).
             let h = 1e-5;
-            let (a, b) = (t.euler_angles(time - h), t.euler_angles(time + h));
+            let (a, b) = (
+                t.euler_angles(time - h).unwrap(),
+                t.euler_angles(time + h).unwrap(),
+            );
             for i in 0..3 {
                 let fd = (b[i] - a[i]) / (2.0 * h);
                 assert!(
@@ -338,7 +341,7 @@ fn nutation_period_and_mean_rates() {
     let p = t.nutation_period().unwrap();
     for k in 0..10 {
         let t0 = 0.37 * k as f64;
-        let (a, b) = (t.euler_angles(t0), t.euler_angles(t0 + p));
+        let (a, b) = (t.euler_angles(t0).unwrap(), t.euler_angles(t0 + p).unwrap());
         assert!((a[1] - b[1]).abs() < 1e-13);
         assert!((b[0] - a[0] - t.mean_precession_rate() * p).abs() < 1e-12);
         assert!((b[2] - a[2] - t.mean_spin_rate() * p).abs() < 1e-12);
@@ -355,7 +358,7 @@ fn from_constants_reproduces_the_top_with_those_constants() {
     assert_eq!(a.motion_class(), b.motion_class());
     assert!((a.nutation_period().unwrap() - b.nutation_period().unwrap()).abs() < 1e-12);
     // b starts at θ₁: θ_b(t) = θ_a(t + t₁) where a reaches θ₁ at t₁.
-    assert!((b.euler_angles(0.0)[1] - b1).abs() < 1e-15);
+    assert!((b.euler_angles(0.0).unwrap()[1] - b1).abs() < 1e-15);
     assert!((b.mean_precession_rate() - a.mean_precession_rate()).abs() < 1e-12);
     // Below the minimum of V: refused, naming the energy.
     let e = HeavyTop::from_constants(1.0, 0.5, 1.0, a.p_phi(), a.p_psi(), a.energy() - 10.0)
@@ -495,7 +498,7 @@ fn negative_theta_dot_at_the_pole_is_reflected() {
     .unwrap();
     let s = a.initial_state();
     assert!(s.theta_dot > 0.0 && (s.phi - std::f64::consts::PI).abs() < 1e-15);
-    let [_, th, _] = a.euler_angles(0.3);
+    let [_, th, _] = a.euler_angles(0.3).unwrap();
     assert!(th > 0.0);
 }
 
@@ -513,14 +516,14 @@ proptest! {
         let st = EulerState { theta: th0, theta_dot: thd, phi_dot: phd, psi_dot: w3 - phd * c, ..Default::default() };
         let a = HeavyTop::new(i1, i3, mgl, st).unwrap();
         let (t1, t2) = a.turning_points();
-        let [ph, th, ps] = a.euler_angles(t);
-        let [phd_t, thd_t, psd_t] = a.euler_rates(t);
+        let [ph, th, ps] = a.euler_angles(t).unwrap();
+        let [phd_t, thd_t, psd_t] = a.euler_rates(t).unwrap();
         prop_assert!(th >= t1 - 1e-12 && th <= t2 + 1e-12);
         let ep = 0.5 * i1 * thd_t * thd_t + a.effective_potential(th).unwrap();
         let scale = 1.0 + a.reduced_energy().abs() + a.p_phi().powi(2) + a.p_psi().powi(2);
         prop_assert!((ep - a.reduced_energy()).abs() < 1e-10 * scale, "{} vs {}", ep, a.reduced_energy());
         let b = HeavyTop::new(i1, i3, mgl, EulerState { phi: ph, theta: th, psi: ps, phi_dot: phd_t, theta_dot: thd_t, psi_dot: psd_t }).unwrap();
-        let (x, y) = (a.euler_angles(t + 0.7), b.euler_angles(0.7));
+        let (x, y) = (a.euler_angles(t + 0.7).unwrap(), b.euler_angles(0.7).unwrap());
         prop_assert!((x[1] - y[1]).abs() < 1e-9, "theta {} vs {}", x[1], y[1]);
     }
 }
@@ -542,8 +545,8 @@ proptest! {
         let mut batch = vec![0.0; 3 * times.len()];
         top.euler_angles_into(&times, &mut batch).unwrap();
         for (k, &t) in times.iter().enumerate() {
-            let a = top.euler_angles(t);
-            let b = top.euler_angles_carlson(t);
+            let a = top.euler_angles(t).unwrap();
+            let b = top.euler_angles_carlson(t).unwrap();
             for i in 0..3 {
                 let scale = b[i].abs().max(1.0);
                 prop_assert!((a[i] - b[i]).abs() < 1e-12 * scale, "t {} comp {}: {} vs {} ({} terms)", t, i, a[i], b[i], top.fourier_terms());
@@ -584,8 +587,8 @@ fn constants_of_state_equal_the_constants_along_the_motion() {
         let scale_p = t.p_phi().abs() + t.p_psi().abs();
         for k in 0..40 {
             let time = 0.137 * k as f64;
-            let [ph, th, ps] = t.euler_angles(time);
-            let [phd, thd, psd] = t.euler_rates(time);
+            let [ph, th, ps] = t.euler_angles(time).unwrap();
+            let [phd, thd, psd] = t.euler_rates(time).unwrap();
             let st = EulerState {
                 phi: ph,
                 theta: th,

@@ -27,6 +27,23 @@ use crate::error::{check_finite, Error, Result};
 /// motion itself is still evaluated exactly with the computed turning points.
 pub const STEADY_NUTATION_TOLERANCE: f64 = 1e-10;
 
+/// The closest approach (rad) to a vertical that the solution resolves, other than passing
+/// exactly through it: the axis' distance from the pole is carried as 1 − cos θ = 2 sin²(θ/2)
+/// ≈ θ²/2, and the terms of the cubic near the pole (2.109–2.110 with u = cos θ; e.g.
+/// sin²θ₀ θ̇₀²) are products of two such distances, ~θ⁴ in the top's time unit, which leave
+/// the normal range of double precision below θ ≈ 1e-77. A start `theta` in (0, 1e-60), or a
+/// motion whose turning point comes that close to a pole it does not pass through, is refused
+/// (the margin, 1e-60 in θ⁴, leaves room for rates 1e-30 of the fastest); θ = 0 itself is exact.
+pub const MIN_POLE_DISTANCE: f64 = 1e-60;
+
+/// The largest phase (rad) at which the motion is evaluated: `|t|` times the fastest of the
+/// motion's rates (the nutation's 2π/period, ⟨φ̇⟩, ⟨ψ̇⟩). Each rate is known to a few ulp, so the
+/// phase it accumulates by time t carries a rounding error of about ε × rate × |t|; at this
+/// phase that error reaches 1e-6 rad, and beyond it the nutation phase is lost (at ~1e16 rad not
+/// a digit is left), so [`HeavyTop::euler_angles`] refuses `t` there. ≈ 4.5e9 rad, i.e. about
+/// 7e8 nutation periods.
+pub const MAX_PHASE: f64 = 1e-6 / f64::EPSILON;
+
 /// φ̇ at a turning point is taken as zero (a cusp) when `|b − a cos θᵢ|` is at most this times
 /// the size of its terms (the round-off of the momenta, with margin).
 pub const CUSP_TOLERANCE: f64 = 1e-10;
@@ -119,11 +136,15 @@ pub struct HeavyTop {
     p_psi: f64,
     energy: f64,
     reduced_energy: f64,
+    /// The reduced constants in the time unit 1/σ of `ts`.
     r: Reduced,
+    ts: TimeScale,
     start: EulerState,
     turning: Turning,
     class: MotionClass,
     motion: Motion,
+    /// The largest |t| (s) evaluated: [`MAX_PHASE`] over the fastest rate (∞ if none).
+    max_time: f64,
 }
 
 impl HeavyTop {
@@ -136,6 +157,17 @@ impl HeavyTop {
     pub fn new(i1: f64, i3: f64, mgl: f64, state: EulerState) -> Result<Self> {
         check_top(i1, i3, mgl)?;
         check_theta("theta", state.theta)?;
+        if state.theta > 0.0 && state.theta < MIN_POLE_DISTANCE {
+            return Err(Error::invalid(
+                "theta",
+                format!(
+                    "0 < theta = {:e} < {MIN_POLE_DISTANCE:e} rad: closer to the vertical than the solution \
+                     resolves (1 - cos theta ~ theta^2/2 leaves double precision); use theta = 0 for a top \
+                     started exactly upright",
+                    state.theta
+                ),
+            ));
+        }
         check_finite("phi", &[state.phi])?;
         check_finite("psi", &[state.psi])?;
         check_finite("phi_dot", &[state.phi_dot])?;
@@ -166,14 +198,27 @@ impl HeavyTop {
         let v0 = 2.0 * half.cos().powi(2);
         let (s, c) = st.theta.sin_cos();
         let s2 = s * s;
-        let omega3 = st.psi_dot + st.phi_dot * c; // 2.99
-        let p_psi = i3 * omega3; // 2.103
-        let beta = 2.0 * mgl / i1;
-        let a = p_psi / i1;
-        // I₁φ̇ sin²θ: the transverse part of p_φ (2.104).
-        let ps = st.phi_dot * s2;
+        // The rates in the top's own time unit 1/σ (σ = 2ᵏ ≈ its fastest rate, see
+        // `TimeScale`): exact, and the squares and products below then neither overflow nor
+        // underflow however fast or slow the top is.
+        let ts = TimeScale::of(&[
+            st.theta_dot,
+            st.phi_dot,
+            st.psi_dot,
+            (2.0 * mgl).sqrt() / i1.sqrt(),
+        ]);
+        let (theta_dot, phi_dot, psi_dot) = (
+            ts.in_unit(st.theta_dot),
+            ts.in_unit(st.phi_dot),
+            ts.in_unit(st.psi_dot),
+        );
+        let omega3 = psi_dot + phi_dot * c; // 2.99
+        let beta = ts.beta(mgl, i1);
+        let a = i3 * omega3 / i1; // p_ψ / I₁ (2.103)
+                                  // I₁φ̇ sin²θ: the transverse part of p_φ (2.104).
+        let ps = phi_dot * s2;
         // θ̇² + φ̇² sin²θ = 2 T_⊥ / I₁.
-        let tperp = st.theta_dot * st.theta_dot + st.phi_dot * ps;
+        let tperp = theta_dot * theta_dot + phi_dot * ps;
         let r = Reduced {
             a,
             b: ps + a * c,
@@ -183,17 +228,27 @@ impl HeavyTop {
             gamma: tperp - beta * w0,
             delta: tperp + beta * v0,
         };
-        let p_phi = i1 * r.b;
-        let reduced_energy = 0.5 * i1 * tperp + mgl * c; // 2.109
-        let energy = reduced_energy + 0.5 * i3 * omega3 * omega3; // 2.105
+        // The constants of the motion in SI (2.103–2.105), each representable or refused.
+        let largest = largest_rate(&st);
+        let p_psi = ts.rate_to_si(i3 * omega3);
+        let p_phi = ts.rate_to_si(i1 * r.b);
+        let reduced_energy = ts.rate2_to_si(0.5 * i1 * tperp) + mgl * c; // 2.109
+        let energy = reduced_energy + ts.rate2_to_si(0.5 * i3 * omega3 * omega3); // 2.105
+        check_representable(&[
+            ("p_psi", p_psi, largest),
+            ("p_phi", p_phi, largest),
+            ("E", energy, largest),
+            ("E'", reduced_energy, largest),
+        ])?;
         let local = Local {
             w0,
             v0,
-            f0: s2 * st.theta_dot * st.theta_dot,
+            f0: s2 * theta_dot * theta_dot,
             f1: 2.0 * c * tperp + beta * s2 - 2.0 * a * ps,
             f2: 2.0 * beta * c - a * a - tperp,
         };
         let turning = turning_points_from_state(&r, &local);
+        let turning = resolve_pole_passage("theta", turning)?;
         Self::assemble(
             i1,
             i3,
@@ -203,6 +258,7 @@ impl HeavyTop {
             energy,
             reduced_energy,
             r,
+            ts,
             st,
             turning,
             true,
@@ -257,7 +313,7 @@ impl HeavyTop {
         check_finite("p_psi", &[p_psi])?;
         check_finite("energy", &[energy])?;
         let reduced_energy = energy - p_psi * p_psi / (2.0 * i3);
-        let r = Reduced {
+        let si = Reduced {
             a: p_psi / i1,
             b: p_phi / i1,
             d: (p_phi - p_psi) / i1,
@@ -266,6 +322,30 @@ impl HeavyTop {
             gamma: 2.0 * (reduced_energy - mgl) / i1,
             delta: 2.0 * (reduced_energy + mgl) / i1,
         };
+        let culprit = if p_phi.abs() > p_psi.abs() {
+            "p_phi"
+        } else {
+            "p_psi"
+        };
+        check_representable(&[
+            ("E' = E - p_psi^2/(2 I3)", reduced_energy, "energy"),
+            ("p_psi/I1", si.a, "p_psi"),
+            ("p_phi/I1", si.b, "p_phi"),
+            ("(p_phi - p_psi)/I1", si.d, culprit),
+            ("(p_phi + p_psi)/I1", si.e, culprit),
+            ("2 mgl/I1", si.beta, "mgl"),
+            ("2 (E' - mgl)/I1", si.gamma, "energy"),
+            ("2 (E' + mgl)/I1", si.delta, "energy"),
+        ])?;
+        // In the top's own time unit (see `TimeScale`).
+        let ts = TimeScale::of(&[
+            si.a,
+            si.b,
+            si.gamma.abs().sqrt(),
+            si.delta.abs().sqrt(),
+            si.beta.sqrt(),
+        ]);
+        let r = ts.reduced_to_unit(&si);
         let turning = turning_points_from_constants(&r).ok_or_else(|| {
             Error::invalid(
                 "energy",
@@ -275,6 +355,14 @@ impl HeavyTop {
                 ),
             )
         })?;
+        // Time 0 at θ₁: where θ₁ is a double root of the cubic (u₂ = u₃, β(u₃ − u₂) = 0: the top
+        // balanced upright on the separatrix, which it would take forever to leave), it stays.
+        let turning = if r.p_and_complement(&turning).1 <= 0.0 {
+            Turning::coincident(turning.w_lo, turning.v_hi)
+        } else {
+            turning
+        };
+        let turning = resolve_pole_passage("p_phi", turning)?;
         let (theta1, _) = turning.thetas();
         let start = EulerState {
             theta: theta1,
@@ -289,6 +377,7 @@ impl HeavyTop {
             energy,
             reduced_energy,
             r,
+            ts,
             start,
             turning,
             false,
@@ -305,6 +394,7 @@ impl HeavyTop {
         energy: f64,
         reduced_energy: f64,
         r: Reduced,
+        ts: TimeScale,
         start: EulerState,
         turning: Turning,
         from_state: bool,
@@ -312,18 +402,36 @@ impl HeavyTop {
         let class = classify(&r, &turning);
         let motion = if turning.w_lo == turning.w_hi {
             let theta = theta_from_wv(turning.w_lo, turning.v_lo);
-            let (phi_rate, psi_rate) = uniform_rates(i1, i3, &r, &turning, &start, from_state);
+            let (phi_rate, psi_rate) = uniform_rates(i1, i3, &r, &ts, &turning, &start, from_state);
             Motion::Uniform {
                 theta,
                 phi_rate,
                 psi_rate,
             }
         } else {
-            Motion::Nutating(Box::new(Nutation::new(
-                i1, i3, &r, &turning, &start, from_state,
-            )?))
+            // Built in the time unit 1/σ, then carried to seconds (exactly: σ = 2ᵏ).
+            let mut n = Nutation::new(i1, i3, &r, &turning, &start, from_state)?;
+            n.rescale_time(ts.sigma);
+            Motion::Nutating(Box::new(n))
         };
-        Ok(Self {
+        // The fastest phase of the motion (rad/s): the nutation's, and the mean precession and
+        // spin (the angles' linear parts).
+        let (phase_rate, mean_phi, mean_psi) = match &motion {
+            Motion::Uniform {
+                phi_rate, psi_rate, ..
+            } => (0.0, *phi_rate, *psi_rate),
+            Motion::Nutating(n) => {
+                let (p, s) = n.mean_rates();
+                (n.phase_rate(), p, s)
+            }
+        };
+        let fastest = phase_rate.max(mean_phi.abs()).max(mean_psi.abs());
+        let max_time = if fastest > 0.0 {
+            MAX_PHASE / fastest
+        } else {
+            f64::INFINITY
+        };
+        let top = Self {
             i1,
             i3,
             mgl,
@@ -332,11 +440,70 @@ impl HeavyTop {
             energy,
             reduced_energy,
             r,
+            ts,
             start,
             turning,
             class,
             motion,
-        })
+            max_time,
+        };
+        top.check_solution(if from_state { "theta" } else { "p_phi" })?;
+        Ok(top)
+    }
+
+    /// Refuses (naming `argument`) a motion whose solution is not finite where it starts: one
+    /// whose scales — the distance from a pole, the rates against each other — lie further
+    /// apart than double precision spans (the fuzzed envelope is stated in docs/heavy_top.md).
+    fn check_solution(&self, argument: &str) -> Result<()> {
+        let (t1, t2) = self.turning_points();
+        let mut values = vec![t1, t2, self.mean_precession_rate(), self.mean_spin_rate()];
+        values.extend(self.angles_unchecked(0.0));
+        values.extend(self.rates_unchecked(0.0));
+        if values.iter().all(|v| v.is_finite()) {
+            return Ok(());
+        }
+        Err(Error::invalid(
+            argument,
+            format!(
+                "the exact solution of this motion cannot be represented in double precision: its \
+                 scales (theta1 = {t1:e} rad from the vertical, the rates |p_psi|/I1 = {:e} and |p_phi|/I1 \
+                 = {:e} rad/s against each other and against sqrt(2 mgl/I1) = {:e} rad/s) lie further apart \
+                 than it spans",
+                self.ts.rate_to_si(self.r.a).abs(),
+                self.ts.rate_to_si(self.r.b).abs(),
+                self.ts.rate_to_si(self.r.beta.sqrt()),
+            ),
+        ))
+    }
+
+    /// Checks one time: finite and within [`MAX_PHASE`] of this motion. The error names
+    /// `argument` (`t`, or `times` with the index `at`).
+    #[inline]
+    fn check_time(&self, argument: &str, t: f64, at: Option<usize>) -> Result<()> {
+        if t.abs() <= self.max_time && t.is_finite() {
+            return Ok(());
+        }
+        let index = at.map_or(String::new(), |i| format!(" at index {i}"));
+        if !t.is_finite() {
+            return Err(Error::invalid(
+                argument,
+                format!("must be finite, got {t}{index}"),
+            ));
+        }
+        if t.abs() > self.max_time {
+            return Err(Error::invalid(
+                argument,
+                format!(
+                    "|t| = {:e} s{index} is beyond {:.6e} s, the longest time over which this motion \
+                     keeps its phase: its fastest rate times t, {:.3e} rad, would carry a rounding \
+                     error of more than 1e-6 rad (the phase of the nutation, and with it theta, is lost)",
+                    t.abs(),
+                    self.max_time,
+                    MAX_PHASE * t.abs() / self.max_time
+                ),
+            ));
+        }
+        Ok(())
     }
 
     /// I₁ (kg·m²), the moment about a transverse axis through the pivot.
@@ -415,15 +582,18 @@ impl HeavyTop {
     }
     /// The period of θ(t) (s): `2K(m)/κ` with κ = ½√(β(u₃ − u₁)) (β = 2mgl/I₁) and
     /// m = (u₂ − u₁)/(u₃ − u₁); for steady motion (θ₁ = θ₂), the period of small nutations about
-    /// it, `2π/√P` with P = β(u₃ − u₁). `None` where θ never returns: an unstable sleeping top.
+    /// it, `2π/√P` with P = β(u₃ − u₁). `None` where θ never returns: an unstable sleeping top,
+    /// an asymptotic motion (m = 1), or a period beyond the largest double.
     pub fn nutation_period(&self) -> Option<f64> {
         match &self.motion {
             Motion::Nutating(n) => n.period(),
             Motion::Uniform { .. } => {
+                // P in the unit 1/σ²: the period 2π/√P in units of 1/σ.
                 let (p, _) = self.r.p_and_complement(&self.turning);
-                (p > 0.0).then(|| 2.0 * std::f64::consts::PI / p.sqrt())
+                (p > 0.0).then(|| 2.0 * std::f64::consts::PI / p.sqrt() / self.ts.sigma)
             }
         }
+        .filter(|p| p.is_finite())
     }
     /// The mean precession rate ⟨φ̇⟩ over a nutation period (rad/s): φ advances by
     /// `⟨φ̇⟩ · period` per period (including the jumps of ±π where the axis crosses a vertical).
@@ -441,31 +611,49 @@ impl HeavyTop {
         }
     }
 
-    /// The effective potential V(θ) = (p_φ − p_ψ cos θ)²/(2 I₁ sin²θ) + m g l cos θ (J, 2.110);
-    /// +∞ at θ = 0 (unless p_φ = p_ψ) and at θ = π (unless p_φ = −p_ψ). Errors name `theta`
-    /// (finite, in [0, π]).
+    /// The effective potential V(θ) = (p_φ − p_ψ cos θ)²/(2 I₁ sin²θ) + m g l cos θ (J, 2.110),
+    /// to a few ulp at every θ (evaluated as ½ I₁ (k/sin θ ± a tan(θ/2)^±1)² + m g l cos θ about
+    /// the nearer pole, k = (p_φ ∓ p_ψ)/I₁: no 1 − cos θ, no underflow of sin²θ). At a pole it is
+    /// the limit m g l cos θ where p_φ = ±p_ψ. Errors name `theta`: not finite or outside [0, π];
+    /// or V infinite (at a pole with p_φ ≠ ±p_ψ, which the axis never reaches) or beyond the
+    /// largest double (that close to such a pole).
     pub fn effective_potential(&self, theta: f64) -> Result<f64> {
         check_theta("theta", theta)?;
-        Ok(effective_potential_reduced(
-            self.i1, self.mgl, &self.r, theta,
-        ))
+        finite_at_theta(
+            "V(theta)",
+            theta,
+            effective_potential_reduced(self.i1, self.mgl, &self.r, &self.ts, theta),
+        )
     }
 
     /// dV/dθ = (p_φ − p_ψ cos θ)(p_ψ − p_φ cos θ)/(I₁ sin³θ) − m g l sin θ (N·m, 2.113); the
-    /// generalized force −dV/dθ drives θ̈ (I₁θ̈ = −dV/dθ). Errors name `theta` (in (0, π) where
-    /// V is finite; at a pole where V is finite the limit is returned).
+    /// generalized force −dV/dθ drives θ̈ (I₁θ̈ = −dV/dθ). At a pole where V is finite the limit
+    /// (0) is returned. Errors name `theta` as [`HeavyTop::effective_potential`].
     pub fn effective_potential_derivative(&self, theta: f64) -> Result<f64> {
         check_theta("theta", theta)?;
-        Ok(effective_potential_derivative_reduced(
-            self.i1, self.mgl, &self.r, theta,
-        ))
+        finite_at_theta(
+            "dV/dtheta",
+            theta,
+            effective_potential_derivative_reduced(self.i1, self.mgl, &self.r, &self.ts, theta),
+        )
     }
 
     /// The Euler angles (φ, θ, ψ) at time `t` (s; the initial state is at t = 0), exact: θ from
     /// the Jacobi elliptic solution of the cubic, φ and ψ from complete and incomplete elliptic
     /// integrals of the third kind (Carlson's R_J). φ and ψ are continuous (not reduced modulo
     /// 2π) except for jumps of ±π where the axis passes exactly through a vertical.
-    pub fn euler_angles(&self, t: f64) -> [f64; 3] {
+    ///
+    /// Accuracy: a few ulp of each angle near t = 0 — θ *relative* to itself even a hair's
+    /// breadth from upright (θ₀ = 1e-12 and below: everything is formed in 1 − cos θ = 2 sin²(θ/2)
+    /// without cancellation) — plus ε × (rate × |t|) rad for the phase the motion accumulates.
+    /// Errors: `t` when it is not finite, or when |t| × the fastest rate of the motion exceeds
+    /// [`MAX_PHASE`] (the phase would carry more than 1e-6 rad of rounding error).
+    pub fn euler_angles(&self, t: f64) -> Result<[f64; 3]> {
+        self.check_time("t", t, None)?;
+        finite_at_t(t, self.angles_unchecked(t))
+    }
+
+    fn angles_unchecked(&self, t: f64) -> [f64; 3] {
         match &self.motion {
             Motion::Uniform {
                 theta,
@@ -482,12 +670,17 @@ impl HeavyTop {
 
     /// [`HeavyTop::euler_angles`] evaluated through the incomplete elliptic integrals (Jacobi's
     /// sn, cn, dn and Carlson's R_J at every t) rather than through their Fourier series: slower,
-    /// the same numbers to round-off; kept as the cross-check of the fast path.
-    pub fn euler_angles_carlson(&self, t: f64) -> [f64; 3] {
-        match &self.motion {
-            Motion::Nutating(n) => n.angles_carlson(t),
-            Motion::Uniform { .. } => self.euler_angles(t),
-        }
+    /// the same numbers to round-off; kept as the cross-check of the fast path. Errors as
+    /// [`HeavyTop::euler_angles`].
+    pub fn euler_angles_carlson(&self, t: f64) -> Result<[f64; 3]> {
+        self.check_time("t", t, None)?;
+        finite_at_t(
+            t,
+            match &self.motion {
+                Motion::Nutating(n) => n.angles_carlson(t),
+                Motion::Uniform { .. } => self.angles_unchecked(t),
+            },
+        )
     }
 
     /// The number of Fourier terms [`HeavyTop::euler_angles`] sums per time (see
@@ -501,8 +694,14 @@ impl HeavyTop {
     }
 
     /// The Euler-angle rates (φ̇, θ̇, ψ̇) at time `t` (rad/s), from 2.106 (φ̇), ψ̇ = ω₃ − φ̇ cos θ
-    /// (2.99) and θ̇ from the elliptic solution (its sign is that of the motion).
-    pub fn euler_rates(&self, t: f64) -> [f64; 3] {
+    /// (2.99) and θ̇ from the elliptic solution (its sign is that of the motion). Errors as
+    /// [`HeavyTop::euler_angles`].
+    pub fn euler_rates(&self, t: f64) -> Result<[f64; 3]> {
+        self.check_time("t", t, None)?;
+        finite_at_t(t, self.rates_unchecked(t))
+    }
+
+    fn rates_unchecked(&self, t: f64) -> [f64; 3] {
         match &self.motion {
             Motion::Uniform {
                 phi_rate, psi_rate, ..
@@ -512,18 +711,19 @@ impl HeavyTop {
     }
 
     /// [`HeavyTop::euler_angles`] at many times, in parallel: `out[3i..3i + 3] = [φ, θ, ψ](times[i])`
-    /// (`out` flat, row-major (N, 3)). Errors name `times` (finite) or `out` (length 3N).
+    /// (`out` flat, row-major (N, 3)). Errors name `times` (each finite and within the limit of
+    /// [`HeavyTop::euler_angles`]) or `out` (length 3N).
     pub fn euler_angles_into(&self, times: &[f64], out: &mut [f64]) -> Result<()> {
         match &self.motion {
             Motion::Nutating(n) => self.batch_chunks(times, out, |ts, o| n.angles_into(ts, o)),
-            Motion::Uniform { .. } => self.batch(times, out, |t| self.euler_angles(t)),
+            Motion::Uniform { .. } => self.batch(times, out, |t| self.angles_unchecked(t)),
         }
     }
 
     /// [`HeavyTop::euler_rates`] at many times, in parallel (`out` flat (N, 3): φ̇, θ̇, ψ̇).
     /// Errors name `times` or `out`.
     pub fn euler_rates_into(&self, times: &[f64], out: &mut [f64]) -> Result<()> {
-        self.batch(times, out, |t| self.euler_rates(t))
+        self.batch(times, out, |t| self.rates_unchecked(t))
     }
 
     fn batch(
@@ -547,7 +747,6 @@ impl HeavyTop {
         f: impl Fn(&[f64], &mut [f64]) + Sync,
     ) -> Result<()> {
         use rayon::prelude::*;
-        check_finite("times", times)?;
         if out.len() != 3 * times.len() {
             return Err(Error::invalid(
                 "out",
@@ -560,10 +759,37 @@ impl HeavyTop {
             ));
         }
         const CHUNK: usize = 8192;
-        out.par_chunks_mut(3 * CHUNK)
+        // Per chunk, in parallel: the times checked, evaluated, and the results checked finite
+        // (the last line of defence of "finite or an error", see `finite_at_t`); the first
+        // failing index is reported.
+        let first_bad = out
+            .par_chunks_mut(3 * CHUNK)
             .zip(times.par_chunks(CHUNK))
-            .for_each(|(o, ts)| f(ts, o));
-        Ok(())
+            .enumerate()
+            .filter_map(|(c, (o, ts))| {
+                if let Some(i) = ts
+                    .iter()
+                    .position(|&t| self.check_time("times", t, None).is_err())
+                {
+                    return Some(c * CHUNK + i);
+                }
+                f(ts, o);
+                o.iter()
+                    .position(|v| !v.is_finite())
+                    .map(|i| c * CHUNK + i / 3)
+            })
+            .min();
+        match first_bad {
+            None => Ok(()),
+            Some(i) => {
+                let t = times[i];
+                self.check_time("times", t, Some(i))?;
+                Err(Error::invalid(
+                    "times",
+                    format!("at index {i}: the solution at t = {t:e} s is not finite"),
+                ))
+            }
+        }
     }
 }
 
@@ -577,11 +803,20 @@ pub fn lagrangian(i1: f64, i3: f64, mgl: f64, state: &EulerState) -> Result<f64>
     check_finite("theta_dot", &[state.theta_dot])?;
     check_finite("psi_dot", &[state.psi_dot])?;
     let (s, c) = state.theta.sin_cos();
-    let w3 = state.psi_dot + state.phi_dot * c;
-    Ok(
-        0.5 * i1 * (state.theta_dot.powi(2) + (state.phi_dot * s).powi(2)) + 0.5 * i3 * w3 * w3
-            - mgl * c,
-    )
+    // In the unit of the state's fastest rate (exact; see `TimeScale`), so that no square
+    // overflows where the Lagrangian itself is representable.
+    let ts = TimeScale::of(&[state.theta_dot, state.phi_dot, state.psi_dot]);
+    let (thd, phd, psd) = (
+        ts.in_unit(state.theta_dot),
+        ts.in_unit(state.phi_dot),
+        ts.in_unit(state.psi_dot),
+    );
+    let w3 = psd + phd * c;
+    let l = ts.rate2_to_si(0.5 * i1 * (thd.powi(2) + (phd * s).powi(2)))
+        + ts.rate2_to_si(0.5 * i3 * w3 * w3)
+        - mgl * c;
+    check_representable(&[("Lagrangian", l, largest_rate(state))])?;
+    Ok(l)
 }
 
 /// The constants of the motion evaluated at one state: p_φ, p_ψ and E (see
@@ -615,16 +850,30 @@ pub fn constants_of_state(
     check_finite("theta_dot", &[state.theta_dot])?;
     check_finite("psi_dot", &[state.psi_dot])?;
     let (s, c) = state.theta.sin_cos();
-    let omega3 = state.psi_dot + state.phi_dot * c; // 2.99
-    let p_psi = i3 * omega3; // 2.103
-    let a = p_psi / i1;
-    let ps = state.phi_dot * (s * s);
-    let tperp = state.theta_dot * state.theta_dot + state.phi_dot * ps;
-    Ok(StateConstants {
-        p_phi: i1 * (ps + a * c), // 2.104
-        p_psi,
-        energy: (0.5 * i1 * tperp + mgl * c) + 0.5 * i3 * omega3 * omega3, // 2.105
-    })
+    // The arithmetic of `HeavyTop::new`, in the unit of the fastest rate (exact).
+    let ts = TimeScale::of(&[state.theta_dot, state.phi_dot, state.psi_dot]);
+    let (thd, phd, psd) = (
+        ts.in_unit(state.theta_dot),
+        ts.in_unit(state.phi_dot),
+        ts.in_unit(state.psi_dot),
+    );
+    let omega3 = psd + phd * c; // 2.99
+    let a = i3 * omega3 / i1; // p_ψ/I₁ (2.103)
+    let ps = phd * (s * s);
+    let tperp = thd * thd + phd * ps;
+    let out = StateConstants {
+        p_phi: ts.rate_to_si(i1 * (ps + a * c)), // 2.104
+        p_psi: ts.rate_to_si(i3 * omega3),
+        energy: (ts.rate2_to_si(0.5 * i1 * tperp) + mgl * c)
+            + ts.rate2_to_si(0.5 * i3 * omega3 * omega3), // 2.105
+    };
+    let largest = largest_rate(state);
+    check_representable(&[
+        ("p_phi", out.p_phi, largest),
+        ("p_psi", out.p_psi, largest),
+        ("E", out.energy, largest),
+    ])?;
+    Ok(out)
 }
 
 /// w = 1 − cos θ and v = 1 + cos θ without cancellation.
@@ -633,57 +882,156 @@ fn w_v(theta: f64) -> (f64, f64) {
     (2.0 * sh * sh, 2.0 * ch * ch)
 }
 
-/// V(θ) from the reduced constants: p_φ − p_ψ cos θ = I₁(d + a w) = I₁(e − a v), sin²θ = w v.
-fn effective_potential_reduced(i1: f64, mgl: f64, r: &Reduced, theta: f64) -> f64 {
-    let (w, v) = w_v(theta);
-    let c = theta.cos();
-    let num = if w <= 1.0 {
-        r.d + r.a * w
-    } else {
-        r.e - r.a * v
-    };
-    let wv = w * v;
-    if wv == 0.0 {
-        // At a pole: num → the pole's combination (d or e); V is finite only when it vanishes,
-        // and then the kinetic term vanishes too (∝ w or v).
-        let k = if w == 0.0 { r.d } else { r.e };
-        return if k == 0.0 { mgl * c } else { f64::INFINITY };
+/// Refuses (naming `argument`) a motion whose turning point comes closer to a pole than
+/// [`MIN_POLE_DISTANCE`] without passing through it.
+///
+/// A turning point that close to a pole *and* closer than ε of the other one (θ₁ < ε θ₂: a
+/// spin of 1e-295 rad/s swinging through the bottom) is a passage through the pole as far as
+/// double precision goes: the distance is set to 0, and the axis passes through it with φ and ψ
+/// turning by π in the sense of p_φ ∓ p_ψ (what the passage at θ₁ does, up to θ₁/θ₂). Only a
+/// motion that stays within ~θ₁/ε of the pole is refused.
+fn resolve_pole_passage(argument: &str, t: Turning) -> Result<Turning> {
+    // 1 − cos θ at θ = MIN_POLE_DISTANCE (and 1 + cos θ at π − MIN_POLE_DISTANCE).
+    let min = 0.5 * MIN_POLE_DISTANCE * MIN_POLE_DISTANCE;
+    let close = |x: f64| x > 0.0 && x < min;
+    // θ₁ < ε θ₂ ⇔ w₁ < ε² w₂ (near the pole w ≈ θ²/2).
+    let eps2 = f64::EPSILON * f64::EPSILON;
+    let mut out = t;
+    if close(t.w_lo) && t.w_lo < eps2 * t.w_hi {
+        out.w_lo = 0.0;
+        out.v_hi = 2.0;
     }
-    0.5 * i1 * num * num / wv + mgl * c
+    if close(t.v_lo) && t.v_lo < eps2 * t.v_hi {
+        out.v_lo = 0.0;
+        out.w_hi = 2.0;
+    }
+    let (theta1, theta2) = out.thetas();
+    if close(out.w_lo) || close(out.v_lo) {
+        let (which, at) = if close(out.w_lo) {
+            ("upright", theta1)
+        } else {
+            ("hanging", std::f64::consts::PI - theta2)
+        };
+        return Err(Error::invalid(
+            argument,
+            format!(
+                "this motion stays within {:e} rad of the {which} vertical and comes within {at:e} rad \
+                 of it without passing through: closer than the solution resolves \
+                 ({MIN_POLE_DISTANCE:e} rad: 1 - cos theta ~ theta^2/2 leaves double precision)",
+                if which == "upright" { theta2 } else { std::f64::consts::PI - theta1 }
+            ),
+        ));
+    }
+    Ok(out)
 }
 
-/// dV/dθ (2.113) from the reduced constants: p_ψ − p_φ cos θ = I₁(b w − d) = I₁(e − b v).
-fn effective_potential_derivative_reduced(i1: f64, mgl: f64, r: &Reduced, theta: f64) -> f64 {
-    let (w, v) = w_v(theta);
-    let s = theta.sin();
-    let (n1, n2) = if w <= 1.0 {
-        (r.d + r.a * w, r.b * w - r.d)
-    } else {
-        (r.e - r.a * v, r.e - r.b * v)
-    };
-    if s == 0.0 {
-        let k = if w == 0.0 { r.d } else { r.e };
-        if k != 0.0 {
-            // −∞ at θ = 0 (V → +∞ as θ → 0⁺), +∞ at θ = π.
-            return if w == 0.0 {
-                f64::NEG_INFINITY
-            } else {
-                f64::INFINITY
-            };
-        }
-        // n1 n2 / sin³θ → a b w²/(θ³)… → 0 linearly: the limit is 0 at the pole.
-        return 0.0;
+/// The values at time `t` if they are finite, else an error naming `t`: the last line of
+/// defence of the rule that every number returned is finite (the constructors refuse the
+/// motions whose solution cannot be represented, so this is not expected to fire).
+fn finite_at_t<const N: usize>(t: f64, values: [f64; N]) -> Result<[f64; N]> {
+    if values.iter().all(|v| v.is_finite()) {
+        return Ok(values);
     }
-    i1 * n1 * n2 / (s * s * s) - mgl * s
+    Err(Error::invalid(
+        "t",
+        format!("the solution at t = {t:e} s is not finite: its scales exceed double precision"),
+    ))
+}
+
+/// `value` if finite, else an error naming `theta` that says why (see
+/// [`HeavyTop::effective_potential`]).
+fn finite_at_theta(what: &str, theta: f64, value: f64) -> Result<f64> {
+    if value.is_finite() {
+        return Ok(value);
+    }
+    let why = if theta == 0.0 || theta == std::f64::consts::PI {
+        "it is infinite at this pole, which the axis never reaches (p_phi != p_psi at theta = 0, \
+         p_phi != -p_psi at theta = pi)"
+    } else {
+        "it exceeds the largest double this close to a pole the axis never reaches"
+    };
+    Err(Error::invalid(
+        "theta",
+        format!("{what} at theta = {theta:e}: {why}"),
+    ))
+}
+
+/// `(p_φ − p_ψ cos θ)/(I₁ sin θ)` and `(p_ψ − p_φ cos θ)/(I₁ sin θ)` about the nearer pole, with
+/// p_φ − p_ψ cos θ = I₁(d + a w) = I₁(e − a v), p_ψ − p_φ cos θ = I₁(b w − d) = I₁(e − b v) and
+/// w/sin θ = tan(θ/2), v/sin θ = cot(θ/2): no cancellation, and no underflow of w or sin²θ
+/// however small θ is. At a pole (sin θ = 0) the limits where they are finite (k = d or e = 0:
+/// both → 0), else ±∞.
+fn momentum_ratios(r: &Reduced, theta: f64) -> (f64, f64) {
+    let s = theta.sin();
+    let upper = theta <= std::f64::consts::FRAC_PI_2;
+    let k = if upper { r.d } else { r.e };
+    if s == 0.0 {
+        return if k == 0.0 {
+            (0.0, 0.0)
+        } else {
+            // V → +∞ at both poles; (k/s)(∓k/s)/s gives dV/dθ → −∞ at θ = 0, +∞ at θ = π.
+            let inf = f64::INFINITY.copysign(k);
+            if upper {
+                (inf, -inf)
+            } else {
+                (inf, inf)
+            }
+        };
+    }
+    if upper {
+        // tan(θ/2) directly: w = 2 sin²(θ/2) would underflow below θ ≈ 1e-154.
+        let t = (0.5 * theta).tan();
+        (r.d / s + r.a * t, r.b * t - r.d / s)
+    } else {
+        // cot(θ/2) = v/sin θ; near π, v ≥ 1e-32 (θ ≤ π − ulp(π)).
+        let (_, v) = w_v(theta);
+        let t = v / s;
+        (r.e / s - r.a * t, r.e / s - r.b * t)
+    }
+}
+
+/// V(θ) (2.110) from the reduced constants (in the unit σ of `ts`):
+/// ½ I₁ ((p_φ − p_ψ cos θ)/(I₁ sin θ))² + m g l cos θ.
+fn effective_potential_reduced(i1: f64, mgl: f64, r: &Reduced, ts: &TimeScale, theta: f64) -> f64 {
+    let (n1, _) = momentum_ratios(r, theta);
+    let n1 = ts.rate_to_si(n1);
+    0.5 * i1 * n1 * n1 + mgl * theta.cos()
+}
+
+/// dV/dθ (2.113) from the reduced constants: I₁ (n₁/sin θ)(n₂/sin θ)/sin θ − m g l sin θ.
+fn effective_potential_derivative_reduced(
+    i1: f64,
+    mgl: f64,
+    r: &Reduced,
+    ts: &TimeScale,
+    theta: f64,
+) -> f64 {
+    let (n1, n2) = momentum_ratios(r, theta);
+    let (n1, n2) = (ts.rate_to_si(n1), ts.rate_to_si(n2));
+    let s = theta.sin();
+    if s == 0.0 {
+        // Where V is finite at the pole, n₁ n₂/sin θ ∝ a b tan²(θ/2)/sin θ → 0 linearly.
+        return if n1 == 0.0 { 0.0 } else { i1 * n1 * n2 };
+    }
+    (i1 * n1) * (n2 / s) - mgl * s
 }
 
 /// The class of the motion from the turning points and the sign of φ̇ there.
+///
+/// Near a pole both tests are relative: the nutation θ₂ − θ₁ against the distance from that pole
+/// (a top nutating between 1e-12 and 1.15e-12 rad nutates by 15 %; it is not asleep), and φ̇'s
+/// numerator `p_φ − p_ψ cos θᵢ` (∝ I₁(b − a cos θᵢ)) written about the pole the turning point is
+/// nearer to (`d + a wᵢ` or `e − a vᵢ`), where both terms are small and exact, instead of as the
+/// difference of two numbers near ±a.
 fn classify(r: &Reduced, t: &Turning) -> MotionClass {
     let (theta1, theta2) = t.thetas();
-    if t.w_lo == t.w_hi || theta2 - theta1 <= STEADY_NUTATION_TOLERANCE {
-        return if theta2 <= STEADY_NUTATION_TOLERANCE {
+    let pi = std::f64::consts::PI;
+    let scale = theta2.min(pi - theta1).min(1.0);
+    if t.w_lo == t.w_hi || theta2 - theta1 <= STEADY_NUTATION_TOLERANCE * scale {
+        // At a pole itself (θ = π is the double nearest π: the bottom as the API spells it).
+        return if theta2 == 0.0 {
             MotionClass::Sleeping
-        } else if std::f64::consts::PI - theta1 <= STEADY_NUTATION_TOLERANCE {
+        } else if theta1 == pi {
             MotionClass::Hanging
         } else {
             MotionClass::SteadyPrecession
@@ -692,11 +1040,18 @@ fn classify(r: &Reduced, t: &Turning) -> MotionClass {
     if t.w_lo == 0.0 || t.v_lo == 0.0 {
         return MotionClass::ThroughVertical;
     }
-    // φ̇ ∝ b − a cos θ: at θ₁ it is d + a w_lo, at θ₂ it is e − a v_lo (2.106).
-    let r1 = r.d + r.a * t.w_lo;
-    let r2 = r.e - r.a * t.v_lo;
-    let cusp1 = r1.abs() <= CUSP_TOLERANCE * (r.d.abs() + (r.a * t.w_lo).abs());
-    let cusp2 = r2.abs() <= CUSP_TOLERANCE * (r.e.abs() + (r.a * t.v_lo).abs());
+    // φ̇ ∝ b − a cos θ (2.106): at θᵢ it is d + a wᵢ = e − a vᵢ; each with the scale of its terms.
+    let numerator = |w: f64, v: f64| {
+        if w <= v {
+            (r.d + r.a * w, r.d.abs() + (r.a * w).abs())
+        } else {
+            (r.e - r.a * v, r.e.abs() + (r.a * v).abs())
+        }
+    };
+    let (r1, s1) = numerator(t.w_lo, t.v_hi);
+    let (r2, s2) = numerator(t.w_hi, t.v_lo);
+    let cusp1 = r1.abs() <= CUSP_TOLERANCE * s1;
+    let cusp2 = r2.abs() <= CUSP_TOLERANCE * s2;
     if cusp1 || cusp2 {
         MotionClass::Cusps
     } else if r1 * r2 < 0.0 {
@@ -712,6 +1067,7 @@ fn uniform_rates(
     i1: f64,
     i3: f64,
     r: &Reduced,
+    ts: &TimeScale,
     t: &Turning,
     start: &EulerState,
     from_state: bool,
@@ -722,7 +1078,7 @@ fn uniform_rates(
         return if from_state {
             (start.phi_dot, start.psi_dot)
         } else {
-            (0.0, omega3)
+            (0.0, ts.rate_to_si(omega3))
         };
     }
     // φ̇ = (b − a u)/(1 − u²) (2.106/2.115), written about the nearer pole; ψ̇ = ω₃ − φ̇ cos θ.
@@ -732,5 +1088,104 @@ fn uniform_rates(
         (r.e - r.a * v) / (w * v)
     };
     let c = if w <= 1.0 { 1.0 - w } else { v - 1.0 };
-    (phi_rate, omega3 - phi_rate * c)
+    (
+        ts.rate_to_si(phi_rate),
+        ts.rate_to_si(omega3 - phi_rate * c),
+    )
+}
+
+/// The time unit in which a top's motion is computed: 1/σ with σ = 2ᵏ the power of two nearest
+/// its fastest rate (|θ̇|, |φ̇|, |ψ̇|, √(2mgl/I₁); for a top given by its constants, |p_ψ|/I₁,
+/// |p_φ|/I₁ and the square roots of the energies per I₁). In that unit every rate is at most ~1,
+/// so the squares and products of the cubic (2.109–2.110) stay inside double precision for rates
+/// anywhere from 1e-300 to 1e300 rad/s; scaling by a power of two is exact, so a top with rates
+/// near 1 rad/s gives bit for bit the numbers it gave before.
+#[derive(Debug, Clone, Copy)]
+struct TimeScale {
+    /// σ (1/s).
+    sigma: f64,
+    /// 1/σ (s).
+    inv: f64,
+}
+
+impl TimeScale {
+    /// The scale of these rates (1/s; non-finite entries count as the largest double).
+    fn of(rates: &[f64]) -> Self {
+        let largest = rates
+            .iter()
+            .map(|r| if r.is_nan() { 0.0 } else { r.abs() })
+            .fold(0.0, f64::max)
+            .min(f64::MAX);
+        // 2ᵏ with |k| ≤ 1000 (σ and 1/σ both normal); 1 for a top with no rate at all.
+        let k = if largest > 0.0 {
+            largest.log2().round().clamp(-1000.0, 1000.0) as i32
+        } else {
+            0
+        };
+        Self {
+            sigma: 2f64.powi(k),
+            inv: 2f64.powi(-k),
+        }
+    }
+    /// A rate (1/s) in the unit σ.
+    fn in_unit(&self, rate: f64) -> f64 {
+        rate * self.inv
+    }
+    /// A quantity ∝ one rate back to SI (it overflows only where the SI value does).
+    fn rate_to_si(&self, x: f64) -> f64 {
+        x * self.sigma
+    }
+    /// A quantity ∝ a rate squared back to SI.
+    fn rate2_to_si(&self, x: f64) -> f64 {
+        x * self.sigma * self.sigma
+    }
+    /// β = 2 m g l / I₁ in the unit σ² (formed in SI where that is finite, as before).
+    fn beta(&self, mgl: f64, i1: f64) -> f64 {
+        let beta = 2.0 * mgl / i1;
+        if beta.is_finite() {
+            beta * self.inv * self.inv
+        } else {
+            2.0 * (mgl * self.inv * self.inv / i1)
+        }
+    }
+    /// Reduced constants given in SI, in the unit σ.
+    fn reduced_to_unit(&self, r: &Reduced) -> Reduced {
+        let (s1, s2) = (self.inv, self.inv * self.inv);
+        Reduced {
+            a: r.a * s1,
+            b: r.b * s1,
+            d: r.d * s1,
+            e: r.e * s1,
+            beta: r.beta * s2,
+            gamma: r.gamma * s2,
+            delta: r.delta * s2,
+        }
+    }
+}
+
+/// The name of the largest of a state's rates (the usual cause of a constant of the motion that
+/// overflows).
+fn largest_rate(st: &EulerState) -> &'static str {
+    let mut best = ("theta_dot", st.theta_dot.abs());
+    for (name, x) in [("phi_dot", st.phi_dot.abs()), ("psi_dot", st.psi_dot.abs())] {
+        if x > best.1 {
+            best = (name, x);
+        }
+    }
+    best.0
+}
+
+/// Refuses, naming the argument given with it, the first quantity that is not finite: a
+/// constant of the motion beyond the range of double precision.
+fn check_representable(values: &[(&str, f64, &str)]) -> Result<()> {
+    match values.iter().find(|(_, v, _)| !v.is_finite()) {
+        None => Ok(()),
+        Some((what, value, argument)) => Err(Error::invalid(
+            *argument,
+            format!(
+                "the top's {what} = {value} is beyond the range of double precision (about 1.8e308): \
+                 no motion with these numbers can be represented"
+            ),
+        )),
+    }
 }

@@ -147,8 +147,18 @@ impl Reduced {
     }
 
     /// P = β(u₃ − u₁), the factor with f(u) = (u − u₁)(u₂ − u)(P − β(u − u₁)), and the
-    /// complementary parameter's numerator `β(u₃ − u₂)`, from the sum of the roots (Vieta).
+    /// complementary parameter's numerator `β(u₃ − u₂)`.
+    ///
+    /// Near the upper pole with the turning points well apart (w₁ ≤ w₂/2: a top falling from near
+    /// upright, or nutating far below it) both are sums of non-negative terms,
+    /// `P = βw₂ + β(u₃ − 1)` and `β(u₃ − u₂) = βw₁ + β(u₃ − 1)`, with β(u₃ − 1) from the product
+    /// of the roots ([`Reduced::beta_u3_minus_one`]): nothing cancels, so a top released at
+    /// θ₀ = 1e-12 keeps m's complement 1 − m ≈ θ₀²/4 to full relative precision. Otherwise from
+    /// the sum of the roots (Vieta), written about the pole the motion is nearer to.
     pub fn p_and_complement(&self, t: &Turning) -> (f64, f64) {
+        if let Some(nbw3) = self.beta_u3_minus_one_by_product(t) {
+            return (self.beta * t.w_hi + nbw3, self.beta * t.w_lo + nbw3);
+        }
         let Self {
             a,
             beta,
@@ -173,11 +183,32 @@ impl Reduced {
             )
         }
     }
+
+    /// β(u₃ − 1) = −β w₃ ≥ 0 (zero at the sleeping-top threshold and for a top without spin or
+    /// p_φ), where the roots are well apart: from their product, `β w₃ w₁ w₂ = −d²`, i.e.
+    /// `β(u₃ − 1) = (d/w₁)(d/w₂)`, or, where the axis passes through the upper pole (w₁ = 0,
+    /// d = 0), from the quadratic left by f/w, `β w₃ w₂ = −2γ`. Both keep full relative precision
+    /// however small w₁ is; the sum of the roots would leave an absolute error of ε·(a² + 2β).
+    /// `None` where the roots are not well apart (w₁ > w₂/2, where their sum is accurate).
+    fn beta_u3_minus_one_by_product(&self, t: &Turning) -> Option<f64> {
+        if !(t.w_hi > 0.0 && t.w_lo <= 0.5 * t.w_hi) {
+            return None;
+        }
+        Some(if t.w_lo == 0.0 {
+            (2.0 * self.gamma / t.w_hi).max(0.0)
+        } else {
+            (self.d / t.w_lo) * (self.d / t.w_hi)
+        })
+    }
 }
 
 impl Reduced {
-    /// β(u₃ − 1) = −β w₃ ≥ 0 (zero at the sleeping-top threshold), from the sum of the roots.
+    /// β(u₃ − 1) = −β w₃ ≥ 0 (zero at the sleeping-top threshold), from the product of the roots
+    /// where they are well apart (see [`Reduced::p_and_complement`]), else from their sum.
     pub fn beta_u3_minus_one(&self, t: &Turning) -> f64 {
+        if let Some(nbw3) = self.beta_u3_minus_one_by_product(t) {
+            return nbw3;
+        }
         let Self {
             a,
             beta,
@@ -204,6 +235,13 @@ impl Local {
     }
 }
 
+/// The iteration limit of [`bracketed_root`]: enough for plain bisection over the whole double
+/// range. A bracket of width 2 closing on a root of 1e-120 (a turning point near the upright
+/// pole) takes ~400 halvings where Newton's steps leave the bracket, and 1100 reach the smallest
+/// subnormal; a limit of 400 stopped such roots short, 1e-10 off at θ ≈ 1e-54 and 10 % off at
+/// θ ≈ 1e-60. Typical roots take under 50.
+const ROOT_ITERATIONS: usize = 2200;
+
 /// A root of `g` between `neg` (where g ≤ 0) and `pos` (where g ≥ 0), in either order, by
 /// Newton's method safeguarded by bisection. The signs at the ends are taken as given (they
 /// are known from the physics even where round-off would blur them). Returns a point of the
@@ -213,7 +251,7 @@ pub(crate) fn bracketed_root(g: impl Fn(f64) -> (f64, f64), mut neg: f64, mut po
         return neg;
     }
     let mut x = 0.5 * (neg + pos);
-    for _ in 0..400 {
+    for _ in 0..ROOT_ITERATIONS {
         let (f, df) = g(x);
         if f == 0.0 {
             return x;
@@ -413,19 +451,15 @@ pub(crate) fn turning_points_from_constants(r: &Reduced) -> Option<Turning> {
     // Each root in the variable where it is ≤ 1, the other variable as its complement (≥ 1).
     let in_w = |w: f64| (w, 2.0 - w);
     let in_v = |v: f64| (2.0 - v, v);
-    // Upper root in [0, w*].
-    let upper = if r.d == 0.0 && w_star <= 1.0 {
-        in_w(root_near_pole(|w| r.f_w(w), 0.0, w_star))
-    } else if w_star <= 1.0 || r.f_w(1.0).0 >= 0.0 {
-        in_w(bracketed_root(|w| r.f_w(w), 0.0, w_star.min(1.0)))
+    // Upper root in [0, w*]; where d = 0 (p_φ = p_ψ) the pole itself may be it, whatever w*.
+    let upper = if w_star <= 1.0 || r.f_w(1.0).0 >= 0.0 {
+        in_w(root_near_pole(|w| r.f_w(w), r.d, w_star.min(1.0)))
     } else {
         in_v(bracketed_root(|v| r.f_v(v), 1.0, v_star))
     };
-    // Lower root in [w*, 2].
-    let lower = if r.e == 0.0 && v_star <= 1.0 {
-        in_v(root_near_pole(|v| r.f_v(v), 0.0, v_star))
-    } else if v_star <= 1.0 || r.f_v(1.0).0 >= 0.0 {
-        in_v(bracketed_root(|v| r.f_v(v), 0.0, v_star.min(1.0)))
+    // Lower root in [w*, 2]; where e = 0 (p_φ = −p_ψ) the lower pole may be it.
+    let lower = if v_star <= 1.0 || r.f_v(1.0).0 >= 0.0 {
+        in_v(root_near_pole(|v| r.f_v(v), r.e, v_star.min(1.0)))
     } else {
         in_w(bracketed_root(|w| r.f_w(w), 1.0, w_star))
     };

@@ -295,6 +295,13 @@ impl Fourier {
         }
     }
 
+    /// Carries the series from a time unit 1/σ to seconds (see `Nutation::rescale_time`).
+    pub(crate) fn rescale_time(&mut self, sigma: f64) {
+        self.nu *= sigma;
+        self.phi_rate *= sigma;
+        self.psi_rate *= sigma;
+    }
+
     /// The number of terms used.
     pub(crate) fn terms(&self) -> usize {
         self.a.len()

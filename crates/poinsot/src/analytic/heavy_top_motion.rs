@@ -28,7 +28,7 @@
 //! keep θ in [0, π].
 
 use super::heavy_top::EulerState;
-use super::heavy_top_cubic::{theta_from_wv, Reduced, Turning};
+use super::heavy_top_cubic::{Reduced, Turning};
 use super::heavy_top_fourier::{Fourier, SeriesInput, ThirdSeries};
 use crate::error::{Error, Result};
 use crate::special::{Jacobi, JacobiValues};
@@ -104,6 +104,13 @@ pub(crate) struct Nutation {
     kappa: f64,
     /// τ at t = 0.
     tau0: f64,
+    /// Where the start lies nearer the turning point θ₁ (τ ≡ K) than θ₂: `Some(j₀)`, the phase
+    /// then being carried as τ = K(1 + 2j₀) + δ with δ = δ₀ + κt, so that its offset from θ₁ keeps
+    /// its digits (τ itself would round it to ε·K: a top kicked from θ₀ = 1e-12 to θ₂ = 1e-6 would
+    /// start 1e-9 off θ₀).
+    anchor: Option<f64>,
+    /// δ₀ (see `anchor`).
+    delta0: f64,
     t: Turning,
     /// d/2 and e/2 (1/s): φ̇ = (d/2)/w + (e/2)/v.
     half_d: f64,
@@ -123,6 +130,20 @@ pub(crate) struct Nutation {
     at0: Integrals,
     /// The same motion as Fourier series (the fast path), where they converge fast enough.
     fourier: Option<Fourier>,
+}
+
+/// One phase τ of the motion, reduced: τ = 2Kj + r with |r| ≤ K, and the Jacobi functions at r
+/// to full relative precision, also next to τ ≡ K where r cannot carry its offset from K.
+#[derive(Debug, Clone, Copy)]
+struct Phase {
+    /// τ − K (unreduced).
+    sigma: f64,
+    j: f64,
+    r: f64,
+    jv: JacobiValues,
+    /// The passages through τ ≡ K (w = 0) and τ ≡ 0 (v = 0), mod 2K, counted up to τ.
+    nw: f64,
+    nv: f64,
 }
 
 /// ∫dτ/w, ∫dτ/v and the pole passages, at one τ.
@@ -163,6 +184,7 @@ impl Nutation {
         let k = jac.quarter_period();
         let kappa = 0.5 * p.sqrt();
         // τ₀ from w(τ₀) = w₀: sn²τ₀ = (w₂ − w₀)/(w₂ − w₁), cn²τ₀ = (w₀ − w₁)/(w₂ − w₁).
+        let mut anchor_delta: Option<f64> = None;
         let tau0 = if from_state {
             let (half, _) = (0.5 * start.theta, ());
             let (sh, ch) = half.sin_cos();
@@ -178,11 +200,23 @@ impl Nutation {
             } else {
                 (0.0, 1.0)
             };
+            // Nearer θ₁ (cn² < sn²): the offset v₀ = K − |τ₀| itself, from sn²v₀ = c²/(1 − m + m c²)
+            // (cn(K − v) = k' sd v): v₀ = F(arcsin √x | m) = √x R_F(1 − x, 1 − m x, 1) with
+            // 1 − x = (1 − m) s²/D, 1 − m x = (1 − m)/D, D = 1 − m + m c²: no cancellation.
+            let near_upper = k.is_finite() && c2 < s2;
             let tau = if c2 == 0.0 {
                 k
+            } else if near_upper {
+                let d = mc + m * c2;
+                let v0 = (c2 / d).sqrt() * rf(mc * s2 / d, mc / d, 1.0);
+                anchor_delta = Some(v0);
+                k - v0
             } else {
                 s2.sqrt() * rf(c2, mc + m * c2, 1.0)
             };
+            if c2 == 0.0 && k.is_finite() {
+                anchor_delta = Some(0.0);
+            }
             // On 0 < τ < K, w decreases: θ̇ < 0.
             if start.theta_dot > 0.0 {
                 -tau
@@ -190,7 +224,14 @@ impl Nutation {
                 tau
             }
         } else {
+            anchor_delta = k.is_finite().then_some(0.0);
             k
+        };
+        // τ₀ = ±(K − v₀): anchored at K (j₀ = 0, δ₀ = −v₀) or at −K (j₀ = −1, δ₀ = v₀).
+        let (anchor, delta0) = match anchor_delta {
+            None => (None, 0.0),
+            Some(v0) if tau0 < 0.0 => (Some(-1.0), v0),
+            Some(v0) => (Some(0.0), -v0),
         };
         let w_third = (r.d != 0.0 && t.w_lo > 0.0)
             .then(|| Third::new((t.w_hi - t.w_lo) / t.w_hi, t.w_lo / t.w_hi, k, mc));
@@ -222,6 +263,8 @@ impl Nutation {
             kc: mc.sqrt(),
             kappa,
             tau0,
+            anchor,
+            delta0,
             t: *t,
             half_d: 0.5 * r.d,
             half_e: 0.5 * r.e,
@@ -235,7 +278,7 @@ impl Nutation {
             at0: Integrals::default(),
             fourier: None,
         };
-        me.at0 = me.integrals(tau0).1;
+        me.at0 = me.integrals(&me.phase(0.0));
         me.fourier = me.fourier_series(r, t, p);
         Ok(me)
     }
@@ -266,6 +309,9 @@ impl Nutation {
         let dv = t.v_hi - t.v_lo;
         let v_series = match self.v_form {
             None => None,
+            // v constant to double precision (a nutation near the upper pole): ∫dτ/v = τ/v₁ is
+            // all in the mean rate.
+            Some(VForm::FromLower { .. }) if dv == 0.0 => None,
             Some(VForm::FromLower { .. }) => Some((
                 ThirdSeries::hyperbolic(dv / t.v_lo, t.v_hi / t.v_lo, self.m, mc, self.k)?,
                 1.0 / t.v_lo,
@@ -311,11 +357,33 @@ impl Nutation {
         p.is_finite().then_some(p)
     }
 
+    /// Carries the solution, built in a time unit 1/σ, to seconds: every rate times σ (exact for
+    /// σ a power of two; the dimensionless constants are unchanged).
+    pub(crate) fn rescale_time(&mut self, sigma: f64) {
+        self.kappa *= sigma;
+        self.half_d *= sigma;
+        self.half_e *= sigma;
+        self.c_psi *= sigma;
+        if let Some(f) = self.fourier.as_mut() {
+            f.rescale_time(sigma);
+        }
+    }
+
+    /// The rate (rad/s) of the motion's phase: the nutation phase πτ/K = 2π t/period, or for
+    /// an asymptotic motion (m = 1, no period) τ itself.
+    pub(crate) fn phase_rate(&self) -> f64 {
+        if self.k.is_finite() {
+            PI * self.kappa / self.k
+        } else {
+            self.kappa
+        }
+    }
+
     /// ⟨φ̇⟩ and ⟨ψ̇⟩ over a period (rad/s).
     pub(crate) fn mean_rates(&self) -> (f64, f64) {
         if !self.k.is_finite() {
             // Asymptotic motion: the rates at the end of time (the pole it approaches).
-            let rates = self.rates_at(1e300_f64.min(f64::MAX));
+            let rates = self.rates_at(&self.phase_of_tau(1e300_f64.min(f64::MAX)));
             return (rates[0], rates[2]);
         }
         let two_k = 2.0 * self.k;
@@ -339,19 +407,80 @@ impl Nutation {
         (dphi / period, self.c_psi + dpsi / period)
     }
 
-    /// The Jacobi functions at τ and the integrals ∫dτ/w, ∫dτ/v and the pole-passage counts.
-    fn integrals(&self, tau: f64) -> (JacobiValues, Integrals) {
+    /// The phase at time t (s).
+    fn phase(&self, time: f64) -> Phase {
+        let Some(j0) = self.anchor else {
+            return self.phase_of_tau(self.tau0 + self.kappa * time);
+        };
+        // τ = K(1 + 2j₀) + δ, δ = 2K j_δ + x with |x| ≤ K: the functions at K + x from those at x
+        // (DLMF 22.4.3: sn(x ± K) = ±cd x, cn(x ± K) = ∓k' sd x, dn(x ± K) = k' nd x).
+        let delta = self.delta0 + self.kappa * time;
+        let (jd, x) = self.jac.reduce(delta);
+        let v = self.jac.eval_reduced(x);
+        let q = 1.0 / v.dn;
+        let (j, r, sign) = if x <= 0.0 {
+            (jd + j0, self.k + x, 1.0)
+        } else {
+            (jd + j0 + 1.0, x - self.k, -1.0)
+        };
+        let jv = JacobiValues {
+            sn: sign * v.cn * q,
+            cn: -sign * self.kc * v.sn * q,
+            dn: self.kc * q,
+            am: 0.0,
+        };
+        Phase {
+            sigma: 2.0 * j0 * self.k + delta,
+            j,
+            r,
+            jv,
+            // Past τ ≡ K once x ≥ 0 (r = K + x would round x away).
+            nw: jd + j0 - 1.0 + if x >= 0.0 { 1.0 } else { 0.0 },
+            nv: j - 1.0 + if r >= 0.0 { 1.0 } else { 0.0 },
+        }
+    }
+
+    /// The phase at τ given directly (no anchor).
+    fn phase_of_tau(&self, tau: f64) -> Phase {
         let (j, r) = self.jac.reduce(tau);
-        let jv = self.jac.eval_reduced(r);
+        Phase {
+            sigma: tau - self.k,
+            j,
+            r,
+            jv: self.jac.eval_reduced(r),
+            nw: j - 1.0 + if r >= self.k { 1.0 } else { 0.0 },
+            nv: j - 1.0 + if r >= 0.0 { 1.0 } else { 0.0 },
+        }
+    }
+
+    /// The integrals ∫dτ/w, ∫dτ/v and the pole-passage counts at a phase.
+    fn integrals(&self, ph: &Phase) -> Integrals {
+        let Phase { j, r, jv, .. } = *ph;
         let (s2, c2) = (jv.sn * jv.sn, jv.cn * jv.cn);
         let mut out = Integrals::default();
         if let Some(th) = self.w_third {
             // 1 − n sn² = w/w₂ = cn² + (w₁/w₂) sn².
-            let p = c2 + (self.t.w_lo / self.t.w_hi) * s2;
-            out.iw = (2.0 * j * th.complete + third_reduced(r, &jv, th.n, p)) / self.t.w_hi;
+            let one_minus_n = self.t.w_lo / self.t.w_hi;
+            let p = c2 + one_minus_n * s2;
+            out.iw = if self.k.is_finite() {
+                (2.0 * j * th.complete + third_reduced(r, &jv, th.n, p)) / self.t.w_hi
+            } else {
+                // m = 1, 0 ≤ n < 1: ∫₀^τ dx/(1 − n tanh²x) = (τ − √n atanh(√n tanh τ))/(1 − n),
+                // atanh x = ½ ln((1 + x)²/(1 − x²)) with 1 − n tanh² = (1 − n) + n sech² exact.
+                let sq = th.n.sqrt();
+                let at = 0.5 * ((1.0 + sq * jv.sn).powi(2) / (one_minus_n + th.n * c2)).ln();
+                (r - sq * at) / (one_minus_n * self.t.w_hi)
+            };
         }
         match self.v_form {
             None => {}
+            Some(VForm::FromLower { third, .. }) if !self.k.is_finite() => {
+                // m = 1 (the asymptotic motion towards the upright pole): sn = tanh, and with
+                // n' = −k², ∫₀^τ dx/(1 + k² tanh²x) = (τ + k atan(k tanh τ))/(1 + k²), which stays
+                // finite where cn² = sech²τ underflows and R_J would see two zero arguments.
+                let kk = (-third.n).sqrt();
+                out.iv = (r + kk * (kk * jv.sn).atan()) / ((1.0 - third.n) * self.t.v_lo);
+            }
             Some(VForm::FromLower { third, ratio }) => {
                 // 1 − n' sn² = v/v₁ = cn² + (v₂/v₁) sn².
                 let p = c2 + ratio * s2;
@@ -388,21 +517,21 @@ impl Nutation {
                         },
                     )
                 };
-                // 1 − N sn²σ = (1 − m)(sn²r + (v₁/v₂) cn²r)/dn²r.
-                let p = (1.0 - self.m) * (s2 + ratio * c2) / (jv.dn * jv.dn);
-                let sigma = tau - self.k;
-                out.iv = coef_lin * sigma
+                // 1 − N sn²σ = (1 − m)(sn²r + (v₁/v₂) cn²r)/dn²r, with 1 − m = kc² (1.0 − m
+                // would be 0 where m rounds to 1: a top falling from near upright).
+                let p = self.kc * self.kc * (s2 + ratio * c2) / (jv.dn * jv.dn);
+                out.iv = coef_lin * ph.sigma
                     + coef_pi * (2.0 * js * third.complete + third_reduced(rs, &sv, third.n, p));
             }
         }
         // Passages through w = 0 at τ ≡ K and through v = 0 at τ ≡ 0 (mod 2K), counted up to τ.
         if self.jump_w != 0.0 {
-            out.nw = j - 1.0 + if r >= self.k { 1.0 } else { 0.0 };
+            out.nw = ph.nw;
         }
         if self.jump_v != 0.0 {
-            out.nv = j - 1.0 + if r >= 0.0 { 1.0 } else { 0.0 };
+            out.nv = ph.nv;
         }
-        (jv, out)
+        out
     }
 
     /// θ from the Jacobi values at τ.
@@ -438,8 +567,8 @@ impl Nutation {
 
     /// (φ, θ, ψ) at time t by the incomplete integrals (Jacobi's sn and Carlson's R_J).
     pub(crate) fn angles_carlson(&self, time: f64) -> [f64; 3] {
-        let tau = self.tau0 + self.kappa * time;
-        let (jv, i) = self.integrals(tau);
+        let ph = self.phase(time);
+        let (jv, i) = (ph.jv, self.integrals(&ph));
         let (w, v) = self.w_v(&jv);
         let dw = (i.iw - self.at0.iw) / self.kappa;
         let dv = (i.iv - self.at0.iv) / self.kappa;
@@ -447,21 +576,35 @@ impl Nutation {
         let jvv = self.jump_v * (i.nv - self.at0.nv);
         let phi = self.phi0 + self.half_d * dw + self.half_e * dv + jw + jvv;
         let psi = self.psi0 + self.c_psi * time - self.half_d * dw + self.half_e * dv - jw + jvv;
-        [phi, theta_from_wv(w, v), psi]
+        [phi, self.theta(&jv, w, v), psi]
+    }
+
+    /// θ = 2 atan(√w/√v). Through a pole (w₁ = 0, resp. v₁ = 0) √w = √w₂ |cn| (resp.
+    /// √v = √v₂ |sn|), not the root of w₂ cn², which underflows ~1e-154 from the pole: a top
+    /// rising to the upright along the separatrix keeps θ to full relative precision as it
+    /// approaches it (θ ~ 1e-287 rad after 1000 s).
+    #[inline]
+    fn theta(&self, jv: &JacobiValues, w: f64, v: f64) -> f64 {
+        let rw = if self.t.w_lo == 0.0 {
+            self.t.w_hi.sqrt() * jv.cn.abs()
+        } else {
+            w.max(0.0).sqrt()
+        };
+        let rv = if self.t.v_lo == 0.0 {
+            self.t.v_hi.sqrt() * jv.sn.abs()
+        } else {
+            v.max(0.0).sqrt()
+        };
+        2.0 * rw.atan2(rv)
     }
 
     /// (φ̇, θ̇, ψ̇) at time t.
     pub(crate) fn rates(&self, time: f64) -> [f64; 3] {
-        self.rates_at(self.tau0 + self.kappa * time)
+        self.rates_at(&self.phase(time))
     }
 
-    fn rates_at(&self, tau: f64) -> [f64; 3] {
-        let jv = if self.k.is_finite() {
-            let (_, r) = self.jac.reduce(tau);
-            self.jac.eval_reduced(r)
-        } else {
-            self.jac.eval(tau)
-        };
+    fn rates_at(&self, ph: &Phase) -> [f64; 3] {
+        let jv = ph.jv;
         let (w, v) = self.w_v(&jv);
         let fw = if self.half_d != 0.0 && w > 0.0 {
             self.half_d / w

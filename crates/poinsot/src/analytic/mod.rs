@@ -17,7 +17,7 @@ pub use free_rigid_body::{check_moments, FreeRegime, FreeRigidBody};
 pub use free_symmetric_top::{FreeSymmetricTop, TopShape};
 pub use heavy_top::{
     constants_of_state, lagrangian, EulerState, HeavyTop, MotionClass, StateConstants,
-    CUSP_TOLERANCE, STEADY_NUTATION_TOLERANCE,
+    CUSP_TOLERANCE, MAX_PHASE, MIN_POLE_DISTANCE, STEADY_NUTATION_TOLERANCE,
 };
 pub use heavy_top_steady::{
     check_theta, check_top, min_spin, sleeping_threshold, steady_precession, SteadyPrecession,
