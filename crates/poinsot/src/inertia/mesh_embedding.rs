@@ -3,9 +3,10 @@
 //!
 //! 1. **No self-intersection.** No two faces meet except in the vertex or edge they share
 //!    by index. Broad phase: the non-degenerate faces, sorted along a Morton curve, are grouped
-//!    in clusters of [`LEAF`] consecutive faces whose boxes go into an R*-tree (`rstar`, bulk
-//!    loaded: a bounding-volume hierarchy); a parallel self-join of the tree yields the pairs
-//!    of clusters whose boxes overlap, and within them the pairs of faces whose boxes overlap.
+//!    in leaves of [`LEAF`] consecutive faces under a complete binary hierarchy of `f32` boxes
+//!    (a linear bounding-volume hierarchy, built bottom-up in parallel); a parallel self-join
+//!    of the hierarchy yields the pairs of leaves whose boxes overlap, and within them the
+//!    pairs of faces whose boxes overlap.
 //!    Narrow phase: exact triangle–triangle tests on Shewchuk's adaptive orientation
 //!    predicates (`robust`), so a crossing by one ulp is found and neighbours that only share
 //!    a vertex or an edge are never flagged. Faces of exactly zero area (collinear corners)
@@ -29,38 +30,9 @@ use std::sync::atomic::{AtomicU32, AtomicU64, Ordering};
 
 use rayon::prelude::*;
 use robust::{Coord, Coord3D};
-use rstar::{Envelope, ParentNode, RTree, RTreeNode, RTreeObject, RTreeParams, AABB};
-
-/// Faces per leaf cluster of the tree.
-pub(crate) const LEAF: usize = 8;
 
 /// A point.
 type P3 = [f64; 3];
-
-/// Node sizes of the R*-tree: wide nodes make a shallow tree that bulk-loads fast.
-struct Params;
-
-impl RTreeParams for Params {
-    const MIN_SIZE: usize = 4;
-    const MAX_SIZE: usize = 16;
-    const REINSERTION_COUNT: usize = 4;
-    type DefaultInsertionStrategy = rstar::RStarInsertionStrategy;
-}
-
-/// A cluster of up to [`LEAF`] faces, consecutive in Morton order: `order[start..start + len]`.
-#[derive(Clone, Copy)]
-struct Leaf {
-    envelope: AABB<[f32; 3]>,
-    start: u32,
-    len: u32,
-}
-
-impl RTreeObject for Leaf {
-    type Envelope = AABB<[f32; 3]>;
-    fn envelope(&self) -> Self::Envelope {
-        self.envelope
-    }
-}
 
 /// The vertices (flat, `3·n`).
 #[derive(Clone, Copy)]
@@ -447,19 +419,59 @@ fn meet_beyond_vertex(p: &[P3; 3], q: &[P3; 3], kp: u8, kq: u8) -> bool {
 // ---------------------------------------------------------------------------------------------
 // Broad phase.
 
-/// A box rounded outward to `f32` (conservative: it contains the exact box).
-fn box32(t: &[P3; 3]) -> AABB<[f32; 3]> {
-    let mut lo = [0f32; 3];
-    let mut hi = [0f32; 3];
-    for k in 0..3 {
-        let (l, h) = (
-            t[0][k].min(t[1][k]).min(t[2][k]),
-            t[0][k].max(t[1][k]).max(t[2][k]),
-        );
-        lo[k] = down32(l);
-        hi[k] = up32(h);
+/// An axis-aligned box in `f32`, rounded outward from the `f64` corners it was made of (so it
+/// contains their exact box), closed: boxes that touch meet.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Box3 {
+    lo: [f32; 3],
+    hi: [f32; 3],
+}
+
+impl Box3 {
+    /// The box of nothing (the identity of [`Box3::merged`]).
+    const EMPTY: Self = Self {
+        lo: [f32::INFINITY; 3],
+        hi: [f32::NEG_INFINITY; 3],
+    };
+
+    /// The closed boxes have a point in common (no branches: the six comparisons are cheaper
+    /// than mispredicted jumps in the hot loops of the join).
+    #[inline]
+    fn meets(&self, o: &Self) -> bool {
+        (self.lo[0] <= o.hi[0])
+            & (o.lo[0] <= self.hi[0])
+            & (self.lo[1] <= o.hi[1])
+            & (o.lo[1] <= self.hi[1])
+            & (self.lo[2] <= o.hi[2])
+            & (o.lo[2] <= self.hi[2])
     }
-    AABB::from_corners(lo, hi)
+
+    #[inline]
+    fn merged(&self, o: &Self) -> Self {
+        Self {
+            lo: [0, 1, 2].map(|k| self.lo[k].min(o.lo[k])),
+            hi: [0, 1, 2].map(|k| self.hi[k].max(o.hi[k])),
+        }
+    }
+
+    /// The ray `{p + t e_x, t ≥ 0}` meets the closed box (so that the symbolically perturbed
+    /// ray of [`Index::winding`] is covered too).
+    #[inline]
+    fn meets_ray(&self, p: P3) -> bool {
+        f64::from(self.hi[0]) >= p[0]
+            && f64::from(self.lo[1]) <= p[1]
+            && p[1] <= f64::from(self.hi[1])
+            && f64::from(self.lo[2]) <= p[2]
+            && p[2] <= f64::from(self.hi[2])
+    }
+}
+
+/// A box rounded outward to `f32` (conservative: it contains the exact box).
+fn box32(t: &[P3; 3]) -> Box3 {
+    Box3 {
+        lo: [0, 1, 2].map(|k| down32(t[0][k].min(t[1][k]).min(t[2][k]))),
+        hi: [0, 1, 2].map(|k| up32(t[0][k].max(t[1][k]).max(t[2][k]))),
+    }
 }
 
 fn down32(x: f64) -> f32 {
@@ -504,22 +516,43 @@ fn spread(x: u64) -> u64 {
     x
 }
 
-/// The faces that take part, with their boxes, in Morton order, and the tree of clusters.
+/// The drop axis of a face, or `u8::MAX` when it takes no part (zero area, or left out).
+const NO_AXIS: u8 = u8::MAX;
+
+/// A face that takes part, at its position in Morton order.
+#[derive(Clone, Copy)]
+struct Face {
+    corners: [P3; 3],
+    indices: [u32; 3],
+    /// The drop axis for 2-D tests in its plane ([`drop_axis`]).
+    axis: u8,
+    /// Every coordinate within [`FAST_COORD_MAX`]: the float filters of [`off_plane`] apply.
+    fast: bool,
+}
+
+/// The faces that take part, in Morton order, with their boxes, and a bounding-volume
+/// hierarchy over them: leaves of [`LEAF`] consecutive faces, and above them a complete binary
+/// tree in Morton order (implicit: node `i` of level `l` has the children `2i` and `2i + 1`
+/// of level `l − 1`), so that building it is one sort and a few linear passes.
 pub(crate) struct Index {
-    /// Face indices in Morton order (non-degenerate faces only).
+    /// Face indices in Morton order (faces that take part only).
     order: Vec<u32>,
     /// The box of `order[k]`.
-    boxes: Vec<AABB<[f32; 3]>>,
-    /// The corners of `order[k]` (contiguous for the narrow phase).
-    corners: Vec<[P3; 3]>,
-    /// The vertex indices of `order[k]`.
-    indices: Vec<[u32; 3]>,
-    /// The drop axis of `order[k]`.
-    axes: Vec<u8>,
+    boxes: Vec<Box3>,
+    /// Corners, indices and drop axis of `order[k]`.
+    faces: Vec<Face>,
     /// Whether face `f` takes part (non-degenerate), by face index.
     used: Vec<bool>,
-    tree: RTree<Leaf, Params>,
+    /// `levels[0][i]`: the box of leaf `i` (faces `LEAF·i .. LEAF·(i + 1)`); `levels[l][i]`:
+    /// the union of `levels[l − 1][2i]` and `levels[l − 1][2i + 1]`; the last level is the root.
+    levels: Vec<Vec<Box3>>,
 }
+
+/// Faces per leaf of the tree (consecutive in Morton order).
+const LEAF: usize = 8;
+
+/// Subtrees from this level up (`2^PAR_LEVEL` leaves and more) are joined in parallel.
+const PAR_LEVEL: usize = 5;
 
 /// Intersecting pairs found: how many, and the first `(i, j)` (`i < j`) in index order.
 #[derive(Clone, Copy, Default)]
@@ -541,6 +574,44 @@ impl Found {
     }
 }
 
+/// The drop axis of the face `p` ([`drop_axis`], `NO_AXIS` for zero area), deciding the usual
+/// case by a float filter: when the face's extent is in `[2^-60, 2^60]` (so [`drop_axis`]
+/// would not rescale it and computes the same float normal) and the largest component of the
+/// normal is certainly non-zero, that component's axis is the one [`drop_axis`] returns.
+fn face_axis(p: &[P3; 3]) -> u8 {
+    let extent = (0..3).fold(0.0f64, |m, k| {
+        m.max(p[0][k].max(p[1][k]).max(p[2][k]) - p[0][k].min(p[1][k]).min(p[2][k]))
+    });
+    if well_scaled(extent) {
+        let [a, b, c] = *p;
+        let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+        let w = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
+        let n = [
+            u[1] * w[2] - u[2] * w[1],
+            u[2] * w[0] - u[0] * w[2],
+            u[0] * w[1] - u[1] * w[0],
+        ];
+        let na = [
+            (u[1] * w[2]).abs() + (u[2] * w[1]).abs(),
+            (u[2] * w[0]).abs() + (u[0] * w[2]).abs(),
+            (u[0] * w[1]).abs() + (u[1] * w[0]).abs(),
+        ];
+        let m = n.map(f64::abs);
+        // The same choice as drop_axis, ties included.
+        let best = if m[0] >= m[1] && m[0] >= m[2] {
+            0
+        } else if m[1] >= m[2] {
+            1
+        } else {
+            2
+        };
+        if m[best] > O2_FILTER * na[best] + FILTER_SLACK {
+            return best as u8;
+        }
+    }
+    drop_axis(p).unwrap_or(NO_AXIS)
+}
+
 impl Index {
     /// Builds the index of the faces `tris` (`skip[f]`: left out, e.g. a repeated index).
     pub(crate) fn new(
@@ -548,98 +619,256 @@ impl Index {
         tris: &[[u32; 3]],
         skip: impl Fn(usize) -> bool + Sync,
     ) -> Self {
-        // One pass: drop axis (exact degeneracy), box.
-        let faces: Vec<(u8, AABB<[f32; 3]>)> = tris
+        // One pass: drop axis (exact degeneracy) and box.
+        let per_face: Vec<(u8, Box3)> = tris
             .par_iter()
             .enumerate()
             .with_min_len(1024)
             .map(|(f, t)| {
+                if skip(f) {
+                    return (NO_AXIS, Box3::EMPTY);
+                }
                 let p = pts.tri(t);
-                let axis = if skip(f) {
-                    u8::MAX
-                } else {
-                    drop_axis(&p).unwrap_or(u8::MAX)
-                };
-                (axis, box32(&p))
+                (face_axis(&p), box32(&p))
             })
             .collect();
-        let (lo, hi) = faces
+        let all = per_face
             .par_iter()
             .with_min_len(1024)
-            .filter(|(a, _)| *a != u8::MAX)
-            .map(|(_, b)| (b.lower(), b.upper()))
-            .reduce(
-                || ([f32::MAX; 3], [f32::MIN; 3]),
-                |(l1, h1), (l2, h2)| {
-                    (
-                        [0, 1, 2].map(|k| l1[k].min(l2[k])),
-                        [0, 1, 2].map(|k| h1[k].max(h2[k])),
-                    )
-                },
-            );
-        let span = [0, 1, 2].map(|k| f64::from(hi[k]) - f64::from(lo[k]));
-        let mut keyed: Vec<(u64, u32)> = faces
+            .filter(|(a, _)| *a != NO_AXIS)
+            .map(|(_, b)| *b)
+            .reduce(|| Box3::EMPTY, |a, b| a.merged(&b));
+        // Morton keys of the box centres, the face index in the low bits (unique keys: the
+        // order is deterministic).
+        let face_bits = u64::BITS - (tris.len().max(2) as u64 - 1).leading_zeros();
+        let shift = 63 - (u64::BITS - face_bits).min(63);
+        let span = [0, 1, 2].map(|k| f64::from(all.hi[k]) - f64::from(all.lo[k]));
+        let mut keys: Vec<u64> = per_face
             .par_iter()
             .enumerate()
             .with_min_len(1024)
-            .filter(|(_, (a, _))| *a != u8::MAX)
+            .filter(|(_, (a, _))| *a != NO_AXIS)
             .map(|(f, (_, b))| {
                 let q = |k: usize| {
-                    let c = 0.5 * (f64::from(b.lower()[k]) + f64::from(b.upper()[k]));
+                    let c = 0.5 * (f64::from(b.lo[k]) + f64::from(b.hi[k]));
                     let x = if span[k] > 0.0 && span[k].is_finite() {
-                        (c - f64::from(lo[k])) / span[k]
+                        (c - f64::from(all.lo[k])) / span[k]
                     } else {
                         0.0
                     };
                     (x.clamp(0.0, 1.0) * 2_097_151.0) as u64
                 };
+                let morton = spread(q(0)) | spread(q(1)) << 1 | spread(q(2)) << 2;
+                (morton >> shift) << face_bits | f as u64
+            })
+            .collect();
+        keys.par_sort_unstable();
+        let low = (1u64 << face_bits) - 1;
+        let order: Vec<u32> = keys.par_iter().map(|k| (k & low) as u32).collect();
+        drop(keys);
+        let (boxes, faces): (Vec<Box3>, Vec<Face>) = order
+            .par_iter()
+            .with_min_len(1024)
+            .map(|&f| {
+                let (axis, b) = per_face[f as usize];
+                let t = tris[f as usize];
+                let corners = pts.tri(&t);
+                let fast = corners
+                    .iter()
+                    .all(|c| c.iter().all(|x| x.abs() <= FAST_COORD_MAX));
                 (
-                    spread(q(0)) | spread(q(1)) << 1 | spread(q(2)) << 2,
-                    f as u32,
+                    b,
+                    Face {
+                        corners,
+                        indices: t,
+                        axis,
+                        fast,
+                    },
                 )
             })
-            .collect();
-        keyed.par_sort_unstable();
-        let order: Vec<u32> = keyed.into_par_iter().map(|(_, f)| f).collect();
-        let boxes: Vec<AABB<[f32; 3]>> = order.par_iter().map(|&f| faces[f as usize].1).collect();
-        let axes: Vec<u8> = order.par_iter().map(|&f| faces[f as usize].0).collect();
-        let indices: Vec<[u32; 3]> = order.par_iter().map(|&f| tris[f as usize]).collect();
-        let corners: Vec<[P3; 3]> = indices.par_iter().map(|t| pts.tri(t)).collect();
-        let used = faces.par_iter().map(|(a, _)| *a != u8::MAX).collect();
-        let leaves: Vec<Leaf> = boxes
-            .par_chunks(LEAF)
-            .enumerate()
-            .map(|(c, b)| {
-                let envelope = b[1..].iter().fold(b[0], |e, x| e.merged(x));
-                Leaf {
-                    envelope,
-                    start: (c * LEAF) as u32,
-                    len: b.len() as u32,
-                }
-            })
-            .collect();
-        let tree = RTree::bulk_load_with_params(leaves);
+            .unzip();
+        let used = per_face.par_iter().map(|(a, _)| *a != NO_AXIS).collect();
+        let merge_all = |c: &[Box3]| c.iter().fold(Box3::EMPTY, |e, x| e.merged(x));
+        let mut levels = vec![boxes.par_chunks(LEAF).map(merge_all).collect::<Vec<_>>()];
+        while levels[levels.len() - 1].len() > 1 {
+            let next = levels[levels.len() - 1]
+                .par_chunks(2)
+                .with_min_len(1024)
+                .map(merge_all)
+                .collect();
+            levels.push(next);
+        }
         Self {
             order,
             boxes,
-            corners,
-            indices,
-            axes,
+            faces,
             used,
-            tree,
+            levels,
         }
     }
 
     /// Pairs of faces that meet anywhere but in what they share by index: how many, and the
     /// first pair `(i, j)`, `i < j`.
     pub(crate) fn intersections(&self) -> (u64, Option<(u32, u32)>) {
-        let ctx = Ctx { index: self };
-        let f = if self.tree.size() == 0 {
-            Found::default()
-        } else {
-            ctx.join_self(self.tree.root(), 0)
-        };
+        if self.faces.is_empty() {
+            return (0, None);
+        }
+        let f = self.self_join(self.levels.len() - 1, 0);
         (f.count, f.first)
+    }
+
+    /// The faces of leaf `i` (positions in Morton order).
+    #[inline]
+    fn leaf(&self, i: usize) -> std::ops::Range<usize> {
+        LEAF * i..(LEAF * (i + 1)).min(self.faces.len())
+    }
+
+    /// The children of node `i` of level `l > 0`: node `2i` of level `l − 1`, and `2i + 1`
+    /// when it exists.
+    #[inline]
+    fn children(&self, l: usize, i: usize) -> (usize, Option<usize>) {
+        let a = 2 * i;
+        (a, (a + 1 < self.levels[l - 1].len()).then_some(a + 1))
+    }
+
+    /// The pairs within the subtree of node `i` of level `l`.
+    fn self_join(&self, l: usize, i: usize) -> Found {
+        if l == 0 {
+            return self.leaf_self(i);
+        }
+        let (a, b) = self.children(l, i);
+        let Some(b) = b else {
+            return self.self_join(l - 1, a);
+        };
+        let (x, (y, z)) = if l >= PAR_LEVEL {
+            rayon::join(
+                || self.self_join(l - 1, a),
+                || {
+                    rayon::join(
+                        || self.self_join(l - 1, b),
+                        || self.pair_join((l - 1, a), (l - 1, b)),
+                    )
+                },
+            )
+        } else {
+            (
+                self.self_join(l - 1, a),
+                (
+                    self.self_join(l - 1, b),
+                    self.pair_join((l - 1, a), (l - 1, b)),
+                ),
+            )
+        };
+        x.merge(y).merge(z)
+    }
+
+    /// The pairs between the subtrees of two distinct nodes `(level, index)`.
+    fn pair_join(&self, (la, ia): (usize, usize), (lb, ib): (usize, usize)) -> Found {
+        if !self.levels[la][ia].meets(&self.levels[lb][ib]) {
+            return Found::default();
+        }
+        if la == 0 && lb == 0 {
+            return self.leaf_pair(ia, ib);
+        }
+        // Open the higher node; its children against the other.
+        let (split_a, l) = if la >= lb { (true, la) } else { (false, lb) };
+        let (c0, c1) = self.children(l, if split_a { ia } else { ib });
+        let with = |c: usize| {
+            if split_a {
+                self.pair_join((l - 1, c), (lb, ib))
+            } else {
+                self.pair_join((la, ia), (l - 1, c))
+            }
+        };
+        match c1 {
+            None => with(c0),
+            Some(c1) if l >= PAR_LEVEL => {
+                let (x, y) = rayon::join(|| with(c0), || with(c1));
+                x.merge(y)
+            }
+            Some(c1) => with(c0).merge(with(c1)),
+        }
+    }
+
+    fn leaf_self(&self, i: usize) -> Found {
+        let mut f = Found::default();
+        let r = self.leaf(i);
+        for a in r.clone() {
+            let ba = self.boxes[a];
+            for b in a + 1..r.end {
+                if ba.meets(&self.boxes[b]) {
+                    self.narrow(a, b, &mut f);
+                }
+            }
+        }
+        f
+    }
+
+    fn leaf_pair(&self, i: usize, j: usize) -> Found {
+        let mut f = Found::default();
+        let (ri, rj) = (self.leaf(i), self.leaf(j));
+        let bj = self.levels[0][j];
+        for a in ri {
+            let ba = self.boxes[a];
+            if !ba.meets(&bj) {
+                continue;
+            }
+            for b in rj.clone() {
+                if ba.meets(&self.boxes[b]) {
+                    self.narrow(a, b, &mut f);
+                }
+            }
+        }
+        f
+    }
+
+    /// Tests the faces at Morton positions `a` and `b`, whose boxes meet: first the float
+    /// filter of [`off_plane`] (the usual answer for neighbours and near faces of a smooth
+    /// surface: one face lies strictly on one side of the other's plane, but for the vertices
+    /// they share), then the exact tests.
+    #[inline]
+    fn narrow(&self, a: usize, b: usize, found: &mut Found) {
+        let (p, q) = (&self.faces[a], &self.faces[b]);
+        let (mut sp, mut sq) = (0u8, 0u8);
+        for i in 0..3 {
+            for j in 0..3 {
+                if p.indices[i] == q.indices[j] {
+                    sp |= 1 << i;
+                    sq |= 1 << j;
+                }
+            }
+        }
+        if p.fast
+            && q.fast
+            && (off_plane(&p.corners, &q.corners, sq) || off_plane(&q.corners, &p.corners, sp))
+        {
+            return;
+        }
+        self.exact(a, b, found);
+    }
+
+    /// The exact test of the faces at Morton positions `a` and `b` ([`faces_cross`]).
+    #[cold]
+    #[inline(never)]
+    fn exact(&self, a: usize, b: usize, found: &mut Found) {
+        let (fp, fq) = (&self.faces[a], &self.faces[b]);
+        let (mut p, mut q) = (fp.corners, fq.corners);
+        let both = self.boxes[a].merged(&self.boxes[b]);
+        let extent = (0..3).fold(0.0f64, |m, k| {
+            m.max(f64::from(both.hi[k]) - f64::from(both.lo[k]))
+        });
+        if !well_scaled(extent) {
+            let mut all = [p[0], p[1], p[2], q[0], q[1], q[2]];
+            fit(&mut all);
+            p = [all[0], all[1], all[2]];
+            q = [all[3], all[4], all[5]];
+        }
+        if faces_cross(&p, &q, &fp.indices, &fq.indices, fp.axis, fq.axis) {
+            let (fi, fj) = (self.order[a], self.order[b]);
+            found.count += 1;
+            let pair = (fi.min(fj), fi.max(fj));
+            found.first = Some(found.first.map_or(pair, |x| x.min(pair)));
+        }
     }
 
     /// The winding number at `p` (a vertex of the scaled mesh) of the faces `f` with
@@ -647,15 +876,26 @@ impl Index {
     /// `p + (0, δ, δ²)` so that it never meets an edge or a vertex. `None` if `p` lies on one of
     /// those faces (the callers' checks rule that out).
     pub(crate) fn winding(&self, p: P3, keep: impl Fn(usize) -> bool) -> Option<i64> {
-        let ray = Ray { p };
         let mut w = 0i64;
-        for leaf in self.tree.locate_with_selection_function(ray) {
-            for k in leaf.start..leaf.start + leaf.len {
-                let k = k as usize;
+        if self.faces.is_empty() {
+            return Some(w);
+        }
+        let mut stack = vec![(self.levels.len() - 1, 0usize)];
+        while let Some((l, i)) = stack.pop() {
+            if !self.levels[l][i].meets_ray(p) {
+                continue;
+            }
+            if l > 0 {
+                let (a, b) = self.children(l, i);
+                stack.push((l - 1, a));
+                stack.extend(b.map(|b| (l - 1, b)));
+                continue;
+            }
+            for k in self.leaf(i) {
                 if !keep(self.order[k] as usize) {
                     continue;
                 }
-                match crossing(&self.corners[k], p) {
+                match crossing(&self.faces[k].corners, p) {
                     Some(c) => w += i64::from(c),
                     None => return None,
                 }
@@ -665,25 +905,55 @@ impl Index {
     }
 }
 
-/// The ray `{p + t e_x, t ≥ 0}` (closed boxes, so that the perturbed ray is covered too).
-struct Ray {
-    p: P3,
+/// Every corner of `q` outside the bit mask `shared` (the corners it shares with `t` by index)
+/// lies strictly on one side of the plane of `t`, certainly: then `q` meets that plane only in
+/// the shared corners (a vertex, or an edge, of `t`), so `q` and `t` meet nowhere else. A float
+/// evaluation of [`o3`] with Shewchuk's error bound ([`O3_FILTER`], as in [`o3_plane`]) plus
+/// [`FILTER_SLACK`] for underflow; `false` when that cannot decide (the exact tests then do).
+/// For coordinates of magnitude at most [`FAST_COORD_MAX`] (no overflow).
+#[inline]
+fn off_plane(t: &[P3; 3], q: &[P3; 3], shared: u8) -> bool {
+    let a = t[0];
+    let u = [t[1][0] - a[0], t[1][1] - a[1], t[1][2] - a[2]];
+    let w = [t[2][0] - a[0], t[2][1] - a[1], t[2][2] - a[2]];
+    let n = [
+        u[1] * w[2] - u[2] * w[1],
+        u[2] * w[0] - u[0] * w[2],
+        u[0] * w[1] - u[1] * w[0],
+    ];
+    let na = [
+        (u[1] * w[2]).abs() + (u[2] * w[1]).abs(),
+        (u[2] * w[0]).abs() + (u[0] * w[2]).abs(),
+        (u[0] * w[1]).abs() + (u[1] * w[0]).abs(),
+    ];
+    let mut side = 0.0f64;
+    for (j, d) in q.iter().enumerate() {
+        if shared & (1 << j) != 0 {
+            continue;
+        }
+        let v = [d[0] - a[0], d[1] - a[1], d[2] - a[2]];
+        let det = n[0] * v[0] + n[1] * v[1] + n[2] * v[2];
+        let perm = na[0] * v[0].abs() + na[1] * v[1].abs() + na[2] * v[2].abs();
+        if det.abs() <= O3_FILTER * perm + FILTER_SLACK || det * side < 0.0 {
+            return false;
+        }
+        side = det;
+    }
+    true
 }
 
-impl rstar::SelectionFunction<Leaf> for Ray {
-    fn should_unpack_parent(&self, e: &AABB<[f32; 3]>) -> bool {
-        let (lo, hi) = (e.lower(), e.upper());
-        let p = self.p;
-        f64::from(hi[0]) >= p[0]
-            && f64::from(lo[1]) <= p[1]
-            && p[1] <= f64::from(hi[1])
-            && f64::from(lo[2]) <= p[2]
-            && p[2] <= f64::from(hi[2])
-    }
-    fn should_unpack_leaf(&self, leaf: &Leaf) -> bool {
-        self.should_unpack_parent(&leaf.envelope)
-    }
-}
+/// The largest coordinate magnitude for the float filters of [`off_plane`]: differences are
+/// at most `2^257`, the filter's products at most `2^775`, far from overflow.
+const FAST_COORD_MAX: f64 = 1.157_920_892_373_162e77; // 2^256
+
+/// Absolute slack of the float filters for underflow: a product that underflows is off by at
+/// most `2^-1075`; through the filter's later products (factors at most `2^257`) and sums
+/// that is below `2^-810` in all. `2^-800`, with margin.
+const FILTER_SLACK: f64 = 1.499_696_813_895_631e-241; // 2^-800
+
+/// The relative error bound of a float 2-D orientation (Shewchuk's ccwerrboundA,
+/// `(3 + 16ε) ε ≈ 3.33e-16` with `ε = 2^-53`), rounded up with margin.
+const O2_FILTER: f64 = 1e-15;
 
 /// How the perturbed ray from `p` along `+x` crosses the triangle `t`: `+1` or `−1` (the sign
 /// of the normal's x component) or `0`; `None` when `p` lies in the plane of `t` within it.
@@ -726,143 +996,6 @@ fn crossing(t: &[P3; 3], p: P3) -> Option<i8> {
         0 => None,
         d if d == -s => Some(s),
         _ => Some(0),
-    }
-}
-
-/// The join of the tree with itself.
-struct Ctx<'a> {
-    index: &'a Index,
-}
-
-impl Ctx<'_> {
-    /// The pairs within a subtree; in parallel near the root (`depth` < 3).
-    fn join_self(&self, node: &ParentNode<Leaf>, depth: u32) -> Found {
-        let ch = node.children();
-        let one = |(i, c): (usize, &RTreeNode<Leaf>)| {
-            let mut f = match c {
-                RTreeNode::Parent(p) => self.join_self(p, depth + 1),
-                RTreeNode::Leaf(l) => self.leaf_self(l),
-            };
-            for d in &ch[i + 1..] {
-                f = f.merge(self.join_two(c, d, depth));
-            }
-            f
-        };
-        if depth < 3 {
-            ch.par_iter()
-                .enumerate()
-                .map(one)
-                .reduce(Found::default, Found::merge)
-        } else {
-            ch.iter()
-                .enumerate()
-                .map(one)
-                .fold(Found::default(), Found::merge)
-        }
-    }
-
-    /// The pairs between two subtrees; in parallel near the root (`depth` < 3), where the
-    /// subtrees are large.
-    fn join_two(&self, a: &RTreeNode<Leaf>, b: &RTreeNode<Leaf>, depth: u32) -> Found {
-        let (ea, eb) = (node_envelope(a), node_envelope(b));
-        if !ea.intersects(&eb) {
-            return Found::default();
-        }
-        match (a, b) {
-            (RTreeNode::Leaf(x), RTreeNode::Leaf(y)) => self.leaf_pair(x, y),
-            (RTreeNode::Parent(p), RTreeNode::Leaf(_)) => p
-                .children()
-                .iter()
-                .map(|c| self.join_two(c, b, depth + 1))
-                .fold(Found::default(), Found::merge),
-            (RTreeNode::Leaf(_), RTreeNode::Parent(q)) => q
-                .children()
-                .iter()
-                .map(|c| self.join_two(a, c, depth + 1))
-                .fold(Found::default(), Found::merge),
-            (RTreeNode::Parent(p), RTreeNode::Parent(q)) => {
-                let row = |c: &RTreeNode<Leaf>| {
-                    if !node_envelope(c).intersects(&eb) {
-                        return Found::default();
-                    }
-                    q.children()
-                        .iter()
-                        .map(|d| self.join_two(c, d, depth + 1))
-                        .fold(Found::default(), Found::merge)
-                };
-                if depth < 3 {
-                    p.children()
-                        .par_iter()
-                        .map(row)
-                        .reduce(Found::default, Found::merge)
-                } else {
-                    p.children()
-                        .iter()
-                        .map(row)
-                        .fold(Found::default(), Found::merge)
-                }
-            }
-        }
-    }
-
-    fn leaf_self(&self, l: &Leaf) -> Found {
-        let mut f = Found::default();
-        let (s, e) = (l.start as usize, (l.start + l.len) as usize);
-        for i in s..e {
-            for j in i + 1..e {
-                self.test(i, j, &mut f);
-            }
-        }
-        f
-    }
-
-    fn leaf_pair(&self, a: &Leaf, b: &Leaf) -> Found {
-        let mut f = Found::default();
-        let boxes = &self.index.boxes;
-        let (start, end) = (a.start as usize, (a.start + a.len) as usize);
-        for (i, bi) in boxes.iter().enumerate().take(end).skip(start) {
-            if !bi.intersects(&b.envelope) {
-                continue;
-            }
-            for j in b.start as usize..(b.start + b.len) as usize {
-                self.test(i, j, &mut f);
-            }
-        }
-        f
-    }
-
-    /// Tests the faces at Morton positions `i` and `j`.
-    #[inline]
-    fn test(&self, i: usize, j: usize, found: &mut Found) {
-        let ix = self.index;
-        if !ix.boxes[i].intersects(&ix.boxes[j]) {
-            return;
-        }
-        let (ti, tj) = (&ix.indices[i], &ix.indices[j]);
-        let (mut p, mut q) = (ix.corners[i], ix.corners[j]);
-        let both = ix.boxes[i].merged(&ix.boxes[j]);
-        let (lo, hi) = (both.lower(), both.upper());
-        let extent = (0..3).fold(0.0f64, |m, k| m.max(f64::from(hi[k]) - f64::from(lo[k])));
-        if !well_scaled(extent) {
-            let mut all = [p[0], p[1], p[2], q[0], q[1], q[2]];
-            fit(&mut all);
-            p = [all[0], all[1], all[2]];
-            q = [all[3], all[4], all[5]];
-        }
-        let (kp, kq) = (ix.axes[i], ix.axes[j]);
-        if faces_cross(&p, &q, ti, tj, kp, kq) {
-            let (fi, fj) = (ix.order[i], ix.order[j]);
-            found.count += 1;
-            let pair = (fi.min(fj), fi.max(fj));
-            found.first = Some(found.first.map_or(pair, |x| x.min(pair)));
-        }
-    }
-}
-
-fn node_envelope(n: &RTreeNode<Leaf>) -> AABB<[f32; 3]> {
-    match n {
-        RTreeNode::Leaf(l) => l.envelope,
-        RTreeNode::Parent(p) => p.envelope(),
     }
 }
 
