@@ -10,10 +10,6 @@ use crate::free::FreeRigidBody;
 use poinsot::analytic as an;
 use wasm_bindgen::prelude::wasm_bindgen;
 
-fn time_ok(t: f64) -> Out<()> {
-    Ok(poinsot::error::check_finite("t", &[t])?)
-}
-
 fn flat(points: &[poinsot::Vec3]) -> Vec<f64> {
     points.iter().flat_map(|p| [p.x, p.y, p.z]).collect()
 }
@@ -27,14 +23,14 @@ impl FreeRigidBody {
     }
     /// λ of the Jacobi argument τ = λt + τ₀ (1/s).
     #[wasm_bindgen(getter)]
-    pub fn frequency(&self) -> f64 {
-        self.inner.frequency()
+    pub fn frequency(&self) -> Out<f64> {
+        Ok(self.inner.frequency()?)
     }
     /// Half the period (s): the interval between reversals of ω along the intermediate axis
     /// (the Dzhanibekov flips near the separatrix); `Infinity` when the period is.
     #[wasm_bindgen(getter, js_name = flipInterval)]
-    pub fn flip_interval(&self) -> f64 {
-        self.inner.flip_interval()
+    pub fn flip_interval(&self) -> Out<f64> {
+        Ok(self.inner.flip_interval()?)
     }
     /// The principal axis (0, 1, 2) that ω circles; `undefined` when steady or on the separatrix.
     #[wasm_bindgen(getter, js_name = poleAxis)]
@@ -56,28 +52,36 @@ impl FreeRigidBody {
     /// plane at time `t` (s), space components.
     #[wasm_bindgen(js_name = contactPoint)]
     pub fn contact_point(&self, t: f64) -> Out<Vec<f64>> {
-        time_ok(t)?;
-        finite("contact point", vec_out(&self.inner.contact_point(t)))
+        finite("contact point", vec_out(&self.inner.contact_point(t)?))
     }
     /// The contact point ω(t) / (2T)^½ at time `t` (s), body components.
     #[wasm_bindgen(js_name = contactPointBody)]
     pub fn contact_point_body(&self, t: f64) -> Out<Vec<f64>> {
-        time_ok(t)?;
-        finite("contact point", vec_out(&self.inner.contact_point_body(t)))
+        finite("contact point", vec_out(&self.inner.contact_point_body(t)?))
     }
     /// The contact points (space components) at each of `times` (s): 3N numbers, the
     /// herpolhode (scaled) when the times are consecutive.
     #[wasm_bindgen(js_name = contactPoints)]
     pub fn contact_points(&self, times: &[f64]) -> Out<Vec<f64>> {
         poinsot::error::check_finite("times", times)?;
-        let pts: Vec<poinsot::Vec3> = times.iter().map(|&t| self.inner.contact_point(t)).collect();
+        let pts = times
+            .iter()
+            .map(|&t| {
+                self.inner
+                    .contact_point(t)
+                    .map_err(|e| e.renamed("t", "times"))
+            })
+            .collect::<poinsot::Result<Vec<_>>>()?;
         finite("contact point", flat(&pts))
     }
     /// ω (body components, rad/s) at each of `times` (s): 3N numbers.
     #[wasm_bindgen(js_name = omegas)]
     pub fn omegas(&self, times: &[f64]) -> Out<Vec<f64>> {
         poinsot::error::check_finite("times", times)?;
-        let pts: Vec<poinsot::Vec3> = times.iter().map(|&t| self.inner.omega(t)).collect();
+        let pts = times
+            .iter()
+            .map(|&t| self.inner.omega(t).map_err(|e| e.renamed("t", "times")))
+            .collect::<poinsot::Result<Vec<_>>>()?;
         finite("omega", flat(&pts))
     }
     /// `samples` points (3N numbers, body components) of the polhode on the inertia ellipsoid
@@ -145,7 +149,7 @@ mod tests {
         assert_eq!(&many[3..], &rs[..]);
         assert_eq!(b.omegas(&[t]).unwrap(), b.omega(t).unwrap());
         // The flip interval is half the period.
-        assert!((2.0 * b.flip_interval() / b.period() - 1.0).abs() < 1e-14);
+        assert!((2.0 * b.flip_interval().unwrap() / b.period().unwrap() - 1.0).abs() < 1e-14);
         // L² = 16.025 > 2T·I₂ = 16.02: just above the separatrix, ω circles the largest axis.
         assert_eq!(b.pole_axis(), Some(2));
         assert_eq!(b.regime(), "about max axis");

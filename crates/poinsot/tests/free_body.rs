@@ -41,7 +41,7 @@ fn exact_solution_matches_mpmath_to_1e_12() {
         )
         .unwrap();
         let t = v[10];
-        let (w, q) = body.state(t);
+        let (w, q) = body.state(t).unwrap();
         let want_w = Vec3::new(v[11], v[12], v[13]);
         let want_q = [v[14], v[15], v[16], v[17]];
         let ew = (w - want_w).norm() / want_w.norm();
@@ -124,7 +124,7 @@ fn exact_solution_matches_dop853_over_random_states() {
         let y0 = [w.x, w.y, w.z, q0[0], q0[1], q0[2], q0[3]];
         let sol = dop853(free_rhs(moments), 0.0, y0, t_end, &opts).unwrap();
         let y = sol.y_final();
-        let (we, qe) = body.state(t_end);
+        let (we, qe) = body.state(t_end).unwrap();
         let ew = (we - Vec3::new(y[0], y[1], y[2])).norm() / w.norm();
         let eq = q_dist(&qe, &[y[3], y[4], y[5], y[6]]);
         assert!(
@@ -161,7 +161,7 @@ fn special_motions_match_dop853() {
         let y0 = [w.x, w.y, w.z, q0[0], q0[1], q0[2], q0[3]];
         let sol = dop853(free_rhs(moments), 0.0, y0, 15.0, &opts).unwrap();
         let y = sol.y_final();
-        let (we, qe) = body.state(15.0);
+        let (we, qe) = body.state(15.0).unwrap();
         let ew = (we - Vec3::new(y[0], y[1], y[2])).norm() / w.norm();
         let eq = q_dist(&qe, &[y[3], y[4], y[5], y[6]]);
         assert!(
@@ -180,7 +180,7 @@ fn separatrix_motion_is_exact() {
     let w = Vec3::new(w.x, w.y, (w.x * w.x / 3.0).sqrt());
     let body = FreeRigidBody::new([1.0, 2.0, 3.0], w, None).unwrap();
     if body.regime() == FreeRegime::Separatrix {
-        assert!(body.period().is_infinite());
+        assert!(body.period().unwrap().is_infinite());
     }
     let opts = Options {
         dense: false,
@@ -189,7 +189,7 @@ fn separatrix_motion_is_exact() {
     let y0 = [w.x, w.y, w.z, 1.0, 0.0, 0.0, 0.0];
     let sol = dop853(free_rhs([1.0, 2.0, 3.0]), 0.0, y0, 10.0, &opts).unwrap();
     let y = sol.y_final();
-    let (we, qe) = body.state(10.0);
+    let (we, qe) = body.state(10.0).unwrap();
     assert!(
         (we - Vec3::new(y[0], y[1], y[2])).norm() < 1e-9,
         "{:?} {we:?} {y:?}",
@@ -206,7 +206,7 @@ fn symmetric_top_closed_forms() {
     assert!((top.amplitude() - 0.5).abs() < 1e-15);
     let body = FreeRigidBody::new([2.0, 2.0, 1.0], Vec3::new(0.3, 0.4, 2.0), None).unwrap();
     for &t in &[0.0, 0.7, 13.0, 400.0] {
-        assert!((top.omega(t) - body.omega(t)).norm() < 1e-14);
-        assert!(q_dist(&top.attitude(t), &body.attitude(t)) < 1e-13);
+        assert!((top.omega(t).unwrap() - body.omega(t).unwrap()).norm() < 1e-14);
+        assert!(q_dist(&top.attitude(t).unwrap(), &body.attitude(t).unwrap()) < 1e-13);
     }
 }
