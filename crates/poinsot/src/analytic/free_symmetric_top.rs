@@ -160,9 +160,10 @@ fn check_symmetric_moments(i1: f64, i3: f64) -> Result<()> {
     Ok(())
 }
 
-/// The inputs of 2.95–2.96 checked and brought to unit scale: (i1, i3, energy, l²) with the
-/// moments' scale divided out and l² split as `mantissa · 2^(2e)`; the result is
-/// `value · 2^(2e)`.
+/// The inputs of 2.95–2.96 checked and brought to a common scale: `(a1, a3, l2, t, k)` with
+/// `L² = l2 · 2^(k + 2c)`, `T I = t a · 2^(k + 2c)` for `I = a 2^c` (a1, a3 the moments at unit
+/// scale), so that `ω₃² = (l2 − 2 t a1) / (a3 (a3 − a1)) · 2^k` (and A² likewise) with no
+/// intermediate overflow or underflow whatever the units.
 fn energy_momentum_terms(
     i1: f64,
     i3: f64,
@@ -188,23 +189,20 @@ fn energy_momentum_terms(
             ));
         }
     }
-    // Moments to unit scale (I = 2^ei Î): T = 2^ei Î·ω², L = 2^ei Î ω.
-    let ei = exponent(i1.max(i3));
-    let (a1, a3) = (ldexp(i1, -ei), ldexp(i3, -ei));
-    let (t, l) = (ldexp(energy, -ei), ldexp(angular_momentum, -ei));
-    // ω² ~ L²: split L = λ 2^e so that λ² and T/2^(2e) are O(1).
-    let e = if l > 0.0 {
-        exponent(l)
-    } else if t > 0.0 {
-        exponent(t).div_euclid(2)
-    } else {
-        0
-    };
-    let lm = ldexp(l, -e);
-    let tm = ldexp(t, -2 * e);
+    let c = exponent(i1.max(i3));
+    let (a1, a3) = (ldexp(i1, -c), ldexp(i3, -c));
+    // L = lm 2^a, T = tm 2^b; L² ~ 2^(2a) and T I ~ 2^(b + c), brought to the larger, 2^e.
+    let split = |x: f64| if x > 0.0 { exponent(x) } else { i32::MIN / 4 };
+    let (a, b) = (split(angular_momentum), split(energy));
+    if a == i32::MIN / 4 && b == i32::MIN / 4 {
+        return Ok((a1, a3, 0.0, 0.0, 0));
+    }
+    let e = (2 * a).max(b + c);
+    let lm = ldexp(angular_momentum, -a);
+    let l2 = ldexp(lm * lm, 2 * a - e);
+    let t = ldexp(ldexp(energy, -b), b + c - e);
     // The pair must be reachable: 2T·min(I1, I3) ≤ L² ≤ 2T·max(I1, I3).
-    let l2 = lm * lm;
-    let (lo, hi) = (2.0 * tm * a1.min(a3), 2.0 * tm * a1.max(a3));
+    let (lo, hi) = (2.0 * t * a1.min(a3), 2.0 * t * a1.max(a3));
     let slack = 8.0 * f64::EPSILON * hi;
     if l2 < lo - slack || l2 > hi + slack {
         return Err(Error::invalid(
@@ -213,13 +211,13 @@ fn energy_momentum_terms(
                 "no motion of this top has T = {energy} J and |L| = {angular_momentum} kg·m²/s: \
                  L² must lie between 2T·min(I1, I3) = {} and 2T·max(I1, I3) = {} (kg·m²/s)², \
                  got L² = {}",
-                describe(lo, 2 * e + 2 * ei),
-                describe(hi, 2 * e + 2 * ei),
-                describe(l2, 2 * e + 2 * ei)
+                describe(lo, e),
+                describe(hi, e),
+                describe(l2, e)
             ),
         ));
     }
-    Ok((a1, a3, tm, l2, e))
+    Ok((a1, a3, l2, t, e - 2 * c))
 }
 
 impl FreeSymmetricTop {
@@ -429,9 +427,9 @@ impl FreeSymmetricTop {
         energy: f64,
         angular_momentum: f64,
     ) -> Result<f64> {
-        let (a1, a3, t, l2, e) = energy_momentum_terms(i1, i3, energy, angular_momentum)?;
+        let (a1, a3, l2, t, k) = energy_momentum_terms(i1, i3, energy, angular_momentum)?;
         let v = ((l2 - 2.0 * t * a1) / (a3 * (a3 - a1))).max(0.0);
-        representable("angular_momentum", "ω3²", "rad²/s²", v, 2 * e)
+        representable("angular_momentum", "ω3²", "rad²/s²", v, k)
     }
 
     /// A² from the energy and |L|: A² = (L² − 2 I₃ T) / (I₁ (I₁ − I₃)) (2.96) (rad²/s²).
@@ -442,8 +440,8 @@ impl FreeSymmetricTop {
         energy: f64,
         angular_momentum: f64,
     ) -> Result<f64> {
-        let (a1, a3, t, l2, e) = energy_momentum_terms(i1, i3, energy, angular_momentum)?;
+        let (a1, a3, l2, t, k) = energy_momentum_terms(i1, i3, energy, angular_momentum)?;
         let v = ((l2 - 2.0 * a3 * t) / (a1 * (a1 - a3))).max(0.0);
-        representable("angular_momentum", "A²", "rad²/s²", v, 2 * e)
+        representable("angular_momentum", "A²", "rad²/s²", v, k)
     }
 }

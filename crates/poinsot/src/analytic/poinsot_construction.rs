@@ -88,6 +88,16 @@ impl FreeRigidBody {
     /// is constant. Sampled at unit scale, so a period beyond the double range does not
     /// matter. Errors name `samples` (must be ≥ 2).
     pub fn polhode(&self, samples: usize) -> Result<Vec<Vec3>> {
+        let scale = *self.scale();
+        Ok(self
+            .polhode_hat(samples)?
+            .into_iter()
+            .map(|w| scale.omega(&w))
+            .collect())
+    }
+
+    /// The polhode at unit scale (ω̂ over one unit-scale period).
+    fn polhode_hat(&self, samples: usize) -> Result<Vec<Vec3>> {
         if samples < 2 {
             return Err(Error::invalid(
                 "samples",
@@ -102,17 +112,16 @@ impl FreeRigidBody {
         } else {
             (0.0, 0.0)
         };
-        let scale = *self.scale();
         Ok((0..samples)
             .map(|i| {
                 let th = t0 + span * i as f64 / (samples - 1) as f64;
-                scale.omega(&self.state_at_hat(th).0)
+                self.state_at_hat(th).0
             })
             .collect())
     }
 
-    /// (2T)^½ / |L| · 2^(e_i/2) pieces: the factor that takes ω̂ to the contact point,
-    /// `1/((2T)^½)` in the user's units divided by 2^e_w (which ω carries).
+    /// The factor that takes ω̂ to the contact point: ω/(2T)^½ = ω̂ 2^e_w / ((2T̂)^½ 2^(e_i/2)
+    /// 2^e_w) = ω̂ / ((2T̂)^½ 2^(e_i/2)).
     fn contact_factor(&self) -> f64 {
         let (energy_hat, _, e_i) = self.unit_scale();
         // (2T)^½ = (2T̂)^½ 2^(e_i/2) 2^e_w: split e_i = 2h + r.
@@ -174,7 +183,11 @@ impl FreeRigidBody {
     /// [`Self::polhode`] scaled by (2T)^-½, body components (the same times). Errors name
     /// `samples` (must be ≥ 2).
     pub fn contact_polhode(&self, samples: usize) -> Result<Vec<Vec3>> {
-        let f = self.contact_factor() / self.scale().s_w;
-        Ok(self.polhode(samples)?.into_iter().map(|w| w * f).collect())
+        let f = self.contact_factor();
+        Ok(self
+            .polhode_hat(samples)?
+            .into_iter()
+            .map(|w| w * f)
+            .collect())
     }
 }
