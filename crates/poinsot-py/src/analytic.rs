@@ -250,6 +250,19 @@ impl PyFreeBody {
             .py()?;
         Ok(rows_out(py, &rows))
     }
+    /// L(t) = I·ω(t) in body components at times t (N,) → (N, 3).
+    fn angular_momentum_body<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let rows = times_in(&t)?
+            .iter()
+            .map(|&t| self.inner.angular_momentum_body(t).map(|v| a3(&v)))
+            .collect::<poinsot::Result<Vec<[f64; 3]>>>()
+            .py()?;
+        Ok(rows_out(py, &rows))
+    }
     /// `samples` points of the polhode (N, 3).
     fn polhode<'py>(&self, py: Python<'py>, samples: usize) -> PyResult<Bound<'py, PyArray2<f64>>> {
         let rows: Vec<[f64; 3]> = self.inner.polhode(samples).py()?.iter().map(a3).collect();

@@ -55,8 +55,14 @@ use crate::error::{check_finite, Error, Result};
 use crate::rotation::{check_quaternion, Quaternion};
 use crate::special::carlson::{rf_cd, rj_cd};
 use crate::special::fp::{exponent, ldexp};
+use crate::special::integrals::{pi_complete_split, pi_reduced_split};
 use crate::special::Jacobi;
 use crate::{Mat3, Vec3};
+
+/// Above this |n| sin²φ the two terms of Π = s R_F + (n/3) s³ R_J cancel by more than
+/// log₂(1 + 16) ≈ 4 bits and the form with positive terms only is used instead (it costs an
+/// extra R_C; below, the direct sum loses at most those 4 bits, ≤ 4e-15 relative).
+const CANCELLATION: f64 = 16.0;
 
 /// Components below this fraction of the largest (2⁻⁹⁰⁰ ≈ 1.2e-271) about a *stable* principal
 /// axis are a steady rotation to that relative accuracy forever (their wobble never grows);
@@ -729,8 +735,14 @@ impl Elliptic {
             q_post: matrix_to_quaternion_unchecked(&row_major(&to_w)),
         };
         if !separatrix {
-            // Π(n | m) = R_F(0, m₁, 1) + (n/3) R_J(0, m₁, 1, 1 − n) (DLMF 19.25.2).
-            e.pi_complete = rf_cd(0.0, kc) + n / 3.0 * rj_cd(0.0, kc, 1.0 - n);
+            // Π(n | m) = R_F(0, m₁, 1) + (n/3) R_J(0, m₁, 1, 1 − n) (DLMF 19.25.2); for n < −1
+            // (a body nearly symmetric about its pole, |n| ~ 1/gap) the two terms would cancel:
+            // the form with positive terms (DLMF 19.21.12), while m₁ = k'² is a normal double.
+            e.pi_complete = if e.positive_form() {
+                pi_complete_split(n, e.jacobi.m(), kc * kc)?
+            } else {
+                rf_cd(0.0, kc) + n / 3.0 * rj_cd(0.0, kc, 1.0 - n)
+            };
         }
         let (w_s0, red0) = e.omega_sorted(tau0);
         e.pi0 = e.pi_of(tau0, red0);
@@ -806,8 +818,31 @@ impl Elliptic {
             return (tau + r * (r * tau.tanh()).atan()) / (1.0 - self.n);
         }
         let (s, c, d) = (red.sn, red.cn.abs(), red.dn);
-        let p = s * rf_cd(c, d) + self.n / 3.0 * s * s * s * rj_cd(c, d, 1.0 - self.n * s * s);
+        let ns2 = self.n * s * s;
+        let p = if ns2 < -CANCELLATION && self.positive_form() {
+            // |n| s² > 1: the direct terms below would cancel (see `positive_form`).
+            let kc = self.jacobi.complementary_modulus();
+            let v = pi_reduced_split(self.n, s.abs(), c, d, self.jacobi.m(), kc * kc)
+                .unwrap_or(f64::NAN);
+            if s < 0.0 {
+                -v
+            } else {
+                v
+            }
+        } else {
+            s * rf_cd(c, d) + self.n / 3.0 * s * s * s * rj_cd(c, d, 1.0 - ns2)
+        };
         2.0 * red.j * self.pi_complete + p
+    }
+
+    /// Whether Π may be summed in the form with positive terms only: n < −[`CANCELLATION`] (a
+    /// body nearly symmetric about its pole, where `s R_F + (n/3) s³ R_J` cancels to
+    /// ~1/√|n| of its terms and lost log₂|n| bits: 7e-9 in the attitude at
+    /// I = (1, 2, 2 + 4e-14)), and m₁ = k'² a normal double (the form's R_J argument
+    /// q ≥ m₁ s²/(1 − n) must not underflow).
+    #[inline]
+    fn positive_form(&self) -> bool {
+        self.n < -CANCELLATION && self.jacobi.complementary_modulus() > 1e-140
     }
 
     /// L̂ in the working frame W (pole third) from ω in sorted components.

@@ -5,12 +5,14 @@
 //! Two things differ from the usual implementations (Boost, the `ellip` crate), which fail or
 //! lose accuracy at the edges of the double range:
 //! * the integrals are homogeneous (R_F of degree −½, R_D and R_J of degree −3/2), so the
-//!   arguments are first scaled by a power of 4 (exact, and exact under the square root) to a
-//!   largest argument in [¼, 1);
-//! * the duplication stops on the *measured* spread of the arguments about their mean
-//!   (a posteriori), not on an a-priori bound: two arguments 10⁻³⁰⁰ below the third take
-//!   about 20 duplications (the ratio of the spread roughly square-roots at each step), where
-//!   an a-priori count stops too early and returns an unconverged value.
+//!   arguments are first scaled by a power of 4 (exact, and exact under the square root) that
+//!   centres their exponents on 0: arguments up to 600 decades apart then neither overflow nor
+//!   underflow in the duplication's products (scaling the largest to 1 made the terms 1/d of
+//!   R_J overflow for Π(0.3 | −1e308));
+//! * the duplication runs until the spread of the arguments about their mean (which shrinks
+//!   by exactly 4 per step) is below a tolerance of the mean, with no fixed cap on the count:
+//!   as the mean itself falls towards the result's R^−2, two arguments 10⁻³⁰⁰ below the third
+//!   take about 13 steps, where `ellip` stops after 11 and returns an unconverged value.
 //!
 //! Preconditions (checked by the callers, which name the user's argument): all arguments
 //! finite, x, y, z ≥ 0 with at most one of them zero, p ≠ 0 (p < 0: Cauchy principal value).
@@ -20,33 +22,54 @@ use super::fp::{exponent, ldexp};
 /// Relative spread below which the R_F series is summed: its first neglected terms are of
 /// degree 8 in the spread, 0.003⁸ ≈ 7e-21 (below ε/4 = 5.5e-17 with a wide margin).
 const TOL_F: f64 = 0.003;
-/// The same for R_D and R_J, whose series are truncated after degree 5: 0.0008⁶ ≈ 2.6e-19.
-const TOL_DJ: f64 = 0.0008;
-/// A guard only: each duplication divides the spread by at least 4 once the arguments are
-/// within a factor 4 of each other, and square-roots their ratio before that; 10⁶¹⁶ (the whole
-/// double range) needs under 40 steps.
+/// The same for R_D and R_J, whose series are truncated after degree 5: 0.0015⁶ ≈ 1.1e-17,
+/// below ε/4 (Carlson 1995 takes (ε/4)^(1/6) ≈ 0.0016).
+const TOL_DJ: f64 = 0.0015;
+/// A guard only. Each duplication divides the spread of the arguments about their mean by
+/// exactly 4, while the mean falls towards R^−2 (R^−2/3 for R_D, R_J): the steps needed grow as
+/// log₄ of the initial spread over that limit, about 13 for R_F(0, 1e-300, 1) and under 40
+/// for anything in the double range.
 const MAX_STEPS: usize = 200;
 
-/// The power of 4 that brings `max` (the largest argument, > 0) into [¼, 1): returns `h` with
-/// `max · 4^(−h) ∈ [¼, 1)`; 0 when no scaling is needed (max within 2^±300).
+/// The power of 4 by which to divide the arguments: `h` with the arguments' exponents centred
+/// on 0 (their largest and smallest nonzero ones, `e_max` and `e_min`, become ≈ ±(e_max −
+/// e_min)/2), so that neither the square roots' products nor the terms 1/d of the duplication
+/// overflow or underflow for arguments up to 600 decades apart; kept within [−1000, 1000]
+/// after scaling. 0 (no scaling) when all arguments lie within 10^±90.
 #[inline]
-fn quarter_scale(max: f64) -> i32 {
-    if (1e-90..=1e90).contains(&max) {
-        0
-    } else {
-        (exponent(max) + 2).div_euclid(2)
+fn quarter_scale(args: &[f64]) -> i32 {
+    let max = args.iter().fold(0.0f64, |a, &b| a.max(b.abs()));
+    let min = args
+        .iter()
+        .filter(|v| **v != 0.0)
+        .fold(f64::INFINITY, |a, &b| a.min(b.abs()));
+    if max == 0.0 || ((1e-90..=1e90).contains(&max) && (1e-90..=1e90).contains(&min)) {
+        return 0;
     }
+    let (e_max, e_min) = (exponent(max), exponent(min));
+    let h = (e_max + e_min).div_euclid(4);
+    // Largest scaled exponent e_max − 2h at most 1000.
+    h.max((e_max - 1000).div_euclid(2) + 1)
 }
 
 /// R_C(1, 1 + e) for e > −1: `atan(√e)/√e`, `atanh(√−e)/√−e`, or its Maclaurin series
-/// `1 − e/3 + e²/5 − …` for |e| < 1e-3 (7 terms: the first neglected, e⁷/15, is < 1e-22).
+/// `1 − e/3 + e²/5 − …` for |e| < 0.01 (10 terms: the first neglected, e¹⁰/21, is < 5e-22).
 #[inline]
 fn rc1p(e: f64) -> f64 {
-    if e.abs() < 1e-3 {
-        1.0 + e
-            * (-1.0 / 3.0
-                + e * (1.0 / 5.0
-                    + e * (-1.0 / 7.0 + e * (1.0 / 9.0 + e * (-1.0 / 11.0 + e * (1.0 / 13.0))))))
+    if e.abs() < 0.01 {
+        const C: [f64; 10] = [
+            1.0,
+            -1.0 / 3.0,
+            1.0 / 5.0,
+            -1.0 / 7.0,
+            1.0 / 9.0,
+            -1.0 / 11.0,
+            1.0 / 13.0,
+            -1.0 / 15.0,
+            1.0 / 17.0,
+            -1.0 / 19.0,
+        ];
+        C.iter().rev().fold(0.0, |acc, &c| acc * e + c)
     } else if e > 0.0 {
         let r = e.sqrt();
         r.atan() / r
@@ -63,29 +86,40 @@ pub(crate) fn rc(x: f64, y: f64) -> f64 {
         // DLMF 19.2.20: R_C(x, y) = (x/(x − y))^½ R_C(x − y, −y).
         return (x / (x - y)).sqrt() * rc(x - y, -y);
     }
-    let h = quarter_scale(x.max(y));
+    let h = quarter_scale(&[x, y]);
     let (x, y) = (ldexp(x, -2 * h), ldexp(y, -2 * h));
     let value = if x == 0.0 {
         std::f64::consts::FRAC_PI_2 / y.sqrt()
     } else {
-        // R_C(x, y) = x^−½ R_C(1, y/x).
-        rc1p(y / x - 1.0) / x.sqrt()
+        let e = y / x - 1.0;
+        if e.abs() < 1e-3 {
+            // R_C(x, y) = x^−½ R_C(1, y/x), by its series near y = x.
+            rc1p(e) / x.sqrt()
+        } else if y > x {
+            // DLMF 19.2.18; √((y − x)/x) may overflow for x ≪ y: atan(∞) = π/2.
+            ((y - x) / x).sqrt().atan() / (y - x).sqrt()
+        } else {
+            // DLMF 19.2.19.
+            ((x - y) / x).sqrt().atanh() / (x - y).sqrt()
+        }
     };
     ldexp(value, -h)
 }
 
 /// R_F(x, y, z) = ½∫₀^∞ ((t + x)(t + y)(t + z))^−½ dt (DLMF 19.16.1).
 pub(crate) fn rf(x: f64, y: f64, z: f64) -> f64 {
-    let h = quarter_scale(x.max(y).max(z));
+    let h = quarter_scale(&[x, y, z]);
     let (mut x, mut y, mut z) = if h == 0 {
         (x, y, z)
     } else {
         (ldexp(x, -2 * h), ldexp(y, -2 * h), ldexp(z, -2 * h))
     };
     let mut a = (x + y + z) / 3.0;
+    // The spread about the mean shrinks by exactly 4 per duplication: track it, and stop when
+    // it falls below TOL_F of the (falling) mean.
+    let mut q = (a - x).abs().max((a - y).abs()).max((a - z).abs()) / TOL_F;
     for _ in 0..MAX_STEPS {
-        let spread = (a - x).abs().max((a - y).abs()).max((a - z).abs());
-        if spread <= TOL_F * a {
+        if q <= a {
             break;
         }
         let (sx, sy, sz) = (x.sqrt(), y.sqrt(), z.sqrt());
@@ -94,6 +128,7 @@ pub(crate) fn rf(x: f64, y: f64, z: f64) -> f64 {
         y = 0.25 * (y + lambda);
         z = 0.25 * (z + lambda);
         a = 0.25 * (a + lambda);
+        q *= 0.25;
     }
     // Carlson (1995) eq. (2.2)-(2.3), with X = 1 − x/A etc.
     let dx = (a - x) / a;
@@ -110,7 +145,7 @@ pub(crate) fn rf(x: f64, y: f64, z: f64) -> f64 {
 /// R_D(x, y, z) = R_J(x, y, z, z) = (3/2)∫₀^∞ ((t + x)(t + y))^−½ (t + z)^−3/2 dt, z > 0
 /// (DLMF 19.16.5).
 pub(crate) fn rd(x: f64, y: f64, z: f64) -> f64 {
-    let h = quarter_scale(x.max(y).max(z));
+    let h = quarter_scale(&[x, y, z]);
     let (mut x, mut y, mut z) = if h == 0 {
         (x, y, z)
     } else {
@@ -119,11 +154,12 @@ pub(crate) fn rd(x: f64, y: f64, z: f64) -> f64 {
     let mut a = (x + y + 3.0 * z) / 5.0;
     let mut sum = 0.0;
     let mut fac = 1.0;
+    let mut q = (a - x).abs().max((a - y).abs()).max((a - z).abs()) / TOL_DJ;
     for _ in 0..MAX_STEPS {
-        let spread = (a - x).abs().max((a - y).abs()).max((a - z).abs());
-        if spread <= TOL_DJ * a {
+        if q <= a {
             break;
         }
+        q *= 0.25;
         let (sx, sy, sz) = (x.sqrt(), y.sqrt(), z.sqrt());
         let lambda = sx * (sy + sz) + sy * sz;
         sum += fac / (sz * (z + lambda));
@@ -156,7 +192,7 @@ pub(crate) fn rj(x: f64, y: f64, z: f64, p: f64) -> f64 {
     if p < 0.0 {
         return rj_principal_value(x, y, z, -p);
     }
-    let h = quarter_scale(x.max(y).max(z).max(p));
+    let h = quarter_scale(&[x, y, z, p]);
     let (mut x, mut y, mut z, mut p) = if h == 0 {
         (x, y, z, p)
     } else {
@@ -173,15 +209,17 @@ pub(crate) fn rj(x: f64, y: f64, z: f64, p: f64) -> f64 {
     let (mut dx0, mut dy0, mut dz0) = (p - x, p - y, p - z);
     let mut sum = 0.0;
     let mut fac = 1.0;
+    let mut q = (a - x)
+        .abs()
+        .max((a - y).abs())
+        .max((a - z).abs())
+        .max((a - p).abs())
+        / TOL_DJ;
     for _ in 0..MAX_STEPS {
-        let spread = (a - x)
-            .abs()
-            .max((a - y).abs())
-            .max((a - z).abs())
-            .max((a - p).abs());
-        if spread <= TOL_DJ * a {
+        if q <= a {
             break;
         }
+        q *= 0.25;
         let (sx, sy, sz, sp) = (x.sqrt(), y.sqrt(), z.sqrt(), p.sqrt());
         let lambda = sx * (sy + sz) + sy * sz;
         let (ax, ay, az) = (sp + sx, sp + sy, sp + sz);
@@ -226,7 +264,7 @@ fn rj_principal_value(x: f64, y: f64, z: f64, q: f64) -> f64 {
     let mut v = [x, y, z];
     v.sort_by(f64::total_cmp);
     let [x, y, z] = v;
-    let h = quarter_scale(z.max(q));
+    let h = quarter_scale(&[x, y, z, q]);
     let (x, y, z, q) = (
         ldexp(x, -2 * h),
         ldexp(y, -2 * h),

@@ -24,7 +24,7 @@
 //!   `Π = −(m/(3n)) R_J(0, m₁, 1, 1 − m/n)` for n > 1 (19.6.5 with 19.25.2).
 //!
 //! For `|φ| > 2⁵²π` (where a double φ no longer resolves its position within a period) the
-//! incomplete integrals are `(φ/π) X_complete`, exact to ≤ 1 part in 2⁵² of the value.
+//! incomplete integrals are `(2φ/π) X_complete`, exact to ≤ 1 part in 2⁵² of the value.
 //!
 //! Errors name the argument at fault (`phi`, `n`, `m` or `mc`) and say why: a divergent
 //! integral (`K(1)`, `Π(1 | m)`, `F(φ | 1)` past π/2, `n sin²φ = 1`), or a value beyond the
@@ -36,7 +36,7 @@ use std::f64::consts::PI;
 
 /// The low part of π in double-double (π = PI + PI_LO to 2⁻¹⁰⁷).
 const PI_LO: f64 = 1.224_646_799_147_353_2e-16;
-/// Beyond |φ| = 2⁵²π the incomplete integrals are taken as (φ/π)·X_complete: the neglected
+/// Beyond |φ| = 2⁵²π the incomplete integrals are taken as (2φ/π)·X_complete: the neglected
 /// part, X(r) − (2r/π)X_complete with |r| ≤ π/2, is at most |X_complete|, a fraction ≤ 2⁻⁵²
 /// of the value.
 const PHI_LINEAR: f64 = 4_503_599_627_370_496.0 * PI;
@@ -255,6 +255,22 @@ fn pi_reduced(n: f64, s: f64, c: f64, delta: f64, f: f64, p: Param) -> Result<f6
     Ok(value)
 }
 
+/// Π(n | m) from m and its complement m₁ (for callers that know m₁ better than 1 − m): the
+/// same forms as [`ellippi`] (positive terms only for n < 0).
+pub(crate) fn pi_complete_split(n: f64, m: f64, mc: f64) -> Result<f64> {
+    pi_complete(n, Param { m, mc })
+}
+
+/// Π(n; r | m) on |r| ≤ π/2 from s = |sin r|, c = cos r ≥ 0 and Δ = (1 − m s²)^½ (a dn), with
+/// the complement m₁: the forms of [`ellippiinc`] (positive terms only for n < 0).
+pub(crate) fn pi_reduced_split(n: f64, s: f64, c: f64, delta: f64, m: f64, mc: f64) -> Result<f64> {
+    if s == 0.0 {
+        return Ok(0.0);
+    }
+    let f = s * rf_cd(c, delta);
+    pi_reduced(n, s, c, delta, f, Param { m, mc })
+}
+
 /// The complete value that one period π of φ adds, twice: X(φ + π) = X(φ) + 2 X_complete.
 fn complete(kind: Kind, p: Param) -> Result<f64> {
     match kind {
@@ -274,7 +290,7 @@ fn incomplete(kind: Kind, phi: f64, p: Param) -> Result<f64> {
     };
     if phi.abs() > PHI_LINEAR {
         let whole = complete(kind, p).map_err(|e| diverges_past_half_pi(kind, phi, e))?;
-        return finite_result("phi", name, (phi / PI) * whole);
+        return finite_result("phi", name, 2.0 * (phi / PI) * whole);
     }
     let mut j = (phi / PI).round();
     let mut r = (-j).mul_add(PI, phi) - j * PI_LO;

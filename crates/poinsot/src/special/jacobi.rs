@@ -8,7 +8,9 @@
 //! Method (accurate to a few ulp, relative, uniformly in `0 ≤ m ≤ 1`):
 //! 1. argument reduction `u = 2K·j + r`, `|r| ≤ K`, with the quarter period `K(m)` computed by
 //!    the arithmetic–geometric mean in double-double arithmetic, so the reduction adds no error
-//!    beyond the representation of `u` even for `|u| ≫ K` (`sn(u + 2K) = −sn u`,
+//!    beyond the representation of `u` for `|u|` up to 2⁵⁰K ([`Jacobi::max_argument`]; beyond
+//!    it consecutive doubles are more than K/8 apart and the checked functions refuse `u`)
+//!    (`sn(u + 2K) = −sn u`,
 //!    `cn(u + 2K) = −cn u`, `dn(u + 2K) = dn u`, `am(u + 2K) = am u + π`; DLMF 22.4.3);
 //! 2. parity (`sn`, `am` odd; `cn`, `dn` even) to `0 ≤ x ≤ K`, then the quarter-period shift
 //!    `sn(K − v) = cd v`, `cn(K − v) = m₁^½ sd v`, `dn(K − v) = m₁^½ nd v` to evaluate only
@@ -220,7 +222,10 @@ impl Jacobi {
         (j, r)
     }
 
-    /// sn, cn, dn and am at `u` (any finite real).
+    /// sn, cn, dn and am at `u` (any finite real). Accurate to a few ulp up to
+    /// [`Jacobi::max_argument`]; beyond it only relative to the conditioning (the exact values
+    /// at an argument within a few ulp of u, which is no longer meaningful): prefer
+    /// [`Jacobi::eval_checked`] for arguments from outside.
     pub fn eval(&self, u: f64) -> JacobiValues {
         if self.m == 0.0 {
             let (s, c) = u.sin_cos();

@@ -9,7 +9,7 @@
 pub(crate) mod carlson;
 mod dd;
 pub(crate) mod fp;
-mod integrals;
+pub(crate) mod integrals;
 mod jacobi;
 
 pub use integrals::{
