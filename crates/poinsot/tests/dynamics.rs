@@ -714,3 +714,47 @@ fn divergence_stops_with_the_time() {
         assert!(e.message.contains("t = "), "{e}");
     }
 }
+
+#[test]
+fn the_exact_flow_refuses_a_duration_past_its_phase_limit_naming_duration() {
+    // Issue 10, item 1.4: `poinsot free ... --duration 1e308` printed NaN. The exact flow now
+    // refuses times past FreeRigidBody::max_time, and simulate names its own argument.
+    let inertia = BodyInertia::from_moments(I123).unwrap();
+    let o = SimulateOptions {
+        method: Method::Exact,
+        samples: 3,
+        ..SimulateOptions::default()
+    };
+    for d in [1e308, 1e13] {
+        let e = simulate(&inertia, w0(), None, d, &mut Torque::None, &o, &mut |_| {}).unwrap_err();
+        assert_eq!(e.argument, "duration", "{d}: {e}");
+    }
+    let e = simulate_batch(
+        &[I123],
+        &[[1.0, 0.1, 1.0]],
+        None,
+        1e308,
+        &Torque::None,
+        Method::Exact,
+        None,
+    )
+    .unwrap_err();
+    assert_eq!(e.argument, "duration", "{e}");
+    // Inside the limit the run is finite.
+    let tr = simulate(
+        &inertia,
+        w0(),
+        None,
+        1e9,
+        &mut Torque::None,
+        &o,
+        &mut |_| {},
+    )
+    .unwrap();
+    assert!(tr
+        .omega
+        .iter()
+        .flatten()
+        .chain(tr.attitude.iter().flatten())
+        .all(|x| x.is_finite()));
+}

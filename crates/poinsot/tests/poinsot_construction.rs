@@ -4,7 +4,7 @@
 //! The references are the definitions (ρ·I·ρ = 1, ρ·L̂ = d, I ρ ∥ L) evaluated independently of
 //! the construction's code, and a finite difference of the attitude for the rolling.
 
-use poinsot::analytic::FreeRigidBody;
+use poinsot::analytic::{axis_stability, FreeRigidBody};
 use poinsot::rotation::quaternion_to_matrix;
 use poinsot::{Mat3, Vec3};
 use proptest::prelude::*;
@@ -192,5 +192,53 @@ fn perturbations_down_to_subnormal_give_a_finite_motion() {
                 }
             }
         }
+    }
+}
+
+#[test]
+fn the_construction_holds_at_the_edges_of_the_double_range() {
+    // Moments × 2^j and ω × 2^k (j, k up to ±1000): the contact point, the plane's distance and
+    // normal are computed at unit scale, so the conditions hold to round-off wherever the body
+    // is; on the old main T or |L| over/underflowed and the contact point came out 0, inf or NaN.
+    let (m0, w0) = ([1.0, 2.0, 3.0], Vec3::new(1.0, 0.1, 1.0));
+    let unit = FreeRigidBody::new(m0, w0, None).unwrap();
+    for j in [-1000, -500, 0, 500, 1000] {
+        for k in [-1000, -520, 0, 520, 1000] {
+            let (sj, sk) = (2f64.powi(j), 2f64.powi(k));
+            let body = FreeRigidBody::new(m0.map(|m| m * sj), w0 * sk, None).unwrap();
+            let i = inertia(body.moments());
+            let n = body.invariable_plane_normal();
+            let d = body.invariable_plane_distance();
+            // d = (2T)^½/|L| scales as σ^-½ (the inertia ellipsoid's size).
+            let want_d = unit.invariable_plane_distance() * 2f64.powi(-j / 2);
+            assert!((d / want_d - 1.0).abs() < 1e-15, "2^{j}, 2^{k}: {d:e}");
+            for t in [0.0, 0.7, 31.0] {
+                let rho_b = body.contact_point_body(t / sk).unwrap();
+                let rho_s = body.contact_point(t / sk).unwrap();
+                let on_ellipsoid = rho_b.dot(&(i * rho_b)) - 1.0;
+                let on_plane = rho_s.dot(&n) / d - 1.0;
+                assert!(
+                    on_ellipsoid.abs() < CONTACT_TOL && on_plane.abs() < CONTACT_TOL,
+                    "2^{j}, 2^{k}, t = {t}: {on_ellipsoid:e} {on_plane:e}"
+                );
+            }
+            // The polhode on the ellipsoid: the same points as the unit body's, scaled by σ^-½.
+            let p = body.contact_polhode(5).unwrap();
+            let q = unit.contact_polhode(5).unwrap();
+            for (a, b) in p.iter().zip(&q) {
+                assert!((a * 2f64.powi(j / 2) - b).norm() < 1e-14 * b.norm());
+            }
+        }
+    }
+    // The stability rates never exceed |spin| and do not overflow (spin² did).
+    for spin in [1e-300f64, 1.0, 1e200, -1.7e308] {
+        let s = axis_stability([1.0, 2.0, 3.0], spin).unwrap();
+        let sigma = spin.abs() * (1.0f64 / 3.0).sqrt();
+        assert!(
+            (s[1].rate / sigma - 1.0).abs() < 1e-15,
+            "{spin}: {:?}",
+            s[1]
+        );
+        assert!(s.iter().all(|a| a.rate.is_finite() && a.rate <= spin.abs()));
     }
 }
