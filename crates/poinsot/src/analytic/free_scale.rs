@@ -81,12 +81,11 @@ impl Scale {
             return Err(Error::invalid(
                 "t",
                 format!(
-                    "|t| = {:.6e} s is beyond {:.6e} s, the time in which this motion turns \
-                     through 2^42 ≈ 4.4e12 rad: past it the phase of ω(t) and of the attitude, \
+                    "the time {t:.6e} s lies beyond ±{:.6e} s, in which this motion turns \
+                     through 2^42 ≈ 4.4e12 rad: past that the phase of ω(t) and of the attitude, \
                      carried in double precision, is uncertain by more than ~1e-3 rad (and by \
                      ~10^16 rad it is lost entirely: one ulp of t then moves the body by more \
                      than a radian)",
-                    t.abs(),
                     self.t_max
                 ),
             ));

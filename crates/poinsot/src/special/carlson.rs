@@ -29,7 +29,9 @@ const TOL_DJ: f64 = 0.0015;
 /// exactly 4, while the mean falls towards R^−2 (R^−2/3 for R_D, R_J): the steps needed grow as
 /// log₄ of the initial spread over that limit, about 13 for R_F(0, 1e-300, 1) and under 40
 /// for anything in the double range.
-const MAX_STEPS: usize = 200;
+const MAX_STEPS: usize = 1100;
+/// Below this weight 4^−m the duplication of R_J rescales its arguments (see [`rj_scaled`]).
+const RESCALE_BELOW: f64 = 3.054936363499605e-151; // 2^-500
 
 /// The power of 4 by which to divide the arguments: `h` with the arguments' exponents centred
 /// on 0 (their largest and smallest nonzero ones, `e_max` and `e_min`, become ≈ ±(e_max −
@@ -79,6 +81,36 @@ fn rc1p(e: f64) -> f64 {
     }
 }
 
+/// ρ = (r₁ + r₂ + r₃ + r₁r₂r₃)/(1 + r₁r₂ + r₂r₃ + r₃r₁) for rᵢ ≥ 0, without overflow: numerator
+/// and denominator divided by r_max · max(1, r_mid).
+#[inline]
+fn carlson_rho(a: f64, b: f64, c: f64) -> f64 {
+    let mut r = [a, b, c];
+    r.sort_by(f64::total_cmp);
+    let [r1, r2, r3] = r;
+    if r3 == 0.0 {
+        return 0.0;
+    }
+    let scale = r3 * r2.max(1.0);
+    let m2 = r2.max(1.0);
+    let num = (r1 + r2 + r3) / scale + r1 * (r2 / m2);
+    let den = 1.0 / scale + r1 * (r2 / scale) + (r1 + r2) / m2;
+    num / den
+}
+
+/// R_C(1, 1 + e) for e = (1 − ρ)/(1 + ρ), ρ ≥ 0, with 1 + e = 2/(1 + ρ) exact to a few ulp
+/// where e → −1 (ρ → ∞): there R_C = atanh(√−e)/√−e = ln((1 + √−e)/√(1 + e))/√−e.
+#[inline]
+fn rc1p_rho(rho: f64) -> f64 {
+    let e = (1.0 - rho) / (1.0 + rho);
+    if e >= -0.5 {
+        return rc1p(e);
+    }
+    let s = (-e).sqrt();
+    let one_plus_e = 2.0 / (1.0 + rho);
+    ((1.0 + s) / one_plus_e.sqrt()).ln() / s
+}
+
 /// R_C(x, y) = ½∫₀^∞ (t + x)^−½ (t + y)^−1 dt for x ≥ 0, y ≠ 0 (the Cauchy principal value for
 /// y < 0, DLMF 19.2.20).
 pub(crate) fn rc(x: f64, y: f64) -> f64 {
@@ -99,8 +131,10 @@ pub(crate) fn rc(x: f64, y: f64) -> f64 {
             // DLMF 19.2.18; √((y − x)/x) may overflow for x ≪ y: atan(∞) = π/2.
             ((y - x) / x).sqrt().atan() / (y - x).sqrt()
         } else {
-            // DLMF 19.2.19.
-            ((x - y) / x).sqrt().atanh() / (x - y).sqrt()
+            // DLMF 19.2.19, atanh s = ln((1 + s)/√(1 − s²)) with 1 − s² = y/x taken as it
+            // is: atanh of s = √(1 − y/x) rounded to 1 would be infinite for y ≪ x.
+            let s = ((x - y) / x).sqrt();
+            ((1.0 + s) / (y / x).sqrt()).ln() / (x - y).sqrt()
         }
     };
     ldexp(value, -h)
@@ -192,6 +226,28 @@ pub(crate) fn rj(x: f64, y: f64, z: f64, p: f64) -> f64 {
     if p < 0.0 {
         return rj_principal_value(x, y, z, -p);
     }
+    rj_scaled(x, y, z, p, 0)
+}
+
+/// w R_J(x, y, z, p), the power of two of w applied last (for p > 0; a principal value
+/// otherwise): finite wherever the product is, even where R_J alone is not a normal double.
+pub(crate) fn times_rj(w: f64, x: f64, y: f64, z: f64, p: f64) -> f64 {
+    if w == 0.0 || !w.is_finite() {
+        return w * rj(x, y, z, p);
+    }
+    if p < 0.0 {
+        return w * rj(x, y, z, p);
+    }
+    let e = exponent(w);
+    ldexp(w, -e) * rj_scaled(x, y, z, p, e)
+}
+
+/// 2^k R_J(x, y, z, p) for p > 0, the power of two applied last: for a product w R_J whose
+/// factors leave the double range on their own (w = 2^k × its mantissa). NaN where the
+/// duplication cannot be carried out in double precision (arguments so far apart that the
+/// product of their square roots overflows, or no convergence within `MAX_STEPS`): callers turn
+/// it into an error naming their argument, never a number.
+pub(crate) fn rj_scaled(x: f64, y: f64, z: f64, p: f64, k: i32) -> f64 {
     let h = quarter_scale(&[x, y, z, p]);
     let (mut x, mut y, mut z, mut p) = if h == 0 {
         (x, y, z, p)
@@ -204,9 +260,6 @@ pub(crate) fn rj(x: f64, y: f64, z: f64, p: f64) -> f64 {
         )
     };
     let mut a = (x + y + z + 2.0 * p) / 5.0;
-    // The differences p − x, p − y, p − z once, then × 4^(−m) (no cancellation as the
-    // arguments merge; Carlson's δ = their product).
-    let (mut dx0, mut dy0, mut dz0) = (p - x, p - y, p - z);
     let mut sum = 0.0;
     let mut fac = 1.0;
     let mut q = (a - x)
@@ -215,8 +268,10 @@ pub(crate) fn rj(x: f64, y: f64, z: f64, p: f64) -> f64 {
         .max((a - z).abs())
         .max((a - p).abs())
         / TOL_DJ;
+    let mut converged = false;
     for _ in 0..MAX_STEPS {
         if q <= a {
+            converged = true;
             break;
         }
         q *= 0.25;
@@ -224,20 +279,41 @@ pub(crate) fn rj(x: f64, y: f64, z: f64, p: f64) -> f64 {
         let lambda = sx * (sy + sz) + sy * sz;
         let (ax, ay, az) = (sp + sx, sp + sy, sp + sz);
         let d = ax * ay * az;
-        // e = δ_m / d_m², as the product of three factors (p − x)/(√p + √x)² = (√p − √x)/
-        // (√p + √x), each at most 1 in magnitude: no overflow or underflow of δ or d² for
-        // arguments hundreds of decades apart.
-        let e = (dx0 / (ax * ax)) * (dy0 / (ay * ay)) * (dz0 / (az * az));
-        sum += fac * rc1p(e) / d;
+        // e = δ_m / d_m² = Π(√p − √xᵢ)/Π(√p + √xᵢ) = (1 − ρ)/(1 + ρ) with ρ = √α/√β of
+        // Carlson's older form, a ratio of sums of positive terms in rᵢ = √(xᵢ/p): so 1 + e =
+        // 2/(1 + ρ) keeps its digits where e → −1 (arguments hundreds of decades apart, where
+        // the product of the three factors (√p − √xᵢ)/(√p + √xᵢ) rounds to −1).
+        let rho = carlson_rho(sx / sp, sy / sp, sz / sp);
+        if !d.is_finite() {
+            return f64::NAN;
+        }
+        sum += fac * rc1p_rho(rho) / d;
         fac *= 0.25;
-        dx0 *= 0.25;
-        dy0 *= 0.25;
-        dz0 *= 0.25;
         x = 0.25 * (x + lambda);
         y = 0.25 * (y + lambda);
         z = 0.25 * (z + lambda);
         p = 0.25 * (p + lambda);
         a = 0.25 * (a + lambda);
+        if fac < RESCALE_BELOW {
+            // Hundreds of steps (arguments ~10^600 apart): 4^−m would underflow. R_J is
+            // homogeneous of degree −3/2, so the arguments × 4^K and fac × 8^K leave every
+            // later term fac/d and the remainder fac R_J(x, y, z, p) unchanged (exact powers
+            // of two), with the arguments kept below 2^600 (d below 2^903).
+            let top = x.max(y).max(z).max(p).max(a);
+            let kk = ((600 - exponent(top)) / 2).min(250);
+            if kk > 0 {
+                x = ldexp(x, 2 * kk);
+                y = ldexp(y, 2 * kk);
+                z = ldexp(z, 2 * kk);
+                p = ldexp(p, 2 * kk);
+                a = ldexp(a, 2 * kk);
+                q = ldexp(q, 2 * kk);
+                fac = ldexp(fac, 3 * kk);
+            }
+            if fac == 0.0 {
+                return f64::NAN;
+            }
+        }
     }
     // Carlson (1995) eq. (2.19).
     let dx = (a - x) / a;
@@ -254,7 +330,10 @@ pub(crate) fn rj(x: f64, y: f64, z: f64, p: f64) -> f64 {
         - 3.0 * e4 / 22.0
         - 9.0 * e2 * e3 / 52.0
         + 3.0 * e5 / 26.0;
-    ldexp(fac * series / (a * a.sqrt()) + 6.0 * sum, -3 * h)
+    if !converged {
+        return f64::NAN;
+    }
+    ldexp(fac * series / (a * a.sqrt()) + 6.0 * sum, k - 3 * h)
 }
 
 /// The principal value R_J(x, y, z, −q), q > 0 (DLMF 19.20.14 with x ≤ y ≤ z):

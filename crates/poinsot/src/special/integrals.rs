@@ -30,7 +30,7 @@
 //! integral (`K(1)`, `Π(1 | m)`, `F(φ | 1)` past π/2, `n sin²φ = 1`), or a value beyond the
 //! largest double. No value is ever returned as NaN or ±∞.
 
-use super::carlson::{rc, rd, rd_cd, rf, rf_cd, rj, rj_cd};
+use super::carlson::{rc, rd, rd_cd, rf, rf_cd, rj_cd, times_rj};
 use crate::error::{check_finite, Error, Result};
 use std::f64::consts::PI;
 
@@ -75,11 +75,35 @@ fn param_complement(mc: f64) -> Result<Param> {
 fn finite_result(argument: &str, what: &str, value: f64) -> Result<f64> {
     if value.is_finite() {
         Ok(value)
+    } else if value.is_nan() {
+        Err(unevaluable(argument, what))
     } else {
         Err(Error::invalid(
             argument,
             format!("{what} exceeds the largest double (1.8e308) here"),
         ))
+    }
+}
+
+/// Carlson's duplication could not be carried out in double precision: arguments hundreds of
+/// decades apart (see `carlson::rj_scaled`). Refused rather than returned inaccurate.
+fn unevaluable(argument: &str, what: &str) -> Error {
+    Error::invalid(
+        argument,
+        format!(
+            "{what} cannot be evaluated in double precision for arguments this many decades \
+             apart (Carlson's duplication would overflow or underflow); bring n and m closer \
+             to 1 in magnitude"
+        ),
+    )
+}
+
+/// The argument to blame for an integral that cannot be evaluated: the more extreme of n and m.
+fn extreme(n: f64, m: f64) -> &'static str {
+    if n.abs() > m.abs() {
+        "n"
+    } else {
+        "m"
     }
 }
 
@@ -122,14 +146,16 @@ fn pi_complete(n: f64, p: Param) -> Result<f64> {
     if n > 1.0 {
         // DLMF 19.6.5 with 19.25.2: the principal value −(m/(3n)) R_J(0, m₁, 1, 1 − m/n).
         let w = p.m / n;
-        return Ok(-w / 3.0 * rj(0.0, p.mc, 1.0, 1.0 - w));
+        // 1 − m/n as (n − m)/n: one rounding in n − m (exact near n = m), where 1 − w would
+        // carry the rounding of w relative to a difference of 2⁻³⁹ next to n = m = 1.
+        return Ok(times_rj(-w / 3.0, 0.0, p.mc, 1.0, (n - p.m) / n));
     }
     let k = rf(0.0, p.mc, 1.0);
     if n == 0.0 {
         return Ok(k);
     }
     if n > 0.0 {
-        return Ok(k + n / 3.0 * rj(0.0, p.mc, 1.0, one_minus(n)));
+        return Ok(k + times_rj(n / 3.0, 0.0, p.mc, 1.0, one_minus(n)));
     }
     // n < 0 (DLMF 19.21.12 with x = 0): K/(1 − n) + (−n/(1 − n))·(q/3) R_J(0, m₁, 1, q),
     // q = m₁/(1 − n); as q → 0, (q/3) R_J(0, m₁, 1, q) → √q R_C(q, m₁) = R_C(1, 1 − n)
@@ -140,7 +166,7 @@ fn pi_complete(n: f64, p: Param) -> Result<f64> {
     let term = if q < 1e-300 {
         rc(1.0, nc)
     } else {
-        q / 3.0 * rj(0.0, p.mc, 1.0, q)
+        times_rj(q / 3.0, 0.0, p.mc, 1.0, q)
     };
     Ok(k / nc + weight * term)
 }
@@ -161,7 +187,7 @@ pub fn ellipe(m: f64) -> Result<f64> {
 pub fn ellippi(n: f64, m: f64) -> Result<f64> {
     check_finite("n", &[n])?;
     let p = param(m)?;
-    pi_complete(n, p)
+    finite_result(extreme(n, m), "Π(n | m)", pi_complete(n, p)?)
 }
 
 /// Which Legendre integral.
@@ -190,7 +216,9 @@ fn reduced(kind: Kind, s_signed: f64, c: f64, p: Param) -> Result<f64> {
     let value = match kind {
         Kind::F => f,
         Kind::E => {
-            if p.mc == 0.0 {
+            if p.mc == 0.0 || (s < 1e-100 && p.m.abs() <= 1.0) {
+                // E(1) = sin φ; for tiny φ, E = s (1 + O(m s²)): the weighted sum below would
+                // round each half of a subnormal s away.
                 s
             } else if p.m > 0.0 {
                 p.mc * f + p.m * p.mc / 3.0 * s * s2 * rd_cd(c, delta) + p.m * s * (c / delta)
@@ -288,9 +316,27 @@ fn incomplete(kind: Kind, phi: f64, p: Param) -> Result<f64> {
         Kind::E => "E(φ | m)",
         Kind::Pi(_) => "Π(n; φ | m)",
     };
+    let blame = match kind {
+        Kind::Pi(n) => extreme(n, p.m),
+        _ => "m",
+    };
+    let settled = |v: f64| {
+        if v.is_nan() {
+            Err(unevaluable(blame, name))
+        } else {
+            Ok(v)
+        }
+    };
+    if matches!(kind, Kind::F | Kind::E)
+        && (p.m == 0.0 || (p.m.abs() < 1e-16 && phi.abs() > PHI_LINEAR))
+    {
+        // F(φ | 0) = E(φ | 0) = φ exactly; for |m| < 1e-16 the factor K/(π/2) = 1 + m/4 + …
+        // (E: 1 − m/4) rounds to 1, and φ up to the largest double stays representable.
+        return Ok(phi);
+    }
     if phi.abs() > PHI_LINEAR {
         let whole = complete(kind, p).map_err(|e| diverges_past_half_pi(kind, phi, e))?;
-        return finite_result("phi", name, 2.0 * (phi / PI) * whole);
+        return finite_result("phi", name, phi * (settled(whole)? / std::f64::consts::FRAC_PI_2));
     }
     let mut j = (phi / PI).round();
     let mut r = (-j).mul_add(PI, phi) - j * PI_LO;
@@ -301,12 +347,12 @@ fn incomplete(kind: Kind, phi: f64, p: Param) -> Result<f64> {
         r = (-j).mul_add(PI, phi) - j * PI_LO;
         (s, c) = r.sin_cos();
     }
-    let part = reduced(kind, s, c.max(0.0), p)?;
+    let part = settled(reduced(kind, s, c.max(0.0), p)?)?;
     if j == 0.0 {
-        return Ok(part);
+        return finite_result("phi", name, part);
     }
     let whole = complete(kind, p).map_err(|e| diverges_past_half_pi(kind, phi, e))?;
-    finite_result("phi", name, 2.0 * j * whole + part)
+    finite_result("phi", name, 2.0 * j * settled(whole)? + part)
 }
 
 /// A complete integral that diverges makes the incomplete one diverge once |φ| passes π/2:
