@@ -348,7 +348,8 @@ class FreeRigidBody:
 
     def angular_momentum_body(self, t: Any) -> FloatArray:
         """L(t) = I·ω(t) in body components (kg·m²/s), shape t.shape + (3,)."""
-        return self.omega(t) * self.moments
+        ts, shape = _times(t)
+        return np.asarray(self._core.angular_momentum_body(ts)).reshape(shape + (3,))
 
     def polhode(self, samples: int = 721) -> FloatArray:
         """``samples`` points of the polhode — ω over one period in body components (rad/s),

@@ -27,7 +27,8 @@ def jacobi(u: Any, m: float) -> tuple[FloatArray, FloatArray, FloatArray, FloatA
 
 
 def ellipk(m: float) -> float:
-    """K(m), the complete elliptic integral of the first kind (m < 1; inf at m = 1)."""
+    """K(m), the complete elliptic integral of the first kind (m < 1; it diverges at m = 1,
+    where a ``PoinsotError`` names ``m``)."""
     return float(_core.special_elliptic("K", 0.0, 0.0, as_scalar(m, "m")))
 
 

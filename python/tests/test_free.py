@@ -235,3 +235,77 @@ def test_bad_symmetric_top():
         FreeSymmetricTop(1.0, 1.5, [0, 0, 0])
     with pytest.raises(ValueError):  # PoinsotError is a ValueError
         FreeSymmetricTop(1.0, 1.5, [np.nan, 0, 0])
+
+
+# --- The edges of the range (issue 10, items 1.2, 1.4, 1.7) ------------------------------------
+
+
+@pytest.mark.parametrize("s", [1e-170, 1e-160, 1e154, 1e160, 1e200, 1e300])
+def test_extreme_scales_give_the_unit_motion(s):
+    # ω(t; sω₀) = s ω(st; ω₀): 1e-160 was 5e-4 wrong, 1e-170 refused as zero, 1e154 named the
+    # internal mc, 1e160 and beyond asked to be reported as a bug. Rounding sω₀ moves the phase
+    # by ~ε per radian turned (≈ 30 rad at t = 10).
+    unit = FreeRigidBody([1.0, 2.0, 3.0], [1.0, 0.1, 1.0])
+    body = FreeRigidBody([1.0, 2.0, 3.0], np.array([1.0, 0.1, 1.0]) * s)
+    w, q = body.state(10.0 / s)
+    w1, q1 = unit.state(10.0)
+    assert np.linalg.norm(w / s - w1) <= 1e-13 * np.linalg.norm(w1)
+    assert qdist(q, q1) <= 1e-13
+
+
+@pytest.mark.parametrize("sigma", [1e-300, 1e-200, 1e200, 1e300])
+def test_moments_at_any_scale_give_the_same_motion(sigma):
+    unit = FreeRigidBody([1.0, 2.0, 3.0], [1.0, 0.1, 1.0])
+    body = FreeRigidBody(np.array([1.0, 2.0, 3.0]) * sigma, [1.0, 0.1, 1.0])
+    np.testing.assert_allclose(body.omega(7.5), unit.omega(7.5), rtol=1e-13, atol=1e-14)
+    assert body.energy == pytest.approx(unit.energy * sigma, rel=1e-14)
+
+
+@settings(max_examples=60, deadline=None)
+@given(k=st.integers(-1000, 1000), t=st.floats(-50, 50))
+def test_scale_invariance_is_exact_for_powers_of_two(k, t):
+    unit = FreeRigidBody([1.0, 2.0, 3.0], [1.0, 0.1, 1.0])
+    s = 2.0**k
+    body = FreeRigidBody([1.0, 2.0, 3.0], np.array([1.0, 0.1, 1.0]) * s)
+    w, q = body.state(t / s)
+    w1, q1 = unit.state(t)
+    np.testing.assert_array_equal(w, w1 * s)
+    np.testing.assert_array_equal(q, q1)
+
+
+def test_unrepresentable_values_are_refused_by_name():
+    body = FreeRigidBody([1.0, 2.0, 3.0], np.array([1.0, 0.1, 1.0]) * 1e160)
+    with pytest.raises(poinsot.PoinsotError, match="^omega0: the kinetic energy"):
+        body.energy  # noqa: B018  (T ≈ 2e320 J is not a double)
+    assert np.all(np.isfinite(body.omega([0.0, 1e-160])))
+    with pytest.raises(poinsot.PoinsotError, match="^omega0: "):
+        FreeRigidBody([1.0, 2.0, 3.0], [1e-310, 0.0, 0.0])
+    # L = I ω is formed in the core: refused, not inf, where it leaves the double range.
+    huge = FreeRigidBody([1e300, 2e300, 3e300], [1e10, 1e9, 1e10])
+    with pytest.raises(poinsot.PoinsotError, match="^omega0: the angular momentum"):
+        huge.angular_momentum_body(0.0)
+
+
+def test_times_past_the_phase_limit_are_refused_naming_t():
+    # state(1e308) gave a NaN attitude. The limit is 2^42 rad at the fastest rate.
+    body = FreeRigidBody([1.0, 2.0, 3.0], [1.0, 0.1, 1.0])
+    for method in (body.state, body.omega, body.attitude, body.herpolhode, body.contact_point):
+        with pytest.raises(poinsot.PoinsotError, match="^t: "):
+            method(1e308)
+    w, q = body.state(1e12)
+    assert np.all(np.isfinite(w)) and np.all(np.isfinite(q))
+    top = FreeSymmetricTop(2.0, 1.0, [0.3, 0.4, 2.0])
+    with pytest.raises(poinsot.PoinsotError, match="^t: "):
+        top.attitude(1e308)
+
+
+def test_energy_momentum_formulas_check_their_arguments():
+    # omega3_squared_from(1, 2, 100, 1) returned -99.5; NaN went through; I1 = I3 gave inf.
+    with pytest.raises(poinsot.PoinsotError, match="^angular_momentum: no motion"):
+        FreeSymmetricTop.omega3_squared_from(1.0, 2.0, 100.0, 1.0)
+    with pytest.raises(poinsot.InvalidInertiaError, match="^I1: "):
+        FreeSymmetricTop.omega3_squared_from(float("nan"), 2.0, 1.0, 1.0)
+    with pytest.raises(poinsot.InvalidInertiaError, match="^I3: must differ"):
+        FreeSymmetricTop.amplitude_squared_from(1.0, 1.0, 1.0, 1.0)
+    with pytest.raises(poinsot.PoinsotError, match="^energy: "):
+        FreeSymmetricTop.amplitude_squared_from(1.0, 2.0, -1.0, 1.0)

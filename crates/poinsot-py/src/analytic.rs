@@ -81,16 +81,16 @@ impl PySymmetricTop {
         self.inner.omega_magnitude()
     }
     #[getter]
-    fn energy(&self) -> f64 {
-        self.inner.energy()
+    fn energy(&self) -> PyResult<f64> {
+        self.inner.energy().py()
     }
     #[getter]
-    fn angular_momentum_magnitude(&self) -> f64 {
-        self.inner.angular_momentum_magnitude()
+    fn angular_momentum_magnitude(&self) -> PyResult<f64> {
+        self.inner.angular_momentum_magnitude().py()
     }
     #[getter]
-    fn angular_momentum<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        vec3_out(py, a3(&self.inner.angular_momentum()))
+    fn angular_momentum<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        Ok(vec3_out(py, a3(&self.inner.angular_momentum().py()?)))
     }
     #[getter]
     fn body_cone_angle(&self) -> f64 {
@@ -118,10 +118,11 @@ impl PySymmetricTop {
         py: Python<'py>,
         t: PyReadonlyArray1<'py, f64>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let rows: Vec<[f64; 3]> = times_in(&t)?
+        let rows = times_in(&t)?
             .iter()
-            .map(|&t| a3(&self.inner.omega(t)))
-            .collect();
+            .map(|&t| self.inner.omega(t).map(|w| a3(&w)))
+            .collect::<poinsot::Result<Vec<[f64; 3]>>>()
+            .py()?;
         Ok(rows_out(py, &rows))
     }
     /// Attitudes at times t (N,) → (N, 4) [w, x, y, z].
@@ -130,10 +131,11 @@ impl PySymmetricTop {
         py: Python<'py>,
         t: PyReadonlyArray1<'py, f64>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let rows: Vec<[f64; 4]> = times_in(&t)?
+        let rows = times_in(&t)?
             .iter()
             .map(|&t| self.inner.attitude(t))
-            .collect();
+            .collect::<poinsot::Result<Vec<[f64; 4]>>>()
+            .py()?;
         Ok(rows_out(py, &rows))
     }
     /// The symmetry axis in space at times t (N,) → (N, 3).
@@ -142,21 +144,22 @@ impl PySymmetricTop {
         py: Python<'py>,
         t: PyReadonlyArray1<'py, f64>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let rows: Vec<[f64; 3]> = times_in(&t)?
+        let rows = times_in(&t)?
             .iter()
-            .map(|&t| a3(&self.inner.symmetry_axis(t)))
-            .collect();
+            .map(|&t| self.inner.symmetry_axis(t).map(|v| a3(&v)))
+            .collect::<poinsot::Result<Vec<[f64; 3]>>>()
+            .py()?;
         Ok(rows_out(py, &rows))
     }
     /// ω₃² from T and |L| (2.95).
     #[staticmethod]
-    fn omega3_squared_from(i1: f64, i3: f64, energy: f64, l: f64) -> f64 {
-        FreeSymmetricTop::omega3_squared_from(i1, i3, energy, l)
+    fn omega3_squared_from(i1: f64, i3: f64, energy: f64, l: f64) -> PyResult<f64> {
+        FreeSymmetricTop::omega3_squared_from(i1, i3, energy, l).py()
     }
     /// A² from T and |L| (2.96).
     #[staticmethod]
-    fn amplitude_squared_from(i1: f64, i3: f64, energy: f64, l: f64) -> f64 {
-        FreeSymmetricTop::amplitude_squared_from(i1, i3, energy, l)
+    fn amplitude_squared_from(i1: f64, i3: f64, energy: f64, l: f64) -> PyResult<f64> {
+        FreeSymmetricTop::amplitude_squared_from(i1, i3, energy, l).py()
     }
 }
 
@@ -183,12 +186,12 @@ impl PyFreeBody {
         })
     }
     #[getter]
-    fn energy(&self) -> f64 {
-        self.inner.energy()
+    fn energy(&self) -> PyResult<f64> {
+        self.inner.energy().py()
     }
     #[getter]
-    fn angular_momentum<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        vec3_out(py, a3(&self.inner.angular_momentum()))
+    fn angular_momentum<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        Ok(vec3_out(py, a3(&self.inner.angular_momentum().py()?)))
     }
     #[getter]
     fn regime(&self) -> &'static str {
@@ -199,16 +202,16 @@ impl PyFreeBody {
         self.inner.parameter()
     }
     #[getter]
-    fn frequency(&self) -> f64 {
-        self.inner.frequency()
+    fn frequency(&self) -> PyResult<f64> {
+        self.inner.frequency().py()
     }
     #[getter]
-    fn period(&self) -> f64 {
-        self.inner.period()
+    fn period(&self) -> PyResult<f64> {
+        self.inner.period().py()
     }
     #[getter]
-    fn flip_interval(&self) -> f64 {
-        self.inner.flip_interval()
+    fn flip_interval(&self) -> PyResult<f64> {
+        self.inner.flip_interval().py()
     }
     #[getter]
     fn pole_axis(&self) -> Option<usize> {
@@ -230,7 +233,8 @@ impl PyFreeBody {
             py.detach(|| self.inner.sample(&times))
         } else {
             self.inner.sample(&times)
-        };
+        }
+        .py()?;
         Ok((rows_out(py, &w), rows_out(py, &q)))
     }
     /// ω in space components at times t (N,) → (N, 3) (the herpolhode).
@@ -239,10 +243,24 @@ impl PyFreeBody {
         py: Python<'py>,
         t: PyReadonlyArray1<'py, f64>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let rows: Vec<[f64; 3]> = times_in(&t)?
+        let rows = times_in(&t)?
             .iter()
-            .map(|&t| a3(&self.inner.omega_space(t)))
-            .collect();
+            .map(|&t| self.inner.omega_space(t).map(|v| a3(&v)))
+            .collect::<poinsot::Result<Vec<[f64; 3]>>>()
+            .py()?;
+        Ok(rows_out(py, &rows))
+    }
+    /// L(t) = I·ω(t) in body components at times t (N,) → (N, 3).
+    fn angular_momentum_body<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let rows = times_in(&t)?
+            .iter()
+            .map(|&t| self.inner.angular_momentum_body(t).map(|v| a3(&v)))
+            .collect::<poinsot::Result<Vec<[f64; 3]>>>()
+            .py()?;
         Ok(rows_out(py, &rows))
     }
     /// `samples` points of the polhode (N, 3).
@@ -262,16 +280,18 @@ impl PyFreeBody {
         t: PyReadonlyArray1<'py, f64>,
         body: bool,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let rows: Vec<[f64; 3]> = times_in(&t)?
+        let rows = times_in(&t)?
             .iter()
             .map(|&t| {
-                a3(&if body {
+                if body {
                     self.inner.contact_point_body(t)
                 } else {
                     self.inner.contact_point(t)
-                })
+                }
+                .map(|v| a3(&v))
             })
-            .collect();
+            .collect::<poinsot::Result<Vec<[f64; 3]>>>()
+            .py()?;
         Ok(rows_out(py, &rows))
     }
     /// `samples` points of the polhode on the inertia ellipsoid (N, 3).

@@ -14,15 +14,12 @@ fn special_jacobi<'py>(
     m: f64,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let u = vec_in(&u);
-    poinsot::error::check_finite("u", &u).py()?;
     let j = Jacobi::new(m).py()?;
-    let rows: Vec<[f64; 4]> = u
+    let rows = u
         .iter()
-        .map(|&x| {
-            let v = j.eval(x);
-            [v.sn, v.cn, v.dn, v.am]
-        })
-        .collect();
+        .map(|&x| j.eval_checked(x).map(|v| [v.sn, v.cn, v.dn, v.am]))
+        .collect::<poinsot::Result<Vec<[f64; 4]>>>()
+        .py()?;
     Ok(rows_out(py, &rows))
 }
 

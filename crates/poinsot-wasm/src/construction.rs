@@ -30,14 +30,14 @@ impl FreeRigidBody {
     }
     /// λ of the Jacobi argument τ = λt + τ₀ (1/s).
     #[wasm_bindgen(getter)]
-    pub fn frequency(&self) -> f64 {
-        self.inner.frequency()
+    pub fn frequency(&self) -> Out<f64> {
+        Ok(self.inner.frequency()?)
     }
     /// Half the period (s): the interval between reversals of ω along the intermediate axis
     /// (the Dzhanibekov flips near the separatrix); `Infinity` when the period is.
     #[wasm_bindgen(getter, js_name = flipInterval)]
-    pub fn flip_interval(&self) -> f64 {
-        self.inner.flip_interval()
+    pub fn flip_interval(&self) -> Out<f64> {
+        Ok(self.inner.flip_interval()?)
     }
     /// The principal axis (0, 1, 2) that ω circles; `undefined` when steady or on the separatrix.
     #[wasm_bindgen(getter, js_name = poleAxis)]
@@ -63,7 +63,7 @@ impl FreeRigidBody {
         #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
     ) -> Out<Vec<f64>> {
         let t = time(&t)?;
-        finite("t", "contact point", vec_out(&self.inner.contact_point(t)))
+        finite("t", "contact point", vec_out(&self.inner.contact_point(t)?))
     }
     /// The contact point ω(t) / (2T)^½ at time `t` (s), body components.
     #[wasm_bindgen(js_name = contactPointBody)]
@@ -75,7 +75,7 @@ impl FreeRigidBody {
         finite(
             "t",
             "contact point",
-            vec_out(&self.inner.contact_point_body(t)),
+            vec_out(&self.inner.contact_point_body(t)?),
         )
     }
     /// The contact points (space components) at each of `times` (s): 3N numbers, the
@@ -87,7 +87,10 @@ impl FreeRigidBody {
     ) -> Out<Vec<f64>> {
         let times = numbers_each("times", &times, BYTES_PER_TIME)?;
         poinsot::error::check_finite("times", &times)?;
-        let pts: Vec<poinsot::Vec3> = times.iter().map(|&t| self.inner.contact_point(t)).collect();
+        let pts = times
+            .iter()
+            .map(|&t| self.inner.contact_point(t))
+            .collect::<Result<Vec<poinsot::Vec3>, _>>()?;
         finite("times", "contact point", flat(&pts))
     }
     /// ω (body components, rad/s) at each of `times` (s): 3N numbers.
@@ -98,7 +101,10 @@ impl FreeRigidBody {
     ) -> Out<Vec<f64>> {
         let times = numbers_each("times", &times, BYTES_PER_TIME)?;
         poinsot::error::check_finite("times", &times)?;
-        let pts: Vec<poinsot::Vec3> = times.iter().map(|&t| self.inner.omega(t)).collect();
+        let pts = times
+            .iter()
+            .map(|&t| self.inner.omega(t))
+            .collect::<Result<Vec<poinsot::Vec3>, _>>()?;
         finite("times", "omega", flat(&pts))
     }
     /// `samples` points (3N numbers, body components) of the polhode on the inertia ellipsoid
@@ -182,7 +188,7 @@ mod tests {
         assert_eq!(&many[3..], &rs[..]);
         assert_eq!(b.omegas(vec![t]).unwrap(), b.omega(t).unwrap());
         // The flip interval is half the period.
-        assert!((2.0 * b.flip_interval() / b.period() - 1.0).abs() < 1e-14);
+        assert!((2.0 * b.flip_interval().unwrap() / b.period().unwrap() - 1.0).abs() < 1e-14);
         // L² = 16.025 > 2T·I₂ = 16.02: just above the separatrix, ω circles the largest axis.
         assert_eq!(b.pole_axis(), Some(2));
         assert_eq!(b.regime(), "about max axis");

@@ -35,9 +35,9 @@ impl FreeSymmetricTop {
             inner.space_cone_angle(),
             inner.nutation_angle(),
             inner.space_precession_rate(),
-            inner.energy(),
+            inner.energy()?,
         ];
-        values.extend(vec_out(&inner.angular_momentum()));
+        values.extend(vec_out(&inner.angular_momentum()?));
         finite("i1, i3, omega0", "motion", values)?;
         Ok(FreeSymmetricTop { inner })
     }
@@ -73,13 +73,13 @@ impl FreeSymmetricTop {
     }
     /// Kinetic energy (J), conserved.
     #[wasm_bindgen(getter)]
-    pub fn energy(&self) -> f64 {
-        self.inner.energy()
+    pub fn energy(&self) -> Out<f64> {
+        Ok(self.inner.energy()?)
     }
     /// Angular momentum in space components (kg·m²/s), conserved.
     #[wasm_bindgen(getter, js_name = angularMomentum)]
-    pub fn angular_momentum(&self) -> Vec<f64> {
-        vec_out(&self.inner.angular_momentum())
+    pub fn angular_momentum(&self) -> Out<Vec<f64>> {
+        Ok(vec_out(&self.inner.angular_momentum()?))
     }
     /// "prolate", "oblate" or "spherical".
     #[wasm_bindgen(getter)]
@@ -92,7 +92,7 @@ impl FreeSymmetricTop {
         #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
     ) -> Out<Vec<f64>> {
         let t = time(&t)?;
-        finite("t", "omega", vec_out(&self.inner.omega(t)))
+        finite("t", "omega", vec_out(&self.inner.omega(t)?))
     }
     /// Attitude quaternion `[w, x, y, z]` at time `t` (s).
     pub fn attitude(
@@ -100,7 +100,7 @@ impl FreeSymmetricTop {
         #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
     ) -> Out<Vec<f64>> {
         let t = time(&t)?;
-        finite("t", "attitude", self.inner.attitude(t).to_vec())
+        finite("t", "attitude", self.inner.attitude(t)?.to_vec())
     }
     /// The symmetry axis in space components at time `t` (s).
     #[wasm_bindgen(js_name = symmetryAxis)]
@@ -109,7 +109,7 @@ impl FreeSymmetricTop {
         #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
     ) -> Out<Vec<f64>> {
         let t = time(&t)?;
-        finite("t", "axis", vec_out(&self.inner.symmetry_axis(t)))
+        finite("t", "axis", vec_out(&self.inner.symmetry_axis(t)?))
     }
 }
 
@@ -149,14 +149,14 @@ impl FreeRigidBody {
         // Every number the getters return must be finite, but the period and the flip interval,
         // which are Infinity on the separatrix (never NaN).
         let mut values = vec![
-            inner.energy(),
+            inner.energy()?,
             inner.parameter(),
-            inner.frequency(),
+            inner.frequency()?,
             inner.invariable_plane_distance(),
         ];
-        values.extend(vec_out(&inner.angular_momentum()));
+        values.extend(vec_out(&inner.angular_momentum()?));
         values.extend(vec_out(&inner.invariable_plane_normal()));
-        values.extend([inner.period(), inner.flip_interval()].iter().map(|x| {
+        values.extend([inner.period()?, inner.flip_interval()?].iter().map(|x| {
             if x.is_nan() {
                 *x
             } else {
@@ -168,18 +168,18 @@ impl FreeRigidBody {
     }
     /// Kinetic energy (J), conserved.
     #[wasm_bindgen(getter)]
-    pub fn energy(&self) -> f64 {
-        self.inner.energy()
+    pub fn energy(&self) -> Out<f64> {
+        Ok(self.inner.energy()?)
     }
     /// Angular momentum in space components (kg·m²/s), conserved.
     #[wasm_bindgen(getter, js_name = angularMomentum)]
-    pub fn angular_momentum(&self) -> Vec<f64> {
-        vec_out(&self.inner.angular_momentum())
+    pub fn angular_momentum(&self) -> Out<Vec<f64>> {
+        Ok(vec_out(&self.inner.angular_momentum()?))
     }
     /// Period (s) of ω(t); `Infinity` on the separatrix.
     #[wasm_bindgen(getter)]
-    pub fn period(&self) -> f64 {
-        self.inner.period()
+    pub fn period(&self) -> Out<f64> {
+        Ok(self.inner.period()?)
     }
     /// The regime of the motion (the core's name for it).
     #[wasm_bindgen(getter)]
@@ -192,7 +192,7 @@ impl FreeRigidBody {
         #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
     ) -> Out<Vec<f64>> {
         let t = time(&t)?;
-        finite("t", "omega", vec_out(&self.inner.omega(t)))
+        finite("t", "omega", vec_out(&self.inner.omega(t)?))
     }
     /// Attitude quaternion `[w, x, y, z]` at time `t` (s).
     pub fn attitude(
@@ -200,7 +200,7 @@ impl FreeRigidBody {
         #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
     ) -> Out<Vec<f64>> {
         let t = time(&t)?;
-        finite("t", "attitude", self.inner.attitude(t).to_vec())
+        finite("t", "attitude", self.inner.attitude(t)?.to_vec())
     }
     /// Body ω (3 numbers) then attitude (4 numbers) at time `t` (s), in one call.
     pub fn state(
@@ -208,7 +208,7 @@ impl FreeRigidBody {
         #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
     ) -> Out<Vec<f64>> {
         let t = time(&t)?;
-        let (w, q) = self.inner.state(t);
+        let (w, q) = self.inner.state(t)?;
         finite(
             "t",
             "state",
@@ -225,7 +225,7 @@ impl FreeRigidBody {
         finite(
             "t",
             "angular momentum",
-            vec_out(&self.inner.angular_momentum_body(t)),
+            vec_out(&self.inner.angular_momentum_body(t)?),
         )
     }
 }
@@ -247,7 +247,7 @@ mod tests {
         let b = FreeRigidBody::new(vec![1.0, 2.0, 3.0], vec![0.3, 1.0, 0.2], vec![]).unwrap();
         let s = b.state(7.3).unwrap();
         let t = 0.5 * (s[0] * s[0] + 2.0 * s[1] * s[1] + 3.0 * s[2] * s[2]);
-        assert!((t / b.energy() - 1.0).abs() < 1e-12);
+        assert!((t / b.energy().unwrap() - 1.0).abs() < 1e-12);
         assert!(b.omega(f64::NAN).unwrap_err().message.starts_with("t"));
         assert!(
             FreeRigidBody::new(vec![1.0, 2.0, 4.0], vec![1.0; 3], vec![])

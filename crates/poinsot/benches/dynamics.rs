@@ -17,7 +17,7 @@ fn bench(c: &mut Criterion) {
         |b| {
             b.iter(|| {
                 t += 0.7316;
-                body.state(black_box(t))
+                body.state(black_box(t)).unwrap()
             })
         },
     );

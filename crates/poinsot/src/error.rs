@@ -74,6 +74,14 @@ impl Error {
     pub fn diverged(argument: impl Into<String>, message: impl Into<String>) -> Self {
         Self::new(ErrorKind::Diverged, argument, message)
     }
+    /// The same error naming `to` instead of `from` (an inner call's argument that the caller
+    /// received under another name); other errors unchanged.
+    pub fn renamed(mut self, from: &str, to: &str) -> Self {
+        if self.argument == from {
+            self.argument = to.to_string();
+        }
+        self
+    }
 }
 
 impl fmt::Display for Error {

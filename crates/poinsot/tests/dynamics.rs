@@ -39,7 +39,7 @@ fn run(method: Method, dt: Option<f64>, duration: f64, samples: usize) -> Trajec
 fn final_error(tr: &Trajectory) -> f64 {
     let body = FreeRigidBody::new(I123, w0(), None).unwrap();
     let t = *tr.t.last().unwrap();
-    let (w, q) = body.state(t);
+    let (w, q) = body.state(t).unwrap();
     let wn = tr.omega.last().unwrap();
     let ew = (w - Vec3::new(wn[0], wn[1], wn[2])).norm() / w0().norm();
     ew.max(q_dist(&q, tr.attitude.last().unwrap()))
@@ -199,13 +199,13 @@ fn symmetric_top_closed_forms_agree_with_integration() {
             ..SimulateOptions::default()
         };
         let tr = simulate(&inertia, w, None, 30.0, &mut Torque::None, &opts).unwrap();
-        let l_space = top.angular_momentum();
+        let l_space = top.angular_momentum().unwrap();
         for k in 0..tr.t.len() {
             let t = tr.t[k];
             let wt = Vec3::from(tr.omega[k]);
-            assert!((wt - top.omega(t)).norm() < 1e-10, "ω at {t}");
+            assert!((wt - top.omega(t).unwrap()).norm() < 1e-10, "ω at {t}");
             assert!(
-                q_dist(&tr.attitude[k], &top.attitude(t)) < 1e-10,
+                q_dist(&tr.attitude[k], &top.attitude(t).unwrap()) < 1e-10,
                 "attitude at {t}"
             );
             // The cones (2.90, 2.97): ω keeps its angles to e₃ (body) and to L (space).
@@ -225,9 +225,14 @@ fn symmetric_top_closed_forms_agree_with_integration() {
             );
         }
         // A² and ω₃² from T and L (2.95–2.96).
-        let (e, l) = (top.energy(), top.angular_momentum_magnitude());
-        assert!((FreeSymmetricTop::omega3_squared_from(i1, i3, e, l) - 4.0).abs() < 1e-12);
-        assert!((FreeSymmetricTop::amplitude_squared_from(i1, i3, e, l) - 0.25).abs() < 1e-12);
+        let (e, l) = (
+            top.energy().unwrap(),
+            top.angular_momentum_magnitude().unwrap(),
+        );
+        assert!((FreeSymmetricTop::omega3_squared_from(i1, i3, e, l).unwrap() - 4.0).abs() < 1e-12);
+        assert!(
+            (FreeSymmetricTop::amplitude_squared_from(i1, i3, e, l).unwrap() - 0.25).abs() < 1e-12
+        );
     }
 }
 
@@ -453,7 +458,7 @@ fn negative_control_without_the_gyroscopic_term_fails() {
     // Dropping ω × I·ω from 2.71 (ω̇ = I⁻¹N) freezes ω in torque-free motion: the wrong
     // equations disagree with the exact solution by O(1), the right ones agree to 1e-10.
     let body = FreeRigidBody::new(I123, w0(), None).unwrap();
-    let exact = body.omega(5.0);
+    let exact = body.omega(5.0).unwrap();
     let integrate = |gyroscopic: bool| {
         let rhs = move |_t: f64, y: &[f64; 3], dy: &mut [f64; 3]| {
             let w = Vec3::from(*y);
@@ -487,11 +492,13 @@ fn erratum_2_70_body_derivative_of_l_is_i_omega_dot() {
     // motion equals I·ω̇ from Euler's equations, and differs from I·ω.
     let body = FreeRigidBody::new(I123, w0(), None).unwrap();
     let (t, h) = (0.8, 1e-5);
-    let dl = (body.angular_momentum_body(t + h) - body.angular_momentum_body(t - h)) / (2.0 * h);
-    let wdot = angular_acceleration_principal(&I123, &body.omega(t), &Vec3::zeros());
+    let dl = (body.angular_momentum_body(t + h).unwrap()
+        - body.angular_momentum_body(t - h).unwrap())
+        / (2.0 * h);
+    let wdot = angular_acceleration_principal(&I123, &body.omega(t).unwrap(), &Vec3::zeros());
     let i_wdot = Vec3::new(wdot.x, 2.0 * wdot.y, 3.0 * wdot.z);
     assert!((dl - i_wdot).norm() < 1e-8);
-    let w = body.omega(t);
+    let w = body.omega(t).unwrap();
     assert!((dl - Vec3::new(w.x, 2.0 * w.y, 3.0 * w.z)).norm() > 0.1);
 }
 
@@ -500,11 +507,12 @@ fn erratum_2_78_and_2_84_symmetric_top_signs() {
     // ω̇₂ = −Ω ω₁ (the unit's 2.78 has the sign of I₁ − I₃ wrong) and ω̈₁ = −Ω² ω₁ (2.84).
     let top = FreeSymmetricTop::new(2.0, 1.0, Vec3::new(0.3, 0.4, 2.0), None).unwrap();
     let big = top.precession_rate();
-    let w = top.omega(0.37);
+    let w = top.omega(0.37).unwrap();
     let d = angular_acceleration_principal(&[2.0, 2.0, 1.0], &w, &Vec3::zeros());
     assert!((d.x - big * w.y).abs() < 1e-14 && (d.y + big * w.x).abs() < 1e-14);
     let h = 1e-4;
-    let w1dd = (top.omega(0.37 + h).x - 2.0 * w.x + top.omega(0.37 - h).x) / (h * h);
+    let w1dd =
+        (top.omega(0.37 + h).unwrap().x - 2.0 * w.x + top.omega(0.37 - h).unwrap().x) / (h * h);
     assert!(
         (w1dd + big * big * w.x).abs() < 1e-6,
         "{w1dd} vs {}",
@@ -516,12 +524,12 @@ fn erratum_2_78_and_2_84_symmetric_top_signs() {
 fn erratum_2_73_omega_is_not_parallel_to_l() {
     // Torque-free: L is fixed in space, ω is not parallel to it and moves (the cones).
     let body = FreeRigidBody::new(I123, w0(), None).unwrap();
-    let l = body.angular_momentum();
+    let l = body.angular_momentum().unwrap();
     for &t in &[0.0, 1.0, 2.0] {
-        let ws = body.omega_space(t);
+        let ws = body.omega_space(t).unwrap();
         assert!(ws.cross(&l).norm() / (ws.norm() * l.norm()) > 0.05);
     }
-    assert!((body.omega_space(1.0) - body.omega_space(0.0)).norm() > 0.1);
+    assert!((body.omega_space(1.0).unwrap() - body.omega_space(0.0).unwrap()).norm() > 0.1);
 }
 
 #[test]
@@ -549,7 +557,7 @@ fn batch_agrees_with_single_runs() {
         .unwrap();
         for i in 0..3 {
             let body = FreeRigidBody::new(moments[i], Vec3::from(omega[i]), None).unwrap();
-            let (w, q) = body.state(3.0);
+            let (w, q) = body.state(3.0).unwrap();
             assert!(
                 (w - Vec3::from(b.omega[i])).norm() < 1e-8,
                 "{method:?} body {i}"
@@ -696,4 +704,38 @@ fn divergence_stops_with_the_time() {
         assert_eq!(e.kind, ErrorKind::Diverged, "{method:?}: {e}");
         assert!(e.message.contains("t = "), "{e}");
     }
+}
+
+#[test]
+fn the_exact_flow_refuses_a_duration_past_its_phase_limit_naming_duration() {
+    // Issue 10, item 1.4: `poinsot free ... --duration 1e308` printed NaN. The exact flow now
+    // refuses times past FreeRigidBody::max_time, and simulate names its own argument.
+    let inertia = BodyInertia::from_moments(I123).unwrap();
+    let o = SimulateOptions {
+        method: Method::Exact,
+        samples: 3,
+        ..SimulateOptions::default()
+    };
+    for d in [1e308, 1e13] {
+        let e = simulate(&inertia, w0(), None, d, &mut Torque::None, &o).unwrap_err();
+        assert_eq!(e.argument, "duration", "{d}: {e}");
+    }
+    let e = simulate_batch(
+        &[I123],
+        &[[1.0, 0.1, 1.0]],
+        None,
+        1e308,
+        &Torque::None,
+        &o,
+    )
+    .unwrap_err();
+    assert_eq!(e.argument, "duration", "{e}");
+    // Inside the limit the run is finite.
+    let tr = simulate(&inertia, w0(), None, 1e9, &mut Torque::None, &o).unwrap();
+    assert!(tr
+        .omega
+        .iter()
+        .flatten()
+        .chain(tr.attitude.iter().flatten())
+        .all(|x| x.is_finite()));
 }

@@ -4,7 +4,7 @@
 //! The references are the definitions (ρ·I·ρ = 1, ρ·L̂ = d, I ρ ∥ L) evaluated independently of
 //! the construction's code, and a finite difference of the attitude for the rolling.
 
-use poinsot::analytic::FreeRigidBody;
+use poinsot::analytic::{axis_stability, FreeRigidBody};
 use poinsot::rotation::quaternion_to_matrix;
 use poinsot::{Mat3, Vec3};
 use proptest::prelude::*;
@@ -18,15 +18,15 @@ fn inertia(m: [f64; 3]) -> Mat3 {
 }
 
 fn rot(body: &FreeRigidBody, t: f64) -> Mat3 {
-    quaternion_to_matrix(&body.attitude(t), false).unwrap()
+    quaternion_to_matrix(&body.attitude(t).unwrap(), false).unwrap()
 }
 
 /// ρ·I·ρ − 1, (ρ_space·L̂ − d) / d and the sine of the angle between R I ρ and L at time t.
 fn residuals(body: &FreeRigidBody, t: f64) -> [f64; 3] {
     let i = inertia(body.moments());
-    let rho_b = body.contact_point_body(t);
-    let rho_s = body.contact_point(t);
-    let l = body.angular_momentum();
+    let rho_b = body.contact_point_body(t).unwrap();
+    let rho_s = body.contact_point(t).unwrap();
+    let l = body.angular_momentum().unwrap();
     let d = body.invariable_plane_distance();
     let normal = rot(body, t) * (i * rho_b);
     [
@@ -50,10 +50,15 @@ fn contact_point_is_on_the_ellipsoid_and_the_plane_and_tangent() {
         }
     }
     // The plane's distance from the centre is (2T)^½/|L| (the unit's 2.91, 2.93 with ω·L = 2T).
-    let (t0, l0) = (body.energy(), body.angular_momentum().norm());
+    let (t0, l0) = (
+        body.energy().unwrap(),
+        body.angular_momentum().unwrap().norm(),
+    );
     assert!((body.invariable_plane_distance() - (2.0 * t0).sqrt() / l0).abs() < 1e-15);
     let n = body.invariable_plane_normal();
-    assert!((n.norm() - 1.0).abs() < 1e-15 && n.cross(&body.angular_momentum()).norm() < 1e-14);
+    assert!(
+        (n.norm() - 1.0).abs() < 1e-15 && n.cross(&body.angular_momentum().unwrap()).norm() < 1e-14
+    );
 }
 
 #[test]
@@ -66,7 +71,8 @@ fn contact_point_in_space_is_the_body_point_rotated() {
     .unwrap();
     for k in 0..50 {
         let t = 0.9 * k as f64;
-        let e = rot(&body, t) * body.contact_point_body(t) - body.contact_point(t);
+        let e =
+            rot(&body, t) * body.contact_point_body(t).unwrap() - body.contact_point(t).unwrap();
         assert!(e.norm() < CONTACT_TOL, "t = {t}: {e}");
     }
 }
@@ -80,7 +86,7 @@ fn the_ellipsoid_rolls_without_slipping() {
     let h = 1e-4;
     for k in 0..20 {
         let t = 1.3 * k as f64;
-        let rho = body.contact_point_body(t);
+        let rho = body.contact_point_body(t).unwrap();
         let v = (rot(&body, t + h) * rho - rot(&body, t - h) * rho) / (2.0 * h);
         let off = rho + Vec3::new(0.0, 0.0, 0.5);
         let v_off = (rot(&body, t + h) * off - rot(&body, t - h) * off) / (2.0 * h);
@@ -98,7 +104,7 @@ fn contact_polhode_is_the_polhode_on_the_inertia_ellipsoid() {
     let body = FreeRigidBody::new([1.0, 2.0, 3.0], Vec3::new(0.05, 1.0, 0.05), None).unwrap();
     let p = body.contact_polhode(101).unwrap();
     let w = body.polhode(101).unwrap();
-    let s = (2.0 * body.energy()).sqrt();
+    let s = (2.0 * body.energy().unwrap()).sqrt();
     let i = inertia(body.moments());
     for (a, b) in p.iter().zip(&w) {
         assert!((a * s - b).norm() < 1e-14 * s);
@@ -117,15 +123,19 @@ fn contact_polhode_is_the_polhode_on_the_inertia_ellipsoid() {
 fn intermediate_axis_flips_and_the_smallest_does_not() {
     // Near-intermediate spin (the Dzhanibekov effect): ω₂ reverses once per flip interval.
     let flip = FreeRigidBody::new([1.0, 2.0, 3.0], Vec3::new(0.01, 2.0, 0.01), None).unwrap();
-    let half = flip.flip_interval();
-    assert!((half - flip.period() / 2.0).abs() < 1e-12 * half);
-    assert!(flip.omega(0.0).y > 0.0 && flip.omega(half).y < 0.0 && flip.omega(2.0 * half).y > 0.0);
+    let half = flip.flip_interval().unwrap();
+    assert!((half - flip.period().unwrap() / 2.0).abs() < 1e-12 * half);
+    assert!(
+        flip.omega(0.0).unwrap().y > 0.0
+            && flip.omega(half).unwrap().y < 0.0
+            && flip.omega(2.0 * half).unwrap().y > 0.0
+    );
     // Negative control: the same perturbation about the smallest-moment axis never reverses ω₁.
     let stable = FreeRigidBody::new([1.0, 2.0, 3.0], Vec3::new(2.0, 0.01, 0.01), None).unwrap();
     let n = 400;
     for k in 0..=n {
-        let t = stable.period() * k as f64 / n as f64;
-        assert!(stable.omega(t).x > 1.9, "t = {t}");
+        let t = stable.period().unwrap() * k as f64 / n as f64;
+        assert!(stable.omega(t).unwrap().x > 1.9, "t = {t}");
     }
 }
 
@@ -166,7 +176,7 @@ fn perturbations_down_to_subnormal_give_a_finite_motion() {
                 let body = FreeRigidBody::new(moments, w, None)
                     .unwrap_or_else(|err| panic!("{moments:?} {:?}: {err}", w.as_slice()));
                 for t in [0.0, 0.7, 31.0] {
-                    let p = body.contact_point(t);
+                    let p = body.contact_point(t).unwrap();
                     assert!(
                         p.iter().all(|x| x.is_finite()),
                         "{moments:?} {:?} t={t}",
@@ -182,5 +192,53 @@ fn perturbations_down_to_subnormal_give_a_finite_motion() {
                 }
             }
         }
+    }
+}
+
+#[test]
+fn the_construction_holds_at_the_edges_of_the_double_range() {
+    // Moments × 2^j and ω × 2^k (j, k up to ±1000): the contact point, the plane's distance and
+    // normal are computed at unit scale, so the conditions hold to round-off wherever the body
+    // is; on the old main T or |L| over/underflowed and the contact point came out 0, inf or NaN.
+    let (m0, w0) = ([1.0, 2.0, 3.0], Vec3::new(1.0, 0.1, 1.0));
+    let unit = FreeRigidBody::new(m0, w0, None).unwrap();
+    for j in [-1000, -500, 0, 500, 1000] {
+        for k in [-1000, -520, 0, 520, 1000] {
+            let (sj, sk) = (2f64.powi(j), 2f64.powi(k));
+            let body = FreeRigidBody::new(m0.map(|m| m * sj), w0 * sk, None).unwrap();
+            let i = inertia(body.moments());
+            let n = body.invariable_plane_normal();
+            let d = body.invariable_plane_distance();
+            // d = (2T)^½/|L| scales as σ^-½ (the inertia ellipsoid's size).
+            let want_d = unit.invariable_plane_distance() * 2f64.powi(-j / 2);
+            assert!((d / want_d - 1.0).abs() < 1e-15, "2^{j}, 2^{k}: {d:e}");
+            for t in [0.0, 0.7, 31.0] {
+                let rho_b = body.contact_point_body(t / sk).unwrap();
+                let rho_s = body.contact_point(t / sk).unwrap();
+                let on_ellipsoid = rho_b.dot(&(i * rho_b)) - 1.0;
+                let on_plane = rho_s.dot(&n) / d - 1.0;
+                assert!(
+                    on_ellipsoid.abs() < CONTACT_TOL && on_plane.abs() < CONTACT_TOL,
+                    "2^{j}, 2^{k}, t = {t}: {on_ellipsoid:e} {on_plane:e}"
+                );
+            }
+            // The polhode on the ellipsoid: the same points as the unit body's, scaled by σ^-½.
+            let p = body.contact_polhode(5).unwrap();
+            let q = unit.contact_polhode(5).unwrap();
+            for (a, b) in p.iter().zip(&q) {
+                assert!((a * 2f64.powi(j / 2) - b).norm() < 1e-14 * b.norm());
+            }
+        }
+    }
+    // The stability rates never exceed |spin| and do not overflow (spin² did).
+    for spin in [1e-300f64, 1.0, 1e200, -1.7e308] {
+        let s = axis_stability([1.0, 2.0, 3.0], spin).unwrap();
+        let sigma = spin.abs() * (1.0f64 / 3.0).sqrt();
+        assert!(
+            (s[1].rate / sigma - 1.0).abs() < 1e-15,
+            "{spin}: {:?}",
+            s[1]
+        );
+        assert!(s.iter().all(|a| a.rate.is_finite() && a.rate <= spin.abs()));
     }
 }

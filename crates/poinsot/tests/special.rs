@@ -4,6 +4,7 @@
 //! repository with its output) at the exact double inputs, and rounded to double.
 
 use poinsot::special::{self, Jacobi};
+use proptest::prelude::*;
 
 const JACOBI_CSV: &str = include_str!("../../../python/tests/reference/special_jacobi.csv");
 const INTEGRALS_CSV: &str = include_str!("../../../python/tests/reference/special_integrals.csv");
@@ -175,4 +176,202 @@ fn elliptic_integrals_match_mpmath() {
     }
     assert!(count > 900);
     eprintln!("worst relative error of the integrals: {worst:e}");
+}
+
+// ---------------------------------------------------------------------------------------------
+// The edges of the double range (issue 10, item 4.13).
+
+const EDGES_CSV: &str = include_str!("../../../python/tests/reference/special_edges.csv");
+
+/// Relative error bound of the integrals at the edges: the same conditioning-relative bound as
+/// the body of the range (INTEGRAL_RTOL), the conditioning here including |φ ∂f/∂φ| with the
+/// integrand evaluated without overflow.
+fn integral_condition(kind: &str, phi: f64, n: f64, m: f64, value: f64) -> f64 {
+    let s2 = phi.sin().powi(2);
+    let delta = (1.0 - m * s2).abs().sqrt();
+    let dphi = match kind {
+        "F" => 1.0 / delta,
+        "EINC" => delta,
+        "PIINC" => 1.0 / ((1.0 - n * s2).abs() * delta),
+        _ => 0.0,
+    };
+    value.abs() + (phi * dphi).abs()
+}
+
+#[test]
+fn the_integrals_at_the_edges_match_mpmath_or_refuse_naming_the_argument() {
+    // On the old main: ellipf(0.5, -1e308) raised "phi: ellipf: Unexpected error",
+    // ellipeinc(1e308, 0.5) returned inf, ellippiinc(1e308, 0.3, 0.5) failed and
+    // ellippi(0.3, -1e308) returned 0 (the answer is 3.6e-152).
+    let (mut count, mut refusals, mut worst) = (0, 0, 0.0f64);
+    for line in EDGES_CSV
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.is_empty())
+    {
+        let cols: Vec<&str> = line.split(',').collect();
+        let kind = cols[0];
+        if kind == "JAC" || kind == "JKC" {
+            continue;
+        }
+        let [phi, n, m] = [1, 2, 3].map(|i| cols[i].parse::<f64>().unwrap());
+        let got = match kind {
+            "K" => special::ellipk(m),
+            "E" => special::ellipe(m),
+            "PI" => special::ellippi(n, m),
+            "F" => special::ellipf(phi, m),
+            "EINC" => special::ellipeinc(phi, m),
+            "PIINC" => special::ellippiinc(phi, n, m),
+            other => panic!("unknown kind {other}"),
+        };
+        if let Some(argument) = cols[4].strip_prefix("ERR:") {
+            let e = got.expect_err(line);
+            assert_eq!(e.argument, argument, "{line}: {e}");
+            refusals += 1;
+        } else {
+            let want: f64 = cols[4].parse().unwrap();
+            let got = got.unwrap_or_else(|e| panic!("{line}: {e}"));
+            let rel = if got == want {
+                0.0
+            } else {
+                (got - want).abs() / integral_condition(kind, phi, n, m, want)
+            };
+            worst = worst.max(rel);
+            assert!(
+                got.is_finite() && rel <= INTEGRAL_RTOL,
+                "{kind}(phi={phi}, n={n}, m={m}): got {got:e}, want {want:e}, rel {rel:e}"
+            );
+        }
+        count += 1;
+    }
+    assert!(
+        count > 500 && refusals >= 4,
+        "{count} rows, {refusals} refusals"
+    );
+    eprintln!("worst relative error at the edges: {worst:e} ({count} rows, {refusals} refusals)");
+}
+
+#[test]
+fn jacobi_functions_up_to_their_limit_and_with_an_underflowing_complement() {
+    // u up to 2⁵⁰K(m): the reduction by 2K (double-double) is exact, so even there the
+    // functions are right to a few ulp absolutely (not only relative to their conditioning,
+    // ~|u|); beyond, the error names u. And m = 1 − k'² with k' = 1e-200, 1e-300 (1 − m is not
+    // a double) through Jacobi::with_complementary_modulus.
+    const ABS_TOL: f64 = 8.0 * f64::EPSILON;
+    let eps = f64::EPSILON;
+    let (mut jac, mut jkc) = (0, 0);
+    for line in EDGES_CSV
+        .lines()
+        .filter(|l| l.starts_with("JAC") || l.starts_with("JKC"))
+    {
+        let cols: Vec<&str> = line.split(',').collect();
+        let u: f64 = cols[1].parse().unwrap();
+        let p: f64 = cols[2].parse().unwrap();
+        if cols[0] == "JAC" {
+            let got = special::jacobi_all(u, p);
+            if cols[3] == "ERR:u" {
+                assert_eq!(got.unwrap_err().argument, "u", "{line}");
+                continue;
+            }
+            let v = got.unwrap_or_else(|e| panic!("{line}: {e}"));
+            let want: Vec<f64> = cols[3..6].iter().map(|s| s.parse().unwrap()).collect();
+            for (g, w) in [v.sn, v.cn, v.dn].iter().zip(&want) {
+                assert!((g - w).abs() <= ABS_TOL, "{line}: got {g:e} want {w:e}");
+            }
+            jac += 1;
+        } else {
+            let j = Jacobi::with_complementary_modulus(p).unwrap();
+            let v = j.eval(u);
+            let want: Vec<f64> = cols[3..6].iter().map(|s| s.parse().unwrap()).collect();
+            let (sn, cn, dn) = (want[0], want[1], want[2]);
+            // Conditioning as in jacobi_functions_match_mpmath: sn' = cn dn, cn' = −sn dn,
+            // dn' = −m sn cn with m = 1.
+            let deriv = [cn * dn, -sn * dn, -sn * cn];
+            for (i, (g, w)) in [v.sn, v.cn, v.dn].iter().zip(&want).enumerate() {
+                let cond = w.abs() + (u * deriv[i]).abs();
+                assert!(
+                    (g - w).abs() <= JACOBI_TOL_EPS * eps * cond,
+                    "{line}: f{i} got {g:e} want {w:e}"
+                );
+            }
+            jkc += 1;
+        }
+    }
+    assert!(jac >= 12 && jkc >= 16, "{jac} {jkc}");
+    // K(m) ≈ ln(4/k') next to m = 1 (DLMF 19.12.1), for k' down to the least subnormal.
+    for kc in [1e-200, 1e-300, 5e-324] {
+        let k = Jacobi::with_complementary_modulus(kc)
+            .unwrap()
+            .quarter_period();
+        assert!((k - (4f64.ln() - kc.ln())).abs() < 1e-13 * k, "{kc}: {k}");
+    }
+}
+
+#[test]
+fn special_functions_refuse_naming_the_argument() {
+    let cases: [(poinsot::Result<f64>, &str); 12] = [
+        (special::ellipk(1.0), "m"),
+        (special::ellipk(f64::NAN), "m"),
+        (special::ellipe(1.5), "m"),
+        (special::ellippi(1.0, 0.5), "n"),
+        (special::ellippi(0.5, 1.0), "m"),
+        (special::ellipf(2.0, 1.0), "phi"),
+        (special::ellipf(f64::INFINITY, 0.5), "phi"),
+        (special::ellipeinc(1e308, -1e308), "phi"),
+        (special::ellippiinc(1.0, f64::NAN, 0.5), "n"),
+        // n sin²φ = 1 exactly: sin²(π/2 as a double) rounds to 1.
+        (
+            special::ellippiinc(std::f64::consts::FRAC_PI_2, 1.0, 0.5),
+            "n",
+        ),
+        (special::ellipf_complement(0.5, 0.0), "mc"),
+        (special::sn(1e300, 0.5), "u"),
+    ];
+    for (i, (got, name)) in cases.into_iter().enumerate() {
+        let e = got.expect_err(&format!("case {i}"));
+        assert_eq!(e.argument, name, "case {i}: {e}");
+    }
+    // m = 0 and m = 1 have exact forms and no limit on u.
+    assert!((special::sn(1e300, 0.0).unwrap() - 1e300f64.sin()).abs() < 1e-16);
+    assert_eq!(special::sn(1e300, 1.0).unwrap(), 1.0);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+    /// F, E and Π are odd in φ and add their complete values over each period π, for any
+    /// parameter m ≤ 1 − 1e-12 (negative m down to −1e300) and characteristic n < 1: identities
+    /// that hold exactly, checked across the branches (reduction, negative m, n < 0 with
+    /// |n| sin²φ above and below 1).
+    #[test]
+    fn integrals_are_odd_and_add_their_complete_value_each_period(
+        phi in -20.0f64..20.0,
+        lm in -300.0f64..-12.0,
+        negative in any::<bool>(),
+        ln in -8.0f64..8.0,
+        n_sign in any::<bool>(),
+    ) {
+        let m = if negative { -(10f64.powf(-lm - 12.0)) } else { 1.0 - 10f64.powf(lm / 25.0) };
+        let n = if n_sign { -(10f64.powf(ln)) } else { 1.0 - 10f64.powf(ln.min(-0.01)) };
+        let pi = std::f64::consts::PI;
+        // φ + π is rounded: allow its half-ulp times the integrand at φ (the conditioning).
+        let s2 = phi.sin().powi(2);
+        let delta = (1.0 - m * s2).sqrt();
+        let kinds: [(&str, f64, f64); 3] = [
+            ("F", special::ellipk(m).unwrap(), 1.0 / delta),
+            ("E", special::ellipe(m).unwrap(), delta),
+            ("PI", special::ellippi(n, m).unwrap(), 1.0 / ((1.0 - n * s2) * delta)),
+        ];
+        for (kind, whole, integrand) in kinds {
+            let at = |x: f64| match kind {
+                "F" => special::ellipf(x, m).unwrap(),
+                "E" => special::ellipeinc(x, m).unwrap(),
+                _ => special::ellippiinc(x, n, m).unwrap(),
+            };
+            let (f, g, h) = (at(phi), at(phi + pi), at(-phi));
+            let tol = 1e-13 * f.abs().max(whole.abs()) + 2.0 * f64::EPSILON * (phi.abs() + pi) * integrand;
+            prop_assert!((g - f - 2.0 * whole).abs() <= tol,
+                "{} m={} n={} φ={}: {} vs {} + 2·{}", kind, m, n, phi, g, f, whole);
+            prop_assert_eq!(h, -f);
+        }
+    }
 }

@@ -8,10 +8,17 @@
 //!   `ω₂ = A cos(Ωt + θ₀)` (2.85–2.86). Goldstein writes the opposite sign of Ω: same physics;
 //! * attitudes are unit quaternions `[w, x, y, z]` rotating body components into space
 //!   components; the angular momentum `L` is fixed in space.
+//!
+//! Scale and range as for the asymmetric body ([`super::free_scale`]): the motion is solved with
+//! the larger moment and the largest |ω₀ᵢ| in [1, 2), so its accuracy does not depend on the
+//! units; the time is limited to [`FreeSymmetricTop::max_time`] (the top has turned through
+//! 2⁴² rad), and T, |L| and L refuse, naming `omega0`, when outside the normal double range.
 
+use super::free_scale::{check_omega_range, representable, Scale};
 use super::rotations::{axis_angle_q, coordinate_q, hamilton};
 use crate::error::{check_finite, Error, Result};
 use crate::rotation::{check_quaternion, Quaternion};
+use crate::special::fp::{describe, exponent, ldexp};
 use crate::Vec3;
 
 /// Whether the symmetric top is prolate (cigar, `I₃ < I₁`), oblate (disk, `I₃ > I₁`) or
@@ -46,10 +53,13 @@ pub struct FreeSymmetricTop {
     i3: f64,
     omega0: Vec3,
     attitude0: Quaternion,
+    scale: Scale,
+    /// The motion at unit scale.
     sym: SymmetricMotion,
 }
 
-/// The closed-form motion of a body with two equal moments about symmetry axis `axis`:
+/// The closed-form motion of a body with two equal moments about symmetry axis `axis` (built
+/// and evaluated at unit scale by its owners):
 /// `R(t) = R₀ · Rot(L̂_b(0), |L| t / I⊥) · Rot(e_axis, Ω t)` with `Ω = (I⊥ − I_s) ω_s / I⊥`,
 /// i.e. a precession about the fixed L at rate |L|/I⊥ composed with a spin about the symmetry
 /// axis at rate Ω relative to the precessing frame (Landau & Lifshitz §33).
@@ -112,16 +122,102 @@ impl SymmetricMotion {
     }
 }
 
-/// Checks that `omega` (named `argument`) is finite and not zero.
+/// Checks that `omega` (named `argument`) is finite and not zero (every component exactly 0:
+/// the norm of a tiny nonzero vector may underflow).
 pub(crate) fn check_omega(argument: &str, omega: &Vec3) -> Result<()> {
     check_finite(argument, omega.as_slice())?;
-    if omega.norm() == 0.0 {
+    if omega.iter().all(|&w| w == 0.0) {
         return Err(Error::invalid(
             argument,
             "must be nonzero: a body at rest has no torque-free motion to solve (got [0, 0, 0])",
         ));
     }
     Ok(())
+}
+
+/// Checks the moments of a symmetric top: `I1`, `I3` finite and > 0, and `I3 ≤ 2 I1` (the
+/// triangle inequality `I₁ + I₂ ≥ I₃` of a real body, to 8 ε); errors name `I1` or `I3`
+/// ([`crate::ErrorKind::InvalidInertia`]).
+fn check_symmetric_moments(i1: f64, i3: f64) -> Result<()> {
+    for (name, v) in [("I1", i1), ("I3", i3)] {
+        if !(v.is_finite() && v > 0.0) {
+            return Err(Error::inertia(
+                name,
+                format!("must be finite and > 0, got {v}"),
+            ));
+        }
+    }
+    // I3 / I1 ≤ 2 without overflow of 2·I1.
+    if i3 / i1 > 2.0 * (1.0 + 8.0 * f64::EPSILON) {
+        return Err(Error::inertia(
+            "I3",
+            format!(
+                "must satisfy the triangle inequality I3 <= I1 + I2 = 2 I1 = {:e}, got {i3}",
+                2.0 * i1
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// The inputs of 2.95–2.96 checked and brought to a common scale: `(a1, a3, l2, t, k)` with
+/// `L² = l2 · 2^(k + 2c)`, `T I = t a · 2^(k + 2c)` for `I = a 2^c` (a1, a3 the moments at unit
+/// scale), so that `ω₃² = (l2 − 2 t a1) / (a3 (a3 − a1)) · 2^k` (and A² likewise) with no
+/// intermediate overflow or underflow whatever the units.
+fn energy_momentum_terms(
+    i1: f64,
+    i3: f64,
+    energy: f64,
+    angular_momentum: f64,
+) -> Result<(f64, f64, f64, f64, i32)> {
+    check_symmetric_moments(i1, i3)?;
+    if i1 == i3 {
+        return Err(Error::inertia(
+            "I3",
+            format!(
+                "must differ from I1 (= {i1}): for a spherical top (I1 = I3) T and |L| do not \
+                 determine how ω splits between the axis and the plane (the formula divides by \
+                 I3 − I1)"
+            ),
+        ));
+    }
+    for (name, v) in [("energy", energy), ("angular_momentum", angular_momentum)] {
+        if !(v.is_finite() && v >= 0.0) {
+            return Err(Error::invalid(
+                name,
+                format!("must be finite and >= 0, got {v}"),
+            ));
+        }
+    }
+    let c = exponent(i1.max(i3));
+    let (a1, a3) = (ldexp(i1, -c), ldexp(i3, -c));
+    // L = lm 2^a, T = tm 2^b; L² ~ 2^(2a) and T I ~ 2^(b + c), brought to the larger, 2^e.
+    let split = |x: f64| if x > 0.0 { exponent(x) } else { i32::MIN / 4 };
+    let (a, b) = (split(angular_momentum), split(energy));
+    if a == i32::MIN / 4 && b == i32::MIN / 4 {
+        return Ok((a1, a3, 0.0, 0.0, 0));
+    }
+    let e = (2 * a).max(b + c);
+    let lm = ldexp(angular_momentum, -a);
+    let l2 = ldexp(lm * lm, 2 * a - e);
+    let t = ldexp(ldexp(energy, -b), b + c - e);
+    // The pair must be reachable: 2T·min(I1, I3) ≤ L² ≤ 2T·max(I1, I3).
+    let (lo, hi) = (2.0 * t * a1.min(a3), 2.0 * t * a1.max(a3));
+    let slack = 8.0 * f64::EPSILON * hi;
+    if l2 < lo - slack || l2 > hi + slack {
+        return Err(Error::invalid(
+            "angular_momentum",
+            format!(
+                "no motion of this top has T = {energy} J and |L| = {angular_momentum} kg·m²/s: \
+                 L² must lie between 2T·min(I1, I3) = {} and 2T·max(I1, I3) = {} (kg·m²/s)², \
+                 got L² = {}",
+                describe(lo, e),
+                describe(hi, e),
+                describe(l2, e)
+            ),
+        ));
+    }
+    Ok((a1, a3, l2, t, e - 2 * c))
 }
 
 impl FreeSymmetricTop {
@@ -131,36 +227,41 @@ impl FreeSymmetricTop {
     ///
     /// Errors: `I1`, `I3` not finite and > 0, or `I3 > 2 I1` (the triangle inequality
     /// `I₁ + I₂ ≥ I₃` of a real body), named `I3` ([`crate::ErrorKind::InvalidInertia`]);
-    /// `omega0` non-finite or zero; `attitude0` not a unit quaternion.
+    /// `omega0` non-finite, zero, with its largest component below the smallest normal double,
+    /// or turning faster than the largest double rad/s; `attitude0` not a unit quaternion.
     pub fn new(i1: f64, i3: f64, omega0: Vec3, attitude0: Option<Quaternion>) -> Result<Self> {
-        for (name, v) in [("I1", i1), ("I3", i3)] {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(Error::inertia(
-                    name,
-                    format!("must be finite and > 0, got {v}"),
-                ));
-            }
-        }
-        if i3 > 2.0 * i1 * (1.0 + 8.0 * f64::EPSILON) {
-            return Err(Error::inertia(
-                "I3",
-                format!(
-                    "must satisfy the triangle inequality I3 <= I1 + I2 = 2 I1 = {}, got {i3}",
-                    2.0 * i1
-                ),
-            ));
-        }
+        check_symmetric_moments(i1, i3)?;
         check_omega("omega0", &omega0)?;
+        let w_in = [omega0.x, omega0.y, omega0.z];
+        check_omega_range("omega0", &w_in)?;
         let attitude0 = match attitude0 {
             Some(q) => check_quaternion("attitude0", &q, false)?,
             None => [1.0, 0.0, 0.0, 0.0],
         };
-        let sym = SymmetricMotion::new(2, [i1, i1, i3], omega0, attitude0);
+        let moments = [i1, i1, i3];
+        let scale = Scale::new(&moments, &w_in);
+        let mh = scale.moments_hat(&moments);
+        let wh = Vec3::from(scale.omega_hat(&w_in));
+        let sym = SymmetricMotion::new(2, mh, wh, attitude0);
+        // |ω| is constant; the fastest rate is |Ω| ≤ |ω₃| or |L|/I₁ ≤ 2|ω|.
+        let rate = sym.big_omega.abs().max(sym.l_norm / sym.i_perp);
+        let top = ldexp(wh.norm().max(rate), scale.e_w);
+        if !top.is_finite() {
+            return Err(Error::invalid(
+                "omega0",
+                format!(
+                    "this top turns faster than the largest double rad/s (|ω| or its \
+                     precession rate ≈ {} rad/s)",
+                    describe(wh.norm().max(rate), scale.e_w)
+                ),
+            ));
+        }
         Ok(Self {
             i1,
             i3,
             omega0,
             attitude0,
+            scale: scale.with_rate(rate),
             sym,
         })
     }
@@ -188,9 +289,9 @@ impl FreeSymmetricTop {
     }
 
     /// Ω = (I₁ − I₃) ω₃ / I₁ (2.83), the rate at which ω precesses about the symmetry axis in
-    /// the body (rad/s); ω̇₁ = Ω ω₂, ω̇₂ = −Ω ω₁.
+    /// the body (rad/s); ω̇₁ = Ω ω₂, ω̇₂ = −Ω ω₁. |Ω| ≤ |ω₃|; accurate to ε|ω| absolutely.
     pub fn precession_rate(&self) -> f64 {
-        self.sym.big_omega
+        self.sym.big_omega * self.scale.s_w
     }
 
     /// A = (ω₁² + ω₂²)^½, the constant magnitude of ω across the symmetry axis (2.85–2.88)
@@ -206,23 +307,44 @@ impl FreeSymmetricTop {
 
     /// |ω| = (A² + ω₃²)^½, constant (2.89) (rad/s).
     pub fn omega_magnitude(&self) -> f64 {
-        self.omega0.norm()
+        self.sym.omega0.norm() * self.scale.s_w
     }
 
-    /// The kinetic energy T = ½ I₁ A² + ½ I₃ ω₃² (2.91) (J).
-    pub fn energy(&self) -> f64 {
-        let a2 = self.omega0.x * self.omega0.x + self.omega0.y * self.omega0.y;
-        0.5 * (self.i1 * a2 + self.i3 * self.omega0.z * self.omega0.z)
+    /// The kinetic energy T = ½ I₁ A² + ½ I₃ ω₃² (2.91) (J). Errors (naming `omega0`) when T
+    /// is outside the normal double range.
+    pub fn energy(&self) -> Result<f64> {
+        let w = self.sym.omega0;
+        let a2 = w.x * w.x + w.y * w.y;
+        let t = 0.5 * (self.sym.i_perp * a2 + self.sym.i_sym * w.z * w.z);
+        representable(
+            "omega0",
+            "the kinetic energy T",
+            "J",
+            t,
+            self.scale.e_i + 2 * self.scale.e_w,
+        )
     }
 
-    /// |L| = (I₁² A² + I₃² ω₃²)^½ (2.93) (kg·m²/s).
-    pub fn angular_momentum_magnitude(&self) -> f64 {
-        self.sym.l_norm
+    /// |L| = (I₁² A² + I₃² ω₃²)^½ (2.93) (kg·m²/s). Errors (naming `omega0`) when |L| is
+    /// outside the normal double range.
+    pub fn angular_momentum_magnitude(&self) -> Result<f64> {
+        representable(
+            "omega0",
+            "the angular momentum |L|",
+            "kg·m²/s",
+            self.sym.l_norm,
+            self.scale.e_i + self.scale.e_w,
+        )
     }
 
-    /// L in space components (constant) (kg·m²/s).
-    pub fn angular_momentum(&self) -> Vec3 {
-        super::rotations::rotate(&self.attitude0, &(self.sym.l_hat_body0 * self.sym.l_norm))
+    /// L in space components (constant) (kg·m²/s). Errors as
+    /// [`Self::angular_momentum_magnitude`].
+    pub fn angular_momentum(&self) -> Result<Vec3> {
+        self.angular_momentum_magnitude()?;
+        let k = self.scale.e_i + self.scale.e_w;
+        let l =
+            super::rotations::rotate(&self.attitude0, &(self.sym.l_hat_body0 * self.sym.l_norm));
+        Ok(l.map(|c| ldexp(c, k)))
     }
 
     /// The half-angle α_b of the body cone, traced by ω about the symmetry axis in the body:
@@ -233,22 +355,34 @@ impl FreeSymmetricTop {
 
     /// The half-angle α_s of the space cone, traced by ω about the fixed L:
     /// cos α_s = ω·L / (ω L) = 2T / (ω L) (2.97) (rad, in [0, π/2]); computed as
-    /// atan2(|ω × L|, ω·L) for accuracy at small angles.
+    /// atan2(|ω × L|, ω·L) for accuracy at small angles (at unit scale).
     pub fn space_cone_angle(&self) -> f64 {
-        let w = self.omega0;
-        let l = Vec3::new(self.i1 * w.x, self.i1 * w.y, self.i3 * w.z);
+        let w = self.sym.omega0;
+        let l = Vec3::new(
+            self.sym.i_perp * w.x,
+            self.sym.i_perp * w.y,
+            self.sym.i_sym * w.z,
+        );
         w.cross(&l).norm().atan2(w.dot(&l))
     }
 
     /// The constant angle between L and the symmetry axis: tan θ = I₁ A / (I₃ ω₃) (rad, in
     /// [0, π]).
     pub fn nutation_angle(&self) -> f64 {
-        (self.i1 * self.amplitude()).atan2(self.i3 * self.omega0.z)
+        let w = self.sym.omega0;
+        (self.sym.i_perp * w.x.hypot(w.y)).atan2(self.sym.i_sym * w.z)
     }
 
-    /// The rate at which the symmetry axis and ω precess about L in space, |L| / I₁ (rad/s).
+    /// The rate at which the symmetry axis and ω precess about L in space, |L| / I₁ (rad/s,
+    /// at most 2|ω|).
     pub fn space_precession_rate(&self) -> f64 {
-        self.sym.l_norm / self.i1
+        self.sym.l_norm / self.sym.i_perp * self.scale.s_w
+    }
+
+    /// The largest |t| (s) at which ω(t) and the attitude are computed: the time in which
+    /// the top turns through [`super::PHASE_LIMIT`] = 2⁴² rad at its fastest rate.
+    pub fn max_time(&self) -> f64 {
+        self.scale.t_max
     }
 
     /// Prolate, oblate or spherical (which cone rolls inside or outside which).
@@ -262,29 +396,52 @@ impl FreeSymmetricTop {
         }
     }
 
-    /// ω(t) in body components (2.80, 2.85–2.86) (rad/s).
-    pub fn omega(&self, t: f64) -> Vec3 {
-        self.sym.omega(t)
+    /// ω(t) in body components (2.80, 2.85–2.86) (rad/s). Errors name `t` (not finite, or
+    /// beyond [`Self::max_time`]).
+    pub fn omega(&self, t: f64) -> Result<Vec3> {
+        let th = self.scale.time(t)?;
+        Ok(self.scale.omega(&self.sym.omega(th)))
     }
 
     /// The attitude at t (`[w, x, y, z]`, body → space), in closed form:
-    /// `R(t) = R₀ · Rot(L̂_b(0), |L| t / I₁) · Rot(e₃, Ω t)`.
-    pub fn attitude(&self, t: f64) -> Quaternion {
-        self.sym.attitude(t)
+    /// `R(t) = R₀ · Rot(L̂_b(0), |L| t / I₁) · Rot(e₃, Ω t)`. Errors name `t`.
+    pub fn attitude(&self, t: f64) -> Result<Quaternion> {
+        let th = self.scale.time(t)?;
+        Ok(self.sym.attitude(th))
     }
 
-    /// The symmetry axis e₃ in space components at t.
-    pub fn symmetry_axis(&self, t: f64) -> Vec3 {
-        super::rotations::rotate(&self.attitude(t), &Vec3::z())
+    /// The symmetry axis e₃ in space components at t. Errors name `t`.
+    pub fn symmetry_axis(&self, t: f64) -> Result<Vec3> {
+        Ok(super::rotations::rotate(&self.attitude(t)?, &Vec3::z()))
     }
 
-    /// ω₃² from the energy and |L|: ω₃² = (L² − 2 T I₁) / (I₃ (I₃ − I₁)) (2.95); `I₁ ≠ I₃`.
-    pub fn omega3_squared_from(i1: f64, i3: f64, energy: f64, l: f64) -> f64 {
-        (l * l - 2.0 * energy * i1) / (i3 * (i3 - i1))
+    /// ω₃² from the energy and |L|: ω₃² = (L² − 2 T I₁) / (I₃ (I₃ − I₁)) (2.95) (rad²/s²).
+    ///
+    /// Errors: `I1`, `I3` as for [`Self::new`], and `I3` equal to `I1` (the formula divides by
+    /// I₃ − I₁); `energy`, `angular_momentum` not finite or negative; `angular_momentum` when
+    /// no motion of this top has these T and |L| (L² outside [2T min(I₁, I₃), 2T max(I₁, I₃)]
+    /// by more than 8 ε); `angular_momentum` when ω₃² is outside the normal double range.
+    pub fn omega3_squared_from(
+        i1: f64,
+        i3: f64,
+        energy: f64,
+        angular_momentum: f64,
+    ) -> Result<f64> {
+        let (a1, a3, l2, t, k) = energy_momentum_terms(i1, i3, energy, angular_momentum)?;
+        let v = ((l2 - 2.0 * t * a1) / (a3 * (a3 - a1))).max(0.0);
+        representable("angular_momentum", "ω3²", "rad²/s²", v, k)
     }
 
-    /// A² from the energy and |L|: A² = (L² − 2 I₃ T) / (I₁ (I₁ − I₃)) (2.96); `I₁ ≠ I₃`.
-    pub fn amplitude_squared_from(i1: f64, i3: f64, energy: f64, l: f64) -> f64 {
-        (l * l - 2.0 * i3 * energy) / (i1 * (i1 - i3))
+    /// A² from the energy and |L|: A² = (L² − 2 I₃ T) / (I₁ (I₁ − I₃)) (2.96) (rad²/s²).
+    /// Errors as [`Self::omega3_squared_from`].
+    pub fn amplitude_squared_from(
+        i1: f64,
+        i3: f64,
+        energy: f64,
+        angular_momentum: f64,
+    ) -> Result<f64> {
+        let (a1, a3, l2, t, k) = energy_momentum_terms(i1, i3, energy, angular_momentum)?;
+        let v = ((l2 - 2.0 * a3 * t) / (a1 * (a1 - a3))).max(0.0);
+        representable("angular_momentum", "A²", "rad²/s²", v, k)
     }
 }

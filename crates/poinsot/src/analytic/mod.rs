@@ -4,6 +4,7 @@
 //! unit's eqs. 2.98–2.121), exactly, by elliptic functions.
 
 mod free_rigid_body;
+mod free_scale;
 mod free_symmetric_top;
 mod heavy_top;
 mod heavy_top_cubic;
@@ -14,6 +15,7 @@ mod poinsot_construction;
 mod rotations;
 
 pub use free_rigid_body::{check_moments, FreeRegime, FreeRigidBody};
+pub use free_scale::PHASE_LIMIT;
 pub use free_symmetric_top::{FreeSymmetricTop, TopShape};
 pub use heavy_top::{
     constants_of_state, lagrangian, EulerState, HeavyTop, MotionClass, StateConstants,

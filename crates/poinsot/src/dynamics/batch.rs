@@ -233,10 +233,12 @@ fn one_body(
     };
     match method {
         Method::Exact => {
-            if w0.norm() == 0.0 {
+            if w0.iter().all(|&c| c == 0.0) {
                 return Ok((*omega0, *q0, 0));
             }
-            let (w, q) = FreeRigidBody::new(*moments, w0, Some(*q0))?.state(duration);
+            let (w, q) = FreeRigidBody::new(*moments, w0, Some(*q0))?
+                .state(duration)
+                .map_err(|e| e.renamed("t", "duration"))?;
             Ok(([w.x, w.y, w.z], q, 0))
         }
         Method::Rk4 => {

@@ -8,7 +8,9 @@
 //! Method (accurate to a few ulp, relative, uniformly in `0 ≤ m ≤ 1`):
 //! 1. argument reduction `u = 2K·j + r`, `|r| ≤ K`, with the quarter period `K(m)` computed by
 //!    the arithmetic–geometric mean in double-double arithmetic, so the reduction adds no error
-//!    beyond the representation of `u` even for `|u| ≫ K` (`sn(u + 2K) = −sn u`,
+//!    beyond the representation of `u` for `|u|` up to 2⁵⁰K ([`Jacobi::max_argument`]; beyond
+//!    it consecutive doubles are more than K/8 apart and the checked functions refuse `u`)
+//!    (`sn(u + 2K) = −sn u`,
 //!    `cn(u + 2K) = −cn u`, `dn(u + 2K) = dn u`, `am(u + 2K) = am u + π`; DLMF 22.4.3);
 //! 2. parity (`sn`, `am` odd; `cn`, `dn` even) to `0 ≤ x ≤ K`, then the quarter-period shift
 //!    `sn(K − v) = cd v`, `cn(K − v) = m₁^½ sd v`, `dn(K − v) = m₁^½ nd v` to evaluate only
@@ -34,6 +36,8 @@ const SERIES_MAX: f64 = 1.0 / 128.0;
 /// The duplication switches from the complements `1 − cn`, `1 − dn` to `cn`, `dn` once
 /// `1 − cn` exceeds this (then `cn = 1 − (1 − cn)` loses less than a factor 3 in relative error).
 const COMPLEMENT_MAX: f64 = 0.25;
+/// [`Jacobi::max_argument`] in units of 2K: 2⁴⁹ half-periods.
+const MAX_REDUCTION: f64 = 562_949_953_421_312.0;
 
 /// The values of the three Jacobi functions and the amplitude at one argument.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -101,10 +105,36 @@ impl Jacobi {
         Ok(Self::build(m, Dd::from(mc)))
     }
 
+    /// The functions of parameter `m = 1 − kc²` given the **complementary modulus**
+    /// `kc = (1 − m)^½` (`0 ≤ kc ≤ 1`): for m so close to 1 that `1 − m` is not representable
+    /// as a normal double (kc < 1.5e-154, where `mc = kc²` underflows) but K(m) ≈ ln(4/kc) and
+    /// the functions are perfectly well defined. `kc = 0` is m = 1. The error names `kc`.
+    pub fn with_complementary_modulus(kc: f64) -> Result<Self> {
+        if !(kc.is_finite() && (0.0..=1.0).contains(&kc)) {
+            return Err(Error::invalid(
+                "kc",
+                format!("the complementary modulus must be finite and in [0, 1], got {kc}"),
+            ));
+        }
+        if kc == 0.0 {
+            return Ok(Self::build(1.0, Dd::from(0.0)));
+        }
+        // mc = kc² exactly as a double-double (its low part may underflow: harmless, the
+        // duplication below uses mc only where it is negligible next to 1 for such kc).
+        let mc = Dd::from(kc).mul(Dd::from(kc));
+        let m = Dd::from(1.0).add(mc.scale(-1.0));
+        Ok(Self::build_with_kc(m.hi + m.lo, mc, Dd::from(kc)))
+    }
+
     fn build(m: f64, mc: Dd) -> Self {
-        let mcv = mc.hi + mc.lo;
         let kc = mc.sqrt();
-        let two_k = if mcv <= 0.0 {
+        Self::build_with_kc(m, mc, kc)
+    }
+
+    fn build_with_kc(m: f64, mc: Dd, kc: Dd) -> Self {
+        let mcv = mc.hi + mc.lo;
+        let kcv = kc.hi + kc.lo;
+        let two_k = if kcv <= 0.0 {
             Dd {
                 hi: f64::INFINITY,
                 lo: 0.0,
@@ -116,7 +146,7 @@ impl Jacobi {
         Self {
             m,
             mc: mcv,
-            kc: kc.hi + kc.lo,
+            kc: kcv,
             two_k,
         }
     }
@@ -126,9 +156,50 @@ impl Jacobi {
         self.m
     }
 
-    /// The complementary parameter 1 − m.
+    /// The complementary parameter 1 − m (0 when it underflows: see
+    /// [`Jacobi::complementary_modulus`]).
     pub fn complement(&self) -> f64 {
         self.mc
+    }
+
+    /// The complementary modulus k' = (1 − m)^½ (nonzero whenever m < 1, even where
+    /// 1 − m underflows).
+    pub fn complementary_modulus(&self) -> f64 {
+        self.kc
+    }
+
+    /// The largest |u| at which the functions are computed to their stated accuracy,
+    /// `2⁵⁰ K(m)` (infinite for m = 0 and m = 1, which have exact forms). Up to it the
+    /// reduction `u − 2Kj` is exact to the last bit of the reduced argument (2K is carried to
+    /// ~32 digits); beyond it consecutive doubles are more than K/8 apart, so u no longer
+    /// determines its position within the period 4K(m) and the values would be arbitrary.
+    pub fn max_argument(&self) -> f64 {
+        if self.m == 0.0 || self.kc == 0.0 {
+            f64::INFINITY
+        } else {
+            MAX_REDUCTION * self.two_k.hi
+        }
+    }
+
+    /// [`Jacobi::eval`] after checking `u`: finite and `|u| ≤` [`Jacobi::max_argument`]. The
+    /// error names `u`.
+    pub fn eval_checked(&self, u: f64) -> Result<JacobiValues> {
+        crate::error::check_finite("u", &[u])?;
+        let limit = self.max_argument();
+        if u.abs() > limit {
+            return Err(Error::invalid(
+                "u",
+                format!(
+                    "|u| = {:e} is beyond {limit:.3e} = 2⁵⁰ K(m) for m = {}: there consecutive \
+                     doubles are more than K(m)/8 apart, so u no longer fixes its place within \
+                     the period 4K(m) = {:.6} and sn, cn, dn would be arbitrary",
+                    u.abs(),
+                    self.m,
+                    2.0 * self.two_k.hi
+                ),
+            ));
+        }
+        Ok(self.eval(u))
     }
 
     /// The quarter period K(m) (infinite for m = 1).
@@ -151,7 +222,10 @@ impl Jacobi {
         (j, r)
     }
 
-    /// sn, cn, dn and am at `u` (any finite real).
+    /// sn, cn, dn and am at `u` (any finite real). Accurate to a few ulp up to
+    /// [`Jacobi::max_argument`]; beyond it only relative to the conditioning (the exact values
+    /// at an argument within a few ulp of u, which is no longer meaningful): prefer
+    /// [`Jacobi::eval_checked`] for arguments from outside.
     pub fn eval(&self, u: f64) -> JacobiValues {
         if self.m == 0.0 {
             let (s, c) = u.sin_cos();
@@ -162,7 +236,7 @@ impl Jacobi {
                 am: u,
             };
         }
-        if self.mc == 0.0 {
+        if self.kc == 0.0 {
             let sech = 1.0 / u.cosh();
             return JacobiValues {
                 sn: u.tanh(),
@@ -186,7 +260,7 @@ impl Jacobi {
     /// sn, cn, dn and am at a reduced argument `|r| ≤ K` (see [`Jacobi::reduce`]); `am` is then
     /// in `[−π/2, π/2]`. Arguments outside are accepted but lose the quarter-period shift.
     pub fn eval_reduced(&self, r: f64) -> JacobiValues {
-        if self.m == 0.0 || self.mc == 0.0 {
+        if self.m == 0.0 || self.kc == 0.0 {
             return self.eval(r);
         }
         let x = r.abs();
@@ -349,9 +423,10 @@ pub fn sncndn(u: f64, m: f64) -> Result<(f64, f64, f64)> {
 }
 
 /// sn, cn, dn and am at `u` for parameter `m` (builds a [`Jacobi`]: prefer that for many `u`).
+/// Errors name `m` (not in [0, 1]) or `u` (not finite, or beyond [`Jacobi::max_argument`]).
 pub fn jacobi_all(u: f64, m: f64) -> Result<JacobiValues> {
     crate::error::check_finite("u", &[u])?;
-    Ok(Jacobi::new(m)?.eval(u))
+    Jacobi::new(m)?.eval_checked(u)
 }
 
 #[cfg(test)]
