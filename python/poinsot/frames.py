@@ -446,7 +446,7 @@ def simulate_particle(frame: FrameLike, position: Any, velocity: Any, duration: 
         packed, frame_fn = _IDENTITY_FRAME, _frame_callable(frame)
     else:
         raise PoinsotError(f"frame: must be a MovingFrame or a callable t -> MovingFrame, got {type(frame).__name__}")
-    steps = max_steps if type(max_steps) is int and max_steps >= 1 else as_count(max_steps, "max_steps", 1)
+    steps = max_steps if type(max_steps) is int and 1 <= max_steps <= 2**62 else as_count(max_steps, "max_steps", 1)
     # Plain floats go straight to the core, which checks their ranges and names them.
     m = mass if type(mass) is float else _fast_scalar(mass, "mass")
     rt = rtol if type(rtol) is float else _fast_scalar(rtol, "rtol")

@@ -93,6 +93,7 @@ VALID: dict[str, Any] = {
     "energy": 2.0, "angular_momentum": 2.5, "spin": 1.0, "theta": 0.5, "theta_dot": 0.0,
     "phi_dot": 0.0, "psi_dot": 6.0, "phi": 0.0, "psi": 0.0, "omega3": 6.0, "p_phi": 3.0,
     "p_psi": 3.0, "theta0": 0.5, "u": [0.1, 0.5, 2.0], "m": 0.5, "n": 0.3,
+    "bytes": 4 * 2**30,
 }
 
 VALID_FOR: dict[str, dict[str, Any]] = {
@@ -176,6 +177,7 @@ DOCUMENTED_INF = {
     ("FreeRigidBody", "period"),           # on the separatrix the motion is asymptotic
     ("FreeRigidBody", "flip_interval"),
     ("HeavyTop", "nutation_period"),       # steady precession and the sleeping top
+    ("HeavyTop", "cubic_roots"),           # u3 = inf for m g l = 0: the cubic has no third root
     ("axis_stability", "rate"),
 }
 
@@ -408,6 +410,14 @@ def check_exception(qual: str, exc: BaseException, names: set[str]) -> list[str]
 def run_call(site: Site, args: dict[str, Any], read_properties: bool = True) -> list[str]:
     """Calls ``site`` with ``args`` under the deadline and checks the contract; returns the
     problems found (empty when the call kept the contract)."""
+    budget = ps.memory_budget()  # set_memory_budget is fuzzed too: every call starts afresh
+    try:
+        return _run_call(site, args, read_properties)
+    finally:
+        ps.set_memory_budget(budget)
+
+
+def _run_call(site: Site, args: dict[str, Any], read_properties: bool) -> list[str]:
     import warnings
 
     with warnings.catch_warnings():

@@ -276,9 +276,23 @@ fn earth_projectile<'py>(
 #[pyfunction]
 #[pyo3(signature = (rotation_rate, radius, g, latitude, length, amplitude, azimuth))]
 #[allow(clippy::too_many_arguments)]
-fn earth_foucault_release<'py>(py: Python<'py>, rotation_rate: f64, radius: f64, g: f64, latitude: f64, length: f64, amplitude: f64, azimuth: f64) -> PyResult<Bound<'py, PyArray1<f64>>> {
+fn earth_foucault_release<'py>(
+    py: Python<'py>,
+    rotation_rate: f64,
+    radius: f64,
+    g: f64,
+    latitude: f64,
+    length: f64,
+    amplitude: f64,
+    azimuth: f64,
+) -> PyResult<Bound<'py, PyArray1<f64>>> {
     let e = earth(rotation_rate, radius, g)?;
-    Ok(PyArray1::from_vec(py, e.foucault_release(latitude, length, amplitude, azimuth).py()?.to_vec()))
+    Ok(PyArray1::from_vec(
+        py,
+        e.foucault_release(latitude, length, amplitude, azimuth)
+            .py()?
+            .to_vec(),
+    ))
 }
 
 /// One stretch of a Foucault run: {"t", "states", "turn_times", "turn_angles", "final_state", ...}.
@@ -362,7 +376,9 @@ fn earth_foucault_measurement<'py>(
     let e = earth(rotation_rate, radius, g)?;
     let s0 = array_in::<6>("state0", &state0)?;
     let (tt, ta) = (vec_in(&turn_times), vec_in(&turn_angles));
-    let m = py.detach(|| e.foucault_measurement(latitude, length, &s0, t0, t_end, &tt, &ta)).py()?;
+    let m = py
+        .detach(|| e.foucault_measurement(latitude, length, &s0, t0, t_end, &tt, &ta))
+        .py()?;
     let d = PyDict::new(py);
     d.set_item("regime", m.regime.name())?;
     d.set_item("note", &m.note)?;

@@ -21,7 +21,10 @@ use crate::convert::{mat3, mat3_out, rows3, vec3, vec3_out};
 use crate::errors::{invalid, IntoPy};
 
 /// Rows of K floats → a new (N, K) numpy array.
-pub(crate) fn rows_out<'py, const K: usize>(py: Python<'py>, rows: &[[f64; K]]) -> Bound<'py, PyArray2<f64>> {
+pub(crate) fn rows_out<'py, const K: usize>(
+    py: Python<'py>,
+    rows: &[[f64; K]],
+) -> Bound<'py, PyArray2<f64>> {
     Array2::from_shape_fn((rows.len(), K), |(i, j)| rows[i][j]).into_pyarray(py)
 }
 

@@ -18,7 +18,8 @@ pub struct PyHeavyTop {
 
 /// A contiguous (N,) float64 array as a slice.
 fn slice<'a>(argument: &str, a: &'a PyReadonlyArray1<'_, f64>) -> PyResult<&'a [f64]> {
-    a.as_slice().map_err(|_| invalid(argument, "must be a C-contiguous float64 array"))
+    a.as_slice()
+        .map_err(|_| invalid(argument, "must be a C-contiguous float64 array"))
 }
 
 /// Evaluates `f` over `times` into a new (N, 3) array, without the GIL.
@@ -30,13 +31,17 @@ fn batch<'py>(
     let ts = slice("t", times)?;
     let n = ts.len();
     let mut out = vec![0.0; 3 * n];
-    py.detach(|| f(ts, &mut out)).map_err(|mut e| {
-        if e.argument == "times" {
-            e.argument = "t".into();
-        }
-        e
-    }).py()?;
-    Ok(Array2::from_shape_vec((n, 3), out).map_err(|e| invalid("t", e.to_string()))?.into_pyarray(py))
+    py.detach(|| f(ts, &mut out))
+        .map_err(|mut e| {
+            if e.argument == "times" {
+                e.argument = "t".into();
+            }
+            e
+        })
+        .py()?;
+    Ok(Array2::from_shape_vec((n, 3), out)
+        .map_err(|e| invalid("t", e.to_string()))?
+        .into_pyarray(py))
 }
 
 #[pymethods]
@@ -55,8 +60,17 @@ impl PyHeavyTop {
         theta_dot: f64,
         psi_dot: f64,
     ) -> PyResult<Self> {
-        let state = EulerState { phi, theta, psi, phi_dot, theta_dot, psi_dot };
-        Ok(Self { inner: HeavyTop::new(i1, i3, mgl, state).py()? })
+        let state = EulerState {
+            phi,
+            theta,
+            psi,
+            phi_dot,
+            theta_dot,
+            psi_dot,
+        };
+        Ok(Self {
+            inner: HeavyTop::new(i1, i3, mgl, state).py()?,
+        })
     }
 
     /// The top started from Euler angles, φ̇, θ̇ and the spin ω₃ (ψ̇ = ω₃ − φ̇ cos θ, 2.99).
@@ -73,13 +87,25 @@ impl PyHeavyTop {
         theta_dot: f64,
         omega3: f64,
     ) -> PyResult<Self> {
-        Ok(Self { inner: HeavyTop::with_spin(i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, omega3).py()? })
+        Ok(Self {
+            inner: HeavyTop::with_spin(i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, omega3)
+                .py()?,
+        })
     }
 
     /// The top given by p_φ, p_ψ (kg·m²/s) and E (J); t = 0 at the upper turning point.
     #[staticmethod]
-    fn from_constants(i1: f64, i3: f64, mgl: f64, p_phi: f64, p_psi: f64, energy: f64) -> PyResult<Self> {
-        Ok(Self { inner: HeavyTop::from_constants(i1, i3, mgl, p_phi, p_psi, energy).py()? })
+    fn from_constants(
+        i1: f64,
+        i3: f64,
+        mgl: f64,
+        p_phi: f64,
+        p_psi: f64,
+        energy: f64,
+    ) -> PyResult<Self> {
+        Ok(Self {
+            inner: HeavyTop::from_constants(i1, i3, mgl, p_phi, p_psi, energy).py()?,
+        })
     }
 
     /// (I₁, I₃, m g l).
@@ -150,14 +176,25 @@ impl PyHeavyTop {
     }
 
     /// V(θ) (J) at (N,) angles θ (rad).
-    fn effective_potential<'py>(&self, py: Python<'py>, theta: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        let out: Vec<f64> =
-            slice("theta", &theta)?.iter().map(|&th| self.inner.effective_potential(th)).collect::<poinsot::Result<_>>().py()?;
+    fn effective_potential<'py>(
+        &self,
+        py: Python<'py>,
+        theta: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let out: Vec<f64> = slice("theta", &theta)?
+            .iter()
+            .map(|&th| self.inner.effective_potential(th))
+            .collect::<poinsot::Result<_>>()
+            .py()?;
         Ok(PyArray1::from_vec(py, out))
     }
 
     /// dV/dθ (N·m) at (N,) angles θ (rad).
-    fn effective_potential_derivative<'py>(&self, py: Python<'py>, theta: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    fn effective_potential_derivative<'py>(
+        &self,
+        py: Python<'py>,
+        theta: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
         let out: Vec<f64> = slice("theta", &theta)?
             .iter()
             .map(|&th| self.inner.effective_potential_derivative(th))
@@ -167,20 +204,36 @@ impl PyHeavyTop {
     }
 
     /// (N, 3) Euler angles [φ, θ, ψ] (rad) at (N,) times (s).
-    fn euler_angles<'py>(&self, py: Python<'py>, t: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    fn euler_angles<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
         batch(py, &t, |ts, out| self.inner.euler_angles_into(ts, out))
     }
 
     /// (N, 3) Euler-angle rates [φ̇, θ̇, ψ̇] (rad/s) at (N,) times (s).
-    fn euler_rates<'py>(&self, py: Python<'py>, t: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    fn euler_rates<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
         batch(py, &t, |ts, out| self.inner.euler_rates_into(ts, out))
     }
 
     /// (N, 3) Euler angles by the incomplete elliptic integrals (sn, R_J) at every time.
-    fn euler_angles_carlson<'py>(&self, py: Python<'py>, t: PyReadonlyArray1<'py, f64>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    fn euler_angles_carlson<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
         let ts = slice("t", &t)?;
         poinsot::error::check_finite("t", ts).py()?;
-        let rows: Vec<[f64; 3]> = ts.iter().map(|&x| self.inner.euler_angles_carlson(x)).collect::<poinsot::Result<_>>().py()?;
+        let rows: Vec<[f64; 3]> = ts
+            .iter()
+            .map(|&x| self.inner.euler_angles_carlson(x))
+            .collect::<poinsot::Result<_>>()
+            .py()?;
         Ok(crate::frames::rows_out(py, &rows))
     }
 }
@@ -188,7 +241,14 @@ impl PyHeavyTop {
 /// The steady-precession rates at θ₀ and ω₃ as a dict: slow, fast, slow_approx (2.121),
 /// fast_approx (2.120 corrected), fast_approx_as_printed (2.120 as printed), min_spin (2.119).
 #[pyfunction]
-fn heavy_top_steady_precession<'py>(py: Python<'py>, i1: f64, i3: f64, mgl: f64, theta0: f64, omega3: f64) -> PyResult<Bound<'py, PyDict>> {
+fn heavy_top_steady_precession<'py>(
+    py: Python<'py>,
+    i1: f64,
+    i3: f64,
+    mgl: f64,
+    theta0: f64,
+    omega3: f64,
+) -> PyResult<Bound<'py, PyDict>> {
     let s = analytic::steady_precession(i1, i3, mgl, theta0, omega3).py()?;
     let d = PyDict::new(py);
     d.set_item("slow", s.slow)?;
@@ -214,8 +274,22 @@ fn heavy_top_sleeping_threshold(i1: f64, i3: f64, mgl: f64) -> PyResult<f64> {
 
 /// The Lagrangian 2.102 (J) at one state.
 #[pyfunction]
-fn heavy_top_lagrangian(i1: f64, i3: f64, mgl: f64, theta: f64, theta_dot: f64, phi_dot: f64, psi_dot: f64) -> PyResult<f64> {
-    let s = EulerState { theta, theta_dot, phi_dot, psi_dot, ..EulerState::default() };
+fn heavy_top_lagrangian(
+    i1: f64,
+    i3: f64,
+    mgl: f64,
+    theta: f64,
+    theta_dot: f64,
+    phi_dot: f64,
+    psi_dot: f64,
+) -> PyResult<f64> {
+    let s = EulerState {
+        theta,
+        theta_dot,
+        phi_dot,
+        psi_dot,
+        ..EulerState::default()
+    };
     analytic::lagrangian(i1, i3, mgl, &s).py()
 }
 
@@ -230,7 +304,13 @@ fn heavy_top_constants_of_state(
     phi_dot: f64,
     psi_dot: f64,
 ) -> PyResult<(f64, f64, f64)> {
-    let s = EulerState { theta, theta_dot, phi_dot, psi_dot, ..EulerState::default() };
+    let s = EulerState {
+        theta,
+        theta_dot,
+        phi_dot,
+        psi_dot,
+        ..EulerState::default()
+    };
     let c = analytic::constants_of_state(i1, i3, mgl, &s).py()?;
     Ok((c.p_phi, c.p_psi, c.energy))
 }

@@ -337,7 +337,12 @@ mod tests {
     fn arrays_longer_than_the_budget_are_refused_before_the_copy() {
         assert_eq!(numbers("t", &vec![1.0, 2.0]).unwrap(), vec![1.0, 2.0]);
         // 24 bytes per time: the budget allows poinsot::limits::memory_budget() / 24 of them.
-        let e = numbers_each("t", &vec![0.0; 3], poinsot::limits::memory_budget() as usize / 2).unwrap_err();
+        let e = numbers_each(
+            "t",
+            &vec![0.0; 3],
+            poinsot::limits::memory_budget() as usize / 2,
+        )
+        .unwrap_err();
         assert!(e.message.starts_with("t: 3 would need"), "{}", e.message);
     }
 

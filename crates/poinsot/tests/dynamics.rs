@@ -720,15 +720,8 @@ fn the_exact_flow_refuses_a_duration_past_its_phase_limit_naming_duration() {
         let e = simulate(&inertia, w0(), None, d, &mut Torque::None, &o).unwrap_err();
         assert_eq!(e.argument, "duration", "{d}: {e}");
     }
-    let e = simulate_batch(
-        &[I123],
-        &[[1.0, 0.1, 1.0]],
-        None,
-        1e308,
-        &Torque::None,
-        &o,
-    )
-    .unwrap_err();
+    let e =
+        simulate_batch(&[I123], &[[1.0, 0.1, 1.0]], None, 1e308, &Torque::None, &o).unwrap_err();
     assert_eq!(e.argument, "duration", "{e}");
     // Inside the limit the run is finite.
     let tr = simulate(&inertia, w0(), None, 1e9, &mut Torque::None, &o).unwrap();

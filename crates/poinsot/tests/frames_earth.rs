@@ -1,7 +1,9 @@
 //! Tests of the rotating Earth (`poinsot::earth`, the unit's eqs. 2.29–2.42): the unit's
 //! worked numbers, hemisphere signs, limits, and exact integrations against closed forms.
 
-use poinsot::earth::{fit_precession_rate, Earth, FallModel, Gravity, SIDEREAL_RATE, SOLAR_DAY_RATE};
+use poinsot::earth::{
+    fit_precession_rate, Earth, FallModel, Gravity, SIDEREAL_RATE, SOLAR_DAY_RATE,
+};
 use poinsot::frames::{simulate_particle, MovingFrame, ParticleState, SteadyMotion};
 use poinsot::integrate::{Crossing, Options};
 use poinsot::{ErrorKind, Vec3};
@@ -42,9 +44,21 @@ fn the_units_worked_numbers() {
     assert_eq!(format!("{x:.2e}"), "1.55e-2");
     assert!(rel(x, 1.548e-2) < 1e-3);
     let sidereal = Earth::new(SIDEREAL_RATE, 6.4e6, 9.80665).unwrap();
-    assert!(rel(sidereal.centrifugal_acceleration(0.0).unwrap().norm(), 3.40e-2) < 2e-3);
+    assert!(
+        rel(
+            sidereal.centrifugal_acceleration(0.0).unwrap().norm(),
+            3.40e-2
+        ) < 2e-3
+    );
     assert!(rel(2.0 * sidereal.rotation_rate, 1.458e-4) < 1e-3);
-    assert!(rel(Earth::default().eastward_deflection(100.0, FRAC_PI_4).unwrap(), 1.552e-2) < 1e-3);
+    assert!(
+        rel(
+            Earth::default()
+                .eastward_deflection(100.0, FRAC_PI_4)
+                .unwrap(),
+            1.552e-2
+        ) < 1e-3
+    );
 }
 
 #[test]
@@ -59,7 +73,11 @@ fn effective_gravity_limits_and_plumb_line() {
     let n = e.effective_gravity(FRAC_PI_4).unwrap();
     let s = e.effective_gravity(-FRAC_PI_4).unwrap();
     assert!(n.deviation > 0.0 && s.deviation < 0.0 && rel(n.deviation, -s.deviation) < 1e-12);
-    assert!((n.deviation.to_degrees() - 0.0995).abs() < 2e-3, "{}", n.deviation.to_degrees());
+    assert!(
+        (n.deviation.to_degrees() - 0.0995).abs() < 2e-3,
+        "{}",
+        n.deviation.to_degrees()
+    );
     assert!(n.vector.y < 0.0 && s.vector.y > 0.0);
 }
 
@@ -72,11 +90,19 @@ fn coriolis_hemisphere_signs() {
     let n = e.coriolis_acceleration(deg(45.0), &v).unwrap();
     let s = e.coriolis_acceleration(deg(-45.0), &v).unwrap();
     let q = e.coriolis_acceleration(0.0, &v).unwrap();
-    assert!(n.x > 0.0, "north: to the right of a northward motion is east");
+    assert!(
+        n.x > 0.0,
+        "north: to the right of a northward motion is east"
+    );
     assert!(s.x < 0.0, "south: to the left");
     assert!(q.norm() < 1e-20, "equator: nothing for horizontal motion");
     // 2ω v at the pole (the unit's 1.5e-4 v_r).
-    assert!(rel(e.coriolis_acceleration(FRAC_PI_2, &v).unwrap().norm(), 2.0 * SIDEREAL_RATE * 10.0) < 1e-12);
+    assert!(
+        rel(
+            e.coriolis_acceleration(FRAC_PI_2, &v).unwrap().norm(),
+            2.0 * SIDEREAL_RATE * 10.0
+        ) < 1e-12
+    );
 }
 
 /// The exact drop approaches the unit's first-order 2.42 as h → 0, and its southward
@@ -90,13 +116,24 @@ fn drop_exact_tends_to_first_order() {
         let fall = e.drop(h, FRAC_PI_4, &model).unwrap();
         let first = e.eastward_deflection(h, FRAC_PI_4).unwrap();
         let r = rel(fall.east, first);
-        assert!(r < prev, "h = {h}: relative difference {r:e} must shrink with h");
+        assert!(
+            r < prev,
+            "h = {h}: relative difference {r:e} must shrink with h"
+        );
         prev = r;
         let south = e.southward_deflection(h, FRAC_PI_4).unwrap();
-        assert!(rel(-fall.north, south) < 1e-3, "h = {h}: south {} vs {south}", -fall.north);
+        assert!(
+            rel(-fall.north, south) < 1e-3,
+            "h = {h}: south {} vs {south}",
+            -fall.north
+        );
         // The time of fall changes at second order, by about (ω T)².
         let t0 = e.fall_time(h).unwrap();
-        assert!(rel(fall.time, t0) < (SIDEREAL_RATE * t0).powi(2), "h = {h}: {} vs {t0}", fall.time);
+        assert!(
+            rel(fall.time, t0) < (SIDEREAL_RATE * t0).powi(2),
+            "h = {h}: {} vs {t0}",
+            fall.time
+        );
     }
     assert!(prev < 1e-7);
     let fall = e.drop(100.0, FRAC_PI_4, &model).unwrap();
@@ -117,10 +154,28 @@ fn drop_hemispheres_equator_and_poles() {
     let p = e.drop(200.0, FRAC_PI_2, &m).unwrap();
     assert!(p.east.abs() < 1e-12 && p.north.abs() < 1e-12);
     // Without rotation it falls straight down.
-    let still = e.drop(200.0, deg(40.0), &FallModel { rotation: false, ..m }).unwrap();
+    let still = e
+        .drop(
+            200.0,
+            deg(40.0),
+            &FallModel {
+                rotation: false,
+                ..m
+            },
+        )
+        .unwrap();
     assert!(still.east.abs() < 1e-14 && still.north.abs() < 1e-14);
     // Weaker gravity aloft: a slower, longer fall and more eastward drift.
-    let sq = e.drop(1e4, deg(40.0), &FallModel { gravity: Gravity::InverseSquare, ..m }).unwrap();
+    let sq = e
+        .drop(
+            1e4,
+            deg(40.0),
+            &FallModel {
+                gravity: Gravity::InverseSquare,
+                ..m
+            },
+        )
+        .unwrap();
     let un = e.drop(1e4, deg(40.0), &m).unwrap();
     assert!(sq.time > un.time && sq.east > un.east);
 }
@@ -135,11 +190,29 @@ fn drop_agrees_with_the_general_moving_frame_integrator() {
     let rho0 = Vec3::new(0.0, 0.0, e.radius);
     // True gravity is −gẑ + ω×(ω×ρ₀) so that the effective gravity at the origin is −gẑ.
     let g_true = Vec3::new(0.0, 0.0, -e.g) + w.cross(&w.cross(&rho0));
-    let frame = MovingFrame::new(Vec3::zeros(), Vec3::zeros(), w.cross(&w.cross(&rho0)), w, Vec3::zeros()).unwrap();
+    let frame = MovingFrame::new(
+        Vec3::zeros(),
+        Vec3::zeros(),
+        w.cross(&w.cross(&rho0)),
+        w,
+        Vec3::zeros(),
+    )
+    .unwrap();
     // In ENU components the frame's state is constant (it rotates with the Earth).
     let motion = move |_t: f64| frame;
     let opts = Options::with_tolerances(1e-12, 1e-12);
-    let sol = simulate_particle(&motion, 2.0, Vec3::new(0.0, 0.0, 300.0), Vec3::zeros(), 0.0, 100.0, |_t, _r, _v| 2.0 * g_true, &opts, Some((|_t: f64, y: &ParticleState| y[2], Crossing::Falling))).unwrap();
+    let sol = simulate_particle(
+        &motion,
+        2.0,
+        Vec3::new(0.0, 0.0, 300.0),
+        Vec3::zeros(),
+        0.0,
+        100.0,
+        |_t, _r, _v| 2.0 * g_true,
+        &opts,
+        Some((|_t: f64, y: &ParticleState| y[2], Crossing::Falling)),
+    )
+    .unwrap();
     let ev = sol.event.unwrap();
     let fall = e.drop(300.0, lat, &FallModel::default()).unwrap();
     assert!(rel(ev.t, fall.time) < 1e-11);
@@ -151,18 +224,32 @@ fn drop_agrees_with_the_general_moving_frame_integrator() {
 fn projectile_range_and_drift() {
     let e = Earth::default();
     let (v, el) = (300.0, FRAC_PI_4);
-    let still = FallModel { rotation: false, ..FallModel::default() };
+    let still = FallModel {
+        rotation: false,
+        ..FallModel::default()
+    };
     let flat = e.projectile(v, el, 0.3, deg(45.0), 0.0, &still).unwrap();
     assert!(rel(flat.range, v * v * (2.0 * el).sin() / e.g) < 1e-10);
     assert!(flat.drift.abs() < 1e-9 && rel(flat.time, 2.0 * v * el.sin() / e.g) < 1e-10);
     // Rotation: drift to the right in the north, to the left in the south, for any azimuth.
     for az in [0.0, 1.0, 2.5, 4.0] {
-        let n = e.projectile(v, el, az, deg(45.0), 0.0, &FallModel::default()).unwrap();
-        let s = e.projectile(v, el, az, deg(-45.0), 0.0, &FallModel::default()).unwrap();
-        assert!(n.drift > 0.0 && s.drift < 0.0, "azimuth {az}: {} {}", n.drift, s.drift);
+        let n = e
+            .projectile(v, el, az, deg(45.0), 0.0, &FallModel::default())
+            .unwrap();
+        let s = e
+            .projectile(v, el, az, deg(-45.0), 0.0, &FallModel::default())
+            .unwrap();
+        assert!(
+            n.drift > 0.0 && s.drift < 0.0,
+            "azimuth {az}: {} {}",
+            n.drift,
+            s.drift
+        );
     }
     // First-order drift of a lofted shot (vertical-Coriolis part): ω sinλ v³ sin²α cosα... sanity: O(ωT·range).
-    let n = e.projectile(v, el, 0.0, deg(45.0), 0.0, &FallModel::default()).unwrap();
+    let n = e
+        .projectile(v, el, 0.0, deg(45.0), 0.0, &FallModel::default())
+        .unwrap();
     assert!(n.drift < 1e-3 * n.range * 10.0);
 }
 
@@ -170,13 +257,21 @@ fn projectile_range_and_drift() {
 fn foucault_plane_turns_at_omega_sin_latitude() {
     // A fast-turning planet keeps the run short; amplitude 1 % of the length.
     let e = Earth::new(1e-3, 6.371e6, 9.81).unwrap();
-    let opts = Options { dense: false, ..Options::with_tolerances(1e-11, 1e-12) };
+    let opts = Options {
+        dense: false,
+        ..Options::with_tolerances(1e-11, 1e-12)
+    };
     for lat in [deg(50.0), deg(-50.0), FRAC_PI_2] {
         let s0 = e.foucault_release(lat, 10.0, 0.1, 0.0).unwrap();
-        let run = e.foucault(lat, 10.0, s0, 0.0, 600.0, &[0.0, 600.0], &opts).unwrap();
+        let run = e
+            .foucault(lat, 10.0, s0, 0.0, 600.0, &[0.0, 600.0], &opts)
+            .unwrap();
         let rate = fit_precession_rate(&run.turn_times, &run.turn_angles).unwrap();
         let expect = e.foucault_rate(lat).unwrap();
-        assert!(rel(rate, expect) < 2e-3, "latitude {lat}: {rate} vs {expect}");
+        assert!(
+            rel(rate, expect) < 2e-3,
+            "latitude {lat}: {rate} vs {expect}"
+        );
         // |r| stays the length of the string.
         let r = run.final_state;
         assert!(((r[0] * r[0] + r[1] * r[1] + r[2] * r[2]).sqrt() - 10.0).abs() < 1e-8);
@@ -197,7 +292,15 @@ fn inertial_oscillations_and_the_low() {
     for lat in [deg(45.0), deg(-30.0)] {
         let f = e.coriolis_parameter(lat).unwrap();
         let period = e.inertial_period(lat).unwrap();
-        let run = e.inertial_oscillation(lat, [10.0, 0.0], period, &[0.0, period / 2.0, period], &opts).unwrap();
+        let run = e
+            .inertial_oscillation(
+                lat,
+                [10.0, 0.0],
+                period,
+                &[0.0, period / 2.0, period],
+                &opts,
+            )
+            .unwrap();
         assert!(rel(run.turning_rate, -f) < 1e-9);
         // Back at the start after one inertial period; half-way the diameter 2v/|f| away.
         let end = run.states[2];
@@ -205,12 +308,18 @@ fn inertial_oscillations_and_the_low() {
         let mid = run.states[1];
         assert!(rel(mid[0].hypot(mid[1]), 20.0 / f.abs()) < 1e-9);
     }
-    let eq = e.inertial_oscillation(0.0, [10.0, 5.0], 1e5, &[1e5], &opts).unwrap();
+    let eq = e
+        .inertial_oscillation(0.0, [10.0, 5.0], 1e5, &[1e5], &opts)
+        .unwrap();
     assert!(eq.turning_rate.abs() < 1e-15 && (eq.states[0][0] - 1e6).abs() < 1e-3);
     // Flow into a low: counterclockwise in the north, clockwise in the south.
     let starts = [[5e5, 0.0], [0.0, 5e5], [-5e5, 0.0], [0.0, -5e5]];
-    let n = e.flow_into_low(deg(45.0), &starts, 2e-9, 1e-5, 2e5, &[2e5], &opts).unwrap();
-    let s = e.flow_into_low(deg(-45.0), &starts, 2e-9, 1e-5, 2e5, &[2e5], &opts).unwrap();
+    let n = e
+        .flow_into_low(deg(45.0), &starts, 2e-9, 1e-5, 2e5, &[2e5], &opts)
+        .unwrap();
+    let s = e
+        .flow_into_low(deg(-45.0), &starts, 2e-9, 1e-5, 2e5, &[2e5], &opts)
+        .unwrap();
     assert!(n.circulation > 0.0 && s.circulation < 0.0);
     assert!(rel(n.circulation, -s.circulation) < 1e-9);
 }
@@ -220,19 +329,54 @@ fn bad_input_names_the_argument() {
     let e = Earth::default();
     for lat in [deg(90.5), -2.0, f64::NAN, f64::INFINITY] {
         let err = e.omega_enu(lat).unwrap_err();
-        assert_eq!((err.kind, err.argument.as_str()), (ErrorKind::InvalidArgument, "latitude"));
+        assert_eq!(
+            (err.kind, err.argument.as_str()),
+            (ErrorKind::InvalidArgument, "latitude")
+        );
     }
     assert!(e.omega_enu(FRAC_PI_2).is_ok() && e.omega_enu(-FRAC_PI_2).is_ok());
-    assert_eq!(e.eastward_deflection(-1.0, 0.3).unwrap_err().argument, "height");
-    assert_eq!(e.drop(-1.0, 0.3, &FallModel::default()).unwrap_err().argument, "height");
-    assert_eq!(e.drop(f64::NAN, 0.3, &FallModel::default()).unwrap_err().argument, "height");
-    let bad = FallModel { options: Options::with_tolerances(0.0, 1e-9), ..FallModel::default() };
+    assert_eq!(
+        e.eastward_deflection(-1.0, 0.3).unwrap_err().argument,
+        "height"
+    );
+    assert_eq!(
+        e.drop(-1.0, 0.3, &FallModel::default())
+            .unwrap_err()
+            .argument,
+        "height"
+    );
+    assert_eq!(
+        e.drop(f64::NAN, 0.3, &FallModel::default())
+            .unwrap_err()
+            .argument,
+        "height"
+    );
+    let bad = FallModel {
+        options: Options::with_tolerances(0.0, 1e-9),
+        ..FallModel::default()
+    };
     assert_eq!(e.drop(10.0, 0.3, &bad).unwrap_err().argument, "rtol");
-    assert_eq!(Earth::new(-1.0, 1.0, 1.0).unwrap_err().argument, "rotation_rate");
+    assert_eq!(
+        Earth::new(-1.0, 1.0, 1.0).unwrap_err().argument,
+        "rotation_rate"
+    );
     assert_eq!(Earth::new(1.0, 0.0, 1.0).unwrap_err().argument, "radius");
-    assert_eq!(e.projectile(0.0, 0.5, 0.0, 0.0, 0.0, &FallModel::default()).unwrap_err().argument, "speed");
-    assert_eq!(e.projectile(10.0, -0.5, 0.0, 0.0, 0.0, &FallModel::default()).unwrap_err().argument, "elevation");
-    assert_eq!(e.foucault_release(0.3, 1.0, 2.0, 0.0).unwrap_err().argument, "amplitude");
+    assert_eq!(
+        e.projectile(0.0, 0.5, 0.0, 0.0, 0.0, &FallModel::default())
+            .unwrap_err()
+            .argument,
+        "speed"
+    );
+    assert_eq!(
+        e.projectile(10.0, -0.5, 0.0, 0.0, 0.0, &FallModel::default())
+            .unwrap_err()
+            .argument,
+        "elevation"
+    );
+    assert_eq!(
+        e.foucault_release(0.3, 1.0, 2.0, 0.0).unwrap_err().argument,
+        "amplitude"
+    );
 }
 
 /// Jacobi's integral of the Foucault run: conserved to the integrator's tolerance, also on a
@@ -246,7 +390,17 @@ fn foucault_conserves_jacobis_integral() {
     let (lat, len) = (deg(40.0), 10.0);
     let s0 = e.foucault_release(lat, len, 1.0, 0.3).unwrap();
     let times: Vec<f64> = (0..=120).map(|i| i as f64).collect();
-    let run = e.foucault(lat, len, s0, 0.0, 120.0, &times, &Options::with_tolerances(1e-10, 1e-12)).unwrap();
+    let run = e
+        .foucault(
+            lat,
+            len,
+            s0,
+            0.0,
+            120.0,
+            &times,
+            &Options::with_tolerances(1e-10, 1e-12),
+        )
+        .unwrap();
     let j0 = e.jacobi_integral(lat, &s0).unwrap();
     let scale = e.g * len;
     let mut worst: f64 = 0.0;
@@ -257,13 +411,22 @@ fn foucault_conserves_jacobis_integral() {
         plain_worst = plain_worst.max((plain(s) - plain(&s0)).abs() / scale);
     }
     assert!(worst < DRIFT, "Jacobi drift {worst:e}");
-    assert!(plain_worst > 1e3 * DRIFT, "the plain energy should not be conserved: {plain_worst:e}");
+    assert!(
+        plain_worst > 1e3 * DRIFT,
+        "the plain energy should not be conserved: {plain_worst:e}"
+    );
     // Its value: released from rest, J = g z − ½ |ω × r|².
     let w = e.omega_enu(lat).unwrap();
     let r = Vec3::new(s0[0], s0[1], s0[2]);
     assert!((j0 - (e.g * s0[2] - 0.5 * w.cross(&r).norm_squared())).abs() < 1e-12 * scale);
-    assert_eq!(e.jacobi_integral(2.0, &s0).unwrap_err().argument, "latitude");
-    assert_eq!(e.jacobi_integral(lat, &[f64::NAN; 6]).unwrap_err().argument, "state");
+    assert_eq!(
+        e.jacobi_integral(2.0, &s0).unwrap_err().argument,
+        "latitude"
+    );
+    assert_eq!(
+        e.jacobi_integral(lat, &[f64::NAN; 6]).unwrap_err().argument,
+        "state"
+    );
 }
 
 /// The low's energy budget: energy + work against friction is constant; without friction the
@@ -278,13 +441,18 @@ fn low_energy_budget_and_continuation() {
     let times: Vec<f64> = (0..=48).map(|i| i as f64 * 3600.0).collect();
     let k = 2e-9;
     for gamma in [0.0, 1e-5, 5e-5] {
-        let run = e.flow_into_low(deg(45.0), &starts, k, gamma, 48.0 * 3600.0, &times, &opts).unwrap();
+        let run = e
+            .flow_into_low(deg(45.0), &starts, k, gamma, 48.0 * 3600.0, &times, &opts)
+            .unwrap();
         for (p, start) in starts.iter().enumerate() {
             let e0 = run.energy[p][0];
             assert!((e0 - 0.5 * k * (start[0].powi(2) + start[1].powi(2))).abs() < 1e-12 * e0);
             for i in 0..times.len() {
                 let budget = run.energy[p][i] + run.dissipated[p][i] - e0;
-                assert!(budget.abs() < BUDGET * e0, "gamma {gamma} parcel {p} sample {i}: {budget:e}");
+                assert!(
+                    budget.abs() < BUDGET * e0,
+                    "gamma {gamma} parcel {p} sample {i}: {budget:e}"
+                );
             }
             let lost = run.dissipated[p][times.len() - 1];
             if gamma == 0.0 {
@@ -296,7 +464,18 @@ fn low_energy_budget_and_continuation() {
         }
         // Continue from sample 10 to the end: the same states at the later samples.
         let from: Vec<[f64; 4]> = run.parcels.iter().map(|p| p[10]).collect();
-        let rest = e.flow_into_low_from(deg(45.0), &from, times[10], k, gamma, times[48], &times[10..], &opts).unwrap();
+        let rest = e
+            .flow_into_low_from(
+                deg(45.0),
+                &from,
+                times[10],
+                k,
+                gamma,
+                times[48],
+                &times[10..],
+                &opts,
+            )
+            .unwrap();
         for p in 0..starts.len() {
             for (i, s) in rest.parcels[p].iter().enumerate() {
                 let want = run.parcels[p][10 + i];
@@ -307,10 +486,25 @@ fn low_energy_budget_and_continuation() {
             }
         }
     }
-    let bad = e.flow_into_low_from(0.5, &[[1.0, 0.0, 0.0, 0.0]], 10.0, k, 0.0, 5.0, &[], &opts).unwrap_err();
+    let bad = e
+        .flow_into_low_from(0.5, &[[1.0, 0.0, 0.0, 0.0]], 10.0, k, 0.0, 5.0, &[], &opts)
+        .unwrap_err();
     assert_eq!(bad.argument, "t_end");
-    let bad = e.flow_into_low_from(0.5, &[], 0.0, k, 0.0, 5.0, &[], &opts).unwrap_err();
+    let bad = e
+        .flow_into_low_from(0.5, &[], 0.0, k, 0.0, 5.0, &[], &opts)
+        .unwrap_err();
     assert_eq!(bad.argument, "states");
-    let bad = e.flow_into_low_from(0.5, &[[1.0, f64::NAN, 0.0, 0.0]], 0.0, k, 0.0, 5.0, &[], &opts).unwrap_err();
+    let bad = e
+        .flow_into_low_from(
+            0.5,
+            &[[1.0, f64::NAN, 0.0, 0.0]],
+            0.0,
+            k,
+            0.0,
+            5.0,
+            &[],
+            &opts,
+        )
+        .unwrap_err();
     assert_eq!(bad.argument, "states");
 }

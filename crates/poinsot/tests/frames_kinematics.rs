@@ -1,7 +1,10 @@
 //! Tests of moving-frame kinematics and of particles integrated in moving frames
 //! (`poinsot::frames`, the unit's eqs. 2.1–2.28).
 
-use poinsot::frames::{simulate_particle, simulate_particle_fixed, FrameMotion, MovingFrame, ParticleState, SteadyMotion};
+use poinsot::frames::{
+    simulate_particle, simulate_particle_fixed, FrameMotion, MovingFrame, ParticleState,
+    SteadyMotion,
+};
 use poinsot::integrate::{Crossing, Options};
 use poinsot::{ErrorKind, Mat3, Vec3};
 use proptest::prelude::*;
@@ -20,9 +23,14 @@ fn vec3() -> impl Strategy<Value = Vec3> {
 }
 
 fn frame() -> impl Strategy<Value = MovingFrame> {
-    (vec3(), vec3(), vec3(), vec3(), vec3(), vec3(), 0.0..3.0f64).prop_map(|(o, v, a, w, wd, ax, ang)| {
-        MovingFrame::new(o, v, a, w, wd).unwrap().with_attitude(rot(ax + Vec3::new(0.0, 0.0, 1e-3), ang)).unwrap()
-    })
+    (vec3(), vec3(), vec3(), vec3(), vec3(), vec3(), 0.0..3.0f64).prop_map(
+        |(o, v, a, w, wd, ax, ang)| {
+            MovingFrame::new(o, v, a, w, wd)
+                .unwrap()
+                .with_attitude(rot(ax + Vec3::new(0.0, 0.0, 1e-3), ang))
+                .unwrap()
+        },
+    )
 }
 
 proptest! {
@@ -56,16 +64,37 @@ proptest! {
 /// Eq. 2.2–2.3 (with the errata's dots): for ω = 0 velocities and accelerations add.
 #[test]
 fn pure_translation_is_galilean() {
-    let f = MovingFrame::new(Vec3::new(1.0, 2.0, 3.0), Vec3::new(0.5, 0.0, -1.0), Vec3::new(0.0, 0.1, 0.0), Vec3::zeros(), Vec3::zeros()).unwrap();
-    let (r, v, a) = (Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, 2.0, 0.0), Vec3::new(0.0, 0.0, 3.0));
+    let f = MovingFrame::new(
+        Vec3::new(1.0, 2.0, 3.0),
+        Vec3::new(0.5, 0.0, -1.0),
+        Vec3::new(0.0, 0.1, 0.0),
+        Vec3::zeros(),
+        Vec3::zeros(),
+    )
+    .unwrap();
+    let (r, v, a) = (
+        Vec3::new(1.0, 0.0, 0.0),
+        Vec3::new(0.0, 2.0, 0.0),
+        Vec3::new(0.0, 0.0, 3.0),
+    );
     let out = f.to_fixed(&r, &v, &a);
     assert_eq!(out.position, f.origin + r);
     assert_eq!(out.velocity, f.velocity + v);
     assert_eq!(out.acceleration, f.acceleration + a);
     assert_eq!(out.terms.coriolis, Vec3::zeros());
     // A uniformly moving frame (R̈ = 0) has no fictitious force: Galilean invariance.
-    let g = MovingFrame::new(Vec3::zeros(), Vec3::new(3.0, 0.0, 0.0), Vec3::zeros(), Vec3::zeros(), Vec3::zeros()).unwrap();
-    assert_eq!(g.fictitious_forces(2.0, &r, &v).unwrap().total(), Vec3::zeros());
+    let g = MovingFrame::new(
+        Vec3::zeros(),
+        Vec3::new(3.0, 0.0, 0.0),
+        Vec3::zeros(),
+        Vec3::zeros(),
+        Vec3::zeros(),
+    )
+    .unwrap();
+    assert_eq!(
+        g.fictitious_forces(2.0, &r, &v).unwrap().total(),
+        Vec3::zeros()
+    );
 }
 
 /// A point at rest on a turntable moves on a circle: v' = ω × r, a' = −ω² r (centripetal, 2.24).
@@ -84,14 +113,38 @@ fn point_at_rest_on_a_turntable() {
 
 #[test]
 fn bad_frames_are_refused() {
-    let e = MovingFrame::new(Vec3::new(f64::NAN, 0.0, 0.0), Vec3::zeros(), Vec3::zeros(), Vec3::zeros(), Vec3::zeros()).unwrap_err();
+    let e = MovingFrame::new(
+        Vec3::new(f64::NAN, 0.0, 0.0),
+        Vec3::zeros(),
+        Vec3::zeros(),
+        Vec3::zeros(),
+        Vec3::zeros(),
+    )
+    .unwrap_err();
     assert_eq!(e.argument, "origin");
-    let e = MovingFrame::default().with_attitude(Mat3::from_diagonal(&Vec3::new(1.0, 1.0, -1.0))).unwrap_err();
-    assert_eq!((e.kind, e.argument.as_str()), (ErrorKind::InvalidRotation, "attitude"));
-    let e = MovingFrame::default().fictitious_forces(0.0, &Vec3::zeros(), &Vec3::zeros()).unwrap_err();
+    let e = MovingFrame::default()
+        .with_attitude(Mat3::from_diagonal(&Vec3::new(1.0, 1.0, -1.0)))
+        .unwrap_err();
+    assert_eq!(
+        (e.kind, e.argument.as_str()),
+        (ErrorKind::InvalidRotation, "attitude")
+    );
+    let e = MovingFrame::default()
+        .fictitious_forces(0.0, &Vec3::zeros(), &Vec3::zeros())
+        .unwrap_err();
     assert_eq!(e.argument, "mass");
-    let tilted = MovingFrame::new(Vec3::zeros(), Vec3::zeros(), Vec3::zeros(), Vec3::z(), Vec3::x()).unwrap();
-    assert_eq!(SteadyMotion::new(tilted).unwrap_err().argument, "angular_acceleration");
+    let tilted = MovingFrame::new(
+        Vec3::zeros(),
+        Vec3::zeros(),
+        Vec3::zeros(),
+        Vec3::z(),
+        Vec3::x(),
+    )
+    .unwrap();
+    assert_eq!(
+        SteadyMotion::new(tilted).unwrap_err().argument,
+        "angular_acceleration"
+    );
 }
 
 /// Checks a moving-frame integration against a fixed-frame one: the force is a spring towards
@@ -120,13 +173,26 @@ fn check_against_fixed_frame<M: FrameMotion>(motion: &M, t_end: f64) -> f64 {
     .unwrap();
     let f0 = motion.at(0.0);
     let start = f0.to_fixed(&r0, &v0, &Vec3::zeros());
-    let fixed = simulate_particle_fixed(m, start.position, start.velocity, 0.0, t_end, |_t, r, _v| fixed_force(r), &opts).unwrap();
+    let fixed = simulate_particle_fixed(
+        m,
+        start.position,
+        start.velocity,
+        0.0,
+        t_end,
+        |_t, r, _v| fixed_force(r),
+        &opts,
+    )
+    .unwrap();
     let mut worst: f64 = 0.0;
     for i in 0..=50 {
         let t = t_end * i as f64 / 50.0;
         let ym = moving.at(t).unwrap();
         let yf = fixed.at(t).unwrap();
-        let out = motion.at(t).to_fixed(&Vec3::new(ym[0], ym[1], ym[2]), &Vec3::new(ym[3], ym[4], ym[5]), &Vec3::zeros());
+        let out = motion.at(t).to_fixed(
+            &Vec3::new(ym[0], ym[1], ym[2]),
+            &Vec3::new(ym[3], ym[4], ym[5]),
+            &Vec3::zeros(),
+        );
         let scale = Vec3::new(yf[0], yf[1], yf[2]).norm().max(1.0);
         worst = worst.max((out.position - Vec3::new(yf[0], yf[1], yf[2])).norm() / scale);
         let vscale = Vec3::new(yf[3], yf[4], yf[5]).norm().max(1.0);
@@ -139,10 +205,16 @@ fn check_against_fixed_frame<M: FrameMotion>(motion: &M, t_end: f64) -> f64 {
 #[test]
 fn steady_frame_integration_matches_fixed_frame() {
     let w = Vec3::new(0.3, -0.4, 1.2);
-    let f = MovingFrame::new(Vec3::new(1.0, -1.0, 0.5), Vec3::new(0.3, 0.2, -0.1), Vec3::new(-0.5, 0.25, 0.1), w, 0.35 * w)
-        .unwrap()
-        .with_attitude(rot(Vec3::new(1.0, 2.0, 3.0), 0.7))
-        .unwrap();
+    let f = MovingFrame::new(
+        Vec3::new(1.0, -1.0, 0.5),
+        Vec3::new(0.3, 0.2, -0.1),
+        Vec3::new(-0.5, 0.25, 0.1),
+        w,
+        0.35 * w,
+    )
+    .unwrap()
+    .with_attitude(rot(Vec3::new(1.0, 2.0, 3.0), 0.7))
+    .unwrap();
     let motion = SteadyMotion::new(f).unwrap();
     let worst = check_against_fixed_frame(&motion, 4.0);
     assert!(worst < FRAME_AGREEMENT, "relative disagreement {worst:e}");
@@ -154,7 +226,11 @@ fn steady_frame_integration_matches_fixed_frame() {
 fn tumbling_frame_given_by_functions_of_time_matches_fixed_frame() {
     let motion = |t: f64| {
         let (phi, dphi, ddphi) = (0.8 * t + 0.3 * t.sin(), 0.8 + 0.3 * t.cos(), -0.3 * t.sin());
-        let (th, dth, ddth) = (0.5 * (1.3 * t).sin(), 0.65 * (1.3 * t).cos(), -0.845 * (1.3 * t).sin());
+        let (th, dth, ddth) = (
+            0.5 * (1.3 * t).sin(),
+            0.65 * (1.3 * t).cos(),
+            -0.845 * (1.3 * t).sin(),
+        );
         let rz = rot(Vec3::z(), phi);
         let attitude = rz * rot(Vec3::x(), th);
         let nodes = rz * Vec3::x();
@@ -184,10 +260,36 @@ fn negative_control_without_coriolis_disagrees() {
     let opts = Options::with_tolerances(1e-12, 1e-12);
     let (r0, v0) = (Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0));
     // Free particle, moving-frame equation without Coriolis: add back +2m ω×v to cancel it.
-    let wrong = simulate_particle(&motion, 1.0, r0, v0, 0.0, 2.0, |_t, _r, v| 2.0 * w.cross(v), &opts, None::<(fn(f64, &ParticleState) -> f64, Crossing)>).unwrap();
-    let right = simulate_particle(&motion, 1.0, r0, v0, 0.0, 2.0, |_t, _r, _v| Vec3::zeros(), &opts, None::<(fn(f64, &ParticleState) -> f64, Crossing)>).unwrap();
+    let wrong = simulate_particle(
+        &motion,
+        1.0,
+        r0,
+        v0,
+        0.0,
+        2.0,
+        |_t, _r, v| 2.0 * w.cross(v),
+        &opts,
+        None::<(fn(f64, &ParticleState) -> f64, Crossing)>,
+    )
+    .unwrap();
+    let right = simulate_particle(
+        &motion,
+        1.0,
+        r0,
+        v0,
+        0.0,
+        2.0,
+        |_t, _r, _v| Vec3::zeros(),
+        &opts,
+        None::<(fn(f64, &ParticleState) -> f64, Crossing)>,
+    )
+    .unwrap();
     let start = f.to_fixed(&r0, &v0, &Vec3::zeros());
-    let truth = motion.at(2.0).to_moving(&(start.position + 2.0 * start.velocity), &start.velocity, &Vec3::zeros());
+    let truth = motion.at(2.0).to_moving(
+        &(start.position + 2.0 * start.velocity),
+        &start.velocity,
+        &Vec3::zeros(),
+    );
     let (yw, yr) = (wrong.y_final(), right.y_final());
     assert!((Vec3::new(yr[0], yr[1], yr[2]) - truth.position).norm() < 1e-10);
     assert!((Vec3::new(yw[0], yw[1], yw[2]) - truth.position).norm() > 0.1);

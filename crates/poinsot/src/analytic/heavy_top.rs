@@ -291,7 +291,7 @@ impl HeavyTop {
             theta_dot,
             psi_dot: omega3 - phi_dot * theta.cos(), // 2.99
         };
-        Self::new(i1, i3, mgl, state)
+        Self::new(i1, i3, mgl, state).map_err(|e| e.renamed("psi_dot", "omega3"))
     }
 
     /// The top given by its constants of motion instead of an initial state: p_φ and p_ψ

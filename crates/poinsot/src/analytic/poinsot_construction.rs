@@ -112,12 +112,16 @@ impl FreeRigidBody {
         } else {
             (0.0, 0.0)
         };
-        Ok((0..samples)
-            .map(|i| {
-                let th = t0 + span * i as f64 / (samples - 1) as f64;
-                self.state_at_hat(th).0
-            })
-            .collect())
+        crate::limits::check_count("samples", samples, 2, 24)?;
+        let mut out = Vec::with_capacity(samples);
+        for i in 0..samples {
+            if i % 4096 == 0 {
+                crate::control::tick()?; // Ctrl-C and progress on a huge request
+            }
+            let th = t0 + span * i as f64 / (samples - 1) as f64;
+            out.push(self.state_at_hat(th).0);
+        }
+        Ok(out)
     }
 
     /// The factor that takes ω̂ to the contact point: ω/(2T)^½ = ω̂ 2^e_w / ((2T̂)^½ 2^(e_i/2)

@@ -215,11 +215,19 @@ fn one_body(
     // argument it comes from, not on the integrator).
     // The exact flow rescales internally and needs neither.
     let l0 = Vec3::new(moments[0] * w0.x, moments[1] * w0.y, moments[2] * w0.z);
-    if method != Method::Exact && !(l0.iter().all(|x| x.is_finite()) && (0.5 * w0.dot(&l0)).is_finite()) {
-        return Err(Error::invalid("omega0", "the initial angular momentum or energy overflows"));
+    if method != Method::Exact
+        && !(l0.iter().all(|x| x.is_finite()) && (0.5 * w0.dot(&l0)).is_finite())
+    {
+        return Err(Error::invalid(
+            "omega0",
+            "the initial angular momentum or energy overflows",
+        ));
     }
     if !torque_at(0.0, &w0, q0).iter().all(|x| x.is_finite()) {
-        return Err(Error::invalid("torque", "the torque at the start overflows"));
+        return Err(Error::invalid(
+            "torque",
+            "the torque at the start overflows",
+        ));
     }
     let steps_for = |torque_norm: f64| -> Result<(usize, f64)> {
         let inertia = BodyInertia::from_moments(*moments)?;

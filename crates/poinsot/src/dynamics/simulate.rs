@@ -521,7 +521,11 @@ pub fn simulate<T: TorqueModel + ?Sized>(
             // step per turn at the fastest rate of the problem (it takes several).
             let n0 = frames.torque_p(torque, 0.0, &w0_p, &q0_p).norm();
             if let Some(h) = default_step(inertia, &omega0, n0, torque.orbit_rate()) {
-                check_steps(duration / (1000.0 * h), opts.max_steps, "shorten the duration")?;
+                check_steps(
+                    duration / (1000.0 * h),
+                    opts.max_steps,
+                    "shorten the duration",
+                )?;
             }
             let options = Options {
                 rtol: opts.rtol,

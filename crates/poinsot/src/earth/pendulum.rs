@@ -68,7 +68,11 @@ impl Earth {
         let r = Vec3::new(state[0], state[1], state[2]);
         let v = Vec3::new(state[3], state[4], state[5]);
         // Each term finite, or the error names the half of the state it comes from.
-        let kinetic = crate::error::finite_result("velocity", "the kinetic energy ½|v|²", 0.5 * v.norm_squared())?;
+        let kinetic = crate::error::finite_result(
+            "velocity",
+            "the kinetic energy ½|v|²",
+            0.5 * v.norm_squared(),
+        )?;
         let potential = crate::error::finite_result(
             "position",
             "the potential g z − ½|ω × r|²",

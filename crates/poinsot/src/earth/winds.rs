@@ -76,7 +76,11 @@ impl Earth {
         check_non_negative("t_end", t_end)?;
         // At least one step per inertial turn (DOP853 takes several): refuse at once a run
         // that needs more than max_steps.
-        crate::limits::check_steps(t_end * f.abs() / std::f64::consts::TAU, options.max_steps, "shorten the run")?;
+        crate::limits::check_steps(
+            t_end * f.abs() / std::f64::consts::TAU,
+            options.max_steps,
+            "shorten the run",
+        )?;
         // State: x, y, vx, vy and the turning angle of the velocity θ, θ̇ = (vx ay − vy ax)/|v|².
         let rhs = |_t: f64, y: &[f64; 5], dy: &mut [f64; 5]| {
             let (vx, vy) = (y[2], y[3]);

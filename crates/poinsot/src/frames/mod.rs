@@ -10,7 +10,11 @@ mod motion;
 mod particle;
 mod spring;
 
-pub use kinematics::{AccelerationTerms, FictitiousForces, FictitiousTerms, FixedMotion, MovingFrame, RelativeMotion};
+pub use kinematics::{
+    AccelerationTerms, FictitiousForces, FictitiousTerms, FixedMotion, MovingFrame, RelativeMotion,
+};
 pub use motion::{FrameMotion, SteadyMotion};
-pub use particle::{simulate_particle, simulate_particle_at, simulate_particle_fixed, ParticleState};
+pub use particle::{
+    simulate_particle, simulate_particle_at, simulate_particle_fixed, ParticleState,
+};
 pub use spring::SpringParticle;

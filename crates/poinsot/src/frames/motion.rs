@@ -20,7 +20,11 @@ pub trait FrameMotion {
     fn moving_components(&self, t: f64) -> (Vec3, Vec3, Vec3) {
         let f = self.at(t);
         let at = f.attitude.transpose();
-        (at * f.acceleration, at * f.angular_velocity, at * f.angular_acceleration)
+        (
+            at * f.acceleration,
+            at * f.angular_velocity,
+            at * f.angular_acceleration,
+        )
     }
 }
 
@@ -74,7 +78,15 @@ impl SteadyMotion {
             Vec3::z()
         };
         let a0t = initial.attitude.transpose();
-        Ok(Self { initial, axis, rate: axis.dot(&w), rate_dot: axis.dot(&wd), w_moving: a0t * w, wd_moving: a0t * wd, accelerating: initial.acceleration != Vec3::zeros() })
+        Ok(Self {
+            initial,
+            axis,
+            rate: axis.dot(&w),
+            rate_dot: axis.dot(&wd),
+            w_moving: a0t * w,
+            wd_moving: a0t * wd,
+            accelerating: initial.acceleration != Vec3::zeros(),
+        })
     }
 
     /// The state at `t = 0`.

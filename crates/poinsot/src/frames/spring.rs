@@ -77,7 +77,8 @@ impl SpringParticle {
     /// change. With ω = 0 it is [`SpringParticle::energy`].
     pub fn jacobi_integral(&self, frame: &MovingFrame, position: &Vec3, velocity: &Vec3) -> f64 {
         let w = frame.angular_velocity_moving();
-        0.5 * self.mass * (velocity.norm_squared() - w.cross(position).norm_squared()) + self.potential(position)
+        0.5 * self.mass * (velocity.norm_squared() - w.cross(position).norm_squared())
+            + self.potential(position)
     }
 
     /// Integrates the particle relative to the moving `frame` from t = 0 to `duration` with every
@@ -94,7 +95,17 @@ impl SpringParticle {
         times: &[f64],
         opts: &Options,
     ) -> Result<Scan<ParticleState>> {
-        simulate_particle_at(frame, self.mass, position, velocity, 0.0, duration, times, |_t, r, _v| self.force(r), opts)
+        simulate_particle_at(
+            frame,
+            self.mass,
+            position,
+            velocity,
+            0.0,
+            duration,
+            times,
+            |_t, r, _v| self.force(r),
+            opts,
+        )
     }
 }
 
@@ -110,18 +121,45 @@ mod tests {
     const DRIFT_TOL: f64 = 1e-10;
 
     fn table(rate: f64, rate_dot: f64) -> SteadyMotion {
-        let f = MovingFrame::new(Vec3::zeros(), Vec3::zeros(), Vec3::zeros(), Vec3::new(0.0, 0.0, rate), Vec3::new(0.0, 0.0, rate_dot)).unwrap();
+        let f = MovingFrame::new(
+            Vec3::zeros(),
+            Vec3::zeros(),
+            Vec3::zeros(),
+            Vec3::new(0.0, 0.0, rate),
+            Vec3::new(0.0, 0.0, rate_dot),
+        )
+        .unwrap();
         SteadyMotion::new(f).unwrap()
     }
 
     fn opts() -> Options {
-        Options { rtol: 1e-12, atol: 1e-14, dense: false, ..Options::default() }
+        Options {
+            rtol: 1e-12,
+            atol: 1e-14,
+            dense: false,
+            ..Options::default()
+        }
     }
 
     /// Integrates in the rotating frame and maps each sample back to the fixed frame.
-    fn fixed_path(p: &SpringParticle, m: &SteadyMotion, r0: Vec3, v0_fixed: Vec3, times: &[f64]) -> Vec<(Vec3, Vec3, Vec3, Vec3)> {
+    fn fixed_path(
+        p: &SpringParticle,
+        m: &SteadyMotion,
+        r0: Vec3,
+        v0_fixed: Vec3,
+        times: &[f64],
+    ) -> Vec<(Vec3, Vec3, Vec3, Vec3)> {
         let rel0 = m.at(0.0).to_moving(&r0, &v0_fixed, &Vec3::zeros());
-        let scan = p.simulate_at(m, rel0.position, rel0.velocity, *times.last().unwrap(), times, &opts()).unwrap();
+        let scan = p
+            .simulate_at(
+                m,
+                rel0.position,
+                rel0.velocity,
+                *times.last().unwrap(),
+                times,
+                &opts(),
+            )
+            .unwrap();
         times
             .iter()
             .zip(&scan.y)
@@ -141,10 +179,17 @@ mod tests {
         let (r0, v0) = (Vec3::new(0.8, 0.1, 0.0), Vec3::new(-0.2, 0.7, 0.1));
         let times: Vec<f64> = (1..=40).map(|i| 0.25 * i as f64).collect();
         for (rate, rate_dot) in [(1.3, 0.0), (-0.7, 0.4)] {
-            for ((x, v, _, _), &t) in fixed_path(&p, &table(rate, rate_dot), r0, v0, &times).iter().zip(&times) {
+            for ((x, v, _, _), &t) in fixed_path(&p, &table(rate, rate_dot), r0, v0, &times)
+                .iter()
+                .zip(&times)
+            {
                 let exact = r0 * (big_omega * t).cos() + v0 * ((big_omega * t).sin() / big_omega);
-                let exact_v = -r0 * (big_omega * (big_omega * t).sin()) + v0 * (big_omega * t).cos();
-                assert!((x - exact).norm() < TRAJECTORY_TOL, "t = {t}: {x} vs {exact}");
+                let exact_v =
+                    -r0 * (big_omega * (big_omega * t).sin()) + v0 * (big_omega * t).cos();
+                assert!(
+                    (x - exact).norm() < TRAJECTORY_TOL,
+                    "t = {t}: {x} vs {exact}"
+                );
                 assert!((v - exact_v).norm() < TRAJECTORY_TOL, "t = {t}");
             }
         }
@@ -155,7 +200,10 @@ mod tests {
         let p = SpringParticle::new(1.0, 0.0).unwrap();
         let (r0, v0) = (Vec3::new(0.8, 0.0, 0.0), Vec3::new(-0.5, 0.3, 0.0));
         let times: Vec<f64> = (1..=30).map(|i| 0.2 * i as f64).collect();
-        for ((x, v, r, _), &t) in fixed_path(&p, &table(1.5, -0.3), r0, v0, &times).iter().zip(&times) {
+        for ((x, v, r, _), &t) in fixed_path(&p, &table(1.5, -0.3), r0, v0, &times)
+            .iter()
+            .zip(&times)
+        {
             assert!((x - (r0 + v0 * t)).norm() < TRAJECTORY_TOL, "t = {t}");
             assert!((v - v0).norm() < TRAJECTORY_TOL, "t = {t}");
             // Negative control: in the rotating frame the path is not the straight line.
@@ -181,9 +229,15 @@ mod tests {
                 worst_j = worst_j.max((p.jacobi_integral(&m.at(t), r, rv) - j0).abs());
             }
             if jacobi_conserved {
-                assert!(worst_j < DRIFT_TOL * j0.abs().max(1.0), "J drifted by {worst_j}");
+                assert!(
+                    worst_j < DRIFT_TOL * j0.abs().max(1.0),
+                    "J drifted by {worst_j}"
+                );
             } else {
-                assert!(worst_j > 1e-2, "the Euler force must change J (got {worst_j})");
+                assert!(
+                    worst_j > 1e-2,
+                    "the Euler force must change J (got {worst_j})"
+                );
             }
         }
     }
@@ -204,8 +258,19 @@ mod tests {
     #[test]
     fn bad_mass_and_stiffness_are_named() {
         assert_eq!(SpringParticle::new(0.0, 1.0).unwrap_err().argument, "mass");
-        assert_eq!(SpringParticle::new(f64::NAN, 1.0).unwrap_err().argument, "mass");
-        assert_eq!(SpringParticle::new(1.0, -1.0).unwrap_err().argument, "stiffness");
-        assert_eq!(SpringParticle::new(1.0, f64::INFINITY).unwrap_err().argument, "stiffness");
+        assert_eq!(
+            SpringParticle::new(f64::NAN, 1.0).unwrap_err().argument,
+            "mass"
+        );
+        assert_eq!(
+            SpringParticle::new(1.0, -1.0).unwrap_err().argument,
+            "stiffness"
+        );
+        assert_eq!(
+            SpringParticle::new(1.0, f64::INFINITY)
+                .unwrap_err()
+                .argument,
+            "stiffness"
+        );
     }
 }

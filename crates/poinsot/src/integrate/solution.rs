@@ -22,7 +22,12 @@ pub struct DenseStep {
 impl DenseStep {
     pub(crate) fn new(t_old: f64, h: f64, y_old: Vec<f64>, coeffs: Vec<f64>) -> Self {
         debug_assert_eq!(coeffs.len(), INTERPOLATOR_POWER * y_old.len());
-        Self { t_old, h, y_old, coeffs }
+        Self {
+            t_old,
+            h,
+            y_old,
+            coeffs,
+        }
     }
 
     /// Writes the interpolated state at `t` into `out` (`out.len()` = state length).
@@ -73,17 +78,28 @@ pub struct Solution<S> {
 
 impl<S: OdeState> Solution<S> {
     pub(crate) fn new(t0: f64, y0: S) -> Self {
-        Self { t: vec![t0], y: vec![y0], stats: Stats::default(), event: None, dense: Vec::new() }
+        Self {
+            t: vec![t0],
+            y: vec![y0],
+            stats: Stats::default(),
+            event: None,
+            dense: Vec::new(),
+        }
     }
 
     /// The final time reached.
     pub fn t_final(&self) -> f64 {
-        *self.t.last().expect("a solution holds at least its initial point")
+        *self
+            .t
+            .last()
+            .expect("a solution holds at least its initial point")
     }
 
     /// The state at the final time.
     pub fn y_final(&self) -> &S {
-        self.y.last().expect("a solution holds at least its initial point")
+        self.y
+            .last()
+            .expect("a solution holds at least its initial point")
     }
 
     /// Whether the dense output was kept (so that [`Solution::at`] works).
@@ -108,18 +124,26 @@ impl<S: OdeState> Solution<S> {
         let t1 = self.t_final();
         let (lo, hi) = if t1 >= t0 { (t0, t1) } else { (t1, t0) };
         if !(t >= lo && t <= hi) {
-            return Err(Error::invalid("t", format!("must lie in [{lo}, {hi}], the solved interval, got {t}")));
+            return Err(Error::invalid(
+                "t",
+                format!("must lie in [{lo}, {hi}], the solved interval, got {t}"),
+            ));
         }
         if t == t1 {
             out.copy_from_slice(self.y_final().as_slice());
             return Ok(());
         }
         if !self.has_dense_output() {
-            return Err(Error::invalid("t", "this solution kept no dense output (solve with Options::dense = true)"));
+            return Err(Error::invalid(
+                "t",
+                "this solution kept no dense output (solve with Options::dense = true)",
+            ));
         }
         // Step i covers [t[i], t[i+1]]; find it by bisection on the monotone times.
         let forward = t1 >= t0;
-        let i = self.t.partition_point(|&ti| if forward { ti <= t } else { ti >= t });
+        let i = self
+            .t
+            .partition_point(|&ti| if forward { ti <= t } else { ti >= t });
         let i = i.saturating_sub(1).min(self.dense.len() - 1);
         self.dense[i].eval_into(t, out);
         Ok(())

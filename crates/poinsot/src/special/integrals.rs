@@ -336,7 +336,11 @@ fn incomplete(kind: Kind, phi: f64, p: Param) -> Result<f64> {
     }
     if phi.abs() > PHI_LINEAR {
         let whole = complete(kind, p).map_err(|e| diverges_past_half_pi(kind, phi, e))?;
-        return finite_result("phi", name, phi * (settled(whole)? / std::f64::consts::FRAC_PI_2));
+        return finite_result(
+            "phi",
+            name,
+            phi * (settled(whole)? / std::f64::consts::FRAC_PI_2),
+        );
     }
     let mut j = (phi / PI).round();
     let mut r = (-j).mul_add(PI, phi) - j * PI_LO;
