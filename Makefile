@@ -30,6 +30,7 @@ test-rust:
 	cargo test -p poinsot-wasm --release
 
 lint: $(PY)
+	cargo fmt --all --check
 	cargo clippy --workspace --all-targets --release -- -D warnings
 	$(PY) -m mypy.stubtest poinsot._core --allowlist python/stubtest-allowlist.txt
 
