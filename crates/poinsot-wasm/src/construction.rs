@@ -90,7 +90,8 @@ impl FreeRigidBody {
         let pts = times
             .iter()
             .map(|&t| self.inner.contact_point(t))
-            .collect::<Result<Vec<poinsot::Vec3>, _>>()?;
+            .collect::<Result<Vec<poinsot::Vec3>, _>>()
+            .map_err(|e| e.renamed("t", "times"))?;
         finite("times", "contact point", flat(&pts))
     }
     /// ω (body components, rad/s) at each of `times` (s): 3N numbers.
@@ -104,7 +105,8 @@ impl FreeRigidBody {
         let pts = times
             .iter()
             .map(|&t| self.inner.omega(t))
-            .collect::<Result<Vec<poinsot::Vec3>, _>>()?;
+            .collect::<Result<Vec<poinsot::Vec3>, _>>()
+            .map_err(|e| e.renamed("t", "times"))?;
         finite("times", "omega", flat(&pts))
     }
     /// `samples` points (3N numbers, body components) of the polhode on the inertia ellipsoid
