@@ -1,6 +1,9 @@
 //! The heavy symmetric top: constants of motion, effective potential, turning points, motion
 //! classes, steady precession and the errata of the unit's 2.117 and 2.120.
 
+mod common;
+use common::top;
+
 use poinsot::analytic::{
     constants_of_state, lagrangian, min_spin, sleeping_threshold, steady_precession, EulerState,
     HeavyTop, MotionClass,
@@ -10,30 +13,6 @@ use proptest::prelude::*;
 
 /// Round-off of quantities built from O(1) data by a few dozen operations.
 const ROUND_OFF: f64 = 1e-13;
-
-fn top(
-    i1: f64,
-    i3: f64,
-    mgl: f64,
-    theta: f64,
-    theta_dot: f64,
-    phi_dot: f64,
-    psi_dot: f64,
-) -> HeavyTop {
-    HeavyTop::new(
-        i1,
-        i3,
-        mgl,
-        EulerState {
-            theta,
-            theta_dot,
-            phi_dot,
-            psi_dot,
-            ..Default::default()
-        },
-    )
-    .unwrap()
-}
 
 /// The errata example of `seed-errata.md`: the exact fast rate of 2.116 is 24.2176 and the
 /// corrected 2.120, p_ψ/(I₁ cos θ₀), gives 24.2326; the unit's printed p_ψ/(2 I₁ cos θ₀) is off

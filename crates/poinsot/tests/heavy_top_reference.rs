@@ -8,43 +8,13 @@
 //! |x| ≤ 1 to 1e-12 absolute, larger ones (φ and ψ grow linearly in time) to 1e-12 relative —
 //! also near the sleeping top, where the naive 1 − cos θ would lose half the digits.
 
+mod common;
+use common::load_reference;
+
 use poinsot::analytic::{EulerState, HeavyTop, MotionClass};
-use std::collections::BTreeMap;
 
 /// Round-off of the exact solution (see the module docs).
 const REFERENCE_TOL: f64 = 1e-12;
-
-struct Row {
-    class: String,
-    params: [f64; 3],
-    initial: [f64; 4],
-    t: f64,
-    values: [f64; 6],
-}
-
-fn load() -> BTreeMap<String, Vec<Row>> {
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../python/tests/reference/heavy_top_mpmath.csv"
-    );
-    let text = std::fs::read_to_string(path).expect("reference data (run gen_heavy_top.py)");
-    let mut cases: BTreeMap<String, Vec<Row>> = BTreeMap::new();
-    for line in text
-        .lines()
-        .filter(|l| !l.starts_with('#') && !l.starts_with("name,"))
-    {
-        let f: Vec<&str> = line.split(',').collect();
-        let num = |i: usize| f[i].parse::<f64>().unwrap();
-        cases.entry(f[0].to_string()).or_default().push(Row {
-            class: f[1].to_string(),
-            params: [num(2), num(3), num(4)],
-            initial: [num(5), num(6), num(7), num(8)],
-            t: num(9),
-            values: [num(10), num(11), num(12), num(13), num(14), num(15)],
-        });
-    }
-    cases
-}
 
 fn class_name(c: MotionClass) -> &'static str {
     c.name()
@@ -52,7 +22,7 @@ fn class_name(c: MotionClass) -> &'static str {
 
 #[test]
 fn exact_solution_matches_the_40_digit_reference() {
-    let cases = load();
+    let cases = load_reference("heavy_top_mpmath.csv", "gen_heavy_top.py");
     assert!(cases.len() >= 12, "{} cases", cases.len());
     for (name, rows) in &cases {
         let r0 = &rows[0];
@@ -110,7 +80,7 @@ fn near_sleeping_theta_keeps_relative_accuracy() {
     let naive = 1.0 - 1e-3f64.cos();
     let exact = 2.0 * 5e-4f64.sin().powi(2);
     assert!(((naive - exact) / exact).abs() > 1e-11);
-    let cases = load();
+    let cases = load_reference("heavy_top_mpmath.csv", "gen_heavy_top.py");
     for name in ["near_sleeping", "near_sleeping_loops"] {
         let rows = &cases[name];
         let [i1, i3, mgl] = rows[0].params;

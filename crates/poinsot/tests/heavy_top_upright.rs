@@ -16,73 +16,18 @@
 //!   scalings of time and of the moments;
 //! * closed forms: the top rising to the upright along the separatrix.
 
+mod common;
+use common::{load_reference, top};
+
 use poinsot::analytic::{
     constants_of_state, lagrangian, min_spin, sleeping_threshold, steady_precession, EulerState,
     HeavyTop, MotionClass, MAX_PHASE, MIN_POLE_DISTANCE,
 };
 use proptest::prelude::*;
-use std::collections::BTreeMap;
 
 /// The accuracy issue 10 asks for near upright: θ relative to itself, φ and ψ relative to
 /// max(|x|, 1 rad), for every θ₀ down to 1e-12.
 const UPRIGHT_TOL: f64 = 1e-10;
-
-fn top(
-    i1: f64,
-    i3: f64,
-    mgl: f64,
-    theta: f64,
-    theta_dot: f64,
-    phi_dot: f64,
-    psi_dot: f64,
-) -> HeavyTop {
-    HeavyTop::new(
-        i1,
-        i3,
-        mgl,
-        EulerState {
-            theta,
-            theta_dot,
-            phi_dot,
-            psi_dot,
-            ..Default::default()
-        },
-    )
-    .unwrap()
-}
-
-struct Row {
-    class: String,
-    params: [f64; 3],
-    initial: [f64; 4],
-    t: f64,
-    values: [f64; 6],
-}
-
-fn load() -> BTreeMap<String, Vec<Row>> {
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../python/tests/reference/heavy_top_upright_mpmath.csv"
-    );
-    let text =
-        std::fs::read_to_string(path).expect("reference data (run gen_heavy_top_upright.py)");
-    let mut cases: BTreeMap<String, Vec<Row>> = BTreeMap::new();
-    for line in text
-        .lines()
-        .filter(|l| !l.starts_with('#') && !l.starts_with("name,"))
-    {
-        let f: Vec<&str> = line.split(',').collect();
-        let num = |i: usize| f[i].parse::<f64>().unwrap();
-        cases.entry(f[0].to_string()).or_default().push(Row {
-            class: f[1].to_string(),
-            params: [num(2), num(3), num(4)],
-            initial: [num(5), num(6), num(7), num(8)],
-            t: num(9),
-            values: [num(10), num(11), num(12), num(13), num(14), num(15)],
-        });
-    }
-    cases
-}
 
 /// Every near-upright case of the 40-digit reference, by both evaluations (the Fourier series
 /// where they converge, and Jacobi's sn with Carlson's R_J): θ to 1e-10 of itself (it is as
@@ -90,7 +35,7 @@ fn load() -> BTreeMap<String, Vec<Row>> {
 /// max(|θ̇|, θ × 1/s): near a turning point θ̇ passes through 0), and the class of the path.
 #[test]
 fn near_upright_matches_the_40_digit_reference() {
-    let cases = load();
+    let cases = load_reference("heavy_top_upright_mpmath.csv", "gen_heavy_top_upright.py");
     assert!(cases.len() >= 25, "{} cases", cases.len());
     let mut classes = std::collections::BTreeSet::new();
     for (name, rows) in &cases {

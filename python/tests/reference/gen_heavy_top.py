@@ -72,9 +72,9 @@ def case_list() -> list[dict]:
     return cases
 
 
-def integrate(case: dict) -> dict:
-    i1, i3, mgl = (mp.mpf(case[k]) for k in ("I1", "I3", "mgl"))
-    th0, thd0, phd0, psd0 = (mp.mpf(case[k]) for k in ("theta", "theta_dot", "phi_dot", "psi_dot"))
+def euler_lagrange_rhs(i1, i3, mgl):
+    """The right-hand side ``(t, y) -> y'`` of the Euler-Lagrange equations of 2.102 for
+    ``y = [θ, φ, ψ, θ̇, φ̇, ψ̇]`` (rad, rad/s), moments ``i1``, ``i3`` (kg m²), ``mgl`` (N m)."""
 
     def rhs(_t, y):
         th, _ph, _ps, thd, phd, psd = y
@@ -85,6 +85,13 @@ def integrate(case: dict) -> dict:
         psdd = -phdd * c + phd * thd * s
         return [thd, phd, psd, thdd, phdd, psdd]
 
+    return rhs
+
+
+def constants_of_motion(i1, i3, mgl):
+    """``y -> (p_φ, p_ψ, E)`` (kg m²/s, kg m²/s, J) of a state ``y`` as in
+    :func:`euler_lagrange_rhs` (2.103–2.105)."""
+
     def constants(y):
         th, _ph, _ps, thd, phd, psd = y
         s, c = mp.sin(th), mp.cos(th)
@@ -93,6 +100,16 @@ def integrate(case: dict) -> dict:
         p_phi = i1 * phd * s**2 + p_psi * c
         energy = i1 * (thd**2 + phd**2 * s**2) / 2 + i3 * w3**2 / 2 + mgl * c
         return p_phi, p_psi, energy
+
+    return constants
+
+
+def integrate(case: dict) -> dict:
+    i1, i3, mgl = (mp.mpf(case[k]) for k in ("I1", "I3", "mgl"))
+    th0, thd0, phd0, psd0 = (mp.mpf(case[k]) for k in ("theta", "theta_dot", "phi_dot", "psi_dot"))
+
+    rhs = euler_lagrange_rhs(i1, i3, mgl)
+    constants = constants_of_motion(i1, i3, mgl)
 
     y0 = [th0, mp.mpf(0), mp.mpf(0), thd0, phd0, psd0]
     sol = mp.odefun(rhs, 0, y0)

@@ -38,6 +38,7 @@ import time
 from pathlib import Path
 
 import mpmath as mp
+from gen_heavy_top import constants_of_motion, euler_lagrange_rhs  # same directory
 
 DPS = 40
 HERE = Path(__file__).resolve().parent
@@ -109,23 +110,8 @@ def integrate(case: dict) -> dict:
     i1, i3, mgl = (mp.mpf(x) for x in (I1, I3, MGL))
     th0, thd0, phd0, psd0 = (mp.mpf(case[k]) for k in ("theta", "theta_dot", "phi_dot", "psi_dot"))
 
-    def rhs(_t, y):
-        th, _ph, _ps, thd, phd, psd = y
-        s, c = mp.sin(th), mp.cos(th)
-        w3 = psd + phd * c
-        thdd = (i1 * phd**2 * s * c - i3 * w3 * phd * s + mgl * s) / i1
-        phdd = thd * (i3 * w3 - 2 * i1 * phd * c) / (i1 * s)
-        psdd = -phdd * c + phd * thd * s
-        return [thd, phd, psd, thdd, phdd, psdd]
-
-    def constants(y):
-        th, _ph, _ps, thd, phd, psd = y
-        s, c = mp.sin(th), mp.cos(th)
-        w3 = psd + phd * c
-        p_psi = i3 * w3
-        p_phi = i1 * phd * s**2 + p_psi * c
-        energy = i1 * (thd**2 + phd**2 * s**2) / 2 + i3 * w3**2 / 2 + mgl * c
-        return p_phi, p_psi, energy
+    rhs = euler_lagrange_rhs(i1, i3, mgl)
+    constants = constants_of_motion(i1, i3, mgl)
 
     y0 = [th0, mp.mpf(0), mp.mpf(0), thd0, phd0, psd0]
     sol = mp.odefun(rhs, 0, y0)

@@ -94,29 +94,55 @@ fn o3(a: P3, b: P3, c: P3, d: P3) -> i8 {
     -sign(robust::orient3d(c3(a), c3(b), c3(c), c3(d)))
 }
 
+/// The plane of a triangle for the float filters of [`o3_plane`] and [`off_plane`]: its first
+/// corner `a`, the normal `n = (t₁ − a) × (t₂ − a)` and the permanent `na` of that product
+/// (the sums of the absolute values of its terms).
+struct Plane {
+    a: P3,
+    n: P3,
+    na: P3,
+}
+
+impl Plane {
+    #[inline]
+    fn of(t: &[P3; 3]) -> Self {
+        let a = t[0];
+        let u = [t[1][0] - a[0], t[1][1] - a[1], t[1][2] - a[2]];
+        let w = [t[2][0] - a[0], t[2][1] - a[1], t[2][2] - a[2]];
+        let n = [
+            u[1] * w[2] - u[2] * w[1],
+            u[2] * w[0] - u[0] * w[2],
+            u[0] * w[1] - u[1] * w[0],
+        ];
+        let na = [
+            (u[1] * w[2]).abs() + (u[2] * w[1]).abs(),
+            (u[2] * w[0]).abs() + (u[0] * w[2]).abs(),
+            (u[0] * w[1]).abs() + (u[1] * w[0]).abs(),
+        ];
+        Self { a, n, na }
+    }
+
+    /// The float orientation determinant `n·(d − a)` of `d` against this plane, and its
+    /// permanent (the bound the filter's error is relative to).
+    #[inline]
+    fn det(&self, d: P3) -> (f64, f64) {
+        let (a, n, na) = (self.a, self.n, self.na);
+        let v = [d[0] - a[0], d[1] - a[1], d[2] - a[2]];
+        let det = n[0] * v[0] + n[1] * v[1] + n[2] * v[2];
+        let perm = na[0] * v[0].abs() + na[1] * v[1].abs() + na[2] * v[2].abs();
+        (det, perm)
+    }
+}
+
 /// [`o3`]`(t[0], t[1], t[2], d)` for each `d`, with the plane of `t` computed once: a float
 /// evaluation whose sign is certain beyond Shewchuk's error bound for this computation
 /// (`(7 + 56ε) ε` times the permanent; 2e-15 here), else the exact predicate. For points of
 /// extent in `[2^-60, 2^60]` (no overflow or underflow), as the callers ensure.
 #[inline]
 fn o3_plane<const N: usize>(t: &[P3; 3], ds: [P3; N]) -> [i8; N] {
-    let a = t[0];
-    let u = [t[1][0] - a[0], t[1][1] - a[1], t[1][2] - a[2]];
-    let w = [t[2][0] - a[0], t[2][1] - a[1], t[2][2] - a[2]];
-    let n = [
-        u[1] * w[2] - u[2] * w[1],
-        u[2] * w[0] - u[0] * w[2],
-        u[0] * w[1] - u[1] * w[0],
-    ];
-    let na = [
-        (u[1] * w[2]).abs() + (u[2] * w[1]).abs(),
-        (u[2] * w[0]).abs() + (u[0] * w[2]).abs(),
-        (u[0] * w[1]).abs() + (u[1] * w[0]).abs(),
-    ];
+    let plane = Plane::of(t);
     ds.map(|d| {
-        let v = [d[0] - a[0], d[1] - a[1], d[2] - a[2]];
-        let det = n[0] * v[0] + n[1] * v[1] + n[2] * v[2];
-        let perm = na[0] * v[0].abs() + na[1] * v[1].abs() + na[2] * v[2].abs();
+        let (det, perm) = plane.det(d);
         if det.abs() > O3_FILTER * perm {
             sign(det)
         } else {
@@ -913,27 +939,13 @@ impl Index {
 /// For coordinates of magnitude at most [`FAST_COORD_MAX`] (no overflow).
 #[inline]
 fn off_plane(t: &[P3; 3], q: &[P3; 3], shared: u8) -> bool {
-    let a = t[0];
-    let u = [t[1][0] - a[0], t[1][1] - a[1], t[1][2] - a[2]];
-    let w = [t[2][0] - a[0], t[2][1] - a[1], t[2][2] - a[2]];
-    let n = [
-        u[1] * w[2] - u[2] * w[1],
-        u[2] * w[0] - u[0] * w[2],
-        u[0] * w[1] - u[1] * w[0],
-    ];
-    let na = [
-        (u[1] * w[2]).abs() + (u[2] * w[1]).abs(),
-        (u[2] * w[0]).abs() + (u[0] * w[2]).abs(),
-        (u[0] * w[1]).abs() + (u[1] * w[0]).abs(),
-    ];
+    let plane = Plane::of(t);
     let mut side = 0.0f64;
     for (j, d) in q.iter().enumerate() {
         if shared & (1 << j) != 0 {
             continue;
         }
-        let v = [d[0] - a[0], d[1] - a[1], d[2] - a[2]];
-        let det = n[0] * v[0] + n[1] * v[1] + n[2] * v[2];
-        let perm = na[0] * v[0].abs() + na[1] * v[1].abs() + na[2] * v[2].abs();
+        let (det, perm) = plane.det(*d);
         if det.abs() <= O3_FILTER * perm + FILTER_SLACK || det * side < 0.0 {
             return false;
         }
