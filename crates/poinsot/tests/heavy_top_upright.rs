@@ -183,8 +183,8 @@ proptest! {
     }
 
     /// Lagrange's equation for θ, I₁θ̈ = −dV/dθ (2.113), along the exact motion near upright:
-    /// θ̈ by the five-point central difference (step h = 1e-3 s: truncation h⁴Ω⁶/90 ≈ 1e-9 and
-    /// round-off 16ε/(12h²Ω²) ≈ 1e-9 relative for the motion's rates Ω ≲ 30/s), against −V′(θ)/I₁
+    /// θ̈ by the five-point central difference (step h = 1e-3 s, or 1/200 of the time θ/v the
+    /// axis takes to pass the pole at speed v where that is shorter), against −V′(θ)/I₁
     /// at θ(t), to 1e-6 of the size of the terms. A top frozen at θ₀ (θ̈ = 0, as on `main`) fails
     /// by the whole of mgl sin θ / I₁.
     #[test]
@@ -194,7 +194,16 @@ proptest! {
     ) {
         let th0 = 10f64.powf(log_th);
         let a = HeavyTop::with_spin(1.0, 0.5, 1.0, 0.0, th0, 0.0, phd, thd_rel * th0, w3).unwrap();
-        let h = 1e-3;
+        // The step resolves the motion's own time scale: near the pole the axis passes the
+        // vertical on a near-straight line, θ(t) ≈ √(θ_min² + v²(t − t₀)²), whose curvature time
+        // is τ = θ/v (θ from the nearer pole, 0 or π) with v = √(θ̇² + sin²θ φ̇²) the speed of the axis' tip. The stencil's
+        // truncation on that hyperbola is (h/τ)⁴/2 of θ̈ (its sixth derivative is 45 θ/τ⁶), the
+        // round-off 16ε(τ/h)²/12: h = min(1e-3, τ/200) keeps both below 1e-9.
+        let [_, th_t, _] = a.euler_angles(t).unwrap();
+        let [phd_t, thd_t, _] = a.euler_rates(t).unwrap();
+        let v = thd_t.hypot(th_t.sin() * phd_t);
+        let pole = th_t.min(std::f64::consts::PI - th_t); // distance to the nearer pole
+        let h = if v > 0.0 { 1e-3f64.min(pole / v / 200.0) } else { 1e-3 };
         let th = |s: f64| a.euler_angles(s).unwrap()[1];
         let (m2, m1, c, p1, p2) = (th(t - 2.0 * h), th(t - h), th(t), th(t + h), th(t + 2.0 * h));
         // θ must stay away from the pole over the stencil (the Euler angles are singular there).
@@ -601,4 +610,35 @@ fn passing_a_hair_from_a_pole_turns_phi_by_pi() {
             );
         }
     }
+}
+
+/// A top *started* within θ₁/ε of the pole it turns at θ₁ < MIN_POLE_DISTANCE is refused naming
+/// `theta`, not taken as passing through the pole: its time is anchored at θ₀, and the passage
+/// through the pole reaches it sooner by ~(θ₁/θ₀)²/2 of the time from θ₀. On `main` θ₀ =
+/// 3.16e-59 (θ₁ ≈ 1e-60) was taken as a passage and every later θ(t) was off by 8e-4 of itself
+/// (its motion at θ₀ × 2.385 agreed with the exact one, linear in the amplitude, to 1e-15).
+#[test]
+fn start_near_a_turning_point_by_the_pole_is_refused_not_snapped() {
+    let th0 = 10f64.powf(-58.4999433322294);
+    let mk = |lam: f64| {
+        HeavyTop::with_spin(
+            1.0,
+            0.5,
+            1.0,
+            0.0,
+            lam * th0,
+            0.0,
+            0.0505722042076335,
+            -1.7589351208342605 * lam * th0,
+            0.022677447538918954,
+        )
+    };
+    let e = mk(1.0).unwrap_err();
+    assert_eq!(e.argument, "theta");
+    assert!(e.message.contains("upright vertical"), "{e}");
+    // Just beyond MIN_POLE_DISTANCE at its turning point: solved, and linear in the amplitude.
+    let (a, b) = (mk(2.0).unwrap(), mk(4.0).unwrap());
+    let (x, y) = (a.euler_angles(4.7).unwrap(), b.euler_angles(4.7).unwrap());
+    assert!((y[1] / (2.0 * x[1]) - 1.0).abs() < 1e-13, "{x:?} {y:?}");
+    assert_eq!(a.motion_class(), MotionClass::Waves);
 }

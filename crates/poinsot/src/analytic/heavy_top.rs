@@ -214,8 +214,8 @@ impl HeavyTop {
         );
         let omega3 = psi_dot + phi_dot * c; // 2.99
         let beta = ts.beta(mgl, i1);
-        let a = i3 * omega3 / i1; // p_ψ / I₁ (2.103)
-                                  // I₁φ̇ sin²θ: the transverse part of p_φ (2.104).
+        let a = (i3 / i1) * omega3; // p_ψ / I₁ (2.103)
+                                    // I₁φ̇ sin²θ: the transverse part of p_φ (2.104).
         let ps = phi_dot * s2;
         // θ̇² + φ̇² sin²θ = 2 T_⊥ / I₁.
         let tperp = theta_dot * theta_dot + phi_dot * ps;
@@ -230,10 +230,10 @@ impl HeavyTop {
         };
         // The constants of the motion in SI (2.103–2.105), each representable or refused.
         let largest = largest_rate(&st);
-        let p_psi = ts.rate_to_si(i3 * omega3);
-        let p_phi = ts.rate_to_si(i1 * r.b);
-        let reduced_energy = ts.rate2_to_si(0.5 * i1 * tperp) + mgl * c; // 2.109
-        let energy = reduced_energy + ts.rate2_to_si(0.5 * i3 * omega3 * omega3); // 2.105
+        let p_psi = ts.moment_to_si(i3, omega3, 1);
+        let p_phi = ts.moment_to_si(i1, r.b, 1);
+        let reduced_energy = ts.moment_to_si(0.5 * i1, tperp, 2) + mgl * c; // 2.109
+        let energy = reduced_energy + ts.moment_to_si(0.5 * i3, omega3 * omega3, 2); // 2.105
         check_representable(&[
             ("p_psi", p_psi, largest),
             ("p_phi", p_phi, largest),
@@ -248,7 +248,7 @@ impl HeavyTop {
             f2: 2.0 * beta * c - a * a - tperp,
         };
         let turning = turning_points_from_state(&r, &local);
-        let turning = resolve_pole_passage("theta", turning)?;
+        let turning = resolve_pole_passage("theta", turning, Some((w0, v0)))?;
         Self::assemble(
             i1,
             i3,
@@ -362,7 +362,7 @@ impl HeavyTop {
         } else {
             turning
         };
-        let turning = resolve_pole_passage("p_phi", turning)?;
+        let turning = resolve_pole_passage("p_phi", turning, None)?;
         let (theta1, _) = turning.thetas();
         let start = EulerState {
             theta: theta1,
@@ -812,8 +812,8 @@ pub fn lagrangian(i1: f64, i3: f64, mgl: f64, state: &EulerState) -> Result<f64>
         ts.in_unit(state.psi_dot),
     );
     let w3 = psd + phd * c;
-    let l = ts.rate2_to_si(0.5 * i1 * (thd.powi(2) + (phd * s).powi(2)))
-        + ts.rate2_to_si(0.5 * i3 * w3 * w3)
+    let l = ts.moment_to_si(0.5 * i1, thd.powi(2) + (phd * s).powi(2), 2)
+        + ts.moment_to_si(0.5 * i3, w3 * w3, 2)
         - mgl * c;
     check_representable(&[("Lagrangian", l, largest_rate(state))])?;
     Ok(l)
@@ -858,14 +858,14 @@ pub fn constants_of_state(
         ts.in_unit(state.psi_dot),
     );
     let omega3 = psd + phd * c; // 2.99
-    let a = i3 * omega3 / i1; // p_ψ/I₁ (2.103)
+    let a = (i3 / i1) * omega3; // p_ψ/I₁ (2.103)
     let ps = phd * (s * s);
     let tperp = thd * thd + phd * ps;
     let out = StateConstants {
-        p_phi: ts.rate_to_si(i1 * (ps + a * c)), // 2.104
-        p_psi: ts.rate_to_si(i3 * omega3),
-        energy: (ts.rate2_to_si(0.5 * i1 * tperp) + mgl * c)
-            + ts.rate2_to_si(0.5 * i3 * omega3 * omega3), // 2.105
+        p_phi: ts.moment_to_si(i1, ps + a * c, 1), // 2.104
+        p_psi: ts.moment_to_si(i3, omega3, 1),
+        energy: (ts.moment_to_si(0.5 * i1, tperp, 2) + mgl * c)
+            + ts.moment_to_si(0.5 * i3, omega3 * omega3, 2), // 2.105
     };
     let largest = largest_rate(state);
     check_representable(&[
@@ -890,18 +890,25 @@ fn w_v(theta: f64) -> (f64, f64) {
 /// double precision goes: the distance is set to 0, and the axis passes through it with φ and ψ
 /// turning by π in the sense of p_φ ∓ p_ψ (what the passage at θ₁ does, up to θ₁/θ₂). Only a
 /// motion that stays within ~θ₁/ε of the pole is refused.
-fn resolve_pole_passage(argument: &str, t: Turning) -> Result<Turning> {
+///
+/// A top started from a state (`start` = its (w₀, v₀) = (1 − cos θ₀, 1 + cos θ₀)) must also
+/// start farther than θ₁/ε from the pole: its time is anchored at θ₀, and the passage at θ₁
+/// reaches the pole later than the passage through it by a fraction ~(θ₁/θ₀)²/2 of the time from
+/// θ₀ (θ₀ = 3.2e-59 with θ₁ = 1e-60 would put every later θ(t) off by 5e-4 of itself); closer
+/// starts are refused. A top given by its constants starts at θ₁ itself, the passage's instant.
+fn resolve_pole_passage(argument: &str, t: Turning, start: Option<(f64, f64)>) -> Result<Turning> {
     // 1 − cos θ at θ = MIN_POLE_DISTANCE (and 1 + cos θ at π − MIN_POLE_DISTANCE).
     let min = 0.5 * MIN_POLE_DISTANCE * MIN_POLE_DISTANCE;
     let close = |x: f64| x > 0.0 && x < min;
     // θ₁ < ε θ₂ ⇔ w₁ < ε² w₂ (near the pole w ≈ θ²/2).
     let eps2 = f64::EPSILON * f64::EPSILON;
+    let (w0, v0) = start.unwrap_or((f64::INFINITY, f64::INFINITY));
     let mut out = t;
-    if close(t.w_lo) && t.w_lo < eps2 * t.w_hi {
+    if close(t.w_lo) && t.w_lo < eps2 * t.w_hi && t.w_lo < eps2 * w0 {
         out.w_lo = 0.0;
         out.v_hi = 2.0;
     }
-    if close(t.v_lo) && t.v_lo < eps2 * t.v_hi {
+    if close(t.v_lo) && t.v_lo < eps2 * t.v_hi && t.v_lo < eps2 * v0 {
         out.v_lo = 0.0;
         out.w_hi = 2.0;
     }
@@ -1072,7 +1079,7 @@ fn uniform_rates(
     start: &EulerState,
     from_state: bool,
 ) -> (f64, f64) {
-    let omega3 = r.a * i1 / i3;
+    let omega3 = r.a * (i1 / i3);
     let (w, v) = (t.w_lo, t.v_lo);
     if w == 0.0 || v == 0.0 {
         return if from_state {
@@ -1139,10 +1146,32 @@ impl TimeScale {
     fn rate2_to_si(&self, x: f64) -> f64 {
         x * self.sigma * self.sigma
     }
-    /// β = 2 m g l / I₁ in the unit σ² (formed in SI where that is finite, as before).
+    /// A moment of inertia `i` (kg·m²) times a quantity `x` ∝ σ^`power` (a rate, `power` = 1,
+    /// or a rate squared, 2), in SI. The product i·x is formed first where it is a normal
+    /// double; where it would be subnormal (a tiny moment: I = 2⁻¹⁰¹⁸ kg·m² with x ~ 0.1) x is
+    /// carried to SI first, so that no digit is lost to underflow (it overflows only where the SI
+    /// value does).
+    fn moment_to_si(&self, i: f64, x: f64, power: i32) -> f64 {
+        let to_si = |y: f64| {
+            if power == 1 {
+                self.rate_to_si(y)
+            } else {
+                self.rate2_to_si(y)
+            }
+        };
+        let p = i * x;
+        if x == 0.0 || p.abs() >= f64::MIN_POSITIVE {
+            to_si(p)
+        } else {
+            to_si(x) * i
+        }
+    }
+    /// β = 2 m g l / I₁ in the unit σ² (formed in SI where that is a finite normal double, as
+    /// before; otherwise m g l is carried to the unit first, which neither overflows nor, for a
+    /// huge I₁ = 2¹⁰¹⁸ kg·m², loses digits to a subnormal quotient).
     fn beta(&self, mgl: f64, i1: f64) -> f64 {
         let beta = 2.0 * mgl / i1;
-        if beta.is_finite() {
+        if beta.is_finite() && (mgl == 0.0 || beta >= f64::MIN_POSITIVE) {
             beta * self.inv * self.inv
         } else {
             2.0 * (mgl * self.inv * self.inv / i1)

@@ -268,7 +268,7 @@ impl Nutation {
             t: *t,
             half_d: 0.5 * r.d,
             half_e: 0.5 * r.e,
-            c_psi: r.a * i1 / i3 - r.a,
+            c_psi: r.a * (i1 / i3) - r.a,
             w_third,
             v_form,
             jump_w: if t.w_lo == 0.0 { sgn(r.d) } else { 0.0 },
