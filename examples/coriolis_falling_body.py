@@ -44,7 +44,7 @@ for lat in (60, -60):
 import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
-from poinsot.plots_earth import plot_deflection, plot_inertial_circles  # noqa: E402
+from poinsot.plots.earth import plot_deflection, plot_inertial_circles  # noqa: E402
 
 plot_deflection(earth, n=13).savefig(out / "deflection.png", dpi=110, bbox_inches="tight")
 plot_inertial_circles(earth).savefig(out / "inertial_circles.png", dpi=110, bbox_inches="tight")

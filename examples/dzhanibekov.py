@@ -37,7 +37,7 @@ print(f"  RK4 (dt = 1 ms) after three periods differs from the exact ω by {np.l
 import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
-from poinsot.plots_free import animate_tumbling_box  # noqa: E402
+from poinsot.plots.free import animate_tumbling_box  # noqa: E402
 
 animate_tumbling_box((2.0, 1.0, 0.4), spin=2.0, wobble=1e-2, path=out / "dzhanibekov.gif", frames=120, fps=20)
 print(f"animation written to {out}/dzhanibekov.gif")

@@ -34,7 +34,7 @@ show = fast.foucault(48.85, degrees=True, length=10.0, amplitude=1.0, duration=6
 import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
-from poinsot.plots_earth import animate_foucault, plot_foucault_rosette  # noqa: E402
+from poinsot.plots.earth import animate_foucault, plot_foucault_rosette  # noqa: E402
 
 plot_foucault_rosette(show).savefig(out / "foucault_rosette.png", dpi=110, bbox_inches="tight")
 animate_foucault(show, out / "foucault.gif", frames=150, fps=20)

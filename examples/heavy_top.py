@@ -62,7 +62,7 @@ import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from poinsot.plots_top import animate_top, plot_angles, plot_axis_locus, plot_effective_potential  # noqa: E402
+from poinsot.plots.top import animate_top, plot_angles, plot_axis_locus, plot_effective_potential  # noqa: E402
 
 fig, axes = plt.subplots(1, 3, figsize=(15, 5))
 for ax, name in zip(axes, ("waves", "cusps", "loops")):

@@ -48,7 +48,7 @@ except ps.PoinsotError as exc:
 import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
-from poinsot.plots_top import plot_steady_precession  # noqa: E402
+from poinsot.plots.top import plot_steady_precession  # noqa: E402
 
 plot_steady_precession(I1, I3, MGL, THETA0, max_spin=20.0).savefig(out / "steady_precession.png", dpi=110,
                                                                    bbox_inches="tight")

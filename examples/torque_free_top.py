@@ -44,7 +44,7 @@ for method, dt in (("splitting2", 0.01), ("splitting6", 0.01), ("rk4", 0.01)):
 import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
-from poinsot.plots_free import plot_cones, plot_conservation, plot_omega, plot_polhodes  # noqa: E402
+from poinsot.plots.free import plot_cones, plot_conservation, plot_omega, plot_polhodes  # noqa: E402
 
 short = ps.simulate([1.0, 2.0, 3.0], [1.0, 0.1, 1.0], 20.0, method="rk4", dt=0.05, samples=81)
 plot_omega(short, body).savefig(out / "free_omega.png", dpi=110, bbox_inches="tight")

@@ -1,6 +1,6 @@
 """poinsot: moving frames and the motion of rigid bodies.
 
-The public API (see ``DESIGN.md``'s contract and the README):
+The public API (the README and the docs/ pages describe each part; ARCHITECTURE.md the layers):
 
 * rotations: :func:`euler_to_matrix`, :func:`matrix_to_euler`, :func:`rotation_axis`
   (Euler's theorem), :func:`screw_axis` (Chasles' theorem), :func:`body_angular_velocity`
@@ -17,7 +17,8 @@ The public API (see ``DESIGN.md``'s contract and the README):
   potential, turning points, steady precession, the exact motion by elliptic functions);
 * errors: :class:`PoinsotError` (a ``ValueError``) and its subclasses;
 * limits: :func:`memory_budget`, :func:`set_memory_budget` (the largest output of one call;
-  every long run also takes ``max_steps`` and stops on Ctrl-C).
+  every long run also takes ``max_steps`` and stops on Ctrl-C);
+* pictures: :mod:`poinsot.plots` (matplotlib, one module per topic).
 
 SI units and radians everywhere; quaternions are scalar-first ``[w, x, y, z]``.
 """

@@ -389,7 +389,7 @@ def inertia(shape: str, mass: float | None, radius: float | None, height: float 
     data = {"source": source, **body.to_dict()}
     require_finite(data)
     if plot_path is not None:
-        from .plots import plot_inertia_ellipsoid
+        from .plots.inertia import plot_inertia_ellipsoid
 
         fig = plot_inertia_ellipsoid(body, title=source)
         try:
@@ -802,7 +802,7 @@ def top(i1: float, i3: float, mgl: float, theta: float, phi_dot: float, psi_dot:
     require_finite(data)
     saved: list[str] = []
     if plot_dir is not None:
-        from .plots_top import save_top_plots
+        from .plots.top import save_top_plots
 
         try:
             saved = [str(p) for p in save_top_plots(t, plot_dir, animation=True)]

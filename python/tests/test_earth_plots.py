@@ -8,7 +8,7 @@ import matplotlib
 matplotlib.use("Agg")
 
 import poinsot as ps  # noqa: E402
-from poinsot import plots_earth as pe  # noqa: E402
+from poinsot.plots import earth as pe  # noqa: E402
 
 
 def test_figures_draw(tmp_path) -> None:

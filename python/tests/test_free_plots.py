@@ -9,7 +9,7 @@ matplotlib = pytest.importorskip("matplotlib")
 matplotlib.use("Agg")
 
 import poinsot as ps  # noqa: E402
-from poinsot import plots_free  # noqa: E402
+from poinsot.plots import free as plots_free  # noqa: E402
 
 
 def test_omega_plot_overlays_the_exact_solution():

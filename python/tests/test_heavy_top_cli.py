@@ -69,7 +69,7 @@ def test_top_table_and_bad_input() -> None:
 
 
 def test_plots_return_figures(tmp_path: Path) -> None:
-    from poinsot import plots_top
+    from poinsot.plots import top as plots_top
 
     top = ps.HeavyTop(1.0, 0.5, 1.0, 0.8, phi_dot=-0.5, psi_dot=6.0)
     for fig in (plots_top.plot_effective_potential(top), plots_top.plot_axis_locus(top),

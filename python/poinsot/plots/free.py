@@ -12,8 +12,10 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from .dynamics import Trajectory
-from .free import FreeRigidBody, FreeSymmetricTop
+from ..dynamics import Trajectory
+from ..free import FreeRigidBody, FreeSymmetricTop
+from ..rotation import quaternion_to_matrix, rotate_vectors
+from ._mpl import pyplot as _pyplot
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -21,19 +23,10 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["plot_omega", "plot_cones", "plot_polhodes", "plot_conservation", "animate_tumbling_box"]
 
 
-def _pyplot() -> Any:
-    try:
-        import matplotlib.pyplot as plt
-    except ImportError as exc:  # pragma: no cover - depends on the environment
-        raise ImportError("poinsot's plots need matplotlib: pip install 'poinsot[plot]'") from exc
-    return plt
-
 
 def _rotate(q: np.ndarray, v: np.ndarray) -> np.ndarray:
-    """R(q) v for quaternions q (..., 4) [w, x, y, z] and vectors v (..., 3)."""
-    w, u = q[..., :1], q[..., 1:]
-    t = np.cross(u, v) + w * v
-    return v + 2.0 * np.cross(u, t)
+    """R(q) v for attitudes q (..., 4) [w, x, y, z] and body vectors v (..., 3), by the core."""
+    return rotate_vectors(quaternion_to_matrix(q, normalize=True), v)
 
 
 def plot_omega(trajectory: Trajectory, exact: FreeRigidBody | None = None, ax: Any = None, *,

@@ -11,7 +11,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from .top import HeavyTop
+from ..top import HeavyTop
+from ._mpl import pyplot as _pyplot
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -19,13 +20,6 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["plot_effective_potential", "plot_axis_locus", "plot_angles", "plot_steady_precession",
            "animate_top", "save_top_plots"]
 
-
-def _pyplot() -> Any:
-    try:
-        import matplotlib.pyplot as plt
-    except ImportError as exc:  # pragma: no cover - depends on the environment
-        raise ImportError("poinsot's plots need matplotlib: pip install 'poinsot[plot]'") from exc
-    return plt
 
 
 def _periods(top: HeavyTop, periods: float, fallback: float = 10.0) -> float:

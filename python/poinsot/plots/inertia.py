@@ -9,20 +9,13 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+from ._mpl import pyplot as _pyplot
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
 
-    from .body import RigidBody
+    from ..body import RigidBody
 
-
-def _pyplot() -> Any:
-    try:
-        import matplotlib.pyplot as plt
-    except ImportError as exc:  # pragma: no cover - depends on the environment
-        raise ImportError(
-            "poinsot's plots need matplotlib: pip install 'poinsot[plot]'") from exc
-    return plt
 
 
 def plot_inertia_ellipsoid(body: RigidBody, ax: Any = None, *, title: str | None = None,

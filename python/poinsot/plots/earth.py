@@ -11,7 +11,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from .earth import Earth, Fall, Flight, FoucaultRun
+from ..earth import Earth, Fall, Flight, FoucaultRun
+from ._mpl import pyplot as _pyplot
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -19,13 +20,6 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["plot_deflection", "plot_trajectory", "plot_foucault_rosette", "plot_inertial_circles",
            "animate_foucault"]
 
-
-def _pyplot() -> Any:
-    try:
-        import matplotlib.pyplot as plt
-    except ImportError as exc:  # pragma: no cover - depends on the environment
-        raise ImportError("poinsot's plots need matplotlib: pip install 'poinsot[plot]'") from exc
-    return plt
 
 
 def plot_deflection(earth: Earth | None = None, *, height: float = 100.0, latitude: float = 45.0,

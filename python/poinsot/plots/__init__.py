@@ -1,0 +1,55 @@
+"""Pictures of poinsot's results (matplotlib, the optional ``plot`` extra), one module per topic.
+
+* :mod:`poinsot.plots.inertia` — the inertia ellipsoid of a :class:`poinsot.RigidBody`;
+* :mod:`poinsot.plots.free` — torque-free motion: ω(t), the body and space cones, polhodes,
+  conservation, the tumbling box;
+* :mod:`poinsot.plots.top` — the heavy top: V(θ), the locus of the axis, the angles, steady
+  precession, the animation;
+* :mod:`poinsot.plots.earth` — the rotating Earth: deflection, trajectories, the Foucault
+  rosette, inertial circles, the pendulum's animation.
+
+Every function returns a :class:`matplotlib.figure.Figure` (or an animation) and never calls
+``plt.show()``: save it with ``fig.savefig(...)`` or show it yourself. The physics comes from the
+rest of poinsot; these functions only draw. matplotlib is imported when a picture is drawn, so
+``import poinsot.plots`` works without it.
+"""
+
+from __future__ import annotations
+
+from .earth import (
+    animate_foucault,
+    plot_deflection,
+    plot_foucault_rosette,
+    plot_inertial_circles,
+    plot_trajectory,
+)
+from .free import animate_tumbling_box, plot_cones, plot_conservation, plot_omega, plot_polhodes
+from .inertia import plot_inertia_ellipsoid
+from .top import (
+    animate_top,
+    plot_angles,
+    plot_axis_locus,
+    plot_effective_potential,
+    plot_steady_precession,
+    save_top_plots,
+)
+
+__all__ = [
+    "plot_inertia_ellipsoid",
+    "plot_omega",
+    "plot_cones",
+    "plot_polhodes",
+    "plot_conservation",
+    "animate_tumbling_box",
+    "plot_effective_potential",
+    "plot_axis_locus",
+    "plot_angles",
+    "plot_steady_precession",
+    "animate_top",
+    "save_top_plots",
+    "plot_deflection",
+    "plot_trajectory",
+    "plot_foucault_rosette",
+    "plot_inertial_circles",
+    "animate_foucault",
+]
