@@ -96,6 +96,28 @@ def as_choice(value: Any, name: str, choices: tuple[str, ...]) -> str:
     return value
 
 
+def as_angle(value: Any, name: str, degrees: Any = False) -> float:
+    """One angle (or angular rate) as a float in radians: ``value`` converted from degrees
+    when ``degrees`` is true."""
+    x = as_scalar(value, name)
+    return float(np.radians(x)) if as_flag(degrees, "degrees") else x
+
+
+def as_flat(value: Any, name: str, degrees: Any = False) -> tuple[FloatArray, tuple[int, ...]]:
+    """``value`` of any shape as a C-contiguous 1-D float64 array plus its shape (for
+    :func:`shaped`), converted from degrees to radians when ``degrees`` is true."""
+    arr = as_float_array(value, name)
+    if as_flag(degrees, "degrees"):
+        arr = np.radians(arr)
+    return np.ascontiguousarray(arr.reshape(-1), dtype=np.float64), arr.shape
+
+
+def shaped(arr: FloatArray, shape: tuple[int, ...]) -> Any:
+    """``arr`` back in the caller's ``shape``: a float for a scalar input, else an array."""
+    out = arr.reshape(shape)
+    return float(out) if out.ndim == 0 else out
+
+
 def as_vectors(value: Any, name: str, size: int = 3) -> tuple[FloatArray, tuple[int, ...]]:
     """``value`` of shape ``(..., size)`` as a C-contiguous ``(N, size)`` array plus the
     leading shape (for reshaping results back)."""

@@ -25,7 +25,7 @@ from typing import Any
 import numpy as np
 
 from . import _core
-from ._validate import FloatArray, as_flag, as_float_array, as_scalar
+from ._validate import FloatArray, as_angle, as_flag, as_flat, as_scalar, shaped
 
 __all__ = ["HeavyTop", "SteadyPrecession", "MOTION_CLASSES"]
 
@@ -66,23 +66,6 @@ class SteadyPrecession:
     fast_approx: float
     fast_approx_as_printed: float
     min_spin: float
-
-
-def _angle(value: Any, name: str, degrees: bool) -> float:
-    x = as_scalar(value, name)
-    return math.radians(x) if as_flag(degrees, "degrees") else x
-
-
-def _flat(value: Any, name: str, degrees: bool = False) -> tuple[FloatArray, tuple[int, ...]]:
-    arr = as_float_array(value, name)
-    if as_flag(degrees, "degrees"):
-        arr = np.radians(arr)
-    return np.ascontiguousarray(arr.reshape(-1), dtype=np.float64), arr.shape
-
-
-def _shaped(arr: FloatArray, shape: tuple[int, ...]) -> Any:
-    out = arr.reshape(shape)
-    return float(out) if out.ndim == 0 else out
 
 
 class HeavyTop:
@@ -143,12 +126,12 @@ class HeavyTop:
             as_scalar(I1, "I1"),
             as_scalar(I3, "I3"),
             as_scalar(mgl, "mgl"),
-            _angle(phi, "phi", degrees),
-            _angle(theta, "theta", degrees),
-            _angle(psi, "psi", degrees),
-            _angle(phi_dot, "phi_dot", degrees),
-            _angle(theta_dot, "theta_dot", degrees),
-            _angle(psi_dot, "psi_dot", degrees),
+            as_angle(phi, "phi", degrees),
+            as_angle(theta, "theta", degrees),
+            as_angle(psi, "psi", degrees),
+            as_angle(phi_dot, "phi_dot", degrees),
+            as_angle(theta_dot, "theta_dot", degrees),
+            as_angle(psi_dot, "psi_dot", degrees),
         )
 
     @classmethod
@@ -175,12 +158,12 @@ class HeavyTop:
             as_scalar(I1, "I1"),
             as_scalar(I3, "I3"),
             as_scalar(mgl, "mgl"),
-            _angle(phi, "phi", degrees),
-            _angle(theta, "theta", degrees),
-            _angle(psi, "psi", degrees),
-            _angle(phi_dot, "phi_dot", degrees),
-            _angle(theta_dot, "theta_dot", degrees),
-            _angle(omega3, "omega3", degrees),
+            as_angle(phi, "phi", degrees),
+            as_angle(theta, "theta", degrees),
+            as_angle(psi, "psi", degrees),
+            as_angle(phi_dot, "phi_dot", degrees),
+            as_angle(theta_dot, "theta_dot", degrees),
+            as_angle(omega3, "omega3", degrees),
         )
         return top
 
@@ -276,13 +259,13 @@ class HeavyTop:
         ``m g l cos`` where the numerator vanishes there; where V is infinite (a pole the axis
         never reaches) or beyond the largest double next to it, :class:`PoinsotError` names
         ``theta``."""
-        flat, shape = _flat(theta, "theta", degrees)
-        return _shaped(self._core.effective_potential(flat), shape)
+        flat, shape = as_flat(theta, "theta", degrees)
+        return shaped(self._core.effective_potential(flat), shape)
 
     def effective_potential_derivative(self, theta: Any, *, degrees: bool = False) -> Any:
         """``dV/dtheta`` (N m, 2.113; always per radian), broadcasting over ``theta``."""
-        flat, shape = _flat(theta, "theta", degrees)
-        return _shaped(self._core.effective_potential_derivative(flat), shape)
+        flat, shape = as_flat(theta, "theta", degrees)
+        return shaped(self._core.effective_potential_derivative(flat), shape)
 
     @property
     def turning_points(self) -> tuple[float, float]:
@@ -333,25 +316,25 @@ class HeavyTop:
         however close to upright (down to 1e-60 rad). Raises :class:`PoinsotError` naming ``t``
         beyond ``|t| = 4.5e9 rad / (the motion's fastest rate)``, where the phase would carry more
         than 1e-6 rad of rounding (see docs/heavy_top.md, *Range of validity*)."""
-        flat, shape = _flat(t, "t")
+        flat, shape = as_flat(t, "t")
         out = self._core.euler_angles(flat)
         if as_flag(degrees, "degrees"):
             out = np.degrees(out)
-        return _shaped(out[:, 0], shape), _shaped(out[:, 1], shape), _shaped(out[:, 2], shape)
+        return shaped(out[:, 0], shape), shaped(out[:, 1], shape), shaped(out[:, 2], shape)
 
     def euler_rates(self, t: Any, *, degrees: bool = False) -> tuple[Any, Any, Any]:
         """The rates ``(phi', theta', psi')`` (rad/s; deg/s with ``degrees=True``) at times ``t``:
         ``phi'`` by 2.106, ``psi' = omega3 - phi' cos(theta)``, ``theta'`` from the solution."""
-        flat, shape = _flat(t, "t")
+        flat, shape = as_flat(t, "t")
         out = self._core.euler_rates(flat)
         if as_flag(degrees, "degrees"):
             out = np.degrees(out)
-        return _shaped(out[:, 0], shape), _shaped(out[:, 1], shape), _shaped(out[:, 2], shape)
+        return shaped(out[:, 0], shape), shaped(out[:, 1], shape), shaped(out[:, 2], shape)
 
     def attitude(self, t: Any) -> FloatArray:
         """Rotation matrices ``R(t) = R_z(phi) R_x(theta) R_z(psi)``, shape ``t.shape + (3, 3)``
         (body to space components)."""
-        flat, shape = _flat(t, "t")
+        flat, shape = as_flat(t, "t")
         mats = _core.euler_to_matrix(self._core.euler_angles(flat), "zxz", True)
         return np.asarray(mats).reshape(*shape, 3, 3)
 
@@ -380,7 +363,7 @@ class HeavyTop:
         (``slow_approx`` is ``None`` without spin)."""
         d = _core.heavy_top_steady_precession(
             as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl"),
-            _angle(theta0, "theta0", degrees), as_scalar(omega3, "omega3"),
+            as_angle(theta0, "theta0", degrees), as_scalar(omega3, "omega3"),
         )
         return SteadyPrecession(**d)
 
@@ -411,7 +394,7 @@ class HeavyTop:
         """The minimum spin for steady precession at ``theta0`` (2.119):
         ``omega3_min = (2 / I3) sqrt(m g l I1 cos theta0)`` (rad/s), 0 below the horizontal."""
         return _core.heavy_top_min_spin(
-            as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl"), _angle(theta0, "theta0", degrees)
+            as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl"), as_angle(theta0, "theta0", degrees)
         )
 
     @staticmethod
@@ -462,7 +445,7 @@ class HeavyTop:
         Raises :class:`PoinsotError` naming ``I1``, ``I3``, ``mgl``, ``theta`` or a rate."""
         p_phi, p_psi, energy = _core.heavy_top_constants_of_state(
             as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl"),
-            _angle(theta, "theta", degrees), _angle(theta_dot, "theta_dot", degrees),
-            _angle(phi_dot, "phi_dot", degrees), _angle(psi_dot, "psi_dot", degrees),
+            as_angle(theta, "theta", degrees), as_angle(theta_dot, "theta_dot", degrees),
+            as_angle(phi_dot, "phi_dot", degrees), as_angle(psi_dot, "psi_dot", degrees),
         )
         return {"p_phi": p_phi, "p_psi": p_psi, "energy": energy}
