@@ -32,7 +32,7 @@ WHEEL = os.environ.get("POINSOT_WHEEL", "")
 def wheel() -> Path:
     if not WHEEL:
         pytest.skip("needs the built wheel: run `make test-wheel` (POINSOT_WHEEL names it)")
-    path = Path(WHEEL)
+    path = Path(WHEEL).resolve()
     assert path.is_file(), f"POINSOT_WHEEL={WHEEL!r} is not a file"
     return path
 
