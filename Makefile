@@ -3,6 +3,7 @@
 #   make test   the same set-up, then every test: cargo test, clippy, pytest, the examples, the
 #               browser lab (needs the web tooling that .ci/run installs)
 #   make lab    build the browser lab (WebAssembly core + page) and serve it: `poinsot lab`
+#   make wheel  build the abi3 wheel, the browser lab inside, into dist/ (installs without Rust)
 SHELL := /bin/bash
 PYTHON ?= python3
 VENV ?= .venv
@@ -10,7 +11,7 @@ PY := $(VENV)/bin/python
 export PYO3_PYTHON := $(abspath $(PY))
 export MPLBACKEND := Agg
 
-.PHONY: setup demo test test-rust lint test-python examples bench stubtest clean lab lab-build test-web web-setup fuzz fuzz-python fuzz-web
+.PHONY: setup demo test test-rust lint doc publish-check test-python examples bench stubtest clean lab lab-build test-web web-setup fuzz fuzz-python fuzz-web wheel test-wheel
 
 $(PY):
 	$(PYTHON) -m venv $(VENV)
@@ -23,7 +24,7 @@ setup: $(PY)
 demo: setup
 	$(VENV)/bin/poinsot tour
 
-test: setup test-rust lint test-python examples test-web
+test: setup test-rust lint test-python examples test-web test-wheel
 
 test-rust:
 	cargo test -p poinsot --release
@@ -33,9 +34,19 @@ lint: $(PY)
 	cargo fmt --all --check
 	cargo clippy --workspace --all-targets --release -- -D warnings
 	$(PY) -m mypy.stubtest poinsot._core --allowlist python/stubtest-allowlist.txt
+	RUSTDOCFLAGS="-D warnings" cargo doc -p poinsot --no-deps
 
+# The core crate's API documentation (target/doc/poinsot), warnings as errors (also in `lint`).
+doc:
+	RUSTDOCFLAGS="-D warnings" cargo doc -p poinsot --no-deps
+
+# The core crate as crates.io would receive it: packaged, then built from the package alone.
+publish-check:
+	cargo publish -p poinsot --dry-run --allow-dirty
+
+# The wheel test (python/tests/test_wheel.py) needs the built wheel: `make test-wheel` runs it.
 test-python: setup
-	$(PY) -m pytest -q python/tests
+	$(PY) -m pytest -q -m "not wheel" python/tests
 
 examples: setup
 	@set -e; for f in examples/*.py; do echo "== $$f"; $(PY) $$f; done
@@ -56,6 +67,19 @@ lab-build: setup web-setup
 
 lab: lab-build
 	$(VENV)/bin/poinsot lab
+
+# The abi3 wheel (CPython >= 3.9, one per platform) with the built browser lab inside
+# (python/poinsot/lab, git-ignored, named in pyproject's [tool.maturin] include), into dist/.
+# A user without Rust installs it with `pip install dist/poinsot-*.whl`.
+wheel: lab-build
+	$(PY) -m pip install -q 'maturin>=1.16,<2'
+	rm -f dist/poinsot-*.whl
+	$(VENV)/bin/maturin build --release --out dist
+
+# Installs that wheel into a fresh virtual environment with no Rust on PATH, runs `poinsot tour`
+# and fetches the lab's page and WebAssembly from `poinsot lab` (python/tests/test_wheel.py).
+test-wheel: wheel
+	POINSOT_WHEEL="$$(ls dist/poinsot-*.whl)" $(PY) -m pytest -q -m wheel python/tests/test_wheel.py
 
 # Browser tests (playwright-core + Debian chromium): scenes, controls, URL, parity with Python.
 test-web: lab-build
@@ -81,4 +105,4 @@ fuzz-web: web-setup
 
 clean:
 	cargo clean
-	rm -rf $(VENV) .pytest_cache .hypothesis
+	rm -rf $(VENV) .pytest_cache .hypothesis dist

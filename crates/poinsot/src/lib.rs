@@ -3,7 +3,8 @@
 //! The physics core of poinsot, in pure Rust. Every front end (Python, the command line, the
 //! browser lab) calls into this crate and holds no physics of its own.
 //!
-//! Modules follow the course unit (`shared/seed`), and their docs cite its equation numbers:
+//! Modules follow the course unit *Moving Coordinate Systems and Motion of a Rigid Body*, and
+//! their docs cite its equation numbers (2.1–2.121; "the unit's 2.116" is its equation 2.116):
 //!
 //! | module | topic | unit equations |
 //! |---|---|---|
@@ -18,9 +19,32 @@
 //! | [`limits`] | the memory budget and step limits checked before work starts | — |
 //! | [`special`] | Jacobi elliptic functions sn, cn, dn, am (parameter m = k²) and elliptic integrals F, E, K, Π | — |
 //!
-//! Conventions (see `CONVENTIONS.md` at the repository root): SI units, radians, right-handed
-//! frames, active rotations, scalar-first quaternions `[w, x, y, z]`, products of inertia
-//! negated (`I_xy = −Σ m x y`) so that `L = I·ω`.
+//! Conventions (the crate's README lists them; `CONVENTIONS.md` in the project's repository pins
+//! each by a test): SI units, radians, right-handed frames, active rotations (`v_space =
+//! R v_body`), scalar-first quaternions `[w, x, y, z]` (body → space), the unit's intrinsic
+//! z-x-z Euler angles by default, products of inertia negated (`I_xy = −Σ m x y`) so that
+//! `L = I·ω`.
+//!
+//! # Example
+//!
+//! The exact torque-free body and the heavy symmetric top (more in the crate's README):
+//!
+//! ```
+//! use poinsot::analytic::{EulerState, FreeRigidBody, HeavyTop};
+//! use poinsot::Vec3;
+//!
+//! // Principal moments 1, 2, 3 kg·m², spun near the intermediate axis: ω₂ flips sign.
+//! let body = FreeRigidBody::new([1.0, 2.0, 3.0], Vec3::new(0.01, 3.0, 0.01), None)?;
+//! assert!(body.omega(body.flip_interval()?)?.y < -2.9);
+//!
+//! // I₁ = 1, I₃ = 0.5 kg·m², m g l = 1 N·m, released at θ = 0.8 rad.
+//! let start = EulerState { theta: 0.8, phi_dot: 0.5, psi_dot: 6.0, ..Default::default() };
+//! let top = HeavyTop::new(1.0, 0.5, 1.0, start)?;
+//! let (theta1, theta2) = top.turning_points();
+//! let [_phi, theta, _psi] = top.euler_angles(10.0)?;
+//! assert!(theta1 <= theta && theta <= theta2);
+//! # Ok::<(), poinsot::Error>(())
+//! ```
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -42,3 +66,8 @@ pub use error::{Error, ErrorKind, Result};
 pub type Vec3 = nalgebra::Vector3<f64>;
 /// 3×3 matrices of `f64` (nalgebra).
 pub type Mat3 = nalgebra::Matrix3<f64>;
+
+/// The examples of the crate's README, run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

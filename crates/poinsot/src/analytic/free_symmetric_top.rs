@@ -47,6 +47,19 @@ impl TopShape {
 }
 
 /// The exact torque-free motion of a symmetric top (all of the unit's 2.80–2.97).
+///
+/// ```
+/// use poinsot::analytic::{FreeSymmetricTop, TopShape};
+/// use poinsot::Vec3;
+/// // I₁ = I₂ = 1, I₃ = 0.5 kg·m² (prolate), ω₀ = (0.1, 0, 2) rad/s in the body.
+/// let top = FreeSymmetricTop::new(1.0, 0.5, Vec3::new(0.1, 0.0, 2.0), None)?;
+/// assert_eq!(top.shape(), TopShape::Prolate);
+/// // Ω = (I₁ − I₃) ω₃ / I₁ (2.83): ω circles the symmetry axis in the body at 1 rad/s.
+/// assert!((top.precession_rate() - 1.0).abs() < 1e-15);
+/// let w = top.omega(std::f64::consts::FRAC_PI_2)?; // a quarter turn later
+/// assert!((w - Vec3::new(0.0, -0.1, 2.0)).norm() < 1e-14); // ω̇₁ = Ω ω₂, ω̇₂ = −Ω ω₁
+/// # Ok::<(), poinsot::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct FreeSymmetricTop {
     i1: f64,

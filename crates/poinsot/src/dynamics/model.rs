@@ -13,6 +13,21 @@ use crate::{Mat3, Vec3};
 /// form 2.72; a body given by a full tensor `I_B` in its own body axes B is carried there by
 /// `I_B = A diag(I₁, I₂, I₃) Aᵀ` (`A` the principal axes as columns, a proper rotation):
 /// `ω_P = Aᵀ ω_B`, `R_P = R_B A`. Results are returned in B.
+///
+/// ```
+/// use poinsot::dynamics::BodyInertia;
+/// use poinsot::{Mat3, Vec3};
+/// // A body given by a full tensor in its own axes (products of inertia negated).
+/// let tensor = Mat3::new(2.0, -0.5, 0.0, -0.5, 2.0, 0.0, 0.0, 0.0, 3.0);
+/// let body = BodyInertia::from_tensor(&tensor)?;
+/// assert!((body.min_moment() - 1.5).abs() < 1e-15 && (body.max_moment() - 3.0).abs() < 1e-15);
+/// let w = Vec3::new(1.0, 0.0, 0.0);
+/// assert_eq!(body.angular_momentum(&w), Vec3::new(2.0, -0.5, 0.0)); // L = I·ω
+/// assert_eq!(body.kinetic_energy(&w), 1.0); // T = ½ ω·I·ω
+/// // Moments that break the triangle inequality are refused.
+/// assert_eq!(BodyInertia::from_moments([1.0, 1.0, 3.0]).unwrap_err().argument, "moments");
+/// # Ok::<(), poinsot::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BodyInertia {
     /// The tensor in body axes B (kg·m²).

@@ -8,7 +8,7 @@ use crate::{Mat3, Vec3};
 /// at any time `t`, in fixed-frame components.
 ///
 /// Implementations must be consistent (Ṙ the derivative of R, and the attitude A obeying
-/// Ȧ = [ω]× A) for the moving-frame and fixed-frame descriptions to agree. Implemented for
+/// `Ȧ = [ω]× A`) for the moving-frame and fixed-frame descriptions to agree. Implemented for
 /// [`SteadyMotion`] and for any closure `Fn(f64) -> MovingFrame`.
 pub trait FrameMotion {
     /// The frame's state at time `t`.

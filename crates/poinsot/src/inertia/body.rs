@@ -38,6 +38,27 @@ pub const ROTATION_TOL: f64 = 1e-9;
 ///   (checked by [`tensor::check_inertia`] on construction).
 ///
 /// The fields are private so that every value of this type is a valid body.
+///
+/// ```
+/// use poinsot::inertia::{cuboid, solid_sphere, MassProperties, TopKind, DEFAULT_KIND_RTOL};
+/// use poinsot::Vec3;
+/// // A 2 kg box with sides 1, 2, 3 m: I_xx = m (b² + c²) / 12 = 13/6 kg·m² about its centre.
+/// let block = cuboid(2.0, [1.0, 2.0, 3.0])?;
+/// assert!((block.inertia()[(0, 0)] - 13.0 / 6.0).abs() < 1e-15);
+/// assert_eq!(block.kind(DEFAULT_KIND_RTOL)?, TopKind::AsymmetricTop);
+/// // Parallel axes: about a corner, I_P = I + m (|d|² 1 − d dᵀ).
+/// let corner = Vec3::new(0.5, 1.0, 1.5);
+/// assert!((block.inertia_about(&corner)?[(0, 1)] - (-2.0 * 0.5 * 1.0)).abs() < 1e-15);
+/// // Turning at 2 rad/s about z through the centre: T = ½ I_zz ω² = ½ (10/12) 4 J.
+/// let t = block.kinetic_energy(&Vec3::new(0.0, 0.0, 2.0), None)?;
+/// assert!((t - 5.0 / 3.0).abs() < 1e-15);
+/// // A 1 kg ball stuck on top: the two combined.
+/// let ball = solid_sphere(1.0, 0.1)?.translated(&Vec3::new(0.0, 0.0, 1.6))?;
+/// let both = MassProperties::combine(&[block, ball])?;
+/// assert_eq!(both.mass(), 3.0);
+/// assert!((both.center_of_mass().z - 1.6 / 3.0).abs() < 1e-15);
+/// # Ok::<(), poinsot::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MassProperties {
     mass: f64,

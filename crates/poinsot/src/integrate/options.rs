@@ -10,6 +10,20 @@ pub const MIN_RTOL: f64 = 100.0 * f64::EPSILON;
 ///
 /// The local error of each step is kept below `atol + rtol·|y|` componentwise (in the RMS
 /// norm of Hairer's DOP853).
+///
+/// ```
+/// use poinsot::integrate::{dop853, Options};
+/// // Tight tolerances, no dense output (only the end point is wanted), at most 10⁴ steps.
+/// let opts = Options { dense: false, max_steps: 10_000, ..Options::with_tolerances(1e-12, 1e-14) };
+/// opts.validate()?;
+/// // The harmonic oscillator x'' = −x over one period comes back to its start.
+/// let f = |_t: f64, y: &[f64; 2], dy: &mut [f64; 2]| *dy = [y[1], -y[0]];
+/// let sol = dop853(f, 0.0, [1.0, 0.0], 2.0 * std::f64::consts::PI, &opts)?;
+/// assert!((sol.y_final()[0] - 1.0).abs() < 1e-10);
+/// // A tolerance below round-off is refused, naming the field.
+/// assert_eq!(Options::with_tolerances(1e-20, 1e-14).validate().unwrap_err().argument, "rtol");
+/// # Ok::<(), poinsot::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Options {
     /// Relative tolerance, in `[MIN_RTOL, 1)` (default 1e-10).

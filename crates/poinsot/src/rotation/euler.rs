@@ -77,6 +77,20 @@ pub enum SequenceKind {
 
 /// An Euler-angle convention: three axes and whether the rotations are intrinsic (about the
 /// body axes) or extrinsic (about the space axes). See the module documentation.
+///
+/// ```
+/// use poinsot::rotation::{euler_to_matrix, matrix_to_euler, rot_x, rot_z, EulerSequence};
+/// // The unit's intrinsic z-x-z: R = R_z(φ) R_x(θ) R_z(ψ).
+/// let r = euler_to_matrix([0.3, 0.7, 0.1], EulerSequence::UNIT)?;
+/// assert!((r - rot_z(0.3) * rot_x(0.7) * rot_z(0.1)).amax() < 1e-15);
+/// // The same rotation in extrinsic x-y-z angles, and back.
+/// let xyz = EulerSequence::new("xyz", false)?;
+/// let angles = matrix_to_euler(&r, xyz)?.angles;
+/// assert!((euler_to_matrix(angles, xyz)? - r).amax() < 1e-15);
+/// // Intrinsic or extrinsic is a flag, never letter case.
+/// assert!(EulerSequence::new("ZXZ", true).is_err());
+/// # Ok::<(), poinsot::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct EulerSequence {
     axes: [usize; 3],

@@ -7,6 +7,18 @@ use crate::rotation::matrix::{check_rotation_matrix, from_row_major, row_major, 
 use crate::{Mat3, Vec3};
 
 /// A quaternion, scalar first: `[w, x, y, z]`.
+///
+/// ```
+/// use poinsot::rotation::{matrix_to_quaternion, quaternion_multiply, quaternion_to_matrix, rot_z};
+/// use std::f64::consts::FRAC_PI_4;
+/// // 90° about z: q = [cos 45°, 0, 0, sin 45°].
+/// let q = matrix_to_quaternion(&rot_z(2.0 * FRAC_PI_4))?;
+/// assert!((q[0] - FRAC_PI_4.cos()).abs() < 1e-15 && (q[3] - FRAC_PI_4.sin()).abs() < 1e-15);
+/// // The Hamilton product composes like matrices: R(q ⊗ q) = R(q) R(q), 180° about z.
+/// let qq = quaternion_multiply(&q, &q)?;
+/// assert!((quaternion_to_matrix(&qq, false)? - rot_z(4.0 * FRAC_PI_4)).amax() < 1e-15);
+/// # Ok::<(), poinsot::Error>(())
+/// ```
 pub type Quaternion = [f64; 4];
 
 /// Largest `|‖q‖ − 1|` accepted for a unit quaternion when the caller did not ask for

@@ -17,6 +17,18 @@ pub const TRANSLATION_ANGLE_TOL: f64 = 4.0 * f64::EPSILON;
 /// The displacement equals: rotate by `angle` about the line through `point` with direction
 /// `axis`, then translate by `slide` along `axis` (the two commute), i.e.
 /// `R x + t = point + R (x − point) + slide · axis` for every `x`.
+///
+/// ```
+/// use poinsot::rotation::{rot_z, screw_axis};
+/// use poinsot::Vec3;
+/// // A quarter turn about z, then a shift (1, 1, 0.5): a screw about the vertical line through
+/// // (0, 1, 0), sliding 0.5 m along it.
+/// let screw = screw_axis(&rot_z(std::f64::consts::FRAC_PI_2), &Vec3::new(1.0, 1.0, 0.5))?;
+/// assert!((screw.axis - Vec3::z()).norm() < 1e-15);
+/// assert!((screw.point - Vec3::new(0.0, 1.0, 0.0)).norm() < 1e-15);
+/// assert!((screw.slide - 0.5).abs() < 1e-15);
+/// # Ok::<(), poinsot::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Screw {
     /// Unit direction of the screw axis (Euler's axis of `R`; for a pure translation `t/|t|`;
