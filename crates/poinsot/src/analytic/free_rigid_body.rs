@@ -168,7 +168,7 @@ pub struct FreeRigidBody {
 }
 
 /// Checks principal moments: finite, > 0, and the triangle inequality `I₁ + I₂ ≥ I₃` of the
-/// sorted moments within [`crate::inertia::tensor::PHYSICAL_RTOL`] of the largest (the same
+/// sorted moments within [`crate::inertia::PHYSICAL_RTOL`] of the largest (the same
 /// rule as [`crate::inertia::check_inertia`], without its eigen-decomposition), tested at unit
 /// scale so that the verdict does not depend on the units; errors name `moments`
 /// ([`crate::ErrorKind::InvalidInertia`]).
@@ -190,7 +190,7 @@ pub fn check_moments(moments: &[f64; 3]) -> Result<()> {
     let e = exponent(m[2]);
     let u = m.map(|v| ldexp(v, -e));
     let excess = u[2] - (u[0] + u[1]);
-    if excess > crate::inertia::tensor::PHYSICAL_RTOL * u[2] {
+    if excess > crate::inertia::PHYSICAL_RTOL * u[2] {
         return Err(Error::inertia(
             "moments",
             format!(

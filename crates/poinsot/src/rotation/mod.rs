@@ -41,7 +41,7 @@ pub use euler_kinematics::{
 };
 pub use matrix::{
     check_rotation_matrix, check_rotation_matrix_named, compose, elementary_rotation, rot_x, rot_y,
-    rot_z, rotate_vectors, ROTATION_TOL,
+    rot_z, rotate_vectors, ROTATION_MATRIX_TOL,
 };
 pub use quaternion::{
     check_quaternion, matrix_to_quaternion, quaternion_multiply, quaternion_normalize,
