@@ -12,7 +12,6 @@ mod heavy_top_fourier;
 mod heavy_top_motion;
 mod heavy_top_steady;
 mod poinsot_construction;
-mod rotations;
 
 pub use free_rigid_body::{check_moments, FreeRegime, FreeRigidBody};
 pub use free_scale::PHASE_LIMIT;
@@ -25,7 +24,3 @@ pub use heavy_top_steady::{
     check_theta, check_top, min_spin, sleeping_threshold, steady_precession, SteadyPrecession,
 };
 pub use poinsot_construction::{axis_stability, AxisStability, Stability};
-pub(crate) use rotations::{
-    conj, hamilton, matrix_to_quaternion_unchecked as matrix_quaternion, normalized,
-    quaternion_matrix, same_hemisphere,
-};
