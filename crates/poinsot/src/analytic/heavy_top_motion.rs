@@ -31,20 +31,9 @@ use super::heavy_top::EulerState;
 use super::heavy_top_cubic::{Reduced, Turning};
 use super::heavy_top_fourier::{Fourier, SeriesInput, ThirdSeries};
 use crate::error::{Error, Result};
+use crate::special::ellip_carlson::{rf, rj};
 use crate::special::{Jacobi, JacobiValues};
 use std::f64::consts::PI;
-
-/// R_J(x, y, z, p) (Carlson), for arguments the callers guarantee valid.
-#[inline]
-fn rj(x: f64, y: f64, z: f64, p: f64) -> f64 {
-    ellip::elliprj(x, y, z, p).unwrap_or(f64::NAN)
-}
-
-/// R_F(x, y, z) (Carlson).
-#[inline]
-fn rf(x: f64, y: f64, z: f64) -> f64 {
-    ellip::elliprf(x, y, z).unwrap_or(f64::NAN)
-}
 
 /// `∫₀^r dx/(1 − n sn²x)` for |r| ≤ K, given sn, cn, dn at r and `p = 1 − n sn²r` exactly.
 #[inline]
