@@ -95,7 +95,7 @@ impl ThirdSeries {
     }
 }
 
-/// The input of the series: the solution's constants, as [`super::heavy_top_motion`] has them.
+/// The input of the series: the solution's constants, as [`super::motion`] has them.
 pub(crate) struct SeriesInput {
     pub k: f64,
     pub k_prime: f64,
