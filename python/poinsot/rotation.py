@@ -49,7 +49,9 @@ EULER_SEQUENCES: tuple[str, ...] = (
 
 #: Tolerance on ``max|R^T R - I|`` and ``|det R - 1|`` with which every function that takes a
 #: rotation matrix accepts it (:func:`check_rotation_matrix` has its own ``tol``).
-ROTATION_TOL: float = _core.ROTATION_TOL
+ROTATION_MATRIX_TOL: float = _core.ROTATION_MATRIX_TOL
+#: The former name of :data:`ROTATION_MATRIX_TOL` (the same value), kept for existing code.
+ROTATION_TOL: float = ROTATION_MATRIX_TOL
 
 #: :func:`matrix_to_euler` reports gimbal lock where ``|sin beta|`` (proper Euler) or
 #: ``|cos beta|`` (Tait-Bryan) read from the matrix is at most this.
@@ -205,7 +207,7 @@ def matrix_to_euler(
     Parameters
     ----------
     R : array_like, shape (..., 3, 3), or scipy Rotation
-        Rotation matrices (orthonormal with det +1 within :data:`ROTATION_TOL`).
+        Rotation matrices (orthonormal with det +1 within :data:`ROTATION_MATRIX_TOL`).
     seq, intrinsic, degrees
         As in :func:`euler_to_matrix`.
 
@@ -655,7 +657,7 @@ def check_rotation_matrix(R: Any, *, tol: float = 1e-9) -> FloatArray:
 
 def as_scipy_rotation(R: Any) -> Any:
     """``R`` (..., 3, 3) as a ``scipy.spatial.transform.Rotation`` (checked first with
-    :data:`ROTATION_TOL`; a scipy Rotation is returned as it is). Needs scipy
+    :data:`ROTATION_MATRIX_TOL`; a scipy Rotation is returned as it is). Needs scipy
     (``pip install poinsot[scipy]``)."""
     if _is_scipy_rotation(R):
         return R
@@ -665,7 +667,7 @@ def as_scipy_rotation(R: Any) -> Any:
         raise ImportError(
             "as_scipy_rotation needs scipy: pip install 'poinsot[scipy]' (or pip install scipy)"
         ) from exc
-    mats = check_rotation_matrix(R, tol=ROTATION_TOL)
+    mats = check_rotation_matrix(R, tol=ROTATION_MATRIX_TOL)
     return Rotation.from_matrix(mats)
 
 

@@ -333,6 +333,6 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(screw_apply, m)?)?;
     m.add("EULER_LOCK_TOL", rot::EULER_LOCK_TOL)?;
     m.add("RATES_LOCK_TOL", rot::RATES_LOCK_TOL)?;
-    m.add("ROTATION_TOL", rot::ROTATION_TOL)?;
+    m.add("ROTATION_MATRIX_TOL", rot::ROTATION_MATRIX_TOL)?;
     Ok(())
 }

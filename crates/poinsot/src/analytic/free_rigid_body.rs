@@ -48,11 +48,12 @@
 
 use super::free_scale::{check_omega_range, representable, Scale};
 use super::free_symmetric_top::{check_omega, SymmetricMotion};
-use super::rotations::{
-    axis_angle_q, conj, coordinate_q, hamilton, matrix_to_quaternion_unchecked, normalized, rotate,
-};
 use crate::error::{check_finite, Error, Result};
-use crate::rotation::{check_quaternion, Quaternion};
+use crate::rotation::{
+    axis_angle_quaternion, check_quaternion, conj, coordinate_quaternion, hamilton,
+    matrix_to_quaternion_any_sign, normalized, quaternion_rotate_unchecked as rotate,
+    same_hemisphere, Quaternion,
+};
 use crate::special::carlson::{rf_cd, rj_cd};
 use crate::special::fp::{exponent, ldexp};
 use crate::special::integrals::{pi_complete_split, pi_reduced_split};
@@ -168,7 +169,7 @@ pub struct FreeRigidBody {
 }
 
 /// Checks principal moments: finite, > 0, and the triangle inequality `I₁ + I₂ ≥ I₃` of the
-/// sorted moments within [`crate::inertia::tensor::PHYSICAL_RTOL`] of the largest (the same
+/// sorted moments within [`crate::inertia::PHYSICAL_RTOL`] of the largest (the same
 /// rule as [`crate::inertia::check_inertia`], without its eigen-decomposition), tested at unit
 /// scale so that the verdict does not depend on the units; errors name `moments`
 /// ([`crate::ErrorKind::InvalidInertia`]).
@@ -190,7 +191,7 @@ pub fn check_moments(moments: &[f64; 3]) -> Result<()> {
     let e = exponent(m[2]);
     let u = m.map(|v| ldexp(v, -e));
     let excess = u[2] - (u[0] + u[1]);
-    if excess > crate::inertia::tensor::PHYSICAL_RTOL * u[2] {
+    if excess > crate::inertia::PHYSICAL_RTOL * u[2] {
         return Err(Error::inertia(
             "moments",
             format!(
@@ -443,7 +444,7 @@ impl FreeRigidBody {
         match &self.motion {
             Motion::Steady { omega, axis, rate } => (
                 *omega,
-                hamilton(&self.attitude0, &axis_angle_q(axis, rate * th)),
+                hamilton(&self.attitude0, &axis_angle_quaternion(axis, rate * th)),
             ),
             Motion::Symmetric(s) => (s.omega(th), s.attitude(th)),
             Motion::Elliptic(e) => {
@@ -461,7 +462,7 @@ impl FreeRigidBody {
         for &t in times {
             let (w, q) = self.state(t)?;
             let q = match attitude.last() {
-                Some(prev) => super::rotations::same_hemisphere(q, prev),
+                Some(prev) => same_hemisphere(q, prev),
                 None => q,
             };
             omega.push([w.x, w.y, w.z]);
@@ -590,7 +591,7 @@ fn euler_tilt(l: &Vec3) -> Quaternion {
     let rho = l.x.hypot(l.y);
     let (a, b) = (l.y / rho, l.x / rho);
     let c = [a, -b, 0.0, l.z * b, l.z * a, -rho, l.x, l.y, l.z];
-    matrix_to_quaternion_unchecked(&c)
+    matrix_to_quaternion_any_sign(&c)
 }
 
 /// `ca a² + cb b²` as (value, e) with the sum = value · 2^(2e): the squares of components
@@ -732,7 +733,7 @@ impl Elliptic {
             kappa,
             w_axes,
             q_pre: [1.0, 0.0, 0.0, 0.0],
-            q_post: matrix_to_quaternion_unchecked(&row_major(&to_w)),
+            q_post: matrix_to_quaternion_any_sign(&row_major(&to_w)),
         };
         if !separatrix {
             // Π(n | m) = R_F(0, m₁, 1) + (n/3) R_J(0, m₁, 1, 1 − n) (DLMF 19.25.2); for n < −1
@@ -864,7 +865,7 @@ impl Elliptic {
         let phi = self.rate_p.mul_add(t, self.kappa * (pi - self.pi0));
         let c = euler_tilt(&self.l_hat_w(&w));
         let q = hamilton(
-            &hamilton(&self.q_pre, &coordinate_q(2, phi)),
+            &hamilton(&self.q_pre, &coordinate_quaternion(2, phi)),
             &hamilton(&c, &self.q_post),
         );
         (w, normalized(&q))

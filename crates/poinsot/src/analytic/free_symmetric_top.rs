@@ -15,9 +15,11 @@
 //! 2⁴² rad), and T, |L| and L refuse, naming `omega0`, when outside the normal double range.
 
 use super::free_scale::{check_omega_range, representable, Scale};
-use super::rotations::{axis_angle_q, coordinate_q, hamilton};
 use crate::error::{check_finite, Error, Result};
-use crate::rotation::{check_quaternion, Quaternion};
+use crate::rotation::{
+    axis_angle_quaternion, check_quaternion, coordinate_quaternion, hamilton,
+    quaternion_rotate_unchecked, Quaternion,
+};
 use crate::special::fp::{describe, exponent, ldexp};
 use crate::Vec3;
 
@@ -129,8 +131,8 @@ impl SymmetricMotion {
     }
 
     pub(crate) fn attitude(&self, t: f64) -> Quaternion {
-        let precession = axis_angle_q(&self.l_hat_body0, self.l_norm * t / self.i_perp);
-        let spin = coordinate_q(self.axis, self.big_omega * t);
+        let precession = axis_angle_quaternion(&self.l_hat_body0, self.l_norm * t / self.i_perp);
+        let spin = coordinate_quaternion(self.axis, self.big_omega * t);
         hamilton(&hamilton(&self.attitude0, &precession), &spin)
     }
 }
@@ -356,7 +358,7 @@ impl FreeSymmetricTop {
         self.angular_momentum_magnitude()?;
         let k = self.scale.e_i + self.scale.e_w;
         let l =
-            super::rotations::rotate(&self.attitude0, &(self.sym.l_hat_body0 * self.sym.l_norm));
+            quaternion_rotate_unchecked(&self.attitude0, &(self.sym.l_hat_body0 * self.sym.l_norm));
         Ok(l.map(|c| ldexp(c, k)))
     }
 
@@ -425,7 +427,7 @@ impl FreeSymmetricTop {
 
     /// The symmetry axis e₃ in space components at t. Errors name `t`.
     pub fn symmetry_axis(&self, t: f64) -> Result<Vec3> {
-        Ok(super::rotations::rotate(&self.attitude(t)?, &Vec3::z()))
+        Ok(quaternion_rotate_unchecked(&self.attitude(t)?, &Vec3::z()))
     }
 
     /// ω₃² from the energy and |L|: ω₃² = (L² − 2 T I₁) / (I₃ (I₃ − I₁)) (2.95) (rad²/s²).

@@ -7,25 +7,14 @@ mod free_rigid_body;
 mod free_scale;
 mod free_symmetric_top;
 mod heavy_top;
-mod heavy_top_cubic;
-mod heavy_top_fourier;
-mod heavy_top_motion;
-mod heavy_top_steady;
 mod poinsot_construction;
-mod rotations;
 
 pub use free_rigid_body::{check_moments, FreeRegime, FreeRigidBody};
 pub use free_scale::PHASE_LIMIT;
 pub use free_symmetric_top::{FreeSymmetricTop, TopShape};
 pub use heavy_top::{
-    constants_of_state, lagrangian, EulerState, HeavyTop, MotionClass, StateConstants,
+    check_theta, check_top, constants_of_state, lagrangian, min_spin, sleeping_threshold,
+    steady_precession, EulerState, HeavyTop, MotionClass, StateConstants, SteadyPrecession,
     CUSP_TOLERANCE, MAX_PHASE, MIN_POLE_DISTANCE, STEADY_NUTATION_TOLERANCE,
 };
-pub use heavy_top_steady::{
-    check_theta, check_top, min_spin, sleeping_threshold, steady_precession, SteadyPrecession,
-};
 pub use poinsot_construction::{axis_stability, AxisStability, Stability};
-pub(crate) use rotations::{
-    conj, hamilton, matrix_to_quaternion_unchecked as matrix_quaternion, normalized,
-    quaternion_matrix, same_hemisphere,
-};

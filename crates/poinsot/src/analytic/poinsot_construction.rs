@@ -180,7 +180,7 @@ impl FreeRigidBody {
     pub fn contact_point(&self, t: f64) -> Result<Vec3> {
         let th = self.scale().time(t)?;
         let (w, q) = self.state_at_hat(th);
-        Ok(super::rotations::rotate(&q, &w) * self.contact_factor())
+        Ok(crate::rotation::quaternion_rotate_unchecked(&q, &w) * self.contact_factor())
     }
 
     /// `samples` points of the polhode on the inertia ellipsoid `ρ·I·ρ = 1`: the

@@ -10,12 +10,12 @@ use super::splitting::{free_steps, kicked_step, SplitState};
 use super::torque::{Torque, TorqueContext, TorqueModel};
 use std::sync::Arc;
 
-use crate::analytic::{check_moments, normalized, quaternion_matrix, FreeRigidBody};
+use crate::analytic::{check_moments, FreeRigidBody};
 use crate::control;
 use crate::error::{Error, Result};
 use crate::integrate::{composition_coefficients, dop853, Options};
 use crate::limits::check_steps;
-use crate::rotation::{check_quaternion, Quaternion};
+use crate::rotation::{check_quaternion, normalized, quaternion_to_mat3_unchecked, Quaternion};
 use crate::Vec3;
 
 /// The final states of a batch: ω (body, rad/s) and attitude (`[w, x, y, z]`) per body.
@@ -200,7 +200,7 @@ fn one_body(
             return Vec3::zeros();
         }
         let r = if model.depends_on_attitude() {
-            quaternion_matrix(&normalized(q))
+            quaternion_to_mat3_unchecked(&normalized(q))
         } else {
             crate::Mat3::identity()
         };

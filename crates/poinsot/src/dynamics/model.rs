@@ -84,7 +84,7 @@ impl BodyInertia {
             tensor: t,
             moments: p.moments,
             axes: p.axes,
-            axes_q: crate::analytic::matrix_quaternion(&m),
+            axes_q: crate::rotation::matrix_to_quaternion_any_sign(&m),
             principal: false,
         })
     }

@@ -5,14 +5,15 @@ use super::equations::{angular_acceleration_principal, power, quaternion_rate, R
 use super::model::BodyInertia;
 use super::splitting::{free_steps, kicked_step, SplitState};
 use super::torque::{TorqueContext, TorqueModel};
-use crate::analytic::{
-    conj, hamilton, normalized, quaternion_matrix, same_hemisphere, FreeRigidBody,
-};
+use crate::analytic::FreeRigidBody;
 use crate::control;
 use crate::error::{check_finite, Error, Result};
 use crate::integrate::{composition_coefficients, Dop853, Options};
 use crate::limits::{check_count, check_steps, DEFAULT_MAX_STEPS};
-use crate::rotation::{check_quaternion, Quaternion};
+use crate::rotation::{
+    check_quaternion, conj, hamilton, normalized, quaternion_to_mat3_unchecked, same_hemisphere,
+    Quaternion,
+};
 use crate::{Mat3, Vec3};
 
 /// An integration method.
@@ -206,7 +207,7 @@ impl Frames<'_> {
     ) -> Vec3 {
         let w_b = self.omega_b(w_p);
         let attitude = if torque.depends_on_attitude() {
-            quaternion_matrix(&normalized(&self.q_b(q_p)))
+            quaternion_to_mat3_unchecked(&normalized(&self.q_b(q_p)))
         } else {
             Mat3::identity()
         };
@@ -338,7 +339,7 @@ pub fn simulate<T: TorqueModel + ?Sized>(
             None => q_b,
         };
         let l_b = inertia.tensor * w_b;
-        let attitude = quaternion_matrix(&q_b);
+        let attitude = quaternion_to_mat3_unchecked(&q_b);
         let ctx = TorqueContext {
             t,
             omega: &w_b,

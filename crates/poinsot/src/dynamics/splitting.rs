@@ -13,9 +13,8 @@
 //! torque) and |q| stay exact to round-off, the map is symplectic on T*SO(3) (Poisson on the
 //! Lie–Poisson reduced space) and the energy error stays bounded without drift.
 
-use crate::analytic::{hamilton, normalized};
 use crate::integrate::SymmetricStep;
-use crate::rotation::Quaternion;
+use crate::rotation::{hamilton, normalized, Quaternion};
 use crate::Vec3;
 
 /// The state of the splitting: body angular momentum in principal axes, attitude, time.

@@ -26,7 +26,7 @@ const HINT_OMEGA: &str = "no body turning this fast has a finite value here";
 
 /// Tolerance of the rotation check of [`MassProperties::rotated`]: `|RᵀR − 1|` entrywise and
 /// `|det R − 1|` (a rotation matrix that went through text or single precision passes).
-pub const ROTATION_TOL: f64 = 1e-9;
+pub const BODY_ROTATION_TOL: f64 = 1e-9;
 
 /// The mass properties of a rigid body.
 ///
@@ -296,7 +296,7 @@ impl MassProperties {
 
     /// The same body rotated actively by the rotation matrix `rotation` about the origin of its
     /// axes: `com ↦ R com`, `I ↦ R I Rᵀ`. `rotation` must be orthonormal with `det = +1` within
-    /// [`ROTATION_TOL`], else an [`Error::rotation`] naming `rotation`; an [`Error::invalid`]
+    /// [`BODY_ROTATION_TOL`], else an [`Error::rotation`] naming `rotation`; an [`Error::invalid`]
     /// naming `rotation` when a rotated entry would exceed the range of doubles (a centre of
     /// mass or a tensor at the very top of the range).
     pub fn rotated(&self, rotation: &Mat3) -> Result<Self> {
@@ -446,22 +446,22 @@ impl MassProperties {
     }
 }
 
-/// Checks that `r` is a proper rotation matrix within [`ROTATION_TOL`].
+/// Checks that `r` is a proper rotation matrix within [`BODY_ROTATION_TOL`].
 fn check_rotation(argument: &str, r: &Mat3) -> Result<()> {
     if let Err(e) = check_finite(argument, r.as_slice()) {
         return Err(Error::rotation(argument, e.message));
     }
     let err = (r.transpose() * r - Mat3::identity()).amax();
-    if err > ROTATION_TOL {
+    if err > BODY_ROTATION_TOL {
         return Err(Error::rotation(
             argument,
             format!(
-                "must be orthonormal (RᵀR = 1), off by {err:.3e} (tolerance {ROTATION_TOL:.0e})"
+                "must be orthonormal (RᵀR = 1), off by {err:.3e} (tolerance {BODY_ROTATION_TOL:.0e})"
             ),
         ));
     }
     let det = r.determinant();
-    if (det - 1.0).abs() > ROTATION_TOL {
+    if (det - 1.0).abs() > BODY_ROTATION_TOL {
         return Err(Error::rotation(
             argument,
             format!("must have det = +1 (a proper rotation, not a reflection), got {det}"),

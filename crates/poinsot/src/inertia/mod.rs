@@ -1,28 +1,34 @@
 //! Mass properties of rigid bodies (the unit's 2.43–2.66): the inertia tensor with its
-//! validation, parallel-axis shift, rotation, principal axes and kind of top ([`tensor`]); bodies,
-//! their composition, angular momentum, kinetic energy and holding torque ([`body`]); the
-//! standard solids ([`shapes`]); continuous densities by adaptive cubature ([`density`]); and
-//! closed triangle meshes by exact polyhedral integrals ([`mesh`]).
+//! validation, parallel-axis shift, rotation, principal axes and kind of top (`tensor`); bodies,
+//! their composition, angular momentum, kinetic energy and holding torque (`body`,
+//! [`MassProperties`]); the standard solids (`shapes`); continuous densities by adaptive
+//! cubature (`density`, [`density_mass_properties`]); and closed triangle meshes by exact
+//! polyhedral integrals (`mesh`, [`mesh_mass_properties`]). The submodules are private; their
+//! public items are re-exported here.
 //!
 //! Sign convention: products of inertia negated, `I_xy = −Σ m x y` (2.49), so `L = I·ω` (2.63);
 //! tensors are stored about the centre of mass in body axes; principal moments ascending,
 //! principal axes a proper rotation.
 
-pub mod body;
-pub mod density;
-pub mod mesh;
+mod body;
+mod density;
+mod mesh;
 mod mesh_embedding;
 mod scaling;
-pub mod shapes;
-pub mod tensor;
+mod shapes;
+mod tensor;
 
-pub use body::MassProperties;
-pub use density::{density_mass_properties, CubatureOptions, DensityIntegral};
-pub use mesh::{mesh_mass_properties, mesh_mass_properties_rows, FaceIndex};
+pub use body::{MassProperties, BODY_ROTATION_TOL};
+pub use density::{
+    density_mass_properties, CubatureOptions, DensityIntegral, MAX_BATCH, POINTS_PER_REGION,
+};
+pub use mesh::{mesh_mass_properties, mesh_mass_properties_rows, FaceIndex, MAX_VERTICES};
 pub use shapes::{
     cuboid, ellipsoid, solid_cone, solid_cylinder, solid_sphere, spherical_shell, thin_disk,
     thin_ring, thin_rod,
 };
 pub use tensor::{
-    check_inertia, check_inertia_scaled, classify, principal, Principal, TopKind, DEFAULT_KIND_RTOL,
+    check_inertia, check_inertia_scaled, classify, point_inertia, principal, rotate,
+    shift_from_com, shift_to_com, Principal, TopKind, DEFAULT_KIND_RTOL, PHYSICAL_RTOL,
+    SYMMETRY_RTOL,
 };

@@ -5,7 +5,7 @@
 //! matrix back (Rodrigues' formula).
 
 use crate::error::{check_finite, Error, Result};
-use crate::rotation::matrix::{check_rotation_matrix, row_major, ROTATION_TOL};
+use crate::rotation::matrix::{check_rotation_matrix, row_major, ROTATION_MATRIX_TOL};
 use crate::rotation::quaternion::matrix_to_quaternion_unchecked;
 use crate::{Mat3, Vec3};
 
@@ -21,9 +21,9 @@ pub const IDENTITY_AXIS: [f64; 3] = [0.0, 0.0, 1.0];
 /// component positive). The identity gives angle 0 and the conventional axis
 /// [`IDENTITY_AXIS`] (`+z`).
 ///
-/// `r` is checked with [`ROTATION_TOL`]; errors name `"R"`.
+/// `r` is checked with [`ROTATION_MATRIX_TOL`]; errors name `"R"`.
 pub fn rotation_axis(r: &Mat3) -> Result<(Vec3, f64)> {
-    check_rotation_matrix(r, ROTATION_TOL)?;
+    check_rotation_matrix(r, ROTATION_MATRIX_TOL)?;
     let (n, angle) = rotation_axis_unchecked(&row_major(r));
     Ok((Vec3::from(n), angle))
 }

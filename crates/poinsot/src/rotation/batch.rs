@@ -16,7 +16,7 @@ use crate::rotation::euler::{euler_to_matrix_unchecked, matrix_to_euler_unchecke
 use crate::rotation::euler_kinematics::{
     angular_velocity_unchecked, euler_rates_checked_input, Frame,
 };
-use crate::rotation::matrix::{rotation_defects, rotation_verdict, row_major, ROTATION_TOL};
+use crate::rotation::matrix::{rotation_defects, rotation_verdict, row_major, ROTATION_MATRIX_TOL};
 use crate::rotation::quaternion::{
     check_quaternion, hamilton, matrix_to_quaternion_unchecked, quaternion_to_matrix_unchecked,
 };
@@ -130,7 +130,7 @@ pub fn euler_to_matrix_batch(seq: EulerSequence, angles: &[f64], out: &mut [f64]
 /// Rotation matrices (`matrices`: N×9, row-major) → Euler angles (`out`: N×3, rad) in the
 /// canonical ranges, as [`crate::rotation::matrix_to_euler`]; `locked[k]` is set to the
 /// gimbal-lock flag of record `k`. Returns the number of records at gimbal lock. Each matrix is
-/// checked with [`ROTATION_TOL`]; errors name `"R"`.
+/// checked with [`ROTATION_MATRIX_TOL`]; errors name `"R"`.
 pub fn matrix_to_euler_batch(
     seq: EulerSequence,
     matrices: &[f64],
@@ -147,7 +147,7 @@ pub fn matrix_to_euler_batch(
     }
     let run = |(k, (y, flag)): (usize, (&mut [f64], &mut bool))| -> Result<()> {
         let m = rec::<9>(matrices, k);
-        check_matrix("R", m, ROTATION_TOL).map_err(|e| at_index(e, k))?;
+        check_matrix("R", m, ROTATION_MATRIX_TOL).map_err(|e| at_index(e, k))?;
         let e = matrix_to_euler_unchecked(m, seq);
         y.copy_from_slice(&e.angles);
         *flag = e.gimbal_lock;
@@ -183,7 +183,7 @@ pub fn matrix_to_quaternion_batch(matrices: &[f64], out: &mut [f64]) -> Result<(
     check_out(out.len(), n, 4)?;
     drive::<4, _>(n, out, |k, y| {
         let m = rec::<9>(matrices, k);
-        check_matrix("R", m, ROTATION_TOL)?;
+        check_matrix("R", m, ROTATION_MATRIX_TOL)?;
         *y = matrix_to_quaternion_unchecked(m);
         Ok(())
     })
@@ -233,7 +233,7 @@ pub fn rotation_axis_batch(matrices: &[f64], out: &mut [f64]) -> Result<()> {
     check_out(out.len(), n, 4)?;
     drive::<4, _>(n, out, |k, y| {
         let m = rec::<9>(matrices, k);
-        check_matrix("R", m, ROTATION_TOL)?;
+        check_matrix("R", m, ROTATION_MATRIX_TOL)?;
         let (a, theta) = rotation_axis_unchecked(m);
         *y = [a[0], a[1], a[2], theta];
         Ok(())
@@ -261,7 +261,7 @@ pub fn axis_angle_to_matrix_batch(axes: &[f64], angles: &[f64], out: &mut [f64])
 }
 
 /// `R_k v_k` for matrices (N×9, row-major) and vectors (N×3) into `out` (N×3). Each matrix is
-/// checked with [`ROTATION_TOL`]; errors name `"R"` or `"v"`.
+/// checked with [`ROTATION_MATRIX_TOL`]; errors name `"R"` or `"v"`.
 pub fn rotate_vectors_batch(matrices: &[f64], vectors: &[f64], out: &mut [f64]) -> Result<()> {
     let n = records("R", matrices, 9)?;
     if records("v", vectors, 3)? != n {
@@ -273,7 +273,7 @@ pub fn rotate_vectors_batch(matrices: &[f64], vectors: &[f64], out: &mut [f64]) 
     check_out(out.len(), n, 3)?;
     drive::<3, _>(n, out, |k, y| {
         let (m, v) = (rec::<9>(matrices, k), rec::<3>(vectors, k));
-        check_matrix("R", m, ROTATION_TOL)?;
+        check_matrix("R", m, ROTATION_MATRIX_TOL)?;
         check_rec("v", v)?;
         for (i, yi) in y.iter_mut().enumerate() {
             *yi = m[3 * i] * v[0] + m[3 * i + 1] * v[1] + m[3 * i + 2] * v[2];

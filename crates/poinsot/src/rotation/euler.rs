@@ -26,7 +26,7 @@ use std::f64::consts::{PI, TAU};
 
 use crate::error::{check_finite, Error, Result};
 use crate::rotation::matrix::{
-    check_rotation_matrix, elementary_rotation, row_major, ROTATION_TOL,
+    check_rotation_matrix, elementary_rotation, row_major, ROTATION_MATRIX_TOL,
 };
 use crate::Mat3;
 
@@ -254,11 +254,11 @@ pub(crate) fn euler_to_matrix_unchecked(angles: [f64; 3], seq: EulerSequence) ->
 /// The Euler angles of rotation matrix `r` in convention `seq` (the inverse of
 /// [`euler_to_matrix`]), in the canonical ranges, with the gimbal-lock flag.
 ///
-/// `r` is checked with [`crate::rotation::ROTATION_TOL`]. Errors: non-finite entries
+/// `r` is checked with [`crate::rotation::ROTATION_MATRIX_TOL`]. Errors: non-finite entries
 /// ([`Error::invalid`]) or a matrix that is not a proper rotation ([`Error::rotation`]),
 /// naming `"R"`.
 pub fn matrix_to_euler(r: &Mat3, seq: EulerSequence) -> Result<EulerAngles> {
-    check_rotation_matrix(r, ROTATION_TOL)?;
+    check_rotation_matrix(r, ROTATION_MATRIX_TOL)?;
     Ok(matrix_to_euler_unchecked(&row_major(r), seq))
 }
 

@@ -11,7 +11,7 @@ use crate::{Mat3, Vec3};
 /// rotation matrix accepts it (`1e-6`: forgiving of matrices stored in single precision or
 /// composed many times, strict enough to reject a scaled, sheared or reflected matrix). The
 /// explicit validator [`check_rotation_matrix`] takes its own tolerance.
-pub const ROTATION_TOL: f64 = 1e-6;
+pub const ROTATION_MATRIX_TOL: f64 = 1e-6;
 
 /// The active rotation by `angle` (rad) about the x axis:
 /// `[[1, 0, 0], [0, cos, −sin], [0, sin, cos]]`.
@@ -48,20 +48,20 @@ pub fn elementary_rotation(axis: usize, angle: f64) -> Mat3 {
 }
 
 /// The composition `R_1 R_2 ⋯ R_n` of `rotations` (the last one acts first on a vector);
-/// the identity for an empty slice. Each factor is checked with [`ROTATION_TOL`].
+/// the identity for an empty slice. Each factor is checked with [`ROTATION_MATRIX_TOL`].
 pub fn compose(rotations: &[Mat3]) -> Result<Mat3> {
     let mut out = Mat3::identity();
     for (i, r) in rotations.iter().enumerate() {
-        check_rotation_matrix_named(&format!("rotations[{i}]"), r, ROTATION_TOL)?;
+        check_rotation_matrix_named(&format!("rotations[{i}]"), r, ROTATION_MATRIX_TOL)?;
         out *= r;
     }
     Ok(out)
 }
 
 /// Applies the rotation `r` to every vector of `v`: `R v_k` (space components of body-fixed
-/// vectors, for an attitude `R`). `r` is checked with [`ROTATION_TOL`]; `v` must be finite.
+/// vectors, for an attitude `R`). `r` is checked with [`ROTATION_MATRIX_TOL`]; `v` must be finite.
 pub fn rotate_vectors(r: &Mat3, v: &[Vec3]) -> Result<Vec<Vec3>> {
-    check_rotation_matrix(r, ROTATION_TOL)?;
+    check_rotation_matrix(r, ROTATION_MATRIX_TOL)?;
     v.iter()
         .map(|x| {
             check_finite("v", x.as_slice())?;

@@ -41,7 +41,11 @@ pub use euler_kinematics::{
 };
 pub use matrix::{
     check_rotation_matrix, check_rotation_matrix_named, compose, elementary_rotation, rot_x, rot_y,
-    rot_z, rotate_vectors, ROTATION_TOL,
+    rot_z, rotate_vectors, ROTATION_MATRIX_TOL,
+};
+pub(crate) use quaternion::{
+    axis_angle_quaternion, conj, coordinate_quaternion, hamilton, matrix_to_quaternion_any_sign,
+    normalized, quaternion_rotate_unchecked, quaternion_to_mat3_unchecked, same_hemisphere,
 };
 pub use quaternion::{
     check_quaternion, matrix_to_quaternion, quaternion_multiply, quaternion_normalize,

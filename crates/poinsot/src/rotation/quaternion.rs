@@ -3,7 +3,9 @@
 //! same rotation. The Hamilton product composes like matrices: `R(p ⊗ q) = R(p) R(q)`.
 
 use crate::error::{check_finite, Error, Result};
-use crate::rotation::matrix::{check_rotation_matrix, from_row_major, row_major, ROTATION_TOL};
+use crate::rotation::matrix::{
+    check_rotation_matrix, from_row_major, row_major, ROTATION_MATRIX_TOL,
+};
 use crate::{Mat3, Vec3};
 
 /// A quaternion, scalar first: `[w, x, y, z]`.
@@ -22,7 +24,7 @@ use crate::{Mat3, Vec3};
 pub type Quaternion = [f64; 4];
 
 /// Largest `|‖q‖ − 1|` accepted for a unit quaternion when the caller did not ask for
-/// normalisation (`1e-6`, as [`ROTATION_TOL`] for matrices).
+/// normalisation (`1e-6`, as [`ROTATION_MATRIX_TOL`] for matrices).
 pub const QUATERNION_UNIT_TOL: f64 = 1e-6;
 
 /// Checks quaternion `q` (`[w, x, y, z]`) named `argument` and returns it as a unit quaternion.
@@ -72,9 +74,9 @@ fn norm4(q: &Quaternion) -> f64 {
 ///
 /// Robust for every angle (Shepperd's method, as refined by Markley 2008): the quaternion is
 /// built from the largest of `1 + tr R` and `1 + 2 R_ii − tr R`, then normalised. `r` is
-/// checked with [`ROTATION_TOL`]; errors name `"R"`.
+/// checked with [`ROTATION_MATRIX_TOL`]; errors name `"R"`.
 pub fn matrix_to_quaternion(r: &Mat3) -> Result<Quaternion> {
-    check_rotation_matrix(r, ROTATION_TOL)?;
+    check_rotation_matrix(r, ROTATION_MATRIX_TOL)?;
     Ok(matrix_to_quaternion_unchecked(&row_major(r)))
 }
 
@@ -147,6 +149,7 @@ pub fn quaternion_multiply(p: &Quaternion, q: &Quaternion) -> Result<Quaternion>
     Ok(hamilton(p, q))
 }
 
+/// The Hamilton product `p ⊗ q` without checks: `R(p ⊗ q) = R(p) R(q)`.
 #[inline]
 pub(crate) fn hamilton(p: &Quaternion, q: &Quaternion) -> Quaternion {
     let [pw, px, py, pz] = *p;
@@ -164,10 +167,86 @@ pub(crate) fn hamilton(p: &Quaternion, q: &Quaternion) -> Quaternion {
 pub fn quaternion_rotate(q: &Quaternion, v: &Vec3) -> Result<Vec3> {
     let q = check_quaternion("q", q, false)?;
     check_finite("v", v.as_slice())?;
-    // v' = v + 2 u × (u × v + w v), u = (x, y, z): the expanded sandwich product.
+    Ok(quaternion_rotate_unchecked(&q, v))
+}
+
+/// `R(q) v` for a unit quaternion `q` (not checked): `v + 2 u × (u × v + w v)`,
+/// `u = (x, y, z)`, the expanded sandwich product `q ⊗ (0, v) ⊗ q*`.
+#[inline]
+pub(crate) fn quaternion_rotate_unchecked(q: &Quaternion, v: &Vec3) -> Vec3 {
     let u = Vec3::new(q[1], q[2], q[3]);
     let t = u.cross(v) + q[0] * v;
-    Ok(v + 2.0 * u.cross(&t))
+    v + 2.0 * u.cross(&t)
+}
+
+/// The conjugate `[w, −x, −y, −z]` (the inverse of a unit quaternion).
+#[inline]
+pub(crate) fn conj(q: &Quaternion) -> Quaternion {
+    [q[0], -q[1], -q[2], -q[3]]
+}
+
+/// `q / |q|` with the plain Euclidean norm (no scaling, no checks): the cheap renormalisation
+/// of a quaternion known to be near unit length (integrators, sampled attitudes). Use
+/// [`check_quaternion`] or [`quaternion_normalize`] for input.
+#[inline]
+pub(crate) fn normalized(q: &Quaternion) -> Quaternion {
+    let n = (q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]).sqrt();
+    [q[0] / n, q[1] / n, q[2] / n, q[3] / n]
+}
+
+/// `q` or `−q`, whichever is nearer to `reference` (continuity of sampled attitudes).
+#[inline]
+pub(crate) fn same_hemisphere(q: Quaternion, reference: &Quaternion) -> Quaternion {
+    let dot = q[0] * reference[0] + q[1] * reference[1] + q[2] * reference[2] + q[3] * reference[3];
+    if dot < 0.0 {
+        [-q[0], -q[1], -q[2], -q[3]]
+    } else {
+        q
+    }
+}
+
+/// The quaternion of the rotation by `angle` about the unit vector `axis` (not checked).
+#[inline]
+pub(crate) fn axis_angle_quaternion(axis: &Vec3, angle: f64) -> Quaternion {
+    let (s, c) = (0.5 * angle).sin_cos();
+    [c, s * axis.x, s * axis.y, s * axis.z]
+}
+
+/// The quaternion of the rotation by `angle` about coordinate axis `k` (0, 1, 2).
+#[inline]
+pub(crate) fn coordinate_quaternion(k: usize, angle: f64) -> Quaternion {
+    let (s, c) = (0.5 * angle).sin_cos();
+    let mut q = [c, 0.0, 0.0, 0.0];
+    q[k + 1] = s;
+    q
+}
+
+/// The unit quaternion of a rotation matrix given row-major (assumed a rotation), by
+/// Shepperd's method — built from the largest of `1 + tr R` and `1 + 2R_ii − tr R` — and
+/// normalised by [`normalized`], with the sign as it falls (unlike
+/// [`matrix_to_quaternion_unchecked`], no canonical `w ≥ 0`): the attitudes of the dynamics and
+/// the closed-form solutions, whose numbers are pinned to this arithmetic.
+#[inline]
+pub(crate) fn matrix_to_quaternion_any_sign(m: &[f64; 9]) -> Quaternion {
+    let (r00, r01, r02, r10, r11, r12, r20, r21, r22) =
+        (m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8]);
+    let tr = r00 + r11 + r22;
+    let q = if tr >= r00 && tr >= r11 && tr >= r22 {
+        [1.0 + tr, r21 - r12, r02 - r20, r10 - r01]
+    } else if r00 >= r11 && r00 >= r22 {
+        [r21 - r12, 1.0 + 2.0 * r00 - tr, r01 + r10, r02 + r20]
+    } else if r11 >= r22 {
+        [r02 - r20, r01 + r10, 1.0 + 2.0 * r11 - tr, r12 + r21]
+    } else {
+        [r10 - r01, r02 + r20, r12 + r21, 1.0 + 2.0 * r22 - tr]
+    };
+    normalized(&q)
+}
+
+/// The rotation matrix of a unit quaternion (not checked), as a matrix.
+#[inline]
+pub(crate) fn quaternion_to_mat3_unchecked(q: &Quaternion) -> Mat3 {
+    from_row_major(&quaternion_to_matrix_unchecked(q))
 }
 
 #[cfg(test)]

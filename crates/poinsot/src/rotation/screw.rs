@@ -4,7 +4,7 @@
 
 use crate::error::{check_finite, Result};
 use crate::rotation::axis_angle::{rodrigues, rotation_axis_unchecked, IDENTITY_AXIS};
-use crate::rotation::matrix::{check_rotation_matrix, row_major, ROTATION_TOL};
+use crate::rotation::matrix::{check_rotation_matrix, row_major, ROTATION_MATRIX_TOL};
 use crate::{Mat3, Vec3};
 
 /// Angles (rad) at or below this are treated as no rotation in [`screw_axis`]: `4 ε ≈ 8.9e-16`,
@@ -105,10 +105,10 @@ impl Screw {
 /// too) gives axis `+z`, point 0, angle 0, slide 0, pitch 0. A pure rotation (`n · t = 0`) has
 /// pitch 0.
 ///
-/// Errors: `R` not a rotation within [`ROTATION_TOL`] (naming `"R"`), non-finite `t` (naming
+/// Errors: `R` not a rotation within [`ROTATION_MATRIX_TOL`] (naming `"R"`), non-finite `t` (naming
 /// `"t"`).
 pub fn screw_axis(r: &Mat3, t: &Vec3) -> Result<Screw> {
-    check_rotation_matrix(r, ROTATION_TOL)?;
+    check_rotation_matrix(r, ROTATION_MATRIX_TOL)?;
     check_finite("t", t.as_slice())?;
     let (n, angle) = rotation_axis_unchecked(&row_major(r));
     let n = Vec3::from(n);

@@ -97,6 +97,12 @@ impl Turning {
     }
 }
 
+/// w = 1 − cos θ and v = 1 + cos θ without cancellation: `2 sin²(θ/2)`, `2 cos²(θ/2)`.
+pub(crate) fn w_v(theta: f64) -> (f64, f64) {
+    let (sh, ch) = (0.5 * theta).sin_cos();
+    (2.0 * sh * sh, 2.0 * ch * ch)
+}
+
 /// θ from w = 1 − cos θ and v = 1 + cos θ: `tan(θ/2) = √(w/v)`, accurate at both poles.
 pub(crate) fn theta_from_wv(w: f64, v: f64) -> f64 {
     2.0 * w.max(0.0).sqrt().atan2(v.max(0.0).sqrt())

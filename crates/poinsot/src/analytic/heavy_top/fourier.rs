@@ -21,17 +21,13 @@
 //! ratio is too close to 1 (the axis passing very near a pole, or m → 1) more than
 //! [`MAX_TERMS`] terms would be needed, and the solution is evaluated by Carlson's R_J instead.
 
+use crate::special::ellip_carlson::{rd, rf};
 use std::f64::consts::PI;
 
 /// The most Fourier terms the fast path uses; beyond, the incomplete integrals are evaluated.
 pub(crate) const MAX_TERMS: usize = 64;
 /// Terms below this fraction of the series' scale are dropped (below half an ulp).
 const TRUNCATION: f64 = 1e-17;
-
-/// R_F (Carlson).
-fn rf(x: f64, y: f64, z: f64) -> f64 {
-    ellip::elliprf(x, y, z).unwrap_or(f64::NAN)
-}
 
 /// One third-kind integral's Fourier data: `c`, the sign pattern, ρ (see the module docs).
 #[derive(Debug, Clone, Copy)]
@@ -99,7 +95,7 @@ impl ThirdSeries {
     }
 }
 
-/// The input of the series: the solution's constants, as [`super::heavy_top_motion`] has them.
+/// The input of the series: the solution's constants, as [`super::motion`] has them.
 pub(crate) struct SeriesInput {
     pub k: f64,
     pub k_prime: f64,
@@ -162,7 +158,11 @@ impl Fourier {
             return None;
         }
         // ⟨sn²⟩ = D/K with D = (K − E)/m = R_D(0, 1 − m, 1)/3.
-        let d = ellip::elliprd(0.0, s.mc, 1.0).ok()? / 3.0;
+        let d = rd(0.0, s.mc, 1.0);
+        if d.is_nan() {
+            return None;
+        }
+        let d = d / 3.0;
         let mean_sn2 = d / s.k;
         let dw = s.w_hi - s.w_lo;
         let dv = s.v_hi - s.v_lo;

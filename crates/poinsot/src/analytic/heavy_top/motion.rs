@@ -27,24 +27,13 @@
 //! (w₁ = 0, so d = 0) the term is absent and φ jumps by π there (ψ by ∓π): the Euler angles
 //! keep θ in [0, π].
 
-use super::heavy_top::EulerState;
-use super::heavy_top_cubic::{Reduced, Turning};
-use super::heavy_top_fourier::{Fourier, SeriesInput, ThirdSeries};
+use super::cubic::{w_v, Reduced, Turning};
+use super::fourier::{Fourier, SeriesInput, ThirdSeries};
+use super::state::EulerState;
 use crate::error::{Error, Result};
+use crate::special::ellip_carlson::{rf, rj};
 use crate::special::{Jacobi, JacobiValues};
 use std::f64::consts::PI;
-
-/// R_J(x, y, z, p) (Carlson), for arguments the callers guarantee valid.
-#[inline]
-fn rj(x: f64, y: f64, z: f64, p: f64) -> f64 {
-    ellip::elliprj(x, y, z, p).unwrap_or(f64::NAN)
-}
-
-/// R_F(x, y, z) (Carlson).
-#[inline]
-fn rf(x: f64, y: f64, z: f64) -> f64 {
-    ellip::elliprf(x, y, z).unwrap_or(f64::NAN)
-}
 
 /// `∫₀^r dx/(1 − n sn²x)` for |r| ≤ K, given sn, cn, dn at r and `p = 1 − n sn²r` exactly.
 #[inline]
@@ -186,9 +175,7 @@ impl Nutation {
         // τ₀ from w(τ₀) = w₀: sn²τ₀ = (w₂ − w₀)/(w₂ − w₁), cn²τ₀ = (w₀ − w₁)/(w₂ − w₁).
         let mut anchor_delta: Option<f64> = None;
         let tau0 = if from_state {
-            let (half, _) = (0.5 * start.theta, ());
-            let (sh, ch) = half.sin_cos();
-            let (w0, v0) = (2.0 * sh * sh, 2.0 * ch * ch);
+            let (w0, v0) = w_v(start.theta);
             let (s2, c2) = if w0 <= 1.0 {
                 ((t.w_hi - w0).max(0.0), (w0 - t.w_lo).max(0.0))
             } else {
@@ -283,7 +270,7 @@ impl Nutation {
         Ok(me)
     }
 
-    /// The Fourier form of this motion (see [`super::heavy_top_fourier`]), if it converges within
+    /// The Fourier form of this motion (see [`super::fourier`]), if it converges within
     /// its term limit and the axis does not pass through a pole.
     fn fourier_series(&self, r: &Reduced, t: &Turning, p: f64) -> Option<Fourier> {
         if self.jump_w != 0.0 || self.jump_v != 0.0 || !self.k.is_finite() {

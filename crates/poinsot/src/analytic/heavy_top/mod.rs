@@ -10,61 +10,39 @@
 //! has the constants of the motion p_ψ = I₃ω₃ (2.103), p_φ = I₁φ̇ sin²θ + p_ψ cos θ (2.104) and
 //! E (2.105); the reduced energy E' = E − p_ψ²/(2I₃) = ½I₁θ̇² + V(θ) (2.109) with the effective
 //! potential V(θ) (2.110). With u = cos θ, `u̇² = f(u)`, a cubic whose roots u₁ ≤ u₂ in [−1, 1]
-//! are the turning points θ₂ ≥ θ₁ ([`super::heavy_top_cubic`]); θ(t) is a Jacobi elliptic
-//! function and φ(t), ψ(t) elliptic integrals of the third kind (the unit calls this "very
-//! difficult"; see [`HeavyTop::euler_angles`]).
+//! are the turning points θ₂ ≥ θ₁ ([`cubic`]); θ(t) is a Jacobi elliptic function and φ(t),
+//! ψ(t) elliptic integrals of the third kind (the unit calls this "very difficult"; see
+//! [`HeavyTop::euler_angles`]).
+//!
+//! The parts, each depending only on those before it: `cubic` (the cubic and its turning
+//! points), `state` ([`EulerState`], the solution's limits, the time unit), `validate` (every
+//! check of input and output), `fourier` (the motion as Fourier series), `motion` (the exact
+//! nutating motion), `steady` (steady precession, 2.114–2.121); this module assembles them into
+//! [`HeavyTop`].
 
-use super::heavy_top_cubic::{
-    theta_from_wv, turning_points_from_constants, turning_points_from_state, Local, Reduced,
+mod cubic;
+mod fourier;
+mod motion;
+mod state;
+mod steady;
+mod validate;
+
+use crate::error::{Error, Result};
+use cubic::{
+    theta_from_wv, turning_points_from_constants, turning_points_from_state, w_v, Local, Reduced,
     Turning,
 };
-use super::heavy_top_motion::Nutation;
-use super::heavy_top_steady::{check_theta, check_top};
-use crate::error::{check_finite, Error, Result};
-
-/// A nutation θ₂ − θ₁ at or below this (rad) is reported as steady precession (it is below the
-/// round-off of turning points computed from double-precision data near a double root). The
-/// motion itself is still evaluated exactly with the computed turning points.
-pub const STEADY_NUTATION_TOLERANCE: f64 = 1e-10;
-
-/// The closest approach (rad) to a vertical that the solution resolves, other than passing
-/// exactly through it: the axis' distance from the pole is carried as 1 − cos θ = 2 sin²(θ/2)
-/// ≈ θ²/2, and the terms of the cubic near the pole (2.109–2.110 with u = cos θ; e.g.
-/// sin²θ₀ θ̇₀²) are products of two such distances, ~θ⁴ in the top's time unit, which leave
-/// the normal range of double precision below θ ≈ 1e-77. A start `theta` in (0, 1e-60), or a
-/// motion whose turning point comes that close to a pole it does not pass through, is refused
-/// (the margin, 1e-60 in θ⁴, leaves room for rates 1e-30 of the fastest); θ = 0 itself is exact.
-pub const MIN_POLE_DISTANCE: f64 = 1e-60;
-
-/// The largest phase (rad) at which the motion is evaluated: `|t|` times the fastest of the
-/// motion's rates (the nutation's 2π/period, ⟨φ̇⟩, ⟨ψ̇⟩). Each rate is known to a few ulp, so the
-/// phase it accumulates by time t carries a rounding error of about ε × rate × |t|; at this
-/// phase that error reaches 1e-6 rad, and beyond it the nutation phase is lost (at ~1e16 rad not
-/// a digit is left), so [`HeavyTop::euler_angles`] refuses `t` there. ≈ 4.5e9 rad, i.e. about
-/// 7e8 nutation periods.
-pub const MAX_PHASE: f64 = 1e-6 / f64::EPSILON;
-
-/// φ̇ at a turning point is taken as zero (a cusp) when `|b − a cos θᵢ|` is at most this times
-/// the size of its terms (the round-off of the momenta, with margin).
-pub const CUSP_TOLERANCE: f64 = 1e-10;
-
-/// Euler angles (the unit's z-x-z: φ about Z, θ about the line of nodes, ψ about axis 3) and
-/// their rates at one instant (rad, rad/s).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct EulerState {
-    /// Precession angle φ (rad).
-    pub phi: f64,
-    /// Nutation angle θ (rad), in [0, π].
-    pub theta: f64,
-    /// Spin angle ψ (rad).
-    pub psi: f64,
-    /// φ̇ (rad/s).
-    pub phi_dot: f64,
-    /// θ̇ (rad/s).
-    pub theta_dot: f64,
-    /// ψ̇ (rad/s).
-    pub psi_dot: f64,
-}
+use motion::Nutation;
+use state::TimeScale;
+pub use state::{
+    EulerState, CUSP_TOLERANCE, MAX_PHASE, MIN_POLE_DISTANCE, STEADY_NUTATION_TOLERANCE,
+};
+pub use steady::{min_spin, sleeping_threshold, steady_precession, SteadyPrecession};
+use validate::{
+    check_constants, check_representable, check_spin, check_state, finite_at_t, finite_at_theta,
+    largest_rate, resolve_pole_passage,
+};
+pub use validate::{check_theta, check_top};
 
 /// The shape of the path of the symmetry axis on the unit sphere (Goldstein §5.7, Fig. 5.9).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -147,6 +125,27 @@ pub struct HeavyTop {
     max_time: f64,
 }
 
+/// What the constructors of [`HeavyTop`] compute before the motion is classified and solved
+/// ([`HeavyTop::assemble`]).
+struct Assembly {
+    i1: f64,
+    i3: f64,
+    mgl: f64,
+    p_phi: f64,
+    p_psi: f64,
+    energy: f64,
+    reduced_energy: f64,
+    /// The reduced constants in the time unit 1/σ of `ts`.
+    r: Reduced,
+    ts: TimeScale,
+    /// The state at time 0.
+    start: EulerState,
+    turning: Turning,
+    /// Started from a state ([`HeavyTop::new`]) rather than given by its constants
+    /// ([`HeavyTop::from_constants`]).
+    from_state: bool,
+}
+
 impl HeavyTop {
     /// The top with moments I₁ (about a transverse axis through the pivot, kg·m²), I₃ (about the
     /// symmetry axis), `mgl` = m g l (N·m: weight times pivot-to-centre-of-mass distance), started
@@ -155,24 +154,7 @@ impl HeavyTop {
     /// Errors name the argument: `I1`, `I3` (> 0, finite; I₃ ≤ 2I₁), `mgl` (≥ 0, finite), `theta`
     /// (finite, in [0, π]), `phi`, `psi`, `phi_dot`, `theta_dot`, `psi_dot` (finite).
     pub fn new(i1: f64, i3: f64, mgl: f64, state: EulerState) -> Result<Self> {
-        check_top(i1, i3, mgl)?;
-        check_theta("theta", state.theta)?;
-        if state.theta > 0.0 && state.theta < MIN_POLE_DISTANCE {
-            return Err(Error::invalid(
-                "theta",
-                format!(
-                    "0 < theta = {:e} < {MIN_POLE_DISTANCE:e} rad: closer to the vertical than the solution \
-                     resolves (1 - cos theta ~ theta^2/2 leaves double precision); use theta = 0 for a top \
-                     started exactly upright",
-                    state.theta
-                ),
-            ));
-        }
-        check_finite("phi", &[state.phi])?;
-        check_finite("psi", &[state.psi])?;
-        check_finite("phi_dot", &[state.phi_dot])?;
-        check_finite("theta_dot", &[state.theta_dot])?;
-        check_finite("psi_dot", &[state.psi_dot])?;
+        check_state(i1, i3, mgl, &state, true)?;
         let mut st = state;
         // At a pole θ̇ must point into [0, π]: θ = 0 with θ̇ < 0 is θ = 0 with θ̇ > 0 and the line of
         // nodes reversed (φ + π, ψ − π: the same rotation and angular velocity); likewise at π.
@@ -192,10 +174,7 @@ impl HeavyTop {
                 ..st
             };
         }
-        let half = 0.5 * st.theta;
-        // w = 1 − cos θ and v = 1 + cos θ without cancellation.
-        let w0 = 2.0 * half.sin().powi(2);
-        let v0 = 2.0 * half.cos().powi(2);
+        let (w0, v0) = w_v(st.theta);
         let (s, c) = st.theta.sin_cos();
         let s2 = s * s;
         // The rates in the top's own time unit 1/σ (σ = 2ᵏ ≈ its fastest rate, see
@@ -249,7 +228,7 @@ impl HeavyTop {
         };
         let turning = turning_points_from_state(&r, &local);
         let turning = resolve_pole_passage("theta", turning, Some((w0, v0)))?;
-        Self::assemble(
+        Self::assemble(Assembly {
             i1,
             i3,
             mgl,
@@ -259,10 +238,10 @@ impl HeavyTop {
             reduced_energy,
             r,
             ts,
-            st,
+            start: st,
             turning,
-            true,
-        )
+            from_state: true,
+        })
     }
 
     /// The top started at time 0 from the angles φ, θ, ψ (rad), the rates φ̇, θ̇ (rad/s) and the
@@ -280,9 +259,7 @@ impl HeavyTop {
         theta_dot: f64,
         omega3: f64,
     ) -> Result<Self> {
-        check_theta("theta", theta)?;
-        check_finite("phi_dot", &[phi_dot])?;
-        check_finite("omega3", &[omega3])?;
+        check_spin(theta, phi_dot, omega3)?;
         let state = EulerState {
             phi,
             theta,
@@ -308,10 +285,7 @@ impl HeavyTop {
         p_psi: f64,
         energy: f64,
     ) -> Result<Self> {
-        check_top(i1, i3, mgl)?;
-        check_finite("p_phi", &[p_phi])?;
-        check_finite("p_psi", &[p_psi])?;
-        check_finite("energy", &[energy])?;
+        check_constants(i1, i3, mgl, p_phi, p_psi, energy)?;
         let reduced_energy = energy - p_psi * p_psi / (2.0 * i3);
         let si = Reduced {
             a: p_psi / i1,
@@ -368,7 +342,7 @@ impl HeavyTop {
             theta: theta1,
             ..Default::default()
         };
-        Self::assemble(
+        Self::assemble(Assembly {
             i1,
             i3,
             mgl,
@@ -380,25 +354,27 @@ impl HeavyTop {
             ts,
             start,
             turning,
-            false,
-        )
+            from_state: false,
+        })
     }
 
-    #[allow(clippy::too_many_arguments)]
-    fn assemble(
-        i1: f64,
-        i3: f64,
-        mgl: f64,
-        p_phi: f64,
-        p_psi: f64,
-        energy: f64,
-        reduced_energy: f64,
-        r: Reduced,
-        ts: TimeScale,
-        start: EulerState,
-        turning: Turning,
-        from_state: bool,
-    ) -> Result<Self> {
+    /// Classifies and solves the motion of `a`, and refuses it (naming `theta` for a top started
+    /// from a state, `p_phi` for one given by its constants) where the solution is not finite.
+    fn assemble(a: Assembly) -> Result<Self> {
+        let Assembly {
+            i1,
+            i3,
+            mgl,
+            p_phi,
+            p_psi,
+            energy,
+            reduced_energy,
+            r,
+            ts,
+            start,
+            turning,
+            from_state,
+        } = a;
         let class = classify(&r, &turning);
         let motion = if turning.w_lo == turning.w_hi {
             let theta = theta_from_wv(turning.w_lo, turning.v_lo);
@@ -684,7 +660,7 @@ impl HeavyTop {
     }
 
     /// The number of Fourier terms [`HeavyTop::euler_angles`] sums per time (see
-    /// `heavy_top_fourier`); 0 when the motion is uniform or evaluated by R_J (axis passing through or
+    /// `heavy_top::fourier`); 0 when the motion is uniform or evaluated by R_J (axis passing through or
     /// very near a pole, or m near 1, where the series would converge slowly).
     pub fn fourier_terms(&self) -> usize {
         match &self.motion {
@@ -797,11 +773,7 @@ impl HeavyTop {
 /// `L = ½ I₁ (θ̇² + φ̇² sin²θ) + ½ I₃ (ψ̇ + φ̇ cos θ)² − m g l cos θ`.
 /// Errors name `I1`, `I3`, `mgl`, `theta` and the rates.
 pub fn lagrangian(i1: f64, i3: f64, mgl: f64, state: &EulerState) -> Result<f64> {
-    check_top(i1, i3, mgl)?;
-    check_theta("theta", state.theta)?;
-    check_finite("phi_dot", &[state.phi_dot])?;
-    check_finite("theta_dot", &[state.theta_dot])?;
-    check_finite("psi_dot", &[state.psi_dot])?;
+    check_state(i1, i3, mgl, state, false)?;
     let (s, c) = state.theta.sin_cos();
     // In the unit of the state's fastest rate (exact; see `TimeScale`), so that no square
     // overflows where the Lagrangian itself is representable.
@@ -844,11 +816,7 @@ pub fn constants_of_state(
     mgl: f64,
     state: &EulerState,
 ) -> Result<StateConstants> {
-    check_top(i1, i3, mgl)?;
-    check_theta("theta", state.theta)?;
-    check_finite("phi_dot", &[state.phi_dot])?;
-    check_finite("theta_dot", &[state.theta_dot])?;
-    check_finite("psi_dot", &[state.psi_dot])?;
+    check_state(i1, i3, mgl, state, false)?;
     let (s, c) = state.theta.sin_cos();
     // The arithmetic of `HeavyTop::new`, in the unit of the fastest rate (exact).
     let ts = TimeScale::of(&[state.theta_dot, state.phi_dot, state.psi_dot]);
@@ -874,93 +842,6 @@ pub fn constants_of_state(
         ("E", out.energy, largest),
     ])?;
     Ok(out)
-}
-
-/// w = 1 − cos θ and v = 1 + cos θ without cancellation.
-fn w_v(theta: f64) -> (f64, f64) {
-    let (sh, ch) = (0.5 * theta).sin_cos();
-    (2.0 * sh * sh, 2.0 * ch * ch)
-}
-
-/// Refuses (naming `argument`) a motion whose turning point comes closer to a pole than
-/// [`MIN_POLE_DISTANCE`] without passing through it.
-///
-/// A turning point that close to a pole *and* closer than ε of the other one (θ₁ < ε θ₂: a
-/// spin of 1e-295 rad/s swinging through the bottom) is a passage through the pole as far as
-/// double precision goes: the distance is set to 0, and the axis passes through it with φ and ψ
-/// turning by π in the sense of p_φ ∓ p_ψ (what the passage at θ₁ does, up to θ₁/θ₂). Only a
-/// motion that stays within ~θ₁/ε of the pole is refused.
-///
-/// A top started from a state (`start` = its (w₀, v₀) = (1 − cos θ₀, 1 + cos θ₀)) must also
-/// start farther than θ₁/ε from the pole: its time is anchored at θ₀, and the passage at θ₁
-/// reaches the pole later than the passage through it by a fraction ~(θ₁/θ₀)²/2 of the time from
-/// θ₀ (θ₀ = 3.2e-59 with θ₁ = 1e-60 would put every later θ(t) off by 5e-4 of itself); closer
-/// starts are refused. A top given by its constants starts at θ₁ itself, the passage's instant.
-fn resolve_pole_passage(argument: &str, t: Turning, start: Option<(f64, f64)>) -> Result<Turning> {
-    // 1 − cos θ at θ = MIN_POLE_DISTANCE (and 1 + cos θ at π − MIN_POLE_DISTANCE).
-    let min = 0.5 * MIN_POLE_DISTANCE * MIN_POLE_DISTANCE;
-    let close = |x: f64| x > 0.0 && x < min;
-    // θ₁ < ε θ₂ ⇔ w₁ < ε² w₂ (near the pole w ≈ θ²/2).
-    let eps2 = f64::EPSILON * f64::EPSILON;
-    let (w0, v0) = start.unwrap_or((f64::INFINITY, f64::INFINITY));
-    let mut out = t;
-    if close(t.w_lo) && t.w_lo < eps2 * t.w_hi && t.w_lo < eps2 * w0 {
-        out.w_lo = 0.0;
-        out.v_hi = 2.0;
-    }
-    if close(t.v_lo) && t.v_lo < eps2 * t.v_hi && t.v_lo < eps2 * v0 {
-        out.v_lo = 0.0;
-        out.w_hi = 2.0;
-    }
-    let (theta1, theta2) = out.thetas();
-    if close(out.w_lo) || close(out.v_lo) {
-        let (which, at) = if close(out.w_lo) {
-            ("upright", theta1)
-        } else {
-            ("hanging", std::f64::consts::PI - theta2)
-        };
-        return Err(Error::invalid(
-            argument,
-            format!(
-                "this motion stays within {:e} rad of the {which} vertical and comes within {at:e} rad \
-                 of it without passing through: closer than the solution resolves \
-                 ({MIN_POLE_DISTANCE:e} rad: 1 - cos theta ~ theta^2/2 leaves double precision)",
-                if which == "upright" { theta2 } else { std::f64::consts::PI - theta1 }
-            ),
-        ));
-    }
-    Ok(out)
-}
-
-/// The values at time `t` if they are finite, else an error naming `t`: the last line of
-/// defence of the rule that every number returned is finite (the constructors refuse the
-/// motions whose solution cannot be represented, so this is not expected to fire).
-fn finite_at_t<const N: usize>(t: f64, values: [f64; N]) -> Result<[f64; N]> {
-    if values.iter().all(|v| v.is_finite()) {
-        return Ok(values);
-    }
-    Err(Error::invalid(
-        "t",
-        format!("the solution at t = {t:e} s is not finite: its scales exceed double precision"),
-    ))
-}
-
-/// `value` if finite, else an error naming `theta` that says why (see
-/// [`HeavyTop::effective_potential`]).
-fn finite_at_theta(what: &str, theta: f64, value: f64) -> Result<f64> {
-    if value.is_finite() {
-        return Ok(value);
-    }
-    let why = if theta == 0.0 || theta == std::f64::consts::PI {
-        "it is infinite at this pole, which the axis never reaches (p_phi != p_psi at theta = 0, \
-         p_phi != -p_psi at theta = pi)"
-    } else {
-        "it exceeds the largest double this close to a pole the axis never reaches"
-    };
-    Err(Error::invalid(
-        "theta",
-        format!("{what} at theta = {theta:e}: {why}"),
-    ))
 }
 
 /// `(p_φ − p_ψ cos θ)/(I₁ sin θ)` and `(p_ψ − p_φ cos θ)/(I₁ sin θ)` about the nearer pole, with
@@ -1099,122 +980,4 @@ fn uniform_rates(
         ts.rate_to_si(phi_rate),
         ts.rate_to_si(omega3 - phi_rate * c),
     )
-}
-
-/// The time unit in which a top's motion is computed: 1/σ with σ = 2ᵏ the power of two nearest
-/// its fastest rate (|θ̇|, |φ̇|, |ψ̇|, √(2mgl/I₁); for a top given by its constants, |p_ψ|/I₁,
-/// |p_φ|/I₁ and the square roots of the energies per I₁). In that unit every rate is at most ~1,
-/// so the squares and products of the cubic (2.109–2.110) stay inside double precision for rates
-/// anywhere from 1e-300 to 1e300 rad/s; scaling by a power of two is exact, so a top with rates
-/// near 1 rad/s gives bit for bit the numbers it gave before.
-#[derive(Debug, Clone, Copy)]
-struct TimeScale {
-    /// σ (1/s).
-    sigma: f64,
-    /// 1/σ (s).
-    inv: f64,
-}
-
-impl TimeScale {
-    /// The scale of these rates (1/s; non-finite entries count as the largest double).
-    fn of(rates: &[f64]) -> Self {
-        let largest = rates
-            .iter()
-            .map(|r| if r.is_nan() { 0.0 } else { r.abs() })
-            .fold(0.0, f64::max)
-            .min(f64::MAX);
-        // 2ᵏ with |k| ≤ 1000 (σ and 1/σ both normal); 1 for a top with no rate at all.
-        let k = if largest > 0.0 {
-            largest.log2().round().clamp(-1000.0, 1000.0) as i32
-        } else {
-            0
-        };
-        Self {
-            sigma: 2f64.powi(k),
-            inv: 2f64.powi(-k),
-        }
-    }
-    /// A rate (1/s) in the unit σ.
-    fn in_unit(&self, rate: f64) -> f64 {
-        rate * self.inv
-    }
-    /// A quantity ∝ one rate back to SI (it overflows only where the SI value does).
-    fn rate_to_si(&self, x: f64) -> f64 {
-        x * self.sigma
-    }
-    /// A quantity ∝ a rate squared back to SI.
-    fn rate2_to_si(&self, x: f64) -> f64 {
-        x * self.sigma * self.sigma
-    }
-    /// A moment of inertia `i` (kg·m²) times a quantity `x` ∝ σ^`power` (a rate, `power` = 1,
-    /// or a rate squared, 2), in SI. The product i·x is formed first where it is a normal
-    /// double; where it would be subnormal (a tiny moment: I = 2⁻¹⁰¹⁸ kg·m² with x ~ 0.1) x is
-    /// carried to SI first, so that no digit is lost to underflow (it overflows only where the SI
-    /// value does).
-    fn moment_to_si(&self, i: f64, x: f64, power: i32) -> f64 {
-        let to_si = |y: f64| {
-            if power == 1 {
-                self.rate_to_si(y)
-            } else {
-                self.rate2_to_si(y)
-            }
-        };
-        let p = i * x;
-        if x == 0.0 || p.abs() >= f64::MIN_POSITIVE {
-            to_si(p)
-        } else {
-            to_si(x) * i
-        }
-    }
-    /// β = 2 m g l / I₁ in the unit σ² (formed in SI where that is a finite normal double, as
-    /// before; otherwise m g l is carried to the unit first, which neither overflows nor, for a
-    /// huge I₁ = 2¹⁰¹⁸ kg·m², loses digits to a subnormal quotient).
-    fn beta(&self, mgl: f64, i1: f64) -> f64 {
-        let beta = 2.0 * mgl / i1;
-        if beta.is_finite() && (mgl == 0.0 || beta >= f64::MIN_POSITIVE) {
-            beta * self.inv * self.inv
-        } else {
-            2.0 * (mgl * self.inv * self.inv / i1)
-        }
-    }
-    /// Reduced constants given in SI, in the unit σ.
-    fn reduced_to_unit(&self, r: &Reduced) -> Reduced {
-        let (s1, s2) = (self.inv, self.inv * self.inv);
-        Reduced {
-            a: r.a * s1,
-            b: r.b * s1,
-            d: r.d * s1,
-            e: r.e * s1,
-            beta: r.beta * s2,
-            gamma: r.gamma * s2,
-            delta: r.delta * s2,
-        }
-    }
-}
-
-/// The name of the largest of a state's rates (the usual cause of a constant of the motion that
-/// overflows).
-fn largest_rate(st: &EulerState) -> &'static str {
-    let mut best = ("theta_dot", st.theta_dot.abs());
-    for (name, x) in [("phi_dot", st.phi_dot.abs()), ("psi_dot", st.psi_dot.abs())] {
-        if x > best.1 {
-            best = (name, x);
-        }
-    }
-    best.0
-}
-
-/// Refuses, naming the argument given with it, the first quantity that is not finite: a
-/// constant of the motion beyond the range of double precision.
-fn check_representable(values: &[(&str, f64, &str)]) -> Result<()> {
-    match values.iter().find(|(_, v, _)| !v.is_finite()) {
-        None => Ok(()),
-        Some((what, value, argument)) => Err(Error::invalid(
-            *argument,
-            format!(
-                "the top's {what} = {value} is beyond the range of double precision (about 1.8e308): \
-                 no motion with these numbers can be represented"
-            ),
-        )),
-    }
 }

@@ -11,7 +11,8 @@
 //! p_ψ² belongs (2.118 then uses p_ψ, correctly), and its 2.120 has a spurious factor ½: the
 //! fast rate of a fast top is `φ̇_fast ≈ p_ψ/(I₁ cos θ₀) = I₃ω₃/(I₁ cos θ₀)`.
 
-use crate::error::{check_non_negative, check_positive, Error, Result};
+use super::validate::{check_theta, check_top};
+use crate::error::{Error, Result};
 
 /// The two steady-precession rates at one nutation angle and spin, exact and approximate.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -32,36 +33,6 @@ pub struct SteadyPrecession {
     pub fast_approx_as_printed: f64,
     /// The minimum spin 2.119 at this angle (rad/s): steady precession needs |ω₃| ≥ this.
     pub min_spin: f64,
-}
-
-/// Checks the top's parameters: I₁ > 0, I₃ > 0, I₃ ≤ 2 I₁ (the triangle inequality of the
-/// principal moments about the pivot), m g l ≥ 0, all finite. Errors name `I1`, `I3`, `mgl`.
-pub fn check_top(i1: f64, i3: f64, mgl: f64) -> Result<()> {
-    check_positive("I1", i1)?;
-    check_positive("I3", i3)?;
-    check_non_negative("mgl", mgl)?;
-    if i3 > 2.0 * i1 * (1.0 + 4.0 * f64::EPSILON) {
-        return Err(Error::inertia(
-            "I3",
-            format!(
-                "must be <= 2*I1 = {} (the triangle inequality I3 <= I1 + I2 of the principal moments \
-                 about the pivot), got {i3}",
-                2.0 * i1
-            ),
-        ));
-    }
-    Ok(())
-}
-
-/// Checks a nutation angle: finite and in [0, π]. The error names `argument`.
-pub fn check_theta(argument: &str, theta: f64) -> Result<()> {
-    if !(theta.is_finite() && (0.0..=std::f64::consts::PI).contains(&theta)) {
-        return Err(Error::invalid(
-            argument,
-            format!("must be finite and in [0, pi], got {theta}"),
-        ));
-    }
-    Ok(())
 }
 
 /// The minimum spin for steady precession at θ₀ (the unit's 2.119):
