@@ -112,54 +112,67 @@ fn times_as_t(e: poinsot::Error) -> Failure {
 #[wasm_bindgen]
 impl HeavyTop {
     /// The top with moments `i1` (about a transverse axis through the pivot) and `i3` (about the
-    /// symmetry axis, kg·m²) and `mgl` = m g l (N·m), started at t = 0 from θ = `theta` (rad) with
-    /// the rates `theta_dot`, `phi_dot`, `psi_dot` (rad/s), φ = ψ = 0. Errors name `I1`, `I3`,
-    /// `mgl`, `theta` (in [0, π]) or the rate.
+    /// symmetry axis, kg·m²) and `mgl` = m g l (N·m), started at t = 0 from the Euler angles
+    /// `phi`, `theta`, `psi` (rad) and their rates `phi_dot`, `theta_dot`, `psi_dot` (rad/s) — the
+    /// core's order, as `HeavyTopCore.from_state` in Python. Errors name `I1`, `I3`, `mgl`, `theta`
+    /// (in [0, π]), an angle or a rate.
     #[wasm_bindgen(constructor)]
+    #[allow(clippy::too_many_arguments)]
     pub fn new(
         #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] phi: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] theta: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] theta_dot: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] psi: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] phi_dot: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] theta_dot: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] psi_dot: Number,
     ) -> Out<HeavyTop> {
         let i1 = number("i1", &i1)?;
         let i3 = number("i3", &i3)?;
         let mgl = number("mgl", &mgl)?;
-        let theta = number("theta", &theta)?;
-        let theta_dot = number("theta_dot", &theta_dot)?;
-        let phi_dot = number("phi_dot", &phi_dot)?;
-        let psi_dot = number("psi_dot", &psi_dot)?;
-        let state = euler_state(theta, theta_dot, phi_dot, psi_dot);
-        const ARGUMENTS: &str = "i1, i3, mgl, theta, theta_dot, phi_dot, psi_dot";
+        let state = an::EulerState {
+            phi: number("phi", &phi)?,
+            theta: number("theta", &theta)?,
+            psi: number("psi", &psi)?,
+            phi_dot: number("phi_dot", &phi_dot)?,
+            theta_dot: number("theta_dot", &theta_dot)?,
+            psi_dot: number("psi_dot", &psi_dot)?,
+        };
+        const ARGUMENTS: &str = "i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, psi_dot";
         let inner = an::HeavyTop::new(i1, i3, mgl, state).map_err(attributed(ARGUMENTS))?;
         checked(ARGUMENTS, inner)
     }
 
-    /// The top started at θ = `theta` with θ̇, φ̇ and the spin `omega3` (rad/s) given instead of ψ̇
-    /// (ψ̇ = ω₃ − φ̇ cos θ, 2.99; `HeavyTop.from_spin` in Python), φ = ψ = 0.
+    /// The top started from the Euler angles `phi`, `theta`, `psi`, the rates `phi_dot`,
+    /// `theta_dot` and the spin `omega3` (rad/s) given instead of ψ̇ (ψ̇ = ω₃ − φ̇ cos θ, 2.99; the
+    /// core's order, as `HeavyTop.from_spin` in Python).
     #[wasm_bindgen(js_name = fromSpin)]
+    #[allow(clippy::too_many_arguments)]
     pub fn from_spin(
         #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] phi: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] theta: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] theta_dot: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] psi: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] phi_dot: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] theta_dot: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] omega3: Number,
     ) -> Out<HeavyTop> {
         let i1 = number("i1", &i1)?;
         let i3 = number("i3", &i3)?;
         let mgl = number("mgl", &mgl)?;
+        let phi = number("phi", &phi)?;
         let theta = number("theta", &theta)?;
-        let theta_dot = number("theta_dot", &theta_dot)?;
+        let psi = number("psi", &psi)?;
         let phi_dot = number("phi_dot", &phi_dot)?;
+        let theta_dot = number("theta_dot", &theta_dot)?;
         let omega3 = number("omega3", &omega3)?;
-        const ARGUMENTS: &str = "i1, i3, mgl, theta, theta_dot, phi_dot, omega3";
+        const ARGUMENTS: &str = "i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, omega3";
         let inner =
-            an::HeavyTop::with_spin(i1, i3, mgl, 0.0, theta, 0.0, phi_dot, theta_dot, omega3)
+            an::HeavyTop::with_spin(i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, omega3)
                 .map_err(attributed(ARGUMENTS))?;
         checked(ARGUMENTS, inner)
     }
