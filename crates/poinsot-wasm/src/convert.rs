@@ -37,17 +37,15 @@ impl Failure {
     }
 }
 
-/// The core's table of exception classes, `{kind: class name}` for every kind
-/// (`{InvalidArgument: "PoinsotError", Diverged: "IntegrationError", ...}`): the `name` of the
-/// error each kind throws, the same as `poinsot._core.error_classes()` in Python.
-#[wasm_bindgen(js_name = errorClasses, unchecked_return_type = "Record<string, string>")]
-pub fn error_classes() -> JsValue {
-    let table = js_sys::Object::new();
-    for kind in ErrorKind::ALL {
-        // Setting a string key on a fresh plain object cannot fail.
-        let _ = js_sys::Reflect::set(&table, &kind.name().into(), &kind.class_name().into());
-    }
-    table.into()
+/// The core's table of exception classes: `[kind, class name]` for every kind
+/// (`[["InvalidArgument", "PoinsotError"], ..., ["Diverged", "IntegrationError"], ...]`), the
+/// `name` of the error each kind throws — the same table as `poinsot._core.error_classes()`.
+#[wasm_bindgen(js_name = errorClasses, unchecked_return_type = "[string, string][]")]
+pub fn error_classes() -> js_sys::Array {
+    ErrorKind::ALL
+        .iter()
+        .map(|k| js_sys::Array::of2(&k.name().into(), &k.class_name().into()))
+        .collect()
 }
 
 impl From<Error> for Failure {

@@ -531,7 +531,7 @@ mod tests {
 
     #[test]
     fn binding_matches_the_core_and_keeps_the_constants() {
-        let top = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.7, 0.0, 0.0, 8.0).unwrap();
+        let top = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.0, 0.7, 0.0, 0.0, 0.0, 8.0).unwrap();
         assert_eq!(top.motion_class(), "cusps");
         let core = an::HeavyTop::with_spin(1.0, 0.5, 1.5, 0.0, 0.7, 0.0, 0.0, 0.0, 8.0).unwrap();
         assert_eq!(top.energy(), core.energy());
@@ -571,14 +571,27 @@ mod tests {
     #[test]
     fn errors_name_the_argument() {
         let msg = |r: Out<HeavyTop>| r.unwrap_err().message;
-        assert!(msg(HeavyTop::new(1.0, 0.5, 1.0, 4.0, 0.0, 0.0, 1.0)).starts_with("theta"));
-        assert!(msg(HeavyTop::new(1.0, 0.5, -1.0, 1.0, 0.0, 0.0, 1.0)).starts_with("mgl"));
-        let e = HeavyTop::new(1.0, 3.0, 1.0, 1.0, 0.0, 0.0, 1.0).unwrap_err();
-        assert_eq!(e.name, "InvalidInertiaError");
         assert!(
-            msg(HeavyTop::from_spin(1.0, 0.5, 1.0, 1.0, 0.0, 0.0, f64::NAN)).starts_with("omega3")
+            msg(HeavyTop::new(1.0, 0.5, 1.0, 0.0, 4.0, 0.0, 0.0, 0.0, 1.0)).starts_with("theta")
         );
-        let top = HeavyTop::new(1.0, 0.5, 1.0, 1.0, 0.0, 0.0, 6.0).unwrap();
+        assert!(
+            msg(HeavyTop::new(1.0, 0.5, -1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0)).starts_with("mgl")
+        );
+        let e = HeavyTop::new(1.0, 3.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0).unwrap_err();
+        assert_eq!(e.name, "InvalidInertiaError");
+        assert!(msg(HeavyTop::from_spin(
+            1.0,
+            0.5,
+            1.0,
+            0.0,
+            1.0,
+            0.0,
+            0.0,
+            0.0,
+            f64::NAN
+        ))
+        .starts_with("omega3"));
+        let top = HeavyTop::new(1.0, 0.5, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 6.0).unwrap();
         assert!(top
             .euler_angles(vec![0.0, f64::NAN])
             .unwrap_err()
@@ -610,15 +623,15 @@ mod tests {
         // The slow root solves I₁ cos θ₀ φ̇² − p_ψ φ̇ + m g l = 0 (2.116).
         let res = 0.7f64.cos() * s.slow() * s.slow() - 4.0 * s.slow() + 1.5;
         assert!(res.abs() < ROUND_OFF);
-        let top = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.7, 0.0, s.slow(), 8.0).unwrap();
+        let top = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.0, 0.7, 0.0, s.slow(), 0.0, 8.0).unwrap();
         assert_eq!(top.motion_class(), "steady precession");
         let thr = HeavyTop::sleeping_threshold(1.0, 0.5, 1.5).unwrap();
         assert!((thr - 2.0 * 1.5f64.sqrt() / 0.5).abs() < ROUND_OFF);
         assert_eq!(HeavyTop::min_spin(1.0, 0.5, 1.5, 0.0).unwrap(), thr);
-        let up = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.0, 0.0, 0.0, 1.01 * thr).unwrap();
+        let up = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.0, 0.0, 0.0, 0.0, 0.0, 1.01 * thr).unwrap();
         assert_eq!(up.motion_class(), "sleeping");
         assert!(up.is_sleeping_stable());
-        let weak = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.0, 0.0, 0.0, 0.99 * thr).unwrap();
+        let weak = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.99 * thr).unwrap();
         assert!(!weak.is_sleeping_stable());
     }
 }
