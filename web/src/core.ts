@@ -14,8 +14,8 @@ export default core.default;
 export const coreStatus = core.coreStatus;
 
 export const {
-  version, start, eulerToMatrix, matrixToEuler, rotationAxis, screwAxis, bodyAngularVelocity, eulerRates,
-  axisStability, simulateParticle,
+  version, start, errorClasses, eulerToMatrix, matrixToEuler, rotationAxis, screwAxis, bodyAngularVelocity,
+  eulerRates, axisStability, simulateParticle,
   AxisStability, Earth, EulerAngles, Fall, FixedMotion, Foucault, FreeRigidBody, FreeSymmetricTop, HeavyTop,
   InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, Screw, SpringParticle, SteadyPrecession,
 } = core;
@@ -39,8 +39,8 @@ export type SteadyPrecession = raw.SteadyPrecession;
 
 // A new export of the binding must be listed above: tsc fails here until it is.
 const exported = {
-  version, start, eulerToMatrix, matrixToEuler, rotationAxis, screwAxis, bodyAngularVelocity, eulerRates,
-  axisStability, simulateParticle,
+  version, start, errorClasses, eulerToMatrix, matrixToEuler, rotationAxis, screwAxis, bodyAngularVelocity,
+  eulerRates, axisStability, simulateParticle,
   AxisStability, Earth, EulerAngles, Fall, FixedMotion, Foucault, FreeRigidBody, FreeSymmetricTop, HeavyTop,
   InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, Screw, SpringParticle, SteadyPrecession,
 };

@@ -30,6 +30,7 @@ export const ERROR_NAMES = Object.freeze([
   "InvalidRotationError",
   "InvalidMeshError",
   "GimbalLockError",
+  "IntegrationError",
   "TypeError",
 ]);
 

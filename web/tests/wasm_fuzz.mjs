@@ -142,7 +142,7 @@ function worker({ seed, calls, deadlineMs }) {
       [EARTH, names()],
       [() => new core.FreeRigidBody([1, 2, 3], [0.3, 1, 0.2], []), names()],
       [() => new core.FreeSymmetricTop(1, 2, [0.1, 0, 3]), names()],
-      [() => new core.HeavyTop(1, 0.5, 1, 0.8, 0, 0, 6), names()],
+      [() => new core.HeavyTop(1, 0.5, 1, 0, 0.8, 0, 0, 0, 6), names()],
       [() => core.HeavyTop.steadyPrecession(1, 0.5, 1.5, 0.7, 8), names()],
       [FRAME, names()],
       [() => new core.SpringParticle(1, 2), names()],

@@ -51,7 +51,7 @@ test("a trap becomes a PoinsotError, the instance restarts, later calls work", (
 
 test("every kind of export is guarded: constructors, static methods, getters, methods, functions", () => {
   const cases = [
-    ["new HeavyTop", "heavytop_new", () => new core.HeavyTop(1, 0.5, 1, 0.8, 0, 0, 6)],
+    ["new HeavyTop", "heavytop_new", () => new core.HeavyTop(1, 0.5, 1, 0, 0.8, 0, 0, 0, 6)],
     ["HeavyTop.minSpin", "heavytop_minSpin", () => core.HeavyTop.minSpin(1, 0.5, 1, 0.3)],
     ["Earth.foucault", "earth_foucault", () => new core.Earth(1e-3, 6.371e6, 9.8).foucault(0.8, 10, 1, 0, 30, 11)],
     ["eulerToMatrix", "eulerToMatrix", () => core.eulerToMatrix([0.1, 0.2, 0.3], "zxz", true)],
@@ -62,10 +62,10 @@ test("every kind of export is guarded: constructors, static methods, getters, me
     throws(call, "PoinsotError", `internal error: the WebAssembly core failed in ${label} (unreachable)`);
     assert.ok(call() !== undefined);
   }
-  const top = new core.HeavyTop(1, 0.5, 1, 0.8, 0, 0, 6);
+  const top = new core.HeavyTop(1, 0.5, 1, 0, 0.8, 0, 0, 0, 6);
   armTrap("heavytop_energy");
   throws(() => top.energy, "PoinsotError", "internal error: the WebAssembly core failed in HeavyTop.energy");
-  assert.ok(Number.isFinite(new core.HeavyTop(1, 0.5, 1, 0.8, 0, 0, 6).energy));
+  assert.ok(Number.isFinite(new core.HeavyTop(1, 0.5, 1, 0, 0.8, 0, 0, 0, 6).energy));
 });
 
 test("the glue's own errors name the argument", () => {

@@ -1,41 +1,24 @@
 //! Bindings of `poinsot::analytic` (the torque-free solutions; conversion only).
-use numpy::{PyArray1, PyArray2, PyReadonlyArray1};
+use numpy::PyReadonlyArray1;
 use poinsot::analytic::{axis_stability as core_axis_stability, FreeRigidBody, FreeSymmetricTop};
-use poinsot::Vec3;
 use pyo3::prelude::*;
 
-use crate::convert::{vec3, vec3_out};
-use crate::errors::{invalid, IntoPy};
-use crate::frames::{rows_out, vec_in};
+use crate::convert::{opt_quat, times, vec3, vector, Rows, Vector};
+use crate::errors::IntoPy;
 
-/// A (4,) quaternion argument, optional.
-pub(crate) fn opt_quat(
-    argument: &str,
-    a: &Option<PyReadonlyArray1<'_, f64>>,
-) -> PyResult<Option<[f64; 4]>> {
-    match a {
-        None => Ok(None),
-        Some(a) => {
-            let v = vec_in(a);
-            if v.len() != 4 {
-                return Err(invalid(
-                    argument,
-                    format!("must have shape (4,) ([w, x, y, z]), got ({},)", v.len()),
-                ));
-            }
-            Ok(Some([v[0], v[1], v[2], v[3]]))
-        }
-    }
-}
-
-fn a3(v: &Vec3) -> [f64; 3] {
-    [v.x, v.y, v.z]
-}
-
-fn times_in(t: &PyReadonlyArray1<'_, f64>) -> PyResult<Vec<f64>> {
-    let t = vec_in(t);
-    poinsot::error::check_finite("t", &t).py()?;
-    Ok(t)
+/// `f` at each of the times `t` (N,), each finite → (N, K) rows.
+fn at_times<T, const K: usize>(
+    t: &PyReadonlyArray1<'_, f64>,
+    f: impl Fn(f64) -> poinsot::Result<T>,
+) -> PyResult<Rows<K>>
+where
+    Rows<K>: FromIterator<T>,
+{
+    times(t)?
+        .into_iter()
+        .map(f)
+        .collect::<poinsot::Result<_>>()
+        .py()
 }
 
 /// The closed-form free symmetric top (private; use `poinsot.FreeSymmetricTop`).
@@ -54,7 +37,7 @@ impl PySymmetricTop {
         omega0: PyReadonlyArray1<'_, f64>,
         attitude0: Option<PyReadonlyArray1<'_, f64>>,
     ) -> PyResult<Self> {
-        let w = Vec3::from(vec3("omega0", &omega0)?);
+        let w = vector("omega0", &omega0)?;
         let q = opt_quat("attitude0", &attitude0)?;
         Ok(Self {
             inner: FreeSymmetricTop::new(i1, i3, w, q).py()?,
@@ -89,8 +72,8 @@ impl PySymmetricTop {
         self.inner.angular_momentum_magnitude().py()
     }
     #[getter]
-    fn angular_momentum<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        Ok(vec3_out(py, a3(&self.inner.angular_momentum().py()?)))
+    fn angular_momentum(&self) -> PyResult<Vector> {
+        self.inner.angular_momentum().map(Vector).py()
     }
     #[getter]
     fn body_cone_angle(&self) -> f64 {
@@ -113,43 +96,16 @@ impl PySymmetricTop {
         self.inner.shape().as_str()
     }
     /// ω at times t (N,) → (N, 3).
-    fn omega<'py>(
-        &self,
-        py: Python<'py>,
-        t: PyReadonlyArray1<'py, f64>,
-    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let rows = times_in(&t)?
-            .iter()
-            .map(|&t| self.inner.omega(t).map(|w| a3(&w)))
-            .collect::<poinsot::Result<Vec<[f64; 3]>>>()
-            .py()?;
-        Ok(rows_out(py, &rows))
+    fn omega(&self, t: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<3>> {
+        at_times(&t, |t| self.inner.omega(t))
     }
     /// Attitudes at times t (N,) → (N, 4) [w, x, y, z].
-    fn attitude<'py>(
-        &self,
-        py: Python<'py>,
-        t: PyReadonlyArray1<'py, f64>,
-    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let rows = times_in(&t)?
-            .iter()
-            .map(|&t| self.inner.attitude(t))
-            .collect::<poinsot::Result<Vec<[f64; 4]>>>()
-            .py()?;
-        Ok(rows_out(py, &rows))
+    fn attitude(&self, t: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<4>> {
+        at_times(&t, |t| self.inner.attitude(t))
     }
     /// The symmetry axis in space at times t (N,) → (N, 3).
-    fn symmetry_axis<'py>(
-        &self,
-        py: Python<'py>,
-        t: PyReadonlyArray1<'py, f64>,
-    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let rows = times_in(&t)?
-            .iter()
-            .map(|&t| self.inner.symmetry_axis(t).map(|v| a3(&v)))
-            .collect::<poinsot::Result<Vec<[f64; 3]>>>()
-            .py()?;
-        Ok(rows_out(py, &rows))
+    fn symmetry_axis(&self, t: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<3>> {
+        at_times(&t, |t| self.inner.symmetry_axis(t))
     }
     /// ω₃² from T and |L| (2.95).
     #[staticmethod]
@@ -179,7 +135,7 @@ impl PyFreeBody {
         attitude0: Option<PyReadonlyArray1<'_, f64>>,
     ) -> PyResult<Self> {
         let m = vec3("moments", &moments)?;
-        let w = Vec3::from(vec3("omega0", &omega0)?);
+        let w = vector("omega0", &omega0)?;
         let q = opt_quat("attitude0", &attitude0)?;
         Ok(Self {
             inner: FreeRigidBody::new(m, w, q).py()?,
@@ -190,8 +146,8 @@ impl PyFreeBody {
         self.inner.energy().py()
     }
     #[getter]
-    fn angular_momentum<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        Ok(vec3_out(py, a3(&self.inner.angular_momentum().py()?)))
+    fn angular_momentum(&self) -> PyResult<Vector> {
+        self.inner.angular_momentum().map(Vector).py()
     }
     #[getter]
     fn regime(&self) -> &'static str {
@@ -222,92 +178,51 @@ impl PyFreeBody {
         self.inner.invariable_plane_distance()
     }
     /// (ω (N, 3) body, attitude (N, 4) [w, x, y, z], signs continuous) at times t (N,).
-    #[allow(clippy::type_complexity)]
-    fn state<'py>(
-        &self,
-        py: Python<'py>,
-        t: PyReadonlyArray1<'py, f64>,
-    ) -> PyResult<(Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<f64>>)> {
-        let times = times_in(&t)?;
+    fn state(&self, py: Python<'_>, t: PyReadonlyArray1<'_, f64>) -> PyResult<(Rows<3>, Rows<4>)> {
+        let times = times(&t)?;
         let (w, q) = if times.len() > 4096 {
             py.detach(|| self.inner.sample(&times))
         } else {
             self.inner.sample(&times)
         }
         .py()?;
-        Ok((rows_out(py, &w), rows_out(py, &q)))
+        Ok((Rows(w), Rows(q)))
     }
     /// ω in space components at times t (N,) → (N, 3) (the herpolhode).
-    fn omega_space<'py>(
-        &self,
-        py: Python<'py>,
-        t: PyReadonlyArray1<'py, f64>,
-    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let rows = times_in(&t)?
-            .iter()
-            .map(|&t| self.inner.omega_space(t).map(|v| a3(&v)))
-            .collect::<poinsot::Result<Vec<[f64; 3]>>>()
-            .py()?;
-        Ok(rows_out(py, &rows))
+    fn omega_space(&self, t: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<3>> {
+        at_times(&t, |t| self.inner.omega_space(t))
     }
     /// L(t) = I·ω(t) in body components at times t (N,) → (N, 3).
-    fn angular_momentum_body<'py>(
-        &self,
-        py: Python<'py>,
-        t: PyReadonlyArray1<'py, f64>,
-    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let rows = times_in(&t)?
-            .iter()
-            .map(|&t| self.inner.angular_momentum_body(t).map(|v| a3(&v)))
-            .collect::<poinsot::Result<Vec<[f64; 3]>>>()
-            .py()?;
-        Ok(rows_out(py, &rows))
+    fn angular_momentum_body(&self, t: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<3>> {
+        at_times(&t, |t| self.inner.angular_momentum_body(t))
     }
     /// `samples` points of the polhode (N, 3).
-    fn polhode<'py>(&self, py: Python<'py>, samples: usize) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let rows: Vec<[f64; 3]> = self.inner.polhode(samples).py()?.iter().map(a3).collect();
-        Ok(rows_out(py, &rows))
+    fn polhode(&self, samples: usize) -> PyResult<Rows<3>> {
+        Ok(self.inner.polhode(samples).py()?.into_iter().collect())
     }
     /// The invariable plane's unit normal L̂ (3,).
     #[getter]
-    fn invariable_plane_normal<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        vec3_out(py, a3(&self.inner.invariable_plane_normal()))
+    fn invariable_plane_normal(&self) -> Vector {
+        Vector(self.inner.invariable_plane_normal())
     }
     /// Poinsot's contact point at times t (N,) → (N, 3), space (`body` false) or body components.
-    fn contact_point<'py>(
-        &self,
-        py: Python<'py>,
-        t: PyReadonlyArray1<'py, f64>,
-        body: bool,
-    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let rows = times_in(&t)?
-            .iter()
-            .map(|&t| {
-                if body {
-                    self.inner.contact_point_body(t)
-                } else {
-                    self.inner.contact_point(t)
-                }
-                .map(|v| a3(&v))
-            })
-            .collect::<poinsot::Result<Vec<[f64; 3]>>>()
-            .py()?;
-        Ok(rows_out(py, &rows))
+    fn contact_point(&self, t: PyReadonlyArray1<'_, f64>, body: bool) -> PyResult<Rows<3>> {
+        at_times(&t, |t| {
+            if body {
+                self.inner.contact_point_body(t)
+            } else {
+                self.inner.contact_point(t)
+            }
+        })
     }
     /// `samples` points of the polhode on the inertia ellipsoid (N, 3).
-    fn contact_polhode<'py>(
-        &self,
-        py: Python<'py>,
-        samples: usize,
-    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let rows: Vec<[f64; 3]> = self
+    fn contact_polhode(&self, samples: usize) -> PyResult<Rows<3>> {
+        Ok(self
             .inner
             .contact_polhode(samples)
             .py()?
-            .iter()
-            .map(a3)
-            .collect();
-        Ok(rows_out(py, &rows))
+            .into_iter()
+            .collect())
     }
 }
 

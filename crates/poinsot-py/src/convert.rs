@@ -1,22 +1,101 @@
-//! Array conversions shared by the binding files: numpy ↔ fixed-size Rust arrays, with
-//! shape errors that name the argument.
-use numpy::{PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
+//! The one conversion layer of the Python binding: numpy arrays in (checked, with shape errors
+//! that name the argument) and out, the core's enums parsed from their Python names, and the
+//! integrator options. Every binding file converts through here.
+//!
+//! Arguments come in through functions that take the argument's name, because a shape error must
+//! be a `PoinsotError` naming it (pyo3's own extraction knows no argument name): [`vector`],
+//! [`array_in`], [`matrix`], [`rows_in`], [`times`], [`opt_quat`], [`parse`]. Results go out
+//! through newtypes that convert themselves to numpy arrays, so that a getter is one line:
+//! [`Vector`] (3,), [`Matrix`] (3, 3), [`Rows`] (N, K), [`Values`] (N,).
+use std::str::FromStr;
+
+use numpy::ndarray::Array2;
+use numpy::{
+    IntoPyArray, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2,
+    PyUntypedArrayMethods,
+};
+use poinsot::integrate::Options;
+use poinsot::{Mat3, Vec3};
 use pyo3::prelude::*;
 
-use crate::errors::invalid;
+use crate::errors::{invalid, IntoPy};
 
-/// A length-3 float array → `[f64; 3]`.
-pub fn vec3(argument: &str, a: &PyReadonlyArray1<'_, f64>) -> PyResult<[f64; 3]> {
-    let s = a
-        .as_slice()
-        .map_err(|_| invalid(argument, "must be a contiguous array"))?;
-    if s.len() != 3 {
+// ---------------------------------------------------------------------------------------------
+// In: numpy arrays → Rust values, naming the argument on a shape error.
+
+/// A 1-D float array → a vector.
+pub fn vec_in(a: &PyReadonlyArray1<'_, f64>) -> Vec<f64> {
+    a.as_array().iter().copied().collect()
+}
+
+/// A length-K float array → `[f64; K]`.
+pub fn array_in<const K: usize>(
+    argument: &str,
+    a: &PyReadonlyArray1<'_, f64>,
+) -> PyResult<[f64; K]> {
+    let v = vec_in(a);
+    if v.len() != K {
         return Err(invalid(
             argument,
-            format!("must have shape (3,), got ({},)", s.len()),
+            format!("must have shape ({K},), got ({},)", v.len()),
         ));
     }
-    Ok([s[0], s[1], s[2]])
+    Ok(std::array::from_fn(|i| v[i]))
+}
+
+/// A length-3 float array → `[f64; 3]` (contiguous).
+pub fn vec3(argument: &str, a: &PyReadonlyArray1<'_, f64>) -> PyResult<[f64; 3]> {
+    let s = slice(argument, a, "must be a contiguous array")?;
+    match s {
+        [x, y, z] => Ok([*x, *y, *z]),
+        _ => Err(invalid(
+            argument,
+            format!("must have shape (3,), got ({},)", s.len()),
+        )),
+    }
+}
+
+/// A length-3 float array → a core vector.
+pub fn vector(argument: &str, a: &PyReadonlyArray1<'_, f64>) -> PyResult<Vec3> {
+    vec3(argument, a).map(Vec3::from)
+}
+
+/// An optional length-3 float array → an optional core vector.
+pub fn opt_vector(argument: &str, a: &Option<PyReadonlyArray1<'_, f64>>) -> PyResult<Option<Vec3>> {
+    a.as_ref().map(|a| vector(argument, a)).transpose()
+}
+
+/// An optional (4,) quaternion `[w, x, y, z]`.
+pub fn opt_quat(
+    argument: &str,
+    a: &Option<PyReadonlyArray1<'_, f64>>,
+) -> PyResult<Option<[f64; 4]>> {
+    let Some(a) = a else { return Ok(None) };
+    let v = vec_in(a);
+    match v[..] {
+        [w, x, y, z] => Ok(Some([w, x, y, z])),
+        _ => Err(invalid(
+            argument,
+            format!("must have shape (4,) ([w, x, y, z]), got ({},)", v.len()),
+        )),
+    }
+}
+
+/// A contiguous (N,) float64 array as a slice; `otherwise` is the message if it is not
+/// contiguous.
+pub fn slice<'a>(
+    argument: &str,
+    a: &'a PyReadonlyArray1<'_, f64>,
+    otherwise: &str,
+) -> PyResult<&'a [f64]> {
+    a.as_slice().map_err(|_| invalid(argument, otherwise))
+}
+
+/// Times `t` (N,), each finite (the error names `t`).
+pub fn times(t: &PyReadonlyArray1<'_, f64>) -> PyResult<Vec<f64>> {
+    let t = vec_in(t);
+    poinsot::error::check_finite("t", &t).py()?;
+    Ok(t)
 }
 
 /// A (3, 3) float array → row-major `[[f64; 3]; 3]`.
@@ -29,15 +108,43 @@ pub fn mat3(argument: &str, a: &PyReadonlyArray2<'_, f64>) -> PyResult<[[f64; 3]
         ));
     }
     let v = a.as_array();
-    Ok([
-        [v[[0, 0]], v[[0, 1]], v[[0, 2]]],
-        [v[[1, 0]], v[[1, 1]], v[[1, 2]]],
-        [v[[2, 0]], v[[2, 1]], v[[2, 2]]],
-    ])
+    Ok(std::array::from_fn(|i| std::array::from_fn(|j| v[[i, j]])))
+}
+
+/// A (3, 3) float array → a core matrix.
+pub fn matrix(argument: &str, a: &PyReadonlyArray2<'_, f64>) -> PyResult<Mat3> {
+    mat3(argument, a).map(|m| to_mat(&m))
+}
+
+/// An (N, K) float array → rows of K floats, naming `argument` on a shape error.
+pub fn rows_in<const K: usize>(
+    argument: &str,
+    a: &PyReadonlyArray2<'_, f64>,
+) -> PyResult<Vec<[f64; K]>> {
+    let shape = a.shape();
+    if shape.len() != 2 || shape[1] != K {
+        return Err(invalid(
+            argument,
+            format!("must have shape (N, {K}), got {shape:?}"),
+        ));
+    }
+    Ok(a.as_array()
+        .rows()
+        .into_iter()
+        .map(|r| std::array::from_fn(|i| r[i]))
+        .collect())
 }
 
 /// An (N, 3) float array → a vector of `[f64; 3]` rows.
 pub fn rows3(argument: &str, a: &PyReadonlyArray2<'_, f64>) -> PyResult<Vec<[f64; 3]>> {
+    rows_in::<3>(argument, a)
+}
+
+/// An (N, 3) C-contiguous array of any element type → its flat row-major slice of `3·N` values.
+pub fn rows3_slice<'a, T: numpy::Element>(
+    argument: &str,
+    a: &'a PyReadonlyArray2<'_, T>,
+) -> PyResult<&'a [T]> {
     let shape = a.shape();
     if shape.len() != 2 || shape[1] != 3 {
         return Err(invalid(
@@ -45,22 +152,8 @@ pub fn rows3(argument: &str, a: &PyReadonlyArray2<'_, f64>) -> PyResult<Vec<[f64
             format!("must have shape (N, 3), got {shape:?}"),
         ));
     }
-    Ok(a.as_array()
-        .rows()
-        .into_iter()
-        .map(|r| [r[0], r[1], r[2]])
-        .collect())
-}
-
-/// `[f64; 3]` → a new numpy array of shape (3,).
-pub fn vec3_out<'py>(py: Python<'py>, v: [f64; 3]) -> Bound<'py, PyArray1<f64>> {
-    PyArray1::from_slice(py, &v)
-}
-
-/// Row-major 3×3 → a new numpy array of shape (3, 3).
-pub fn mat3_out<'py>(py: Python<'py>, m: [[f64; 3]; 3]) -> Bound<'py, PyArray2<f64>> {
-    use numpy::IntoPyArray;
-    numpy::ndarray::Array2::from_shape_fn((3, 3), |(i, j)| m[i][j]).into_pyarray(py)
+    a.as_slice()
+        .map_err(|_| invalid(argument, "must be a C-contiguous array"))
 }
 
 /// A C-contiguous float array of shape `(N, *tail)` → its flat data and `N` (for the batch
@@ -84,37 +177,158 @@ pub fn records<'a>(
     Ok((data, shape[0]))
 }
 
+/// A core enum from its Python name (`"body"`, `"inverse-square"`, `"gravity_gradient"`), by
+/// its [`FromStr`] in the core, whose error names the argument.
+pub fn parse<T: FromStr<Err = poinsot::Error>>(name: &str) -> PyResult<T> {
+    name.parse().py()
+}
+
+/// Integrator options from the Python keywords.
+pub fn options(rtol: f64, atol: f64, max_steps: usize, dense: bool) -> Options {
+    Options {
+        rtol,
+        atol,
+        max_steps,
+        dense,
+        ..Options::default()
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Between the core's nalgebra types and plain arrays.
+
+/// `[f64; 3]` → a core vector.
+pub fn v3(r: &[f64; 3]) -> Vec3 {
+    Vec3::new(r[0], r[1], r[2])
+}
+
+/// A core vector → `[f64; 3]`.
+pub fn a3(v: &Vec3) -> [f64; 3] {
+    [v.x, v.y, v.z]
+}
+
+/// Row-major `[[f64; 3]; 3]` → a core matrix (nalgebra stores columns; same matrix).
+pub fn to_mat(m: &[[f64; 3]; 3]) -> Mat3 {
+    Mat3::from_fn(|i, j| m[i][j])
+}
+
+/// A core matrix → row-major `[[f64; 3]; 3]`.
+pub fn from_mat(m: &Mat3) -> [[f64; 3]; 3] {
+    std::array::from_fn(|i| std::array::from_fn(|j| m[(i, j)]))
+}
+
+// ---------------------------------------------------------------------------------------------
+// Out: Rust values → new numpy arrays.
+
+/// `[f64; 3]` → a new numpy array of shape (3,).
+pub fn vec3_out<'py>(py: Python<'py>, v: [f64; 3]) -> Bound<'py, PyArray1<f64>> {
+    PyArray1::from_slice(py, &v)
+}
+
+/// Row-major 3×3 → a new numpy array of shape (3, 3).
+pub fn mat3_out<'py>(py: Python<'py>, m: [[f64; 3]; 3]) -> Bound<'py, PyArray2<f64>> {
+    Array2::from_shape_fn((3, 3), |(i, j)| m[i][j]).into_pyarray(py)
+}
+
+/// Rows of K floats → a new (N, K) numpy array.
+pub fn rows_out<'py, const K: usize>(
+    py: Python<'py>,
+    rows: &[[f64; K]],
+) -> Bound<'py, PyArray2<f64>> {
+    Array2::from_shape_fn((rows.len(), K), |(i, j)| rows[i][j]).into_pyarray(py)
+}
+
+/// A flat row-major vector of `9·N` values → a new numpy array of shape (N, 3, 3).
+pub fn mats3_out(py: Python<'_>, flat: Vec<f64>) -> PyResult<Bound<'_, numpy::PyArray3<f64>>> {
+    let n = flat.len() / 9;
+    PyArray1::from_vec(py, flat).reshape([n, 3, 3])
+}
+
 /// A new zero-filled float64 array of shape `dims` (an output buffer for a batch kernel).
 pub fn zeros<'py>(py: Python<'py>, dims: &[usize]) -> Bound<'py, numpy::PyArrayDyn<f64>> {
     numpy::PyArrayDyn::<f64>::zeros(py, numpy::IxDyn(dims), false)
 }
 
-/// An (N, 3) C-contiguous array of any element type → its flat row-major slice of `3·N` values.
-pub fn rows3_slice<'a, T: numpy::Element>(
-    argument: &str,
-    a: &'a PyReadonlyArray2<'_, T>,
-) -> PyResult<&'a [T]> {
-    let shape = a.shape();
-    if shape.len() != 2 || shape[1] != 3 {
-        return Err(invalid(
-            argument,
-            format!("must have shape (N, 3), got {shape:?}"),
-        ));
+/// A vector result: a new numpy array of shape (3,).
+pub struct Vector(pub Vec3);
+
+/// A matrix result: a new numpy array of shape (3, 3).
+pub struct Matrix(pub Mat3);
+
+/// Rows of K floats: a new numpy array of shape (N, K).
+pub struct Rows<const K: usize>(pub Vec<[f64; K]>);
+
+/// Numbers: a new numpy array of shape (N,).
+pub struct Values(pub Vec<f64>);
+
+impl From<Vec3> for Vector {
+    fn from(v: Vec3) -> Self {
+        Vector(v)
     }
-    a.as_slice()
-        .map_err(|_| invalid(argument, "must be a C-contiguous array"))
 }
 
-/// A flat row-major vector of `3·N` values → a new numpy array of shape (N, 3).
-pub fn rows3_out(py: Python<'_>, flat: Vec<f64>) -> PyResult<Bound<'_, PyArray2<f64>>> {
-    use numpy::PyArrayMethods;
-    let n = flat.len() / 3;
-    PyArray1::from_vec(py, flat).reshape([n, 3])
+impl From<[f64; 3]> for Vector {
+    fn from(v: [f64; 3]) -> Self {
+        Vector(v3(&v))
+    }
 }
 
-/// A flat row-major vector of `9·N` values → a new numpy array of shape (N, 3, 3).
-pub fn mats3_out(py: Python<'_>, flat: Vec<f64>) -> PyResult<Bound<'_, numpy::PyArray3<f64>>> {
-    use numpy::PyArrayMethods;
-    let n = flat.len() / 9;
-    PyArray1::from_vec(py, flat).reshape([n, 3, 3])
+impl From<Mat3> for Matrix {
+    fn from(m: Mat3) -> Self {
+        Matrix(m)
+    }
+}
+
+impl FromIterator<Vec3> for Rows<3> {
+    fn from_iter<I: IntoIterator<Item = Vec3>>(iter: I) -> Self {
+        Rows(iter.into_iter().map(|v| a3(&v)).collect())
+    }
+}
+
+impl<const K: usize> FromIterator<[f64; K]> for Rows<K> {
+    fn from_iter<I: IntoIterator<Item = [f64; K]>>(iter: I) -> Self {
+        Rows(iter.into_iter().collect())
+    }
+}
+
+impl FromIterator<f64> for Values {
+    fn from_iter<I: IntoIterator<Item = f64>>(iter: I) -> Self {
+        Values(iter.into_iter().collect())
+    }
+}
+
+impl<'py> IntoPyObject<'py> for Vector {
+    type Target = PyArray1<f64>;
+    type Output = Bound<'py, PyArray1<f64>>;
+    type Error = std::convert::Infallible;
+    fn into_pyobject(self, py: Python<'py>) -> Result<Self::Output, Self::Error> {
+        Ok(vec3_out(py, a3(&self.0)))
+    }
+}
+
+impl<'py> IntoPyObject<'py> for Matrix {
+    type Target = PyArray2<f64>;
+    type Output = Bound<'py, PyArray2<f64>>;
+    type Error = std::convert::Infallible;
+    fn into_pyobject(self, py: Python<'py>) -> Result<Self::Output, Self::Error> {
+        Ok(mat3_out(py, from_mat(&self.0)))
+    }
+}
+
+impl<'py, const K: usize> IntoPyObject<'py> for Rows<K> {
+    type Target = PyArray2<f64>;
+    type Output = Bound<'py, PyArray2<f64>>;
+    type Error = std::convert::Infallible;
+    fn into_pyobject(self, py: Python<'py>) -> Result<Self::Output, Self::Error> {
+        Ok(rows_out(py, &self.0))
+    }
+}
+
+impl<'py> IntoPyObject<'py> for Values {
+    type Target = PyArray1<f64>;
+    type Output = Bound<'py, PyArray1<f64>>;
+    type Error = std::convert::Infallible;
+    fn into_pyobject(self, py: Python<'py>) -> Result<Self::Output, Self::Error> {
+        Ok(PyArray1::from_vec(py, self.0))
+    }
 }

@@ -8,39 +8,15 @@ use std::cell::RefCell;
 
 use numpy::{PyArray1, PyReadonlyArray1, PyReadonlyArray2};
 use poinsot::dynamics::{
-    self as dyn_core, BodyInertia, Method, SimulateOptions, Torque, TorqueContext, TorqueModel,
+    self as dyn_core, BodyInertia, Method, SimulateOptions, TorqueContext, TorqueKind, TorqueModel,
 };
-use poinsot::{Mat3, Vec3};
+use poinsot::Vec3;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::analytic::opt_quat;
 use crate::control::{run, run_attached};
-use crate::convert::{mat3, vec3};
+use crate::convert::{matrix, opt_quat, parse, rows_in, rows_out, vector};
 use crate::errors::{invalid, IntoPy};
-use crate::frames::{rows_in, rows_out};
-
-fn torque_from(kind: &str, vector: [f64; 3], scalar: f64) -> PyResult<Torque> {
-    let t = match kind {
-        "none" => Torque::None,
-        "body" => Torque::Body(Vec3::from(vector)),
-        "space" => Torque::Space(Vec3::from(vector)),
-        "gravity" => Torque::Gravity { mgl: scalar },
-        "gravity_gradient" => Torque::GravityGradient {
-            mean_motion: scalar,
-        },
-        _ => {
-            return Err(invalid(
-                "torque",
-                format!(
-                "must be none, body, space, gravity, gravity_gradient or callback, got {kind:?}"
-            ),
-            ))
-        }
-    };
-    t.validate().py()?;
-    Ok(t)
-}
 
 /// A torque model calling Python; the first Python error is kept and NaN returned (which stops
 /// the integration).
@@ -116,10 +92,8 @@ fn dynamics_simulate<'py>(
     max_steps: usize,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let rows = mat3("inertia", &inertia)?;
-    let tensor = Mat3::from_fn(|i, j| rows[i][j]);
-    let body = BodyInertia::from_tensor(&tensor).py()?;
-    let w0 = Vec3::from(vec3("omega0", &omega0)?);
+    let body = BodyInertia::from_tensor(&matrix("inertia", &inertia)?).py()?;
+    let w0 = vector("omega0", &omega0)?;
     let q0 = opt_quat("attitude0", &attitude0)?;
     let method = Method::parse(method).py()?;
     let opts = SimulateOptions {
@@ -130,12 +104,10 @@ fn dynamics_simulate<'py>(
         atol,
         max_steps,
     };
-    let vector = vec3("torque", &torque_vector)?;
+    let torque_vector = vector("torque", &torque_vector)?;
+    let kind: TorqueKind = parse(torque_kind)?;
     let error: RefCell<Option<PyErr>> = RefCell::new(None);
-    let tr = if torque_kind == "callback" {
-        let Some(func) = &torque_fn else {
-            return Err(invalid("torque", "a callback torque needs a callable"));
-        };
+    let tr = if let (TorqueKind::Callback, Some(func)) = (kind, &torque_fn) {
         let mut model = PyTorque {
             py,
             func,
@@ -150,7 +122,7 @@ fn dynamics_simulate<'py>(
         }
         result?
     } else {
-        let mut torque = torque_from(torque_kind, vector, torque_scalar)?;
+        let mut torque = kind.torque(torque_vector, torque_scalar).py()?;
         run(py, progress.as_ref(), || {
             dyn_core::simulate(&body, w0, q0, duration, &mut torque, &opts)
         })?
@@ -199,7 +171,10 @@ fn dynamics_simulate_batch<'py>(
         Some(a) => Some(rows_in::<4>("attitude0", a)?),
         None => None,
     };
-    let torque = torque_from(torque_kind, vec3("torque", &torque_vector)?, torque_scalar)?;
+    let torque_vector = vector("torque", &torque_vector)?;
+    let torque = parse::<TorqueKind>(torque_kind)?
+        .torque(torque_vector, torque_scalar)
+        .py()?;
     let method = Method::parse(method).py()?;
     let opts = SimulateOptions {
         method,

@@ -20,14 +20,7 @@ fn earth(rotation_rate: f64, radius: f64, g: f64) -> PyResult<Earth> {
 }
 
 fn gravity(name: &str) -> PyResult<Gravity> {
-    match name {
-        "uniform" => Ok(Gravity::Uniform),
-        "inverse-square" => Ok(Gravity::InverseSquare),
-        _ => Err(invalid(
-            "gravity",
-            format!("must be 'uniform' or 'inverse-square', got {name:?}"),
-        )),
-    }
+    crate::convert::parse(name)
 }
 
 /// A per-latitude scalar quantity over an array of latitudes.

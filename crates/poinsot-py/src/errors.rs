@@ -13,8 +13,9 @@
 //! ```
 use poinsot::{Error, ErrorKind};
 use pyo3::create_exception;
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyKeyboardInterrupt, PyValueError};
 use pyo3::prelude::*;
+use pyo3::types::PyType;
 
 create_exception!(poinsot, PoinsotError, PyValueError, "Bad input or an impossible request to poinsot (also a ValueError). The message names the argument and the violated condition.");
 create_exception!(poinsot, InvalidInertiaError, PoinsotError, "An inertia tensor that no body can have (asymmetric, negative moment, triangle inequality violated).");
@@ -43,20 +44,37 @@ create_exception!(
     "A numerical integration diverged or could not reach its tolerance."
 );
 
-/// Converts a core error to the matching Python exception.
+/// The exception class named `name` (one of the core's [`ErrorKind::class_name`]s): the types
+/// created above, or Python's `KeyboardInterrupt` (a monitor stopped the run without keeping a
+/// Python exception — not expected: the Python monitor keeps the KeyboardInterrupt or the
+/// callback's exception).
+fn class<'py>(py: Python<'py>, name: &str) -> Bound<'py, PyType> {
+    match name {
+        "InvalidInertiaError" => py.get_type::<InvalidInertiaError>(),
+        "InvalidRotationError" => py.get_type::<InvalidRotationError>(),
+        "InvalidMeshError" => py.get_type::<InvalidMeshError>(),
+        "GimbalLockError" => py.get_type::<GimbalLockError>(),
+        "IntegrationError" => py.get_type::<IntegrationError>(),
+        "KeyboardInterrupt" => py.get_type::<PyKeyboardInterrupt>(),
+        _ => py.get_type::<PoinsotError>(),
+    }
+}
+
+/// Converts a core error to the Python exception of its kind's class (the core's table,
+/// [`ErrorKind::class_name`]).
 pub fn to_py(e: Error) -> PyErr {
     let msg = e.to_string();
-    match e.kind {
-        ErrorKind::InvalidArgument => PoinsotError::new_err(msg),
-        ErrorKind::InvalidInertia => InvalidInertiaError::new_err(msg),
-        ErrorKind::InvalidRotation => InvalidRotationError::new_err(msg),
-        ErrorKind::InvalidMesh => InvalidMeshError::new_err(msg),
-        ErrorKind::GimbalLock => GimbalLockError::new_err(msg),
-        ErrorKind::Diverged => IntegrationError::new_err(msg),
-        // A monitor stopped the run without keeping a Python exception (not expected: the
-        // Python monitor keeps the KeyboardInterrupt or the callback's exception).
-        ErrorKind::Interrupted => pyo3::exceptions::PyKeyboardInterrupt::new_err(msg),
-    }
+    Python::attach(|py| PyErr::from_type(class(py, e.kind.class_name()), msg))
+}
+
+/// The core's table of exception classes: `[(kind, class name)]` for every kind (the same
+/// table the WebAssembly binding's `errorClasses()` returns).
+#[pyfunction]
+fn error_classes() -> Vec<(&'static str, &'static str)> {
+    ErrorKind::ALL
+        .iter()
+        .map(|k| (k.name(), k.class_name()))
+        .collect()
 }
 
 /// `Result<T, poinsot::Error>` → `PyResult<T>`.
@@ -79,14 +97,12 @@ pub fn invalid(argument: &str, message: impl Into<String>) -> PyErr {
 /// Registers the exception types on the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
-    m.add("PoinsotError", py.get_type::<PoinsotError>())?;
-    m.add("InvalidInertiaError", py.get_type::<InvalidInertiaError>())?;
-    m.add(
-        "InvalidRotationError",
-        py.get_type::<InvalidRotationError>(),
-    )?;
-    m.add("InvalidMeshError", py.get_type::<InvalidMeshError>())?;
-    m.add("GimbalLockError", py.get_type::<GimbalLockError>())?;
-    m.add("IntegrationError", py.get_type::<IntegrationError>())?;
+    for kind in ErrorKind::ALL {
+        let name = kind.class_name();
+        if name != "KeyboardInterrupt" {
+            m.add(name, class(py, name))?;
+        }
+    }
+    m.add_function(wrap_pyfunction!(error_classes, m)?)?;
     Ok(())
 }

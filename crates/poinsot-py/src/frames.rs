@@ -5,75 +5,19 @@
 //! (3, 3) array. Particles travel as (N, 3) arrays.
 use std::cell::RefCell;
 
-use numpy::ndarray::Array2;
-use numpy::{
-    IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods,
-};
+use numpy::{PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
 use poinsot::frames::ParticleState;
 use poinsot::frames::{simulate_particle_at, FrameMotion, MovingFrame, SteadyMotion};
-use poinsot::integrate::{Options, Scan, Solution};
+use poinsot::integrate::{Scan, Solution};
 use poinsot::{Mat3, Vec3};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::control::{run, run_attached};
-use crate::convert::{mat3, mat3_out, rows3, vec3, vec3_out};
+use crate::convert::{a3, mat3, mat3_out, rows3, v3, vec3, vec3_out};
 use crate::errors::{invalid, IntoPy};
 
-/// Rows of K floats → a new (N, K) numpy array.
-pub(crate) fn rows_out<'py, const K: usize>(
-    py: Python<'py>,
-    rows: &[[f64; K]],
-) -> Bound<'py, PyArray2<f64>> {
-    Array2::from_shape_fn((rows.len(), K), |(i, j)| rows[i][j]).into_pyarray(py)
-}
-
-/// An (N, K) float array → rows of K floats, naming `argument` on a shape error.
-pub(crate) fn rows_in<const K: usize>(
-    argument: &str,
-    a: &PyReadonlyArray2<'_, f64>,
-) -> PyResult<Vec<[f64; K]>> {
-    let shape = a.shape();
-    if shape.len() != 2 || shape[1] != K {
-        return Err(invalid(
-            argument,
-            format!("must have shape (N, {K}), got {shape:?}"),
-        ));
-    }
-    Ok(a.as_array()
-        .rows()
-        .into_iter()
-        .map(|r| std::array::from_fn(|i| r[i]))
-        .collect())
-}
-
-/// A 1-D float array → a vector.
-pub(crate) fn vec_in(a: &PyReadonlyArray1<'_, f64>) -> Vec<f64> {
-    a.as_array().iter().copied().collect()
-}
-
-/// A length-K float array → `[f64; K]`.
-pub(crate) fn array_in<const K: usize>(
-    argument: &str,
-    a: &PyReadonlyArray1<'_, f64>,
-) -> PyResult<[f64; K]> {
-    let v = vec_in(a);
-    if v.len() != K {
-        return Err(invalid(
-            argument,
-            format!("must have shape ({K},), got ({},)", v.len()),
-        ));
-    }
-    Ok(std::array::from_fn(|i| v[i]))
-}
-
-fn v3(r: &[f64; 3]) -> Vec3 {
-    Vec3::new(r[0], r[1], r[2])
-}
-
-fn a3(v: &Vec3) -> [f64; 3] {
-    [v.x, v.y, v.z]
-}
+pub(crate) use crate::convert::{array_in, options, rows_in, rows_out, vec_in};
 
 /// 15 floats and a row-major attitude → a checked core frame.
 fn frame_from(s: &[f64], attitude: [[f64; 3]; 3]) -> PyResult<MovingFrame> {
@@ -224,17 +168,6 @@ fn frame_fictitious_forces<'py>(
         }
     }
     Ok(out.iter().map(|rows| rows_out(py, rows)).collect())
-}
-
-/// Integrator options from the Python keywords.
-pub(crate) fn options(rtol: f64, atol: f64, max_steps: usize, dense: bool) -> Options {
-    Options {
-        rtol,
-        atol,
-        max_steps,
-        dense,
-        ..Options::default()
-    }
 }
 
 /// The solution's samples at `times` (or every step if `times` is empty) as a dict

@@ -3,11 +3,12 @@
 //! `HeavyTopCore` wraps `poinsot::analytic::HeavyTop`; the public, documented class is
 //! `poinsot.HeavyTop` (python/poinsot/top.py), which holds one of these.
 use numpy::ndarray::Array2;
-use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1};
+use numpy::{IntoPyArray, PyArray2, PyReadonlyArray1};
 use poinsot::analytic::{self, EulerState, HeavyTop};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+use crate::convert::{self, Rows, Values};
 use crate::errors::{invalid, IntoPy};
 
 /// A heavy symmetric top with its exact motion (private; use `poinsot.HeavyTop`).
@@ -18,8 +19,7 @@ pub struct PyHeavyTop {
 
 /// A contiguous (N,) float64 array as a slice.
 fn slice<'a>(argument: &str, a: &'a PyReadonlyArray1<'_, f64>) -> PyResult<&'a [f64]> {
-    a.as_slice()
-        .map_err(|_| invalid(argument, "must be a C-contiguous float64 array"))
+    convert::slice(argument, a, "must be a C-contiguous float64 array")
 }
 
 /// Evaluates `f` over `times` into a new (N, 3) array, without the GIL.
@@ -176,31 +176,21 @@ impl PyHeavyTop {
     }
 
     /// V(θ) (J) at (N,) angles θ (rad).
-    fn effective_potential<'py>(
-        &self,
-        py: Python<'py>,
-        theta: PyReadonlyArray1<'py, f64>,
-    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        let out: Vec<f64> = slice("theta", &theta)?
+    fn effective_potential(&self, theta: PyReadonlyArray1<'_, f64>) -> PyResult<Values> {
+        slice("theta", &theta)?
             .iter()
             .map(|&th| self.inner.effective_potential(th))
             .collect::<poinsot::Result<_>>()
-            .py()?;
-        Ok(PyArray1::from_vec(py, out))
+            .py()
     }
 
     /// dV/dθ (N·m) at (N,) angles θ (rad).
-    fn effective_potential_derivative<'py>(
-        &self,
-        py: Python<'py>,
-        theta: PyReadonlyArray1<'py, f64>,
-    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        let out: Vec<f64> = slice("theta", &theta)?
+    fn effective_potential_derivative(&self, theta: PyReadonlyArray1<'_, f64>) -> PyResult<Values> {
+        slice("theta", &theta)?
             .iter()
             .map(|&th| self.inner.effective_potential_derivative(th))
             .collect::<poinsot::Result<_>>()
-            .py()?;
-        Ok(PyArray1::from_vec(py, out))
+            .py()
     }
 
     /// (N, 3) Euler angles [φ, θ, ψ] (rad) at (N,) times (s).
@@ -222,19 +212,13 @@ impl PyHeavyTop {
     }
 
     /// (N, 3) Euler angles by the incomplete elliptic integrals (sn, R_J) at every time.
-    fn euler_angles_carlson<'py>(
-        &self,
-        py: Python<'py>,
-        t: PyReadonlyArray1<'py, f64>,
-    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    fn euler_angles_carlson(&self, t: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<3>> {
         let ts = slice("t", &t)?;
         poinsot::error::check_finite("t", ts).py()?;
-        let rows: Vec<[f64; 3]> = ts
-            .iter()
+        ts.iter()
             .map(|&x| self.inner.euler_angles_carlson(x))
             .collect::<poinsot::Result<_>>()
-            .py()?;
-        Ok(crate::frames::rows_out(py, &rows))
+            .py()
     }
 }
 

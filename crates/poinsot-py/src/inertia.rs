@@ -2,35 +2,16 @@
 //!
 //! `MassProperties` wraps `poinsot::inertia::MassProperties`; the public, documented class is
 //! `poinsot.RigidBody` (python/poinsot/body.py), which holds one of these.
-use numpy::{
-    PyArray1, PyArray2, PyArray3, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods,
-};
+use numpy::{PyArray1, PyArray3, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
 use poinsot::inertia::{self, CubatureOptions, MassProperties};
-use poinsot::{Error, Mat3, Vec3};
+use poinsot::{Error, Vec3};
 use pyo3::prelude::*;
 
-use crate::convert::{mat3, mat3_out, mats3_out, rows3, rows3_out, rows3_slice, vec3, vec3_out};
+use crate::convert::{
+    from_mat, matrix, mats3_out, opt_vector, rows3, rows3_slice, vec3, vector, Matrix, Rows,
+    Values, Vector,
+};
 use crate::errors::{invalid, IntoPy};
-
-/// Row-major `[[f64; 3]; 3]` → nalgebra (column-major storage, same matrix).
-fn to_mat(m: [[f64; 3]; 3]) -> Mat3 {
-    Mat3::new(
-        m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0], m[2][1], m[2][2],
-    )
-}
-
-/// nalgebra → row-major `[[f64; 3]; 3]`.
-fn from_mat(m: &Mat3) -> [[f64; 3]; 3] {
-    [
-        [m[(0, 0)], m[(0, 1)], m[(0, 2)]],
-        [m[(1, 0)], m[(1, 1)], m[(1, 2)]],
-        [m[(2, 0)], m[(2, 1)], m[(2, 2)]],
-    ]
-}
-
-fn opt_vec3(argument: &str, a: Option<PyReadonlyArray1<'_, f64>>) -> PyResult<Option<Vec3>> {
-    a.map(|a| vec3(argument, &a).map(Vec3::from)).transpose()
-}
 
 /// Mass properties of a rigid body (private; use `poinsot.RigidBody`).
 #[pyclass(module = "poinsot._core", name = "MassProperties", frozen)]
@@ -51,9 +32,8 @@ impl PyMassProperties {
         center_of_mass: PyReadonlyArray1<'_, f64>,
         inertia: PyReadonlyArray2<'_, f64>,
     ) -> PyResult<Self> {
-        let com = Vec3::from(vec3("center_of_mass", &center_of_mass)?);
-        let i = to_mat(mat3("inertia", &inertia)?);
-        wrap(MassProperties::new(mass, com, i))
+        let com = vector("center_of_mass", &center_of_mass)?;
+        wrap(MassProperties::new(mass, com, matrix("inertia", &inertia)?))
     }
 
     /// Like `from_inertia`, with `inertia` about the point `about` (m, (3,)).
@@ -64,10 +44,14 @@ impl PyMassProperties {
         inertia: PyReadonlyArray2<'_, f64>,
         about: PyReadonlyArray1<'_, f64>,
     ) -> PyResult<Self> {
-        let com = Vec3::from(vec3("center_of_mass", &center_of_mass)?);
-        let i = to_mat(mat3("inertia", &inertia)?);
-        let p = Vec3::from(vec3("about", &about)?);
-        wrap(MassProperties::from_inertia_about(mass, com, i, p))
+        let com = vector("center_of_mass", &center_of_mass)?;
+        let i = matrix("inertia", &inertia)?;
+        wrap(MassProperties::from_inertia_about(
+            mass,
+            com,
+            i,
+            vector("about", &about)?,
+        ))
     }
 
     /// Point masses (kg, (N,)) at positions (m, (N, 3)).
@@ -240,14 +224,14 @@ impl PyMassProperties {
 
     /// Centre of mass (m), shape (3,).
     #[getter]
-    fn center_of_mass<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        vec3_out(py, self.inner.center_of_mass().into())
+    fn center_of_mass(&self) -> Vector {
+        Vector(self.inner.center_of_mass())
     }
 
     /// Inertia about the centre of mass (kg·m²), shape (3, 3).
     #[getter]
-    fn inertia<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
-        mat3_out(py, from_mat(&self.inner.inertia()))
+    fn inertia(&self) -> Matrix {
+        Matrix(self.inner.inertia())
     }
 
     /// Inertia about each point of `points` (m, (N, 3)) → (N, 3, 3) kg·m².
@@ -266,22 +250,18 @@ impl PyMassProperties {
 
     /// The body moved by `offset` (m, (3,)).
     fn translated(&self, offset: PyReadonlyArray1<'_, f64>) -> PyResult<Self> {
-        wrap(self.inner.translated(&Vec3::from(vec3("offset", &offset)?)))
+        wrap(self.inner.translated(&vector("offset", &offset)?))
     }
 
     /// The body rotated by the rotation matrix `rotation` ((3, 3)) about the origin.
     fn rotated(&self, rotation: PyReadonlyArray2<'_, f64>) -> PyResult<Self> {
-        wrap(self.inner.rotated(&to_mat(mat3("rotation", &rotation)?)))
+        wrap(self.inner.rotated(&matrix("rotation", &rotation)?))
     }
 
     /// (principal moments ascending (3,), principal axes as columns (3, 3)).
-    fn principal<'py>(
-        &self,
-        py: Python<'py>,
-        rtol: f64,
-    ) -> (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray2<f64>>) {
+    fn principal(&self, rtol: f64) -> (Vector, Matrix) {
         let p = self.inner.principal(rtol);
-        (vec3_out(py, p.moments), mat3_out(py, from_mat(&p.axes)))
+        (Vector::from(p.moments), Matrix(p.axes))
     }
 
     /// Kind of top with relative tolerance `rtol`.
@@ -292,66 +272,49 @@ impl PyMassProperties {
     /// L = I·ω (kg·m²/s) for each ω of `omega` (rad/s, (N, 3)), about `about` (m) or the
     /// centre of mass → (N, 3).
     #[pyo3(signature = (omega, about=None))]
-    fn angular_momentum<'py>(
-        &self,
-        py: Python<'py>,
-        omega: PyReadonlyArray2<'_, f64>,
-        about: Option<PyReadonlyArray1<'_, f64>>,
-    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let about = opt_vec3("about", about)?;
-        let out = per_omega(&omega, |w| self.inner.angular_momentum(w, about.as_ref()))?;
-        rows3_out(py, out.iter().flat_map(|v| v.iter().copied()).collect())
+    fn angular_momentum(&self, omega: Omegas<'_>, about: About<'_>) -> PyResult<Rows<3>> {
+        self.per_omega(&omega, &about, MassProperties::angular_momentum)
     }
 
     /// T = ½ ω·I·ω (J) for each ω of `omega` (rad/s, (N, 3)) → (N,).
     #[pyo3(signature = (omega, about=None))]
-    fn kinetic_energy<'py>(
-        &self,
-        py: Python<'py>,
-        omega: PyReadonlyArray2<'_, f64>,
-        about: Option<PyReadonlyArray1<'_, f64>>,
-    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        let about = opt_vec3("about", about)?;
-        let out = per_omega(&omega, |w| self.inner.kinetic_energy(w, about.as_ref()))?;
-        Ok(PyArray1::from_vec(py, out))
+    fn kinetic_energy(&self, omega: Omegas<'_>, about: About<'_>) -> PyResult<Values> {
+        self.per_omega(&omega, &about, MassProperties::kinetic_energy)
     }
 
     /// N = ω × L (N·m) for each ω of `omega` (rad/s, (N, 3)) → (N, 3).
     #[pyo3(signature = (omega, about=None))]
-    fn holding_torque<'py>(
-        &self,
-        py: Python<'py>,
-        omega: PyReadonlyArray2<'_, f64>,
-        about: Option<PyReadonlyArray1<'_, f64>>,
-    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let about = opt_vec3("about", about)?;
-        let out = per_omega(&omega, |w| self.inner.holding_torque(w, about.as_ref()))?;
-        rows3_out(py, out.iter().flat_map(|v| v.iter().copied()).collect())
+    fn holding_torque(&self, omega: Omegas<'_>, about: About<'_>) -> PyResult<Rows<3>> {
+        self.per_omega(&omega, &about, MassProperties::holding_torque)
     }
 
     /// Angle between L and ω (rad) for each ω of `omega` (rad/s, (N, 3)) → (N,).
     #[pyo3(signature = (omega, about=None))]
-    fn momentum_angle<'py>(
-        &self,
-        py: Python<'py>,
-        omega: PyReadonlyArray2<'_, f64>,
-        about: Option<PyReadonlyArray1<'_, f64>>,
-    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        let about = opt_vec3("about", about)?;
-        let out = per_omega(&omega, |w| self.inner.momentum_angle(w, about.as_ref()))?;
-        Ok(PyArray1::from_vec(py, out))
+    fn momentum_angle(&self, omega: Omegas<'_>, about: About<'_>) -> PyResult<Values> {
+        self.per_omega(&omega, &about, MassProperties::momentum_angle)
     }
 }
 
-/// Applies `f` to each row of `omega` ((N, 3), rad/s), mapping core errors.
-fn per_omega<T>(
-    omega: &PyReadonlyArray2<'_, f64>,
-    mut f: impl FnMut(&Vec3) -> poinsot::Result<T>,
-) -> PyResult<Vec<T>> {
-    rows3("omega", omega)?
-        .into_iter()
-        .map(|w| f(&Vec3::from(w)).py())
-        .collect()
+/// The angular velocities of a per-ω method: rad/s, (N, 3).
+type Omegas<'py> = PyReadonlyArray2<'py, f64>;
+/// The optional reference point of a per-ω method: m, (3,); the centre of mass if None.
+type About<'py> = Option<PyReadonlyArray1<'py, f64>>;
+
+impl PyMassProperties {
+    /// `f(body, ω, about)` for each row ω of `omega`, mapping core errors.
+    fn per_omega<T, O: FromIterator<T>>(
+        &self,
+        omega: &Omegas<'_>,
+        about: &About<'_>,
+        f: impl Fn(&MassProperties, &Vec3, Option<&Vec3>) -> poinsot::Result<T>,
+    ) -> PyResult<O> {
+        let about = opt_vector("about", about)?;
+        rows3("omega", omega)?
+            .into_iter()
+            .map(|w| f(&self.inner, &Vec3::from(w), about.as_ref()))
+            .collect::<poinsot::Result<O>>()
+            .py()
+    }
 }
 
 /// Kind of top of principal moments `moments` (kg·m², (3,)) with relative tolerance `rtol`.
@@ -364,12 +327,10 @@ fn classify(moments: PyReadonlyArray1<'_, f64>, rtol: f64) -> PyResult<&'static 
 
 /// Checks an inertia tensor (kg·m², (3, 3)); returns it symmetrised.
 #[pyfunction]
-fn check_inertia<'py>(
-    py: Python<'py>,
-    inertia: PyReadonlyArray2<'_, f64>,
-) -> PyResult<Bound<'py, PyArray2<f64>>> {
-    let m = inertia::check_inertia("inertia", &to_mat(mat3("inertia", &inertia)?)).py()?;
-    Ok(mat3_out(py, from_mat(&m)))
+fn check_inertia(inertia: PyReadonlyArray2<'_, f64>) -> PyResult<Matrix> {
+    inertia::check_inertia("inertia", &matrix("inertia", &inertia)?)
+        .map(Matrix)
+        .py()
 }
 
 /// Registers this file's functions and classes on the module.

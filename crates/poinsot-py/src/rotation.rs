@@ -8,21 +8,10 @@ use poinsot::rotation::{self as rot, EulerSequence, Frame};
 use poinsot::Vec3;
 use pyo3::prelude::*;
 
-use crate::convert::{mat3, mat3_out, records, rows3, vec3, vec3_out, zeros};
+use crate::convert::{matrix, parse, records, rows3, vector, zeros, Matrix, Vector};
 use crate::errors::{invalid, IntoPy};
 
 type Out<'py> = Bound<'py, PyArrayDyn<f64>>;
-
-fn frame(name: &str) -> PyResult<Frame> {
-    match name {
-        "body" => Ok(Frame::Body),
-        "space" => Ok(Frame::Space),
-        _ => Err(invalid(
-            "frame",
-            format!("must be 'body' or 'space', got {name:?}"),
-        )),
-    }
-}
 
 /// Runs `kernel(input, out)` with the GIL released, into a new array of shape `dims`.
 fn batch<'py>(
@@ -170,7 +159,7 @@ fn angular_velocity<'py>(
     frame: &str,
 ) -> PyResult<Out<'py>> {
     let seq = EulerSequence::new(seq, intrinsic).py()?;
-    let frame = self::frame(frame)?;
+    let frame: Frame = parse(frame)?;
     let (a, n) = records("angles", &angles, &[3])?;
     let (r, _) = records("rates", &rates, &[3])?;
     batch(py, &[n, 3], |out| {
@@ -189,7 +178,7 @@ fn euler_rates<'py>(
     frame: &str,
 ) -> PyResult<Out<'py>> {
     let seq = EulerSequence::new(seq, intrinsic).py()?;
-    let frame = self::frame(frame)?;
+    let frame: Frame = parse(frame)?;
     let (a, n) = records("angles", &angles, &[3])?;
     let (w, _) = records("omega_body", &omega, &[3])?;
     batch(py, &[n, 3], |out| {
@@ -200,29 +189,14 @@ fn euler_rates<'py>(
 /// Chasles' screw of `x ↦ R x + t` for one `R` `(3, 3)` and `t` `(3,)`:
 /// `(axis, point, angle, slide, pitch)`.
 #[pyfunction]
-#[allow(non_snake_case, clippy::type_complexity)]
-fn screw_axis<'py>(
-    py: Python<'py>,
-    R: numpy::PyReadonlyArray2<'py, f64>,
-    t: numpy::PyReadonlyArray1<'py, f64>,
-) -> PyResult<(
-    Bound<'py, PyArray1<f64>>,
-    Bound<'py, PyArray1<f64>>,
-    f64,
-    f64,
-    f64,
-)> {
-    let r = mat3("R", &R)?;
-    let t = vec3("t", &t)?;
-    let m = poinsot::Mat3::from_row_slice(&r.concat());
-    let s = rot::screw_axis(&m, &Vec3::from(t)).py()?;
-    Ok((
-        vec3_out(py, s.axis.into()),
-        vec3_out(py, s.point.into()),
-        s.angle,
-        s.slide,
-        s.pitch,
-    ))
+#[allow(non_snake_case)]
+fn screw_axis(
+    R: numpy::PyReadonlyArray2<'_, f64>,
+    t: numpy::PyReadonlyArray1<'_, f64>,
+) -> PyResult<(Vector, Vector, f64, f64, f64)> {
+    let (r, t) = (matrix("R", &R)?, vector("t", &t)?);
+    let s = rot::screw_axis(&r, &t).py()?;
+    Ok((Vector(s.axis), Vector(s.point), s.angle, s.slide, s.pitch))
 }
 
 /// The screw `(axis, point, angle, slide)` as a core `Screw` (checked: unit axis, finite).
@@ -232,8 +206,8 @@ fn screw_from_parts(
     angle: f64,
     slide: f64,
 ) -> PyResult<rot::Screw> {
-    let axis = Vec3::from(vec3("axis", axis)?);
-    let point = Vec3::from(vec3("point", point)?);
+    let axis = vector("axis", axis)?;
+    let point = vector("point", point)?;
     poinsot::error::check_finite("angle", &[angle]).py()?;
     poinsot::error::check_finite("slide", &[slide]).py()?;
     let n = axis.norm();
@@ -255,43 +229,29 @@ fn screw_from_parts(
 
 /// The displacement `(R (3, 3), t (3,))` of a screw.
 #[pyfunction]
-#[allow(clippy::type_complexity)]
-fn screw_displacement<'py>(
-    py: Python<'py>,
-    axis: numpy::PyReadonlyArray1<'py, f64>,
-    point: numpy::PyReadonlyArray1<'py, f64>,
+fn screw_displacement(
+    axis: numpy::PyReadonlyArray1<'_, f64>,
+    point: numpy::PyReadonlyArray1<'_, f64>,
     angle: f64,
     slide: f64,
-) -> PyResult<(Bound<'py, numpy::PyArray2<f64>>, Bound<'py, PyArray1<f64>>)> {
+) -> PyResult<(Matrix, Vector)> {
     let (r, t) = screw_from_parts(&axis, &point, angle, slide)?.displacement();
-    let rows = [
-        [r[(0, 0)], r[(0, 1)], r[(0, 2)]],
-        [r[(1, 0)], r[(1, 1)], r[(1, 2)]],
-        [r[(2, 0)], r[(2, 1)], r[(2, 2)]],
-    ];
-    Ok((mat3_out(py, rows), vec3_out(py, t.into())))
+    Ok((Matrix(r), Vector(t)))
 }
 
 /// The displacement `(R(s) (3, 3), t(s) (3,))` at fraction `s` of a screw motion.
 #[pyfunction]
-#[allow(clippy::type_complexity)]
-fn screw_displacement_at<'py>(
-    py: Python<'py>,
-    axis: numpy::PyReadonlyArray1<'py, f64>,
-    point: numpy::PyReadonlyArray1<'py, f64>,
+fn screw_displacement_at(
+    axis: numpy::PyReadonlyArray1<'_, f64>,
+    point: numpy::PyReadonlyArray1<'_, f64>,
     angle: f64,
     slide: f64,
     s: f64,
-) -> PyResult<(Bound<'py, numpy::PyArray2<f64>>, Bound<'py, PyArray1<f64>>)> {
+) -> PyResult<(Matrix, Vector)> {
     let (r, t) = screw_from_parts(&axis, &point, angle, slide)?
         .displacement_at(s)
         .py()?;
-    let rows = [
-        [r[(0, 0)], r[(0, 1)], r[(0, 2)]],
-        [r[(1, 0)], r[(1, 1)], r[(1, 2)]],
-        [r[(2, 0)], r[(2, 1)], r[(2, 2)]],
-    ];
-    Ok((mat3_out(py, rows), vec3_out(py, t.into())))
+    Ok((Matrix(r), Vector(t)))
 }
 
 /// Applies a screw motion to points `x` `(N, 3)` → `(N, 3)`.

@@ -4,12 +4,14 @@
 //! ...]`, as the core's batch kernels); a quaternion is 4 numbers scalar-first `[w, x, y, z]`.
 
 use poinsot::{Error, ErrorKind, Mat3, Vec3};
+use wasm_bindgen::prelude::wasm_bindgen;
 use wasm_bindgen::JsValue;
 
 /// An error on its way to JavaScript: the exception class name and the core's message.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Failure {
-    /// The JavaScript `Error.name`: the Python exception class of the same kind, or `"TypeError"`
+    /// The JavaScript `Error.name`: the Python exception class of the same kind (the core's
+    /// table, [`ErrorKind::class_name`]), or `"TypeError"`
     /// for an argument of the wrong JavaScript type (thrown as a real `TypeError`).
     pub name: &'static str,
     /// The core's message, `"argument: condition"`.
@@ -35,21 +37,21 @@ impl Failure {
     }
 }
 
-/// The Python exception class name of a core error kind (the browser shows the same names).
-pub fn class_name(kind: ErrorKind) -> &'static str {
-    match kind {
-        ErrorKind::InvalidArgument | ErrorKind::Diverged | ErrorKind::Interrupted => "PoinsotError",
-        ErrorKind::InvalidInertia => "InvalidInertiaError",
-        ErrorKind::InvalidRotation => "InvalidRotationError",
-        ErrorKind::InvalidMesh => "InvalidMeshError",
-        ErrorKind::GimbalLock => "GimbalLockError",
-    }
+/// The core's table of exception classes: `[kind, class name]` for every kind
+/// (`[["InvalidArgument", "PoinsotError"], ..., ["Diverged", "IntegrationError"], ...]`), the
+/// `name` of the error each kind throws — the same table as `poinsot._core.error_classes()`.
+#[wasm_bindgen(js_name = errorClasses, unchecked_return_type = "[string, string][]")]
+pub fn error_classes() -> js_sys::Array {
+    ErrorKind::ALL
+        .iter()
+        .map(|k| js_sys::Array::of2(&k.name().into(), &k.class_name().into()))
+        .collect()
 }
 
 impl From<Error> for Failure {
     fn from(e: Error) -> Self {
         Failure {
-            name: class_name(e.kind),
+            name: e.kind.class_name(),
             message: e.to_string(),
         }
     }
@@ -220,7 +222,7 @@ pub fn finite1(arguments: &str, quantity: &str, value: f64) -> Out<f64> {
 /// The error of [`finite`]: `arguments` give a `quantity` that is not a finite number.
 pub fn not_finite(arguments: &str, quantity: &str) -> Failure {
     Failure {
-        name: "PoinsotError",
+        name: ErrorKind::InvalidArgument.class_name(),
         message: format!(
             "{arguments}: the result ({quantity}) is not a finite number for these values (too \
              large for double precision, or outside the range where it can be computed); use \
@@ -269,6 +271,11 @@ mod tests {
         assert_eq!(
             Failure::from(Error::gimbal_lock("angles", "x")).name,
             "GimbalLockError"
+        );
+        // One table with the Python binding: a diverged run is an IntegrationError in both.
+        assert_eq!(
+            Failure::from(Error::diverged("t", "x")).name,
+            "IntegrationError"
         );
     }
 

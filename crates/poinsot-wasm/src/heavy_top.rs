@@ -112,54 +112,67 @@ fn times_as_t(e: poinsot::Error) -> Failure {
 #[wasm_bindgen]
 impl HeavyTop {
     /// The top with moments `i1` (about a transverse axis through the pivot) and `i3` (about the
-    /// symmetry axis, kg·m²) and `mgl` = m g l (N·m), started at t = 0 from θ = `theta` (rad) with
-    /// the rates `theta_dot`, `phi_dot`, `psi_dot` (rad/s), φ = ψ = 0. Errors name `I1`, `I3`,
-    /// `mgl`, `theta` (in [0, π]) or the rate.
+    /// symmetry axis, kg·m²) and `mgl` = m g l (N·m), started at t = 0 from the Euler angles
+    /// `phi`, `theta`, `psi` (rad) and their rates `phi_dot`, `theta_dot`, `psi_dot` (rad/s) — the
+    /// core's order, as `HeavyTopCore.from_state` in Python. Errors name `I1`, `I3`, `mgl`, `theta`
+    /// (in [0, π]), an angle or a rate.
     #[wasm_bindgen(constructor)]
+    #[allow(clippy::too_many_arguments)]
     pub fn new(
         #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] phi: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] theta: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] theta_dot: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] psi: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] phi_dot: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] theta_dot: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] psi_dot: Number,
     ) -> Out<HeavyTop> {
         let i1 = number("i1", &i1)?;
         let i3 = number("i3", &i3)?;
         let mgl = number("mgl", &mgl)?;
-        let theta = number("theta", &theta)?;
-        let theta_dot = number("theta_dot", &theta_dot)?;
-        let phi_dot = number("phi_dot", &phi_dot)?;
-        let psi_dot = number("psi_dot", &psi_dot)?;
-        let state = euler_state(theta, theta_dot, phi_dot, psi_dot);
-        const ARGUMENTS: &str = "i1, i3, mgl, theta, theta_dot, phi_dot, psi_dot";
+        let state = an::EulerState {
+            phi: number("phi", &phi)?,
+            theta: number("theta", &theta)?,
+            psi: number("psi", &psi)?,
+            phi_dot: number("phi_dot", &phi_dot)?,
+            theta_dot: number("theta_dot", &theta_dot)?,
+            psi_dot: number("psi_dot", &psi_dot)?,
+        };
+        const ARGUMENTS: &str = "i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, psi_dot";
         let inner = an::HeavyTop::new(i1, i3, mgl, state).map_err(attributed(ARGUMENTS))?;
         checked(ARGUMENTS, inner)
     }
 
-    /// The top started at θ = `theta` with θ̇, φ̇ and the spin `omega3` (rad/s) given instead of ψ̇
-    /// (ψ̇ = ω₃ − φ̇ cos θ, 2.99; `HeavyTop.from_spin` in Python), φ = ψ = 0.
+    /// The top started from the Euler angles `phi`, `theta`, `psi`, the rates `phi_dot`,
+    /// `theta_dot` and the spin `omega3` (rad/s) given instead of ψ̇ (ψ̇ = ω₃ − φ̇ cos θ, 2.99; the
+    /// core's order, as `HeavyTop.from_spin` in Python).
     #[wasm_bindgen(js_name = fromSpin)]
+    #[allow(clippy::too_many_arguments)]
     pub fn from_spin(
         #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] phi: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] theta: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] theta_dot: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] psi: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] phi_dot: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] theta_dot: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] omega3: Number,
     ) -> Out<HeavyTop> {
         let i1 = number("i1", &i1)?;
         let i3 = number("i3", &i3)?;
         let mgl = number("mgl", &mgl)?;
+        let phi = number("phi", &phi)?;
         let theta = number("theta", &theta)?;
-        let theta_dot = number("theta_dot", &theta_dot)?;
+        let psi = number("psi", &psi)?;
         let phi_dot = number("phi_dot", &phi_dot)?;
+        let theta_dot = number("theta_dot", &theta_dot)?;
         let omega3 = number("omega3", &omega3)?;
-        const ARGUMENTS: &str = "i1, i3, mgl, theta, theta_dot, phi_dot, omega3";
+        const ARGUMENTS: &str = "i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, omega3";
         let inner =
-            an::HeavyTop::with_spin(i1, i3, mgl, 0.0, theta, 0.0, phi_dot, theta_dot, omega3)
+            an::HeavyTop::with_spin(i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, omega3)
                 .map_err(attributed(ARGUMENTS))?;
         checked(ARGUMENTS, inner)
     }
@@ -518,7 +531,7 @@ mod tests {
 
     #[test]
     fn binding_matches_the_core_and_keeps_the_constants() {
-        let top = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.7, 0.0, 0.0, 8.0).unwrap();
+        let top = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.0, 0.7, 0.0, 0.0, 0.0, 8.0).unwrap();
         assert_eq!(top.motion_class(), "cusps");
         let core = an::HeavyTop::with_spin(1.0, 0.5, 1.5, 0.0, 0.7, 0.0, 0.0, 0.0, 8.0).unwrap();
         assert_eq!(top.energy(), core.energy());
@@ -558,14 +571,27 @@ mod tests {
     #[test]
     fn errors_name_the_argument() {
         let msg = |r: Out<HeavyTop>| r.unwrap_err().message;
-        assert!(msg(HeavyTop::new(1.0, 0.5, 1.0, 4.0, 0.0, 0.0, 1.0)).starts_with("theta"));
-        assert!(msg(HeavyTop::new(1.0, 0.5, -1.0, 1.0, 0.0, 0.0, 1.0)).starts_with("mgl"));
-        let e = HeavyTop::new(1.0, 3.0, 1.0, 1.0, 0.0, 0.0, 1.0).unwrap_err();
-        assert_eq!(e.name, "InvalidInertiaError");
         assert!(
-            msg(HeavyTop::from_spin(1.0, 0.5, 1.0, 1.0, 0.0, 0.0, f64::NAN)).starts_with("omega3")
+            msg(HeavyTop::new(1.0, 0.5, 1.0, 0.0, 4.0, 0.0, 0.0, 0.0, 1.0)).starts_with("theta")
         );
-        let top = HeavyTop::new(1.0, 0.5, 1.0, 1.0, 0.0, 0.0, 6.0).unwrap();
+        assert!(
+            msg(HeavyTop::new(1.0, 0.5, -1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0)).starts_with("mgl")
+        );
+        let e = HeavyTop::new(1.0, 3.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0).unwrap_err();
+        assert_eq!(e.name, "InvalidInertiaError");
+        assert!(msg(HeavyTop::from_spin(
+            1.0,
+            0.5,
+            1.0,
+            0.0,
+            1.0,
+            0.0,
+            0.0,
+            0.0,
+            f64::NAN
+        ))
+        .starts_with("omega3"));
+        let top = HeavyTop::new(1.0, 0.5, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 6.0).unwrap();
         assert!(top
             .euler_angles(vec![0.0, f64::NAN])
             .unwrap_err()
@@ -597,15 +623,15 @@ mod tests {
         // The slow root solves I₁ cos θ₀ φ̇² − p_ψ φ̇ + m g l = 0 (2.116).
         let res = 0.7f64.cos() * s.slow() * s.slow() - 4.0 * s.slow() + 1.5;
         assert!(res.abs() < ROUND_OFF);
-        let top = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.7, 0.0, s.slow(), 8.0).unwrap();
+        let top = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.0, 0.7, 0.0, s.slow(), 0.0, 8.0).unwrap();
         assert_eq!(top.motion_class(), "steady precession");
         let thr = HeavyTop::sleeping_threshold(1.0, 0.5, 1.5).unwrap();
         assert!((thr - 2.0 * 1.5f64.sqrt() / 0.5).abs() < ROUND_OFF);
         assert_eq!(HeavyTop::min_spin(1.0, 0.5, 1.5, 0.0).unwrap(), thr);
-        let up = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.0, 0.0, 0.0, 1.01 * thr).unwrap();
+        let up = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.0, 0.0, 0.0, 0.0, 0.0, 1.01 * thr).unwrap();
         assert_eq!(up.motion_class(), "sleeping");
         assert!(up.is_sleeping_stable());
-        let weak = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.0, 0.0, 0.0, 0.99 * thr).unwrap();
+        let weak = HeavyTop::from_spin(1.0, 0.5, 1.5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.99 * thr).unwrap();
         assert!(!weak.is_sleeping_stable());
     }
 }

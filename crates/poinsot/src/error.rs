@@ -2,8 +2,10 @@
 //!
 //! Every fallible function of the core returns [`Result`]. An [`Error`] always names the
 //! argument at fault and the condition it violates, so that the front ends (Python, the
-//! browser) can show it as it is. The bindings map [`ErrorKind`] to their own exception
-//! types in one place (`crates/poinsot-py/src/errors.rs`).
+//! browser) can show it as it is. Each [`ErrorKind`] has one exception class name
+//! ([`ErrorKind::class_name`]), the one table both bindings use: Python raises the exception
+//! class of that name (`crates/poinsot-py/src/errors.rs`), JavaScript throws an `Error` whose
+//! `name` it is (`crates/poinsot-wasm/src/convert.rs`).
 
 use std::fmt;
 
@@ -25,6 +27,47 @@ pub enum ErrorKind {
     /// The caller stopped the computation ([`crate::control`]: Ctrl-C, a progress callback
     /// that raised).
     Interrupted,
+}
+
+impl ErrorKind {
+    /// Every kind, in declaration order (for the bindings' tables and their tests).
+    pub const ALL: [ErrorKind; 7] = [
+        ErrorKind::InvalidArgument,
+        ErrorKind::InvalidInertia,
+        ErrorKind::InvalidRotation,
+        ErrorKind::InvalidMesh,
+        ErrorKind::GimbalLock,
+        ErrorKind::Diverged,
+        ErrorKind::Interrupted,
+    ];
+
+    /// The kind's name, as spelled in Rust (`"InvalidArgument"`).
+    pub fn name(self) -> &'static str {
+        match self {
+            ErrorKind::InvalidArgument => "InvalidArgument",
+            ErrorKind::InvalidInertia => "InvalidInertia",
+            ErrorKind::InvalidRotation => "InvalidRotation",
+            ErrorKind::InvalidMesh => "InvalidMesh",
+            ErrorKind::GimbalLock => "GimbalLock",
+            ErrorKind::Diverged => "Diverged",
+            ErrorKind::Interrupted => "Interrupted",
+        }
+    }
+
+    /// The exception class of this kind, in Python and in JavaScript (the `name` of the thrown
+    /// `Error`): the one table of the front ends. All but `KeyboardInterrupt` (a stopped run:
+    /// Python's own class) are `poinsot.PoinsotError` or one of its subclasses.
+    pub fn class_name(self) -> &'static str {
+        match self {
+            ErrorKind::InvalidArgument => "PoinsotError",
+            ErrorKind::InvalidInertia => "InvalidInertiaError",
+            ErrorKind::InvalidRotation => "InvalidRotationError",
+            ErrorKind::InvalidMesh => "InvalidMeshError",
+            ErrorKind::GimbalLock => "GimbalLockError",
+            ErrorKind::Diverged => "IntegrationError",
+            ErrorKind::Interrupted => "KeyboardInterrupt",
+        }
+    }
 }
 
 /// An error of the physics core: the argument at fault and the condition it violates.
@@ -158,6 +201,44 @@ pub fn check_non_negative(argument: &str, value: f64) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_kind_has_one_exception_class() {
+        let names: Vec<&str> = ErrorKind::ALL.iter().map(|k| k.name()).collect();
+        let classes: Vec<&str> = ErrorKind::ALL.iter().map(|k| k.class_name()).collect();
+        assert_eq!(
+            classes,
+            [
+                "PoinsotError",
+                "InvalidInertiaError",
+                "InvalidRotationError",
+                "InvalidMeshError",
+                "GimbalLockError",
+                "IntegrationError",
+                "KeyboardInterrupt",
+            ]
+        );
+        for (kind, name) in ErrorKind::ALL.iter().zip(&names) {
+            assert_eq!(format!("{kind:?}"), *name);
+            assert!(!kind.class_name().is_empty());
+        }
+        // Every kind is listed once (a new kind must be added to ALL and to the table).
+        let mut unique = names.clone();
+        unique.dedup();
+        assert_eq!(unique.len(), names.len());
+        // Exhaustive: a kind missing from this match fails to compile.
+        for kind in ErrorKind::ALL {
+            match kind {
+                ErrorKind::InvalidArgument
+                | ErrorKind::InvalidInertia
+                | ErrorKind::InvalidRotation
+                | ErrorKind::InvalidMesh
+                | ErrorKind::GimbalLock
+                | ErrorKind::Diverged
+                | ErrorKind::Interrupted => {}
+            }
+        }
+    }
 
     #[test]
     fn messages_name_the_argument() {

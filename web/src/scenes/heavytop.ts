@@ -361,7 +361,7 @@ export const heavyTopScene: SceneDef = {
         p = params;
         const I1 = Number(p.I1), I3 = Number(p.I3), mgl = Number(p.mgl), w3 = Number(p.w3);
         const s0 = initialState(p);
-        const next = HeavyTop.fromSpin(I1, I3, mgl, s0.theta0, s0.thetaDot0, s0.phiDot0, w3);
+        const next = HeavyTop.fromSpin(I1, I3, mgl, 0, s0.theta0, 0, s0.phiDot0, s0.thetaDot0, w3);
         free();
         top = next;
 

@@ -14,4 +14,4 @@ pub use equations::{angular_acceleration, angular_acceleration_principal, power,
 pub use model::BodyInertia;
 pub use simulate::{default_step, simulate, Method, SimulateOptions, Trajectory};
 pub use splitting::{free_steps, kicked_step, FreeStrang, SplitState};
-pub use torque::{Torque, TorqueContext, TorqueModel};
+pub use torque::{Torque, TorqueContext, TorqueKind, TorqueModel};

@@ -74,6 +74,74 @@ pub enum Torque {
     },
 }
 
+/// The kind of a torque, by the name the front ends use: a built-in [`Torque`] or a user's
+/// function (a [`TorqueModel`] of the binding: a Python callable).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TorqueKind {
+    /// [`Torque::None`].
+    None,
+    /// [`Torque::Body`].
+    Body,
+    /// [`Torque::Space`].
+    Space,
+    /// [`Torque::Gravity`].
+    Gravity,
+    /// [`Torque::GravityGradient`].
+    GravityGradient,
+    /// A user's function of time and state, the binding's own [`TorqueModel`].
+    Callback,
+}
+
+impl std::str::FromStr for TorqueKind {
+    type Err = Error;
+    /// `"none"`, `"body"`, `"space"`, `"gravity"`, `"gravity_gradient"` or `"callback"`; the
+    /// error names `torque`.
+    fn from_str(name: &str) -> Result<Self> {
+        Ok(match name {
+            "none" => TorqueKind::None,
+            "body" => TorqueKind::Body,
+            "space" => TorqueKind::Space,
+            "gravity" => TorqueKind::Gravity,
+            "gravity_gradient" => TorqueKind::GravityGradient,
+            "callback" => TorqueKind::Callback,
+            _ => {
+                return Err(Error::invalid(
+                    "torque",
+                    format!(
+                        "must be none, body, space, gravity, gravity_gradient or callback, got \
+                         {name:?}"
+                    ),
+                ))
+            }
+        })
+    }
+}
+
+impl TorqueKind {
+    /// The built-in torque of this kind with the constant `vector` (N·m; body and space) or
+    /// `scalar` (m g l, J; the mean motion, rad/s), checked ([`Torque::validate`]); a callback
+    /// is not built in: its error names `torque` and asks for the function.
+    pub fn torque(self, vector: Vec3, scalar: f64) -> Result<Torque> {
+        let t = match self {
+            TorqueKind::None => Torque::None,
+            TorqueKind::Body => Torque::Body(vector),
+            TorqueKind::Space => Torque::Space(vector),
+            TorqueKind::Gravity => Torque::Gravity { mgl: scalar },
+            TorqueKind::GravityGradient => Torque::GravityGradient {
+                mean_motion: scalar,
+            },
+            TorqueKind::Callback => {
+                return Err(Error::invalid(
+                    "torque",
+                    "a callback torque needs a callable",
+                ))
+            }
+        };
+        t.validate()?;
+        Ok(t)
+    }
+}
+
 impl Torque {
     /// Checks the parameters; errors name `torque`, `mgl` or `mean_motion`.
     pub fn validate(&self) -> Result<()> {

@@ -18,6 +18,21 @@ pub enum Gravity {
     InverseSquare,
 }
 
+impl std::str::FromStr for Gravity {
+    type Err = Error;
+    /// `"uniform"` or `"inverse-square"`; the error names `gravity`.
+    fn from_str(name: &str) -> Result<Self> {
+        match name {
+            "uniform" => Ok(Gravity::Uniform),
+            "inverse-square" => Ok(Gravity::InverseSquare),
+            _ => Err(Error::invalid(
+                "gravity",
+                format!("must be 'uniform' or 'inverse-square', got {name:?}"),
+            )),
+        }
+    }
+}
+
 /// The model of a near-surface motion in the rotating local frame:
 ///
 /// r̈ = g(r) − 2 ω × ṙ − ω × (ω × r),

@@ -42,6 +42,21 @@ pub enum Frame {
     Space,
 }
 
+impl std::str::FromStr for Frame {
+    type Err = Error;
+    /// `"body"` or `"space"`; the error names `frame`.
+    fn from_str(name: &str) -> Result<Self> {
+        match name {
+            "body" => Ok(Frame::Body),
+            "space" => Ok(Frame::Space),
+            _ => Err(Error::invalid(
+                "frame",
+                format!("must be 'body' or 'space', got {name:?}"),
+            )),
+        }
+    }
+}
+
 /// Columns of the map from rates (intrinsic order) to ω, for intrinsic axes `[a, b, c]`.
 fn intrinsic_columns(axes: [usize; 3], angles: [f64; 3], frame: Frame) -> [Vec3; 3] {
     let [a, b, c] = axes;
