@@ -1,7 +1,7 @@
 """The web server of ``poinsot lab``: serves the built browser lab (``poinsot/lab/``, shipped in
 the package) on the loopback interface, and nothing else.
 
-Safety rules, each pinned by ``python/tests/test_lab_server.py``:
+Safety rules, each pinned by ``python/tests/test_labserver.py``:
 
 * it binds to ``127.0.0.1`` only (any other address is refused before a socket is opened);
 * it serves regular files inside the page's directory only: a path with a ``..`` or ``.``

@@ -160,7 +160,7 @@ proptest! {
 
 #[test]
 fn perturbations_down_to_subnormal_give_a_finite_motion() {
-    // Found by hypothesis (python/tests/test_poinsot_construction.py): ω₀ = (0, 1, 2.2e-313)
+    // Found by hypothesis (python/tests/test_free_construction.py): ω₀ = (0, 1, 2.2e-313)
     // with I = (1, 1.25, 0.5) once failed in the elliptic set-up (0/0). A component whose square
     // underflows adds nothing to T or L in double precision.
     for moments in [[1.0, 1.25, 0.5], [1.0, 2.0, 3.0], [3.0, 1.0, 2.0]] {

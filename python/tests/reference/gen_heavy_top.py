@@ -19,7 +19,7 @@ periods: one-signed = "waves", both signs = "loops"); cusps and steady precessio
 by construction (released at rest in phi; started at the exact steady rate).
 
 Run (a few minutes):  python python/tests/reference/gen_heavy_top.py
-Writes python/tests/reference/heavy_top_mpmath.json (read by python/tests/test_heavy_top_reference.py)
+Writes python/tests/reference/heavy_top_mpmath.json (read by python/tests/test_top_reference.py)
 and the same trajectories flat in heavy_top_mpmath.csv (read by crates/poinsot/tests/heavy_top_reference.rs).
 """
 

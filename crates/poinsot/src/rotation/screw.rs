@@ -176,7 +176,7 @@ mod tests {
     fn displacement_at_is_accurate_for_a_far_axis() {
         // A tiny rotation with a perpendicular translation: the axis lies |t|/θ = 1e10 m away,
         // where p − R p would cancel away ~|p|·ε ≈ 1e-6 (found by hypothesis in
-        // python/tests/test_screw_motion.py at 2.5e-11). The poses must stay at round-off of |t|.
+        // python/tests/test_rotation_screw.py at 2.5e-11). The poses must stay at round-off of |t|.
         let r = rot_x(1e-10);
         let t = Vec3::new(0.0, 0.0, 1.0);
         let s = screw_axis(&r, &t).unwrap();
