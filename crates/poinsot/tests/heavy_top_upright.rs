@@ -305,13 +305,7 @@ fn separatrix_top_rises_to_upright_and_stays() {
     let th0 = std::f64::consts::FRAC_PI_3;
     let (thd, phd, psd) = (-0.5, 0.9999999999999996, 0.9999999999999998);
     let a = top(i1, i3, mgl, th0, thd, phd, psd);
-    assert!(
-        a.nutation_period().is_none(),
-        "asymptotic: no period, got {:?} {:?} {:?}",
-        a.nutation_period(),
-        a.turning_points(),
-        a.motion_class()
-    );
+    assert!(a.nutation_period().is_none(), "asymptotic: no period, got {:?} {:?} {:?}", a.nutation_period(), a.turning_points(), a.motion_class());
     let c0 = constants_of_state(i1, i3, mgl, &a.initial_state()).unwrap();
     let (aa, beta, e) = (c0.p_psi / i1, 2.0 * mgl / i1, (c0.p_phi + c0.p_psi) / i1);
     let w2 = 2.0 - aa * aa / beta;
