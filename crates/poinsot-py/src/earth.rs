@@ -550,7 +550,8 @@ fn earth_low_flow<'py>(
 /// `samples` evenly spaced times from `t0` to `t_end`, the core's grid (`sample_times`: the
 /// count checked, ≥ 2 and within the memory budget, naming `samples`).
 #[pyfunction]
-fn earth_sample_times<'py>(
+#[pyo3(name = "sample_times")]
+fn py_sample_times<'py>(
     py: Python<'py>,
     t0: f64,
     t_end: f64,
@@ -620,7 +621,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(earth_foucault_swing, m)?)?;
     m.add_function(wrap_pyfunction!(earth_inertial_swing, m)?)?;
     m.add_function(wrap_pyfunction!(earth_low_flow, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_sample_times, m)?)?;
+    m.add_function(wrap_pyfunction!(py_sample_times, m)?)?;
     m.add_function(wrap_pyfunction!(earth_defaults, m)?)?;
     // The physical constants (the defaults of `poinsot.Earth`).
     m.add("SIDEREAL_RATE", ea::SIDEREAL_RATE)?;
