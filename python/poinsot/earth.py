@@ -23,7 +23,7 @@ from ._validate import (
     as_scalar,
     public_names,
 )
-from .errors import ArgumentTypeError, PoinsotError
+from .errors import PoinsotError
 
 __all__ = ["Earth", "Fall", "Flight", "FoucaultRun", "InertialOscillation", "LowFlow",
            "SIDEREAL_RATE", "SOLAR_DAY_RATE"]
@@ -506,7 +506,7 @@ class Earth:
         amp = as_scalar(amplitude, "amplitude")
         if not progress:
             # The whole run is the core's: release, sample grid, integration, measurement.
-            with public_names(t="duration"):
+            with public_names(t="duration", y0="amplitude", state0="amplitude"):
                 out = _core.earth_foucault_swing(*self._p, lat, length, amp, az, dur, n, *tols, steps)
             states = out["states"]
             return FoucaultRun(out["t"], states[:, :3].copy(), states[:, 3:].copy(), out["turn_times"],
@@ -517,7 +517,7 @@ class Earth:
         if not dur > 0:
             raise PoinsotError(f"duration: must be finite and > 0, got {dur}")
         times = _core.sample_times(0.0, dur, n)
-        with public_names(state0="length, amplitude"):
+        with public_names(state0="amplitude"):
             state = _core.earth_foucault_release(*self._p, lat, length, amp, az)
         state0 = state
         chunks = max(1, min(100, int(np.ceil(dur / 60.0))))
@@ -532,7 +532,7 @@ class Earth:
             for i in range(chunks):
                 a, b = edges[i], edges[i + 1]
                 sel = times[(times >= a) & ((times < b) | (i == chunks - 1))]
-                with public_names(t="duration", t_end="duration", state0="length, amplitude"):
+                with public_names(t="duration", t_end="duration", y0="amplitude", state0="amplitude"):
                     out = _core.earth_foucault(*self._p, lat, length, state, float(a), float(b),
                                                np.ascontiguousarray(sel), *tols, steps)
                 parts_t.append(out["t"])
@@ -544,8 +544,7 @@ class Earth:
         finally:
             bar.stop()
         tt, ta = np.concatenate(turn_t), np.concatenate(turn_a)
-        with public_names(turn_times="duration", turn_angles="duration", state0="length, amplitude",
-                          t_end="duration"):
+        with public_names(turn_times="duration", turn_angles="duration", state0="amplitude", t_end="duration"):
             m = _core.earth_foucault_measurement(*self._p, lat, length, state0, 0.0, dur, tt, ta)
         states = np.concatenate(parts_s)
         return FoucaultRun(np.concatenate(parts_t), states[:, :3].copy(), states[:, 3:].copy(), tt, ta,

@@ -250,10 +250,9 @@ pub struct Foucault {
 
 impl Foucault {
     fn state_at(&self, t: f64) -> Out<ParticleState> {
-        Ok(self
-            .inner
+        self.inner
             .state_at(t)
-            .map_err(renamed_all(&[("max_steps", "t")]).otherwise("t"))?)
+            .map_err(renamed_all(&[("max_steps", "t")]).otherwise("t"))
     }
 }
 
@@ -441,7 +440,7 @@ impl Earth {
     /// Swing a Foucault pendulum of `length` (m) released from rest `amplitude` (m) from its
     /// rest position towards `azimuth` (rad, clockwise from north) at `latitude` (rad) for
     /// `duration` (s), sampled at `samples` even times, and measure its swing plane:
-    /// `Earth.foucault` with the Python defaults.
+    /// `Earth.foucault` with the core's tolerances (`FOUCAULT_TOLERANCES`), as in Python.
     pub fn foucault(
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
@@ -473,7 +472,7 @@ impl Earth {
                 &ea::FOUCAULT_TOLERANCES,
             )
             .map_err(
-                renamed_all(&[("max_steps", "duration")])
+                renamed_all(&[("state0", "length, amplitude"), ("max_steps", "duration")])
                     .otherwise("latitude, length, amplitude, azimuth, duration, samples"),
             )?;
         Ok(Foucault { inner })
@@ -483,7 +482,7 @@ impl Earth {
     /// counterclockwise — pulled into a low at the centre by `pull` (m/s² at the ring, growing
     /// linearly with distance), slowed by `friction` (1/s) and turned by the Coriolis force at
     /// `latitude` (rad), for `duration` (s) sampled at `samples` even times:
-    /// `Earth.flow_into_low` with the Python defaults.
+    /// `Earth.flow_into_low` with the core's tolerances (`LOW_TOLERANCES`), as in Python.
     #[wasm_bindgen(js_name = flowIntoLow)]
     #[allow(clippy::too_many_arguments)]
     pub fn flow_into_low(
@@ -530,7 +529,8 @@ impl Earth {
 
     /// A parcel set moving with `[v_east, v_north]` (m/s) on a frictionless level surface at
     /// `latitude` (rad) for `duration` (s), sampled at `samples` even times:
-    /// `Earth.inertial_oscillation` with the Python defaults.
+    /// `Earth.inertial_oscillation` with the core's tolerances (`INERTIAL_TOLERANCES`), as in
+    /// Python.
     #[wasm_bindgen(js_name = inertialOscillation)]
     pub fn inertial_oscillation(
         &self,

@@ -175,8 +175,9 @@ impl Default for LowSetup {
 }
 
 impl LowSetup {
-    /// A checked set-up; errors name `radius`, `parcels`, `pull` (finite and > 0, and its
-    /// strength [`LowSetup::strength`] a positive finite number) and `friction` (≥ 0).
+    /// A checked set-up; errors name `radius`, `parcels`, `pull` (finite and > 0) and
+    /// `friction` (≥ 0), and `radius` or `pull` where the strength [`LowSetup::strength`]
+    /// overflows or underflows.
     pub fn new(radius: f64, parcels: usize, pull: f64, friction: f64) -> Result<Self> {
         check_positive("radius", radius)?;
         if parcels < 1 {
@@ -193,13 +194,18 @@ impl LowSetup {
             pull,
             friction,
         };
+        // k = pull / R overflows for a tiny ring, underflows for a tiny pull.
         let k = setup.strength();
-        if !(k.is_finite() && k > 0.0) {
+        if !k.is_finite() {
             return Err(Error::invalid(
-                "pull, radius",
-                format!(
-                    "the low's strength pull / radius = {k:e} 1/s² is not a positive finite number"
-                ),
+                "radius",
+                format!("too small for pull = {pull:e} m/s²: the low's strength pull / radius overflows"),
+            ));
+        }
+        if k <= 0.0 {
+            return Err(Error::invalid(
+                "pull",
+                format!("too small for radius = {radius:e} m: the low's strength pull / radius underflows to 0"),
             ));
         }
         Ok(setup)
@@ -361,7 +367,7 @@ impl Earth {
     ///
     /// Errors name the arguments: `samples` (≥ 2, within the memory budget), `duration`
     /// (finite, > 0; also a run too long to represent), `latitude`, `length`, `amplitude`,
-    /// `azimuth`, `length, amplitude` (a release that cannot be represented) and `max_steps`.
+    /// `azimuth`, `max_steps`, and `state0` for a release that cannot be represented.
     #[allow(clippy::too_many_arguments)]
     pub fn foucault_swing(
         &self,
@@ -375,9 +381,11 @@ impl Earth {
     ) -> Result<FoucaultSwing> {
         check_count("samples", samples, 2, FOUCAULT_BYTES_PER_SAMPLE)?;
         check_duration(duration)?;
+        // The core's internal names of the run's arguments. `state0` (a release that cannot be
+        // represented: `length` and `amplitude` beyond double precision) is left to the front
+        // ends, which name it as their users expect.
         let names = |e: Error| {
-            e.renamed("state0", "length, amplitude")
-                .renamed("t_end", "duration")
+            e.renamed("t_end", "duration")
                 .renamed("turn_times", "duration")
                 .renamed("turn_angles", "duration")
         };
@@ -569,7 +577,11 @@ mod tests {
         );
         assert_eq!(
             LowSetup::new(1e-300, 8, 1e300, 0.0).unwrap_err().argument,
-            "pull, radius"
+            "radius"
+        );
+        assert_eq!(
+            LowSetup::new(1e300, 8, 1e-300, 0.0).unwrap_err().argument,
+            "pull"
         );
     }
 
