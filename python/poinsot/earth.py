@@ -186,7 +186,8 @@ class InertialOscillation:
         The inertial period π/(ω |sin λ|) (s; inf at the equator).
     sense:
         ``"clockwise"`` (deflected to the right: the north), ``"counterclockwise"`` (the
-        south) or ``"none"`` (the equator), from the measured rate.
+        south) or ``"none"`` (the equator: within 1e-9 of 2ω, round-off), from the measured
+        rate by the core's rule.
     """
 
     t: FloatArray = field(repr=False)
@@ -211,7 +212,8 @@ class LowFlow:
         Mean specific angular momentum about the centre (m²/s): > 0 counterclockwise.
     sense:
         ``"counterclockwise"`` (the north: cyclones), ``"clockwise"`` (the south) or
-        ``"none"`` (below round-off), from the simulated circulation.
+        ``"none"`` (within 1e-9 of radius × √(pull × radius): round-off), from the simulated
+        circulation by the core's rule.
     energy:
         (P, N): each parcel's energy per unit mass ½|v|² + ½k|r|² (J/kg; kinetic plus the
         pressure potential, k = pull / radius), which the Coriolis force leaves unchanged.
