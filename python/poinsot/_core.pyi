@@ -215,6 +215,7 @@ def earth_jacobi_integral(
 def earth_foucault_swing(
     rotation_rate: float, radius: float, g: float, latitude: float, length: float, amplitude: float,
     azimuth: float, duration: float, samples: int, rtol: float, atol: float, max_steps: int,
+    progress: Callable[[float], Any] | None = None,
 ) -> dict[str, Any]: ...
 def earth_inertial_swing(
     rotation_rate: float, radius: float, g: float, latitude: float, velocity: NDArray[np.float64],

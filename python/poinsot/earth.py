@@ -506,52 +506,28 @@ class Earth:
         tols = as_scalar(rtol, "rtol"), as_scalar(atol, "atol")
         length = as_scalar(length, "length")
         amp = as_scalar(amplitude, "amplitude")
-        if not progress:
-            # The whole run is the core's: release, sample grid, integration, measurement.
-            with public_names(t="duration", y0="amplitude", state0="amplitude"):
-                out = _core.earth_foucault_swing(*self._p, lat, length, amp, az, dur, n, *tols, steps)
-            states = out["states"]
-            return FoucaultRun(out["t"], states[:, :3].copy(), states[:, 3:].copy(), out["turn_times"],
-                               out["turn_angles"], out["precession_rate"], out["expected_rate"], out["sense"],
-                               out["regime"], out["note"], out["theory_rate"])
-        # With a progress bar: the core's run in stretches of about a minute, the bar advancing
-        # after each (the same release, grid and measurement as the core's `foucault_swing`).
-        if not dur > 0:
-            raise PoinsotError(f"duration: must be finite and > 0, got {dur}")
-        times = _core.sample_times(0.0, dur, n)
-        with public_names(state0="amplitude"):
-            state = _core.earth_foucault_release(*self._p, lat, length, amp, az)
-        state0 = state
-        chunks = max(1, min(100, int(np.ceil(dur / 60.0))))
-        edges = np.linspace(0.0, dur, chunks + 1)
-        parts_t, parts_s, turn_t, turn_a = [], [], [], []
-        from rich.progress import Progress
+        # The whole run is the core's: release, sample grid, integration, measurement; with a
+        # progress bar, integrated in stretches of about a minute, the bar advancing after each.
+        bar, report = None, None
+        if progress:
+            from rich.progress import Progress
 
-        bar = Progress(transient=True)
-        bar.start()
-        task = bar.add_task("Foucault pendulum", total=chunks)
+            bar = Progress(transient=True)
+            bar.start()
+            task = bar.add_task("Foucault pendulum", total=1.0)
+
+            def report(fraction: float) -> None:
+                bar.update(task, completed=fraction)
         try:
-            for i in range(chunks):
-                a, b = edges[i], edges[i + 1]
-                sel = times[(times >= a) & ((times < b) | (i == chunks - 1))]
-                with public_names(t="duration", t_end="duration", y0="amplitude", state0="amplitude"):
-                    out = _core.earth_foucault(*self._p, lat, length, state, float(a), float(b),
-                                               np.ascontiguousarray(sel), *tols, steps)
-                parts_t.append(out["t"])
-                parts_s.append(out["states"])
-                turn_t.append(out["turn_times"])
-                turn_a.append(out["turn_angles"])
-                state = out["final_state"]
-                bar.update(task, advance=1)
+            with public_names(t="duration", y0="amplitude", state0="amplitude"):
+                out = _core.earth_foucault_swing(*self._p, lat, length, amp, az, dur, n, *tols, steps, report)
         finally:
-            bar.stop()
-        tt, ta = np.concatenate(turn_t), np.concatenate(turn_a)
-        with public_names(turn_times="duration", turn_angles="duration", state0="amplitude", t_end="duration"):
-            m = _core.earth_foucault_measurement(*self._p, lat, length, state0, 0.0, dur, tt, ta)
-        states = np.concatenate(parts_s)
-        return FoucaultRun(np.concatenate(parts_t), states[:, :3].copy(), states[:, 3:].copy(), tt, ta,
-                           m["precession_rate"], m["expected_rate"], m["sense"], m["regime"], m["note"],
-                           m["theory_rate"])
+            if bar is not None:
+                bar.stop()
+        states = out["states"]
+        return FoucaultRun(out["t"], states[:, :3].copy(), states[:, 3:].copy(), out["turn_times"],
+                           out["turn_angles"], out["precession_rate"], out["expected_rate"], out["sense"],
+                           out["regime"], out["note"], out["theory_rate"])
 
     def inertial_oscillation(self, latitude: float, velocity: Any = tuple(_INERTIAL["velocity"]),
                              degrees: bool = False, *, duration: float | None = None,

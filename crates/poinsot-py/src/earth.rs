@@ -418,12 +418,13 @@ fn tolerances(rtol: f64, atol: f64, max_steps: usize) -> Tolerances {
     }
 }
 
-/// A Foucault run as the core makes it (`Earth::foucault_swing`): {"t", "states", "turn_times",
+/// A Foucault run as the core makes it (`Earth::foucault_swing`, in stretches reporting to
+/// `progress(fraction)` when given: `Earth::foucault_swing_in`): {"t", "states", "turn_times",
 /// "turn_angles", "state0", "evaluations", and the measurement's "regime", "note",
 /// "precession_rate", "sense", "theory_rate", "expected_rate", "theory_fit_rate",
 /// "turning_points"}.
 #[pyfunction]
-#[pyo3(signature = (rotation_rate, radius, g, latitude, length, amplitude, azimuth, duration, samples, rtol, atol, max_steps))]
+#[pyo3(signature = (rotation_rate, radius, g, latitude, length, amplitude, azimuth, duration, samples, rtol, atol, max_steps, progress=None))]
 #[allow(clippy::too_many_arguments)]
 fn earth_foucault_swing<'py>(
     py: Python<'py>,
@@ -439,12 +440,18 @@ fn earth_foucault_swing<'py>(
     rtol: f64,
     atol: f64,
     max_steps: usize,
+    progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let e = earth(rotation_rate, radius, g)?;
     let tol = tolerances(rtol, atol, max_steps);
-    let swing = run(py, None, || {
-        e.foucault_swing(
-            latitude, length, amplitude, azimuth, duration, samples, &tol,
+    // With a `progress(fraction)` callable: the core's run in stretches, reporting after each.
+    let stretches = match progress {
+        Some(_) => ea::foucault_stretches(duration),
+        None => 1,
+    };
+    let swing = run(py, progress.as_ref(), || {
+        e.foucault_swing_in(
+            latitude, length, amplitude, azimuth, duration, samples, &tol, stretches,
         )
     })?;
     let (r, m) = (swing.run, swing.measurement);

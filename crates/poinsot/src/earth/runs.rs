@@ -46,6 +46,23 @@ pub const FOUCAULT_DURATION: f64 = 3600.0;
 /// The default samples of a Foucault run.
 pub const FOUCAULT_SAMPLES: usize = 1001;
 
+/// The length (s) of one stretch of a Foucault run integrated in stretches to report progress
+/// ([`foucault_stretches`]): a minute.
+pub const FOUCAULT_STRETCH: f64 = 60.0;
+/// The most stretches of a Foucault run integrated in stretches.
+pub const FOUCAULT_MAX_STRETCHES: usize = 100;
+
+/// The number of stretches in which a Foucault run of `duration` (s) is integrated when its
+/// progress is shown: one per [`FOUCAULT_STRETCH`], between 1 and [`FOUCAULT_MAX_STRETCHES`].
+pub fn foucault_stretches(duration: f64) -> usize {
+    let n = (duration / FOUCAULT_STRETCH).ceil();
+    if n.is_nan() || n < 1.0 {
+        1
+    } else {
+        n.min(FOUCAULT_MAX_STRETCHES as f64) as usize
+    }
+}
+
 /// Tolerances of inertial oscillations ([`Earth::inertial_swing`]): rtol 1e-12, atol 1e-9
 /// (m, m/s), 10⁶ steps.
 pub const INERTIAL_TOLERANCES: Tolerances = Tolerances {
@@ -379,7 +396,36 @@ impl Earth {
         samples: usize,
         tolerances: &Tolerances,
     ) -> Result<FoucaultSwing> {
+        self.foucault_swing_in(
+            latitude, length, amplitude, azimuth, duration, samples, tolerances, 1,
+        )
+    }
+
+    /// [`Earth::foucault_swing`] integrated in `stretches` (≥ 1) equal stretches of time, each
+    /// continuing from the end of the one before, with the fraction of the run done reported
+    /// to the core's monitor ([`crate::control::report`]) after each: a front end shows the
+    /// progress of a long run (see [`foucault_stretches`]) and can stop it between stretches.
+    /// One stretch is [`Earth::foucault_swing`]; more agree with it to the tolerances (the
+    /// integrator restarts at each joint).
+    #[allow(clippy::too_many_arguments)]
+    pub fn foucault_swing_in(
+        &self,
+        latitude: f64,
+        length: f64,
+        amplitude: f64,
+        azimuth: f64,
+        duration: f64,
+        samples: usize,
+        tolerances: &Tolerances,
+        stretches: usize,
+    ) -> Result<FoucaultSwing> {
         check_count("samples", samples, 2, FOUCAULT_BYTES_PER_SAMPLE)?;
+        if stretches < 1 {
+            return Err(Error::invalid(
+                "stretches",
+                format!("must be >= 1, got {stretches}"),
+            ));
+        }
         check_duration(duration)?;
         // The core's internal names of the run's arguments. `state0` (a release that cannot be
         // represented: `length` and `amplitude` beyond double precision) is left to the front
@@ -394,9 +440,49 @@ impl Earth {
             .map_err(names)?;
         let times = sample_times(0.0, duration, samples, FOUCAULT_BYTES_PER_SAMPLE)?;
         let options = tolerances.options(false);
-        let run = self
-            .foucault(latitude, length, state0, 0.0, duration, &times, &options)
-            .map_err(names)?;
+        let run = if stretches == 1 {
+            self.foucault(latitude, length, state0, 0.0, duration, &times, &options)
+                .map_err(names)?
+        } else {
+            let edges = crate::integrate::even_times(0.0, duration, stretches + 1);
+            let mut run = FoucaultRun {
+                t: Vec::with_capacity(samples),
+                states: Vec::with_capacity(samples),
+                turn_times: Vec::new(),
+                turn_angles: Vec::new(),
+                final_state: state0,
+                stats: Default::default(),
+            };
+            let mut next = 0;
+            for (i, edge) in edges.windows(2).enumerate() {
+                let (a, b) = (edge[0], edge[1]);
+                // The samples of this stretch: [a, b), and b itself in the last.
+                let last = i + 2 == edges.len();
+                let end = next + times[next..].partition_point(|&t| t < b || last);
+                let part = self
+                    .foucault(
+                        latitude,
+                        length,
+                        run.final_state,
+                        a,
+                        b,
+                        &times[next..end],
+                        &options,
+                    )
+                    .map_err(names)?;
+                next = end;
+                run.t.extend(part.t);
+                run.states.extend(part.states);
+                run.turn_times.extend(part.turn_times);
+                run.turn_angles.extend(part.turn_angles);
+                run.final_state = part.final_state;
+                run.stats.accepted += part.stats.accepted;
+                run.stats.rejected += part.stats.rejected;
+                run.stats.evaluations += part.stats.evaluations;
+                crate::control::report((i + 1) as f64 / stretches as f64)?;
+            }
+            run
+        };
         let measurement = self
             .foucault_measurement(
                 latitude,
@@ -656,6 +742,45 @@ mod tests {
                 .unwrap_err();
             assert_eq!(err.argument, name, "{err}");
         }
+    }
+
+    #[test]
+    fn a_run_in_stretches_is_the_run_to_its_tolerances() {
+        assert_eq!(foucault_stretches(3600.0), 60);
+        assert_eq!(foucault_stretches(1.0), 1);
+        assert_eq!(foucault_stretches(1e9), FOUCAULT_MAX_STRETCHES);
+        assert_eq!(foucault_stretches(f64::NAN), 1);
+        let e = fast();
+        let one = e
+            .foucault_swing(0.8, 10.0, 1.0, 0.0, 60.0, 601, &FOUCAULT_TOLERANCES)
+            .unwrap();
+        let seven = e
+            .foucault_swing_in(0.8, 10.0, 1.0, 0.0, 60.0, 601, &FOUCAULT_TOLERANCES, 7)
+            .unwrap();
+        assert_eq!(seven.run.t, one.run.t);
+        assert_eq!(seven.run.turn_times.len(), one.run.turn_times.len());
+        for (a, b) in seven.run.states.iter().zip(&one.run.states) {
+            for k in 0..3 {
+                // rtol 1e-10 on a 10 m pendulum over ~20 swings: ~1e-8 m.
+                assert!((a[k] - b[k]).abs() < 1e-6, "{a:?} {b:?}");
+            }
+        }
+        let (r1, r7) = (
+            one.measurement.precession_rate.unwrap(),
+            seven.measurement.precession_rate.unwrap(),
+        );
+        assert!((r7 / r1 - 1.0).abs() < 1e-6, "{r1} {r7}");
+        // Negative control: a run of another length is not the same run.
+        let other = e
+            .foucault_swing_in(0.8, 10.0, 1.0, 0.0, 61.0, 601, &FOUCAULT_TOLERANCES, 7)
+            .unwrap();
+        assert_ne!(other.run.t, one.run.t);
+        assert_eq!(
+            e.foucault_swing_in(0.8, 10.0, 1.0, 0.0, 60.0, 601, &FOUCAULT_TOLERANCES, 0)
+                .unwrap_err()
+                .argument,
+            "stretches"
+        );
     }
 
     #[test]
