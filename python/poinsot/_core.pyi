@@ -194,20 +194,6 @@ def earth_projectile(
     latitude: float, height: float, gravity: str, rotation: bool, centrifugal: bool, rtol: float,
     atol: float, max_steps: int, samples: int,
 ) -> dict[str, Any]: ...
-def earth_foucault_release(
-    rotation_rate: float, radius: float, g: float, latitude: float, length: float, amplitude: float,
-    azimuth: float,
-) -> NDArray[np.float64]: ...
-def earth_foucault(
-    rotation_rate: float, radius: float, g: float, latitude: float, length: float,
-    state0: NDArray[np.float64], t0: float, t_end: float, times: NDArray[np.float64], rtol: float,
-    atol: float, max_steps: int,
-) -> dict[str, Any]: ...
-def earth_foucault_measurement(
-    rotation_rate: float, radius: float, g: float, latitude: float, length: float,
-    state0: NDArray[np.float64], t0: float, t_end: float, turn_times: NDArray[np.float64],
-    turn_angles: NDArray[np.float64],
-) -> dict[str, Any]: ...
 def earth_fit_precession_rate(turn_times: NDArray[np.float64], turn_angles: NDArray[np.float64]) -> float: ...
 def earth_jacobi_integral(
     rotation_rate: float, radius: float, g: float, latitude: float, states: NDArray[np.float64],

@@ -281,68 +281,6 @@ fn earth_projectile<'py>(
     Ok(d)
 }
 
-/// The released state (6,) of a Foucault pendulum: `amplitude` from its rest position.
-#[pyfunction]
-#[pyo3(signature = (rotation_rate, radius, g, latitude, length, amplitude, azimuth))]
-#[allow(clippy::too_many_arguments)]
-fn earth_foucault_release<'py>(
-    py: Python<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    latitude: f64,
-    length: f64,
-    amplitude: f64,
-    azimuth: f64,
-) -> PyResult<Bound<'py, PyArray1<f64>>> {
-    let e = earth(rotation_rate, radius, g)?;
-    Ok(PyArray1::from_vec(
-        py,
-        e.foucault_release(latitude, length, amplitude, azimuth)
-            .py()?
-            .to_vec(),
-    ))
-}
-
-/// One stretch of a Foucault run: {"t", "states", "turn_times", "turn_angles", "final_state", ...}.
-#[pyfunction]
-#[pyo3(signature = (rotation_rate, radius, g, latitude, length, state0, t0, t_end, times, rtol, atol, max_steps))]
-#[allow(clippy::too_many_arguments)]
-fn earth_foucault<'py>(
-    py: Python<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    latitude: f64,
-    length: f64,
-    state0: PyReadonlyArray1<'py, f64>,
-    t0: f64,
-    t_end: f64,
-    times: PyReadonlyArray1<'py, f64>,
-    rtol: f64,
-    atol: f64,
-    max_steps: usize,
-) -> PyResult<Bound<'py, PyDict>> {
-    let e = earth(rotation_rate, radius, g)?;
-    let s0 = array_in::<6>("state0", &state0)?;
-    let times = vec_in(&times);
-    let opts = options(rtol, atol, max_steps, false);
-    let run = run(py, None, || {
-        e.foucault(latitude, length, s0, t0, t_end, &times, &opts)
-    })?;
-    let d = PyDict::new(py);
-    d.set_item("t", PyArray1::from_vec(py, run.t))?;
-    d.set_item("states", rows_out(py, &run.states))?;
-    d.set_item("turn_times", PyArray1::from_vec(py, run.turn_times))?;
-    d.set_item("turn_angles", PyArray1::from_vec(py, run.turn_angles))?;
-    d.set_item(
-        "final_state",
-        PyArray1::from_vec(py, run.final_state.to_vec()),
-    )?;
-    d.set_item("evaluations", run.stats.evaluations)?;
-    Ok(d)
-}
-
 /// Jacobi's integral (N,) of (N, 6) ENU states at `latitude` (rad).
 #[pyfunction]
 fn earth_jacobi_integral<'py>(
@@ -361,43 +299,6 @@ fn earth_jacobi_integral<'py>(
         .collect::<poinsot::Result<_>>()
         .py()?;
     Ok(PyArray1::from_vec(py, out))
-}
-
-/// The measurement of a Foucault run from its turning points: {"regime", "note",
-/// "precession_rate" (None outside the regimes that define it), "sense", "theory_rate",
-/// "expected_rate", "theory_fit_rate", "turning_points"}.
-#[pyfunction]
-#[pyo3(signature = (rotation_rate, radius, g, latitude, length, state0, t0, t_end, turn_times, turn_angles))]
-#[allow(clippy::too_many_arguments)]
-fn earth_foucault_measurement<'py>(
-    py: Python<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    latitude: f64,
-    length: f64,
-    state0: PyReadonlyArray1<'py, f64>,
-    t0: f64,
-    t_end: f64,
-    turn_times: PyReadonlyArray1<'py, f64>,
-    turn_angles: PyReadonlyArray1<'py, f64>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let e = earth(rotation_rate, radius, g)?;
-    let s0 = array_in::<6>("state0", &state0)?;
-    let (tt, ta) = (vec_in(&turn_times), vec_in(&turn_angles));
-    let m = py
-        .detach(|| e.foucault_measurement(latitude, length, &s0, t0, t_end, &tt, &ta))
-        .py()?;
-    let d = PyDict::new(py);
-    d.set_item("regime", m.regime.name())?;
-    d.set_item("note", &m.note)?;
-    d.set_item("precession_rate", m.precession_rate)?;
-    d.set_item("sense", m.sense_name())?;
-    d.set_item("theory_rate", m.theory_rate)?;
-    d.set_item("expected_rate", m.expected_rate)?;
-    d.set_item("theory_fit_rate", m.theory_fit_rate)?;
-    d.set_item("turning_points", m.turning_points)?;
-    Ok(d)
 }
 
 /// Least-squares rate (rad/s) of the swing-plane angle through the turning points.
@@ -620,9 +521,6 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(earth_fall_time, m)?)?;
     m.add_function(wrap_pyfunction!(earth_drop, m)?)?;
     m.add_function(wrap_pyfunction!(earth_projectile, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_foucault_release, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_foucault, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_foucault_measurement, m)?)?;
     m.add_function(wrap_pyfunction!(earth_fit_precession_rate, m)?)?;
     m.add_function(wrap_pyfunction!(earth_jacobi_integral, m)?)?;
     m.add_function(wrap_pyfunction!(earth_foucault_swing, m)?)?;
