@@ -165,6 +165,7 @@ def frame_simulate_particle(
     force_fn: Callable[..., tuple[float, float, float]] | None, rtol: float, atol: float,
     max_steps: int,
 ) -> tuple[NDArray[np.float64], int]: ...
+def frame_particle_defaults() -> dict[str, Any]: ...
 def frame_steady_at(
     frame: NDArray[np.float64], attitude: NDArray[np.float64], t: float,
 ) -> tuple[list[NDArray[np.float64]], NDArray[np.float64]]: ...
@@ -194,33 +195,31 @@ def earth_projectile(
     latitude: float, height: float, gravity: str, rotation: bool, centrifugal: bool, rtol: float,
     atol: float, max_steps: int, samples: int,
 ) -> dict[str, Any]: ...
-def earth_foucault_release(
-    rotation_rate: float, radius: float, g: float, latitude: float, length: float, amplitude: float,
-    azimuth: float,
-) -> NDArray[np.float64]: ...
-def earth_foucault(
-    rotation_rate: float, radius: float, g: float, latitude: float, length: float,
-    state0: NDArray[np.float64], t0: float, t_end: float, times: NDArray[np.float64], rtol: float,
-    atol: float, max_steps: int,
-) -> dict[str, Any]: ...
-def earth_foucault_measurement(
-    rotation_rate: float, radius: float, g: float, latitude: float, length: float,
-    state0: NDArray[np.float64], t0: float, t_end: float, turn_times: NDArray[np.float64],
-    turn_angles: NDArray[np.float64],
-) -> dict[str, Any]: ...
 def earth_fit_precession_rate(turn_times: NDArray[np.float64], turn_angles: NDArray[np.float64]) -> float: ...
 def earth_jacobi_integral(
     rotation_rate: float, radius: float, g: float, latitude: float, states: NDArray[np.float64],
 ) -> NDArray[np.float64]: ...
-def earth_inertial_oscillation(
+def earth_foucault_swing(
+    rotation_rate: float, radius: float, g: float, latitude: float, length: float, amplitude: float,
+    azimuth: float, duration: float, samples: int, rtol: float, atol: float, max_steps: int,
+    progress: Callable[[float], Any] | None = None,
+) -> dict[str, Any]: ...
+def earth_inertial_swing(
     rotation_rate: float, radius: float, g: float, latitude: float, velocity: NDArray[np.float64],
-    t_end: float, times: NDArray[np.float64], rtol: float, atol: float, max_steps: int,
+    duration: float | None, samples: int, rtol: float, atol: float, max_steps: int,
 ) -> dict[str, Any]: ...
-def earth_flow_into_low(
-    rotation_rate: float, radius: float, g: float, latitude: float, starts: NDArray[np.float64],
-    strength: float, friction: float, t_end: float, times: NDArray[np.float64], rtol: float,
-    atol: float, max_steps: int,
+def earth_low_flow(
+    rotation_rate: float, radius: float, g: float, latitude: float, ring_radius: float, parcels: int,
+    pull: float, friction: float, duration: float, samples: int, rtol: float, atol: float,
+    max_steps: int,
 ) -> dict[str, Any]: ...
+def sample_times(t0: float, t_end: float, samples: int) -> NDArray[np.float64]: ...
+def earth_defaults() -> dict[str, dict[str, Any]]: ...
+
+SIDEREAL_RATE: float
+SOLAR_DAY_RATE: float
+MEAN_RADIUS: float
+STANDARD_GRAVITY: float
 
 # ---- special (special.rs) ----
 def special_jacobi(u: NDArray[np.float64], m: float) -> NDArray[np.float64]: ...

@@ -23,24 +23,23 @@ from ._validate import (
     as_scalar,
     public_names,
 )
-from .errors import ArgumentTypeError, PoinsotError
+from .errors import PoinsotError
 
 __all__ = ["Earth", "Fall", "Flight", "FoucaultRun", "InertialOscillation", "LowFlow",
            "SIDEREAL_RATE", "SOLAR_DAY_RATE"]
 
-SIDEREAL_RATE = 7.2921150e-5
-"""The Earth's sidereal rotation rate (rad/s), 2π / 86164.0905 s: the default."""
-SOLAR_DAY_RATE = 2.0 * np.pi / 86400.0
+SIDEREAL_RATE: float = _core.SIDEREAL_RATE
+"""The Earth's sidereal rotation rate (rad/s), 2π / 86164.0905 s: the default (the core's)."""
+SOLAR_DAY_RATE: float = _core.SOLAR_DAY_RATE
 """The unit's rate (rad/s), one turn per solar day 2π / (24·3600) s (see the errata)."""
+_MEAN_RADIUS: float = _core.MEAN_RADIUS
+_STANDARD_GRAVITY: float = _core.STANDARD_GRAVITY
 
-_DEFAULT_TOL = 1e-12
-
+# The defaults of the runs are the core's (the browser lab uses the same ones).
+_DEFAULTS = _core.earth_defaults()
+_DROP, _FOUCAULT, _INERTIAL, _LOW = (_DEFAULTS[k] for k in ("drop", "foucault", "inertial", "low"))
 
 _GRAVITY = ("uniform", "inverse-square")
-
-#: Bytes per sample of a run's output: t and a state of up to 6 numbers (and, for the flow into
-#: a low, two more rows per parcel: energy and work).
-_SAMPLE_BYTES = 8 * 8
 
 
 def _angles(value: Any, name: str, degrees: Any) -> tuple[FloatArray, tuple[int, ...]]:
@@ -53,14 +52,6 @@ def _angles(value: Any, name: str, degrees: Any) -> tuple[FloatArray, tuple[int,
 def _angle(value: Any, name: str, degrees: Any) -> float:
     x = as_scalar(value, name)
     return float(np.radians(x)) if as_flag(degrees, "degrees") else x
-
-
-def _times(duration: float, samples: Any) -> FloatArray:
-    """``samples`` evenly spaced times over [0, duration], the count checked first (type,
-    ≥ 2, and its output within the memory budget)."""
-    n = as_count(samples, "samples", 2)
-    _core.check_count("samples", n, 2, _SAMPLE_BYTES)
-    return np.linspace(0.0, duration, n)
 
 
 def _shape_out(arr: FloatArray, shape: tuple[int, ...]) -> Any:
@@ -195,7 +186,8 @@ class InertialOscillation:
         The inertial period π/(ω |sin λ|) (s; inf at the equator).
     sense:
         ``"clockwise"`` (deflected to the right: the north), ``"counterclockwise"`` (the
-        south) or ``"none"`` (the equator), from the measured rate.
+        south) or ``"none"`` (the equator: within 1e-9 of 2ω, round-off), from the measured
+        rate by the core's rule.
     """
 
     t: FloatArray = field(repr=False)
@@ -220,7 +212,8 @@ class LowFlow:
         Mean specific angular momentum about the centre (m²/s): > 0 counterclockwise.
     sense:
         ``"counterclockwise"`` (the north: cyclones), ``"clockwise"`` (the south) or
-        ``"none"`` (below round-off), from the simulated circulation.
+        ``"none"`` (within 1e-9 of radius × √(pull × radius): round-off), from the simulated
+        circulation by the core's rule.
     energy:
         (P, N): each parcel's energy per unit mass ½|v|² + ½k|r|² (J/kg; kinetic plus the
         pressure potential, k = pull / radius), which the Coriolis force leaves unchanged.
@@ -237,12 +230,6 @@ class LowFlow:
     sense: str = "none"
     energy: FloatArray = field(default_factory=lambda: np.zeros((0, 0)), repr=False)
     dissipated: FloatArray = field(default_factory=lambda: np.zeros((0, 0)), repr=False)
-
-
-def _sense(rate: float, scale: float) -> str:
-    if abs(rate) <= 1e-9 * scale:
-        return "none"
-    return "counterclockwise" if rate > 0 else "clockwise"
 
 
 class Earth:
@@ -269,8 +256,8 @@ class Earth:
 
     __slots__ = ("_rate", "_radius", "_g")
 
-    def __init__(self, rotation_rate: Any = SIDEREAL_RATE, radius: float = 6.371e6,
-                 g: float = 9.80665) -> None:
+    def __init__(self, rotation_rate: Any = SIDEREAL_RATE, radius: float = _MEAN_RADIUS,
+                 g: float = _STANDARD_GRAVITY) -> None:
         if isinstance(rotation_rate, str):
             names = {"sidereal": SIDEREAL_RATE, "solar": SOLAR_DAY_RATE}
             if rotation_rate not in names:
@@ -282,7 +269,7 @@ class Earth:
         _core.earth_omega_enu(self._rate, self._radius, self._g, np.zeros(1))  # checks the three
 
     @classmethod
-    def solar_day(cls, radius: float = 6.371e6, g: float = 9.80665) -> Earth:
+    def solar_day(cls, radius: float = _MEAN_RADIUS, g: float = _STANDARD_GRAVITY) -> Earth:
         """The unit's Earth, turning once per solar day: ω = 2π/86400 = 7.2722e-5 rad/s."""
         return cls(SOLAR_DAY_RATE, radius, g)
 
@@ -425,8 +412,8 @@ class Earth:
     # -- motions --------------------------------------------------------------------------
     def drop(self, height: float, latitude: float, degrees: bool = False, *,
              gravity: str = "uniform", rotation: bool = True, centrifugal: bool = True,
-             rtol: float = _DEFAULT_TOL, atol: float = _DEFAULT_TOL, samples: int = 201,
-             max_steps: int = 1_000_000) -> Fall:
+             rtol: float = _DROP["rtol"], atol: float = _DROP["atol"], samples: int = _DROP["samples"],
+             max_steps: int = _DROP["max_steps"]) -> Fall:
         """Drop a body from rest at ``height`` (m, > 0) at ``latitude``, integrated exactly
         (to ``rtol``) in the rotating frame until it lands:
 
@@ -457,8 +444,9 @@ class Earth:
 
     def projectile(self, speed: float, elevation: float, azimuth: float, latitude: float,
                    degrees: bool = False, *, height: float = 0.0, gravity: str = "uniform",
-                   rotation: bool = True, centrifugal: bool = True, rtol: float = _DEFAULT_TOL,
-                   atol: float = _DEFAULT_TOL, samples: int = 201, max_steps: int = 1_000_000) -> Flight:
+                   rotation: bool = True, centrifugal: bool = True, rtol: float = _DROP["rtol"],
+                   atol: float = _DROP["atol"], samples: int = _DROP["samples"],
+                   max_steps: int = _DROP["max_steps"]) -> Flight:
         """Fly a projectile launched at ``speed`` (m/s, > 0), ``elevation`` above the horizon
         and ``azimuth`` clockwise from north (0 north, 90° east) from ``height`` (m, ≥ 0) at
         ``latitude``, integrated in the rotating frame until it lands (the model of
@@ -483,10 +471,11 @@ class Earth:
         return Flight(out["time"], out["east"], out["north"], out["range"], out["downrange"],
                       out["drift"], out["t"], states[:, :3].copy(), states[:, 3:].copy())
 
-    def foucault(self, latitude: float, degrees: bool = False, *, length: float = 67.0,
-                 amplitude: float = 1.0, azimuth: float = 0.0, duration: float = 3600.0,
-                 samples: int = 1001, rtol: float = 1e-10, atol: float = 1e-12,
-                 max_steps: int = 10_000_000, progress: bool = False) -> FoucaultRun:
+    def foucault(self, latitude: float, degrees: bool = False, *, length: float = _FOUCAULT["length"],
+                 amplitude: float = _FOUCAULT["amplitude"], azimuth: float = _FOUCAULT["azimuth"],
+                 duration: float = _FOUCAULT["duration"], samples: int = _FOUCAULT["samples"],
+                 rtol: float = _FOUCAULT["rtol"], atol: float = _FOUCAULT["atol"],
+                 max_steps: int = _FOUCAULT["max_steps"], progress: bool = False) -> FoucaultRun:
         """Swing a Foucault pendulum — a spherical pendulum of ``length`` (m; default the
         Panthéon's 67 m) released from rest ``amplitude`` (m) from its rest position towards
         ``azimuth`` (clockwise from north; radians unless ``degrees``) — for ``duration`` s in
@@ -511,54 +500,40 @@ class Earth:
         lat = _angle(latitude, "latitude", degrees)
         az = _angle(azimuth, "azimuth", degrees)
         dur = as_scalar(duration, "duration")
-        if not dur > 0:
-            raise PoinsotError(f"duration: must be > 0, got {dur}")
-        times = _times(dur, samples)
+        n = as_count(samples, "samples", 2)
         progress = as_flag(progress, "progress")
         steps = as_count(max_steps, "max_steps", 1)
         tols = as_scalar(rtol, "rtol"), as_scalar(atol, "atol")
         length = as_scalar(length, "length")
-        with public_names(state0="amplitude"):
-            state = _core.earth_foucault_release(*self._p, lat, length, as_scalar(amplitude, "amplitude"), az)
-        state0 = state
-        chunks = max(1, min(100, int(np.ceil(dur / 60.0)))) if progress else 1
-        edges = np.linspace(0.0, dur, chunks + 1)
-        parts_t, parts_s, turn_t, turn_a = [], [], [], []
-        bar = None
+        amp = as_scalar(amplitude, "amplitude")
+        # The whole run is the core's: release, sample grid, integration, measurement; with a
+        # progress bar, integrated in stretches of about a minute, the bar advancing after each.
+        bar, report = None, None
         if progress:
             from rich.progress import Progress
 
             bar = Progress(transient=True)
             bar.start()
-            task = bar.add_task("Foucault pendulum", total=chunks)
+            task = bar.add_task("Foucault pendulum", total=1.0)
+
+            def report(fraction: float) -> None:
+                bar.update(task, completed=fraction)
         try:
-            for i in range(chunks):
-                a, b = edges[i], edges[i + 1]
-                sel = times[(times >= a) & ((times < b) | (i == chunks - 1))]
-                with public_names(t="duration", t_end="duration", y0="amplitude", state0="amplitude"):
-                    out = _core.earth_foucault(*self._p, lat, length, state, float(a), float(b),
-                                               np.ascontiguousarray(sel), *tols, steps)
-                parts_t.append(out["t"])
-                parts_s.append(out["states"])
-                turn_t.append(out["turn_times"])
-                turn_a.append(out["turn_angles"])
-                state = out["final_state"]
-                if bar is not None:
-                    bar.update(task, advance=1)
+            with public_names(t="duration", y0="amplitude", state0="amplitude"):
+                out = _core.earth_foucault_swing(*self._p, lat, length, amp, az, dur, n, *tols, steps, report)
         finally:
             if bar is not None:
                 bar.stop()
-        tt, ta = np.concatenate(turn_t), np.concatenate(turn_a)
-        with public_names(turn_times="duration", turn_angles="duration", state0="amplitude", t_end="duration"):
-            m = _core.earth_foucault_measurement(*self._p, lat, length, state0, 0.0, dur, tt, ta)
-        states = np.concatenate(parts_s)
-        return FoucaultRun(np.concatenate(parts_t), states[:, :3].copy(), states[:, 3:].copy(), tt, ta,
-                           m["precession_rate"], m["expected_rate"], m["sense"], m["regime"], m["note"],
-                           m["theory_rate"])
+        states = out["states"]
+        return FoucaultRun(out["t"], states[:, :3].copy(), states[:, 3:].copy(), out["turn_times"],
+                           out["turn_angles"], out["precession_rate"], out["expected_rate"], out["sense"],
+                           out["regime"], out["note"], out["theory_rate"])
 
-    def inertial_oscillation(self, latitude: float, velocity: Any = (10.0, 0.0), degrees: bool = False, *,
-                             duration: float | None = None, samples: int = 401, rtol: float = _DEFAULT_TOL,
-                             atol: float = 1e-9, max_steps: int = 1_000_000) -> InertialOscillation:
+    def inertial_oscillation(self, latitude: float, velocity: Any = tuple(_INERTIAL["velocity"]),
+                             degrees: bool = False, *, duration: float | None = None,
+                             samples: int = _INERTIAL["samples"], rtol: float = _INERTIAL["rtol"],
+                             atol: float = _INERTIAL["atol"],
+                             max_steps: int = _INERTIAL["max_steps"]) -> InertialOscillation:
         """A parcel set moving horizontally with ``velocity`` ``[v_east, v_north]`` (m/s) on a
         frictionless level surface at ``latitude``: only the Coriolis force turns it, to the
         right in the north, to the left in the south, not at all at the equator. Default
@@ -574,24 +549,20 @@ class Earth:
         v = as_float_array(velocity, "velocity")
         if v.shape != (2,):
             raise PoinsotError(f"velocity: must have shape (2,) [v_east, v_north], got {v.shape}")
-        period = float(self.inertial_period(lat))
-        dur = (2.0 * period if np.isfinite(period) else 86400.0) if duration is None else as_scalar(duration, "duration")
-        if not dur > 0:
-            raise PoinsotError(f"duration: must be > 0, got {dur}")
-        times = _times(dur, samples)
-        with public_names(t="duration", t_end="duration", y0="velocity"):
-            out = _core.earth_inertial_oscillation(*self._p, lat, np.ascontiguousarray(v), dur, times,
-                                                   as_scalar(rtol, "rtol"), as_scalar(atol, "atol"),
-                                                   as_count(max_steps, "max_steps", 1))
+        dur = None if duration is None else as_scalar(duration, "duration")
+        with public_names(t="duration", y0="velocity"):
+            out = _core.earth_inertial_swing(*self._p, lat, np.ascontiguousarray(v), dur,
+                                             as_count(samples, "samples", 2), as_scalar(rtol, "rtol"),
+                                             as_scalar(atol, "atol"), as_count(max_steps, "max_steps", 1))
         s = out["states"]
-        rate = out["turning_rate"]
-        return InertialOscillation(out["t"], s[:, :2].copy(), s[:, 2:].copy(), rate, period,
-                                   _sense(rate, 2.0 * self._rate))
+        return InertialOscillation(out["t"], s[:, :2].copy(), s[:, 2:].copy(), out["turning_rate"],
+                                   out["period"], out["sense"])
 
-    def flow_into_low(self, latitude: float, degrees: bool = False, *, radius: float = 5e5,
-                      parcels: int = 8, pull: float = 1e-3, friction: float = 1e-5,
-                      duration: float = 2 * 86400.0, samples: int = 401, rtol: float = _DEFAULT_TOL,
-                      atol: float = 1e-6, max_steps: int = 1_000_000) -> LowFlow:
+    def flow_into_low(self, latitude: float, degrees: bool = False, *, radius: float = _LOW["radius"],
+                      parcels: int = _LOW["parcels"], pull: float = _LOW["pull"],
+                      friction: float = _LOW["friction"], duration: float = _LOW["duration"],
+                      samples: int = _LOW["samples"], rtol: float = _LOW["rtol"], atol: float = _LOW["atol"],
+                      max_steps: int = _LOW["max_steps"]) -> LowFlow:
         """Parcels starting at rest on a ring of ``radius`` (m) around a low-pressure centre,
         pulled in by the pressure gradient (``pull``: its acceleration at the ring, m/s²,
         growing linearly with distance — a paraboloidal low), slowed by friction (1/s) and
@@ -605,27 +576,13 @@ class Earth:
             its ``sense``.
         """
         lat = _angle(latitude, "latitude", degrees)
-        rad = as_scalar(radius, "radius")
-        if not rad > 0:
-            raise PoinsotError(f"radius: must be > 0, got {rad}")
-        p = as_count(parcels, "parcels", 1)
-        n = as_count(samples, "samples", 2)
-        _core.check_memory("parcels", float(p) * n, _SAMPLE_BYTES)  # P tracks of n samples
-        ang = 2 * np.pi * np.arange(p) / p
-        starts = np.ascontiguousarray(np.stack([rad * np.cos(ang), rad * np.sin(ang)], axis=1))
-        dur = as_scalar(duration, "duration")
-        if not dur > 0:
-            raise PoinsotError(f"duration: must be > 0, got {dur}")
-        times = _times(dur, n)
-        strength = as_scalar(pull, "pull") / rad
-        with public_names(t="duration", t_end="duration", y0="pull", strength="pull", starts="radius"):
-            out = _core.earth_flow_into_low(*self._p, lat, starts, strength, as_scalar(friction, "friction"), dur,
-                                            times, as_scalar(rtol, "rtol"), as_scalar(atol, "atol"),
-                                            as_count(max_steps, "max_steps", 1))
+        # The ring, the pull → strength set-up, the sample grid and the sense are the core's.
+        with public_names(t="duration", y0="pull"):
+            out = _core.earth_low_flow(*self._p, lat, as_scalar(radius, "radius"), as_count(parcels, "parcels", 1),
+                                       as_scalar(pull, "pull"), as_scalar(friction, "friction"),
+                                       as_scalar(duration, "duration"), as_count(samples, "samples", 2),
+                                       as_scalar(rtol, "rtol"), as_scalar(atol, "atol"),
+                                       as_count(max_steps, "max_steps", 1))
         tracks = np.stack(out["parcels"])
-        circ = out["circulation"]
-        # Below 1e-9 of radius × the speed the pull alone would give, the circulation is
-        # round-off (the equator): no sense.
-        scale = rad * np.sqrt(as_scalar(pull, "pull") * rad)
-        return LowFlow(out["t"], tracks[:, :, :2].copy(), tracks[:, :, 2:].copy(), circ,
-                       _sense(circ, scale), np.stack(out["energy"]), np.stack(out["dissipated"]))
+        return LowFlow(out["t"], tracks[:, :, :2].copy(), tracks[:, :, 2:].copy(), out["circulation"],
+                       out["sense"], np.stack(out["energy"]), np.stack(out["dissipated"]))

@@ -27,6 +27,9 @@ from .errors import PoinsotError
 
 __all__ = ["MovingFrame", "FrameTransform", "ParticleTrajectory", "simulate_particle"]
 
+# The defaults of simulate_particle are the core's (the browser lab uses the same ones).
+_PARTICLE = _core.frame_particle_defaults()
+
 
 def _vector(value: Any, name: str) -> FloatArray:
     """A 3-vector from a vector or a scalar (broadcast to the three components)."""
@@ -314,9 +317,7 @@ class ParticleTrajectory:
         """Sample times (s), shape (N,)."""
         if isinstance(self._t, tuple):
             dur, n = self._t
-            t = np.linspace(0.0, dur, n)
-            t[-1] = dur
-            self._t = t
+            self._t = _core.sample_times(0.0, dur, n)  # the times the core integrated to
         return self._t
 
     @property
@@ -376,9 +377,9 @@ def _force_callable(force: Callable[..., Any]) -> Callable[..., tuple[float, flo
 
 
 def simulate_particle(frame: FrameLike, position: Any, velocity: Any, duration: float, *,
-                      mass: float = 1.0, force: Any = None, samples: int = 1001,
-                      t_eval: Any = None, rtol: float = 1e-10, atol: float = 1e-12,
-                      max_steps: int = 1_000_000) -> ParticleTrajectory:
+                      mass: float = _PARTICLE["mass"], force: Any = None, samples: int = _PARTICLE["samples"],
+                      t_eval: Any = None, rtol: float = _PARTICLE["rtol"], atol: float = _PARTICLE["atol"],
+                      max_steps: int = _PARTICLE["max_steps"]) -> ParticleTrajectory:
     """Integrate a particle relative to a moving frame, with every fictitious force.
 
     m (d²r/dt²)_rot = F − m R̈ − 2m ω × ṙ − m ω × (ω × r) − m ω̇ × r   (eqs. 2.5, 2.21, 2.26)

@@ -1,7 +1,9 @@
 //! Bindings of `poinsot::earth` (conversion and error mapping only). Every function takes
-//! the Earth as (rotation_rate, radius, g) and checks it in the core.
+//! the Earth as (rotation_rate, radius, g) and checks it in the core. The physical constants and
+//! the runs' defaults are the core's ([`register`] adds them to the module).
 use numpy::{PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
-use poinsot::earth::{fit_precession_rate, Earth, FallModel, Gravity};
+use poinsot::earth::{self as ea, fit_precession_rate, Earth, FallModel, Gravity, LowSetup};
+use poinsot::integrate::{sample_times, Tolerances};
 use poinsot::Vec3;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -9,11 +11,10 @@ use pyo3::types::PyDict;
 use crate::control::run;
 use crate::errors::{invalid, IntoPy};
 use crate::frames::{array_in, options, rows_in, rows_out, solution_dict, vec_in};
-use poinsot::integrate::even_times;
 use poinsot::limits::check_count;
 
 /// Bytes per sample of a trajectory in the local frame: t and the state (6).
-const SAMPLE_BYTES: usize = 7 * std::mem::size_of::<f64>();
+const SAMPLE_BYTES: usize = poinsot::frames::PARTICLE_BYTES_PER_SAMPLE;
 
 fn earth(rotation_rate: f64, radius: f64, g: f64) -> PyResult<Earth> {
     Earth::new(rotation_rate, radius, g).py()
@@ -216,7 +217,11 @@ fn earth_drop<'py>(
     let m = model(gravity, rotation, centrifugal, rtol, atol, max_steps)?;
     check_count("samples", samples, 2, SAMPLE_BYTES).py()?;
     let fall = run(py, None, || e.drop(height, latitude, &m))?;
-    let d = solution_dict(py, &fall.solution, &even_times(0.0, fall.time, samples))?;
+    let d = solution_dict(
+        py,
+        &fall.solution,
+        &sample_times(0.0, fall.time, samples, SAMPLE_BYTES).py()?,
+    )?;
     d.set_item("time", fall.time)?;
     d.set_item("east", fall.east)?;
     d.set_item("north", fall.north)?;
@@ -251,7 +256,11 @@ fn earth_projectile<'py>(
     let fl = run(py, None, || {
         e.projectile(speed, elevation, azimuth, latitude, height, &m)
     })?;
-    let d = solution_dict(py, &fl.solution, &even_times(0.0, fl.time, samples))?;
+    let d = solution_dict(
+        py,
+        &fl.solution,
+        &sample_times(0.0, fl.time, samples, SAMPLE_BYTES).py()?,
+    )?;
     for (k, v) in [
         ("time", fl.time),
         ("east", fl.east),
@@ -262,68 +271,6 @@ fn earth_projectile<'py>(
     ] {
         d.set_item(k, v)?;
     }
-    Ok(d)
-}
-
-/// The released state (6,) of a Foucault pendulum: `amplitude` from its rest position.
-#[pyfunction]
-#[pyo3(signature = (rotation_rate, radius, g, latitude, length, amplitude, azimuth))]
-#[allow(clippy::too_many_arguments)]
-fn earth_foucault_release<'py>(
-    py: Python<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    latitude: f64,
-    length: f64,
-    amplitude: f64,
-    azimuth: f64,
-) -> PyResult<Bound<'py, PyArray1<f64>>> {
-    let e = earth(rotation_rate, radius, g)?;
-    Ok(PyArray1::from_vec(
-        py,
-        e.foucault_release(latitude, length, amplitude, azimuth)
-            .py()?
-            .to_vec(),
-    ))
-}
-
-/// One stretch of a Foucault run: {"t", "states", "turn_times", "turn_angles", "final_state", ...}.
-#[pyfunction]
-#[pyo3(signature = (rotation_rate, radius, g, latitude, length, state0, t0, t_end, times, rtol, atol, max_steps))]
-#[allow(clippy::too_many_arguments)]
-fn earth_foucault<'py>(
-    py: Python<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    latitude: f64,
-    length: f64,
-    state0: PyReadonlyArray1<'py, f64>,
-    t0: f64,
-    t_end: f64,
-    times: PyReadonlyArray1<'py, f64>,
-    rtol: f64,
-    atol: f64,
-    max_steps: usize,
-) -> PyResult<Bound<'py, PyDict>> {
-    let e = earth(rotation_rate, radius, g)?;
-    let s0 = array_in::<6>("state0", &state0)?;
-    let times = vec_in(&times);
-    let opts = options(rtol, atol, max_steps, false);
-    let run = run(py, None, || {
-        e.foucault(latitude, length, s0, t0, t_end, &times, &opts)
-    })?;
-    let d = PyDict::new(py);
-    d.set_item("t", PyArray1::from_vec(py, run.t))?;
-    d.set_item("states", rows_out(py, &run.states))?;
-    d.set_item("turn_times", PyArray1::from_vec(py, run.turn_times))?;
-    d.set_item("turn_angles", PyArray1::from_vec(py, run.turn_angles))?;
-    d.set_item(
-        "final_state",
-        PyArray1::from_vec(py, run.final_state.to_vec()),
-    )?;
-    d.set_item("evaluations", run.stats.evaluations)?;
     Ok(d)
 }
 
@@ -347,32 +294,68 @@ fn earth_jacobi_integral<'py>(
     Ok(PyArray1::from_vec(py, out))
 }
 
-/// The measurement of a Foucault run from its turning points: {"regime", "note",
-/// "precession_rate" (None outside the regimes that define it), "sense", "theory_rate",
-/// "expected_rate", "theory_fit_rate", "turning_points"}.
+/// Least-squares rate (rad/s) of the swing-plane angle through the turning points.
 #[pyfunction]
-#[pyo3(signature = (rotation_rate, radius, g, latitude, length, state0, t0, t_end, turn_times, turn_angles))]
+fn earth_fit_precession_rate(
+    turn_times: PyReadonlyArray1<'_, f64>,
+    turn_angles: PyReadonlyArray1<'_, f64>,
+) -> PyResult<f64> {
+    fit_precession_rate(&vec_in(&turn_times), &vec_in(&turn_angles)).py()
+}
+
+/// The tolerances of a run from the Python keywords.
+fn tolerances(rtol: f64, atol: f64, max_steps: usize) -> Tolerances {
+    Tolerances {
+        rtol,
+        atol,
+        max_steps,
+    }
+}
+
+/// A Foucault run as the core makes it (`Earth::foucault_swing`, in stretches reporting to
+/// `progress(fraction)` when given: `Earth::foucault_swing_in`): {"t", "states", "turn_times",
+/// "turn_angles", "state0", "evaluations", and the measurement's "regime", "note",
+/// "precession_rate", "sense", "theory_rate", "expected_rate", "theory_fit_rate",
+/// "turning_points"}.
+#[pyfunction]
+#[pyo3(signature = (rotation_rate, radius, g, latitude, length, amplitude, azimuth, duration, samples, rtol, atol, max_steps, progress=None))]
 #[allow(clippy::too_many_arguments)]
-fn earth_foucault_measurement<'py>(
+fn earth_foucault_swing<'py>(
     py: Python<'py>,
     rotation_rate: f64,
     radius: f64,
     g: f64,
     latitude: f64,
     length: f64,
-    state0: PyReadonlyArray1<'py, f64>,
-    t0: f64,
-    t_end: f64,
-    turn_times: PyReadonlyArray1<'py, f64>,
-    turn_angles: PyReadonlyArray1<'py, f64>,
+    amplitude: f64,
+    azimuth: f64,
+    duration: f64,
+    samples: usize,
+    rtol: f64,
+    atol: f64,
+    max_steps: usize,
+    progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let e = earth(rotation_rate, radius, g)?;
-    let s0 = array_in::<6>("state0", &state0)?;
-    let (tt, ta) = (vec_in(&turn_times), vec_in(&turn_angles));
-    let m = py
-        .detach(|| e.foucault_measurement(latitude, length, &s0, t0, t_end, &tt, &ta))
-        .py()?;
+    let tol = tolerances(rtol, atol, max_steps);
+    // With a `progress(fraction)` callable: the core's run in stretches, reporting after each.
+    let stretches = match progress {
+        Some(_) => ea::foucault_stretches(duration),
+        None => 1,
+    };
+    let swing = run(py, progress.as_ref(), || {
+        e.foucault_swing_in(
+            latitude, length, amplitude, azimuth, duration, samples, &tol, stretches,
+        )
+    })?;
+    let (r, m) = (swing.run, swing.measurement);
     let d = PyDict::new(py);
+    d.set_item("t", PyArray1::from_vec(py, r.t))?;
+    d.set_item("states", rows_out(py, &r.states))?;
+    d.set_item("turn_times", PyArray1::from_vec(py, r.turn_times))?;
+    d.set_item("turn_angles", PyArray1::from_vec(py, r.turn_angles))?;
+    d.set_item("state0", PyArray1::from_vec(py, swing.state0.to_vec()))?;
+    d.set_item("evaluations", r.stats.evaluations)?;
     d.set_item("regime", m.regime.name())?;
     d.set_item("note", &m.note)?;
     d.set_item("precession_rate", m.precession_rate)?;
@@ -384,85 +367,140 @@ fn earth_foucault_measurement<'py>(
     Ok(d)
 }
 
-/// Least-squares rate (rad/s) of the swing-plane angle through the turning points.
+/// An inertial oscillation as the core makes it (`Earth::inertial_swing`; `duration` None: the
+/// core's default): {"t", "states" (N, 4), "turning_rate", "period", "sense"}.
 #[pyfunction]
-fn earth_fit_precession_rate(
-    turn_times: PyReadonlyArray1<'_, f64>,
-    turn_angles: PyReadonlyArray1<'_, f64>,
-) -> PyResult<f64> {
-    fit_precession_rate(&vec_in(&turn_times), &vec_in(&turn_angles)).py()
-}
-
-/// An inertial oscillation: {"t", "states" (N, 4), "turning_rate"}.
-#[pyfunction]
-#[pyo3(signature = (rotation_rate, radius, g, latitude, velocity, t_end, times, rtol, atol, max_steps))]
+#[pyo3(signature = (rotation_rate, radius, g, latitude, velocity, duration, samples, rtol, atol, max_steps))]
 #[allow(clippy::too_many_arguments)]
-fn earth_inertial_oscillation<'py>(
+fn earth_inertial_swing<'py>(
     py: Python<'py>,
     rotation_rate: f64,
     radius: f64,
     g: f64,
     latitude: f64,
     velocity: PyReadonlyArray1<'py, f64>,
-    t_end: f64,
-    times: PyReadonlyArray1<'py, f64>,
+    duration: Option<f64>,
+    samples: usize,
     rtol: f64,
     atol: f64,
     max_steps: usize,
 ) -> PyResult<Bound<'py, PyDict>> {
     let e = earth(rotation_rate, radius, g)?;
     let v = array_in::<2>("velocity", &velocity)?;
-    let times = vec_in(&times);
-    let opts = options(rtol, atol, max_steps, false);
-    let run = run(py, None, || {
-        e.inertial_oscillation(latitude, v, t_end, &times, &opts)
+    let tol = tolerances(rtol, atol, max_steps);
+    let swing = run(py, None, || {
+        e.inertial_swing(latitude, v, duration, samples, &tol)
     })?;
     let d = PyDict::new(py);
-    d.set_item("t", PyArray1::from_vec(py, run.t))?;
-    d.set_item("states", rows_out(py, &run.states))?;
-    d.set_item("turning_rate", run.turning_rate)?;
+    d.set_item("t", PyArray1::from_vec(py, swing.run.t))?;
+    d.set_item("states", rows_out(py, &swing.run.states))?;
+    d.set_item("turning_rate", swing.run.turning_rate)?;
+    d.set_item("period", swing.period)?;
+    d.set_item("sense", swing.sense.name())?;
     Ok(d)
 }
 
-/// Parcels flowing into a low: {"t", "parcels" (P, N, 4), "circulation"}.
+/// Parcels on a ring flowing into a low as the core sets them up (`Earth::low_flow`):
+/// {"t", "parcels" (P arrays (N, 4)), "circulation", "sense", "energy", "dissipated"}.
+/// `ring_radius` is the ring's radius (the Python argument `radius`).
 #[pyfunction]
-#[pyo3(signature = (rotation_rate, radius, g, latitude, starts, strength, friction, t_end, times, rtol, atol, max_steps))]
+#[pyo3(signature = (rotation_rate, radius, g, latitude, ring_radius, parcels, pull, friction, duration, samples, rtol, atol, max_steps))]
 #[allow(clippy::too_many_arguments)]
-fn earth_flow_into_low<'py>(
+fn earth_low_flow<'py>(
     py: Python<'py>,
     rotation_rate: f64,
     radius: f64,
     g: f64,
     latitude: f64,
-    starts: PyReadonlyArray2<'py, f64>,
-    strength: f64,
+    ring_radius: f64,
+    parcels: usize,
+    pull: f64,
     friction: f64,
-    t_end: f64,
-    times: PyReadonlyArray1<'py, f64>,
+    duration: f64,
+    samples: usize,
     rtol: f64,
     atol: f64,
     max_steps: usize,
 ) -> PyResult<Bound<'py, PyDict>> {
     let e = earth(rotation_rate, radius, g)?;
-    let starts = rows_in::<2>("starts", &starts)?;
-    let times = vec_in(&times);
-    let opts = options(rtol, atol, max_steps, false);
-    let run = run(py, None, || {
-        e.flow_into_low(latitude, &starts, strength, friction, t_end, &times, &opts)
+    let setup = LowSetup {
+        radius: ring_radius,
+        parcels,
+        pull,
+        friction,
+    };
+    let tol = tolerances(rtol, atol, max_steps);
+    let flow = run(py, None, || {
+        e.low_flow(latitude, &setup, duration, samples, &tol)
     })?;
     let d = PyDict::new(py);
-    d.set_item("t", PyArray1::from_vec(py, run.t))?;
+    d.set_item("t", PyArray1::from_vec(py, flow.run.t))?;
     let parcels: Vec<Bound<'py, PyArray2<f64>>> =
-        run.parcels.iter().map(|p| rows_out(py, p)).collect();
+        flow.run.parcels.iter().map(|p| rows_out(py, p)).collect();
     d.set_item("parcels", parcels)?;
-    d.set_item("circulation", run.circulation)?;
-    let rows = |v: &Vec<Vec<f64>>| -> Vec<Bound<'py, PyArray1<f64>>> {
-        v.iter()
-            .map(|r| PyArray1::from_vec(py, r.clone()))
-            .collect()
+    d.set_item("circulation", flow.run.circulation)?;
+    d.set_item("sense", flow.sense.name())?;
+    let rows = |v: Vec<Vec<f64>>| -> Vec<Bound<'py, PyArray1<f64>>> {
+        v.into_iter().map(|r| PyArray1::from_vec(py, r)).collect()
     };
-    d.set_item("energy", rows(&run.energy))?;
-    d.set_item("dissipated", rows(&run.dissipated))?;
+    d.set_item("energy", rows(flow.run.energy))?;
+    d.set_item("dissipated", rows(flow.run.dissipated))?;
+    Ok(d)
+}
+
+/// `samples` evenly spaced times from `t0` to `t_end`, the core's grid (`sample_times`: the
+/// count checked, ≥ 2 and within the memory budget, naming `samples`).
+#[pyfunction]
+#[pyo3(name = "sample_times")]
+fn py_sample_times<'py>(
+    py: Python<'py>,
+    t0: f64,
+    t_end: f64,
+    samples: usize,
+) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    Ok(PyArray1::from_vec(
+        py,
+        sample_times(t0, t_end, samples, ea::FOUCAULT_BYTES_PER_SAMPLE).py()?,
+    ))
+}
+
+/// A tolerances dict {"rtol", "atol", "max_steps"}.
+fn tolerances_dict<'py>(py: Python<'py>, t: &Tolerances) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("rtol", t.rtol)?;
+    d.set_item("atol", t.atol)?;
+    d.set_item("max_steps", t.max_steps)?;
+    Ok(d)
+}
+
+/// The defaults of the Earth's runs, the core's: {"drop", "foucault", "inertial", "low"}, each a
+/// dict of the Python keywords' defaults (tolerances, samples, and the run's own arguments).
+#[pyfunction]
+fn earth_defaults(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
+    let drop = tolerances_dict(py, &ea::DROP_TOLERANCES)?;
+    drop.set_item("samples", ea::DROP_SAMPLES)?;
+    let foucault = tolerances_dict(py, &ea::FOUCAULT_TOLERANCES)?;
+    foucault.set_item("length", ea::FOUCAULT_LENGTH)?;
+    foucault.set_item("amplitude", ea::FOUCAULT_AMPLITUDE)?;
+    foucault.set_item("azimuth", ea::FOUCAULT_AZIMUTH)?;
+    foucault.set_item("duration", ea::FOUCAULT_DURATION)?;
+    foucault.set_item("samples", ea::FOUCAULT_SAMPLES)?;
+    let inertial = tolerances_dict(py, &ea::INERTIAL_TOLERANCES)?;
+    inertial.set_item("velocity", ea::INERTIAL_VELOCITY.to_vec())?;
+    inertial.set_item("samples", ea::INERTIAL_SAMPLES)?;
+    let low = tolerances_dict(py, &ea::LOW_TOLERANCES)?;
+    let setup = LowSetup::default();
+    low.set_item("radius", setup.radius)?;
+    low.set_item("parcels", setup.parcels)?;
+    low.set_item("pull", setup.pull)?;
+    low.set_item("friction", setup.friction)?;
+    low.set_item("duration", ea::LOW_DURATION)?;
+    low.set_item("samples", ea::LOW_SAMPLES)?;
+    let d = PyDict::new(py);
+    d.set_item("drop", drop)?;
+    d.set_item("foucault", foucault)?;
+    d.set_item("inertial", inertial)?;
+    d.set_item("low", low)?;
     Ok(d)
 }
 
@@ -476,12 +514,17 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(earth_fall_time, m)?)?;
     m.add_function(wrap_pyfunction!(earth_drop, m)?)?;
     m.add_function(wrap_pyfunction!(earth_projectile, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_foucault_release, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_foucault, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_foucault_measurement, m)?)?;
     m.add_function(wrap_pyfunction!(earth_fit_precession_rate, m)?)?;
     m.add_function(wrap_pyfunction!(earth_jacobi_integral, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_inertial_oscillation, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_flow_into_low, m)?)?;
+    m.add_function(wrap_pyfunction!(earth_foucault_swing, m)?)?;
+    m.add_function(wrap_pyfunction!(earth_inertial_swing, m)?)?;
+    m.add_function(wrap_pyfunction!(earth_low_flow, m)?)?;
+    m.add_function(wrap_pyfunction!(py_sample_times, m)?)?;
+    m.add_function(wrap_pyfunction!(earth_defaults, m)?)?;
+    // The physical constants (the defaults of `poinsot.Earth`).
+    m.add("SIDEREAL_RATE", ea::SIDEREAL_RATE)?;
+    m.add("SOLAR_DAY_RATE", ea::SOLAR_DAY_RATE)?;
+    m.add("MEAN_RADIUS", ea::MEAN_RADIUS)?;
+    m.add("STANDARD_GRAVITY", ea::STANDARD_GRAVITY)?;
     Ok(())
 }

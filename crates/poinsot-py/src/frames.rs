@@ -265,11 +265,13 @@ fn frame_simulate_particle<'py>(
     };
     let times = match &times {
         Some(t) => vec_in(t),
-        None => {
-            poinsot::limits::check_count("samples", samples, 2, 7 * std::mem::size_of::<f64>())
-                .py()?;
-            poinsot::integrate::even_times(t0, t_end, samples)
-        }
+        None => poinsot::integrate::sample_times(
+            t0,
+            t_end,
+            samples,
+            poinsot::frames::PARTICLE_BYTES_PER_SAMPLE,
+        )
+        .py()?,
     };
     let opts = options(rtol, atol, max_steps, false);
     let error: RefCell<Option<PyErr>> = RefCell::new(None);
@@ -379,8 +381,23 @@ fn frame_steady_at<'py>(
     Ok((vecs, mat3_out(py, att)))
 }
 
+/// The defaults of `simulate_particle`, the core's (`poinsot::frames::PARTICLE_*`):
+/// {"rtol", "atol", "max_steps", "mass", "samples"}.
+#[pyfunction]
+fn frame_particle_defaults(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
+    let t = poinsot::frames::PARTICLE_TOLERANCES;
+    let d = PyDict::new(py);
+    d.set_item("rtol", t.rtol)?;
+    d.set_item("atol", t.atol)?;
+    d.set_item("max_steps", t.max_steps)?;
+    d.set_item("mass", poinsot::frames::PARTICLE_MASS)?;
+    d.set_item("samples", poinsot::frames::PARTICLE_SAMPLES)?;
+    Ok(d)
+}
+
 /// Registers this file's functions on the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(frame_particle_defaults, m)?)?;
     m.add_function(wrap_pyfunction!(frame_to_fixed, m)?)?;
     m.add_function(wrap_pyfunction!(frame_to_moving, m)?)?;
     m.add_function(wrap_pyfunction!(frame_fictitious_forces, m)?)?;

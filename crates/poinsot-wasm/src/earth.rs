@@ -2,100 +2,18 @@
 //! gravity, the Coriolis acceleration, the Foucault pendulum, inertial oscillations and the flow
 //! into a low. Local frame ENU, latitude in radians north-positive.
 //!
-//! The runs ([`Foucault`], [`LowFlow`]) mirror the Python API's `Earth.foucault` and
-//! `Earth.flow_into_low`: the same arguments, defaults, sample grid (numpy's `linspace`) and
-//! tolerances, so that the page and Python show the same numbers. They keep their samples and
-//! give the state at any time by continuing the core's integration from the last sample
-//! before it (a step or two), so that an animation can be evaluated — or seeked — anywhere.
+//! The runs ([`Foucault`], [`LowFlow`], [`InertialOscillation`]) are the core's
+//! (`Earth::foucault_swing`, `Earth::low_flow`, `Earth::inertial_swing`): the same tolerances,
+//! sample grid, set-up and sense as Python's `Earth.foucault`, `Earth.flow_into_low` and
+//! `Earth.inertial_oscillation`, written once in the core. They keep their samples and give the
+//! state at any time by the core's continuation of the run from the last sample before it, so
+//! that an animation can be evaluated — or seeked — anywhere.
 
-use crate::args::{check_bytes, count, index_in, number, numbers, Count, Number, Numbers};
-use crate::convert::{finite, finite1, renamed, renamed_all, vec_out, Failure, Out};
-use poinsot::earth::{self as ea, FallModel, FoucaultMeasurement, FoucaultRun, Gravity, LowRun};
+use crate::args::{count, index_in, number, numbers, Count, Number, Numbers};
+use crate::convert::{finite, finite1, renamed_all, vec_out, Failure, Out};
+use poinsot::earth::{self as ea, FallModel, Gravity, LowSetup};
 use poinsot::frames::ParticleState;
-use poinsot::integrate::Options;
 use wasm_bindgen::prelude::wasm_bindgen;
-
-/// Tolerances of the Foucault run: the Python API's defaults (`Earth.foucault(rtol=1e-10,
-/// atol=1e-12, max_steps=10_000_000)`).
-pub const FOUCAULT_RTOL: f64 = 1e-10;
-/// Absolute tolerance of the Foucault run (m, m/s; the Python default).
-pub const FOUCAULT_ATOL: f64 = 1e-12;
-/// Step limit of the Foucault run (the Python default).
-pub const FOUCAULT_MAX_STEPS: usize = 10_000_000;
-/// Tolerances of the flow into a low and of inertial oscillations: the Python defaults
-/// (`rtol=1e-12`; `atol=1e-6` for the low, `1e-9` for the inertial oscillation, in m and m/s).
-pub const WINDS_RTOL: f64 = 1e-12;
-/// Absolute tolerance of the flow into a low (the Python default).
-pub const LOW_ATOL: f64 = 1e-6;
-/// Absolute tolerance of the inertial oscillation (the Python default).
-pub const INERTIAL_ATOL: f64 = 1e-9;
-/// Step limit of the winds (the Python default).
-pub const WINDS_MAX_STEPS: usize = 1_000_000;
-
-/// `n` evenly spaced times from 0 to `duration`, computed as numpy's `linspace(0, duration, n)`
-/// (`i · (duration / (n − 1))`, the last exactly `duration`), so that the samples are Python's.
-fn linspace(duration: f64, n: usize) -> Vec<f64> {
-    let step = duration / (n - 1) as f64;
-    let mut t: Vec<f64> = (0..n).map(|i| i as f64 * step).collect();
-    t[n - 1] = duration;
-    t
-}
-
-/// Bytes per sample of a Foucault run: the sample time (8) and the run's time and state (8 + 48).
-const BYTES_PER_FOUCAULT_SAMPLE: usize = 8 + 8 + 48;
-/// Bytes per sample of a run of parcels, shared by all parcels: the sample time and the run's time.
-const BYTES_PER_SAMPLE: usize = 8 + 8;
-/// Bytes per parcel and sample of the winds: the state (32), its energy and the work against
-/// friction (8 + 8).
-const BYTES_PER_PARCEL_SAMPLE: usize = 32 + 8 + 8;
-
-fn check_run(duration: f64, samples: usize) -> Out<()> {
-    if !(duration.is_finite() && duration > 0.0) {
-        return Err(Failure::invalid(
-            "duration",
-            &format!("must be finite and > 0, got {duration}"),
-        ));
-    }
-    if samples < 2 {
-        return Err(Failure::invalid(
-            "samples",
-            &format!("must be >= 2, got {samples}"),
-        ));
-    }
-    Ok(())
-}
-
-/// The Python API's sense of a rate or circulation: `"none"` within `1e-9 · scale` of zero,
-/// else counterclockwise (> 0, seen from above) or clockwise (`poinsot.earth._sense`).
-fn sense(value: f64, scale: f64) -> String {
-    if value.abs() <= 1e-9 * scale {
-        "none".into()
-    } else if value > 0.0 {
-        "counterclockwise".into()
-    } else {
-        "clockwise".into()
-    }
-}
-
-/// The index of the last of the increasing `times` at or before `t`, or an error naming `t`
-/// outside `[times[0], times[last]]`.
-fn sample_before(times: &[f64], t: f64) -> Out<usize> {
-    poinsot::error::check_finite("t", &[t])?;
-    let (lo, hi) = (times[0], times[times.len() - 1]);
-    if !(t >= lo && t <= hi) {
-        return Err(Failure::invalid(
-            "t",
-            &format!("must lie in [{lo}, {hi}], the run, got {t}"),
-        ));
-    }
-    Ok(times.partition_point(|&ti| ti <= t).saturating_sub(1))
-}
-
-/// Tolerances of the exact drop: the Python API's defaults (`Earth.drop(rtol=1e-12,
-/// atol=1e-12, max_steps=1_000_000)`), so that the page and Python give the same numbers.
-pub const DROP_TOL: f64 = 1e-12;
-/// Step limit of the exact drop (the Python default).
-pub const DROP_MAX_STEPS: usize = 1_000_000;
 
 /// The rotating Earth (`poinsot.Earth` in Python).
 #[wasm_bindgen]
@@ -143,7 +61,8 @@ impl Fall {
 #[wasm_bindgen]
 impl Earth {
     /// An Earth of angular rate `rotation_rate` (rad/s), `radius` (m) and surface gravity `g`
-    /// (m/s²). The Python defaults are [`Earth::sidereal_rate`], 6.371e6 m and 9.80665 m/s².
+    /// (m/s²). The defaults (the core's, as in Python) are [`Earth::sidereal_rate`],
+    /// [`Earth::mean_radius`] and [`Earth::standard_gravity`].
     #[wasm_bindgen(constructor)]
     pub fn new(
         #[wasm_bindgen(unchecked_param_type = "number")] rotation_rate: Number,
@@ -222,8 +141,8 @@ impl Earth {
         finite1("height", "fall time", self.inner.fall_time(height)?)
     }
 
-    /// The exact drop from rest at `height` (m) and `latitude` (rad), with the Python API's
-    /// defaults (uniform gravity, Coriolis and centrifugal terms, tolerances [`DROP_TOL`]).
+    /// The exact drop from rest at `height` (m) and `latitude` (rad), with the core's defaults
+    /// (uniform gravity, Coriolis and centrifugal terms, tolerances `DROP_TOLERANCES`).
     pub fn drop(
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] height: Number,
@@ -235,13 +154,7 @@ impl Earth {
             gravity: Gravity::Uniform,
             rotation: true,
             centrifugal: true,
-            options: Options {
-                rtol: DROP_TOL,
-                atol: DROP_TOL,
-                max_steps: DROP_MAX_STEPS,
-                dense: true,
-                ..Options::default()
-            },
+            options: ea::DROP_TOLERANCES.options(true),
         };
         // The core names the integration's end (`t_end`, from the fall time) and its time `t`:
         // both come from `height`.
@@ -332,42 +245,14 @@ impl Earth {
 #[wasm_bindgen]
 #[derive(Debug, Clone)]
 pub struct Foucault {
-    earth: ea::Earth,
-    latitude: f64,
-    length: f64,
-    run: FoucaultRun,
-    measurement: FoucaultMeasurement,
+    inner: ea::FoucaultSwing,
 }
 
 impl Foucault {
-    fn options() -> Options {
-        Options {
-            rtol: FOUCAULT_RTOL,
-            atol: FOUCAULT_ATOL,
-            max_steps: FOUCAULT_MAX_STEPS,
-            dense: false,
-            ..Options::default()
-        }
-    }
-
     fn state_at(&self, t: f64) -> Out<ParticleState> {
-        let i = sample_before(&self.run.t, t)?;
-        if self.run.t[i] == t {
-            return Ok(self.run.states[i]);
-        }
-        let rest = self
-            .earth
-            .foucault(
-                self.latitude,
-                self.length,
-                self.run.states[i],
-                self.run.t[i],
-                t,
-                &[t],
-                &Self::options(),
-            )
-            .map_err(renamed_all(&[("t_end", "t"), ("max_steps", "t")]).otherwise("t"))?;
-        Ok(rest.states[0])
+        self.inner
+            .state_at(t)
+            .map_err(renamed_all(&[("max_steps", "t")]).otherwise("t"))
     }
 }
 
@@ -376,52 +261,53 @@ impl Foucault {
     /// The length of the run (s).
     #[wasm_bindgen(getter)]
     pub fn duration(&self) -> f64 {
-        self.run.t[self.run.t.len() - 1]
+        self.inner.duration()
     }
     /// The swing plane's rate of turn fitted through the turning points (rad/s,
     /// counterclockwise seen from above positive), or `undefined` where the run shows no
     /// steady turn (see `regime`): `FoucaultRun.precession_rate`.
     #[wasm_bindgen(getter, js_name = precessionRate)]
     pub fn precession_rate(&self) -> Option<f64> {
-        self.measurement.precession_rate
+        self.inner.measurement.precession_rate
     }
     /// The unit's rate −ω sin λ (rad/s): `FoucaultRun.expected_rate`.
     #[wasm_bindgen(getter, js_name = expectedRate)]
     pub fn expected_rate(&self) -> f64 {
-        self.measurement.expected_rate
+        self.inner.measurement.expected_rate
     }
     /// The exact small-swing theory's mean rate (rad/s), or `undefined` without a stable rest
     /// position: `FoucaultRun.theory_rate`.
     #[wasm_bindgen(getter, js_name = theoryRate)]
     pub fn theory_rate(&self) -> Option<f64> {
-        self.measurement.theory_rate
+        self.inner.measurement.theory_rate
     }
     /// `"clockwise"`, `"counterclockwise"`, `"none"` (the plane does not turn) or
     /// `"undefined"` (no rate): `FoucaultRun.sense`.
     #[wasm_bindgen(getter)]
     pub fn sense(&self) -> String {
-        self.measurement.sense_name().into()
+        self.inner.measurement.sense_name().into()
     }
     /// Whether the run shows a steadily turning swing plane: `"precessing"`, `"still"`,
     /// `"too_short"`, `"unsteady"`, `"wide_swing"`, `"not_a_swing"` or `"no_rest"`:
     /// `FoucaultRun.regime`.
     #[wasm_bindgen(getter)]
     pub fn regime(&self) -> String {
-        self.measurement.regime.name().into()
+        self.inner.measurement.regime.name().into()
     }
     /// One sentence on the regime, with its figures: `FoucaultRun.regime_note`.
     #[wasm_bindgen(getter, js_name = regimeNote)]
     pub fn regime_note(&self) -> String {
-        self.measurement.note.clone()
+        self.inner.measurement.note.clone()
     }
     /// The sample times (s).
     pub fn times(&self) -> Vec<f64> {
-        self.run.t.clone()
+        self.inner.run.t.clone()
     }
     /// The bob's positions at the sample times, `[x0, y0, z0, x1, ...]` (ENU, m, origin at the
     /// point of suspension).
     pub fn positions(&self) -> Vec<f64> {
-        self.run
+        self.inner
+            .run
             .states
             .iter()
             .flat_map(|s| [s[0], s[1], s[2]])
@@ -430,13 +316,13 @@ impl Foucault {
     /// The times of the turning points of the swing (s).
     #[wasm_bindgen(js_name = turnTimes)]
     pub fn turn_times(&self) -> Vec<f64> {
-        self.run.turn_times.clone()
+        self.inner.run.turn_times.clone()
     }
     /// The bob's direction at each turning point, counterclockwise from east seen from above
     /// (rad).
     #[wasm_bindgen(js_name = turnAngles)]
     pub fn turn_angles(&self) -> Vec<f64> {
-        self.run.turn_angles.clone()
+        self.inner.run.turn_angles.clone()
     }
     /// The bob's state `[x, y, z, vx, vy, vz]` at time `t` (s, in [0, duration]): the sample at
     /// `t`, or the core's integration continued from the last sample before `t`.
@@ -458,7 +344,7 @@ impl Foucault {
         finite1(
             "t",
             "Jacobi integral",
-            self.earth.jacobi_integral(self.latitude, &s)?,
+            self.inner.earth.jacobi_integral(self.inner.latitude, &s)?,
         )
     }
 }
@@ -469,24 +355,7 @@ impl Foucault {
 #[wasm_bindgen]
 #[derive(Debug, Clone)]
 pub struct LowFlow {
-    earth: ea::Earth,
-    latitude: f64,
-    strength: f64,
-    friction: f64,
-    scale: f64,
-    run: LowRun,
-}
-
-impl LowFlow {
-    fn options() -> Options {
-        Options {
-            rtol: WINDS_RTOL,
-            atol: LOW_ATOL,
-            max_steps: WINDS_MAX_STEPS,
-            dense: false,
-            ..Options::default()
-        }
-    }
+    inner: ea::LowFlow,
 }
 
 #[wasm_bindgen]
@@ -494,80 +363,49 @@ impl LowFlow {
     /// The length of the run (s).
     #[wasm_bindgen(getter)]
     pub fn duration(&self) -> f64 {
-        self.run.t[self.run.t.len() - 1]
+        self.inner.duration()
     }
     /// The number of parcels.
     #[wasm_bindgen(getter)]
     pub fn parcels(&self) -> usize {
-        self.run.parcels.len()
+        self.inner.run.parcels.len()
     }
     /// The mean specific angular momentum about the centre over the run (m²/s, > 0
     /// counterclockwise): `LowFlow.circulation`.
     #[wasm_bindgen(getter)]
     pub fn circulation(&self) -> f64 {
-        self.run.circulation
+        self.inner.run.circulation
     }
     /// `"counterclockwise"`, `"clockwise"` or `"none"`, from the simulated circulation, with the
-    /// Python API's round-off threshold (1e-9 · radius · √(pull · radius)): `LowFlow.sense`.
+    /// core's round-off threshold (`Sense::of`: 1e-9 · radius · √(pull · radius)):
+    /// `LowFlow.sense`.
     #[wasm_bindgen(getter)]
     pub fn sense(&self) -> String {
-        sense(self.run.circulation, self.scale)
+        self.inner.sense.name().into()
     }
     /// The sample times (s).
     pub fn times(&self) -> Vec<f64> {
-        self.run.t.clone()
+        self.inner.run.t.clone()
     }
     /// The track of parcel `index`: `[x0, y0, x1, y1, ...]` (m, east and north) at the samples.
     pub fn track(
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] index: Count,
     ) -> Out<Vec<f64>> {
-        let p = &self.run.parcels[index_in("index", &index, self.run.parcels.len(), "parcels")?];
+        let parcels = &self.inner.run.parcels;
+        let p = &parcels[index_in("index", &index, parcels.len(), "parcels")?];
         Ok(p.iter().flat_map(|s| [s[0], s[1]]).collect())
     }
     /// Every parcel at time `t` (s, in [0, duration]): six numbers each, `[x, y, vx, vy, energy,
-    /// dissipated]` (m, m/s, J/kg), from the samples or by continuing the core's integration
+    /// dissipated]` (m, m/s, J/kg), from the samples or by the core's continuation of the run
     /// from the last sample before `t`; `energy + dissipated` is each parcel's initial energy.
     pub fn at(&self, #[wasm_bindgen(unchecked_param_type = "number")] t: Number) -> Out<Vec<f64>> {
         let t = number("t", &t)?;
-        let i = sample_before(&self.run.t, t)?;
-        let n = self.run.parcels.len();
-        let mut out = Vec::with_capacity(6 * n);
-        if self.run.t[i] == t {
-            for p in 0..n {
-                let s = self.run.parcels[p][i];
-                out.extend_from_slice(&[
-                    s[0],
-                    s[1],
-                    s[2],
-                    s[3],
-                    self.run.energy[p][i],
-                    self.run.dissipated[p][i],
-                ]);
-            }
-        } else {
-            let from: Vec<[f64; 4]> = self.run.parcels.iter().map(|p| p[i]).collect();
-            let rest = self
-                .earth
-                .flow_into_low_from(
-                    self.latitude,
-                    &from,
-                    self.run.t[i],
-                    self.strength,
-                    self.friction,
-                    t,
-                    &[t],
-                    &Self::options(),
-                )
-                .map_err(renamed_all(&[("t_end", "t"), ("max_steps", "t")]).otherwise("t"))?;
-            for p in 0..n {
-                let s = rest.parcels[p][0];
-                // The work against friction before the sample plus the work since.
-                let lost = self.run.dissipated[p][i] + rest.dissipated[p][0];
-                out.extend_from_slice(&[s[0], s[1], s[2], s[3], rest.energy[p][0], lost]);
-            }
-        }
-        finite("t", "parcels' states", out)
+        let rows = self
+            .inner
+            .at(t)
+            .map_err(renamed_all(&[("max_steps", "t")]).otherwise("t"))?;
+        finite("t", "parcels' states", rows.concat())
     }
 }
 
@@ -575,7 +413,7 @@ impl LowFlow {
 #[wasm_bindgen]
 #[derive(Debug, Clone)]
 pub struct InertialOscillation {
-    run: ea::InertialRun,
+    inner: ea::InertialSwing,
 }
 
 #[wasm_bindgen]
@@ -584,11 +422,16 @@ impl InertialOscillation {
     /// positive; the theory says −2 ω sin λ).
     #[wasm_bindgen(getter, js_name = turningRate)]
     pub fn turning_rate(&self) -> f64 {
-        self.run.turning_rate
+        self.inner.run.turning_rate
     }
     /// The track `[x0, y0, x1, y1, ...]` (m) at the samples.
     pub fn track(&self) -> Vec<f64> {
-        self.run.states.iter().flat_map(|s| [s[0], s[1]]).collect()
+        self.inner
+            .run
+            .states
+            .iter()
+            .flat_map(|s| [s[0], s[1]])
+            .collect()
     }
 }
 
@@ -597,7 +440,7 @@ impl Earth {
     /// Swing a Foucault pendulum of `length` (m) released from rest `amplitude` (m) from its
     /// rest position towards `azimuth` (rad, clockwise from north) at `latitude` (rad) for
     /// `duration` (s), sampled at `samples` even times, and measure its swing plane:
-    /// `Earth.foucault` with the Python defaults.
+    /// `Earth.foucault` with the core's tolerances (`FOUCAULT_TOLERANCES`), as in Python.
     pub fn foucault(
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
@@ -612,66 +455,34 @@ impl Earth {
         let amplitude = number("amplitude", &amplitude)?;
         let azimuth = number("azimuth", &azimuth)?;
         let duration = number("duration", &duration)?;
-        // The memory budget is checked here until the core's own check (`poinsot::limits`, in
-        // `Earth::foucault`) lands; it must come before the sample times are made.
-        let samples = count("samples", &samples, BYTES_PER_FOUCAULT_SAMPLE)?;
-        check_run(duration, samples)?;
-        // The core checks the release state it computes (`state0`): from `length` and `amplitude`.
-        let state0 = self
-            .inner
-            .foucault_release(latitude, length, amplitude, azimuth)
-            .map_err(renamed("state0", "length, amplitude"))?;
-        let times = linspace(duration, samples);
-        let run = self
-            .inner
-            .foucault(
-                latitude,
-                length,
-                state0,
-                0.0,
-                duration,
-                &times,
-                &Foucault::options(),
-            )
-            .map_err(
-                renamed_all(&[
-                    ("state0", "length, amplitude"),
-                    ("t_end", "duration"),
-                    ("max_steps", "duration"),
-                ])
-                .otherwise("latitude, length, amplitude, azimuth, duration, samples"),
-            )?;
+        // The count is parsed (a whole number within the memory budget) before the core checks
+        // it again and makes the sample times.
+        let samples = count("samples", &samples, ea::FOUCAULT_BYTES_PER_SAMPLE)?;
         // Too short a run has too few turning points to fit a rate: the measurement says so in
-        // its regime; its own errors name the run's arguments.
-        let measurement = self
+        // its regime. The core names the user's arguments; the step limit is the browser's.
+        let inner = self
             .inner
-            .foucault_measurement(
+            .foucault_swing(
                 latitude,
                 length,
-                &state0,
-                0.0,
+                amplitude,
+                azimuth,
                 duration,
-                &run.turn_times,
-                &run.turn_angles,
+                samples,
+                &ea::FOUCAULT_TOLERANCES,
             )
             .map_err(
-                renamed_all(&[("turn_times", "duration"), ("turn_angles", "duration")])
+                renamed_all(&[("state0", "length, amplitude"), ("max_steps", "duration")])
                     .otherwise("latitude, length, amplitude, azimuth, duration, samples"),
             )?;
-        Ok(Foucault {
-            earth: self.inner,
-            latitude,
-            length,
-            run,
-            measurement,
-        })
+        Ok(Foucault { inner })
     }
 
     /// Parcels starting at rest on a ring of `radius` (m) — `parcels` of them, the first due east,
     /// counterclockwise — pulled into a low at the centre by `pull` (m/s² at the ring, growing
     /// linearly with distance), slowed by `friction` (1/s) and turned by the Coriolis force at
     /// `latitude` (rad), for `duration` (s) sampled at `samples` even times:
-    /// `Earth.flow_into_low` with the Python defaults.
+    /// `Earth.flow_into_low` with the core's tolerances (`LOW_TOLERANCES`), as in Python.
     #[wasm_bindgen(js_name = flowIntoLow)]
     #[allow(clippy::too_many_arguments)]
     pub fn flow_into_low(
@@ -686,82 +497,40 @@ impl Earth {
     ) -> Out<LowFlow> {
         let latitude = number("latitude", &latitude)?;
         let radius = number("radius", &radius)?;
-        // The memory budget is checked here until the core's own check (`poinsot::limits`, in
-        // `Earth::flow_into_low`) lands; it must come before the starts and times are made.
-        let parcels = count("parcels", &parcels, 16 + BYTES_PER_PARCEL_SAMPLE)?;
+        // The counts are parsed (whole numbers within the memory budget) before the core checks
+        // them again, with their product, and makes the ring and the sample times.
+        let parcels = count(
+            "parcels",
+            &parcels,
+            ea::LOW_BYTES_PER_SAMPLE + ea::LOW_BYTES_PER_PARCEL_SAMPLE,
+        )?;
         let pull = number("pull", &pull)?;
         let friction = number("friction", &friction)?;
         let duration = number("duration", &duration)?;
         let samples = count(
             "samples",
             &samples,
-            BYTES_PER_SAMPLE + BYTES_PER_PARCEL_SAMPLE,
+            ea::LOW_BYTES_PER_SAMPLE + ea::LOW_BYTES_PER_PARCEL_SAMPLE,
         )?;
-        let (np, ns) = (parcels as f64, samples as f64);
-        check_bytes(
-            "samples",
-            &format!("{parcels} parcels × {samples} samples"),
-            np * ns * BYTES_PER_PARCEL_SAMPLE as f64 + ns * BYTES_PER_SAMPLE as f64,
-        )?;
-        if !(radius.is_finite() && radius > 0.0) {
-            return Err(Failure::invalid(
-                "radius",
-                &format!("must be finite and > 0, got {radius}"),
-            ));
-        }
-        if parcels < 1 {
-            return Err(Failure::invalid(
-                "parcels",
-                &format!("must be >= 1, got {parcels}"),
-            ));
-        }
-        poinsot::error::check_positive("pull", pull)?;
-        check_run(duration, samples)?;
-        let starts: Vec<[f64; 2]> = (0..parcels)
-            .map(|i| {
-                let a = 2.0 * std::f64::consts::PI * i as f64 / parcels as f64;
-                [radius * a.cos(), radius * a.sin()]
-            })
-            .collect();
-        let times = linspace(duration, samples);
-        let strength = pull / radius;
-        let run = self
-            .inner
-            .flow_into_low(
-                latitude,
-                &starts,
-                strength,
-                friction,
-                duration,
-                &times,
-                &LowFlow::options(),
-            )
-            .map_err(
-                renamed_all(&[
-                    ("strength", "pull, radius"),
-                    ("t_end", "duration"),
-                    ("max_steps", "duration"),
-                ])
-                .otherwise("latitude, radius, parcels, pull, friction, duration, samples"),
-            )?;
-        finite1(
-            "latitude, radius, parcels, pull, friction, duration, samples",
-            "circulation",
-            run.circulation,
-        )?;
-        Ok(LowFlow {
-            earth: self.inner,
-            latitude,
-            strength,
+        let setup = LowSetup {
+            radius,
+            parcels,
+            pull,
             friction,
-            scale: radius * (pull * radius).sqrt(),
-            run,
-        })
+        };
+        let args = "latitude, radius, parcels, pull, friction, duration, samples";
+        let inner = self
+            .inner
+            .low_flow(latitude, &setup, duration, samples, &ea::LOW_TOLERANCES)
+            .map_err(renamed_all(&[("max_steps", "duration")]).otherwise(args))?;
+        finite1(args, "circulation", inner.run.circulation)?;
+        Ok(LowFlow { inner })
     }
 
     /// A parcel set moving with `[v_east, v_north]` (m/s) on a frictionless level surface at
     /// `latitude` (rad) for `duration` (s), sampled at `samples` even times:
-    /// `Earth.inertial_oscillation` with the Python defaults.
+    /// `Earth.inertial_oscillation` with the core's tolerances (`INERTIAL_TOLERANCES`), as in
+    /// Python.
     #[wasm_bindgen(js_name = inertialOscillation)]
     pub fn inertial_oscillation(
         &self,
@@ -773,9 +542,7 @@ impl Earth {
         let latitude = number("latitude", &latitude)?;
         let velocity = numbers("velocity", &velocity)?;
         let duration = number("duration", &duration)?;
-        // The memory budget is checked here until the core's own check (`poinsot::limits`, in
-        // `Earth::inertial_oscillation`) lands; it must come before the sample times are made.
-        let samples = count("samples", &samples, BYTES_PER_SAMPLE + 32)?;
+        let samples = count("samples", &samples, ea::INERTIAL_BYTES_PER_SAMPLE)?;
         let v: [f64; 2] = match velocity.as_slice() {
             [a, b] => [*a, *b],
             _ => {
@@ -788,27 +555,19 @@ impl Earth {
                 ))
             }
         };
-        check_run(duration, samples)?;
-        let opts = Options {
-            rtol: WINDS_RTOL,
-            atol: INERTIAL_ATOL,
-            max_steps: WINDS_MAX_STEPS,
-            dense: false,
-            ..Options::default()
-        };
-        let run = self
+        let args = "latitude, velocity, duration, samples";
+        let inner = self
             .inner
-            .inertial_oscillation(latitude, v, duration, &linspace(duration, samples), &opts)
-            .map_err(
-                renamed_all(&[("t_end", "duration"), ("max_steps", "duration")])
-                    .otherwise("latitude, velocity, duration, samples"),
-            )?;
-        finite1(
-            "latitude, velocity, duration, samples",
-            "turning rate",
-            run.turning_rate,
-        )?;
-        Ok(InertialOscillation { run })
+            .inertial_swing(
+                latitude,
+                v,
+                Some(duration),
+                samples,
+                &ea::INERTIAL_TOLERANCES,
+            )
+            .map_err(renamed_all(&[("max_steps", "duration")]).otherwise(args))?;
+        finite1(args, "turning rate", inner.run.turning_rate)?;
+        Ok(InertialOscillation { inner })
     }
 
     /// The period of inertial oscillations π/(ω |sin λ|) (s); `Infinity` at the equator (the
@@ -910,12 +669,13 @@ mod tests {
     }
 
     #[test]
-    fn linspace_is_numpys() {
-        let t = linspace(120.0, 1201);
-        assert_eq!(t[0], 0.0);
-        assert_eq!(t[1200], 120.0);
-        assert_eq!(t[7], 7.0 * (120.0 / 1200.0));
-        assert_eq!(linspace(1.0, 2), vec![0.0, 1.0]);
+    fn sample_times_are_the_cores() {
+        let run = earth()
+            .foucault(0.8, 10.0, 1.0, 0.0, 120.0, 1201.0)
+            .unwrap();
+        let core = poinsot::integrate::sample_times(0.0, 120.0, 1201, 8).unwrap();
+        assert_eq!(run.times(), core);
+        assert_eq!((run.times()[0], run.times()[1200]), (0.0, 120.0));
     }
 
     #[test]

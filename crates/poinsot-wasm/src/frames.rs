@@ -5,17 +5,7 @@
 use crate::args::{number, numbers_each, vector, Number, Numbers};
 use crate::convert::{finite, finite1, mat_out, renamed_all, vec_out, Out};
 use poinsot::frames as fr;
-use poinsot::integrate::Options;
 use wasm_bindgen::prelude::wasm_bindgen;
-
-/// Tolerances of `simulateParticle`: the Python API's defaults
-/// (`simulate_particle(rtol=1e-10, atol=1e-12, max_steps=1_000_000)`, no dense output), so that
-/// the page and Python give the same numbers.
-pub const PARTICLE_RTOL: f64 = 1e-10;
-/// Absolute tolerance of `simulateParticle` (the Python default).
-pub const PARTICLE_ATOL: f64 = 1e-12;
-/// Step limit of `simulateParticle` (the Python default).
-pub const PARTICLE_MAX_STEPS: usize = 1_000_000;
 
 /// Bytes per time of `simulateParticle`: the copy of the time (8), the core's time and state
 /// (8 + 48) and the flat output (48).
@@ -384,7 +374,8 @@ impl SpringParticle {
 /// from t = 0 to `duration` (s), with every fictitious force, and returns the states
 /// `[x, y, z, vx, vy, vz]` (moving components, m and m/s) at the times `t_eval` (increasing, in
 /// [0, duration]) one after another (6 numbers per time). `position` and `velocity` are r and
-/// (dr/dt)_rot at t = 0. Tolerances: the Python defaults ([`PARTICLE_RTOL`], [`PARTICLE_ATOL`]).
+/// (dr/dt)_rot at t = 0. Tolerances: the core's defaults (`frames::PARTICLE_TOLERANCES`), as in
+/// Python.
 #[wasm_bindgen(js_name = simulateParticle)]
 pub fn simulate_particle(
     frame: &MovingFrame,
@@ -405,13 +396,7 @@ pub fn simulate_particle(
     poinsot::error::check_non_negative("duration", duration)?;
     let t_eval = numbers_each("t_eval", &t_eval, BYTES_PER_TIME)?;
     let motion = fr::SteadyMotion::new(frame.inner)?;
-    let opts = Options {
-        rtol: PARTICLE_RTOL,
-        atol: PARTICLE_ATOL,
-        max_steps: PARTICLE_MAX_STEPS,
-        dense: false,
-        ..Options::default()
-    };
+    let opts = fr::PARTICLE_TOLERANCES.options(false);
     let scan = particle
         .simulate_at(&motion, r0, v0, duration, &t_eval, &opts)
         .map_err(

@@ -11,6 +11,7 @@ mod pendulum;
 mod pendulum_measurement;
 mod pendulum_theory;
 mod planet;
+mod runs;
 mod winds;
 
 pub use fall::{Fall, FallModel, Flight, Gravity};
@@ -23,5 +24,14 @@ pub use pendulum_theory::{FoucaultModes, FoucaultTheory, LinearSwing};
 pub use planet::{
     check_latitude, Earth, EffectiveGravity, MEAN_RADIUS, SIDEREAL_RATE, SOLAR_DAY_RATE,
     STANDARD_GRAVITY,
+};
+pub use runs::{
+    foucault_stretches, parcel_ring, FoucaultSwing, InertialSwing, LowFlow, LowSetup, DROP_SAMPLES,
+    DROP_TOLERANCES, FOUCAULT_AMPLITUDE, FOUCAULT_AZIMUTH, FOUCAULT_BYTES_PER_SAMPLE,
+    FOUCAULT_DURATION, FOUCAULT_LENGTH, FOUCAULT_MAX_STRETCHES, FOUCAULT_SAMPLES, FOUCAULT_STRETCH,
+    FOUCAULT_TOLERANCES, INERTIAL_BYTES_PER_SAMPLE, INERTIAL_EQUATOR_DURATION, INERTIAL_PERIODS,
+    INERTIAL_SAMPLES, INERTIAL_TOLERANCES, INERTIAL_VELOCITY, LOW_BYTES_PER_PARCEL_SAMPLE,
+    LOW_BYTES_PER_SAMPLE, LOW_DURATION, LOW_FRICTION, LOW_PARCELS, LOW_PULL, LOW_RADIUS,
+    LOW_SAMPLES, LOW_TOLERANCES, SENSE_THRESHOLD,
 };
 pub use winds::{InertialRun, LowRun};

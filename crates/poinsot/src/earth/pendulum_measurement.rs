@@ -82,7 +82,9 @@ impl FoucaultRegime {
     }
 }
 
-/// The sense in which a swing plane turns, seen from above.
+/// The sense in which a swing plane, a parcel or a flow turns, seen from above. [`Sense::of`]
+/// classifies a measured rate or circulation: no sense within [`super::SENSE_THRESHOLD`]
+/// (1e-9) of its scale, round-off.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Sense {
     /// A negative rate: clockwise seen from above (the north).

@@ -5,11 +5,15 @@
 //! Notation of the unit: primed quantities belong to the fixed (inertial) frame, unprimed to
 //! the moving frame; `R` is the moving origin, `ω` the moving frame's angular velocity.
 
+mod defaults;
 mod kinematics;
 mod motion;
 mod particle;
 mod spring;
 
+pub use defaults::{
+    PARTICLE_BYTES_PER_SAMPLE, PARTICLE_MASS, PARTICLE_SAMPLES, PARTICLE_TOLERANCES,
+};
 pub use kinematics::{
     AccelerationTerms, FictitiousForces, FictitiousTerms, FixedMotion, MovingFrame, RelativeMotion,
 };

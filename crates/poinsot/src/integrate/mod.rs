@@ -25,8 +25,8 @@ pub use composition::{
     compose, composition_coefficients, SymmetricStep, KAHAN_LI_6, TRIPLE_JUMP_4,
 };
 pub use dop853::{dop853, dop853_scan, dop853_until, Dop853, Scan};
-pub use grid::even_times;
-pub use options::{Crossing, Options, Stats, MIN_RTOL};
+pub use grid::{even_times, sample_before, sample_times};
+pub use options::{Crossing, Options, Stats, Tolerances, MIN_RTOL};
 pub use rk4::{rk4, rk4_step};
 pub use solution::{DenseStep, EventHit, Solution};
 pub use state::{OdeState, OdeSystem};

@@ -43,6 +43,31 @@ pub struct Options {
     pub dense: bool,
 }
 
+/// The tolerances and step limit of one kind of run: the defaults of its `rtol`, `atol` and
+/// `max_steps` arguments.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tolerances {
+    /// Relative tolerance of the adaptive integration.
+    pub rtol: f64,
+    /// Absolute tolerance (in the units of the state: m and m/s).
+    pub atol: f64,
+    /// Step limit: a run needing more is refused before it starts.
+    pub max_steps: usize,
+}
+
+impl Tolerances {
+    /// The integrator's options with these tolerances (`dense`: keep the dense output).
+    pub fn options(self, dense: bool) -> Options {
+        Options {
+            rtol: self.rtol,
+            atol: self.atol,
+            max_steps: self.max_steps,
+            dense,
+            ..Options::default()
+        }
+    }
+}
+
 impl Default for Options {
     fn default() -> Self {
         Self {
