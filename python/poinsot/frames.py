@@ -22,10 +22,19 @@ from typing import Any, Union
 import numpy as np
 
 from . import _core
-from ._validate import FloatArray, as_count, as_float_array, as_matrices, as_scalar, public_names
+from ._validate import (
+    FloatArray,
+    as_count,
+    as_float_array,
+    as_matrices,
+    as_scalar,
+    as_vectors,
+    public_names,
+    shaped,
+)
 from .errors import PoinsotError
 
-__all__ = ["MovingFrame", "FrameTransform", "ParticleTrajectory", "simulate_particle"]
+__all__ = ["MovingFrame", "FrameTransform", "ParticleTrajectory", "SpringParticle", "simulate_particle"]
 
 # The defaults of simulate_particle are the core's (the browser lab uses the same ones).
 _PARTICLE = _core.frame_particle_defaults()
@@ -379,7 +388,7 @@ def _force_callable(force: Callable[..., Any]) -> Callable[..., tuple[float, flo
 def simulate_particle(frame: FrameLike, position: Any, velocity: Any, duration: float, *,
                       mass: float = _PARTICLE["mass"], force: Any = None, samples: int = _PARTICLE["samples"],
                       t_eval: Any = None, rtol: float = _PARTICLE["rtol"], atol: float = _PARTICLE["atol"],
-                      max_steps: int = _PARTICLE["max_steps"]) -> ParticleTrajectory:
+                      max_steps: int = _PARTICLE["max_steps"], stiffness: float = 0.0) -> ParticleTrajectory:
     """Integrate a particle relative to a moving frame, with every fictitious force.
 
     m (d²r/dt²)_rot = F − m R̈ − 2m ω × ṙ − m ω × (ω × r) − m ω̇ × r   (eqs. 2.5, 2.21, 2.26)
@@ -402,6 +411,9 @@ def simulate_particle(frame: FrameLike, position: Any, velocity: Any, duration: 
     force:
         The true force F in moving components (N): None (free particle), a constant (3,)
         vector (integrated entirely in Rust: fast), or a callable ``force(t, r, v) -> (3,)``.
+    stiffness:
+        k (N/m, ≥ 0) of an isotropic spring −k r anchored at the frame's origin, added to
+        ``force`` and integrated in Rust (default 0: no spring); see :class:`SpringParticle`.
     samples:
         Number of evenly spaced output times, both ends included (≥ 2); ignored if ``t_eval``
         is given.
@@ -454,5 +466,108 @@ def simulate_particle(frame: FrameLike, position: Any, velocity: Any, duration: 
     at = atol if type(atol) is float else _fast_scalar(atol, "atol")
     with public_names(t="duration", t_end="duration", y0="force", times="t_eval"):
         states, evaluations = _core.frame_simulate_particle(
-            packed, frame_fn, m, r0, v0, 0.0, dur, n, times, f_const, f_fn, rt, at, steps)
+            packed, frame_fn, m, r0, v0, 0.0, dur, n, times, f_const, f_fn, rt, at, steps,
+            stiffness if type(stiffness) is float else _fast_scalar(stiffness, "stiffness"))
     return ParticleTrajectory(times if times is not None else (dur, n), states, frame, evaluations)
+
+
+class SpringParticle:
+    """A particle of ``mass`` m (kg, > 0) on an isotropic linear spring of ``stiffness`` k (N/m,
+    ≥ 0; 0 is a free particle), anchored at the origin shared by the fixed frame and a frame
+    turning about it (R = 0).
+
+    The spring force F = −k r holds in either frame's components and its potential ½ k |r|² is the
+    same function of position in both. In the fixed frame the orbit is an ellipse centred on the
+    origin at the angular frequency √(k/m); seen from a turntable it becomes a rosette, and the
+    Jacobi integral J = ½ m |ṙ|² + ½ k |r|² − ½ m |ω × r|² (the centrifugal potential, eq. 2.28)
+    is conserved while the frame turns uniformly. The rules (validation, the force, the
+    integrals) are the core's (``poinsot::frames::SpringParticle``), the same as the browser
+    lab's.
+
+    Examples
+    --------
+    >>> import poinsot as ps
+    >>> p = ps.SpringParticle(mass=2.0, stiffness=8.0)     # orbits at √(k/m) = 2 rad/s
+    >>> p.force([0.5, 0.0, 0.0])
+    array([-4., -0., -0.])
+    >>> table = ps.MovingFrame(angular_velocity=[0, 0, 1.0])
+    >>> run = p.simulate(table, [1.0, 0, 0], [0, 0, 0], 3.0, samples=4)
+    >>> run.position.shape
+    (4, 3)
+    """
+
+    __slots__ = ("_core",)
+
+    def __init__(self, mass: float, stiffness: float) -> None:
+        self._core = _core.SpringParticleCore(_fast_scalar(mass, "mass"), _fast_scalar(stiffness, "stiffness"))
+
+    @property
+    def mass(self) -> float:
+        """m (kg)."""
+        return self._core.mass
+
+    @property
+    def stiffness(self) -> float:
+        """k (N/m)."""
+        return self._core.stiffness
+
+    def force(self, position: Any) -> FloatArray:
+        """F = −k r (N) at ``position`` r (m), shape (..., 3), in the components of ``position``."""
+        rows, lead = as_vectors(position, "position")
+        return self._core.force(rows).reshape(lead + (3,))
+
+    def acceleration(self, position: Any) -> FloatArray:
+        """F / m = −(k/m) r (m/s²) at ``position`` (m), shape (..., 3): in the fixed frame the
+        particle's whole acceleration (eq. 2.25)."""
+        rows, lead = as_vectors(position, "position")
+        return self._core.acceleration(rows).reshape(lead + (3,))
+
+    def potential(self, position: Any) -> Any:
+        """U = ½ k |r|² (J) at ``position`` (m), shape (..., 3) → (...)."""
+        rows, lead = as_vectors(position, "position")
+        return shaped(np.asarray(self._core.potential(rows)), lead)
+
+    def energy(self, position: Any, velocity: Any) -> Any:
+        """E = ½ m |ṙ'|² + ½ k |r'|² (J) from the fixed-frame ``position`` r' (m) and ``velocity``
+        ṙ' (m/s), shapes (..., 3) → (...). Conserved along any motion (eq. 2.25)."""
+        (r, v), lead = _pairs(position, velocity)
+        return shaped(np.asarray(self._core.energy(r, v)), lead)
+
+    def jacobi_integral(self, frame: MovingFrame, position: Any, velocity: Any) -> Any:
+        """J = ½ m |(dr/dt)_rot|² + ½ k |r|² − ½ m |ω × r|² (J) in the rotating ``frame`` (a
+        :class:`MovingFrame` about the spring's anchor), from the relative ``position`` (m) and
+        ``velocity`` (m/s) in moving components, shapes (..., 3) → (...). Conserved while the
+        frame turns uniformly (ω̇ = 0); with ω = 0 it is :meth:`energy`."""
+        if not isinstance(frame, MovingFrame):
+            raise PoinsotError(f"frame: must be a MovingFrame, got {type(frame).__name__}")
+        (r, v), lead = _pairs(position, velocity)
+        return shaped(np.asarray(self._core.jacobi_integral(frame._state, frame._attitude, r, v)), lead)
+
+    def simulate(self, frame: FrameLike, position: Any, velocity: Any, duration: float, *,
+                 force: Any = None, samples: int = _PARTICLE["samples"], t_eval: Any = None,
+                 rtol: float = _PARTICLE["rtol"], atol: float = _PARTICLE["atol"],
+                 max_steps: int = _PARTICLE["max_steps"]) -> ParticleTrajectory:
+        """Integrate the particle relative to ``frame`` with every fictitious force and the
+        spring force, in the core: :func:`simulate_particle` with this ``mass`` and
+        ``stiffness`` (``force`` adds a further true force; the other arguments as there)."""
+        return simulate_particle(frame, position, velocity, duration, mass=self.mass,
+                                 stiffness=self.stiffness, force=force, samples=samples,
+                                 t_eval=t_eval, rtol=rtol, atol=atol, max_steps=max_steps)
+
+    def __repr__(self) -> str:
+        return f"SpringParticle(mass={self.mass!r}, stiffness={self.stiffness!r})"
+
+
+def _pairs(position: Any, velocity: Any) -> tuple[tuple[FloatArray, FloatArray], tuple[int, ...]]:
+    """Positions and velocities (..., 3) broadcast together, as (N, 3) rows and the lead shape."""
+    r = as_float_array(position, "position")
+    v = as_float_array(velocity, "velocity")
+    for arr, name in ((r, "position"), (v, "velocity")):
+        if arr.ndim == 0 or arr.shape[-1] != 3:
+            raise PoinsotError(f"{name}: must have shape (..., 3), got {arr.shape}")
+    try:
+        r, v = np.broadcast_arrays(r, v)
+    except ValueError as exc:
+        raise PoinsotError(f"velocity: shape {v.shape} does not broadcast with position's {r.shape}") from exc
+    lead = r.shape[:-1]
+    return (np.ascontiguousarray(r.reshape(-1, 3)), np.ascontiguousarray(v.reshape(-1, 3))), lead

@@ -110,6 +110,10 @@ VALID_FOR: dict[str, dict[str, Any]] = {
     "simulate_particle": {"frame": FRAME, "position": [1.0, 0.0, 0.0], "velocity": [0.0, 1.0, 0.0],
                           "duration": 1.0},
     "MovingFrame.fictitious_forces": {"mass": 2.0},
+    "SpringParticle.__init__": {"mass": 2.0, "stiffness": 3.0},
+    "SpringParticle.jacobi_integral": {"frame": FRAME},
+    "SpringParticle.simulate": {"frame": FRAME, "position": [1.0, 0.0, 0.0], "velocity": [0.0, 1.0, 0.0],
+                                "duration": 1.0},
     "Earth.projectile": {"height": 0.0, "rotation": True},
     "Earth.drop": {"height": 100.0, "rotation": True},
     "Earth.foucault": {"duration": 30.0, "samples": 11, "max_steps": 100_000, "progress": False},
@@ -164,6 +168,7 @@ INSTANCES: dict[str, Callable[[], Any]] = {
     "FreeSymmetricTop": lambda: ps.FreeSymmetricTop(1.0, 2.0, [0.3, 0.0, 1.0]),
     "FreeRigidBody": lambda: ps.FreeRigidBody([1.0, 2.0, 3.0], [1.0, 0.1, 1.0]),
     "HeavyTop": lambda: ps.HeavyTop(1.0, 0.5, 1.0, 0.5, psi_dot=6.0),
+    "SpringParticle": lambda: ps.SpringParticle(2.0, 3.0),
 }
 
 #: Numbers that may be infinite by documented design, as (qualified name, field).

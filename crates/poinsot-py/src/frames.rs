@@ -7,7 +7,9 @@ use std::cell::RefCell;
 
 use numpy::{PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
 use poinsot::frames::ParticleState;
-use poinsot::frames::{simulate_particle_at, FrameMotion, MovingFrame, SteadyMotion};
+use poinsot::frames::{
+    simulate_particle_at, FrameMotion, MovingFrame, SpringParticle, SteadyMotion,
+};
 use poinsot::integrate::{Scan, Solution};
 use poinsot::{Mat3, Vec3};
 use pyo3::prelude::*;
@@ -227,7 +229,7 @@ impl FrameMotion for PyFrame<'_, '_> {
 /// constant (3,) vector in moving components plus, optionally, a callable
 /// `(t, x, y, z, vx, vy, vz) -> (fx, fy, fz)`.
 #[pyfunction]
-#[pyo3(signature = (frame, frame_fn, mass, position, velocity, t0, t_end, samples, times, force, force_fn, rtol, atol, max_steps))]
+#[pyo3(signature = (frame, frame_fn, mass, position, velocity, t0, t_end, samples, times, force, force_fn, rtol, atol, max_steps, stiffness = 0.0))]
 #[allow(clippy::too_many_arguments)]
 fn frame_simulate_particle<'py>(
     py: Python<'py>,
@@ -245,7 +247,10 @@ fn frame_simulate_particle<'py>(
     rtol: f64,
     atol: f64,
     max_steps: usize,
+    stiffness: f64,
 ) -> PyResult<ScanOut<'py>> {
+    // The spring −k r anchored at the origin (0 for stiffness 0), checked by the core.
+    let spring = SpringParticle::new(mass, stiffness).py()?;
     let r0 = v3(&vec3("position", &position)?);
     let v0 = v3(&vec3("velocity", &velocity)?);
     let f_const = v3(&vec3("force", &force)?);
@@ -286,7 +291,7 @@ fn frame_simulate_particle<'py>(
                 t0,
                 t_end,
                 &times,
-                |_t, _r, _v| f_const,
+                |_t, r, _v| f_const + spring.force(r),
                 &opts,
             )
         };
@@ -303,12 +308,12 @@ fn frame_simulate_particle<'py>(
     } else {
         let force_call = |t: f64, r: &Vec3, v: &Vec3| -> Vec3 {
             match &force_fn {
-                None => f_const,
+                None => f_const + spring.force(r),
                 Some(func) => match func
                     .call1((t, r.x, r.y, r.z, v.x, v.y, v.z))
                     .and_then(|o| o.extract::<(f64, f64, f64)>())
                 {
-                    Ok((a, b, c)) => f_const + Vec3::new(a, b, c),
+                    Ok((a, b, c)) => f_const + spring.force(r) + Vec3::new(a, b, c),
                     Err(e) => {
                         error.borrow_mut().get_or_insert(e);
                         Vec3::repeat(f64::NAN)
@@ -396,7 +401,165 @@ fn frame_particle_defaults(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
 }
 
 /// Registers this file's functions on the module.
+/// A particle of `mass` (kg) on an isotropic spring of `stiffness` (N/m) anchored at the common
+/// origin of the fixed and the rotating frame (`poinsot::frames::SpringParticle`).
+#[pyclass(name = "SpringParticleCore", module = "poinsot._core", frozen)]
+struct SpringParticleCore {
+    inner: SpringParticle,
+}
+
+#[pymethods]
+impl SpringParticleCore {
+    #[new]
+    fn new(mass: f64, stiffness: f64) -> PyResult<Self> {
+        Ok(Self {
+            inner: SpringParticle::new(mass, stiffness).py()?,
+        })
+    }
+    #[getter]
+    fn mass(&self) -> f64 {
+        self.inner.mass()
+    }
+    #[getter]
+    fn stiffness(&self) -> f64 {
+        self.inner.stiffness()
+    }
+    /// (N, 3) forces −k r (N) at (N, 3) positions (m).
+    fn force<'py>(
+        &self,
+        py: Python<'py>,
+        position: PyReadonlyArray2<'py, f64>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let r = finite_rows("position", &position)?;
+        let out = map_rows(&r, |x| a3(&self.inner.force(&v3(x))));
+        Ok(rows_out(py, &finite_out("position", "force", out)?))
+    }
+    /// (N, 3) accelerations −(k/m) r (m/s²) at (N, 3) positions (m).
+    fn acceleration<'py>(
+        &self,
+        py: Python<'py>,
+        position: PyReadonlyArray2<'py, f64>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let r = finite_rows("position", &position)?;
+        let out = map_rows(&r, |x| a3(&self.inner.acceleration(&v3(x))));
+        Ok(rows_out(py, &finite_out("position", "acceleration", out)?))
+    }
+    /// (N,) potentials ½ k |r|² (J) at (N, 3) positions (m).
+    fn potential(&self, position: PyReadonlyArray2<'_, f64>) -> PyResult<Vec<f64>> {
+        let r = finite_rows("position", &position)?;
+        r.iter()
+            .map(|x| finite_value("position", "potential", self.inner.potential(&v3(x))))
+            .collect()
+    }
+    /// (N,) fixed-frame energies (J) of (N, 3) positions (m) and velocities (m/s).
+    fn energy(
+        &self,
+        position: PyReadonlyArray2<'_, f64>,
+        velocity: PyReadonlyArray2<'_, f64>,
+    ) -> PyResult<Vec<f64>> {
+        let (r, v) = finite_pairs(&position, &velocity)?;
+        r.iter()
+            .zip(&v)
+            .map(|(a, b)| {
+                let e = self.inner.energy(&v3(a), &v3(b));
+                finite_value(self.culprit(a, b), "energy", e)
+            })
+            .collect()
+    }
+    /// (N,) Jacobi integrals (J) in the frame (15 floats, attitude) of (N, 3) relative positions
+    /// (m) and velocities (m/s) in moving components.
+    fn jacobi_integral(
+        &self,
+        frame: PyReadonlyArray1<'_, f64>,
+        attitude: PyReadonlyArray2<'_, f64>,
+        position: PyReadonlyArray2<'_, f64>,
+        velocity: PyReadonlyArray2<'_, f64>,
+    ) -> PyResult<Vec<f64>> {
+        let f = frame_arg(&frame, &attitude)?;
+        let (r, v) = finite_pairs(&position, &velocity)?;
+        r.iter()
+            .zip(&v)
+            .map(|(a, b)| {
+                let j = self.inner.jacobi_integral(&f, &v3(a), &v3(b));
+                finite_value(self.culprit(a, b), "Jacobi integral", j)
+            })
+            .collect()
+    }
+}
+
+impl SpringParticleCore {
+    /// The argument to blame for an energy beyond the doubles: `position` if its potential
+    /// overflows, else `velocity` if the kinetic energy does, else `position` (the centrifugal
+    /// potential m|ω × r|²/2).
+    fn culprit(&self, r: &[f64; 3], v: &[f64; 3]) -> &'static str {
+        if !self.inner.potential(&v3(r)).is_finite() {
+            "position"
+        } else if !self.inner.energy(&Vec3::zeros(), &v3(v)).is_finite() {
+            "velocity"
+        } else {
+            "position"
+        }
+    }
+}
+
+/// `rows` if every number is finite, else an error naming `argument` ("`what` overflows").
+fn finite_out(argument: &str, what: &str, rows: Vec<[f64; 3]>) -> PyResult<Vec<[f64; 3]>> {
+    if rows.iter().flatten().all(|x| x.is_finite()) {
+        Ok(rows)
+    } else {
+        Err(invalid(
+            argument,
+            format!("the {what} is beyond the range of double precision"),
+        ))
+    }
+}
+
+/// `x` if finite, else an error naming `argument`.
+fn finite_value(argument: &str, what: &str, x: f64) -> PyResult<f64> {
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(invalid(
+            argument,
+            format!("the {what} is beyond the range of double precision"),
+        ))
+    }
+}
+
+/// (N, 3) rows, each finite (the error names `argument`).
+fn finite_rows(argument: &str, a: &PyReadonlyArray2<'_, f64>) -> PyResult<Vec<[f64; 3]>> {
+    let rows = rows3(argument, a)?;
+    for r in &rows {
+        poinsot::error::check_finite(argument, r).py()?;
+    }
+    Ok(rows)
+}
+
+/// Positions and velocities of the same length, each finite.
+#[allow(clippy::type_complexity)]
+fn finite_pairs(
+    position: &PyReadonlyArray2<'_, f64>,
+    velocity: &PyReadonlyArray2<'_, f64>,
+) -> PyResult<(Vec<[f64; 3]>, Vec<[f64; 3]>)> {
+    let (r, v) = (
+        finite_rows("position", position)?,
+        finite_rows("velocity", velocity)?,
+    );
+    if r.len() != v.len() {
+        return Err(invalid(
+            "velocity",
+            format!("must have as many rows as position ({}), got {}", r.len(), v.len()),
+        ));
+    }
+    Ok((r, v))
+}
+
+fn map_rows(rows: &[[f64; 3]], f: impl Fn(&[f64; 3]) -> [f64; 3]) -> Vec<[f64; 3]> {
+    rows.iter().map(f).collect()
+}
+
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<SpringParticleCore>()?;
     m.add_function(wrap_pyfunction!(frame_particle_defaults, m)?)?;
     m.add_function(wrap_pyfunction!(frame_to_fixed, m)?)?;
     m.add_function(wrap_pyfunction!(frame_to_moving, m)?)?;
