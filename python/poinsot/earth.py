@@ -16,12 +16,15 @@ import numpy as np
 from . import _core
 from ._validate import (
     FloatArray,
+    as_angle,
     as_choice,
     as_count,
     as_flag,
+    as_flat,
     as_float_array,
     as_scalar,
     public_names,
+    shaped,
 )
 from .errors import PoinsotError
 
@@ -40,23 +43,6 @@ _DEFAULTS = _core.earth_defaults()
 _DROP, _FOUCAULT, _INERTIAL, _LOW = (_DEFAULTS[k] for k in ("drop", "foucault", "inertial", "low"))
 
 _GRAVITY = ("uniform", "inverse-square")
-
-
-def _angles(value: Any, name: str, degrees: Any) -> tuple[FloatArray, tuple[int, ...]]:
-    arr = as_float_array(value, name)
-    if as_flag(degrees, "degrees"):
-        arr = np.radians(arr)
-    return np.ascontiguousarray(arr.reshape(-1)), arr.shape
-
-
-def _angle(value: Any, name: str, degrees: Any) -> float:
-    x = as_scalar(value, name)
-    return float(np.radians(x)) if as_flag(degrees, "degrees") else x
-
-
-def _shape_out(arr: FloatArray, shape: tuple[int, ...]) -> Any:
-    out = arr.reshape(shape)
-    return float(out) if out.ndim == 0 else out
 
 
 @dataclass(frozen=True)
@@ -298,33 +284,33 @@ class Earth:
     # -- local quantities -----------------------------------------------------------------
     def omega_enu(self, latitude: Any, degrees: bool = False) -> FloatArray:
         """ω in ENU components, ω (0, cos λ, sin λ) (eq. 2.33), shape ``latitude.shape + (3,)``."""
-        lat, shape = _angles(latitude, "latitude", degrees)
+        lat, shape = as_flat(latitude, "latitude", degrees)
         return _core.earth_omega_enu(*self._p, lat).reshape(shape + (3,))
 
     def effective_gravity(self, latitude: Any, degrees: bool = False) -> FloatArray:
         """The effective gravity g_e = g − ω × (ω × r) at the surface (eq. 2.31) as an ENU
         vector (m/s²), shape ``latitude.shape + (3,)``; g = −g ẑ (radial), r = R ẑ. See also
         :meth:`effective_gravity_magnitude` and :meth:`plumb_line_deviation`."""
-        lat, shape = _angles(latitude, "latitude", degrees)
+        lat, shape = as_flat(latitude, "latitude", degrees)
         return _core.earth_effective_gravity(*self._p, lat)[0].reshape(shape + (3,))
 
     def effective_gravity_magnitude(self, latitude: Any, degrees: bool = False) -> Any:
         """|g_e| (m/s²): g − ω²R at the equator, g at the poles."""
-        lat, shape = _angles(latitude, "latitude", degrees)
-        return _shape_out(_core.earth_effective_gravity(*self._p, lat)[1], shape)
+        lat, shape = as_flat(latitude, "latitude", degrees)
+        return shaped(_core.earth_effective_gravity(*self._p, lat)[1], shape)
 
     def plumb_line_deviation(self, latitude: Any, degrees: bool = False) -> Any:
         """Angle between the plumb line (along g_e) and the radial direction (rad, or degrees
         with ``degrees=True``), positive when it leans south (north of the equator): the plumb
         line leans towards the equator, by at most about 0.1° near 45°."""
-        lat, shape = _angles(latitude, "latitude", degrees)
+        lat, shape = as_flat(latitude, "latitude", degrees)
         dev = _core.earth_effective_gravity(*self._p, lat)[2]
-        return _shape_out(np.degrees(dev) if as_flag(degrees, "degrees") else dev, shape)
+        return shaped(np.degrees(dev) if as_flag(degrees, "degrees") else dev, shape)
 
     def centrifugal_acceleration(self, latitude: Any, degrees: bool = False) -> FloatArray:
         """−ω × (ω × r) at the surface (m/s², ENU), of magnitude ω²R cos λ (ω²R at the
         equator: the unit's 3.4e-2 m/s²)."""
-        lat, shape = _angles(latitude, "latitude", degrees)
+        lat, shape = as_flat(latitude, "latitude", degrees)
         return _core.earth_effective_gravity(*self._p, lat)[3].reshape(shape + (3,))
 
     def coriolis_acceleration(self, latitude: Any, velocity_enu: Any, degrees: bool = False) -> FloatArray:
@@ -346,19 +332,19 @@ class Earth:
 
     def coriolis_parameter(self, latitude: Any, degrees: bool = False) -> Any:
         """f = 2ω sin λ (1/s); at the poles the unit's 2ω = 1.458e-4 s⁻¹ (sidereal)."""
-        lat, shape = _angles(latitude, "latitude", degrees)
-        return _shape_out(_core.earth_latitude_scalar(*self._p, "coriolis_parameter", lat), shape)
+        lat, shape = as_flat(latitude, "latitude", degrees)
+        return shaped(_core.earth_latitude_scalar(*self._p, "coriolis_parameter", lat), shape)
 
     def foucault_rate(self, latitude: Any, degrees: bool = False) -> Any:
         """The Foucault pendulum's precession rate −ω sin λ (rad/s, counterclockwise seen from
         above positive: clockwise in the north)."""
-        lat, shape = _angles(latitude, "latitude", degrees)
-        return _shape_out(_core.earth_latitude_scalar(*self._p, "foucault_rate", lat), shape)
+        lat, shape = as_flat(latitude, "latitude", degrees)
+        return shaped(_core.earth_latitude_scalar(*self._p, "foucault_rate", lat), shape)
 
     def inertial_period(self, latitude: Any, degrees: bool = False) -> Any:
         """The period of inertial oscillations π/(ω |sin λ|) (s; inf at the equator)."""
-        lat, shape = _angles(latitude, "latitude", degrees)
-        return _shape_out(_core.earth_latitude_scalar(*self._p, "inertial_period", lat), shape)
+        lat, shape = as_flat(latitude, "latitude", degrees)
+        return shaped(_core.earth_latitude_scalar(*self._p, "inertial_period", lat), shape)
 
     def jacobi_integral(self, latitude: float, position: Any, velocity: Any, degrees: bool = False) -> Any:
         """Jacobi's integral, the energy per unit mass in the rotating local frame (J/kg):
@@ -367,7 +353,7 @@ class Earth:
         ``(...)``. Gravity is uniform, ẑ the plumb line at the origin (eq. 2.30). The Coriolis
         force and a pendulum's string do no work, so J is constant along :meth:`foucault` and
         the uniform-gravity :meth:`drop`: its drift measures the integration error."""
-        lat = _angle(latitude, "latitude", degrees)
+        lat = as_angle(latitude, "latitude", degrees)
         pos = as_float_array(position, "position")
         vel = as_float_array(velocity, "velocity")
         for name, arr in (("position", pos), ("velocity", vel)):
@@ -379,7 +365,7 @@ class Earth:
             raise PoinsotError(f"velocity: shape {vel.shape} does not broadcast with position {pos.shape}") from None
         states = np.concatenate([np.broadcast_to(pos, lead + (3,)), np.broadcast_to(vel, lead + (3,))], axis=-1)
         out = _core.earth_jacobi_integral(*self._p, lat, np.ascontiguousarray(states.reshape(-1, 6)))
-        return _shape_out(out, lead)
+        return shaped(out, lead)
 
     def eastward_deflection(self, height: Any, latitude: Any, degrees: bool = False) -> Any:
         """The unit's first-order eastward deflection (eq. 2.42) of a body dropped from rest
@@ -407,7 +393,7 @@ class Earth:
         lat = np.radians(lat) if as_flag(degrees, "degrees") else lat
         hh = np.ascontiguousarray(np.broadcast_to(h, shape).reshape(-1))
         ll = np.ascontiguousarray(np.broadcast_to(lat, shape).reshape(-1))
-        return _shape_out(_core.earth_deflection(*self._p, direction, hh, ll), shape)
+        return shaped(_core.earth_deflection(*self._p, direction, hh, ll), shape)
 
     # -- motions --------------------------------------------------------------------------
     def drop(self, height: float, latitude: float, degrees: bool = False, *,
@@ -431,7 +417,7 @@ class Earth:
             points), and the first-order (2.42) and second-order closed forms to compare.
         """
         h = as_scalar(height, "height")
-        lat = _angle(latitude, "latitude", degrees)
+        lat = as_angle(latitude, "latitude", degrees)
         with public_names(t="height", y0="height"):
             out = _core.earth_drop(*self._p, h, lat, as_choice(gravity, "gravity", _GRAVITY),
                                    as_flag(rotation, "rotation"), as_flag(centrifugal, "centrifugal"),
@@ -460,9 +446,9 @@ class Earth:
         """
         with public_names(t="speed", y0="speed"):
             out = _core.earth_projectile(*self._p, as_scalar(speed, "speed"),
-                                         _angle(elevation, "elevation", degrees),
-                                         _angle(azimuth, "azimuth", degrees),
-                                         _angle(latitude, "latitude", degrees), as_scalar(height, "height"),
+                                         as_angle(elevation, "elevation", degrees),
+                                         as_angle(azimuth, "azimuth", degrees),
+                                         as_angle(latitude, "latitude", degrees), as_scalar(height, "height"),
                                          as_choice(gravity, "gravity", _GRAVITY), as_flag(rotation, "rotation"),
                                          as_flag(centrifugal, "centrifugal"), as_scalar(rtol, "rtol"),
                                          as_scalar(atol, "atol"), as_count(max_steps, "max_steps", 1),
@@ -497,8 +483,8 @@ class Earth:
             ``expected_rate`` and the small-swing ``theory_rate`` (rad/s, counterclockwise
             positive), the ``sense`` and the ``regime``.
         """
-        lat = _angle(latitude, "latitude", degrees)
-        az = _angle(azimuth, "azimuth", degrees)
+        lat = as_angle(latitude, "latitude", degrees)
+        az = as_angle(azimuth, "azimuth", degrees)
         dur = as_scalar(duration, "duration")
         n = as_count(samples, "samples", 2)
         progress = as_flag(progress, "progress")
@@ -545,7 +531,7 @@ class Earth:
             The track, the measured ``turning_rate`` (−2ω sin λ) and ``sense``, and the
             ``period`` π/(ω |sin λ|).
         """
-        lat = _angle(latitude, "latitude", degrees)
+        lat = as_angle(latitude, "latitude", degrees)
         v = as_float_array(velocity, "velocity")
         if v.shape != (2,):
             raise PoinsotError(f"velocity: must have shape (2,) [v_east, v_north], got {v.shape}")
@@ -575,7 +561,7 @@ class Earth:
             Tracks (P, N, 2), the mean angular momentum about the centre ``circulation`` and
             its ``sense``.
         """
-        lat = _angle(latitude, "latitude", degrees)
+        lat = as_angle(latitude, "latitude", degrees)
         # The ring, the pull → strength set-up, the sample grid and the sense are the core's.
         with public_names(t="duration", y0="pull"):
             out = _core.earth_low_flow(*self._p, lat, as_scalar(radius, "radius"), as_count(parcels, "parcels", 1),
