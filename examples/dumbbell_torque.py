@@ -8,7 +8,6 @@ Run: python examples/dumbbell_torque.py   (prints; no display needed)
 from __future__ import annotations
 
 import numpy as np
-
 import poinsot as ps
 
 m1 = m2 = 1.0  # kg

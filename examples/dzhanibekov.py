@@ -12,19 +12,24 @@ import sys
 from pathlib import Path
 
 import numpy as np
-
 import poinsot as ps
 
 out = Path(sys.argv[1] if len(sys.argv) > 1 else "out")
 out.mkdir(parents=True, exist_ok=True)
 
 moments = np.array([1.0, 2.0, 3.0])
-for stab, axis in zip(ps.axis_stability(moments, spin=2.0), ("1 (smallest)", "2 (intermediate)", "3 (largest)")):
+for stab, axis in zip(
+    ps.axis_stability(moments, spin=2.0), ("1 (smallest)", "2 (intermediate)", "3 (largest)")
+):
     what = "oscillate at" if stab.stability == "stable" else "grow at"
-    print(f"spin 2 rad/s about axis {axis}: {stab.stability}, small deviations {what} {stab.rate:.4f} 1/s")
+    print(
+        f"spin 2 rad/s about axis {axis}: {stab.stability}, small deviations {what} {stab.rate:.4f} 1/s"
+    )
 
 body = ps.FreeRigidBody(moments, [1e-3, 2.0, 1e-3])
-print(f"\nspun about axis 2 with a 1e-3 rad/s wobble: {body.regime}, m = 1 − {1 - body.parameter:.3e}")
+print(
+    f"\nspun about axis 2 with a 1e-3 rad/s wobble: {body.regime}, m = 1 − {1 - body.parameter:.3e}"
+)
 print(f"  ω₂ reverses every {body.flip_interval:.4f} s (period of ω {body.period:.4f} s)")
 t = np.linspace(0, 3 * body.period, 30001)
 w2 = body.omega(t)[:, 1]
@@ -32,12 +37,16 @@ flips = t[1:][np.sign(w2[1:]) != np.sign(w2[:-1])]
 print(f"  flips found at t = {np.round(flips, 3).tolist()} s")
 assert np.allclose(np.diff(flips), body.flip_interval, rtol=1e-3)
 rk = ps.simulate(moments, [1e-3, 2.0, 1e-3], 3 * body.period, method="rk4", dt=1e-3, samples=2)
-print(f"  RK4 (dt = 1 ms) after three periods differs from the exact ω by {np.linalg.norm(rk.omega[-1] - body.omega(3 * body.period)):.1e} rad/s")
+print(
+    f"  RK4 (dt = 1 ms) after three periods differs from the exact ω by {np.linalg.norm(rk.omega[-1] - body.omega(3 * body.period)):.1e} rad/s"
+)
 
-import matplotlib  # noqa: E402
+import matplotlib
 
 matplotlib.use("Agg")
-from poinsot.plots.free import animate_tumbling_box  # noqa: E402
+from poinsot.plots.free import animate_tumbling_box
 
-animate_tumbling_box((2.0, 1.0, 0.4), spin=2.0, wobble=1e-2, path=out / "dzhanibekov.gif", frames=120, fps=20)
+animate_tumbling_box(
+    (2.0, 1.0, 0.4), spin=2.0, wobble=1e-2, path=out / "dzhanibekov.gif", frames=120, fps=20
+)
 print(f"animation written to {out}/dzhanibekov.gif")

@@ -10,7 +10,6 @@ Run: .venv/bin/python examples/euler_and_chasles_theorems.py
 from __future__ import annotations
 
 import numpy as np
-
 import poinsot
 
 np.set_printoptions(precision=5, suppress=True)
@@ -39,8 +38,12 @@ print("                           after: ", dist(moved))
 
 # Accurate where the textbook formula angle = acos((tr R - 1)/2) is not:
 tiny = poinsot.axis_angle_to_matrix([0, 1, 0], 1e-9)
-print("\nangle of a 1e-9 rad rotation: acos formula",
-      np.arccos((np.trace(tiny) - 1) / 2), " poinsot", poinsot.rotation_axis(tiny)[1])
+print(
+    "\nangle of a 1e-9 rad rotation: acos formula",
+    np.arccos((np.trace(tiny) - 1) / 2),
+    " poinsot",
+    poinsot.rotation_axis(tiny)[1],
+)
 
 # ---- Chasles' theorem: a general displacement is a screw ------------------------------------
 t = np.array([1.0, -1.0, 2.0])  # m

@@ -14,7 +14,6 @@ from __future__ import annotations
 import warnings
 
 import numpy as np
-
 import poinsot
 
 np.set_printoptions(precision=4, suppress=True)
@@ -47,9 +46,10 @@ print("  rates back from omega:", poinsot.euler_rates([phi, theta, psi], w_body)
 # Kinetic energy of a symmetric top (2.100 -> 2.101): T depends on theta only.
 I1, I3 = 2.0e-4, 1.0e-4  # kg m^2
 T_200 = 0.5 * (I1 * w_body[0] ** 2 + I1 * w_body[1] ** 2 + I3 * w_body[2] ** 2)
-T_201 = 0.5 * I1 * (rates[1] ** 2 + rates[0] ** 2 * np.sin(theta) ** 2) + 0.5 * I3 * (
-    rates[2] + rates[0] * np.cos(theta)
-) ** 2
+T_201 = (
+    0.5 * I1 * (rates[1] ** 2 + rates[0] ** 2 * np.sin(theta) ** 2)
+    + 0.5 * I3 * (rates[2] + rates[0] * np.cos(theta)) ** 2
+)
 print(f"  T from 2.100: {T_200:.6e} J, from 2.101: {T_201:.6e} J")
 
 # ---- gimbal lock ---------------------------------------------------------------------------

@@ -12,7 +12,6 @@ import sys
 from pathlib import Path
 
 import numpy as np
-
 import poinsot as ps
 
 out = Path(sys.argv[1] if len(sys.argv) > 1 else "out")
@@ -20,21 +19,25 @@ out.mkdir(parents=True, exist_ok=True)
 
 earth = ps.Earth()
 run = earth.foucault(48.85, degrees=True, duration=1800.0, samples=2)
-print(f"Paris, 67 m, 30 min in the rotating frame: the plane turns at {run.precession_rate:.5e} rad/s, "
-      f"{run.sense}; −ω sin λ = {run.expected_rate:.5e} rad/s "
-      f"(one turn in {2 * np.pi / abs(run.expected_rate) / 3600:.1f} h)")
+print(
+    f"Paris, 67 m, 30 min in the rotating frame: the plane turns at {run.precession_rate:.5e} rad/s, "
+    f"{run.sense}; −ω sin λ = {run.expected_rate:.5e} rad/s "
+    f"(one turn in {2 * np.pi / abs(run.expected_rate) / 3600:.1f} h)"
+)
 assert run.sense == "clockwise" and abs(run.precession_rate / run.expected_rate - 1) < 5e-3
 
 for lat in (90.0, 45.0, 0.0, -45.0):
     r = earth.foucault(lat, degrees=True, duration=900.0, samples=2)
-    print(f"  latitude {lat:+5.1f}°: {r.precession_rate:+.4e} rad/s ({r.sense}), theory {r.expected_rate:+.4e}")
+    print(
+        f"  latitude {lat:+5.1f}°: {r.precession_rate:+.4e} rad/s ({r.sense}), theory {r.expected_rate:+.4e}"
+    )
 
 fast = ps.Earth(rotation_rate=30 * ps.SIDEREAL_RATE)
 show = fast.foucault(48.85, degrees=True, length=10.0, amplitude=1.0, duration=600.0, samples=6001)
-import matplotlib  # noqa: E402
+import matplotlib
 
 matplotlib.use("Agg")
-from poinsot.plots.earth import animate_foucault, plot_foucault_rosette  # noqa: E402
+from poinsot.plots.earth import animate_foucault, plot_foucault_rosette
 
 plot_foucault_rosette(show).savefig(out / "foucault_rosette.png", dpi=110, bbox_inches="tight")
 animate_foucault(show, out / "foucault.gif", frames=150, fps=20)

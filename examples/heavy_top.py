@@ -15,9 +15,8 @@ import sys
 from pathlib import Path
 
 import numpy as np
-from scipy.integrate import solve_ivp
-
 import poinsot as ps
+from scipy.integrate import solve_ivp
 
 out = Path(sys.argv[1] if len(sys.argv) > 1 else "out")
 out.mkdir(parents=True, exist_ok=True)
@@ -25,12 +24,16 @@ out.mkdir(parents=True, exist_ok=True)
 I1, I3, MGL, THETA0, OMEGA3 = 1.0, 0.5, 1.0, 0.8, 6.0
 tops = {}
 for phi_dot in (0.5, 0.0, -0.5):
-    top = ps.HeavyTop(I1, I3, MGL, THETA0, phi_dot=phi_dot, psi_dot=OMEGA3 - phi_dot * np.cos(THETA0))
+    top = ps.HeavyTop(
+        I1, I3, MGL, THETA0, phi_dot=phi_dot, psi_dot=OMEGA3 - phi_dot * np.cos(THETA0)
+    )
     tops[top.motion_class] = top
     t1, t2 = top.turning_points
-    print(f"phi'0 = {phi_dot:+.1f} rad/s: {top.motion_class:6s}  p_phi = {top.p_phi:.6f}, p_psi = {top.p_psi:.6f}, "
-          f"E' = {top.reduced_energy:.6f} J; theta in [{t1:.6f}, {t2:.6f}] rad; "
-          f"nutation period {top.nutation_period:.6f} s; mean phi' {top.mean_precession_rate:.6f} rad/s")
+    print(
+        f"phi'0 = {phi_dot:+.1f} rad/s: {top.motion_class:6s}  p_phi = {top.p_phi:.6f}, p_psi = {top.p_psi:.6f}, "
+        f"E' = {top.reduced_energy:.6f} J; theta in [{t1:.6f}, {t2:.6f}] rad; "
+        f"nutation period {top.nutation_period:.6f} s; mean phi' {top.mean_precession_rate:.6f} rad/s"
+    )
     # E' = V(theta) at the turning points (2.109-2.110).
     assert max(abs(top.effective_potential(th) - top.reduced_energy) for th in (t1, t2)) < 1e-12
 assert set(tops) == {"waves", "cusps", "loops"}
@@ -50,25 +53,37 @@ def lagrange(_t, y):
 
 s0 = top.initial_state
 t = np.linspace(0.0, 3 * top.nutation_period, 50)
-sol = solve_ivp(lagrange, (0, t[-1]), [s0["theta"], 0, 0, s0["theta_dot"], s0["phi_dot"], s0["psi_dot"]],
-                method="DOP853", rtol=1e-12, atol=1e-12, t_eval=t)
+sol = solve_ivp(
+    lagrange,
+    (0, t[-1]),
+    [s0["theta"], 0, 0, s0["theta_dot"], s0["phi_dot"], s0["psi_dot"]],
+    method="DOP853",
+    rtol=1e-12,
+    atol=1e-12,
+    t_eval=t,
+)
 phi, theta, psi = top.euler_angles(t)
-err = max(np.max(np.abs(phi - sol.y[1])), np.max(np.abs(theta - sol.y[0])), np.max(np.abs(psi - sol.y[2])))
-print(f"loops over three nutation periods: exact angles vs solve_ivp(DOP853, 1e-12): max difference {err:.1e} rad")
+err = max(
+    np.max(np.abs(phi - sol.y[1])), np.max(np.abs(theta - sol.y[0])), np.max(np.abs(psi - sol.y[2]))
+)
+print(
+    f"loops over three nutation periods: exact angles vs solve_ivp(DOP853, 1e-12): max difference {err:.1e} rad"
+)
 assert err < 1e-8
 
-import matplotlib  # noqa: E402
+import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-from poinsot.plots.top import animate_top, plot_angles, plot_axis_locus, plot_effective_potential  # noqa: E402
+import matplotlib.pyplot as plt
+from poinsot.plots.top import animate_top, plot_angles, plot_axis_locus, plot_effective_potential
 
 fig, axes = plt.subplots(1, 3, figsize=(15, 5))
 for ax, name in zip(axes, ("waves", "cusps", "loops")):
     plot_axis_locus(tops[name], ax)
 fig.savefig(out / "heavy_top_loci.png", dpi=110, bbox_inches="tight")
-plot_effective_potential(tops["cusps"]).savefig(out / "heavy_top_potential.png", dpi=110, bbox_inches="tight")
+plot_effective_potential(tops["cusps"]).savefig(
+    out / "heavy_top_potential.png", dpi=110, bbox_inches="tight"
+)
 plot_angles(tops["loops"]).savefig(out / "heavy_top_angles.png", dpi=110, bbox_inches="tight")
 animate_top(tops["loops"], out / "heavy_top.gif", frames=60, fps=15)
 print(f"pictures written to {out}/")

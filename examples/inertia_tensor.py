@@ -7,7 +7,6 @@ Run: python examples/inertia_tensor.py   (prints; no display needed)
 from __future__ import annotations
 
 import numpy as np
-
 import poinsot as ps
 
 np.set_printoptions(precision=5, suppress=True)
@@ -42,7 +41,12 @@ solids = [
         [m * 13 / 5, m * 10 / 5, m * 5 / 5],
     ),
     ("thin rod (length h)", ps.RigidBody.thin_rod(m, h), "m h²/12, 0", [m * h**2 / 12] * 2 + [0.0]),
-    ("thin disk", ps.RigidBody.thin_disk(m, r), "m r²/4, m r²/2", [m * r**2 / 4] * 2 + [m * r**2 / 2]),
+    (
+        "thin disk",
+        ps.RigidBody.thin_disk(m, r),
+        "m r²/4, m r²/2",
+        [m * r**2 / 4] * 2 + [m * r**2 / 2],
+    ),
     ("thin ring", ps.RigidBody.thin_ring(m, r), "m r²/2, m r²", [m * r**2 / 2] * 2 + [m * r**2]),
 ]
 print(f"{'solid':24s} {'I_xx, I_yy, I_zz about the c.o.m. (kg·m²)':44s} {'textbook':34s} kind")
@@ -67,7 +71,7 @@ print("inertia about the centre of mass (kg·m²):")
 print(body.inertia)
 A = body.principal_axes
 print("principal moments I1 ≤ I2 ≤ I3 (kg·m²):", body.principal_moments)
-print("principal axes (columns, a proper rotation, det = %+.1f):" % np.linalg.det(A))
+print(f"principal axes (columns, a proper rotation, det = {np.linalg.det(A):+.1f}):")
 print(A)
 print("in principal axes the products of inertia vanish (2.65–2.66): Aᵀ I A =")
 print(A.T @ body.inertia @ A)

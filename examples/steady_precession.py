@@ -14,7 +14,6 @@ import sys
 from pathlib import Path
 
 import numpy as np
-
 import poinsot as ps
 
 out = Path(sys.argv[1] if len(sys.argv) > 1 else "out")
@@ -22,19 +21,31 @@ out.mkdir(parents=True, exist_ok=True)
 
 I1, I3, MGL, THETA0 = 1.0, 0.5, 0.3, 0.6
 w_min = ps.HeavyTop.min_spin(I1, I3, MGL, THETA0)
-print(f"I1 = {I1}, I3 = {I3}, m g l = {MGL}, theta0 = {THETA0} rad: minimum spin (2.119) {w_min:.6f} rad/s")
-print(f"{'omega3':>8} {'slow':>10} {'mgl/p_psi':>10} {'fast':>10} {'p_psi/I1cos':>12} {'as printed':>11}")
+print(
+    f"I1 = {I1}, I3 = {I3}, m g l = {MGL}, theta0 = {THETA0} rad: minimum spin (2.119) {w_min:.6f} rad/s"
+)
+print(
+    f"{'omega3':>8} {'slow':>10} {'mgl/p_psi':>10} {'fast':>10} {'p_psi/I1cos':>12} {'as printed':>11}"
+)
 for w3 in (1.05 * w_min, 5.0, 10.0, 40.0, 200.0):
     s = ps.HeavyTop.steady_precession(I1, I3, MGL, THETA0, w3)
-    print(f"{w3:8.3f} {s.slow:10.6f} {s.slow_approx:10.6f} {s.fast:10.4f} {s.fast_approx:12.4f} "
-          f"{s.fast_approx_as_printed:11.4f}")
+    print(
+        f"{w3:8.3f} {s.slow:10.6f} {s.slow_approx:10.6f} {s.fast:10.4f} {s.fast_approx:12.4f} "
+        f"{s.fast_approx_as_printed:11.4f}"
+    )
 
 s = ps.HeavyTop.steady_precession(I1, I3, MGL, THETA0, 40.0)
 assert round(s.fast, 4) == 24.2176 and round(s.fast_approx, 4) == 24.2326  # the errata example
-for name, rate in (("slow", s.slow), ("fast", s.fast), ("2.120 as printed", s.fast_approx_as_printed)):
+for name, rate in (
+    ("slow", s.slow),
+    ("fast", s.fast),
+    ("2.120 as printed", s.fast_approx_as_printed),
+):
     top = ps.HeavyTop(I1, I3, MGL, THETA0, phi_dot=rate, psi_dot=40.0 - rate * np.cos(THETA0))
     t1, t2 = top.turning_points
-    print(f"  started at the {name} rate {rate:.6f} rad/s: {top.motion_class}, nutation theta2 - theta1 = {t2 - t1:.2e} rad")
+    print(
+        f"  started at the {name} rate {rate:.6f} rad/s: {top.motion_class}, nutation theta2 - theta1 = {t2 - t1:.2e} rad"
+    )
     if name != "2.120 as printed":
         assert top.motion_class == "steady precession"
     else:
@@ -45,11 +56,12 @@ try:
 except ps.PoinsotError as exc:
     print(f"  below the minimum spin: {exc}")
 
-import matplotlib  # noqa: E402
+import matplotlib
 
 matplotlib.use("Agg")
-from poinsot.plots.top import plot_steady_precession  # noqa: E402
+from poinsot.plots.top import plot_steady_precession
 
-plot_steady_precession(I1, I3, MGL, THETA0, max_spin=20.0).savefig(out / "steady_precession.png", dpi=110,
-                                                                   bbox_inches="tight")
+plot_steady_precession(I1, I3, MGL, THETA0, max_spin=20.0).savefig(
+    out / "steady_precession.png", dpi=110, bbox_inches="tight"
+)
 print(f"picture written to {out}/steady_precession.png")

@@ -12,7 +12,6 @@ import sys
 from pathlib import Path
 
 import numpy as np
-
 import poinsot as ps
 
 out = Path(sys.argv[1] if len(sys.argv) > 1 else "out")
@@ -20,35 +19,49 @@ out.mkdir(parents=True, exist_ok=True)
 
 for i1, i3 in ((2.0, 1.0), (1.0, 1.8)):
     top = ps.FreeSymmetricTop(i1, i3, [0.6, 0.0, 1.0])
-    tr = ps.simulate([i1, i1, i3], [0.6, 0.0, 1.0], 20.0, method="dop853", rtol=1e-12, atol=1e-14, samples=201)
+    tr = ps.simulate(
+        [i1, i1, i3], [0.6, 0.0, 1.0], 20.0, method="dop853", rtol=1e-12, atol=1e-14, samples=201
+    )
     err = np.abs(tr.omega - top.omega(tr.t)).max()
-    print(f"{top.shape} top I₁ = {i1}, I₃ = {i3}: Ω = {top.precession_rate:+.6f} rad/s (2.83), A = {top.amplitude:.6f} "
-          f"(2.88), α_b = {np.degrees(top.body_cone_angle):.4f}° (2.90), α_s = {np.degrees(top.space_cone_angle):.4f}° "
-          f"(2.97), body cone rolls {top.cone_contact}; |ω_closed − ω_integrated| = {err:.1e}")
+    print(
+        f"{top.shape} top I₁ = {i1}, I₃ = {i3}: Ω = {top.precession_rate:+.6f} rad/s (2.83), A = {top.amplitude:.6f} "
+        f"(2.88), α_b = {np.degrees(top.body_cone_angle):.4f}° (2.90), α_s = {np.degrees(top.space_cone_angle):.4f}° "
+        f"(2.97), body cone rolls {top.cone_contact}; |ω_closed − ω_integrated| = {err:.1e}"
+    )
     assert err < 1e-9
     l_mag = top.angular_momentum_magnitude
-    assert abs(ps.FreeSymmetricTop.omega3_squared_from(i1, i3, top.energy, l_mag) - 1.0) < 1e-12  # 2.95
-    assert abs(ps.FreeSymmetricTop.amplitude_squared_from(i1, i3, top.energy, l_mag) - 0.36) < 1e-12  # 2.96
+    assert (
+        abs(ps.FreeSymmetricTop.omega3_squared_from(i1, i3, top.energy, l_mag) - 1.0) < 1e-12
+    )  # 2.95
+    assert (
+        abs(ps.FreeSymmetricTop.amplitude_squared_from(i1, i3, top.energy, l_mag) - 0.36) < 1e-12
+    )  # 2.96
 
 body = ps.FreeRigidBody([1.0, 2.0, 3.0], [1.0, 0.1, 1.0])
-print(f"\nasymmetric top I = (1, 2, 3), ω₀ = (1, 0.1, 1): {body.regime}, m = {body.parameter:.6f}, "
-      f"period of ω = {body.period:.6f} s")
+print(
+    f"\nasymmetric top I = (1, 2, 3), ω₀ = (1, 0.1, 1): {body.regime}, m = {body.parameter:.6f}, "
+    f"period of ω = {body.period:.6f} s"
+)
 runs = []
 for method, dt in (("splitting2", 0.01), ("splitting6", 0.01), ("rk4", 0.01)):
     tr = ps.simulate([1.0, 2.0, 3.0], [1.0, 0.1, 1.0], 1000.0, method=method, dt=dt, samples=401)
     runs.append(tr)
     dw = np.linalg.norm(tr.omega[-1] - body.omega(1000.0))
-    print(f"  {method:10s} dt = {dt}: |Δω(1000)| = {dw:.1e}, max |ΔE/E| = {tr.energy_error().max():.1e}, "
-          f"max |Δ|L|/|L|| = {tr.momentum_error().max():.1e}")
+    print(
+        f"  {method:10s} dt = {dt}: |Δω(1000)| = {dw:.1e}, max |ΔE/E| = {tr.energy_error().max():.1e}, "
+        f"max |Δ|L|/|L|| = {tr.momentum_error().max():.1e}"
+    )
 
-import matplotlib  # noqa: E402
+import matplotlib
 
 matplotlib.use("Agg")
-from poinsot.plots.free import plot_cones, plot_conservation, plot_omega, plot_polhodes  # noqa: E402
+from poinsot.plots.free import plot_cones, plot_conservation, plot_omega, plot_polhodes
 
 short = ps.simulate([1.0, 2.0, 3.0], [1.0, 0.1, 1.0], 20.0, method="rk4", dt=0.05, samples=81)
 plot_omega(short, body).savefig(out / "free_omega.png", dpi=110, bbox_inches="tight")
-plot_cones(ps.FreeSymmetricTop(2.0, 1.0, [0.8, 0.0, 1.0]), 0.5).savefig(out / "free_cones.png", dpi=110)
+plot_cones(ps.FreeSymmetricTop(2.0, 1.0, [0.8, 0.0, 1.0]), 0.5).savefig(
+    out / "free_cones.png", dpi=110
+)
 plot_polhodes().savefig(out / "free_polhodes.png", dpi=110)
 plot_conservation(runs).savefig(out / "free_conservation.png", dpi=110, bbox_inches="tight")
 print(f"pictures written to {out}/")

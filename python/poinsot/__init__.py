@@ -26,23 +26,23 @@ SI units and radians everywhere; quaternions are scalar-first ``[w, x, y, z]``.
 from __future__ import annotations
 
 from ._core import __version__
-from .body import *  # noqa: F401,F403
+from .body import *  # noqa: F403
 from .body import __all__ as _body_all
-from .dynamics import *  # noqa: F401,F403
+from .dynamics import *  # noqa: F403
 from .dynamics import __all__ as _dynamics_all
-from .earth import *  # noqa: F401,F403
+from .earth import *  # noqa: F403
 from .earth import __all__ as _earth_all
-from .errors import *  # noqa: F401,F403
+from .errors import *  # noqa: F403
 from .errors import __all__ as _errors_all
-from .frames import *  # noqa: F401,F403
+from .frames import *  # noqa: F403
 from .frames import __all__ as _frames_all
-from .free import *  # noqa: F401,F403
+from .free import *  # noqa: F403
 from .free import __all__ as _free_all
-from .limits import *  # noqa: F401,F403
+from .limits import *  # noqa: F403
 from .limits import __all__ as _limits_all
-from .rotation import *  # noqa: F401,F403
+from .rotation import *  # noqa: F403
 from .rotation import __all__ as _rotation_all
-from .top import *  # noqa: F401,F403
+from .top import *  # noqa: F403
 from .top import __all__ as _top_all
 
 __all__ = [
@@ -58,8 +58,8 @@ __all__ = [
     *_limits_all,
 ]
 
-from . import special as _special  # noqa: E402
-from ._guard import guard as _guard  # noqa: E402
+from . import special as _special
+from ._guard import guard as _guard
 
 # No Rust panic reaches a user as PanicException: see _guard.py.
 _guard(globals(), __all__)

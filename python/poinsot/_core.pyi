@@ -32,7 +32,9 @@ ROTATION_MATRIX_TOL: float
 EULER_LOCK_TOL: float
 RATES_LOCK_TOL: float
 
-def euler_to_matrix(angles: NDArray[np.float64], seq: str, intrinsic: bool) -> NDArray[np.float64]: ...
+def euler_to_matrix(
+    angles: NDArray[np.float64], seq: str, intrinsic: bool
+) -> NDArray[np.float64]: ...
 def matrix_to_euler(
     R: NDArray[np.float64], seq: str, intrinsic: bool
 ) -> tuple[NDArray[np.float64], NDArray[np.bool_]]: ...
@@ -40,7 +42,9 @@ def matrix_to_quaternion(R: NDArray[np.float64]) -> NDArray[np.float64]: ...
 def quaternion_to_matrix(q: NDArray[np.float64], normalize: bool) -> NDArray[np.float64]: ...
 def quaternion_multiply(p: NDArray[np.float64], q: NDArray[np.float64]) -> NDArray[np.float64]: ...
 def rotation_axis(R: NDArray[np.float64]) -> NDArray[np.float64]: ...
-def axis_angle_to_matrix(axis: NDArray[np.float64], angle: NDArray[np.float64]) -> NDArray[np.float64]: ...
+def axis_angle_to_matrix(
+    axis: NDArray[np.float64], angle: NDArray[np.float64]
+) -> NDArray[np.float64]: ...
 def rotate_vectors(R: NDArray[np.float64], v: NDArray[np.float64]) -> NDArray[np.float64]: ...
 def check_rotation_matrix(R: NDArray[np.float64], tol: float) -> None: ...
 def angular_velocity(
@@ -147,23 +151,42 @@ def check_inertia(inertia: NDArray[np.float64]) -> NDArray[np.float64]: ...
 # ---- frames (frames.rs) ----
 
 def frame_to_fixed(
-    frame: NDArray[np.float64], attitude: NDArray[np.float64], position: NDArray[np.float64],
-    velocity: NDArray[np.float64], acceleration: NDArray[np.float64],
+    frame: NDArray[np.float64],
+    attitude: NDArray[np.float64],
+    position: NDArray[np.float64],
+    velocity: NDArray[np.float64],
+    acceleration: NDArray[np.float64],
 ) -> list[NDArray[np.float64]]: ...
 def frame_to_moving(
-    frame: NDArray[np.float64], attitude: NDArray[np.float64], position: NDArray[np.float64],
-    velocity: NDArray[np.float64], acceleration: NDArray[np.float64],
+    frame: NDArray[np.float64],
+    attitude: NDArray[np.float64],
+    position: NDArray[np.float64],
+    velocity: NDArray[np.float64],
+    acceleration: NDArray[np.float64],
 ) -> list[NDArray[np.float64]]: ...
 def frame_fictitious_forces(
-    frame: NDArray[np.float64], attitude: NDArray[np.float64], mass: NDArray[np.float64],
-    position: NDArray[np.float64], velocity: NDArray[np.float64],
+    frame: NDArray[np.float64],
+    attitude: NDArray[np.float64],
+    mass: NDArray[np.float64],
+    position: NDArray[np.float64],
+    velocity: NDArray[np.float64],
 ) -> list[NDArray[np.float64]]: ...
 def frame_simulate_particle(
-    frame: NDArray[np.float64], frame_fn: Callable[[float], Any] | None, mass: float,
-    position: NDArray[np.float64], velocity: NDArray[np.float64], t0: float, t_end: float,
-    samples: int, times: NDArray[np.float64] | None, force: NDArray[np.float64],
-    force_fn: Callable[..., tuple[float, float, float]] | None, rtol: float, atol: float,
-    max_steps: int, stiffness: float = 0.0,
+    frame: NDArray[np.float64],
+    frame_fn: Callable[[float], Any] | None,
+    mass: float,
+    position: NDArray[np.float64],
+    velocity: NDArray[np.float64],
+    t0: float,
+    t_end: float,
+    samples: int,
+    times: NDArray[np.float64] | None,
+    force: NDArray[np.float64],
+    force_fn: Callable[..., tuple[float, float, float]] | None,
+    rtol: float,
+    atol: float,
+    max_steps: int,
+    stiffness: float = 0.0,
 ) -> tuple[NDArray[np.float64], int]: ...
 
 class SpringParticleCore:
@@ -175,57 +198,138 @@ class SpringParticleCore:
     def force(self, position: NDArray[np.float64]) -> NDArray[np.float64]: ...
     def acceleration(self, position: NDArray[np.float64]) -> NDArray[np.float64]: ...
     def potential(self, position: NDArray[np.float64]) -> list[float]: ...
-    def energy(self, position: NDArray[np.float64], velocity: NDArray[np.float64]) -> list[float]: ...
-    def jacobi_integral(
-        self, frame: NDArray[np.float64], attitude: NDArray[np.float64],
-        position: NDArray[np.float64], velocity: NDArray[np.float64],
+    def energy(
+        self, position: NDArray[np.float64], velocity: NDArray[np.float64]
     ) -> list[float]: ...
+    def jacobi_integral(
+        self,
+        frame: NDArray[np.float64],
+        attitude: NDArray[np.float64],
+        position: NDArray[np.float64],
+        velocity: NDArray[np.float64],
+    ) -> list[float]: ...
+
 def frame_particle_defaults() -> dict[str, Any]: ...
 def frame_steady_at(
-    frame: NDArray[np.float64], attitude: NDArray[np.float64], t: float,
+    frame: NDArray[np.float64],
+    attitude: NDArray[np.float64],
+    t: float,
 ) -> tuple[list[NDArray[np.float64]], NDArray[np.float64]]: ...
 
 # ---- earth (earth.rs) ----
-def earth_omega_enu(rotation_rate: float, radius: float, g: float, latitude: NDArray[np.float64]) -> NDArray[np.float64]: ...
+def earth_omega_enu(
+    rotation_rate: float, radius: float, g: float, latitude: NDArray[np.float64]
+) -> NDArray[np.float64]: ...
 def earth_effective_gravity(
-    rotation_rate: float, radius: float, g: float, latitude: NDArray[np.float64],
+    rotation_rate: float,
+    radius: float,
+    g: float,
+    latitude: NDArray[np.float64],
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]: ...
 def earth_coriolis_acceleration(
-    rotation_rate: float, radius: float, g: float, latitude: NDArray[np.float64], velocity: NDArray[np.float64],
+    rotation_rate: float,
+    radius: float,
+    g: float,
+    latitude: NDArray[np.float64],
+    velocity: NDArray[np.float64],
 ) -> NDArray[np.float64]: ...
 def earth_latitude_scalar(
-    rotation_rate: float, radius: float, g: float, quantity: str, latitude: NDArray[np.float64],
+    rotation_rate: float,
+    radius: float,
+    g: float,
+    quantity: str,
+    latitude: NDArray[np.float64],
 ) -> NDArray[np.float64]: ...
 def earth_fall_time(rotation_rate: float, radius: float, g: float, height: float) -> float: ...
 def earth_deflection(
-    rotation_rate: float, radius: float, g: float, direction: str, height: NDArray[np.float64],
+    rotation_rate: float,
+    radius: float,
+    g: float,
+    direction: str,
+    height: NDArray[np.float64],
     latitude: NDArray[np.float64],
 ) -> NDArray[np.float64]: ...
 def earth_drop(
-    rotation_rate: float, radius: float, g: float, height: float, latitude: float, gravity: str,
-    rotation: bool, centrifugal: bool, rtol: float, atol: float, max_steps: int, samples: int,
+    rotation_rate: float,
+    radius: float,
+    g: float,
+    height: float,
+    latitude: float,
+    gravity: str,
+    rotation: bool,
+    centrifugal: bool,
+    rtol: float,
+    atol: float,
+    max_steps: int,
+    samples: int,
 ) -> dict[str, Any]: ...
 def earth_projectile(
-    rotation_rate: float, radius: float, g: float, speed: float, elevation: float, azimuth: float,
-    latitude: float, height: float, gravity: str, rotation: bool, centrifugal: bool, rtol: float,
-    atol: float, max_steps: int, samples: int,
+    rotation_rate: float,
+    radius: float,
+    g: float,
+    speed: float,
+    elevation: float,
+    azimuth: float,
+    latitude: float,
+    height: float,
+    gravity: str,
+    rotation: bool,
+    centrifugal: bool,
+    rtol: float,
+    atol: float,
+    max_steps: int,
+    samples: int,
 ) -> dict[str, Any]: ...
-def earth_fit_precession_rate(turn_times: NDArray[np.float64], turn_angles: NDArray[np.float64]) -> float: ...
+def earth_fit_precession_rate(
+    turn_times: NDArray[np.float64], turn_angles: NDArray[np.float64]
+) -> float: ...
 def earth_jacobi_integral(
-    rotation_rate: float, radius: float, g: float, latitude: float, states: NDArray[np.float64],
+    rotation_rate: float,
+    radius: float,
+    g: float,
+    latitude: float,
+    states: NDArray[np.float64],
 ) -> NDArray[np.float64]: ...
 def earth_foucault_swing(
-    rotation_rate: float, radius: float, g: float, latitude: float, length: float, amplitude: float,
-    azimuth: float, duration: float, samples: int, rtol: float, atol: float, max_steps: int,
+    rotation_rate: float,
+    radius: float,
+    g: float,
+    latitude: float,
+    length: float,
+    amplitude: float,
+    azimuth: float,
+    duration: float,
+    samples: int,
+    rtol: float,
+    atol: float,
+    max_steps: int,
     progress: Callable[[float], Any] | None = None,
 ) -> dict[str, Any]: ...
 def earth_inertial_swing(
-    rotation_rate: float, radius: float, g: float, latitude: float, velocity: NDArray[np.float64],
-    duration: float | None, samples: int, rtol: float, atol: float, max_steps: int,
+    rotation_rate: float,
+    radius: float,
+    g: float,
+    latitude: float,
+    velocity: NDArray[np.float64],
+    duration: float | None,
+    samples: int,
+    rtol: float,
+    atol: float,
+    max_steps: int,
 ) -> dict[str, Any]: ...
 def earth_low_flow(
-    rotation_rate: float, radius: float, g: float, latitude: float, ring_radius: float, parcels: int,
-    pull: float, friction: float, duration: float, samples: int, rtol: float, atol: float,
+    rotation_rate: float,
+    radius: float,
+    g: float,
+    latitude: float,
+    ring_radius: float,
+    parcels: int,
+    pull: float,
+    friction: float,
+    duration: float,
+    samples: int,
+    rtol: float,
+    atol: float,
     max_steps: int,
 ) -> dict[str, Any]: ...
 def sample_times(t0: float, t_end: float, samples: int) -> NDArray[np.float64]: ...
@@ -245,7 +349,11 @@ def special_elliptic(kind: str, phi: float, n: float, m: float) -> float: ...
 @final
 class SymmetricTopSolution:
     def __new__(
-        cls, i1: float, i3: float, omega0: NDArray[np.float64], attitude0: NDArray[np.float64] | None = None
+        cls,
+        i1: float,
+        i3: float,
+        omega0: NDArray[np.float64],
+        attitude0: NDArray[np.float64] | None = None,
     ) -> SymmetricTopSolution: ...
     @property
     def precession_rate(self) -> float: ...
@@ -351,6 +459,7 @@ def dynamics_simulate_batch(
     max_steps: int,
     progress: Callable[[float], Any] | None,
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], int]: ...
+
 # ---- heavy top (heavy_top.rs) ----
 # Angles in rad, rates in rad/s, times in s; arrays C-contiguous float64 (N,); python/poinsot/top.py
 # prepares them and wraps HeavyTopCore in the public poinsot.HeavyTop.
@@ -359,13 +468,27 @@ def dynamics_simulate_batch(
 class HeavyTopCore:
     @staticmethod
     def from_state(
-        i1: float, i3: float, mgl: float, phi: float, theta: float, psi: float, phi_dot: float,
-        theta_dot: float, psi_dot: float,
+        i1: float,
+        i3: float,
+        mgl: float,
+        phi: float,
+        theta: float,
+        psi: float,
+        phi_dot: float,
+        theta_dot: float,
+        psi_dot: float,
     ) -> HeavyTopCore: ...
     @staticmethod
     def from_spin(
-        i1: float, i3: float, mgl: float, phi: float, theta: float, psi: float, phi_dot: float,
-        theta_dot: float, omega3: float,
+        i1: float,
+        i3: float,
+        mgl: float,
+        phi: float,
+        theta: float,
+        psi: float,
+        phi_dot: float,
+        theta_dot: float,
+        omega3: float,
     ) -> HeavyTopCore: ...
     @staticmethod
     def from_constants(

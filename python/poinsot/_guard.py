@@ -58,8 +58,16 @@ def guard(namespace: dict[str, Any], names: list[str]) -> None:
                 elif isinstance(raw, classmethod):
                     setattr(obj, attr, classmethod(_guarded(raw.__func__, qual)))
                 elif isinstance(raw, property):
-                    setattr(obj, attr, property(_guarded(raw.fget, qual) if raw.fget else None, raw.fset, raw.fdel,
-                                                raw.__doc__))
+                    setattr(
+                        obj,
+                        attr,
+                        property(
+                            _guarded(raw.fget, qual) if raw.fget else None,
+                            raw.fset,
+                            raw.fdel,
+                            raw.__doc__,
+                        ),
+                    )
                 elif inspect.isfunction(raw):
                     setattr(obj, attr, _guarded(raw, qual))
         elif inspect.isfunction(obj):

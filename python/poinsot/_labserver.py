@@ -66,7 +66,9 @@ CONTENT_TYPES = {
 }
 
 #: Suffixes worth compressing (text and WebAssembly; images are compressed already).
-COMPRESSIBLE = frozenset({".html", ".js", ".mjs", ".css", ".wasm", ".json", ".svg", ".txt", ".stl", ".map"})
+COMPRESSIBLE = frozenset(
+    {".html", ".js", ".mjs", ".css", ".wasm", ".json", ".svg", ".txt", ".stl", ".map"}
+)
 
 #: The page's own scripts, styles and WebAssembly; nothing from elsewhere.
 CONTENT_SECURITY_POLICY = (
@@ -198,7 +200,7 @@ def _make_asset(path: Path, data: bytes) -> Asset:
 class LabHandler(http.server.BaseHTTPRequestHandler):
     """Serves the files of ``server.root`` (see :func:`resolve_request`)."""
 
-    server: "LabServer"
+    server: LabServer
     server_version = "poinsot-lab"
     sys_version = ""
 
@@ -291,17 +293,19 @@ class LabHandler(http.server.BaseHTTPRequestHandler):
         with f:
             size = os.fstat(f.fileno()).st_size
             self.send_response(200)
-            self.send_header("Content-Type", CONTENT_TYPES.get(target.suffix.lower(), "application/octet-stream"))
+            self.send_header(
+                "Content-Type", CONTENT_TYPES.get(target.suffix.lower(), "application/octet-stream")
+            )
             self.send_header("Content-Length", str(size))
             self._common_headers()
             self.end_headers()
             if not head_only:
                 shutil.copyfileobj(f, self.wfile, 1 << 16)
 
-    def do_GET(self) -> None:  # noqa: N802 (the http.server API)
+    def do_GET(self) -> None:
         self._serve(head_only=False)
 
-    def do_HEAD(self) -> None:  # noqa: N802
+    def do_HEAD(self) -> None:
         self._serve(head_only=True)
 
     def _refuse(self) -> None:
@@ -309,7 +313,7 @@ class LabHandler(http.server.BaseHTTPRequestHandler):
 
     do_POST = do_PUT = do_DELETE = do_PATCH = do_OPTIONS = _refuse  # noqa: N815
 
-    def log_message(self, format: str, *args: Any) -> None:  # noqa: A002
+    def log_message(self, format: str, *args: Any) -> None:
         if self.server.verbose:
             super().log_message(format, *args)
 
@@ -325,9 +329,17 @@ class LabServer(http.server.HTTPServer):
     allow_reuse_address = True
     request_queue_size = REQUEST_QUEUE_SIZE
 
-    def __init__(self, root: Path, port: int = 0, *, host: str = LOOPBACK, verbose: bool = False,
-                 max_workers: int = MAX_WORKERS, max_pending: int = MAX_PENDING,
-                 connection_timeout: float = CONNECTION_TIMEOUT_S) -> None:
+    def __init__(
+        self,
+        root: Path,
+        port: int = 0,
+        *,
+        host: str = LOOPBACK,
+        verbose: bool = False,
+        max_workers: int = MAX_WORKERS,
+        max_pending: int = MAX_PENDING,
+        connection_timeout: float = CONNECTION_TIMEOUT_S,
+    ) -> None:
         if host != LOOPBACK:
             raise ValueError(f"host: the lab binds to {LOOPBACK} only, got {host!r}")
         if not 0 <= int(port) <= 65535:
@@ -337,7 +349,9 @@ class LabServer(http.server.HTTPServer):
         if not 1 <= int(max_pending) <= 65536:
             raise ValueError(f"max_pending: must be in [1, 65536], got {max_pending}")
         if not 0.0 < connection_timeout < float("inf"):
-            raise ValueError(f"connection_timeout: must be finite and > 0 s, got {connection_timeout}")
+            raise ValueError(
+                f"connection_timeout: must be finite and > 0 s, got {connection_timeout}"
+            )
         self.root = Path(root).resolve()
         self.verbose = verbose
         self.max_workers = int(max_workers)
@@ -447,7 +461,9 @@ class LabServer(http.server.HTTPServer):
                         del pending[conn]
                         self._start_worker(conn, address)
                 now = time.monotonic()
-                for sock in [s for s, (_, since) in pending.items() if now - since > self.connection_timeout]:
+                for sock in [
+                    s for s, (_, since) in pending.items() if now - since > self.connection_timeout
+                ]:
                     drop(sock)
         finally:
             for sock in list(pending):
@@ -463,8 +479,9 @@ class LabServer(http.server.HTTPServer):
                 return
         sock.setblocking(True)
         try:
-            threading.Thread(target=self._work, args=(sock, address), name="poinsot-lab-worker",
-                             daemon=True).start()
+            threading.Thread(
+                target=self._work, args=(sock, address), name="poinsot-lab-worker", daemon=True
+            ).start()
         except BaseException:
             self._slots.release()
             self.shutdown_request(sock)
@@ -484,8 +501,10 @@ class LabServer(http.server.HTTPServer):
         verbose, never a traceback."""
         if self.verbose:
             exc = sys.exc_info()[1]
-            sys.stderr.write(f"poinsot lab: connection from {client_address[0]}:{client_address[1]} "
-                             f"ended: {type(exc).__name__}: {exc}\n")
+            sys.stderr.write(
+                f"poinsot lab: connection from {client_address[0]}:{client_address[1]} "
+                f"ended: {type(exc).__name__}: {exc}\n"
+            )
 
     def server_close(self) -> None:
         """Closes the listening socket and every connection still waiting for its request."""
@@ -502,5 +521,7 @@ def start_in_thread(root: Path, port: int = 0, **kwargs: Any) -> LabServer:
     """A :class:`LabServer` already serving from a daemon thread (tests, notebooks);
     ``kwargs`` go to :class:`LabServer`; stop it with ``server.shutdown(); server.server_close()``."""
     server = LabServer(root, port, **kwargs)
-    threading.Thread(target=server.serve_forever, kwargs={"poll_interval": 0.05}, name="poinsot-lab", daemon=True).start()
+    threading.Thread(
+        target=server.serve_forever, kwargs={"poll_interval": 0.05}, name="poinsot-lab", daemon=True
+    ).start()
     return server

@@ -40,13 +40,17 @@ def as_float_array(value: Any, name: str, *, finite: bool = True) -> FloatArray:
             with np.errstate(over="raise"):
                 value = raw.astype(np.float64)
         except OverflowError:
-            raise PoinsotError(f"{name}: a number is beyond the range of doubles (about 1.8e308)") from None
+            raise PoinsotError(
+                f"{name}: a number is beyond the range of doubles (about 1.8e308)"
+            ) from None
         except (TypeError, ValueError) as exc:
             if any(isinstance(x, complex) for x in np.ravel(raw)):
                 raise ArgumentTypeError(f"{name}: must be real, got complex numbers") from None
             raise ArgumentTypeError(f"{name}: must be an array of real numbers ({exc})") from None
         except FloatingPointError:
-            raise PoinsotError(f"{name}: a number is beyond the range of doubles (about 1.8e308)") from None
+            raise PoinsotError(
+                f"{name}: a number is beyond the range of doubles (about 1.8e308)"
+            ) from None
     arr = value
     if finite and not np.all(np.isfinite(arr)):
         bad = arr[~np.isfinite(arr)].ravel()[0]
@@ -90,7 +94,9 @@ def as_choice(value: Any, name: str, choices: tuple[str, ...]) -> str:
     """``value`` as one of the strings ``choices``; :class:`ArgumentTypeError` for a
     non-string, :class:`PoinsotError` for another string, both naming ``name``."""
     if not isinstance(value, str):
-        raise ArgumentTypeError(f"{name}: must be one of {', '.join(map(repr, choices))}, got {type(value).__name__} {value!r}")
+        raise ArgumentTypeError(
+            f"{name}: must be one of {', '.join(map(repr, choices))}, got {type(value).__name__} {value!r}"
+        )
     if value not in choices:
         raise PoinsotError(f"{name}: must be one of {', '.join(map(repr, choices))}, got {value!r}")
     return value
@@ -163,7 +169,9 @@ def as_callable(value: Any, name: str, *, optional: bool = True) -> Any:
     if value is None and optional:
         return None
     if not callable(value):
-        raise ArgumentTypeError(f"{name}: must be callable{' or None' if optional else ''}, got {type(value).__name__}")
+        raise ArgumentTypeError(
+            f"{name}: must be callable{' or None' if optional else ''}, got {type(value).__name__}"
+        )
     return value
 
 

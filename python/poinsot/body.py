@@ -169,7 +169,9 @@ class RigidBody:
         self._integration_error: IntegrationErrorEstimate | None = None
 
     @classmethod
-    def _wrap(cls, core: Any, integration_error: IntegrationErrorEstimate | None = None) -> RigidBody:
+    def _wrap(
+        cls, core: Any, integration_error: IntegrationErrorEstimate | None = None
+    ) -> RigidBody:
         body = cls.__new__(cls)
         body._core = core
         body._integration_error = integration_error
@@ -241,7 +243,9 @@ class RigidBody:
     def solid_sphere(cls, mass: float, radius: float) -> RigidBody:
         """A uniform solid sphere of mass ``mass`` (kg) and radius ``radius`` (m), centred at the
         origin: I = 2/5 m r² about every axis (a spherical top)."""
-        return cls._wrap(_core.MassProperties.solid_sphere(_scalar(mass, "mass"), _scalar(radius, "radius")))
+        return cls._wrap(
+            _core.MassProperties.solid_sphere(_scalar(mass, "mass"), _scalar(radius, "radius"))
+        )
 
     @classmethod
     def spherical_shell(cls, mass: float, radius: float) -> RigidBody:
@@ -276,7 +280,9 @@ class RigidBody:
     def cuboid(cls, mass: float, sides: Any) -> RigidBody:
         """A uniform solid cuboid of mass ``mass`` (kg) with sides ``sides`` = (a, b, c) (m)
         along x, y, z, centred at the origin: I_xx = m (b² + c²)/12 and cyclically."""
-        return cls._wrap(_core.MassProperties.cuboid(_scalar(mass, "mass"), as_vector3(sides, "sides")))
+        return cls._wrap(
+            _core.MassProperties.cuboid(_scalar(mass, "mass"), as_vector3(sides, "sides"))
+        )
 
     @classmethod
     def ellipsoid(cls, mass: float, semi_axes: Any) -> RigidBody:
@@ -284,26 +290,34 @@ class RigidBody:
         (a, b, c) (m) along x, y, z, centred at the origin: I_xx = m (b² + c²)/5 and
         cyclically."""
         return cls._wrap(
-            _core.MassProperties.ellipsoid(_scalar(mass, "mass"), as_vector3(semi_axes, "semi_axes"))
+            _core.MassProperties.ellipsoid(
+                _scalar(mass, "mass"), as_vector3(semi_axes, "semi_axes")
+            )
         )
 
     @classmethod
     def thin_rod(cls, mass: float, length: float) -> RigidBody:
         """A thin uniform rod of mass ``mass`` (kg) and length ``length`` (m) along z, centred at
         the origin: I_xx = I_yy = m L²/12, I_zz = 0 (a rotor)."""
-        return cls._wrap(_core.MassProperties.thin_rod(_scalar(mass, "mass"), _scalar(length, "length")))
+        return cls._wrap(
+            _core.MassProperties.thin_rod(_scalar(mass, "mass"), _scalar(length, "length"))
+        )
 
     @classmethod
     def thin_disk(cls, mass: float, radius: float) -> RigidBody:
         """A thin uniform disk of mass ``mass`` (kg) and radius ``radius`` (m) in the xy plane,
         centred at the origin: I_xx = I_yy = m r²/4, I_zz = m r²/2."""
-        return cls._wrap(_core.MassProperties.thin_disk(_scalar(mass, "mass"), _scalar(radius, "radius")))
+        return cls._wrap(
+            _core.MassProperties.thin_disk(_scalar(mass, "mass"), _scalar(radius, "radius"))
+        )
 
     @classmethod
     def thin_ring(cls, mass: float, radius: float) -> RigidBody:
         """A thin uniform ring (hoop) of mass ``mass`` (kg) and radius ``radius`` (m) in the xy
         plane, centred at the origin: I_xx = I_yy = m r²/2, I_zz = m r²."""
-        return cls._wrap(_core.MassProperties.thin_ring(_scalar(mass, "mass"), _scalar(radius, "radius")))
+        return cls._wrap(
+            _core.MassProperties.thin_ring(_scalar(mass, "mass"), _scalar(radius, "radius"))
+        )
 
     @classmethod
     def from_density(
@@ -341,7 +355,9 @@ class RigidBody:
                 Exceptions raised by ``density`` itself propagate unchanged.
         """
         if not callable(density):
-            raise PoinsotError(f"density: must be a callable (N, 3) -> (N,), got {type(density).__name__}")
+            raise PoinsotError(
+                f"density: must be a callable (N, 3) -> (N,), got {type(density).__name__}"
+            )
         b = as_float_array(bounds, "bounds")
         if b.shape != (3, 2):
             raise PoinsotError(
@@ -355,7 +371,9 @@ class RigidBody:
             try:
                 values = as_float_array(got, "density", finite=False)
             except PoinsotError:
-                raise PoinsotError(f"density: the callable must return real numbers, got {type(got).__name__}") from None
+                raise PoinsotError(
+                    f"density: the callable must return real numbers, got {type(got).__name__}"
+                ) from None
             if values.ndim == 0:
                 values = np.full(points.shape[0], float(values))
             if values.shape != (points.shape[0],):
@@ -418,24 +436,34 @@ class RigidBody:
         try:
             f = np.asarray(faces)
         except (TypeError, ValueError) as exc:
-            raise InvalidMeshError(f"faces: must be an (M, 3) array of integer vertex indices ({exc})") from None
+            raise InvalidMeshError(
+                f"faces: must be an (M, 3) array of integer vertex indices ({exc})"
+            ) from None
         if f.ndim != 2 or f.shape[1] != 3:
             raise InvalidMeshError(f"faces: must have shape (M, 3), got {f.shape}")
         if f.size and not np.issubdtype(f.dtype, np.integer):
-            raise InvalidMeshError(f"faces: must be an array of integer vertex indices, got dtype {f.dtype}")
+            raise InvalidMeshError(
+                f"faces: must be an array of integer vertex indices, got dtype {f.dtype}"
+            )
         if f.dtype == np.uint64 and f.size and int(f.max()) > np.iinfo(np.int64).max:
-            raise InvalidMeshError(f"faces: index {int(f.max())} is out of range for {len(v)} vertices")
+            raise InvalidMeshError(
+                f"faces: index {int(f.max())} is out of range for {len(v)} vertices"
+            )
         if as_flag(merge_vertices, "merge_vertices"):
             v, f = _merge_vertices(v, f)
         rho = _scalar(density, "density")
         return cls._wrap(
             _core.MassProperties.from_mesh(
-                np.ascontiguousarray(v, dtype=np.float64), np.ascontiguousarray(f, dtype=np.int64), rho
+                np.ascontiguousarray(v, dtype=np.float64),
+                np.ascontiguousarray(f, dtype=np.int64),
+                rho,
             )
         )
 
     @classmethod
-    def from_trimesh(cls, mesh: Any, density: float = 1.0, *, merge_vertices: bool = False) -> RigidBody:
+    def from_trimesh(
+        cls, mesh: Any, density: float = 1.0, *, merge_vertices: bool = False
+    ) -> RigidBody:
         """The solid bounded by a ``trimesh.Trimesh`` (vertices in m), of uniform ``density``
         (kg/m³): :meth:`from_mesh` of ``mesh.vertices`` and ``mesh.faces`` with the mesh's
         topology as it is (pass ``merge_vertices=True`` for a mesh built with
@@ -473,7 +501,9 @@ class RigidBody:
                 "pip install 'poinsot[mesh]' (or pip install trimesh)"
             ) from None
         if not isinstance(path, (str, os.PathLike)):
-            raise ArgumentTypeError(f"path: must be a file name (str or os.PathLike), got {type(path).__name__}")
+            raise ArgumentTypeError(
+                f"path: must be a file name (str or os.PathLike), got {type(path).__name__}"
+            )
         name = os.fspath(path)
         try:
             info = os.stat(name)
@@ -484,16 +514,22 @@ class RigidBody:
         from .limits import memory_budget
 
         if info.st_size > memory_budget():
-            raise PoinsotError(f"path: {name!r} has {info.st_size} bytes, more than the memory budget "
-                               f"of {memory_budget()} bytes (see poinsot.set_memory_budget)")
+            raise PoinsotError(
+                f"path: {name!r} has {info.st_size} bytes, more than the memory budget "
+                f"of {memory_budget()} bytes (see poinsot.set_memory_budget)"
+            )
         try:
             loaded = trimesh.load(name, process=False, force="mesh")
         except ImportError as exc:  # a decoder trimesh needs for this file is missing
-            raise ImportError(f"path: reading {name!r} needs the Python package {exc.name!r}, which is not "
-                              "installed: pip install 'poinsot[mesh]'", name=exc.name) from None
-        except Exception as exc:  # noqa: BLE001 - a file parser may fail in any way
-            raise InvalidMeshError(f"path: {name!r} cannot be read as a triangle mesh "
-                                   f"({type(exc).__name__}: {exc})") from None
+            raise ImportError(
+                f"path: reading {name!r} needs the Python package {exc.name!r}, which is not "
+                "installed: pip install 'poinsot[mesh]'",
+                name=exc.name,
+            ) from None
+        except Exception as exc:
+            raise InvalidMeshError(
+                f"path: {name!r} cannot be read as a triangle mesh ({type(exc).__name__}: {exc})"
+            ) from None
         if not isinstance(loaded, trimesh.Trimesh) or len(loaded.faces) == 0:
             raise InvalidMeshError(f"path: {name!r} holds no triangle mesh")
         return cls.from_mesh(loaded.vertices, loaded.faces, density, merge_vertices=True)
@@ -506,12 +542,16 @@ class RigidBody:
         try:
             items = list(bodies)
         except TypeError:
-            raise ArgumentTypeError(f"bodies: must be an iterable of RigidBody, got {type(bodies).__name__}") from None
+            raise ArgumentTypeError(
+                f"bodies: must be an iterable of RigidBody, got {type(bodies).__name__}"
+            ) from None
         if not items:
             raise PoinsotError("bodies: must hold at least one body, got none")
         for i, b in enumerate(items):
             if not isinstance(b, RigidBody):
-                raise ArgumentTypeError(f"bodies: item {i} is a {type(b).__name__}, not a RigidBody")
+                raise ArgumentTypeError(
+                    f"bodies: item {i} is a {type(b).__name__}, not a RigidBody"
+                )
         return cls._wrap(_core.MassProperties.combine([b._core for b in items]))
 
     # ---- attributes -----------------------------------------------------------------------
@@ -598,7 +638,9 @@ class RigidBody:
         ``about`` as in :meth:`angular_momentum`."""
         return self._per_omega("holding_torque", omega, about, (3,))
 
-    def momentum_angle(self, omega: Any, about: Any = None, *, degrees: bool = False) -> FloatArray | float:
+    def momentum_angle(
+        self, omega: Any, about: Any = None, *, degrees: bool = False
+    ) -> FloatArray | float:
         """The angle between L and ω (rad, or degrees with ``degrees=True``) for angular velocity
         ``omega`` (rad/s, shape (..., 3)) → shape (...) (a float for one ω): zero when ω lies along a principal
         axis; otherwise L is not parallel to ω (eq. 2.57).
@@ -613,7 +655,9 @@ class RigidBody:
     def translated(self, offset: Any) -> RigidBody:
         """The same body moved by ``offset`` (m, (3,)): the centre of mass moves, the inertia
         about it is unchanged."""
-        return RigidBody._wrap(self._core.translated(as_vector3(offset, "offset")), self._integration_error)
+        return RigidBody._wrap(
+            self._core.translated(as_vector3(offset, "offset")), self._integration_error
+        )
 
     def rotated(self, rotation: Any) -> RigidBody:
         """The same body rotated actively by ``rotation`` (a 3×3 rotation matrix or a
@@ -626,7 +670,9 @@ class RigidBody:
         """
         mats, lead = as_matrices(rotation, "rotation")
         if lead != ():
-            raise PoinsotError(f"rotation: must be a single rotation, got {mats.shape[0]} of shape {lead}")
+            raise PoinsotError(
+                f"rotation: must be a single rotation, got {mats.shape[0]} of shape {lead}"
+            )
         return RigidBody._wrap(self._core.rotated(mats[0]))
 
     def __add__(self, other: object) -> RigidBody:
@@ -671,7 +717,10 @@ class RigidBody:
 
 
 def _restore(
-    mass: float, inertia: FloatArray, center_of_mass: FloatArray, err: IntegrationErrorEstimate | None
+    mass: float,
+    inertia: FloatArray,
+    center_of_mass: FloatArray,
+    err: IntegrationErrorEstimate | None,
 ) -> RigidBody:
     body = RigidBody(mass, inertia, center_of_mass)
     body._integration_error = err

@@ -11,6 +11,7 @@ finish, 130 when interrupted (Ctrl+C).
 
 from __future__ import annotations
 
+import contextlib
 import errno
 import json
 import math
@@ -75,8 +76,16 @@ MAX_MESH_FILE_BYTES = 256 * 1024 * 1024
 #: fast-top approximations 2.120/2.121 where they diverge (HeavyTop.steady_precession), the
 #: hours of one full turn of the Foucault pendulum at the equator. NaN is refused everywhere,
 #: and any other infinity.
-MAY_BE_INFINITE = frozenset({"period", "flip_interval", "nutation_period", "cubic_roots",
-                             "steady_precession_at_theta0", "full_turn_hours"})
+MAY_BE_INFINITE = frozenset(
+    {
+        "period",
+        "flip_interval",
+        "nutation_period",
+        "cubic_roots",
+        "steady_precession_at_theta0",
+        "full_turn_hours",
+    }
+)
 
 #: Argument names of the Python API that a command's option spells differently (the error
 #: messages of the core name the API's argument; the command line names its option).
@@ -92,7 +101,9 @@ class FiniteFloat(click.ParamType):
 
     name = "number"
 
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
+    def convert(
+        self, value: Any, param: click.Parameter | None, ctx: click.Context | None
+    ) -> float:
         if isinstance(value, float) and math.isfinite(value):
             return value
         try:
@@ -139,8 +150,10 @@ def _given(ctx: click.Context) -> str:
 
     parts = []
     for p in ctx.command.params:
-        if p.name is None or ctx.get_parameter_source(p.name) not in (ParameterSource.COMMANDLINE,
-                                                                     ParameterSource.ENVIRONMENT):
+        if p.name is None or ctx.get_parameter_source(p.name) not in (
+            ParameterSource.COMMANDLINE,
+            ParameterSource.ENVIRONMENT,
+        ):
             continue
         value = ctx.params.get(p.name)
         if isinstance(p, click.Option) and p.is_flag:
@@ -199,8 +212,11 @@ class _PoinsotCommand(click.Command):
         except Exception as exc:  # a bug: still one line, with what is needed to report it
             if os.environ.get("POINSOT_TRACEBACK"):
                 raise
-            _fail(f"internal error, please report it: {type(exc).__name__}: {exc} (given {_given(ctx)}; "
-                  "POINSOT_TRACEBACK=1 shows where)", EXIT_REFUSED)
+            _fail(
+                f"internal error, please report it: {type(exc).__name__}: {exc} (given {_given(ctx)}; "
+                "POINSOT_TRACEBACK=1 shows where)",
+                EXIT_REFUSED,
+            )
 
 
 def _fail_interrupted() -> NoReturn:
@@ -208,10 +224,8 @@ def _fail_interrupted() -> NoReturn:
 
 
 def _fail_line(line: str, code: int) -> NoReturn:
-    try:
+    with contextlib.suppress(OSError):
         click.echo(line, err=True)
-    except OSError:
-        pass
     sys.exit(code)
 
 
@@ -231,8 +245,14 @@ class _PoinsotGroup(click.Group):
 
     command_class = _PoinsotCommand
 
-    def main(self, args: Any = None, prog_name: str | None = None, complete_var: str | None = None,
-             standalone_mode: bool = True, **extra: Any) -> Any:
+    def main(
+        self,
+        args: Any = None,
+        prog_name: str | None = None,
+        complete_var: str | None = None,
+        standalone_mode: bool = True,
+        **extra: Any,
+    ) -> Any:
         if not standalone_mode:
             return super().main(args, prog_name, complete_var, standalone_mode=False, **extra)
         try:
@@ -292,8 +312,10 @@ def require_finite(data: dict[str, Any]) -> None:
         if math.isnan(v) or (math.isinf(v) and field not in MAY_BE_INFINITE):
             ctx = click.get_current_context(silent=True)
             given = _given(ctx) if ctx is not None else ""
-            raise Refused(f"the result is not a finite number ({where} = {v}) for {given}: these inputs "
-                          "are beyond what poinsot can compute, so nothing is printed")
+            raise Refused(
+                f"the result is not a finite number ({where} = {v}) for {given}: these inputs "
+                "are beyond what poinsot can compute, so nothing is printed"
+            )
 
 
 def _interactive() -> bool:
@@ -309,8 +331,11 @@ def emit_json(data: dict[str, Any]) -> None:
     click.echo(json.dumps(_jsonable(data), indent=2))
 
 
-@click.group(cls=_PoinsotGroup, context_settings={"help_option_names": ["-h", "--help"]},
-             epilog=EXIT_STATUSES)
+@click.group(
+    cls=_PoinsotGroup,
+    context_settings={"help_option_names": ["-h", "--help"]},
+    epilog=EXIT_STATUSES,
+)
 @click.version_option(package_name="poinsot")
 def main() -> None:
     """poinsot: moving frames and the motion of rigid bodies.
@@ -330,19 +355,52 @@ def tour() -> None:
 @main.command()
 @click.argument("shape")
 @click.option("--mass", type=FINITE, default=None, help="Mass in kg (standard shapes; default 1).")
-@click.option("--radius", type=FINITE, default=None, help="Radius in m (sphere, shell, cylinder, cone, disk, ring).")
+@click.option(
+    "--radius",
+    type=FINITE,
+    default=None,
+    help="Radius in m (sphere, shell, cylinder, cone, disk, ring).",
+)
 @click.option("--height", type=FINITE, default=None, help="Height in m (cylinder, cone).")
 @click.option("--length", type=FINITE, default=None, help="Length in m (rod).")
-@click.option("--sides", type=FINITE, nargs=3, default=None, help="Side lengths a b c in m along x y z (cuboid).")
-@click.option("--semi-axes", "semi_axes", type=FINITE, nargs=3, default=None, help="Semi-axes a b c in m (ellipsoid).")
-@click.option("--density", type=FINITE, default=None, help="Density in kg/m³ (mesh files; default 1).")
-@click.option("--plot", "plot_path", type=click.Path(dir_okay=False), default=None,
-              help="Save a picture of the inertia ellipsoid and principal axes to this file.")
+@click.option(
+    "--sides",
+    type=FINITE,
+    nargs=3,
+    default=None,
+    help="Side lengths a b c in m along x y z (cuboid).",
+)
+@click.option(
+    "--semi-axes",
+    "semi_axes",
+    type=FINITE,
+    nargs=3,
+    default=None,
+    help="Semi-axes a b c in m (ellipsoid).",
+)
+@click.option(
+    "--density", type=FINITE, default=None, help="Density in kg/m³ (mesh files; default 1)."
+)
+@click.option(
+    "--plot",
+    "plot_path",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="Save a picture of the inertia ellipsoid and principal axes to this file.",
+)
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
-def inertia(shape: str, mass: float | None, radius: float | None, height: float | None,
-            length: float | None, sides: tuple[float, float, float] | None,
-            semi_axes: tuple[float, float, float] | None, density: float | None,
-            plot_path: str | None, as_json: bool) -> None:
+def inertia(
+    shape: str,
+    mass: float | None,
+    radius: float | None,
+    height: float | None,
+    length: float | None,
+    sides: tuple[float, float, float] | None,
+    semi_axes: tuple[float, float, float] | None,
+    density: float | None,
+    plot_path: str | None,
+    as_json: bool,
+) -> None:
     """Mass properties of a standard SHAPE or of a closed mesh file (.stl, .obj, ...).
 
     SHAPE is one of sphere, shell, cylinder, cone, cuboid, ellipsoid, rod, disk, ring
@@ -361,8 +419,13 @@ def inertia(shape: str, mass: float | None, radius: float | None, height: float 
 
     if shape in SHAPES:
         ctor, needs = SHAPES[shape]
-        given = {"radius": radius, "height": height, "length": length, "sides": sides,
-                 "semi_axes": semi_axes}
+        given = {
+            "radius": radius,
+            "height": height,
+            "length": length,
+            "sides": sides,
+            "semi_axes": semi_axes,
+        }
         missing = [n for n in needs if given[n] is None]
         if missing:
             opts = ", ".join("--" + n.replace("_", "-") for n in missing)
@@ -372,7 +435,9 @@ def inertia(shape: str, mass: float | None, radius: float | None, height: float 
             opts = ", ".join("--" + n.replace("_", "-") for n in extra)
             raise click.UsageError(f"shape '{shape}' does not take {opts}")
         if density is not None:
-            raise click.UsageError("--density applies to mesh files; give --mass for standard shapes")
+            raise click.UsageError(
+                "--density applies to mesh files; give --mass for standard shapes"
+            )
         if plot_path is not None:
             _check_picture_path(plot_path)
         body = getattr(RigidBody, ctor)(1.0 if mass is None else mass, *(given[n] for n in needs))
@@ -414,19 +479,25 @@ def _mesh_file(shape: str) -> Path:
         st = path.stat()
     except (FileNotFoundError, NotADirectoryError):
         raise click.UsageError(
-            f"'{shape}' is neither a shape ({', '.join(SHAPES)}) nor an existing mesh file") from None
+            f"'{shape}' is neither a shape ({', '.join(SHAPES)}) nor an existing mesh file"
+        ) from None
     except OSError as exc:
         raise click.UsageError(f"SHAPE: cannot look up '{shape}': {exc.strerror or exc}") from None
     if stat.S_ISDIR(st.st_mode):
         raise click.UsageError(f"SHAPE: '{shape}' is a directory, not a mesh file")
     if not stat.S_ISREG(st.st_mode):
-        raise click.UsageError(f"SHAPE: '{shape}' is not a regular file (a device, pipe or socket), "
-                               "not a mesh file")
+        raise click.UsageError(
+            f"SHAPE: '{shape}' is not a regular file (a device, pipe or socket), not a mesh file"
+        )
     if st.st_size == 0:
-        raise Refused(f"SHAPE: '{shape}' is empty (the file system reports 0 bytes): no mesh to read")
+        raise Refused(
+            f"SHAPE: '{shape}' is empty (the file system reports 0 bytes): no mesh to read"
+        )
     if st.st_size > MAX_MESH_FILE_BYTES:
-        raise Refused(f"SHAPE: '{shape}' is {st.st_size} bytes, more than the {MAX_MESH_FILE_BYTES} "
-                      "bytes (256 MiB) poinsot inertia reads")
+        raise Refused(
+            f"SHAPE: '{shape}' is {st.st_size} bytes, more than the {MAX_MESH_FILE_BYTES} "
+            "bytes (256 MiB) poinsot inertia reads"
+        )
     if not os.access(path, os.R_OK):
         raise Refused(f"SHAPE: cannot read '{shape}': permission denied")
     return path
@@ -453,12 +524,14 @@ def _load_mesh(path: Path, density: float) -> Any:
         if text.startswith("density:"):
             raise
         if text.startswith("path:"):
-            raise Refused(f"SHAPE:{text[len('path:'):]}") from exc
+            raise Refused(f"SHAPE:{text[len('path:') :]}") from exc
         raise Refused(f"SHAPE: '{path}' is not a valid mesh: {text}") from exc
     except ImportError as exc:
         missing = f"the Python package '{exc.name}'" if exc.name else "a Python package"
-        raise Refused(f"SHAPE: reading '{path}' needs {missing}, which is not installed: "
-                      "pip install 'poinsot[mesh]'") from exc
+        raise Refused(
+            f"SHAPE: reading '{path}' needs {missing}, which is not installed: "
+            "pip install 'poinsot[mesh]'"
+        ) from exc
     except (KeyboardInterrupt, MemoryError):
         raise
     except Exception as exc:
@@ -480,11 +553,15 @@ def _check_picture_path(plot_path: str) -> None:
         try:
             from matplotlib.backend_bases import FigureCanvasBase
         except ImportError as exc:
-            raise Refused("--plot needs matplotlib, which is not installed: pip install 'poinsot[plot]'") from exc
+            raise Refused(
+                "--plot needs matplotlib, which is not installed: pip install 'poinsot[plot]'"
+            ) from exc
         kinds = FigureCanvasBase.get_supported_filetypes()
         if suffix not in kinds:
-            raise click.UsageError(f"--plot: matplotlib cannot write '.{suffix}' files; use one of "
-                                   + ", ".join(sorted(kinds)))
+            raise click.UsageError(
+                f"--plot: matplotlib cannot write '.{suffix}' files; use one of "
+                + ", ".join(sorted(kinds))
+            )
 
 
 def _print_body(source: str, body: Any) -> None:
@@ -500,8 +577,12 @@ def _print_body(source: str, body: Any) -> None:
     table.add_row("inertia about c.o.m.", "\n".join(rows) + "  kg·m²")
     table.add_row("principal moments", ", ".join(fmt(m) for m in body.principal_moments) + " kg·m²")
     axes = body.principal_axes
-    table.add_row("principal axes", "\n".join(
-        f"e{i + 1} = (" + ", ".join(f"{v: .4f}" for v in axes[:, i]) + ")" for i in range(3)))
+    table.add_row(
+        "principal axes",
+        "\n".join(
+            f"e{i + 1} = (" + ", ".join(f"{v: .4f}" for v in axes[:, i]) + ")" for i in range(3)
+        ),
+    )
     table.add_row("kind", body.kind)
     console.print(table)
 
@@ -518,13 +599,30 @@ def _angle_unit(degrees: bool) -> str:
 
 @main.command()
 @click.option("--height", type=FINITE, required=True, help="Drop height in m (> 0).")
-@click.option("--latitude", type=FINITE, required=True, help="Latitude, north-positive (rad, or degrees with --degrees).")
+@click.option(
+    "--latitude",
+    type=FINITE,
+    required=True,
+    help="Latitude, north-positive (rad, or degrees with --degrees).",
+)
 @click.option("--degrees", is_flag=True, help="Read --latitude in degrees.")
-@click.option("--solar-day", "solar_day", is_flag=True, help="Use the unit's rate 2π/86400 instead of the sidereal rate.")
-@click.option("--gravity", type=click.Choice(["uniform", "inverse-square"]), default="uniform", show_default=True,
-              help="Uniform gravity (the unit's model) or g falling off with height.")
+@click.option(
+    "--solar-day",
+    "solar_day",
+    is_flag=True,
+    help="Use the unit's rate 2π/86400 instead of the sidereal rate.",
+)
+@click.option(
+    "--gravity",
+    type=click.Choice(["uniform", "inverse-square"]),
+    default="uniform",
+    show_default=True,
+    help="Uniform gravity (the unit's model) or g falling off with height.",
+)
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
-def fall(height: float, latitude: float, degrees: bool, solar_day: bool, gravity: str, as_json: bool) -> None:
+def fall(
+    height: float, latitude: float, degrees: bool, solar_day: bool, gravity: str, as_json: bool
+) -> None:
     """A body dropped from rest on the rotating Earth (eqs. 2.32–2.42).
 
     Integrates the fall exactly in the rotating frame and prints the landing point beside
@@ -538,10 +636,17 @@ def fall(height: float, latitude: float, degrees: bool, solar_day: bool, gravity
     earth = _earth(solar_day)
     res = earth.drop(height, latitude, degrees)
     data = {
-        "height": height, "latitude": latitude, "degrees": degrees,
-        "rotation_rate": earth.rotation_rate, "g": earth.g, "gravity": gravity,
-        "time": res.time, "east": res.east, "north": res.north,
-        "first_order_east": res.first_order_east, "second_order_south": res.second_order_south,
+        "height": height,
+        "latitude": latitude,
+        "degrees": degrees,
+        "rotation_rate": earth.rotation_rate,
+        "g": earth.g,
+        "gravity": gravity,
+        "time": res.time,
+        "east": res.east,
+        "north": res.north,
+        "first_order_east": res.first_order_east,
+        "second_order_south": res.second_order_south,
     }
     if gravity != "uniform":
         res = earth.drop(height, latitude, degrees, gravity=gravity)
@@ -553,28 +658,53 @@ def fall(height: float, latitude: float, degrees: bool, solar_day: bool, gravity
     from rich.console import Console
     from rich.table import Table
 
-    table = Table(title=f"drop from {height:g} m at latitude {latitude:g}{_angle_unit(degrees)} "
-                        f"(ω = {earth.rotation_rate:.7g} rad/s, g = {earth.g:g} m/s², {gravity} gravity)")
+    table = Table(
+        title=f"drop from {height:g} m at latitude {latitude:g}{_angle_unit(degrees)} "
+        f"(ω = {earth.rotation_rate:.7g} rad/s, g = {earth.g:g} m/s², {gravity} gravity)"
+    )
     table.add_column("quantity")
     table.add_column("exact (rotating frame)", justify="right")
     table.add_column("closed form", justify="right")
-    table.add_row("time of fall (s)", f"{data['time']:.9g}", f"{earth.fall_time(height):.9g}  √(2h/g), 2.41")
+    table.add_row(
+        "time of fall (s)", f"{data['time']:.9g}", f"{earth.fall_time(height):.9g}  √(2h/g), 2.41"
+    )
     table.add_row("east (m)", f"{data['east']:.6e}", f"{res.first_order_east:.6e}  eq. 2.42")
-    table.add_row("south (m)", f"{-data['north']:.6e}", f"{res.second_order_south:.6e}  ¾ω² sin2λ h²/g")
+    table.add_row(
+        "south (m)", f"{-data['north']:.6e}", f"{res.second_order_south:.6e}  ¾ω² sin2λ h²/g"
+    )
     Console().print(table)
 
 
 @main.command()
 @click.option("--speed", type=FINITE, required=True, help="Launch speed in m/s.")
-@click.option("--elevation", type=FINITE, required=True, help="Elevation above the horizon (rad, or degrees with --degrees).")
-@click.option("--azimuth", type=FINITE, default=0.0, show_default=True, help="Azimuth clockwise from north (0 north, 90° east).")
+@click.option(
+    "--elevation",
+    type=FINITE,
+    required=True,
+    help="Elevation above the horizon (rad, or degrees with --degrees).",
+)
+@click.option(
+    "--azimuth",
+    type=FINITE,
+    default=0.0,
+    show_default=True,
+    help="Azimuth clockwise from north (0 north, 90° east).",
+)
 @click.option("--latitude", type=FINITE, required=True, help="Latitude, north-positive.")
 @click.option("--height", type=FINITE, default=0.0, show_default=True, help="Launch height in m.")
 @click.option("--degrees", is_flag=True, help="Read the angles in degrees.")
 @click.option("--solar-day", "solar_day", is_flag=True, help="Use the unit's rate 2π/86400.")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
-def projectile(speed: float, elevation: float, azimuth: float, latitude: float, height: float,
-               degrees: bool, solar_day: bool, as_json: bool) -> None:
+def projectile(
+    speed: float,
+    elevation: float,
+    azimuth: float,
+    latitude: float,
+    height: float,
+    degrees: bool,
+    solar_day: bool,
+    as_json: bool,
+) -> None:
     """A projectile on the rotating Earth, with and without the Earth's rotation.
 
     Prints the time of flight, range and the drift across the line of fire (to the right in
@@ -589,10 +719,17 @@ def projectile(speed: float, elevation: float, azimuth: float, latitude: float, 
     spin = earth.projectile(speed, elevation, azimuth, latitude, **kw)
     still = earth.projectile(speed, elevation, azimuth, latitude, rotation=False, **kw)
     keys = ("time", "range", "downrange", "drift", "east", "north")
-    data = {"speed": speed, "elevation": elevation, "azimuth": azimuth, "latitude": latitude,
-            "height": height, "degrees": degrees, "rotation_rate": earth.rotation_rate,
-            "with_rotation": {k: getattr(spin, k) for k in keys},
-            "without_rotation": {k: getattr(still, k) for k in keys}}
+    data = {
+        "speed": speed,
+        "elevation": elevation,
+        "azimuth": azimuth,
+        "latitude": latitude,
+        "height": height,
+        "degrees": degrees,
+        "rotation_rate": earth.rotation_rate,
+        "with_rotation": {k: getattr(spin, k) for k in keys},
+        "without_rotation": {k: getattr(still, k) for k in keys},
+    }
     require_finite(data)
     if as_json:
         emit_json(data)
@@ -600,14 +737,20 @@ def projectile(speed: float, elevation: float, azimuth: float, latitude: float, 
     from rich.console import Console
     from rich.table import Table
 
-    table = Table(title=f"{speed:g} m/s at elevation {elevation:g}{_angle_unit(degrees)}, azimuth "
-                        f"{azimuth:g}{_angle_unit(degrees)}, latitude {latitude:g}{_angle_unit(degrees)}")
+    table = Table(
+        title=f"{speed:g} m/s at elevation {elevation:g}{_angle_unit(degrees)}, azimuth "
+        f"{azimuth:g}{_angle_unit(degrees)}, latitude {latitude:g}{_angle_unit(degrees)}"
+    )
     table.add_column("quantity")
     table.add_column("rotating Earth", justify="right")
     table.add_column("no rotation", justify="right")
     table.add_column("difference", justify="right")
-    for k, label in (("time", "time of flight (s)"), ("range", "range (m)"), ("downrange", "downrange (m)"),
-                     ("drift", "drift, right + (m)")):
+    for k, label in (
+        ("time", "time of flight (s)"),
+        ("range", "range (m)"),
+        ("downrange", "downrange (m)"),
+        ("drift", "drift, right + (m)"),
+    ):
         a, b = getattr(spin, k), getattr(still, k)
         table.add_row(label, f"{a:.9g}", f"{b:.9g}", f"{a - b:+.4g}")
     Console().print(table)
@@ -616,13 +759,30 @@ def projectile(speed: float, elevation: float, azimuth: float, latitude: float, 
 @main.command()
 @click.option("--latitude", type=FINITE, required=True, help="Latitude, north-positive.")
 @click.option("--degrees", is_flag=True, help="Read --latitude in degrees.")
-@click.option("--length", type=FINITE, default=67.0, show_default=True, help="Pendulum length in m (the Panthéon's 67 m).")
-@click.option("--amplitude", type=FINITE, default=1.0, show_default=True, help="Release displacement in m.")
-@click.option("--duration", type=FINITE, default=3600.0, show_default=True, help="Simulated time in s.")
+@click.option(
+    "--length",
+    type=FINITE,
+    default=67.0,
+    show_default=True,
+    help="Pendulum length in m (the Panthéon's 67 m).",
+)
+@click.option(
+    "--amplitude", type=FINITE, default=1.0, show_default=True, help="Release displacement in m."
+)
+@click.option(
+    "--duration", type=FINITE, default=3600.0, show_default=True, help="Simulated time in s."
+)
 @click.option("--solar-day", "solar_day", is_flag=True, help="Use the unit's rate 2π/86400.")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
-def foucault(latitude: float, degrees: bool, length: float, amplitude: float, duration: float,
-             solar_day: bool, as_json: bool) -> None:
+def foucault(
+    latitude: float,
+    degrees: bool,
+    length: float,
+    amplitude: float,
+    duration: float,
+    solar_day: bool,
+    as_json: bool,
+) -> None:
     """The Foucault pendulum, simulated in the rotating frame.
 
     Measures the turn of the swing plane from the simulation and compares it with ω sin λ
@@ -634,14 +794,32 @@ def foucault(latitude: float, degrees: bool, length: float, amplitude: float, du
       poinsot foucault --latitude 48.85 --degrees --duration 7200
     """
     earth = _earth(solar_day)
-    run = earth.foucault(latitude, degrees, length=length, amplitude=amplitude, duration=duration,
-                         samples=2, progress=not as_json and _interactive())
+    run = earth.foucault(
+        latitude,
+        degrees,
+        length=length,
+        amplitude=amplitude,
+        duration=duration,
+        samples=2,
+        progress=not as_json and _interactive(),
+    )
     hours = 2 * np.pi / abs(run.expected_rate) / 3600 if run.expected_rate != 0 else float("inf")
-    data = {"latitude": latitude, "degrees": degrees, "length": length, "amplitude": amplitude,
-            "duration": duration, "rotation_rate": earth.rotation_rate,
-            "precession_rate": run.precession_rate, "expected_rate": run.expected_rate,
-            "theory_rate": run.theory_rate, "sense": run.sense, "regime": run.regime,
-            "regime_note": run.regime_note, "turning_points": len(run.turn_times), "full_turn_hours": hours}
+    data = {
+        "latitude": latitude,
+        "degrees": degrees,
+        "length": length,
+        "amplitude": amplitude,
+        "duration": duration,
+        "rotation_rate": earth.rotation_rate,
+        "precession_rate": run.precession_rate,
+        "expected_rate": run.expected_rate,
+        "theory_rate": run.theory_rate,
+        "sense": run.sense,
+        "regime": run.regime,
+        "regime_note": run.regime_note,
+        "turning_points": len(run.turn_times),
+        "full_turn_hours": hours,
+    }
     require_finite(data)
     if as_json:
         emit_json(data)
@@ -652,8 +830,10 @@ def foucault(latitude: float, degrees: bool, length: float, amplitude: float, du
     def rate(value: float | None) -> str:
         return "—" if value is None else f"{value:.6e}"
 
-    table = Table(title=f"Foucault pendulum, L = {length:g} m, latitude {latitude:g}{_angle_unit(degrees)}, "
-                        f"{duration:g} s simulated")
+    table = Table(
+        title=f"Foucault pendulum, L = {length:g} m, latitude {latitude:g}{_angle_unit(degrees)}, "
+        f"{duration:g} s simulated"
+    )
     table.add_column("quantity")
     table.add_column("value", justify="right")
     table.add_row("regime", run.regime)
@@ -673,17 +853,38 @@ def _floats3(ctx: click.Context, param: click.Parameter, value: Any) -> Any:
 
 
 @main.command()
-@click.option("--moments", nargs=3, type=FINITE, required=True, help="Principal moments I1 I2 I3 (kg·m²).")
-@click.option("--omega", nargs=3, type=FINITE, required=True, help="Body angular velocity at t = 0 (rad/s).")
-@click.option("--duration", type=FINITE, default=10.0, show_default=True, help="Simulated time in s.")
-@click.option("--method", type=click.Choice(["auto", "exact", "rk4", "dop853", "splitting2", "splitting4",
-                                             "splitting6"]), default="auto", show_default=True,
-              help="Integrator (auto: the exact flow).")
-@click.option("--dt", type=FINITE, default=None, help="Step of rk4/splitting (s); default 1/1000 turn.")
-@click.option("--samples", type=int, default=201, show_default=True, help="Evenly spaced output times.")
+@click.option(
+    "--moments", nargs=3, type=FINITE, required=True, help="Principal moments I1 I2 I3 (kg·m²)."
+)
+@click.option(
+    "--omega", nargs=3, type=FINITE, required=True, help="Body angular velocity at t = 0 (rad/s)."
+)
+@click.option(
+    "--duration", type=FINITE, default=10.0, show_default=True, help="Simulated time in s."
+)
+@click.option(
+    "--method",
+    type=click.Choice(["auto", "exact", "rk4", "dop853", "splitting2", "splitting4", "splitting6"]),
+    default="auto",
+    show_default=True,
+    help="Integrator (auto: the exact flow).",
+)
+@click.option(
+    "--dt", type=FINITE, default=None, help="Step of rk4/splitting (s); default 1/1000 turn."
+)
+@click.option(
+    "--samples", type=int, default=201, show_default=True, help="Evenly spaced output times."
+)
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
-def free(moments: tuple[float, float, float], omega: tuple[float, float, float], duration: float, method: str,
-         dt: float | None, samples: int, as_json: bool) -> None:
+def free(
+    moments: tuple[float, float, float],
+    omega: tuple[float, float, float],
+    duration: float,
+    method: str,
+    dt: float | None,
+    samples: int,
+    as_json: bool,
+) -> None:
     """The torque-free rigid body: the exact solution beside an integrator.
 
     Reports the regime (which axis ω circles), the period of ω, the invariants and how well the
@@ -699,31 +900,58 @@ def free(moments: tuple[float, float, float], omega: tuple[float, float, float],
     from .free import FreeRigidBody, axis_stability
 
     exact = FreeRigidBody(moments, omega)
-    show_bar = (not as_json and _interactive() and method not in ("auto", "exact")
-                and duration * np.linalg.norm(omega) > 1e4)
+    show_bar = (
+        not as_json
+        and _interactive()
+        and method not in ("auto", "exact")
+        and duration * np.linalg.norm(omega) > 1e4
+    )
     t0 = time.perf_counter()
     if show_bar:
         from rich.progress import Progress
 
         with Progress(transient=True) as bar:
             task = bar.add_task(f"{method}: {duration:g} s", total=1.0)
-            tr = simulate(moments, omega, duration, method=method, dt=dt, samples=samples,
-                          progress=lambda f: bar.update(task, completed=f))
+            tr = simulate(
+                moments,
+                omega,
+                duration,
+                method=method,
+                dt=dt,
+                samples=samples,
+                progress=lambda f: bar.update(task, completed=f),
+            )
     else:
         tr = simulate(moments, omega, duration, method=method, dt=dt, samples=samples)
     wall = time.perf_counter() - t0
     w_end, q_end = exact.state(duration)
-    q_err = float(min(np.linalg.norm(tr.attitude[-1] - q_end), np.linalg.norm(tr.attitude[-1] + q_end)))
+    q_err = float(
+        min(np.linalg.norm(tr.attitude[-1] - q_end), np.linalg.norm(tr.attitude[-1] + q_end))
+    )
     stab = axis_stability(moments, float(np.linalg.norm(omega)))
     data = {
-        "moments": list(moments), "omega0": list(omega), "duration": duration, "method": tr.method,
-        "step": tr.step, "steps": tr.steps, "wall_time_s": wall,
-        "regime": exact.regime, "period": exact.period, "parameter": exact.parameter,
-        "flip_interval": exact.flip_interval, "energy": exact.energy,
-        "angular_momentum": exact.angular_momentum, "angular_momentum_magnitude": float(np.linalg.norm(exact.angular_momentum)),
-        "max_energy_error": float(tr.energy_error().max()), "max_momentum_error": float(tr.momentum_error().max()),
-        "omega_final": tr.omega[-1], "attitude_final": tr.attitude[-1], "omega_exact": w_end, "attitude_exact": q_end,
-        "omega_error": float(np.linalg.norm(tr.omega[-1] - w_end)), "attitude_error": q_err,
+        "moments": list(moments),
+        "omega0": list(omega),
+        "duration": duration,
+        "method": tr.method,
+        "step": tr.step,
+        "steps": tr.steps,
+        "wall_time_s": wall,
+        "regime": exact.regime,
+        "period": exact.period,
+        "parameter": exact.parameter,
+        "flip_interval": exact.flip_interval,
+        "energy": exact.energy,
+        "angular_momentum": exact.angular_momentum,
+        "angular_momentum_magnitude": float(np.linalg.norm(exact.angular_momentum)),
+        "max_energy_error": float(tr.energy_error().max()),
+        "max_momentum_error": float(tr.momentum_error().max()),
+        "omega_final": tr.omega[-1],
+        "attitude_final": tr.attitude[-1],
+        "omega_exact": w_end,
+        "attitude_exact": q_end,
+        "omega_error": float(np.linalg.norm(tr.omega[-1] - w_end)),
+        "attitude_error": q_err,
         "axis_stability": [s.stability for s in stab],
     }
     require_finite(data)
@@ -733,15 +961,22 @@ def free(moments: tuple[float, float, float], omega: tuple[float, float, float],
     from rich.console import Console
     from rich.table import Table
 
-    table = Table(title=f"free rigid body I = {moments}, ω₀ = {omega}, {duration:g} s by {tr.method}")
+    table = Table(
+        title=f"free rigid body I = {moments}, ω₀ = {omega}, {duration:g} s by {tr.method}"
+    )
     table.add_column("quantity")
     table.add_column("value", justify="right")
     table.add_row("regime", exact.regime)
     table.add_row("period of ω (s)", f"{exact.period:.10g}")
     table.add_row("Jacobi parameter m", f"{exact.parameter:.10g}")
-    table.add_row("T (J) / |L| (kg·m²/s)", f"{exact.energy:.10g} / {data['angular_momentum_magnitude']:.10g}")
+    table.add_row(
+        "T (J) / |L| (kg·m²/s)", f"{exact.energy:.10g} / {data['angular_momentum_magnitude']:.10g}"
+    )
     table.add_row("stability of axes 1, 2, 3", ", ".join(data["axis_stability"]))
-    table.add_row("max |ΔE/E| / max |Δ|L|/|L||", f"{data['max_energy_error']:.2e} / {data['max_momentum_error']:.2e}")
+    table.add_row(
+        "max |ΔE/E| / max |Δ|L|/|L||",
+        f"{data['max_energy_error']:.2e} / {data['max_momentum_error']:.2e}",
+    )
     table.add_row("ω at the end (rad/s)", np.array2string(tr.omega[-1], precision=10))
     table.add_row("|ω − ω_exact| / |q − q_exact|", f"{data['omega_error']:.2e} / {q_err:.2e}")
     table.add_row("steps / wall time", f"{tr.steps} / {wall:.3g} s")
@@ -749,20 +984,76 @@ def free(moments: tuple[float, float, float], omega: tuple[float, float, float],
 
 
 @main.command()
-@click.option("--I1", "i1", type=FINITE, required=True, help="Moment about a transverse axis through the pivot (kg·m²).")
-@click.option("--I3", "i3", type=FINITE, required=True, help="Moment about the symmetry axis (kg·m², ≤ 2 I1).")
-@click.option("--mgl", type=FINITE, required=True, help="m g l: weight × pivot-to-centre-of-mass distance (N·m).")
-@click.option("--theta", type=FINITE, required=True, help="Initial nutation angle θ₀ from the upward vertical (rad, or degrees).")
-@click.option("--phi-dot", "phi_dot", type=FINITE, default=0.0, show_default=True, help="Initial precession rate φ̇₀ (rad/s).")
-@click.option("--psi-dot", "psi_dot", type=FINITE, default=0.0, show_default=True, help="Initial spin rate ψ̇₀ (rad/s).")
-@click.option("--theta-dot", "theta_dot", type=FINITE, default=0.0, show_default=True, help="Initial nutation rate θ̇₀ (rad/s).")
-@click.option("--degrees", is_flag=True, help="Read θ₀ in degrees and the rates in degrees per second.")
-@click.option("--plot", "plot_dir", type=click.Path(file_okay=False), default=None,
-              help="Save pictures (V(θ), the axis' locus, θ/φ̇/ψ̇ against t, steady rates against spin) "
-                   "and an animation (top.gif) into this folder.")
+@click.option(
+    "--I1",
+    "i1",
+    type=FINITE,
+    required=True,
+    help="Moment about a transverse axis through the pivot (kg·m²).",
+)
+@click.option(
+    "--I3", "i3", type=FINITE, required=True, help="Moment about the symmetry axis (kg·m², ≤ 2 I1)."
+)
+@click.option(
+    "--mgl",
+    type=FINITE,
+    required=True,
+    help="m g l: weight × pivot-to-centre-of-mass distance (N·m).",
+)
+@click.option(
+    "--theta",
+    type=FINITE,
+    required=True,
+    help="Initial nutation angle θ₀ from the upward vertical (rad, or degrees).",
+)
+@click.option(
+    "--phi-dot",
+    "phi_dot",
+    type=FINITE,
+    default=0.0,
+    show_default=True,
+    help="Initial precession rate φ̇₀ (rad/s).",
+)
+@click.option(
+    "--psi-dot",
+    "psi_dot",
+    type=FINITE,
+    default=0.0,
+    show_default=True,
+    help="Initial spin rate ψ̇₀ (rad/s).",
+)
+@click.option(
+    "--theta-dot",
+    "theta_dot",
+    type=FINITE,
+    default=0.0,
+    show_default=True,
+    help="Initial nutation rate θ̇₀ (rad/s).",
+)
+@click.option(
+    "--degrees", is_flag=True, help="Read θ₀ in degrees and the rates in degrees per second."
+)
+@click.option(
+    "--plot",
+    "plot_dir",
+    type=click.Path(file_okay=False),
+    default=None,
+    help="Save pictures (V(θ), the axis' locus, θ/φ̇/ψ̇ against t, steady rates against spin) "
+    "and an animation (top.gif) into this folder.",
+)
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
-def top(i1: float, i3: float, mgl: float, theta: float, phi_dot: float, psi_dot: float, theta_dot: float,
-        degrees: bool, plot_dir: str | None, as_json: bool) -> None:
+def top(
+    i1: float,
+    i3: float,
+    mgl: float,
+    theta: float,
+    phi_dot: float,
+    psi_dot: float,
+    theta_dot: float,
+    degrees: bool,
+    plot_dir: str | None,
+    as_json: bool,
+) -> None:
     """The heavy symmetric top (eqs. 2.98–2.121), solved exactly.
 
     Prints the constants of the motion (p_φ, p_ψ, E, E′), the turning points θ₁ ≤ θ₂, the
@@ -778,23 +1069,40 @@ def top(i1: float, i3: float, mgl: float, theta: float, phi_dot: float, psi_dot:
     """
     from .top import HeavyTop
 
-    t = HeavyTop(i1, i3, mgl, theta, theta_dot=theta_dot, phi_dot=phi_dot, psi_dot=psi_dot, degrees=degrees)
+    t = HeavyTop(
+        i1, i3, mgl, theta, theta_dot=theta_dot, phi_dot=phi_dot, psi_dot=psi_dot, degrees=degrees
+    )
     theta0 = t.initial_state["theta"]
     t1, t2 = t.turning_points
     steady: dict[str, Any]
     try:
         s = HeavyTop.steady_precession(i1, i3, mgl, theta0, t.omega3)
-        steady = {"slow": s.slow, "fast": s.fast, "slow_approx_2_121": s.slow_approx,
-                  "fast_approx_2_120": s.fast_approx, "fast_2_120_as_printed": s.fast_approx_as_printed,
-                  "min_spin_2_119": s.min_spin}
+        steady = {
+            "slow": s.slow,
+            "fast": s.fast,
+            "slow_approx_2_121": s.slow_approx,
+            "fast_approx_2_120": s.fast_approx,
+            "fast_2_120_as_printed": s.fast_approx_as_printed,
+            "min_spin_2_119": s.min_spin,
+        }
     except PoinsotError as exc:
         steady = {"error": str(exc), "min_spin_2_119": HeavyTop.min_spin(i1, i3, mgl, theta0)}
     data: dict[str, Any] = {
-        "I1": i1, "I3": i3, "mgl": mgl, "initial_state": t.initial_state,
-        "p_phi": t.p_phi, "p_psi": t.p_psi, "omega3": t.omega3, "energy": t.energy,
-        "reduced_energy": t.reduced_energy, "turning_points": [t1, t2], "cubic_roots": list(t.cubic_roots),
-        "motion_class": t.motion_class, "nutation_period": t.nutation_period,
-        "mean_precession_rate": t.mean_precession_rate, "mean_spin_rate": t.mean_spin_rate,
+        "I1": i1,
+        "I3": i3,
+        "mgl": mgl,
+        "initial_state": t.initial_state,
+        "p_phi": t.p_phi,
+        "p_psi": t.p_psi,
+        "omega3": t.omega3,
+        "energy": t.energy,
+        "reduced_energy": t.reduced_energy,
+        "turning_points": [t1, t2],
+        "cubic_roots": list(t.cubic_roots),
+        "motion_class": t.motion_class,
+        "nutation_period": t.nutation_period,
+        "mean_precession_rate": t.mean_precession_rate,
+        "mean_spin_rate": t.mean_spin_rate,
         "steady_precession_at_theta0": steady,
         "sleeping_threshold": HeavyTop.sleeping_threshold(i1, i3, mgl),
         "sleeping_stable": t.is_sleeping_stable,
@@ -815,8 +1123,10 @@ def top(i1: float, i3: float, mgl: float, theta: float, phi_dot: float, psi_dot:
     from rich.console import Console
     from rich.table import Table
 
-    table = Table(title=f"heavy top: I₁ = {i1:g} kg·m², I₃ = {i3:g} kg·m², m g l = {mgl:g} N·m, "
-                        f"θ₀ = {theta0:.6g} rad")
+    table = Table(
+        title=f"heavy top: I₁ = {i1:g} kg·m², I₃ = {i3:g} kg·m², m g l = {mgl:g} N·m, "
+        f"θ₀ = {theta0:.6g} rad"
+    )
     table.add_column("quantity")
     table.add_column("value", justify="right")
     table.add_column("unit's eq.", justify="right")
@@ -837,27 +1147,54 @@ def top(i1: float, i3: float, mgl: float, theta: float, phi_dot: float, psi_dot:
         rows.append(("steady precession at θ₀", "none: spin below the minimum", "2.118"))
     else:
         rows += [
-            ("steady precession at θ₀: slow / fast (rad/s)", f"{steady['slow']:.8g} / {steady['fast']:.8g}", "2.116"),
-            ("  fast-top slow ≈ mgl/p_ψ (rad/s)", "none (no spin)" if steady["slow_approx_2_121"] is None
-             else f"{steady['slow_approx_2_121']:.8g}", "2.121"),
-            ("  fast-top fast ≈ p_ψ/(I₁ cos θ₀) (rad/s)", f"{steady['fast_approx_2_120']:.8g}", "2.120*"),
+            (
+                "steady precession at θ₀: slow / fast (rad/s)",
+                f"{steady['slow']:.8g} / {steady['fast']:.8g}",
+                "2.116",
+            ),
+            (
+                "  fast-top slow ≈ mgl/p_ψ (rad/s)",
+                "none (no spin)"
+                if steady["slow_approx_2_121"] is None
+                else f"{steady['slow_approx_2_121']:.8g}",
+                "2.121",
+            ),
+            (
+                "  fast-top fast ≈ p_ψ/(I₁ cos θ₀) (rad/s)",
+                f"{steady['fast_approx_2_120']:.8g}",
+                "2.120*",
+            ),
         ]
     rows += [
-        ("minimum spin for steady precession at θ₀ (rad/s)", f"{steady['min_spin_2_119']:.8g}", "2.119"),
-        ("sleeping threshold 2√(mgl I₁)/I₃ (rad/s)", f"{data['sleeping_threshold']:.8g}",
-         "stable" if t.is_sleeping_stable else "unstable"),
+        (
+            "minimum spin for steady precession at θ₀ (rad/s)",
+            f"{steady['min_spin_2_119']:.8g}",
+            "2.119",
+        ),
+        (
+            "sleeping threshold 2√(mgl I₁)/I₃ (rad/s)",
+            f"{data['sleeping_threshold']:.8g}",
+            "stable" if t.is_sleeping_stable else "unstable",
+        ),
     ]
     for row in rows:
         table.add_row(*row)
     Console().print(table)
-    click.echo("* 2.120 corrected: the unit prints p_ψ/(2 I₁ cos θ₀), a factor 2 too small (see docs/heavy_top.md).")
+    click.echo(
+        "* 2.120 corrected: the unit prints p_ψ/(2 I₁ cos θ₀), a factor 2 too small (see docs/heavy_top.md)."
+    )
     for p in saved:
         click.echo(f"saved {p}")
 
 
 @main.command()
-@click.option("--port", type=click.IntRange(0, 65535), default=0, show_default=True,
-              help="Port on 127.0.0.1 (0: a free one).")
+@click.option(
+    "--port",
+    type=click.IntRange(0, 65535),
+    default=0,
+    show_default=True,
+    help="Port on 127.0.0.1 (0: a free one).",
+)
 @click.option("--no-browser", "no_browser", is_flag=True, help="Do not open a web browser.")
 @click.option("--verbose", is_flag=True, help="Log every request.")
 def lab(port: int, no_browser: bool, verbose: bool) -> None:
@@ -872,7 +1209,8 @@ def lab(port: int, no_browser: bool, verbose: bool) -> None:
     if not (root / "index.html").is_file():
         raise click.ClickException(
             f"the lab page is not built (no {root / 'index.html'}): run `make lab` in a source checkout "
-            "(it needs the rust wasm32 target, wasm-bindgen-cli and node)")
+            "(it needs the rust wasm32 target, wasm-bindgen-cli and node)"
+        )
     try:
         server = LabServer(root, port, verbose=verbose)
     except OSError as exc:

@@ -19,7 +19,6 @@ per torque evaluation).
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any, Union
@@ -112,7 +111,9 @@ class GravityTorque:
         com = np.asarray(body.center_of_mass)
         scale = max(1.0, float(np.abs(com).max()))
         if abs(com[0]) > 1e-12 * scale or abs(com[1]) > 1e-12 * scale:
-            raise PoinsotError(f"body: the centre of mass must lie on body axis 3 for GravityTorque, got {com.tolist()}")
+            raise PoinsotError(
+                f"body: the centre of mass must lie on body axis 3 for GravityTorque, got {com.tolist()}"
+            )
         return "gravity", np.zeros(3), float(body.mass) * as_scalar(self.g, "g") * float(com[2])
 
 
@@ -131,8 +132,14 @@ class GravityGradientTorque:
         return "gravity_gradient", np.zeros(3), as_scalar(self.mean_motion, "mean_motion")
 
 
-TorqueLike = Union[None, BodyTorque, SpaceTorque, GravityTorque, GravityGradientTorque,
-                   Callable[[float, FloatArray, FloatArray], Any]]
+TorqueLike = Union[
+    None,
+    BodyTorque,
+    SpaceTorque,
+    GravityTorque,
+    GravityGradientTorque,
+    Callable[[float, FloatArray, FloatArray], Any],
+]
 
 
 class Trajectory:
@@ -176,8 +183,10 @@ class Trajectory:
         self.torque_evaluations: int = int(d["torque_evaluations"])
 
     def __repr__(self) -> str:
-        return (f"Trajectory({len(self.t)} samples over [0, {self.t[-1]:g}] s, method={self.method!r}, "
-                f"{self.steps} steps)")
+        return (
+            f"Trajectory({len(self.t)} samples over [0, {self.t[-1]:g}] s, method={self.method!r}, "
+            f"{self.steps} steps)"
+        )
 
     @property
     def total_energy(self) -> FloatArray:
@@ -214,7 +223,9 @@ def _inertia_of(body: Any, torque: TorqueLike) -> FloatArray:
         return np.diag(arr)
     if arr.shape == (3, 3):
         return arr
-    raise PoinsotError(f"body: must be a RigidBody, principal moments (3,) or an inertia tensor (3, 3), got shape {arr.shape}")
+    raise PoinsotError(
+        f"body: must be a RigidBody, principal moments (3,) or an inertia tensor (3, 3), got shape {arr.shape}"
+    )
 
 
 def _torque_spec(torque: TorqueLike, body: Any) -> tuple[str, FloatArray, float, Any]:
@@ -241,10 +252,21 @@ def _optional_step(dt: Any) -> float | None:
     return dt_f
 
 
-def simulate(body: Any, omega0: Any, duration: float, *, attitude0: Any = None, torque: TorqueLike = None,
-             method: str = "auto", dt: float | None = None, samples: int = 1001, rtol: float = 1e-10,
-             atol: float = 1e-12, max_steps: int = DEFAULT_MAX_STEPS,
-             progress: Callable[[float], Any] | None = None) -> Trajectory:
+def simulate(
+    body: Any,
+    omega0: Any,
+    duration: float,
+    *,
+    attitude0: Any = None,
+    torque: TorqueLike = None,
+    method: str = "auto",
+    dt: float | None = None,
+    samples: int = 1001,
+    rtol: float = 1e-10,
+    atol: float = 1e-12,
+    max_steps: int = DEFAULT_MAX_STEPS,
+    progress: Callable[[float], Any] | None = None,
+) -> Trajectory:
     """Simulates a rigid body turning under a torque (Euler's equations 2.71 with the attitude).
 
     Parameters
@@ -312,27 +334,54 @@ def simulate(body: Any, omega0: Any, duration: float, *, attitude0: Any = None, 
     progress = as_callable(progress, "progress")
     fn_wrapped = None
     if fn is not None:
+
         def fn_wrapped(t: float, w: FloatArray, q: FloatArray) -> Any:
             out = np.asarray(fn(t, w, q))
             if out.dtype.kind not in "iuf":
                 raise PoinsotError(f"torque: the callable must return 3 real numbers, got {out!r}")
             return out.astype(np.float64).reshape(-1).tolist()
+
     with public_names(inertia="body", t="duration"):
-        d = _core.dynamics_simulate(inertia, w0, q0, dur, kind, vec, scalar, fn_wrapped, method, dt_f, n,
-                                    as_scalar(rtol, "rtol"), as_scalar(atol, "atol"), steps, progress)
+        d = _core.dynamics_simulate(
+            inertia,
+            w0,
+            q0,
+            dur,
+            kind,
+            vec,
+            scalar,
+            fn_wrapped,
+            method,
+            dt_f,
+            n,
+            as_scalar(rtol, "rtol"),
+            as_scalar(atol, "atol"),
+            steps,
+            progress,
+        )
     return Trajectory(d)
 
 
 def _method(method: Any) -> str:
     if not isinstance(method, str):
-        raise ArgumentTypeError(f"method: must be one of {', '.join(map(repr, METHODS))}, got {type(method).__name__}")
+        raise ArgumentTypeError(
+            f"method: must be one of {', '.join(map(repr, METHODS))}, got {type(method).__name__}"
+        )
     return method
 
 
-def simulate_batch(moments: Any, omega0: Any, duration: float, *, attitude0: Any = None,
-                   torque: TorqueLike = None, method: str = "rk4",
-                   dt: float | None = None, max_steps: int = DEFAULT_MAX_STEPS,
-                   progress: Callable[[float], Any] | None = None) -> tuple[FloatArray, FloatArray]:
+def simulate_batch(
+    moments: Any,
+    omega0: Any,
+    duration: float,
+    *,
+    attitude0: Any = None,
+    torque: TorqueLike = None,
+    method: str = "rk4",
+    dt: float | None = None,
+    max_steps: int = DEFAULT_MAX_STEPS,
+    progress: Callable[[float], Any] | None = None,
+) -> tuple[FloatArray, FloatArray]:
     """Integrates many bodies at once, in parallel (all cores), and returns their final states.
 
     Parameters
@@ -371,14 +420,28 @@ def simulate_batch(moments: Any, omega0: Any, duration: float, *, attitude0: Any
             raise PoinsotError(f"{name}: must have shape (N, 3), got {arr.shape}")
     q = None
     if attitude0 is not None:
-        q = np.ascontiguousarray(as_float_array(attitude0, "attitude0", finite=False), dtype=np.float64)
+        q = np.ascontiguousarray(
+            as_float_array(attitude0, "attitude0", finite=False), dtype=np.float64
+        )
         if q.ndim != 2 or q.shape[1] != 4:
             raise PoinsotError(f"attitude0: must have shape (N, 4), got {q.shape}")
     if torque is not None and not hasattr(torque, "_spec"):
-        raise ArgumentTypeError("torque: simulate_batch takes the built-in torques only (no callables)")
+        raise ArgumentTypeError(
+            "torque: simulate_batch takes the built-in torques only (no callables)"
+        )
     kind, vec, scalar, _ = _torque_spec(torque, None)
     with public_names(t="duration"):
         w_out, q_out, _steps = _core.dynamics_simulate_batch(
-            m, w, q, as_scalar(duration, "duration"), kind, vec, scalar, _method(method), _optional_step(dt),
-            as_count(max_steps, "max_steps", 1), as_callable(progress, "progress"))
+            m,
+            w,
+            q,
+            as_scalar(duration, "duration"),
+            kind,
+            vec,
+            scalar,
+            _method(method),
+            _optional_step(dt),
+            as_count(max_steps, "max_steps", 1),
+            as_callable(progress, "progress"),
+        )
     return np.asarray(w_out), np.asarray(q_out)

@@ -28,8 +28,16 @@ from ._validate import (
 )
 from .errors import PoinsotError
 
-__all__ = ["Earth", "Fall", "Flight", "FoucaultRun", "InertialOscillation", "LowFlow",
-           "SIDEREAL_RATE", "SOLAR_DAY_RATE"]
+__all__ = [
+    "Earth",
+    "Fall",
+    "Flight",
+    "FoucaultRun",
+    "InertialOscillation",
+    "LowFlow",
+    "SIDEREAL_RATE",
+    "SOLAR_DAY_RATE",
+]
 
 SIDEREAL_RATE: float = _core.SIDEREAL_RATE
 """The Earth's sidereal rotation rate (rad/s), 2π / 86164.0905 s: the default (the core's)."""
@@ -242,12 +250,18 @@ class Earth:
 
     __slots__ = ("_rate", "_radius", "_g")
 
-    def __init__(self, rotation_rate: Any = SIDEREAL_RATE, radius: float = _MEAN_RADIUS,
-                 g: float = _STANDARD_GRAVITY) -> None:
+    def __init__(
+        self,
+        rotation_rate: Any = SIDEREAL_RATE,
+        radius: float = _MEAN_RADIUS,
+        g: float = _STANDARD_GRAVITY,
+    ) -> None:
         if isinstance(rotation_rate, str):
             names = {"sidereal": SIDEREAL_RATE, "solar": SOLAR_DAY_RATE}
             if rotation_rate not in names:
-                raise PoinsotError(f"rotation_rate: must be a number, 'sidereal' or 'solar', got {rotation_rate!r}")
+                raise PoinsotError(
+                    f"rotation_rate: must be a number, 'sidereal' or 'solar', got {rotation_rate!r}"
+                )
             rotation_rate = names[rotation_rate]
         self._rate = as_scalar(rotation_rate, "rotation_rate")
         self._radius = as_scalar(radius, "radius")
@@ -313,7 +327,9 @@ class Earth:
         lat, shape = as_flat(latitude, "latitude", degrees)
         return _core.earth_effective_gravity(*self._p, lat)[3].reshape(shape + (3,))
 
-    def coriolis_acceleration(self, latitude: Any, velocity_enu: Any, degrees: bool = False) -> FloatArray:
+    def coriolis_acceleration(
+        self, latitude: Any, velocity_enu: Any, degrees: bool = False
+    ) -> FloatArray:
         """The Coriolis acceleration −2 ω × v (m/s², ENU) of a particle moving with
         ``velocity_enu`` (m/s, ENU, ``(..., 3)``) at ``latitude`` (broadcast together) (eq. 2.30).
         To the right of horizontal motion in the north, to the left in the south."""
@@ -324,10 +340,16 @@ class Earth:
         try:
             lead = np.broadcast_shapes(lat.shape, vel.shape[:-1])
         except ValueError:
-            raise PoinsotError(f"velocity_enu: shape {vel.shape} does not broadcast with latitude {lat.shape}") from None
-        lat = np.broadcast_to(np.radians(lat) if as_flag(degrees, "degrees") else lat, lead).reshape(-1)
+            raise PoinsotError(
+                f"velocity_enu: shape {vel.shape} does not broadcast with latitude {lat.shape}"
+            ) from None
+        lat = np.broadcast_to(
+            np.radians(lat) if as_flag(degrees, "degrees") else lat, lead
+        ).reshape(-1)
         vel = np.broadcast_to(vel, lead + (3,)).reshape(-1, 3)
-        out = _core.earth_coriolis_acceleration(*self._p, np.ascontiguousarray(lat), np.ascontiguousarray(vel))
+        out = _core.earth_coriolis_acceleration(
+            *self._p, np.ascontiguousarray(lat), np.ascontiguousarray(vel)
+        )
         return out.reshape(lead + (3,))
 
     def coriolis_parameter(self, latitude: Any, degrees: bool = False) -> Any:
@@ -346,7 +368,9 @@ class Earth:
         lat, shape = as_flat(latitude, "latitude", degrees)
         return shaped(_core.earth_latitude_scalar(*self._p, "inertial_period", lat), shape)
 
-    def jacobi_integral(self, latitude: float, position: Any, velocity: Any, degrees: bool = False) -> Any:
+    def jacobi_integral(
+        self, latitude: float, position: Any, velocity: Any, degrees: bool = False
+    ) -> Any:
         """Jacobi's integral, the energy per unit mass in the rotating local frame (J/kg):
         J = ½|v|² + g z − ½|ω × r|² for ENU ``position`` (m) and ``velocity`` (m/s), both
         ``(..., 3)`` (broadcast together), at ``latitude``; a float for one state, else shape
@@ -362,9 +386,15 @@ class Earth:
         try:
             lead = np.broadcast_shapes(pos.shape[:-1], vel.shape[:-1])
         except ValueError:
-            raise PoinsotError(f"velocity: shape {vel.shape} does not broadcast with position {pos.shape}") from None
-        states = np.concatenate([np.broadcast_to(pos, lead + (3,)), np.broadcast_to(vel, lead + (3,))], axis=-1)
-        out = _core.earth_jacobi_integral(*self._p, lat, np.ascontiguousarray(states.reshape(-1, 6)))
+            raise PoinsotError(
+                f"velocity: shape {vel.shape} does not broadcast with position {pos.shape}"
+            ) from None
+        states = np.concatenate(
+            [np.broadcast_to(pos, lead + (3,)), np.broadcast_to(vel, lead + (3,))], axis=-1
+        )
+        out = _core.earth_jacobi_integral(
+            *self._p, lat, np.ascontiguousarray(states.reshape(-1, 6))
+        )
         return shaped(out, lead)
 
     def eastward_deflection(self, height: Any, latitude: Any, degrees: bool = False) -> Any:
@@ -389,17 +419,29 @@ class Earth:
         try:
             shape = np.broadcast_shapes(h.shape, lat.shape)
         except ValueError:
-            raise PoinsotError(f"height: shape {h.shape} does not broadcast with latitude {lat.shape}") from None
+            raise PoinsotError(
+                f"height: shape {h.shape} does not broadcast with latitude {lat.shape}"
+            ) from None
         lat = np.radians(lat) if as_flag(degrees, "degrees") else lat
         hh = np.ascontiguousarray(np.broadcast_to(h, shape).reshape(-1))
         ll = np.ascontiguousarray(np.broadcast_to(lat, shape).reshape(-1))
         return shaped(_core.earth_deflection(*self._p, direction, hh, ll), shape)
 
     # -- motions --------------------------------------------------------------------------
-    def drop(self, height: float, latitude: float, degrees: bool = False, *,
-             gravity: str = "uniform", rotation: bool = True, centrifugal: bool = True,
-             rtol: float = _DROP["rtol"], atol: float = _DROP["atol"], samples: int = _DROP["samples"],
-             max_steps: int = _DROP["max_steps"]) -> Fall:
+    def drop(
+        self,
+        height: float,
+        latitude: float,
+        degrees: bool = False,
+        *,
+        gravity: str = "uniform",
+        rotation: bool = True,
+        centrifugal: bool = True,
+        rtol: float = _DROP["rtol"],
+        atol: float = _DROP["atol"],
+        samples: int = _DROP["samples"],
+        max_steps: int = _DROP["max_steps"],
+    ) -> Fall:
         """Drop a body from rest at ``height`` (m, > 0) at ``latitude``, integrated exactly
         (to ``rtol``) in the rotating frame until it lands:
 
@@ -419,20 +461,47 @@ class Earth:
         h = as_scalar(height, "height")
         lat = as_angle(latitude, "latitude", degrees)
         with public_names(t="height", y0="height"):
-            out = _core.earth_drop(*self._p, h, lat, as_choice(gravity, "gravity", _GRAVITY),
-                                   as_flag(rotation, "rotation"), as_flag(centrifugal, "centrifugal"),
-                                   as_scalar(rtol, "rtol"), as_scalar(atol, "atol"),
-                                   as_count(max_steps, "max_steps", 1), as_count(samples, "samples", 2))
+            out = _core.earth_drop(
+                *self._p,
+                h,
+                lat,
+                as_choice(gravity, "gravity", _GRAVITY),
+                as_flag(rotation, "rotation"),
+                as_flag(centrifugal, "centrifugal"),
+                as_scalar(rtol, "rtol"),
+                as_scalar(atol, "atol"),
+                as_count(max_steps, "max_steps", 1),
+                as_count(samples, "samples", 2),
+            )
         states = out["states"]
-        return Fall(out["time"], out["east"], out["north"], out["t"], states[:, :3].copy(),
-                    states[:, 3:].copy(), self.eastward_deflection(h, lat),
-                    self.southward_deflection(h, lat))
+        return Fall(
+            out["time"],
+            out["east"],
+            out["north"],
+            out["t"],
+            states[:, :3].copy(),
+            states[:, 3:].copy(),
+            self.eastward_deflection(h, lat),
+            self.southward_deflection(h, lat),
+        )
 
-    def projectile(self, speed: float, elevation: float, azimuth: float, latitude: float,
-                   degrees: bool = False, *, height: float = 0.0, gravity: str = "uniform",
-                   rotation: bool = True, centrifugal: bool = True, rtol: float = _DROP["rtol"],
-                   atol: float = _DROP["atol"], samples: int = _DROP["samples"],
-                   max_steps: int = _DROP["max_steps"]) -> Flight:
+    def projectile(
+        self,
+        speed: float,
+        elevation: float,
+        azimuth: float,
+        latitude: float,
+        degrees: bool = False,
+        *,
+        height: float = 0.0,
+        gravity: str = "uniform",
+        rotation: bool = True,
+        centrifugal: bool = True,
+        rtol: float = _DROP["rtol"],
+        atol: float = _DROP["atol"],
+        samples: int = _DROP["samples"],
+        max_steps: int = _DROP["max_steps"],
+    ) -> Flight:
         """Fly a projectile launched at ``speed`` (m/s, > 0), ``elevation`` above the horizon
         and ``azimuth`` clockwise from north (0 north, 90° east) from ``height`` (m, ≥ 0) at
         ``latitude``, integrated in the rotating frame until it lands (the model of
@@ -445,23 +514,49 @@ class Earth:
             > 0: the north's deflection) and the trajectory.
         """
         with public_names(t="speed", y0="speed"):
-            out = _core.earth_projectile(*self._p, as_scalar(speed, "speed"),
-                                         as_angle(elevation, "elevation", degrees),
-                                         as_angle(azimuth, "azimuth", degrees),
-                                         as_angle(latitude, "latitude", degrees), as_scalar(height, "height"),
-                                         as_choice(gravity, "gravity", _GRAVITY), as_flag(rotation, "rotation"),
-                                         as_flag(centrifugal, "centrifugal"), as_scalar(rtol, "rtol"),
-                                         as_scalar(atol, "atol"), as_count(max_steps, "max_steps", 1),
-                                         as_count(samples, "samples", 2))
+            out = _core.earth_projectile(
+                *self._p,
+                as_scalar(speed, "speed"),
+                as_angle(elevation, "elevation", degrees),
+                as_angle(azimuth, "azimuth", degrees),
+                as_angle(latitude, "latitude", degrees),
+                as_scalar(height, "height"),
+                as_choice(gravity, "gravity", _GRAVITY),
+                as_flag(rotation, "rotation"),
+                as_flag(centrifugal, "centrifugal"),
+                as_scalar(rtol, "rtol"),
+                as_scalar(atol, "atol"),
+                as_count(max_steps, "max_steps", 1),
+                as_count(samples, "samples", 2),
+            )
         states = out["states"]
-        return Flight(out["time"], out["east"], out["north"], out["range"], out["downrange"],
-                      out["drift"], out["t"], states[:, :3].copy(), states[:, 3:].copy())
+        return Flight(
+            out["time"],
+            out["east"],
+            out["north"],
+            out["range"],
+            out["downrange"],
+            out["drift"],
+            out["t"],
+            states[:, :3].copy(),
+            states[:, 3:].copy(),
+        )
 
-    def foucault(self, latitude: float, degrees: bool = False, *, length: float = _FOUCAULT["length"],
-                 amplitude: float = _FOUCAULT["amplitude"], azimuth: float = _FOUCAULT["azimuth"],
-                 duration: float = _FOUCAULT["duration"], samples: int = _FOUCAULT["samples"],
-                 rtol: float = _FOUCAULT["rtol"], atol: float = _FOUCAULT["atol"],
-                 max_steps: int = _FOUCAULT["max_steps"], progress: bool = False) -> FoucaultRun:
+    def foucault(
+        self,
+        latitude: float,
+        degrees: bool = False,
+        *,
+        length: float = _FOUCAULT["length"],
+        amplitude: float = _FOUCAULT["amplitude"],
+        azimuth: float = _FOUCAULT["azimuth"],
+        duration: float = _FOUCAULT["duration"],
+        samples: int = _FOUCAULT["samples"],
+        rtol: float = _FOUCAULT["rtol"],
+        atol: float = _FOUCAULT["atol"],
+        max_steps: int = _FOUCAULT["max_steps"],
+        progress: bool = False,
+    ) -> FoucaultRun:
         """Swing a Foucault pendulum — a spherical pendulum of ``length`` (m; default the
         Panthéon's 67 m) released from rest ``amplitude`` (m) from its rest position towards
         ``azimuth`` (clockwise from north; radians unless ``degrees``) — for ``duration`` s in
@@ -504,22 +599,42 @@ class Earth:
 
             def report(fraction: float) -> None:
                 bar.update(task, completed=fraction)
+
         try:
             with public_names(t="duration", y0="amplitude", state0="amplitude"):
-                out = _core.earth_foucault_swing(*self._p, lat, length, amp, az, dur, n, *tols, steps, report)
+                out = _core.earth_foucault_swing(
+                    *self._p, lat, length, amp, az, dur, n, *tols, steps, report
+                )
         finally:
             if bar is not None:
                 bar.stop()
         states = out["states"]
-        return FoucaultRun(out["t"], states[:, :3].copy(), states[:, 3:].copy(), out["turn_times"],
-                           out["turn_angles"], out["precession_rate"], out["expected_rate"], out["sense"],
-                           out["regime"], out["note"], out["theory_rate"])
+        return FoucaultRun(
+            out["t"],
+            states[:, :3].copy(),
+            states[:, 3:].copy(),
+            out["turn_times"],
+            out["turn_angles"],
+            out["precession_rate"],
+            out["expected_rate"],
+            out["sense"],
+            out["regime"],
+            out["note"],
+            out["theory_rate"],
+        )
 
-    def inertial_oscillation(self, latitude: float, velocity: Any = tuple(_INERTIAL["velocity"]),
-                             degrees: bool = False, *, duration: float | None = None,
-                             samples: int = _INERTIAL["samples"], rtol: float = _INERTIAL["rtol"],
-                             atol: float = _INERTIAL["atol"],
-                             max_steps: int = _INERTIAL["max_steps"]) -> InertialOscillation:
+    def inertial_oscillation(
+        self,
+        latitude: float,
+        velocity: Any = tuple(_INERTIAL["velocity"]),
+        degrees: bool = False,
+        *,
+        duration: float | None = None,
+        samples: int = _INERTIAL["samples"],
+        rtol: float = _INERTIAL["rtol"],
+        atol: float = _INERTIAL["atol"],
+        max_steps: int = _INERTIAL["max_steps"],
+    ) -> InertialOscillation:
         """A parcel set moving horizontally with ``velocity`` ``[v_east, v_north]`` (m/s) on a
         frictionless level surface at ``latitude``: only the Coriolis force turns it, to the
         right in the north, to the left in the south, not at all at the equator. Default
@@ -537,18 +652,41 @@ class Earth:
             raise PoinsotError(f"velocity: must have shape (2,) [v_east, v_north], got {v.shape}")
         dur = None if duration is None else as_scalar(duration, "duration")
         with public_names(t="duration", y0="velocity"):
-            out = _core.earth_inertial_swing(*self._p, lat, np.ascontiguousarray(v), dur,
-                                             as_count(samples, "samples", 2), as_scalar(rtol, "rtol"),
-                                             as_scalar(atol, "atol"), as_count(max_steps, "max_steps", 1))
+            out = _core.earth_inertial_swing(
+                *self._p,
+                lat,
+                np.ascontiguousarray(v),
+                dur,
+                as_count(samples, "samples", 2),
+                as_scalar(rtol, "rtol"),
+                as_scalar(atol, "atol"),
+                as_count(max_steps, "max_steps", 1),
+            )
         s = out["states"]
-        return InertialOscillation(out["t"], s[:, :2].copy(), s[:, 2:].copy(), out["turning_rate"],
-                                   out["period"], out["sense"])
+        return InertialOscillation(
+            out["t"],
+            s[:, :2].copy(),
+            s[:, 2:].copy(),
+            out["turning_rate"],
+            out["period"],
+            out["sense"],
+        )
 
-    def flow_into_low(self, latitude: float, degrees: bool = False, *, radius: float = _LOW["radius"],
-                      parcels: int = _LOW["parcels"], pull: float = _LOW["pull"],
-                      friction: float = _LOW["friction"], duration: float = _LOW["duration"],
-                      samples: int = _LOW["samples"], rtol: float = _LOW["rtol"], atol: float = _LOW["atol"],
-                      max_steps: int = _LOW["max_steps"]) -> LowFlow:
+    def flow_into_low(
+        self,
+        latitude: float,
+        degrees: bool = False,
+        *,
+        radius: float = _LOW["radius"],
+        parcels: int = _LOW["parcels"],
+        pull: float = _LOW["pull"],
+        friction: float = _LOW["friction"],
+        duration: float = _LOW["duration"],
+        samples: int = _LOW["samples"],
+        rtol: float = _LOW["rtol"],
+        atol: float = _LOW["atol"],
+        max_steps: int = _LOW["max_steps"],
+    ) -> LowFlow:
         """Parcels starting at rest on a ring of ``radius`` (m) around a low-pressure centre,
         pulled in by the pressure gradient (``pull``: its acceleration at the ring, m/s²,
         growing linearly with distance — a paraboloidal low), slowed by friction (1/s) and
@@ -564,11 +702,26 @@ class Earth:
         lat = as_angle(latitude, "latitude", degrees)
         # The ring, the pull → strength set-up, the sample grid and the sense are the core's.
         with public_names(t="duration", y0="pull"):
-            out = _core.earth_low_flow(*self._p, lat, as_scalar(radius, "radius"), as_count(parcels, "parcels", 1),
-                                       as_scalar(pull, "pull"), as_scalar(friction, "friction"),
-                                       as_scalar(duration, "duration"), as_count(samples, "samples", 2),
-                                       as_scalar(rtol, "rtol"), as_scalar(atol, "atol"),
-                                       as_count(max_steps, "max_steps", 1))
+            out = _core.earth_low_flow(
+                *self._p,
+                lat,
+                as_scalar(radius, "radius"),
+                as_count(parcels, "parcels", 1),
+                as_scalar(pull, "pull"),
+                as_scalar(friction, "friction"),
+                as_scalar(duration, "duration"),
+                as_count(samples, "samples", 2),
+                as_scalar(rtol, "rtol"),
+                as_scalar(atol, "atol"),
+                as_count(max_steps, "max_steps", 1),
+            )
         tracks = np.stack(out["parcels"])
-        return LowFlow(out["t"], tracks[:, :, :2].copy(), tracks[:, :, 2:].copy(), out["circulation"],
-                       out["sense"], np.stack(out["energy"]), np.stack(out["dissipated"]))
+        return LowFlow(
+            out["t"],
+            tracks[:, :, :2].copy(),
+            tracks[:, :, 2:].copy(),
+            out["circulation"],
+            out["sense"],
+            np.stack(out["energy"]),
+            np.stack(out["dissipated"]),
+        )

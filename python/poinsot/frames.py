@@ -34,7 +34,13 @@ from ._validate import (
 )
 from .errors import PoinsotError
 
-__all__ = ["MovingFrame", "FrameTransform", "ParticleTrajectory", "SpringParticle", "simulate_particle"]
+__all__ = [
+    "MovingFrame",
+    "FrameTransform",
+    "ParticleTrajectory",
+    "SpringParticle",
+    "simulate_particle",
+]
 
 # The defaults of simulate_particle are the core's (the browser lab uses the same ones).
 _PARTICLE = _core.frame_particle_defaults()
@@ -69,7 +75,12 @@ _IDENTITY_FRAME = np.concatenate([np.zeros(15), np.eye(3).ravel()])
 
 def _fast_vector(value: Any, name: str) -> FloatArray:
     """A C-contiguous float64 (3,) array; finiteness is left to the core."""
-    if type(value) is np.ndarray and value.dtype is _F64 and value.shape == (3,) and value.flags.c_contiguous:
+    if (
+        type(value) is np.ndarray
+        and value.dtype is _F64
+        and value.shape == (3,)
+        and value.flags.c_contiguous
+    ):
         return value
     return _vector(value, name)
 
@@ -151,12 +162,23 @@ class MovingFrame:
 
     __slots__ = ("_state", "_attitude", "_packed")
 
-    def __init__(self, *, origin: Any = 0, velocity: Any = 0, acceleration: Any = 0,
-                 angular_velocity: Any = 0, angular_acceleration: Any = 0,
-                 attitude: Any = None) -> None:
-        parts = [_vector(origin, "origin"), _vector(velocity, "velocity"),
-                 _vector(acceleration, "acceleration"), _vector(angular_velocity, "angular_velocity"),
-                 _vector(angular_acceleration, "angular_acceleration")]
+    def __init__(
+        self,
+        *,
+        origin: Any = 0,
+        velocity: Any = 0,
+        acceleration: Any = 0,
+        angular_velocity: Any = 0,
+        angular_acceleration: Any = 0,
+        attitude: Any = None,
+    ) -> None:
+        parts = [
+            _vector(origin, "origin"),
+            _vector(velocity, "velocity"),
+            _vector(acceleration, "acceleration"),
+            _vector(angular_velocity, "angular_velocity"),
+            _vector(angular_acceleration, "angular_acceleration"),
+        ]
         self._state = np.concatenate(parts)
         if attitude is None:
             self._attitude = np.eye(3)
@@ -204,10 +226,13 @@ class MovingFrame:
     def __repr__(self) -> str:
         def f(v: FloatArray) -> str:
             return "[" + ", ".join(f"{x:.6g}" for x in v) + "]"
+
         extra = "" if np.array_equal(self._attitude, np.eye(3)) else ", attitude=..."
-        return (f"MovingFrame(origin={f(self.origin)}, velocity={f(self.velocity)}, "
-                f"acceleration={f(self.acceleration)}, angular_velocity={f(self.angular_velocity)}, "
-                f"angular_acceleration={f(self.angular_acceleration)}{extra})")
+        return (
+            f"MovingFrame(origin={f(self.origin)}, velocity={f(self.velocity)}, "
+            f"acceleration={f(self.acceleration)}, angular_velocity={f(self.angular_velocity)}, "
+            f"angular_acceleration={f(self.angular_acceleration)}{extra})"
+        )
 
     # -- transformations ------------------------------------------------------------------
     def to_fixed(self, position: Any, velocity: Any = 0, acceleration: Any = 0) -> FrameTransform:
@@ -227,13 +252,18 @@ class MovingFrame:
             Fixed-frame position, velocity, acceleration ``(..., 3)`` and the terms
             ``"relative"``, ``"origin"``, ``"coriolis"``, ``"centripetal"``, ``"euler"``.
         """
-        (r, v, a), lead = _broadcast([(position, "position"), (velocity, "velocity"),
-                                      (acceleration, "acceleration")])
+        (r, v, a), lead = _broadcast(
+            [(position, "position"), (velocity, "velocity"), (acceleration, "acceleration")]
+        )
         out = _core.frame_to_fixed(self._state, self._attitude, r, v, a)
         names = ("relative", "origin", "coriolis", "centripetal", "euler")
         shape = lead + (3,)
-        return FrameTransform(out[0].reshape(shape), out[1].reshape(shape), out[2].reshape(shape),
-                              {n: x.reshape(shape) for n, x in zip(names, out[3:])})
+        return FrameTransform(
+            out[0].reshape(shape),
+            out[1].reshape(shape),
+            out[2].reshape(shape),
+            {n: x.reshape(shape) for n, x in zip(names, out[3:])},
+        )
 
     def to_moving(self, position: Any, velocity: Any = 0, acceleration: Any = 0) -> FrameTransform:
         """The moving-frame view of a particle given in the fixed frame (inverse of
@@ -252,13 +282,18 @@ class MovingFrame:
             Moving-frame position, velocity, acceleration in moving components and the terms
             ``"inertial"``, ``"translational"``, ``"coriolis"``, ``"centrifugal"``, ``"euler"``.
         """
-        (r, v, a), lead = _broadcast([(position, "position"), (velocity, "velocity"),
-                                      (acceleration, "acceleration")])
+        (r, v, a), lead = _broadcast(
+            [(position, "position"), (velocity, "velocity"), (acceleration, "acceleration")]
+        )
         out = _core.frame_to_moving(self._state, self._attitude, r, v, a)
         names = ("inertial", "translational", "coriolis", "centrifugal", "euler")
         shape = lead + (3,)
-        return FrameTransform(out[0].reshape(shape), out[1].reshape(shape), out[2].reshape(shape),
-                              {n: x.reshape(shape) for n, x in zip(names, out[3:])})
+        return FrameTransform(
+            out[0].reshape(shape),
+            out[1].reshape(shape),
+            out[2].reshape(shape),
+            {n: x.reshape(shape) for n, x in zip(names, out[3:])},
+        )
 
     def fictitious_forces(self, mass: Any, position: Any, velocity: Any) -> dict[str, FloatArray]:
         """The fictitious forces on a particle of ``mass`` (kg, > 0) at ``position`` (m) moving
@@ -277,8 +312,9 @@ class MovingFrame:
             m = np.broadcast_to(m, lead).reshape(-1)
         except ValueError:
             raise PoinsotError(f"mass: shape {m.shape} does not broadcast to {lead}") from None
-        out = _core.frame_fictitious_forces(self._state, self._attitude,
-                                            np.ascontiguousarray(m, dtype=np.float64), r, v)
+        out = _core.frame_fictitious_forces(
+            self._state, self._attitude, np.ascontiguousarray(m, dtype=np.float64), r, v
+        )
         names = ("translational", "coriolis", "centrifugal", "euler")
         return {n: x.reshape(lead + (3,)) for n, x in zip(names, out)}
 
@@ -287,8 +323,14 @@ class MovingFrame:
         t = 0: origin at constant acceleration, axes turning about the fixed axis of ω with
         constant ω̇ (ω̇ must be parallel to ω)."""
         vecs, att = _core.frame_steady_at(self._state, self._attitude, as_scalar(t, "t"))
-        return MovingFrame(origin=vecs[0], velocity=vecs[1], acceleration=vecs[2],
-                           angular_velocity=vecs[3], angular_acceleration=vecs[4], attitude=att)
+        return MovingFrame(
+            origin=vecs[0],
+            velocity=vecs[1],
+            acceleration=vecs[2],
+            angular_velocity=vecs[3],
+            angular_acceleration=vecs[4],
+            attitude=att,
+        )
 
 
 FrameLike = Union[MovingFrame, Callable[[float], MovingFrame]]
@@ -340,8 +382,10 @@ class ParticleTrajectory:
         return self.states[:, 3:]
 
     def __repr__(self) -> str:
-        return (f"ParticleTrajectory({len(self.t)} samples over [{self.t[0]:g}, {self.t[-1]:g}] s, "
-                f"{self.evaluations} evaluations)")
+        return (
+            f"ParticleTrajectory({len(self.t)} samples over [{self.t[0]:g}, {self.t[-1]:g}] s, "
+            f"{self.evaluations} evaluations)"
+        )
 
     def frame_at(self, t: float) -> MovingFrame:
         """The frame's state at time ``t``."""
@@ -363,32 +407,55 @@ def _frame_callable(frame: Callable[[float], MovingFrame]) -> Callable[[float], 
     def call(t: float) -> Any:
         f = frame(t)
         if not isinstance(f, MovingFrame):
-            raise PoinsotError(f"frame: the callable must return a MovingFrame, got {type(f).__name__}")
+            raise PoinsotError(
+                f"frame: the callable must return a MovingFrame, got {type(f).__name__}"
+            )
         return f._state.tolist(), f._attitude.tolist()
 
     return call
 
 
 def _force_callable(force: Callable[..., Any]) -> Callable[..., tuple[float, float, float]]:
-    def call(t: float, x: float, y: float, z: float, vx: float, vy: float, vz: float) -> tuple[float, float, float]:
+    def call(
+        t: float, x: float, y: float, z: float, vx: float, vy: float, vz: float
+    ) -> tuple[float, float, float]:
         got = force(t, np.array((x, y, z)), np.array((vx, vy, vz)))
         try:
             f = as_float_array(got, "force", finite=False)
         except PoinsotError:
-            raise PoinsotError(f"force: the callable must return 3 real numbers, got {got!r}") from None
+            raise PoinsotError(
+                f"force: the callable must return 3 real numbers, got {got!r}"
+            ) from None
         if f.shape != (3,):
             raise PoinsotError(f"force: the callable must return shape (3,), got {f.shape}")
-        if np.isnan(f).any() and math.isfinite(t) and all(map(math.isfinite, (x, y, z, vx, vy, vz))):
-            raise PoinsotError(f"force: the callable returned {f.tolist()} at t = {t} s: a force must be finite")
+        if (
+            np.isnan(f).any()
+            and math.isfinite(t)
+            and all(map(math.isfinite, (x, y, z, vx, vy, vz)))
+        ):
+            raise PoinsotError(
+                f"force: the callable returned {f.tolist()} at t = {t} s: a force must be finite"
+            )
         return float(f[0]), float(f[1]), float(f[2])
 
     return call
 
 
-def simulate_particle(frame: FrameLike, position: Any, velocity: Any, duration: float, *,
-                      mass: float = _PARTICLE["mass"], force: Any = None, samples: int = _PARTICLE["samples"],
-                      t_eval: Any = None, rtol: float = _PARTICLE["rtol"], atol: float = _PARTICLE["atol"],
-                      max_steps: int = _PARTICLE["max_steps"], stiffness: float = 0.0) -> ParticleTrajectory:
+def simulate_particle(
+    frame: FrameLike,
+    position: Any,
+    velocity: Any,
+    duration: float,
+    *,
+    mass: float = _PARTICLE["mass"],
+    force: Any = None,
+    samples: int = _PARTICLE["samples"],
+    t_eval: Any = None,
+    rtol: float = _PARTICLE["rtol"],
+    atol: float = _PARTICLE["atol"],
+    max_steps: int = _PARTICLE["max_steps"],
+    stiffness: float = 0.0,
+) -> ParticleTrajectory:
     """Integrate a particle relative to a moving frame, with every fictitious force.
 
     m (d²r/dt²)_rot = F − m R̈ − 2m ω × ṙ − m ω × (ω × r) − m ω̇ × r   (eqs. 2.5, 2.21, 2.26)
@@ -437,7 +504,11 @@ def simulate_particle(frame: FrameLike, position: Any, velocity: Any, duration: 
     r0 = _fast_vector(position, "position")
     v0 = _fast_vector(velocity, "velocity")
     if t_eval is None:
-        n = samples if type(samples) is int and 2 <= samples <= 100_000 else as_count(samples, "samples", 2)
+        n = (
+            samples
+            if type(samples) is int and 2 <= samples <= 100_000
+            else as_count(samples, "samples", 2)
+        )
         times = None
     else:
         times = as_float_array(t_eval, "t_eval")
@@ -458,16 +529,36 @@ def simulate_particle(frame: FrameLike, position: Any, velocity: Any, duration: 
     elif callable(frame):
         packed, frame_fn = _IDENTITY_FRAME, _frame_callable(frame)
     else:
-        raise PoinsotError(f"frame: must be a MovingFrame or a callable t -> MovingFrame, got {type(frame).__name__}")
-    steps = max_steps if type(max_steps) is int and 1 <= max_steps <= 2**62 else as_count(max_steps, "max_steps", 1)
+        raise PoinsotError(
+            f"frame: must be a MovingFrame or a callable t -> MovingFrame, got {type(frame).__name__}"
+        )
+    steps = (
+        max_steps
+        if type(max_steps) is int and 1 <= max_steps <= 2**62
+        else as_count(max_steps, "max_steps", 1)
+    )
     # Plain floats go straight to the core, which checks their ranges and names them.
     m = mass if type(mass) is float else _fast_scalar(mass, "mass")
     rt = rtol if type(rtol) is float else _fast_scalar(rtol, "rtol")
     at = atol if type(atol) is float else _fast_scalar(atol, "atol")
     with public_names(t="duration", t_end="duration", y0="force", times="t_eval"):
         states, evaluations = _core.frame_simulate_particle(
-            packed, frame_fn, m, r0, v0, 0.0, dur, n, times, f_const, f_fn, rt, at, steps,
-            stiffness if type(stiffness) is float else _fast_scalar(stiffness, "stiffness"))
+            packed,
+            frame_fn,
+            m,
+            r0,
+            v0,
+            0.0,
+            dur,
+            n,
+            times,
+            f_const,
+            f_fn,
+            rt,
+            at,
+            steps,
+            stiffness if type(stiffness) is float else _fast_scalar(stiffness, "stiffness"),
+        )
     return ParticleTrajectory(times if times is not None else (dur, n), states, frame, evaluations)
 
 
@@ -499,7 +590,9 @@ class SpringParticle:
     __slots__ = ("_core",)
 
     def __init__(self, mass: float, stiffness: float) -> None:
-        self._core = _core.SpringParticleCore(_fast_scalar(mass, "mass"), _fast_scalar(stiffness, "stiffness"))
+        self._core = _core.SpringParticleCore(
+            _fast_scalar(mass, "mass"), _fast_scalar(stiffness, "stiffness")
+        )
 
     @property
     def mass(self) -> float:
@@ -541,18 +634,41 @@ class SpringParticle:
         if not isinstance(frame, MovingFrame):
             raise PoinsotError(f"frame: must be a MovingFrame, got {type(frame).__name__}")
         (r, v), lead = _pairs(position, velocity)
-        return shaped(np.asarray(self._core.jacobi_integral(frame._state, frame._attitude, r, v)), lead)
+        return shaped(
+            np.asarray(self._core.jacobi_integral(frame._state, frame._attitude, r, v)), lead
+        )
 
-    def simulate(self, frame: FrameLike, position: Any, velocity: Any, duration: float, *,
-                 force: Any = None, samples: int = _PARTICLE["samples"], t_eval: Any = None,
-                 rtol: float = _PARTICLE["rtol"], atol: float = _PARTICLE["atol"],
-                 max_steps: int = _PARTICLE["max_steps"]) -> ParticleTrajectory:
+    def simulate(
+        self,
+        frame: FrameLike,
+        position: Any,
+        velocity: Any,
+        duration: float,
+        *,
+        force: Any = None,
+        samples: int = _PARTICLE["samples"],
+        t_eval: Any = None,
+        rtol: float = _PARTICLE["rtol"],
+        atol: float = _PARTICLE["atol"],
+        max_steps: int = _PARTICLE["max_steps"],
+    ) -> ParticleTrajectory:
         """Integrate the particle relative to ``frame`` with every fictitious force and the
         spring force, in the core: :func:`simulate_particle` with this ``mass`` and
         ``stiffness`` (``force`` adds a further true force; the other arguments as there)."""
-        return simulate_particle(frame, position, velocity, duration, mass=self.mass,
-                                 stiffness=self.stiffness, force=force, samples=samples,
-                                 t_eval=t_eval, rtol=rtol, atol=atol, max_steps=max_steps)
+        return simulate_particle(
+            frame,
+            position,
+            velocity,
+            duration,
+            mass=self.mass,
+            stiffness=self.stiffness,
+            force=force,
+            samples=samples,
+            t_eval=t_eval,
+            rtol=rtol,
+            atol=atol,
+            max_steps=max_steps,
+        )
 
     def __repr__(self) -> str:
         return f"SpringParticle(mass={self.mass!r}, stiffness={self.stiffness!r})"
@@ -568,6 +684,8 @@ def _pairs(position: Any, velocity: Any) -> tuple[tuple[FloatArray, FloatArray],
     try:
         r, v = np.broadcast_arrays(r, v)
     except ValueError as exc:
-        raise PoinsotError(f"velocity: shape {v.shape} does not broadcast with position's {r.shape}") from exc
+        raise PoinsotError(
+            f"velocity: shape {v.shape} does not broadcast with position's {r.shape}"
+        ) from exc
     lead = r.shape[:-1]
     return (np.ascontiguousarray(r.reshape(-1, 3)), np.ascontiguousarray(v.reshape(-1, 3))), lead

@@ -87,17 +87,22 @@ class FreeSymmetricTop:
         ``attitude0``.
     """
 
-    def __init__(self, I1: float, I3: float, omega0: Any, attitude0: Any = None) -> None:  # noqa: N803
+    def __init__(self, I1: float, I3: float, omega0: Any, attitude0: Any = None) -> None:
         self._core = _core.SymmetricTopSolution(
-            as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_vector3(omega0, "omega0"), _quat(attitude0, "attitude0")
+            as_scalar(I1, "I1"),
+            as_scalar(I3, "I3"),
+            as_vector3(omega0, "omega0"),
+            _quat(attitude0, "attitude0"),
         )
         self.I1 = float(I1)
         self.I3 = float(I3)
         self.omega0 = np.array(as_vector3(omega0, "omega0"))
 
     def __repr__(self) -> str:
-        return (f"FreeSymmetricTop(I1={self.I1:g}, I3={self.I3:g}, omega0={self.omega0.tolist()}, "
-                f"{self.shape}, Ω={self.precession_rate:.6g} rad/s)")
+        return (
+            f"FreeSymmetricTop(I1={self.I1:g}, I3={self.I3:g}, omega0={self.omega0.tolist()}, "
+            f"{self.shape}, Ω={self.precession_rate:.6g} rad/s)"
+        )
 
     @property
     def precession_rate(self) -> float:
@@ -161,7 +166,7 @@ class FreeSymmetricTop:
 
     @property
     def shape(self) -> str:
-        """"prolate" (I₃ < I₁), "oblate" (I₃ > I₁) or "spherical"."""
+        """ "prolate" (I₃ < I₁), "oblate" (I₃ > I₁) or "spherical"."""
         return str(self._core.shape)
 
     @property
@@ -187,18 +192,30 @@ class FreeSymmetricTop:
         return np.asarray(self._core.symmetry_axis(ts)).reshape(shape + (3,))
 
     @staticmethod
-    def omega3_squared_from(I1: float, I3: float, energy: float, angular_momentum: float) -> float:  # noqa: N803
+    def omega3_squared_from(I1: float, I3: float, energy: float, angular_momentum: float) -> float:
         """ω₃² = (L² − 2 T I₁) / (I₃ (I₃ − I₁)) (2.95), from T (J) and |L| (kg·m²/s)."""
-        return float(_core.SymmetricTopSolution.omega3_squared_from(
-            as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(energy, "energy"),
-            as_scalar(angular_momentum, "angular_momentum")))
+        return float(
+            _core.SymmetricTopSolution.omega3_squared_from(
+                as_scalar(I1, "I1"),
+                as_scalar(I3, "I3"),
+                as_scalar(energy, "energy"),
+                as_scalar(angular_momentum, "angular_momentum"),
+            )
+        )
 
     @staticmethod
-    def amplitude_squared_from(I1: float, I3: float, energy: float, angular_momentum: float) -> float:  # noqa: N803
+    def amplitude_squared_from(
+        I1: float, I3: float, energy: float, angular_momentum: float
+    ) -> float:
         """A² = (L² − 2 I₃ T) / (I₁ (I₁ − I₃)) (2.96), from T (J) and |L| (kg·m²/s)."""
-        return float(_core.SymmetricTopSolution.amplitude_squared_from(
-            as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(energy, "energy"),
-            as_scalar(angular_momentum, "angular_momentum")))
+        return float(
+            _core.SymmetricTopSolution.amplitude_squared_from(
+                as_scalar(I1, "I1"),
+                as_scalar(I3, "I3"),
+                as_scalar(energy, "energy"),
+                as_scalar(angular_momentum, "angular_momentum"),
+            )
+        )
 
 
 def _samples(samples: Any) -> int:
@@ -252,14 +269,17 @@ class FreeRigidBody:
         m = as_float_array(moments, "moments", finite=False)
         if m.shape != (3,):
             raise PoinsotError(f"moments: must have shape (3,), got {m.shape}")
-        self._core = _core.FreeBodySolution(np.ascontiguousarray(m), as_vector3(omega0, "omega0"),
-                                            _quat(attitude0, "attitude0"))
+        self._core = _core.FreeBodySolution(
+            np.ascontiguousarray(m), as_vector3(omega0, "omega0"), _quat(attitude0, "attitude0")
+        )
         self.moments = m.copy()
         self.omega0 = np.array(as_vector3(omega0, "omega0"))
 
     def __repr__(self) -> str:
-        return (f"FreeRigidBody(moments={self.moments.tolist()}, omega0={self.omega0.tolist()}, "
-                f"{self.regime}, period={self.period:.6g} s)")
+        return (
+            f"FreeRigidBody(moments={self.moments.tolist()}, omega0={self.omega0.tolist()}, "
+            f"{self.regime}, period={self.period:.6g} s)"
+        )
 
     @property
     def energy(self) -> float:
@@ -278,7 +298,7 @@ class FreeRigidBody:
 
     @property
     def regime(self) -> str:
-        """"steady", "symmetric", "about max axis", "about min axis" or "separatrix"."""
+        """ "steady", "symmetric", "about max axis", "about min axis" or "separatrix"."""
         return str(self._core.regime)
 
     @property
@@ -374,7 +394,9 @@ class AxisStability(NamedTuple):
     rate: float
 
 
-def axis_stability(moments: Any, spin: float = 1.0) -> tuple[AxisStability, AxisStability, AxisStability]:
+def axis_stability(
+    moments: Any, spin: float = 1.0
+) -> tuple[AxisStability, AxisStability, AxisStability]:
     """The stability of steady rotation at ``spin`` rad/s about each principal axis of a body
     with principal moments ``moments`` (kg·m², (3,), any order): ε̈ = −spin² (I_i − I_j)(I_i −
     I_k)/(I_j I_k) ε linearising Euler's equations (2.72). The intermediate axis is unstable

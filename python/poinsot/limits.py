@@ -38,7 +38,7 @@ def memory_budget() -> int:
     return int(_core.memory_budget())
 
 
-def set_memory_budget(bytes: Any) -> int:  # noqa: A002 - the unit is the name
+def set_memory_budget(bytes: Any) -> int:
     """Set the memory budget (bytes, ≥ 1 MiB) of every later call in this process; returns the
     previous budget, so that ``old = set_memory_budget(n); ...; set_memory_budget(old)``
     restores it."""

@@ -108,7 +108,9 @@ def _tol(tol: Any) -> float:
         raise PoinsotError(f"tol: must be a real number, got {tol!r}") from None
 
 
-def _broadcast(*items: tuple[Any, str, tuple[int, ...]]) -> tuple[list[FloatArray], tuple[int, ...]]:
+def _broadcast(
+    *items: tuple[Any, str, tuple[int, ...]],
+) -> tuple[list[FloatArray], tuple[int, ...]]:
     """Broadcasts several arrays over their leading dimensions; returns flat ``(N, *tail)``
     C-contiguous arrays and the common leading shape."""
     arrays = []

@@ -55,4 +55,6 @@ def ellipeinc(phi: float, m: float) -> float:
 def ellippiinc(phi: float, n: float, m: float) -> float:
     """Π(n; φ | m), the incomplete elliptic integral of the third kind (mpmath's
     ``ellippi(n, phi, m)``)."""
-    return float(_core.special_elliptic("PIINC", as_scalar(phi, "phi"), as_scalar(n, "n"), as_scalar(m, "m")))
+    return float(
+        _core.special_elliptic("PIINC", as_scalar(phi, "phi"), as_scalar(n, "n"), as_scalar(m, "m"))
+    )

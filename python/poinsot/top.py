@@ -29,7 +29,15 @@ from ._validate import FloatArray, as_angle, as_flag, as_flat, as_scalar, shaped
 
 __all__ = ["HeavyTop", "SteadyPrecession", "MOTION_CLASSES"]
 
-MOTION_CLASSES = ("waves", "loops", "cusps", "steady precession", "sleeping", "hanging", "through vertical")
+MOTION_CLASSES = (
+    "waves",
+    "loops",
+    "cusps",
+    "steady precession",
+    "sleeping",
+    "hanging",
+    "through vertical",
+)
 """The values of :attr:`HeavyTop.motion_class`: the shape of the symmetry axis' path on the unit
 sphere (Goldstein Fig. 5.9) — ``"waves"`` (phi' keeps one sign between the turning circles),
 ``"loops"`` (phi' changes sign), ``"cusps"`` (phi' = 0 at a turning point: released at rest),
@@ -110,8 +118,8 @@ class HeavyTop:
 
     def __init__(
         self,
-        I1: float,  # noqa: N803 - the unit's notation
-        I3: float,  # noqa: N803
+        I1: float,
+        I3: float,
         mgl: float,
         theta: float,
         *,
@@ -137,8 +145,8 @@ class HeavyTop:
     @classmethod
     def from_spin(
         cls,
-        I1: float,  # noqa: N803
-        I3: float,  # noqa: N803
+        I1: float,
+        I3: float,
         mgl: float,
         theta: float,
         omega3: float,
@@ -170,8 +178,8 @@ class HeavyTop:
     @classmethod
     def from_constants(
         cls,
-        I1: float,  # noqa: N803
-        I3: float,  # noqa: N803
+        I1: float,
+        I3: float,
         mgl: float,
         p_phi: float,
         p_psi: float,
@@ -204,12 +212,12 @@ class HeavyTop:
 
     # ---- parameters and constants of the motion -------------------------------------------
     @property
-    def I1(self) -> float:  # noqa: N802
+    def I1(self) -> float:
         """Moment about a transverse axis through the pivot (kg m^2)."""
         return self._core.parameters[0]
 
     @property
-    def I3(self) -> float:  # noqa: N802
+    def I3(self) -> float:
         """Moment about the symmetry axis (kg m^2)."""
         return self._core.parameters[1]
 
@@ -346,8 +354,8 @@ class HeavyTop:
     # ---- steady precession (static) ------------------------------------------------------
     @staticmethod
     def steady_precession(
-        I1: float,  # noqa: N803
-        I3: float,  # noqa: N803
+        I1: float,
+        I3: float,
         mgl: float,
         theta0: float,
         omega3: float,
@@ -362,15 +370,18 @@ class HeavyTop:
         spin (the message gives it), and ``theta0`` where the fast rate exceeds the largest double
         (``slow_approx`` is ``None`` without spin)."""
         d = _core.heavy_top_steady_precession(
-            as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl"),
-            as_angle(theta0, "theta0", degrees), as_scalar(omega3, "omega3"),
+            as_scalar(I1, "I1"),
+            as_scalar(I3, "I3"),
+            as_scalar(mgl, "mgl"),
+            as_angle(theta0, "theta0", degrees),
+            as_scalar(omega3, "omega3"),
         )
         return SteadyPrecession(**d)
 
     @staticmethod
     def steady_precession_rates(
-        I1: float,  # noqa: N803
-        I3: float,  # noqa: N803
+        I1: float,
+        I3: float,
         mgl: float,
         theta0: float,
         omega3: float,
@@ -384,8 +395,8 @@ class HeavyTop:
 
     @staticmethod
     def min_spin(
-        I1: float,  # noqa: N803
-        I3: float,  # noqa: N803
+        I1: float,
+        I3: float,
         mgl: float,
         theta0: float,
         *,
@@ -394,19 +405,24 @@ class HeavyTop:
         """The minimum spin for steady precession at ``theta0`` (2.119):
         ``omega3_min = (2 / I3) sqrt(m g l I1 cos theta0)`` (rad/s), 0 below the horizontal."""
         return _core.heavy_top_min_spin(
-            as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl"), as_angle(theta0, "theta0", degrees)
+            as_scalar(I1, "I1"),
+            as_scalar(I3, "I3"),
+            as_scalar(mgl, "mgl"),
+            as_angle(theta0, "theta0", degrees),
         )
 
     @staticmethod
-    def sleeping_threshold(I1: float, I3: float, mgl: float) -> float:  # noqa: N803
+    def sleeping_threshold(I1: float, I3: float, mgl: float) -> float:
         """The spin above which an upright top sleeps stably, ``2 sqrt(m g l I1) / I3`` (rad/s):
         stable iff ``omega3**2 > 4 m g l I1 / I3**2``."""
-        return _core.heavy_top_sleeping_threshold(as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl"))
+        return _core.heavy_top_sleeping_threshold(
+            as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl")
+        )
 
     @staticmethod
     def lagrangian(
-        I1: float,  # noqa: N803
-        I3: float,  # noqa: N803
+        I1: float,
+        I3: float,
         mgl: float,
         theta: float,
         theta_dot: float,
@@ -416,14 +432,19 @@ class HeavyTop:
         """The Lagrangian 2.102, ``I1 (theta'^2 + phi'^2 sin^2)/2 + I3 (psi' + phi' cos)^2/2 - m g l
         cos(theta)`` (J), at one state (rad, rad/s)."""
         return _core.heavy_top_lagrangian(
-            as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl"), as_scalar(theta, "theta"),
-            as_scalar(theta_dot, "theta_dot"), as_scalar(phi_dot, "phi_dot"), as_scalar(psi_dot, "psi_dot"),
+            as_scalar(I1, "I1"),
+            as_scalar(I3, "I3"),
+            as_scalar(mgl, "mgl"),
+            as_scalar(theta, "theta"),
+            as_scalar(theta_dot, "theta_dot"),
+            as_scalar(phi_dot, "phi_dot"),
+            as_scalar(psi_dot, "psi_dot"),
         )
 
     @staticmethod
     def constants_of_state(
-        I1: float,  # noqa: N803
-        I3: float,  # noqa: N803
+        I1: float,
+        I3: float,
         mgl: float,
         theta: float,
         theta_dot: float,
@@ -444,8 +465,12 @@ class HeavyTop:
 
         Raises :class:`PoinsotError` naming ``I1``, ``I3``, ``mgl``, ``theta`` or a rate."""
         p_phi, p_psi, energy = _core.heavy_top_constants_of_state(
-            as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl"),
-            as_angle(theta, "theta", degrees), as_angle(theta_dot, "theta_dot", degrees),
-            as_angle(phi_dot, "phi_dot", degrees), as_angle(psi_dot, "psi_dot", degrees),
+            as_scalar(I1, "I1"),
+            as_scalar(I3, "I3"),
+            as_scalar(mgl, "mgl"),
+            as_angle(theta, "theta", degrees),
+            as_angle(theta_dot, "theta_dot", degrees),
+            as_angle(phi_dot, "phi_dot", degrees),
+            as_angle(psi_dot, "psi_dot", degrees),
         )
         return {"p_phi": p_phi, "p_psi": p_psi, "energy": energy}

@@ -37,23 +37,36 @@ def _vec(v: np.ndarray, digits: int = 6) -> str:
 
 @section("Moving frames: the acceleration seen from a turning, accelerating frame (eqs. 2.20–2.24)")
 def _moving_frames(con: Console) -> None:
-    frame = ps.MovingFrame(acceleration=[0.0, 0.0, 1.0], angular_velocity=[0.0, 0.0, 2.0],
-                           angular_acceleration=[0.0, 0.0, 0.5])
+    frame = ps.MovingFrame(
+        acceleration=[0.0, 0.0, 1.0],
+        angular_velocity=[0.0, 0.0, 2.0],
+        angular_acceleration=[0.0, 0.0, 0.5],
+    )
     out = frame.to_fixed([3.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.1, 0.0, 0.0])
     con.print("a frame with R̈ = (0, 0, 1) m/s², ω = (0, 0, 2) rad/s, ω̇ = (0, 0, 0.5) rad/s²;")
-    con.print("a particle at r = (3, 0, 0) m moving with ṙ = (0, 1, 0) m/s, r̈ = (0.1, 0, 0) m/s² in it:")
+    con.print(
+        "a particle at r = (3, 0, 0) m moving with ṙ = (0, 1, 0) m/s, r̈ = (0.1, 0, 0) m/s² in it:"
+    )
     table = Table(show_header=True)
     table.add_column("term of eq. 2.21")
     table.add_column("poinsot (m/s²)", justify="right")
     table.add_column("by hand", justify="right")
-    hand = {"relative": "(0.1, 0, 0)", "origin": "(0, 0, 1)", "coriolis": "2ω×ṙ = (−4, 0, 0)",
-            "centripetal": "ω×(ω×r) = −ω² r = (−12, 0, 0)", "euler": "ω̇×r = (0, 1.5, 0)"}
+    hand = {
+        "relative": "(0.1, 0, 0)",
+        "origin": "(0, 0, 1)",
+        "coriolis": "2ω×ṙ = (−4, 0, 0)",
+        "centripetal": "ω×(ω×r) = −ω² r = (−12, 0, 0)",
+        "euler": "ω̇×r = (0, 1.5, 0)",
+    }
     for name, value in out.acceleration_terms.items():
         table.add_row(name, _vec(value), hand[name])
     table.add_row("[bold]total r̈'", _vec(out.acceleration), "(−15.9, 1.5, 1)")
     con.print(table)
     f = frame.fictitious_forces(1.0, [3.0, 0.0, 0.0], [0.0, 1.0, 0.0])
-    con.print("fictitious forces on 1 kg there (2.26–2.28): " + ", ".join(f"{k} {_vec(v + 0.0, 4)} N" for k, v in f.items()))
+    con.print(
+        "fictitious forces on 1 kg there (2.26–2.28): "
+        + ", ".join(f"{k} {_vec(v + 0.0, 4)} N" for k, v in f.items())
+    )
 
 
 @section("The rotating Earth: the unit's numbers (eqs. 2.29–2.33)")
@@ -65,16 +78,34 @@ def _earth_numbers(con: Console) -> None:
     table.add_column("the unit", justify="right")
     table.add_column("poinsot, solar day", justify="right")
     table.add_column("poinsot, sidereal (default)", justify="right")
-    table.add_row("ω (rad/s)", "7.25e-5 (misprint: 7.27e-5)", f"{solar.rotation_rate:.4e}", f"{sidereal.rotation_rate:.5e}")
-    table.add_row("ω² r at the equator (m/s²)", "3.4e-2",
-                  f"{np.linalg.norm(solar.centrifugal_acceleration(0.0)):.4e}",
-                  f"{np.linalg.norm(sidereal.centrifugal_acceleration(0.0)):.4e}")
-    table.add_row("2ω, horizontal Coriolis at the pole (1/s)", "1.5e-4",
-                  f"{solar.coriolis_parameter(np.pi / 2):.4e}", f"{sidereal.coriolis_parameter(np.pi / 2):.4e}")
+    table.add_row(
+        "ω (rad/s)",
+        "7.25e-5 (misprint: 7.27e-5)",
+        f"{solar.rotation_rate:.4e}",
+        f"{sidereal.rotation_rate:.5e}",
+    )
+    table.add_row(
+        "ω² r at the equator (m/s²)",
+        "3.4e-2",
+        f"{np.linalg.norm(solar.centrifugal_acceleration(0.0)):.4e}",
+        f"{np.linalg.norm(sidereal.centrifugal_acceleration(0.0)):.4e}",
+    )
+    table.add_row(
+        "2ω, horizontal Coriolis at the pole (1/s)",
+        "1.5e-4",
+        f"{solar.coriolis_parameter(np.pi / 2):.4e}",
+        f"{sidereal.coriolis_parameter(np.pi / 2):.4e}",
+    )
     e = ps.Earth()
-    table.add_row("|g_e| at the equator / pole (m/s², g = 9.80665)", "less at the equator",
-                  "", f"{e.effective_gravity_magnitude(0.0):.6g} / {e.effective_gravity_magnitude(np.pi / 2):.6g}")
-    table.add_row("plumb-line deviation at 45°", "—", "", f"{e.plumb_line_deviation(45, degrees=True):.4f}°")
+    table.add_row(
+        "|g_e| at the equator / pole (m/s², g = 9.80665)",
+        "less at the equator",
+        "",
+        f"{e.effective_gravity_magnitude(0.0):.6g} / {e.effective_gravity_magnitude(np.pi / 2):.6g}",
+    )
+    table.add_row(
+        "plumb-line deviation at 45°", "—", "", f"{e.plumb_line_deviation(45, degrees=True):.4f}°"
+    )
     con.print(table)
 
 
@@ -87,32 +118,50 @@ def _falling_body(con: Console) -> None:
     table.add_column("time (s)", justify="right")
     solar = ps.Earth.solar_day(g=9.81)
     table.add_row("the unit (2.42)", "1.55e-2", "—", "√(2h/g)")
-    table.add_row("2.42, solar day, g = 9.81", f"{solar.eastward_deflection(100, 45, degrees=True):.4e}", "", "")
+    table.add_row(
+        "2.42, solar day, g = 9.81",
+        f"{solar.eastward_deflection(100, 45, degrees=True):.4e}",
+        "",
+        "",
+    )
     e = ps.Earth()
     fall = e.drop(100, 45, degrees=True)
-    table.add_row("2.42, sidereal, g = 9.80665", f"{fall.first_order_east:.4e}", f"{fall.second_order_south:.4e}", "")
-    table.add_row("exact in the rotating frame", f"{fall.east:.4e}", f"{-fall.north:.4e}", f"{fall.time:.6f}")
+    table.add_row(
+        "2.42, sidereal, g = 9.80665",
+        f"{fall.first_order_east:.4e}",
+        f"{fall.second_order_south:.4e}",
+        "",
+    )
+    table.add_row(
+        "exact in the rotating frame", f"{fall.east:.4e}", f"{-fall.north:.4e}", f"{fall.time:.6f}"
+    )
     con.print(table)
     s = e.drop(100, -45, degrees=True)
-    con.print(f"southern hemisphere (−45°): east {s.east:.4e} m, north {s.north:+.3e} m — east again, "
-              "and towards the equator")
+    con.print(
+        f"southern hemisphere (−45°): east {s.east:.4e} m, north {s.north:+.3e} m — east again, "
+        "and towards the equator"
+    )
 
 
 @section("Foucault's pendulum, inertial circles and cyclones (the unit's Figs. 2.5–2.7)")
 def _foucault_and_winds(con: Console) -> None:
     e = ps.Earth()
     run = e.foucault(48.85, degrees=True, duration=900.0, samples=2)
-    con.print(f"Paris (48.85° N), 67 m pendulum, 15 min simulated in the rotating frame: the swing plane "
-              f"turns at {run.precession_rate:.5e} rad/s ({run.sense} seen from above); "
-              f"−ω sin λ = {run.expected_rate:.5e} rad/s, one turn in {2 * np.pi / abs(run.expected_rate) / 3600:.1f} h")
+    con.print(
+        f"Paris (48.85° N), 67 m pendulum, 15 min simulated in the rotating frame: the swing plane "
+        f"turns at {run.precession_rate:.5e} rad/s ({run.sense} seen from above); "
+        f"−ω sin λ = {run.expected_rate:.5e} rad/s, one turn in {2 * np.pi / abs(run.expected_rate) / 3600:.1f} h"
+    )
     for lat in (45.0, -45.0, 0.0):
         osc = e.inertial_oscillation(lat, [10.0, 0.0], degrees=True)
         low = e.flow_into_low(lat, degrees=True)
         period = f"{osc.period / 3600:.2f} h" if np.isfinite(osc.period) else "none"
         turns = f"turns {osc.sense}" if osc.sense != "none" else "goes straight on"
         circ = f"circulates {low.sense}" if low.sense != "none" else "flows straight in"
-        con.print(f"  latitude {lat:+.0f}°: a parcel moving at 10 m/s {turns} "
-                  f"(inertial period π/(ω|sin λ|) = {period}); air flowing into a low {circ}")
+        con.print(
+            f"  latitude {lat:+.0f}°: a parcel moving at 10 m/s {turns} "
+            f"(inertial period π/(ω|sin λ|) = {period}); air flowing into a low {circ}"
+        )
 
 
 @section("Euler's theorem: any rotation about a fixed point is one rotation about one axis")
@@ -121,9 +170,13 @@ def _euler_theorem(con: Console) -> None:
     R = ps.euler_to_matrix(angles)
     axis, angle = ps.rotation_axis(R)
     con.print("Euler angles (φ, θ, ψ) = (30°, 60°, 45°), intrinsic z-x-z as in the unit:")
-    con.print(f"  R = R_z(φ) R_x(θ) R_z(ψ) =\n{np.array2string(R, precision=6, suppress_small=True)}")
+    con.print(
+        f"  R = R_z(φ) R_x(θ) R_z(ψ) =\n{np.array2string(R, precision=6, suppress_small=True)}"
+    )
     con.print(f"  one rotation about axis n = {_vec(axis)} by {np.degrees(angle):.6f}°")
-    con.print(f"  check: |R n − n| = {np.linalg.norm(R @ axis - axis):.1e} (the axis is left fixed)")
+    con.print(
+        f"  check: |R n − n| = {np.linalg.norm(R @ axis - axis):.1e} (the axis is left fixed)"
+    )
     back = ps.matrix_to_euler(R, degrees=True)
     con.print(f"  and back to Euler angles: {_vec(back, 10)} °")
 
@@ -135,7 +188,9 @@ def _chasles(con: Console) -> None:
     s = ps.screw_axis(R, t)
     con.print("x ↦ R x + t with R = 90° about z and t = (1, 1, 0.5) m is a screw:")
     con.print(f"  axis {_vec(s.axis)} through the point {_vec(s.point)} m")
-    con.print(f"  rotation {np.degrees(s.angle):.6g}°, slide {s.slide:.6g} m, pitch {s.pitch:.6g} m/rad")
+    con.print(
+        f"  rotation {np.degrees(s.angle):.6g}°, slide {s.slide:.6g} m, pitch {s.pitch:.6g} m/rad"
+    )
 
 
 @section("Angular momentum is not parallel to ω: the unit's dumbbell (eqs. 2.58–2.59)")
@@ -147,11 +202,15 @@ def _dumbbell(con: Console) -> None:
     L = body.angular_momentum(w)
     N = body.holding_torque(w)
     cos = L @ w / (np.linalg.norm(L) * np.linalg.norm(w))
-    con.print("two 1 kg masses at ±0.5 m on a massless rod tilted 30° from the spin axis z, ω = 2 rad/s:")
+    con.print(
+        "two 1 kg masses at ±0.5 m on a massless rod tilted 30° from the spin axis z, ω = 2 rad/s:"
+    )
     con.print(f"  L = I·ω = {_vec(L)} kg·m²/s, at {np.degrees(np.arccos(cos)):.4f}° from ω")
     con.print(f"  torque needed to keep ω fixed, ω × L = {_vec(N)} N·m")
-    con.print(f"  closed form |N| = m r² ω² sin 2α = {m * r**2 * omega**2 * np.sin(2 * alpha):.6g} N·m"
-              " (2 masses × m r² ω² sinα cosα)")
+    con.print(
+        f"  closed form |N| = m r² ω² sin 2α = {m * r**2 * omega**2 * np.sin(2 * alpha):.6g} N·m"
+        " (2 masses × m r² ω² sinα cosα)"
+    )
 
 
 @section("The inertia tensor: principal moments and the kind of top (eqs. 2.60–2.66)")
@@ -174,7 +233,9 @@ def _standard_solids(con: Console) -> None:
     table.add_column("textbook")
     table.add_column("kind")
     for name, body, formula in rows:
-        table.add_row(name, ", ".join(f"{x:.6g}" for x in body.principal_moments), formula, body.kind)
+        table.add_row(
+            name, ", ".join(f"{x:.6g}" for x in body.principal_moments), formula, body.kind
+        )
     con.print(table)
 
 
@@ -186,41 +247,69 @@ def _free_symmetric_top(con: Console) -> None:
     table.add_column("quantity (the unit's eq.)")
     table.add_column("closed form", justify="right")
     table.add_column("integrated (DOP853)", justify="right")
-    tr = ps.simulate([2.0, 2.0, 1.0], [0.3, 0.4, 2.0], 10.0, method="dop853", rtol=1e-12, atol=1e-14, samples=101)
+    tr = ps.simulate(
+        [2.0, 2.0, 1.0], [0.3, 0.4, 2.0], 10.0, method="dop853", rtol=1e-12, atol=1e-14, samples=101
+    )
     om = tr.omega
     phase = np.unwrap(np.arctan2(om[:, 0], om[:, 1]))  # Ωt + θ₀ of 2.85–2.86
-    table.add_row("Ω = (I₁ − I₃) ω₃ / I₁ (2.83), rad/s", f"{top.precession_rate:.10f}",
-                  f"{(phase[-1] - phase[0]) / 10.0:.10f}")
-    table.add_row("A = |ω_p| (2.88), rad/s", f"{top.amplitude:.10f}", f"{np.hypot(om[-1, 0], om[-1, 1]):.10f}")
+    table.add_row(
+        "Ω = (I₁ − I₃) ω₃ / I₁ (2.83), rad/s",
+        f"{top.precession_rate:.10f}",
+        f"{(phase[-1] - phase[0]) / 10.0:.10f}",
+    )
+    table.add_row(
+        "A = |ω_p| (2.88), rad/s", f"{top.amplitude:.10f}", f"{np.hypot(om[-1, 0], om[-1, 1]):.10f}"
+    )
     table.add_row("ω₃ (2.80), rad/s", f"{top.omega3:.10f}", f"{om[-1, 2]:.10f}")
-    table.add_row("body cone α_b, tan α_b = A/ω₃ (2.90)", f"{np.degrees(top.body_cone_angle):.8f}°",
-                  f"{np.degrees(np.arctan2(np.hypot(om[-1, 0], om[-1, 1]), om[-1, 2])):.8f}°")
-    table.add_row("space cone α_s, cos α_s = 2T/(ωL) (2.97)", f"{np.degrees(top.space_cone_angle):.8f}°", "")
-    table.add_row("ω₃² from T and L (2.95)",
-                  f"{ps.FreeSymmetricTop.omega3_squared_from(2, 1, top.energy, top.angular_momentum_magnitude):.10f}", "4")
-    table.add_row("A² from T and L (2.96)",
-                  f"{ps.FreeSymmetricTop.amplitude_squared_from(2, 1, top.energy, top.angular_momentum_magnitude):.10f}",
-                  "0.25")
+    table.add_row(
+        "body cone α_b, tan α_b = A/ω₃ (2.90)",
+        f"{np.degrees(top.body_cone_angle):.8f}°",
+        f"{np.degrees(np.arctan2(np.hypot(om[-1, 0], om[-1, 1]), om[-1, 2])):.8f}°",
+    )
+    table.add_row(
+        "space cone α_s, cos α_s = 2T/(ωL) (2.97)", f"{np.degrees(top.space_cone_angle):.8f}°", ""
+    )
+    table.add_row(
+        "ω₃² from T and L (2.95)",
+        f"{ps.FreeSymmetricTop.omega3_squared_from(2, 1, top.energy, top.angular_momentum_magnitude):.10f}",
+        "4",
+    )
+    table.add_row(
+        "A² from T and L (2.96)",
+        f"{ps.FreeSymmetricTop.amplitude_squared_from(2, 1, top.energy, top.angular_momentum_magnitude):.10f}",
+        "0.25",
+    )
     con.print(table)
-    con.print(f"  prolate: the body cone rolls on the {top.cone_contact} of the space cone; "
-              "an oblate top (I₃ > I₁) reverses Ω and its body cone surrounds the space cone.")
-    con.print("  errata: 2.70 is I·ω̇; 2.78 reads ω̇₂ = −Ω ω₁; 2.84 is ω̈₁ = −Ω² ω₁; and torque-free ω is "
-              "not parallel to L (2.73–2.74) — that is what the cones describe.")
+    con.print(
+        f"  prolate: the body cone rolls on the {top.cone_contact} of the space cone; "
+        "an oblate top (I₃ > I₁) reverses Ω and its body cone surrounds the space cone."
+    )
+    con.print(
+        "  errata: 2.70 is I·ω̇; 2.78 reads ω̇₂ = −Ω ω₁; 2.84 is ω̈₁ = −Ω² ω₁; and torque-free ω is "
+        "not parallel to L (2.73–2.74) — that is what the cones describe."
+    )
 
 
 @section("The free asymmetric top: exact solution, Dzhanibekov's flip, geometric integrators")
 def _free_asymmetric_top(con: Console) -> None:
     body = ps.FreeRigidBody([1.0, 2.0, 3.0], [1.0, 0.1, 1.0])
-    con.print(f"I = (1, 2, 3), ω₀ = (1, 0.1, 1): ω circles the {body.regime.replace('about ', '')} "
-              f"(m = {body.parameter:.8f}); ω(t) by Jacobi sn, cn, dn with period {body.period:.10f} s; "
-              "attitude by the elliptic integral of the third kind.")
+    con.print(
+        f"I = (1, 2, 3), ω₀ = (1, 0.1, 1): ω circles the {body.regime.replace('about ', '')} "
+        f"(m = {body.parameter:.8f}); ω(t) by Jacobi sn, cn, dn with period {body.period:.10f} s; "
+        "attitude by the elliptic integral of the third kind."
+    )
     stab = ps.axis_stability([1.0, 2.0, 3.0])
-    con.print("  rotation about axes 1, 2, 3 is " + ", ".join(s.stability for s in stab)
-              + f" (intermediate axis: perturbations grow like e^({stab[1].rate:.4f}·ω t))")
+    con.print(
+        "  rotation about axes 1, 2, 3 is "
+        + ", ".join(s.stability for s in stab)
+        + f" (intermediate axis: perturbations grow like e^({stab[1].rate:.4f}·ω t))"
+    )
     flip = ps.FreeRigidBody([1.0, 2.0, 3.0], [1e-3, 2.0, 1e-3])
-    con.print(f"  spun about axis 2 at 2 rad/s with a 1e-3 wobble, the body flips over every "
-              f"{flip.flip_interval:.4f} s (Dzhanibekov's wing nut)")
-    w_exact, q_exact = body.state(1000.0)
+    con.print(
+        f"  spun about axis 2 at 2 rad/s with a 1e-3 wobble, the body flips over every "
+        f"{flip.flip_interval:.4f} s (Dzhanibekov's wing nut)"
+    )
+    w_exact, _q_exact = body.state(1000.0)
     table = Table(title="reaching t = 1000 s")
     table.add_column("method")
     table.add_column("step (s)", justify="right")
@@ -228,13 +317,21 @@ def _free_asymmetric_top(con: Console) -> None:
     table.add_column("max |ΔE/E|", justify="right")
     table.add_column("max |Δ|L|/|L||", justify="right")
     for method, dt in (("exact", None), ("splitting6", 0.01), ("splitting2", 0.01), ("rk4", 0.01)):
-        tr = ps.simulate([1.0, 2.0, 3.0], [1.0, 0.1, 1.0], 1000.0, method=method, dt=dt, samples=201)
-        table.add_row(method, "—" if tr.step is None else f"{tr.step:g}",
-                      f"{np.linalg.norm(tr.omega[-1] - w_exact):.1e}", f"{tr.energy_error().max():.1e}",
-                      f"{tr.momentum_error().max():.1e}")
+        tr = ps.simulate(
+            [1.0, 2.0, 3.0], [1.0, 0.1, 1.0], 1000.0, method=method, dt=dt, samples=201
+        )
+        table.add_row(
+            method,
+            "—" if tr.step is None else f"{tr.step:g}",
+            f"{np.linalg.norm(tr.omega[-1] - w_exact):.1e}",
+            f"{tr.energy_error().max():.1e}",
+            f"{tr.momentum_error().max():.1e}",
+        )
     con.print(table)
-    con.print("  the splitting's every stage is an exact rotation: |L| stays at round-off and the energy "
-              "error stays bounded; RK4's energy drifts.")
+    con.print(
+        "  the splitting's every stage is an exact rotation: |L| stays at round-off and the energy "
+        "error stays bounded; RK4's energy drifts."
+    )
 
 
 @section("Euler's angles: angular velocity from the angle rates (eq. 2.99)")
@@ -242,11 +339,15 @@ def _euler_rates(con: Console) -> None:
     angles = np.radians([20.0, 40.0, 10.0])
     rates = np.array([0.5, 0.2, 3.0])
     w = ps.body_angular_velocity(angles, rates)
-    phi, theta, psi = angles
+    _phi, theta, psi = angles
     dphi, dtheta, dpsi = rates
-    unit = np.array([dtheta * np.cos(psi) + dphi * np.sin(theta) * np.sin(psi),
-                     -dtheta * np.sin(psi) + dphi * np.sin(theta) * np.cos(psi),
-                     dpsi + dphi * np.cos(theta)])
+    unit = np.array(
+        [
+            dtheta * np.cos(psi) + dphi * np.sin(theta) * np.sin(psi),
+            -dtheta * np.sin(psi) + dphi * np.sin(theta) * np.cos(psi),
+            dpsi + dphi * np.cos(theta),
+        ]
+    )
     con.print("φ, θ, ψ = 20°, 40°, 10°; φ̇, θ̇, ψ̇ = 0.5, 0.2, 3.0 rad/s:")
     con.print(f"  poinsot ω (body)  = {_vec(w, 12)} rad/s")
     con.print(f"  the unit's 2.99   = {_vec(unit, 12)} rad/s")
@@ -256,11 +357,15 @@ def _euler_rates(con: Console) -> None:
         con.print(f"  at θ = 0 the rates are undefined (gimbal lock): [italic]{exc}[/italic]")
 
 
-@section("The heavy symmetric top: constants, effective potential, turning points (eqs. 2.102–2.114)")
+@section(
+    "The heavy symmetric top: constants, effective potential, turning points (eqs. 2.102–2.114)"
+)
 def _heavy_top(con: Console) -> None:
     i1, i3, mgl = 1.0, 0.5, 1.0
-    table = Table(title=f"I₁ = {i1} kg·m², I₃ = {i3} kg·m², m g l = {mgl} N·m, θ₀ = 0.8 rad, ω₃ ≈ 6 rad/s, "
-                        "released with θ̇₀ = 0")
+    table = Table(
+        title=f"I₁ = {i1} kg·m², I₃ = {i3} kg·m², m g l = {mgl} N·m, θ₀ = 0.8 rad, ω₃ ≈ 6 rad/s, "
+        "released with θ̇₀ = 0"
+    )
     table.add_column("φ̇₀ (rad/s)", justify="right")
     table.add_column("p_φ, p_ψ (kg·m²/s)", justify="right")
     table.add_column("E′ (J)", justify="right")
@@ -271,28 +376,46 @@ def _heavy_top(con: Console) -> None:
     for phi_dot in (0.5, 0.0, -0.5):
         top = ps.HeavyTop(i1, i3, mgl, 0.8, phi_dot=phi_dot, psi_dot=6.0 - phi_dot * np.cos(0.8))
         t1, t2 = top.turning_points
-        table.add_row(f"{phi_dot:+.1f}", f"{top.p_phi:.6f}, {top.p_psi:.6f}", f"{top.reduced_energy:.6f}",
-                      f"{t1:.6f}, {t2:.6f}", f"{top.nutation_period:.6f}", f"{top.mean_precession_rate:.6f}",
-                      top.motion_class)
+        table.add_row(
+            f"{phi_dot:+.1f}",
+            f"{top.p_phi:.6f}, {top.p_psi:.6f}",
+            f"{top.reduced_energy:.6f}",
+            f"{t1:.6f}, {t2:.6f}",
+            f"{top.nutation_period:.6f}",
+            f"{top.mean_precession_rate:.6f}",
+            top.motion_class,
+        )
     con.print(table)
     top = ps.HeavyTop(i1, i3, mgl, 0.8, psi_dot=6.0)
     t1, t2 = top.turning_points
-    con.print(f"  at the turning points E′ = V(θ) (2.109–2.110): V(θ₁) − E′ = {top.effective_potential(t1) - top.reduced_energy:.1e} J,"
-              f" V(θ₂) − E′ = {top.effective_potential(t2) - top.reduced_energy:.1e} J")
+    con.print(
+        f"  at the turning points E′ = V(θ) (2.109–2.110): V(θ₁) − E′ = {top.effective_potential(t1) - top.reduced_energy:.1e} J,"
+        f" V(θ₂) − E′ = {top.effective_potential(t2) - top.reduced_energy:.1e} J"
+    )
     phi, theta, psi = top.euler_angles(top.nutation_period / 2)
-    con.print(f"  the exact motion (elliptic functions — the unit's \"very difficult\" 2.112): half a nutation period "
-              f"later θ = {theta:.12f} rad = θ₂, φ = {phi:.9f} rad, ψ = {psi:.9f} rad")
+    con.print(
+        f'  the exact motion (elliptic functions — the unit\'s "very difficult" 2.112): half a nutation period '
+        f"later θ = {theta:.12f} rad = θ₂, φ = {phi:.9f} rad, ψ = {psi:.9f} rad"
+    )
     thr = ps.HeavyTop.sleeping_threshold(i1, i3, mgl)
-    con.print(f"  the sleeping top: upright spinning is stable iff ω₃² > 4 m g l I₁/I₃², i.e. ω₃ > {thr:.6g} rad/s")
+    con.print(
+        f"  the sleeping top: upright spinning is stable iff ω₃² > 4 m g l I₁/I₃², i.e. ω₃ > {thr:.6g} rad/s"
+    )
 
 
-@section("A fast top's slow and fast precession against the unit's approximations (eqs. 2.115–2.121)")
+@section(
+    "A fast top's slow and fast precession against the unit's approximations (eqs. 2.115–2.121)"
+)
 def _fast_top(con: Console) -> None:
     i1, i3, mgl, theta0 = 1.0, 0.5, 0.3, 0.6
     w_min = ps.HeavyTop.min_spin(i1, i3, mgl, theta0)
-    con.print(f"I₁ = {i1}, I₃ = {i3}, m g l = {mgl}, θ₀ = {theta0} rad: minimum spin (2.119) "
-              f"ω₃ = (2/I₃)√(m g l I₁ cos θ₀) = {w_min:.6f} rad/s")
-    table = Table(title="steady precession rates φ̇ (rad/s): the two roots of 2.116 and the fast-top formulas")
+    con.print(
+        f"I₁ = {i1}, I₃ = {i3}, m g l = {mgl}, θ₀ = {theta0} rad: minimum spin (2.119) "
+        f"ω₃ = (2/I₃)√(m g l I₁ cos θ₀) = {w_min:.6f} rad/s"
+    )
+    table = Table(
+        title="steady precession rates φ̇ (rad/s): the two roots of 2.116 and the fast-top formulas"
+    )
     table.add_column("ω₃ (rad/s)", justify="right")
     table.add_column("slow, exact", justify="right")
     table.add_column("m g l/p_ψ (2.121)", justify="right")
@@ -301,24 +424,39 @@ def _fast_top(con: Console) -> None:
     table.add_column("p_ψ/(2 I₁ cos θ₀) (2.120 as printed)", justify="right")
     for w3 in (1.01 * w_min, 5.0, 10.0, 40.0, 200.0):
         s = ps.HeavyTop.steady_precession(i1, i3, mgl, theta0, w3)
-        table.add_row(f"{w3:.4g}", f"{s.slow:.6f}", f"{s.slow_approx:.6f}", f"{s.fast:.4f}", f"{s.fast_approx:.4f}",
-                      f"{s.fast_approx_as_printed:.4f}")
+        table.add_row(
+            f"{w3:.4g}",
+            f"{s.slow:.6f}",
+            f"{s.slow_approx:.6f}",
+            f"{s.fast:.4f}",
+            f"{s.fast_approx:.4f}",
+            f"{s.fast_approx_as_printed:.4f}",
+        )
     con.print(table)
     s = ps.HeavyTop.steady_precession(i1, i3, mgl, theta0, 40.0)
-    con.print(f"  at ω₃ = 40 rad/s: exact fast root {s.fast:.4f} rad/s; the corrected 2.120 gives {s.fast_approx:.4f}, "
-              f"the unit's printed formula {s.fast_approx_as_printed:.4f} (a factor 2 off: erratum)")
+    con.print(
+        f"  at ω₃ = 40 rad/s: exact fast root {s.fast:.4f} rad/s; the corrected 2.120 gives {s.fast_approx:.4f}, "
+        f"the unit's printed formula {s.fast_approx_as_printed:.4f} (a factor 2 off: erratum)"
+    )
     released = ps.HeavyTop(i1, i3, mgl, theta0, psi_dot=40.0)
     t1, t2 = released.turning_points
-    con.print(f"  released at rest instead ({released.motion_class}): it nutates by {t2 - t1:.2e} rad and drifts at "
-              f"⟨φ̇⟩ = {released.mean_precession_rate:.6f} rad/s — close to the slow rate: "
-              "\"it is normally the slow precession that is observed\"")
+    con.print(
+        f"  released at rest instead ({released.motion_class}): it nutates by {t2 - t1:.2e} rad and drifts at "
+        f"⟨φ̇⟩ = {released.mean_precession_rate:.6f} rad/s — close to the slow rate: "
+        '"it is normally the slow precession that is observed"'
+    )
 
 
 def run_tour(console: Console | None = None) -> None:
     """Print every section of the tour to ``console`` (a new rich Console by default)."""
     con = console or Console()
-    con.print(Panel.fit(f"[bold]poinsot {ps.__version__}[/bold] — moving frames and the motion "
-                        "of rigid bodies\nthe course unit, computed", border_style="blue"))
+    con.print(
+        Panel.fit(
+            f"[bold]poinsot {ps.__version__}[/bold] — moving frames and the motion "
+            "of rigid bodies\nthe course unit, computed",
+            border_style="blue",
+        )
+    )
     for i, (title, fn) in enumerate(_SECTIONS, start=1):
         con.rule(f"[bold]{i}. {title}")
         fn(con)

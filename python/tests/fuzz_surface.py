@@ -28,7 +28,6 @@ from contextlib import contextmanager
 from typing import Any
 
 import numpy as np
-
 import poinsot as ps
 from poinsot import special
 
@@ -61,38 +60,124 @@ def deadline(seconds: float = DEADLINE_S) -> Iterator[None]:
 
 R0 = ps.euler_to_matrix([0.1, 0.2, 0.3])
 FRAME = ps.MovingFrame(angular_velocity=[0.0, 0.0, 1.0], velocity=[1.0, 0.0, 0.0])
-CUBE_V = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]], float)
-CUBE_F = np.array([[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4],
-                   [1, 2, 6], [1, 6, 5], [2, 3, 7], [2, 7, 6], [3, 0, 4], [3, 4, 7]])
+CUBE_V = np.array(
+    [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]], float
+)
+CUBE_F = np.array(
+    [
+        [0, 2, 1],
+        [0, 3, 2],
+        [4, 5, 6],
+        [4, 6, 7],
+        [0, 1, 5],
+        [0, 5, 4],
+        [1, 2, 6],
+        [1, 6, 5],
+        [2, 3, 7],
+        [2, 7, 6],
+        [3, 0, 4],
+        [3, 4, 7],
+    ]
+)
 
 _TOP = ps.HeavyTop(1.0, 0.5, 1.0, 0.5, psi_dot=6.0)
 
 #: Valid example arguments by parameter name; ``VALID_FOR`` overrides by "Qualified.name".
 VALID: dict[str, Any] = {
-    "angles": [0.1, 0.2, 0.3], "rates": [0.5, 0.2, 3.0], "omega_body": [0.1, 0.2, 0.3],
-    "seq": "zxz", "intrinsic": True, "degrees": False, "frame": "body", "R": R0,
-    "axis": [0.0, 0.0, 1.0], "angle": 0.5, "tol": 1e-9, "p": [1.0, 0.0, 0.0, 0.0],
-    "q": [0.9, 0.1, 0.3, 0.3], "normalize": True, "v": [1.0, 2.0, 3.0], "t": 1.5, "s": 0.5,
-    "x": [1.0, 2.0, 3.0], "mass": 2.0, "inertia": np.diag([1.0, 2.0, 2.5]),
-    "center_of_mass": [0.0, 0.0, 0.1], "about": None, "masses": [1.0, 2.0, 3.0],
-    "positions": [[1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]], "radius": 0.5, "height": 2.0,
-    "sides": [1.0, 2.0, 3.0], "semi_axes": [1.0, 2.0, 3.0], "length": 1.5,
-    "density": 1000.0, "bounds": [(-0.5, 0.5), (-0.5, 0.5), (-0.5, 0.5)], "rtol": 1e-6,
-    "atol": 1e-12, "max_evals": 100_000, "vertices": CUBE_V, "faces": CUBE_F,
-    "merge_vertices": False, "point": [0.1, 0.2, 0.3], "omega": [1.0, 0.1, 1.0],
-    "offset": [1.0, 2.0, 3.0], "rotation": R0, "moments": [1.0, 2.0, 3.0],
-    "origin": [1.0, 0.0, 0.0], "velocity": [0.0, 1.0, 0.0], "acceleration": [0.0, 0.0, 0.1],
-    "angular_velocity": [0.0, 0.0, 1.0], "angular_acceleration": [0.0, 0.0, 0.1],
-    "attitude": None, "position": [1.0, 0.0, 0.0], "duration": 1.0, "force": None,
-    "samples": 11, "t_eval": None, "max_steps": 1_000_000, "rotation_rate": 7.2921150e-5,
-    "g": 9.80665, "latitude": 0.7, "velocity_enu": [10.0, 0.0, 0.0], "gravity": "uniform",
-    "centrifugal": True, "speed": 100.0, "elevation": 0.7, "azimuth": 0.3, "amplitude": 1.0,
-    "progress": None, "parcels": 4, "pull": 1e-3, "friction": 1e-5, "torque": None,
-    "mgl": 1.0, "mean_motion": 1e-3, "body": [1.0, 2.0, 3.0], "omega0": [1.0, 0.1, 1.0],
-    "attitude0": None, "method": "auto", "dt": None, "I1": 1.0, "I3": 0.5,
-    "energy": 2.0, "angular_momentum": 2.5, "spin": 1.0, "theta": 0.5, "theta_dot": 0.0,
-    "phi_dot": 0.0, "psi_dot": 6.0, "phi": 0.0, "psi": 0.0, "omega3": 6.0, "p_phi": 3.0,
-    "p_psi": 3.0, "theta0": 0.5, "u": [0.1, 0.5, 2.0], "m": 0.5, "n": 0.3,
+    "angles": [0.1, 0.2, 0.3],
+    "rates": [0.5, 0.2, 3.0],
+    "omega_body": [0.1, 0.2, 0.3],
+    "seq": "zxz",
+    "intrinsic": True,
+    "degrees": False,
+    "frame": "body",
+    "R": R0,
+    "axis": [0.0, 0.0, 1.0],
+    "angle": 0.5,
+    "tol": 1e-9,
+    "p": [1.0, 0.0, 0.0, 0.0],
+    "q": [0.9, 0.1, 0.3, 0.3],
+    "normalize": True,
+    "v": [1.0, 2.0, 3.0],
+    "t": 1.5,
+    "s": 0.5,
+    "x": [1.0, 2.0, 3.0],
+    "mass": 2.0,
+    "inertia": np.diag([1.0, 2.0, 2.5]),
+    "center_of_mass": [0.0, 0.0, 0.1],
+    "about": None,
+    "masses": [1.0, 2.0, 3.0],
+    "positions": [[1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]],
+    "radius": 0.5,
+    "height": 2.0,
+    "sides": [1.0, 2.0, 3.0],
+    "semi_axes": [1.0, 2.0, 3.0],
+    "length": 1.5,
+    "density": 1000.0,
+    "bounds": [(-0.5, 0.5), (-0.5, 0.5), (-0.5, 0.5)],
+    "rtol": 1e-6,
+    "atol": 1e-12,
+    "max_evals": 100_000,
+    "vertices": CUBE_V,
+    "faces": CUBE_F,
+    "merge_vertices": False,
+    "point": [0.1, 0.2, 0.3],
+    "omega": [1.0, 0.1, 1.0],
+    "offset": [1.0, 2.0, 3.0],
+    "rotation": R0,
+    "moments": [1.0, 2.0, 3.0],
+    "origin": [1.0, 0.0, 0.0],
+    "velocity": [0.0, 1.0, 0.0],
+    "acceleration": [0.0, 0.0, 0.1],
+    "angular_velocity": [0.0, 0.0, 1.0],
+    "angular_acceleration": [0.0, 0.0, 0.1],
+    "attitude": None,
+    "position": [1.0, 0.0, 0.0],
+    "duration": 1.0,
+    "force": None,
+    "samples": 11,
+    "t_eval": None,
+    "max_steps": 1_000_000,
+    "rotation_rate": 7.2921150e-5,
+    "g": 9.80665,
+    "latitude": 0.7,
+    "velocity_enu": [10.0, 0.0, 0.0],
+    "gravity": "uniform",
+    "centrifugal": True,
+    "speed": 100.0,
+    "elevation": 0.7,
+    "azimuth": 0.3,
+    "amplitude": 1.0,
+    "progress": None,
+    "parcels": 4,
+    "pull": 1e-3,
+    "friction": 1e-5,
+    "torque": None,
+    "mgl": 1.0,
+    "mean_motion": 1e-3,
+    "body": [1.0, 2.0, 3.0],
+    "omega0": [1.0, 0.1, 1.0],
+    "attitude0": None,
+    "method": "auto",
+    "dt": None,
+    "I1": 1.0,
+    "I3": 0.5,
+    "energy": 2.0,
+    "angular_momentum": 2.5,
+    "spin": 1.0,
+    "theta": 0.5,
+    "theta_dot": 0.0,
+    "phi_dot": 0.0,
+    "psi_dot": 6.0,
+    "phi": 0.0,
+    "psi": 0.0,
+    "omega3": 6.0,
+    "p_phi": 3.0,
+    "p_psi": 3.0,
+    "theta0": 0.5,
+    "u": [0.1, 0.5, 2.0],
+    "m": 0.5,
+    "n": 0.3,
     "bytes": 4 * 2**30,
 }
 
@@ -101,19 +186,31 @@ VALID_FOR: dict[str, dict[str, Any]] = {
     "RigidBody.rotated": {"rotation": R0},
     "RigidBody.load_mesh": {"path": "__CUBE_STL__"},
     "RigidBody.from_density": {"density": 1000.0},
-    "RigidBody.combine": {"bodies": [ps.RigidBody.solid_sphere(1.0, 0.5),
-                                     ps.RigidBody.cuboid(1.0, (1, 1, 1)).translated([1, 0, 0])]},
+    "RigidBody.combine": {
+        "bodies": [
+            ps.RigidBody.solid_sphere(1.0, 0.5),
+            ps.RigidBody.cuboid(1.0, (1, 1, 1)).translated([1, 0, 0]),
+        ]
+    },
     "RigidBody.__init__": {"inertia": np.diag([1.0, 2.0, 2.5])},
     "RigidBody.from_trimesh": {"mesh": "__TRIMESH_CUBE__"},
     "MovingFrame.at": {"t": 0.5},
     "ParticleTrajectory.frame_at": {"t": 0.5},
-    "simulate_particle": {"frame": FRAME, "position": [1.0, 0.0, 0.0], "velocity": [0.0, 1.0, 0.0],
-                          "duration": 1.0},
+    "simulate_particle": {
+        "frame": FRAME,
+        "position": [1.0, 0.0, 0.0],
+        "velocity": [0.0, 1.0, 0.0],
+        "duration": 1.0,
+    },
     "MovingFrame.fictitious_forces": {"mass": 2.0},
     "SpringParticle.__init__": {"mass": 2.0, "stiffness": 3.0},
     "SpringParticle.jacobi_integral": {"frame": FRAME},
-    "SpringParticle.simulate": {"frame": FRAME, "position": [1.0, 0.0, 0.0], "velocity": [0.0, 1.0, 0.0],
-                                "duration": 1.0},
+    "SpringParticle.simulate": {
+        "frame": FRAME,
+        "position": [1.0, 0.0, 0.0],
+        "velocity": [0.0, 1.0, 0.0],
+        "duration": 1.0,
+    },
     "Earth.projectile": {"height": 0.0, "rotation": True},
     "Earth.drop": {"height": 100.0, "rotation": True},
     "Earth.foucault": {"duration": 30.0, "samples": 11, "max_steps": 100_000, "progress": False},
@@ -125,14 +222,25 @@ VALID_FOR: dict[str, dict[str, Any]] = {
     "BodyTorque.__init__": {"torque": [0.0, 0.0, 1.0]},
     "SpaceTorque.__init__": {"torque": [0.0, 0.0, 1.0]},
     "simulate": {"duration": 2.0, "samples": 11},
-    "simulate_batch": {"moments": [[1.0, 2.0, 3.0], [2.0, 2.0, 3.0]],
-                       "omega0": [[1.0, 0.1, 1.0], [0.0, 0.5, 1.0]], "duration": 1.0,
-                       "dt": 1e-3},
+    "simulate_batch": {
+        "moments": [[1.0, 2.0, 3.0], [2.0, 2.0, 3.0]],
+        "omega0": [[1.0, 0.1, 1.0], [0.0, 0.5, 1.0]],
+        "duration": 1.0,
+        "dt": 1e-3,
+    },
     "FreeSymmetricTop.__init__": {"I1": 1.0, "I3": 2.0, "omega0": [0.3, 0.0, 1.0]},
-    "FreeSymmetricTop.omega3_squared_from": {"I1": 1.0, "I3": 2.0, "energy": 1.5,
-                                             "angular_momentum": 2.0},
-    "FreeSymmetricTop.amplitude_squared_from": {"I1": 1.0, "I3": 2.0, "energy": 1.5,
-                                                "angular_momentum": 2.0},
+    "FreeSymmetricTop.omega3_squared_from": {
+        "I1": 1.0,
+        "I3": 2.0,
+        "energy": 1.5,
+        "angular_momentum": 2.0,
+    },
+    "FreeSymmetricTop.amplitude_squared_from": {
+        "I1": 1.0,
+        "I3": 2.0,
+        "energy": 1.5,
+        "angular_momentum": 2.0,
+    },
     "HeavyTop.from_constants": {"p_phi": _TOP.p_phi, "p_psi": _TOP.p_psi, "energy": _TOP.energy},
     "HeavyTop.effective_potential": {"theta": [0.3, 0.5, 1.0]},
     "HeavyTop.effective_potential_derivative": {"theta": [0.3, 0.5, 1.0]},
@@ -146,15 +254,25 @@ VALID_FOR: dict[str, dict[str, Any]] = {
     "check_inertia": {"inertia": np.diag([1.0, 2.0, 2.5])},
     "jacobi": {"u": [0.1, 0.5, 2.0], "m": 0.5},
     "ellippiinc": {"phi": 0.5, "n": 0.3, "m": 0.5},
-    "ellipf": {"phi": 0.5}, "ellipeinc": {"phi": 0.5},
+    "ellipf": {"phi": 0.5},
+    "ellipeinc": {"phi": 0.5},
 }
 
 #: Result types that poinsot constructs and users only read: their constructors are not part
 #: of the input surface (their methods and fields are fuzzed through ``INSTANCES``).
 RESULT_TYPES = {
-    "Screw", "IntegrationErrorEstimate", "FrameTransform", "ParticleTrajectory", "Fall",
-    "Flight", "FoucaultRun", "InertialOscillation", "LowFlow", "Trajectory",
-    "AxisStability", "SteadyPrecession",
+    "Screw",
+    "IntegrationErrorEstimate",
+    "FrameTransform",
+    "ParticleTrajectory",
+    "Fall",
+    "Flight",
+    "FoucaultRun",
+    "InertialOscillation",
+    "LowFlow",
+    "Trajectory",
+    "AxisStability",
+    "SteadyPrecession",
 }
 
 #: Valid instances whose methods and properties are fuzzed, by class name.
@@ -162,7 +280,9 @@ INSTANCES: dict[str, Callable[[], Any]] = {
     "Screw": lambda: ps.screw_axis(R0, [1.0, 2.0, 3.0]),
     "RigidBody": lambda: ps.RigidBody.cuboid(2.0, (1.0, 2.0, 3.0)),
     "MovingFrame": lambda: FRAME,
-    "ParticleTrajectory": lambda: ps.simulate_particle(FRAME, [1.0, 0, 0], [0, 1.0, 0], 1.0, samples=11),
+    "ParticleTrajectory": lambda: ps.simulate_particle(
+        FRAME, [1.0, 0, 0], [0, 1.0, 0], 1.0, samples=11
+    ),
     "Earth": lambda: ps.Earth(),
     "Trajectory": lambda: ps.simulate([1.0, 2.0, 3.0], [1.0, 0.1, 1.0], 1.0, samples=11),
     "FreeSymmetricTop": lambda: ps.FreeSymmetricTop(1.0, 2.0, [0.3, 0.0, 1.0]),
@@ -173,16 +293,18 @@ INSTANCES: dict[str, Callable[[], Any]] = {
 
 #: Numbers that may be infinite by documented design, as (qualified name, field).
 DOCUMENTED_INF = {
-    ("screw_axis", "pitch"),               # a pure translation has infinite pitch (the contract)
+    ("screw_axis", "pitch"),  # a pure translation has infinite pitch (the contract)
     ("Screw", "pitch"),
-    ("Earth.inertial_period", ""),         # no inertial oscillation at the equator
+    ("Earth.inertial_period", ""),  # no inertial oscillation at the equator
     ("Earth.inertial_oscillation", "period"),
-    ("ellipk", ""),                        # K(1) = inf
-    ("ellipf", ""), ("ellippi", ""), ("ellippiinc", ""),  # F, Π at their poles
-    ("FreeRigidBody", "period"),           # on the separatrix the motion is asymptotic
+    ("ellipk", ""),  # K(1) = inf
+    ("ellipf", ""),
+    ("ellippi", ""),
+    ("ellippiinc", ""),  # F, Π at their poles
+    ("FreeRigidBody", "period"),  # on the separatrix the motion is asymptotic
     ("FreeRigidBody", "flip_interval"),
-    ("HeavyTop", "nutation_period"),       # steady precession and the sleeping top
-    ("HeavyTop", "cubic_roots"),           # u3 = inf for m g l = 0: the cubic has no third root
+    ("HeavyTop", "nutation_period"),  # steady precession and the sleeping top
+    ("HeavyTop", "cubic_roots"),  # u3 = inf for m g l = 0: the cubic has no third root
     ("axis_stability", "rate"),
 }
 
@@ -207,7 +329,11 @@ class Site:
 
     def call(self, args: dict[str, Any]) -> Any:
         pos = [args[p.name] for p in self.params if p.kind == p.POSITIONAL_ONLY]
-        kw = {p.name: args[p.name] for p in self.params if p.kind != p.POSITIONAL_ONLY and p.name in args}
+        kw = {
+            p.name: args[p.name]
+            for p in self.params
+            if p.kind != p.POSITIONAL_ONLY and p.name in args
+        }
         return self.func(*pos, **kw)
 
 
@@ -229,8 +355,11 @@ def _resolve(value: Any, tmp: Any) -> Any:
 def _site(owner: str | None, name: str, func: Callable[..., Any], tmp: Any) -> Site:
     q = qualname(owner, name)
     sig = inspect.signature(func)
-    params = [p for p in sig.parameters.values()
-              if p.name not in ("self", "cls") and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)]
+    params = [
+        p
+        for p in sig.parameters.values()
+        if p.name not in ("self", "cls") and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)
+    ]
     valid: dict[str, Any] = {}
     missing: list[str] = []
     override = VALID_FOR.get(q, {})
@@ -284,8 +413,21 @@ def properties(cls_name: str) -> list[str]:
 
 # -- adversarial values ----------------------------------------------------------------------
 
-SPECIAL_FLOATS = [math.nan, math.inf, -math.inf, 1e308, -1e308, 5e-324, -5e-324, 0.0, -1.0,
-                  1e-300, 1e300, 1e154, 1e-160]
+SPECIAL_FLOATS = [
+    math.nan,
+    math.inf,
+    -math.inf,
+    1e308,
+    -1e308,
+    5e-324,
+    -5e-324,
+    0.0,
+    -1.0,
+    1e-300,
+    1e300,
+    1e154,
+    1e-160,
+]
 
 
 def _nan_torque(t: float, w: Any, q: Any) -> Any:
@@ -307,9 +449,29 @@ def _wrong_shape(*args: Any) -> Any:
 def adversarial(name: str, valid: Any) -> list[Any]:
     """Bad or extreme values for a parameter called ``name`` whose valid example is ``valid``."""
     vals: list[Any] = list(SPECIAL_FLOATS)
-    vals += [None, "no", "", True, 1 + 5j, 10**400, -(2**31), 2**63, 2**64 + 1, 2.5, -1, 0,
-             [], [[1.0, 2.0], [3.0]], np.ones((3, 3)), np.ones(7), np.array([1 + 5j, 2, 3]),
-             object(), {"a": 1}, np.array(["a", "b", "c"]), np.array([True, False, True])]
+    vals += [
+        None,
+        "no",
+        "",
+        True,
+        1 + 5j,
+        10**400,
+        -(2**31),
+        2**63,
+        2**64 + 1,
+        2.5,
+        -1,
+        0,
+        [],
+        [[1.0, 2.0], [3.0]],
+        np.ones((3, 3)),
+        np.ones(7),
+        np.array([1 + 5j, 2, 3]),
+        object(),
+        {"a": 1},
+        np.array(["a", "b", "c"]),
+        np.array([True, False, True]),
+    ]
     arr = None
     if valid is not None and not isinstance(valid, (str, bool, dict)) and not callable(valid):
         try:
@@ -326,8 +488,15 @@ def adversarial(name: str, valid: Any) -> list[Any]:
         vals.append(arr.ravel().tolist() + [1.0])
         vals.append(np.zeros((0,) + arr.shape[1:]))
     if name in ("torque",):
-        vals += [ps.BodyTorque([1e308, 0, 0]), ps.SpaceTorque([1e308] * 3), ps.GravityTorque(mgl=1e308),
-                 ps.GravityGradientTorque(1e154), _nan_torque, _raising, _wrong_shape]
+        vals += [
+            ps.BodyTorque([1e308, 0, 0]),
+            ps.SpaceTorque([1e308] * 3),
+            ps.GravityTorque(mgl=1e308),
+            ps.GravityGradientTorque(1e154),
+            _nan_torque,
+            _raising,
+            _wrong_shape,
+        ]
     if name in ("force", "density", "progress", "frame"):
         vals += [_raising, _wrong_shape, lambda *a: math.nan, lambda *a: "x"]
     return vals
@@ -389,8 +558,11 @@ def check_result(qual: str, value: Any) -> list[str]:
         if math.isfinite(x):
             continue
         field = path.split(".")[-1] if path else ""
-        if math.isinf(x) and ((qual, field) in DOCUMENTED_INF or (owner, field) in DOCUMENTED_INF
-                              or (type(value).__name__, field) in DOCUMENTED_INF):
+        if math.isinf(x) and (
+            (qual, field) in DOCUMENTED_INF
+            or (owner, field) in DOCUMENTED_INF
+            or (type(value).__name__, field) in DOCUMENTED_INF
+        ):
             continue
         problems.append(f"{qual} returned {x} at {path or 'the result'}")
     return problems
@@ -407,8 +579,10 @@ def check_exception(qual: str, exc: BaseException, names: set[str]) -> list[str]
     msg = str(exc)
     head = msg.split(":", 1)[0].strip()
     if head not in names:
-        return [f"{qual} raised {type(exc).__name__} naming {head!r}, not one of its arguments "
-                f"{sorted(names)}: {msg[:200]}"]
+        return [
+            f"{qual} raised {type(exc).__name__} naming {head!r}, not one of its arguments "
+            f"{sorted(names)}: {msg[:200]}"
+        ]
     return []
 
 
@@ -430,7 +604,7 @@ def _run_call(site: Site, args: dict[str, Any], read_properties: bool) -> list[s
         try:
             with deadline():
                 result = site.call(args)
-        except BaseException as exc:  # noqa: BLE001 - the contract is about every exception
+        except BaseException as exc:
             if isinstance(exc, KeyboardInterrupt) and not isinstance(exc, Deadline):
                 raise
             return check_exception(site.qualname, exc, site.names)
@@ -441,13 +615,15 @@ def _run_call(site: Site, args: dict[str, Any], read_properties: bool) -> list[s
                 try:
                     with deadline():
                         value = getattr(result, prop)
-                except BaseException as exc:  # noqa: BLE001
+                except BaseException as exc:
                     if isinstance(exc, KeyboardInterrupt) and not isinstance(exc, Deadline):
                         raise
                     # A valid object's property may be undefined for that object; it must say
                     # so as a PoinsotError, not crash.
                     if isinstance(exc, Deadline) or not isinstance(exc, ps.PoinsotError):
-                        problems.append(f"{site.qualname} -> .{prop} raised {type(exc).__name__}: {exc}")
+                        problems.append(
+                            f"{site.qualname} -> .{prop} raised {type(exc).__name__}: {exc}"
+                        )
                     continue
                 problems += check_result(f"{cls}", {prop: value})
         return problems
@@ -463,4 +639,10 @@ if __name__ == "__main__":  # pragma: no cover - a quick listing for people
     from pathlib import Path
 
     for s in sites(Path(tempfile.mkdtemp())):
-        print(s.qualname, sorted(s.valid), "MISSING" if s.missing else "", s.missing or "", file=sys.stdout)
+        print(
+            s.qualname,
+            sorted(s.valid),
+            "MISSING" if s.missing else "",
+            s.missing or "",
+            file=sys.stdout,
+        )

@@ -9,9 +9,8 @@ from __future__ import annotations
 import warnings
 
 import numpy as np
-import pytest
-
 import poinsot as ps
+import pytest
 
 
 def test_complex_arrays_are_refused_not_truncated() -> None:
@@ -48,9 +47,18 @@ def test_flags_are_booleans_not_truthiness(bad: object) -> None:
     assert with_rot.east > 0.0 and without.east == 0.0
 
 
-@pytest.mark.parametrize(("bad", "error"), [(0, ps.PoinsotError), (-1, ps.PoinsotError), (1, ps.PoinsotError),
-                                            (2.5, ps.ArgumentTypeError), (2.0, ps.ArgumentTypeError),
-                                            ("5", ps.ArgumentTypeError), (True, ps.ArgumentTypeError)])
+@pytest.mark.parametrize(
+    ("bad", "error"),
+    [
+        (0, ps.PoinsotError),
+        (-1, ps.PoinsotError),
+        (1, ps.PoinsotError),
+        (2.5, ps.ArgumentTypeError),
+        (2.0, ps.ArgumentTypeError),
+        ("5", ps.ArgumentTypeError),
+        (True, ps.ArgumentTypeError),
+    ],
+)
 def test_sample_counts_are_checked_everywhere(bad: object, error: type) -> None:
     """``samples`` of 0 or -1 silently gave 1–2 samples in the Earth runs, 2.5 became 2 and -1
     in ``drop`` raised OverflowError."""
@@ -85,7 +93,9 @@ def test_errors_name_the_users_argument() -> None:
     with pytest.raises(ps.PoinsotError, match="^mass: .*range of doubles"):
         ps.RigidBody.solid_sphere(10**400, 1.0)
     with pytest.raises(ps.IntegrationError, match=r"^torque: the callback returned \[NaN"):
-        ps.simulate([1, 2, 3], [0.1, 0.5, 1], 1.0, torque=lambda t, w, q: [np.nan, 0, 0], method="dop853")
+        ps.simulate(
+            [1, 2, 3], [0.1, 0.5, 1], 1.0, torque=lambda t, w, q: [np.nan, 0, 0], method="dop853"
+        )
     with pytest.raises(ps.InvalidInertiaError, match="^body: "):
         ps.simulate([1.0, 1.0, 3.0], [0.1, 0.5, 1], 1.0)
     with pytest.raises(ps.PoinsotError, match="^pull: "):

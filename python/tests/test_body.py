@@ -12,12 +12,11 @@ import json
 import pickle
 
 import numpy as np
+import poinsot as ps
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
-
-import poinsot as ps
 
 #: Round-off of closed forms and O(1) sums in float64.
 EXACT = 1e-12
@@ -89,10 +88,14 @@ def test_convention_principal_axes_proper_rotation() -> None:
         np.testing.assert_allclose(A.T @ A, np.eye(3), atol=EXACT)
         assert np.linalg.det(A) == pytest.approx(1.0, abs=EXACT)
         scale = max(1.0, np.abs(b.inertia).max())
-        np.testing.assert_allclose(A @ np.diag(b.principal_moments) @ A.T, b.inertia, atol=1e-9 * scale)
+        np.testing.assert_allclose(
+            A @ np.diag(b.principal_moments) @ A.T, b.inertia, atol=1e-9 * scale
+        )
     np.testing.assert_array_equal(ps.RigidBody.solid_sphere(1.0, 1.0).principal_axes, np.eye(3))
     # A symmetric top about z keeps the coordinate axes: the pair spans x, y.
-    np.testing.assert_array_equal(ps.RigidBody.solid_cylinder(1.0, 1.0, 0.1).principal_axes, np.eye(3))
+    np.testing.assert_array_equal(
+        ps.RigidBody.solid_cylinder(1.0, 1.0, 0.1).principal_axes, np.eye(3)
+    )
 
 
 def test_convention_cone_apex_at_origin() -> None:
@@ -110,8 +113,16 @@ def test_convention_cone_apex_at_origin() -> None:
 
 M, R, H = 2.5, 0.4, 1.3
 SOLIDS = {
-    "solid_sphere": (lambda: ps.RigidBody.solid_sphere(M, R), [0.4 * M * R**2] * 3, "spherical top"),
-    "spherical_shell": (lambda: ps.RigidBody.spherical_shell(M, R), [2 / 3 * M * R**2] * 3, "spherical top"),
+    "solid_sphere": (
+        lambda: ps.RigidBody.solid_sphere(M, R),
+        [0.4 * M * R**2] * 3,
+        "spherical top",
+    ),
+    "spherical_shell": (
+        lambda: ps.RigidBody.spherical_shell(M, R),
+        [2 / 3 * M * R**2] * 3,
+        "spherical top",
+    ),
     "solid_cylinder": (
         lambda: ps.RigidBody.solid_cylinder(M, R, H),
         [M * (3 * R**2 + H**2) / 12] * 2 + [M * R**2 / 2],
@@ -133,8 +144,16 @@ SOLIDS = {
         "asymmetric top",
     ),
     "thin_rod": (lambda: ps.RigidBody.thin_rod(M, H), [M * H**2 / 12] * 2 + [0.0], "rotor"),
-    "thin_disk": (lambda: ps.RigidBody.thin_disk(M, R), [M * R**2 / 4] * 2 + [M * R**2 / 2], "symmetric top"),
-    "thin_ring": (lambda: ps.RigidBody.thin_ring(M, R), [M * R**2 / 2] * 2 + [M * R**2], "symmetric top"),
+    "thin_disk": (
+        lambda: ps.RigidBody.thin_disk(M, R),
+        [M * R**2 / 4] * 2 + [M * R**2 / 2],
+        "symmetric top",
+    ),
+    "thin_ring": (
+        lambda: ps.RigidBody.thin_ring(M, R),
+        [M * R**2 / 2] * 2 + [M * R**2],
+        "symmetric top",
+    ),
 }
 
 
@@ -161,7 +180,9 @@ def test_kind_unit_examples() -> None:
     assert co.kind == "rotor"
     assert co.principal_moments[0] == pytest.approx(0.0, abs=1e-12 * co.principal_moments[2])
     # A cube (three equal moments) is a spherical top, also seen from any tilted frame.
-    cube = ps.RigidBody.cuboid(1.0, (1.0, 1.0, 1.0)).rotated(Rotation.from_euler("zxz", [0.3, 0.9, -0.4]))
+    cube = ps.RigidBody.cuboid(1.0, (1.0, 1.0, 1.0)).rotated(
+        Rotation.from_euler("zxz", [0.3, 0.9, -0.4])
+    )
     assert cube.kind == "spherical top"
     # The unit's dumbbell (2.58) is a rotor; a 1×1×2 box a symmetric top; a brick asymmetric.
     assert ps.RigidBody.from_point_masses([1.0, 1.0], [[1, 0, 1], [-1, 0, -1]]).kind == "rotor"
@@ -192,7 +213,9 @@ def test_kind_tolerance_is_relative() -> None:
 def test_three_stacked_unit_cubes_equal_one_cuboid() -> None:
     """Compound = monolith (parry's parallel-axis sign bug failed this for a 1×3×1 box)."""
     for axis in range(3):
-        cubes = [ps.RigidBody.cuboid(1.0, (1, 1, 1)).translated(np.eye(3)[axis] * k) for k in range(3)]
+        cubes = [
+            ps.RigidBody.cuboid(1.0, (1, 1, 1)).translated(np.eye(3)[axis] * k) for k in range(3)
+        ]
         sides = np.ones(3)
         sides[axis] = 3.0
         monolith = ps.RigidBody.cuboid(3.0, sides).translated(np.eye(3)[axis])
@@ -216,7 +239,9 @@ def test_composition_equals_particles() -> None:
     np.testing.assert_allclose(parts.inertia, whole.inertia, rtol=1e-12, atol=1e-12)
     com = masses @ positions / masses.sum()
     np.testing.assert_allclose(whole.center_of_mass, com, rtol=1e-13)
-    np.testing.assert_allclose(whole.inertia, direct_inertia(masses, positions, com), rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(
+        whole.inertia, direct_inertia(masses, positions, com), rtol=1e-12, atol=1e-12
+    )
 
 
 def test_inertia_about_points_is_the_parallel_axis_theorem() -> None:
@@ -255,7 +280,9 @@ def test_from_inertia_about_a_point_shifts_back_to_the_centre_of_mass() -> None:
 
 @settings(max_examples=60, deadline=None, derandomize=True)
 @given(
-    quat=st.lists(st.floats(-1, 1), min_size=4, max_size=4).filter(lambda q: np.linalg.norm(q) > 0.1),
+    quat=st.lists(st.floats(-1, 1), min_size=4, max_size=4).filter(
+        lambda q: np.linalg.norm(q) > 0.1
+    ),
     seed=st.integers(0, 2**31),
 )
 def test_rotated_body_has_the_same_principal_moments(quat: list[float], seed: int) -> None:
@@ -263,7 +290,9 @@ def test_rotated_body_has_the_same_principal_moments(quat: list[float], seed: in
     body = ps.RigidBody.from_point_masses(*random_particles(rng))
     rot = Rotation.from_quat(quat)  # scipy: scalar-last; any unit quaternion will do
     turned = body.rotated(rot)
-    np.testing.assert_allclose(turned.principal_moments, body.principal_moments, rtol=1e-11, atol=1e-12)
+    np.testing.assert_allclose(
+        turned.principal_moments, body.principal_moments, rtol=1e-11, atol=1e-12
+    )
     # rotated about the origin: com ↦ R com, I ↦ R I Rᵀ
     R = rot.as_matrix()
     np.testing.assert_allclose(turned.center_of_mass, R @ body.center_of_mass, atol=1e-12)
@@ -293,14 +322,18 @@ def test_l_and_t_about_com_and_about_a_point_equal_direct_sums() -> None:
     for about in (None, np.array([0.3, -1.0, 2.0])):
         origin = body.center_of_mass if about is None else about
         r = positions - origin
-        L = np.array([sum(m * np.cross(ri, np.cross(w, ri)) for m, ri in zip(masses, r)) for w in omegas])
+        L = np.array(
+            [sum(m * np.cross(ri, np.cross(w, ri)) for m, ri in zip(masses, r)) for w in omegas]
+        )
         T = np.array(
             [
                 sum(0.5 * m * np.dot(np.cross(w, ri), np.cross(w, ri)) for m, ri in zip(masses, r))
                 for w in omegas
             ]
         )
-        np.testing.assert_allclose(body.angular_momentum(omegas, about=about), L, rtol=1e-12, atol=1e-12)
+        np.testing.assert_allclose(
+            body.angular_momentum(omegas, about=about), L, rtol=1e-12, atol=1e-12
+        )
         np.testing.assert_allclose(body.kinetic_energy(omegas, about=about), T, rtol=1e-12)
         np.testing.assert_allclose(T, 0.5 * np.einsum("ij,ij->i", omegas, L), rtol=1e-12)
     # Broadcasting over leading dimensions, and a float for one ω.
@@ -394,24 +427,48 @@ BAD = [
     (lambda: ps.RigidBody.thin_rod(1.0, -1.0), ps.PoinsotError, "length"),
     (lambda: ps.RigidBody.thin_disk(-1.0, 1.0), ps.PoinsotError, "mass"),
     (lambda: ps.RigidBody.thin_ring(1.0, float("nan")), ps.PoinsotError, "radius"),
-    (lambda: ps.RigidBody.from_inertia(1.0, np.diag([1.0, 1.0, 3.0])), ps.InvalidInertiaError, "inertia"),
-    (lambda: ps.RigidBody.from_inertia(1.0, np.diag([-1.0, 1.0, 1.0])), ps.InvalidInertiaError, "inertia"),
+    (
+        lambda: ps.RigidBody.from_inertia(1.0, np.diag([1.0, 1.0, 3.0])),
+        ps.InvalidInertiaError,
+        "inertia",
+    ),
+    (
+        lambda: ps.RigidBody.from_inertia(1.0, np.diag([-1.0, 1.0, 1.0])),
+        ps.InvalidInertiaError,
+        "inertia",
+    ),
     (
         lambda: ps.RigidBody.from_inertia(1.0, [[1, 0.5, 0], [0, 1, 0], [0, 0, 1]]),
         ps.InvalidInertiaError,
         "inertia",
     ),
-    (lambda: ps.RigidBody.from_inertia(1.0, np.diag([1.0, np.nan, 1.0])), ps.InvalidInertiaError, "inertia"),
+    (
+        lambda: ps.RigidBody.from_inertia(1.0, np.diag([1.0, np.nan, 1.0])),
+        ps.InvalidInertiaError,
+        "inertia",
+    ),
     (lambda: ps.RigidBody.from_inertia(1.0, np.eye(2)), ps.PoinsotError, "inertia"),
     (lambda: ps.RigidBody.from_inertia(0.0, np.eye(3)), ps.PoinsotError, "mass"),
     (lambda: ps.RigidBody.from_inertia(1.0, np.eye(3), (0, 0)), ps.PoinsotError, "center_of_mass"),
-    (lambda: ps.RigidBody.from_inertia(1.0, np.eye(3), (0, 0, np.inf)), ps.PoinsotError, "center_of_mass"),
-    (lambda: ps.RigidBody.from_point_masses([1.0, -1.0], [[0, 0, 0], [1, 0, 0]]), ps.PoinsotError, "masses"),
+    (
+        lambda: ps.RigidBody.from_inertia(1.0, np.eye(3), (0, 0, np.inf)),
+        ps.PoinsotError,
+        "center_of_mass",
+    ),
+    (
+        lambda: ps.RigidBody.from_point_masses([1.0, -1.0], [[0, 0, 0], [1, 0, 0]]),
+        ps.PoinsotError,
+        "masses",
+    ),
     (lambda: ps.RigidBody.from_point_masses([], np.zeros((0, 3))), ps.PoinsotError, "masses"),
     (lambda: ps.RigidBody.from_point_masses([1.0, 1.0], [[0, 0, 0]]), ps.PoinsotError, "positions"),
     (lambda: ps.RigidBody.from_point_masses([1.0], [[0, 0]]), ps.PoinsotError, "positions"),
     (lambda: ps.RigidBody.from_point_masses([1.0], [[0, np.nan, 0]]), ps.PoinsotError, "positions"),
-    (lambda: ps.RigidBody.cuboid(1.0, (1, 1, 1)).angular_momentum([1.0, 2.0]), ps.PoinsotError, "omega"),
+    (
+        lambda: ps.RigidBody.cuboid(1.0, (1, 1, 1)).angular_momentum([1.0, 2.0]),
+        ps.PoinsotError,
+        "omega",
+    ),
     (
         lambda: ps.RigidBody.cuboid(1.0, (1, 1, 1)).kinetic_energy([1.0, np.nan, 2.0]),
         ps.PoinsotError,
@@ -422,14 +479,22 @@ BAD = [
         ps.PoinsotError,
         "about",
     ),
-    (lambda: ps.RigidBody.cuboid(1.0, (1, 1, 1)).inertia_about([1.0, np.inf, 0.0]), ps.PoinsotError, "point"),
+    (
+        lambda: ps.RigidBody.cuboid(1.0, (1, 1, 1)).inertia_about([1.0, np.inf, 0.0]),
+        ps.PoinsotError,
+        "point",
+    ),
     (lambda: ps.RigidBody.cuboid(1.0, (1, 1, 1)).translated([1.0, 2.0]), ps.PoinsotError, "offset"),
     (
         lambda: ps.RigidBody.cuboid(1.0, (1, 1, 1)).rotated(np.diag([1.0, 1.0, -1.0])),
         ps.InvalidRotationError,
         "rotation",
     ),
-    (lambda: ps.RigidBody.cuboid(1.0, (1, 1, 1)).rotated(2 * np.eye(3)), ps.InvalidRotationError, "rotation"),
+    (
+        lambda: ps.RigidBody.cuboid(1.0, (1, 1, 1)).rotated(2 * np.eye(3)),
+        ps.InvalidRotationError,
+        "rotation",
+    ),
     (lambda: ps.RigidBody.combine([]), ps.PoinsotError, "bodies"),
     (lambda: ps.RigidBody.combine([ps.RigidBody.thin_rod(1, 1), 3]), ps.PoinsotError, "bodies"),
     (lambda: ps.classify([1.0, 1.0, 3.0]), ps.InvalidInertiaError, "moments"),

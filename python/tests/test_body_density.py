@@ -9,9 +9,8 @@ import json
 import warnings
 
 import numpy as np
-import pytest
-
 import poinsot as ps
+import pytest
 
 #: Relative tolerance asked of the cubature for indicator densities (they converge like the
 #: region size near the boundary, so tight tolerances cost many evaluations).
@@ -65,14 +64,17 @@ def test_indicator_density_matches_the_solid_within_its_error_estimate(name: str
     assert np.abs(body.center_of_mass - exact.center_of_mass).max() <= err.center_of_mass
     assert np.abs(body.inertia - exact.inertia).max() <= err.inertia
     assert (
-        body.kind == exact.kind or ps.classify(body.principal_moments, rtol=3 * INDICATOR_RTOL) == exact.kind
+        body.kind == exact.kind
+        or ps.classify(body.principal_moments, rtol=3 * INDICATOR_RTOL) == exact.kind
     )
 
 
 def test_cuboid_and_thick_shell_densities() -> None:
     # Uniform density filling the box: the rule is exact (polynomial integrand).
     sides = np.array([0.4, 1.0, 2.2])
-    box = ps.RigidBody.from_density(lambda p: np.full(len(p), 7.0), [(-0.2, 0.2), (-0.5, 0.5), (-1.1, 1.1)])
+    box = ps.RigidBody.from_density(
+        lambda p: np.full(len(p), 7.0), [(-0.2, 0.2), (-0.5, 0.5), (-1.1, 1.1)]
+    )
     ref = ps.RigidBody.cuboid(7.0 * sides.prod(), sides)
     assert box.mass == pytest.approx(ref.mass, rel=1e-13)
     np.testing.assert_allclose(box.inertia, ref.inertia, rtol=1e-12, atol=1e-14)
@@ -86,7 +88,9 @@ def test_cuboid_and_thick_shell_densities() -> None:
     # Thick spherical shell b ≤ r ≤ a: I = 2/5 m (a⁵ − b⁵)/(a³ − b³) (→ 2/3 m a² as b → a).
     a, b = 1.0, 0.7
     shell = ps.RigidBody.from_density(
-        indicator(lambda x, y, z: (x * x + y * y + z * z <= a * a) & (x * x + y * y + z * z >= b * b)),
+        indicator(
+            lambda x, y, z: (x * x + y * y + z * z <= a * a) & (x * x + y * y + z * z >= b * b)
+        ),
         [(-a, a)] * 3,
         rtol=INDICATOR_RTOL,
     )
@@ -150,20 +154,56 @@ def test_density_exceptions_propagate() -> None:
 
 
 BAD = [
-    (lambda: ps.RigidBody.from_density(lambda p: -np.ones(len(p)), [(0, 1)] * 3), "density", ">= 0"),
-    (lambda: ps.RigidBody.from_density(lambda p: np.full(len(p), np.nan), [(0, 1)] * 3), "density", "finite"),
-    (lambda: ps.RigidBody.from_density(lambda p: np.zeros(len(p)), [(0, 1)] * 3), "density", "zero mass"),
-    (lambda: ps.RigidBody.from_density(lambda p: np.ones((len(p), 2)), [(0, 1)] * 3), "density", "shape"),
+    (
+        lambda: ps.RigidBody.from_density(lambda p: -np.ones(len(p)), [(0, 1)] * 3),
+        "density",
+        ">= 0",
+    ),
+    (
+        lambda: ps.RigidBody.from_density(lambda p: np.full(len(p), np.nan), [(0, 1)] * 3),
+        "density",
+        "finite",
+    ),
+    (
+        lambda: ps.RigidBody.from_density(lambda p: np.zeros(len(p)), [(0, 1)] * 3),
+        "density",
+        "zero mass",
+    ),
+    (
+        lambda: ps.RigidBody.from_density(lambda p: np.ones((len(p), 2)), [(0, 1)] * 3),
+        "density",
+        "shape",
+    ),
     (lambda: ps.RigidBody.from_density(lambda p: np.ones(3), [(0, 1)] * 3), "density", "shape"),
     (lambda: ps.RigidBody.from_density(3.0, [(0, 1)] * 3), "density", "callable"),
-    (lambda: ps.RigidBody.from_density(lambda p: 1.0, [(0, 1), (1, 1), (0, 1)]), "bounds", "min < max"),
-    (lambda: ps.RigidBody.from_density(lambda p: 1.0, [(0, 1), (2, 1), (0, 1)]), "bounds", "min < max"),
+    (
+        lambda: ps.RigidBody.from_density(lambda p: 1.0, [(0, 1), (1, 1), (0, 1)]),
+        "bounds",
+        "min < max",
+    ),
+    (
+        lambda: ps.RigidBody.from_density(lambda p: 1.0, [(0, 1), (2, 1), (0, 1)]),
+        "bounds",
+        "min < max",
+    ),
     (lambda: ps.RigidBody.from_density(lambda p: 1.0, [(0, 1), (0, 1)]), "bounds", "shape"),
-    (lambda: ps.RigidBody.from_density(lambda p: 1.0, [(0, 1), (0, np.inf), (0, 1)]), "bounds", "finite"),
+    (
+        lambda: ps.RigidBody.from_density(lambda p: 1.0, [(0, 1), (0, np.inf), (0, 1)]),
+        "bounds",
+        "finite",
+    ),
     (lambda: ps.RigidBody.from_density(lambda p: 1.0, [(0, 1)] * 3, rtol=0.0), "rtol", "> 0"),
     (lambda: ps.RigidBody.from_density(lambda p: 1.0, [(0, 1)] * 3, atol=-1.0), "atol", ">= 0"),
-    (lambda: ps.RigidBody.from_density(lambda p: 1.0, [(0, 1)] * 3, max_evals=10), "max_evals", "at least"),
-    (lambda: ps.RigidBody.from_density(lambda p: 1.0, [(0, 1)] * 3, max_evals=-5), "max_evals", "positive"),
+    (
+        lambda: ps.RigidBody.from_density(lambda p: 1.0, [(0, 1)] * 3, max_evals=10),
+        "max_evals",
+        "at least",
+    ),
+    (
+        lambda: ps.RigidBody.from_density(lambda p: 1.0, [(0, 1)] * 3, max_evals=-5),
+        "max_evals",
+        "positive",
+    ),
 ]
 
 

@@ -9,10 +9,9 @@ from __future__ import annotations
 import sys
 
 import numpy as np
+import poinsot as ps
 import pytest
 from scipy.spatial.transform import Rotation
-
-import poinsot as ps
 
 trimesh = pytest.importorskip("trimesh")
 
@@ -49,11 +48,15 @@ def apex_down_cone(r: float, h: float, sections: int) -> trimesh.Trimesh:
 def test_prism_and_pyramid_meshes_are_exact(n: int) -> None:
     r, h, rho = 0.5, 1.5, 3.0
     area, J = ngon(n, r)
-    cyl = ps.RigidBody.from_trimesh(trimesh.creation.cylinder(radius=r, height=h, sections=n), density=rho)
+    cyl = ps.RigidBody.from_trimesh(
+        trimesh.creation.cylinder(radius=r, height=h, sections=n), density=rho
+    )
     m = rho * area * h
     ixx = rho * h * J / 2 + m * h * h / 12
     assert cyl.mass == pytest.approx(m, rel=EXACT)
-    np.testing.assert_allclose(cyl.inertia, np.diag([ixx, ixx, rho * h * J]), rtol=EXACT, atol=EXACT * ixx)
+    np.testing.assert_allclose(
+        cyl.inertia, np.diag([ixx, ixx, rho * h * J]), rtol=EXACT, atol=EXACT * ixx
+    )
     cone = ps.RigidBody.from_trimesh(apex_down_cone(r, h, n), density=rho)
     m = rho * area * h / 3
     ixx_apex = rho * (J * h / 10 + area * h**3 / 5)
@@ -71,7 +74,9 @@ def test_box_mesh_equals_cuboid_exactly() -> None:
     body = ps.RigidBody.from_mesh(box.vertices, box.faces, density=rho)
     ref = ps.RigidBody.cuboid(rho * sides.prod(), sides)
     assert body.mass == pytest.approx(ref.mass, rel=EXACT)
-    np.testing.assert_allclose(body.inertia, ref.inertia, rtol=EXACT, atol=EXACT * ref.inertia.max())
+    np.testing.assert_allclose(
+        body.inertia, ref.inertia, rtol=EXACT, atol=EXACT * ref.inertia.max()
+    )
     np.testing.assert_allclose(body.center_of_mass, 0.0, atol=EXACT)
 
 
@@ -92,7 +97,9 @@ def test_sphere_ellipsoid_and_shell_meshes_within_resolution() -> None:
     assert 0 < eps < 1e-3
     body = ps.RigidBody.from_trimesh(sphere, density=1000.0)
     ref = ps.RigidBody.solid_sphere(body.mass, r)
-    np.testing.assert_allclose(body.inertia, ref.inertia, rtol=2 * eps, atol=2 * eps * ref.inertia.max())
+    np.testing.assert_allclose(
+        body.inertia, ref.inertia, rtol=2 * eps, atol=2 * eps * ref.inertia.max()
+    )
     assert ps.classify(body.principal_moments, rtol=2 * eps) == "spherical top"
     # Ellipsoid: the same sphere scaled (a positive scaling keeps faces outward).
     axes = np.array([0.5, 1.0, 2.0])
@@ -101,7 +108,9 @@ def test_sphere_ellipsoid_and_shell_meshes_within_resolution() -> None:
     ell.apply_transform(np.diag([*axes, 1.0]))
     body = ps.RigidBody.from_trimesh(ell)
     ref = ps.RigidBody.ellipsoid(body.mass, axes)
-    np.testing.assert_allclose(body.inertia, ref.inertia, rtol=2 * eps, atol=2 * eps * ref.inertia.max())
+    np.testing.assert_allclose(
+        body.inertia, ref.inertia, rtol=2 * eps, atol=2 * eps * ref.inertia.max()
+    )
     # Thick spherical shell: outer sphere outward plus inner sphere inward (two components).
     outer = trimesh.creation.icosphere(subdivisions=5, radius=1.0)
     inner = trimesh.creation.icosphere(subdivisions=5, radius=0.95)
@@ -111,7 +120,9 @@ def test_sphere_ellipsoid_and_shell_meshes_within_resolution() -> None:
     a, b = 1.0, 0.95
     exact_mass = 4 / 3 * np.pi * (a**3 - b**3)
     eps = volume_deficit(outer, 4 / 3 * np.pi)
-    assert shell.mass == pytest.approx(exact_mass, rel=20 * eps)  # thin shell: ε relative to volume grows
+    assert shell.mass == pytest.approx(
+        exact_mass, rel=20 * eps
+    )  # thin shell: ε relative to volume grows
     thick = 0.4 * shell.mass * (a**5 - b**5) / (a**3 - b**3)  # 2/5 m (a⁵ − b⁵)/(a³ − b³)
     np.testing.assert_allclose(np.diag(shell.inertia), [thick] * 3, rtol=5 * eps)
     # ... which tends to the thin shell's 2/3 m r² as the thickness vanishes (here within 5 %).
@@ -149,7 +160,9 @@ def test_thin_shapes_as_limits_of_meshes_and_particles() -> None:
     np.testing.assert_allclose(disk.inertia, ref.inertia, rtol=tol, atol=EXACT * ref.inertia.max())
     # Ring: a torus of minor radius a has I_zz = m (R² + 3/4 a²), I_xx = m (R²/2 + 5/8 a²).
     a = 0.01
-    torus = trimesh.creation.torus(major_radius=r, minor_radius=a, major_sections=256, minor_sections=64)
+    torus = trimesh.creation.torus(
+        major_radius=r, minor_radius=a, major_sections=256, minor_sections=64
+    )
     ring_mesh = ps.RigidBody.from_trimesh(torus)
     eps = volume_deficit(torus, 2 * np.pi**2 * r * a * a)
     mt = ring_mesh.mass
@@ -158,19 +171,25 @@ def test_thin_shapes_as_limits_of_meshes_and_particles() -> None:
     scale = EXACT * torus_formula.max()
     np.testing.assert_allclose(ring_mesh.inertia, torus_formula, rtol=tol, atol=scale)
     ring = ps.RigidBody.thin_ring(mt, r)
-    np.testing.assert_allclose(ring_mesh.inertia, ring.inertia, rtol=tol + 2 * (a / r) ** 2, atol=scale)
+    np.testing.assert_allclose(
+        ring_mesh.inertia, ring.inertia, rtol=tol + 2 * (a / r) ** 2, atol=scale
+    )
     # ... and particles: N ≥ 3 equal masses on a circle have exactly the ring's inertia.
     phi = 2 * np.pi * np.arange(7) / 7
     pts = ps.RigidBody.from_point_masses(
         np.full(7, m / 7), np.c_[r * np.cos(phi), r * np.sin(phi), np.zeros(7)]
     )
-    np.testing.assert_allclose(pts.inertia, ps.RigidBody.thin_ring(m, r).inertia, rtol=1e-14, atol=1e-15)
+    np.testing.assert_allclose(
+        pts.inertia, ps.RigidBody.thin_ring(m, r).inertia, rtol=1e-14, atol=1e-15
+    )
     # Rod: N particles at the midpoints of N equal segments give m L²/12 (1 − 1/N²) exactly.
     N = 50
     z = (np.arange(N) + 0.5) / N * L - L / 2
     rod_pts = ps.RigidBody.from_point_masses(np.full(N, m / N), np.c_[np.zeros(N), np.zeros(N), z])
     rod = ps.RigidBody.thin_rod(m, L)
-    np.testing.assert_allclose(rod_pts.inertia, rod.inertia * (1 - 1 / N**2), rtol=1e-13, atol=1e-15)
+    np.testing.assert_allclose(
+        rod_pts.inertia, rod.inertia * (1 - 1 / N**2), rtol=1e-13, atol=1e-15
+    )
     assert rod_pts.kind == rod.kind == "rotor"
     # ... and a long thin prism (n-gon radius ρ_r): I_xx = m (J/(2A) + L²/12) → m L²/12.
     rr = 1e-3
@@ -207,7 +226,10 @@ def _watertight_meshes() -> list[trimesh.Trimesh]:
     )
     hull = trimesh.convex.convex_hull(rng.normal(size=(200, 3)) * [1.0, 2.0, 0.5] + [1, 2, 3])
     two = trimesh.util.concatenate(
-        [trimesh.creation.icosphere(3), trimesh.creation.box(extents=(1, 1, 1)).apply_translation([3, 0, 0])]
+        [
+            trimesh.creation.icosphere(3),
+            trimesh.creation.box(extents=(1, 1, 1)).apply_translation([3, 0, 0]),
+        ]
     )
     return [
         trimesh.creation.icosphere(subdivisions=4, radius=2.0),
@@ -264,7 +286,9 @@ def test_non_manifold_mesh_is_refused() -> None:
     with pytest.raises(ps.InvalidMeshError, match="non-manifold.*used by 4 faces"):
         ps.RigidBody.from_mesh(v2, fin)
     # Negative control: without the fin (the extra vertex unused) the mesh passes.
-    assert ps.RigidBody.from_mesh(v2, fin[:-2]).mass == pytest.approx(ps.RigidBody.from_mesh(v, f).mass)
+    assert ps.RigidBody.from_mesh(v2, fin[:-2]).mass == pytest.approx(
+        ps.RigidBody.from_mesh(v, f).mass
+    )
 
 
 def test_inside_out_mesh_is_refused_and_reversed_passes() -> None:
@@ -351,7 +375,9 @@ def test_large_mesh_runs_and_agrees() -> None:
     """~1.3·10⁵ triangles (timing lives in bench/mesh_vs_trimesh.py, not here)."""
     mesh = trimesh.creation.icosphere(subdivisions=6)
     ours = ps.RigidBody.from_trimesh(mesh)
-    np.testing.assert_allclose(ours.inertia, mesh.mass_properties["inertia"], rtol=1e-10, atol=1e-13)
+    np.testing.assert_allclose(
+        ours.inertia, mesh.mass_properties["inertia"], rtol=1e-10, atol=1e-13
+    )
     rot = Rotation.from_euler("xyz", [0.1, 0.2, 0.3])
     turned = ps.RigidBody.from_mesh(rot.apply(mesh.vertices), mesh.faces)
     np.testing.assert_allclose(turned.principal_moments, ours.principal_moments, rtol=1e-11)
@@ -369,7 +395,9 @@ def test_self_intersecting_meshes_are_refused_naming_two_faces() -> None:
     b = trimesh.creation.box()
     b.apply_translation([0.5, 0.0, 0.0])
     v, f = _two(a, b)
-    with pytest.raises(ps.InvalidMeshError, match=r"faces: the mesh intersects itself: faces \d+ and \d+"):
+    with pytest.raises(
+        ps.InvalidMeshError, match=r"faces: the mesh intersects itself: faces \d+ and \d+"
+    ):
         ps.RigidBody.from_mesh(v, f)
     # Negative control: apart, they are a composite body of mass 2.
     b.apply_translation([0.5 + 1e-9, 0.0, 0.0])
@@ -390,7 +418,9 @@ def test_nested_shells_must_alternate_winding() -> None:
     v, f = _two(outer, inner)
     with pytest.raises(ps.InvalidMeshError, match="counted twice"):
         ps.RigidBody.from_mesh(v, f)
-    hollow = ps.RigidBody.from_mesh(v, np.vstack([outer.faces, inner.faces[:, ::-1] + len(outer.vertices)]))
+    hollow = ps.RigidBody.from_mesh(
+        v, np.vstack([outer.faces, inner.faces[:, ::-1] + len(outer.vertices)])
+    )
     assert hollow.mass == pytest.approx(26.0, abs=EXACT)
 
 

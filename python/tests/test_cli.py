@@ -8,10 +8,9 @@ import sys
 from pathlib import Path
 
 import numpy as np
+import poinsot as ps
 import pytest
 from click.testing import CliRunner
-
-import poinsot as ps
 from poinsot.cli import main
 
 
@@ -28,8 +27,23 @@ def test_tour_runs_and_covers_the_topics() -> None:
 
 
 def test_python_dash_m_is_the_same_command() -> None:
-    proc = subprocess.run([sys.executable, "-m", "poinsot", "inertia", "sphere", "--mass", "2",
-                           "--radius", "0.5", "--json"], capture_output=True, text=True, check=True)
+    proc = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "poinsot",
+            "inertia",
+            "sphere",
+            "--mass",
+            "2",
+            "--radius",
+            "0.5",
+            "--json",
+        ],
+        capture_output=True,
+        text=True,
+        check=True,
+    )
     data = json.loads(proc.stdout)
     assert data["kind"] == "spherical top"
 
@@ -42,8 +56,9 @@ def test_inertia_json_matches_the_api() -> None:
     np.testing.assert_allclose(data["inertia"], body.inertia, rtol=0, atol=0)
     np.testing.assert_allclose(data["principal_moments"], body.principal_moments, rtol=0, atol=0)
     # and against the textbook formula m (b² + c²) / 12, independently
-    np.testing.assert_allclose(data["principal_moments"],
-                               sorted([2 * (4 + 9) / 12, 2 * (1 + 9) / 12, 2 * (1 + 4) / 12]))
+    np.testing.assert_allclose(
+        data["principal_moments"], sorted([2 * (4 + 9) / 12, 2 * (1 + 9) / 12, 2 * (1 + 4) / 12])
+    )
     assert data["kind"] == "asymmetric top"
 
 
@@ -61,9 +76,11 @@ def test_inertia_of_a_mesh_file(tmp_path: Path) -> None:
     assert code == 0, out
     data = json.loads(out)
     assert data["mass"] == pytest.approx(60.0, rel=1e-12)
-    np.testing.assert_allclose(data["principal_moments"],
-                               sorted([60 * (4 + 9) / 12, 60 * (1 + 9) / 12, 60 * (1 + 4) / 12]),
-                               rtol=1e-12)
+    np.testing.assert_allclose(
+        data["principal_moments"],
+        sorted([60 * (4 + 9) / 12, 60 * (1 + 9) / 12, 60 * (1 + 4) / 12]),
+        rtol=1e-12,
+    )
 
 
 def test_open_mesh_file_is_refused(tmp_path: Path) -> None:

@@ -24,18 +24,28 @@ from typing import Any
 
 import pytest
 from click.testing import CliRunner
-
 from poinsot import cli
 from poinsot.cli import EXIT_INTERRUPTED, EXIT_REFUSED, EXIT_USAGE, MAY_BE_INFINITE, main
 
 ROOT = Path(__file__).resolve().parents[2]
-PYTHON_PATH = os.environ.get("POINSOT_TEST_PYTHONPATH", str(ROOT / "python"))  # the package the subprocesses run
+PYTHON_PATH = os.environ.get(
+    "POINSOT_TEST_PYTHONPATH", str(ROOT / "python")
+)  # the package the subprocesses run
 
 #: A valid command line for each computing command; each option below is replaced in turn.
 BASE = {
     "inertia": ["inertia", "cuboid", "--mass", "2", "--sides", "1", "2", "3"],
     "fall": ["fall", "--height", "100", "--latitude", "45", "--degrees"],
-    "projectile": ["projectile", "--speed", "800", "--elevation", "45", "--latitude", "50", "--degrees"],
+    "projectile": [
+        "projectile",
+        "--speed",
+        "800",
+        "--elevation",
+        "45",
+        "--latitude",
+        "50",
+        "--degrees",
+    ],
     "foucault": ["foucault", "--latitude", "45", "--degrees", "--duration", "100"],
     "free": ["free", "--moments", "1", "2", "3", "--omega", "1", "0.1", "1"],
     "top": ["top", "--I1", "1", "--I3", "0.5", "--mgl", "1", "--theta", "0.8", "--psi-dot", "6"],
@@ -48,7 +58,15 @@ REAL_OPTIONS = {
     "projectile": {"--speed": 1, "--elevation": 1, "--azimuth": 1, "--latitude": 1, "--height": 1},
     "foucault": {"--latitude": 1, "--length": 1, "--amplitude": 1, "--duration": 1},
     "free": {"--moments": 3, "--omega": 3, "--duration": 1, "--dt": 1},
-    "top": {"--I1": 1, "--I3": 1, "--mgl": 1, "--theta": 1, "--phi-dot": 1, "--psi-dot": 1, "--theta-dot": 1},
+    "top": {
+        "--I1": 1,
+        "--I3": 1,
+        "--mgl": 1,
+        "--theta": 1,
+        "--phi-dot": 1,
+        "--psi-dot": 1,
+        "--theta-dot": 1,
+    },
 }
 
 #: Values that are not a finite number: a usage error.
@@ -65,7 +83,7 @@ def with_value(args: list[str], option: str, n: int, value: str) -> list[str]:
     out = list(args)
     if option in out:
         i = out.index(option)
-        out[i + 1:i + 1 + n] = [value] * n
+        out[i + 1 : i + 1 + n] = [value] * n
     else:
         out += [option] + [value] * n
     return out
@@ -75,7 +93,9 @@ def invoke(args: list[str]) -> tuple[int, str, str]:
     result = CliRunner().invoke(main, args, catch_exceptions=True)
     # Anything but SystemExit escaping the command is a crash (a traceback for a user).
     assert result.exception is None or isinstance(result.exception, SystemExit), (
-        args, repr(result.exception))
+        args,
+        repr(result.exception),
+    )
     return result.exit_code, result.stdout, result.stderr
 
 
@@ -98,9 +118,9 @@ def finite_numbers(data: Any, field: str = "") -> list[tuple[str, Any]]:
     elif isinstance(data, list):
         for v in data:
             found += finite_numbers(v, field)
-    elif isinstance(data, (int, float)) and not isinstance(data, bool):
-        found.append((field, data))
-    elif isinstance(data, str) and data.lower() in ("inf", "-inf", "nan"):
+    elif (isinstance(data, (int, float)) and not isinstance(data, bool)) or (
+        isinstance(data, str) and data.lower() in ("inf", "-inf", "nan")
+    ):
         found.append((field, data))
     return found
 
@@ -117,7 +137,9 @@ def assert_finite_answer(args: list[str], out: str) -> None:
 
 
 BAD_REAL = [
-    pytest.param(cmd, opt, n, value, as_json, id=f"{cmd}{opt}={value or 'empty'}{'-json' if as_json else ''}")
+    pytest.param(
+        cmd, opt, n, value, as_json, id=f"{cmd}{opt}={value or 'empty'}{'-json' if as_json else ''}"
+    )
     for cmd, opts in REAL_OPTIONS.items()
     for opt, n in opts.items()
     for value in NOT_FINITE + EXTREME
@@ -147,11 +169,16 @@ def test_every_real_option_with_bad_values_ends_in_one_line(
         assert option in err or blamed in REAL_OPTIONS[command], (args, err)
 
 
-@pytest.mark.parametrize("value", ["abc", "2.5", "nan", "1e3", "", "-1", "0", "1", "99999999999999999999999"])
+@pytest.mark.parametrize(
+    "value", ["abc", "2.5", "nan", "1e3", "", "-1", "0", "1", "99999999999999999999999"]
+)
 def test_samples_with_bad_values_ends_in_one_line(value: str) -> None:
     args = with_value(BASE["free"], "--samples", 1, value) + ["--json"]
     code, out, err = invoke(args)
-    assert code == (EXIT_USAGE if value in ("abc", "2.5", "nan", "1e3", "") else EXIT_REFUSED), (code, err)
+    assert code == (EXIT_USAGE if value in ("abc", "2.5", "nan", "1e3", "") else EXIT_REFUSED), (
+        code,
+        err,
+    )
     assert_one_line_error(args, code, out, err, "--samples")
 
 
@@ -164,8 +191,16 @@ def test_samples_with_bad_values_ends_in_one_line(value: str) -> None:
         (["inertia", "sphere", "--radius"], EXIT_USAGE, "--radius"),
         (["inertia", "cuboid", "--sides", "1", "2"], EXIT_USAGE, "--sides"),
         (["fall", "--latitude", "45"], EXIT_USAGE, "--height"),
-        (["free", "--moments", "1", "2", "3", "--omega", "1", "0", "0", "--method", "euler"], EXIT_USAGE, "--method"),
-        (["fall", "--height", "1", "--latitude", "1", "--gravity", "none"], EXIT_USAGE, "--gravity"),
+        (
+            ["free", "--moments", "1", "2", "3", "--omega", "1", "0", "0", "--method", "euler"],
+            EXIT_USAGE,
+            "--method",
+        ),
+        (
+            ["fall", "--height", "1", "--latitude", "1", "--gravity", "none"],
+            EXIT_USAGE,
+            "--gravity",
+        ),
         (["lab", "--port", "99999"], EXIT_USAGE, "--port"),
         (["lab", "--port", "http"], EXIT_USAGE, "--port"),
         (["inertia", "sphere", "--radius", "1", "--density", "2"], EXIT_USAGE, "--density"),
@@ -181,8 +216,12 @@ def test_help_documents_the_exit_statuses() -> None:
     code, out, _ = invoke(["--help"])
     assert code == 0
     text = " ".join(out.split())
-    for needle in ("Exit status", f"{EXIT_USAGE} the command line is wrong", f"{EXIT_REFUSED} the input is refused",
-                   f"{EXIT_INTERRUPTED} interrupted"):
+    for needle in (
+        "Exit status",
+        f"{EXIT_USAGE} the command line is wrong",
+        f"{EXIT_REFUSED} the input is refused",
+        f"{EXIT_INTERRUPTED} interrupted",
+    ):
         assert needle in text
     assert invoke(["--version"])[0] == 0
 
@@ -215,7 +254,9 @@ def files(tmp_path: Path) -> Path:
         ("x" * 300 + ".stl", EXIT_USAGE, "missing"),
     ],
 )
-def test_files_that_are_not_meshes_end_in_one_line(files: Path, name: str, code: int, needle: str) -> None:
+def test_files_that_are_not_meshes_end_in_one_line(
+    files: Path, name: str, code: int, needle: str
+) -> None:
     if name.startswith("/") and not Path(name).exists():
         pytest.skip(f"{name} does not exist here")
     path = name if name.startswith("/") else str(files / name)
@@ -245,7 +286,9 @@ def test_a_symlink_loop_and_a_long_name_are_one_line(tmp_path: Path) -> None:
         assert_one_line_error([path], code, out, err, "SHAPE")
 
 
-def test_a_file_larger_than_the_limit_is_refused_before_reading(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+def test_a_file_larger_than_the_limit_is_refused_before_reading(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     trimesh = pytest.importorskip("trimesh")
     path = tmp_path / "box.stl"
     trimesh.creation.box(extents=(1.0, 2.0, 3.0)).export(path)
@@ -261,7 +304,9 @@ def test_a_file_larger_than_the_limit_is_refused_before_reading(tmp_path: Path, 
     assert_one_line_error([], code, out, err, "SHAPE", "bytes")
 
 
-def test_a_missing_text_decoder_is_one_line_naming_the_extra(files: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+def test_a_missing_text_decoder_is_one_line_naming_the_extra(
+    files: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     # trimesh imports charset_normalizer to guess the encoding of a text mesh that is not
     # UTF-8; without it the CLI printed ModuleNotFoundError's traceback.
     pytest.importorskip("trimesh")
@@ -273,9 +318,14 @@ def test_a_missing_text_decoder_is_one_line_naming_the_extra(files: Path, monkey
 
 def test_the_mesh_extras_bring_what_trimesh_needs_for_text_files() -> None:
     tomllib = pytest.importorskip("tomllib")
-    extras = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["optional-dependencies"]
+    extras = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"][
+        "optional-dependencies"
+    ]
     for extra in ("mesh", "all", "test"):
-        names = {d.split(">")[0].split("=")[0].split("[")[0].strip().lower().replace("_", "-") for d in extras[extra]}
+        names = {
+            d.split(">")[0].split("=")[0].split("[")[0].strip().lower().replace("_", "-")
+            for d in extras[extra]
+        }
         assert {"trimesh", "charset-normalizer"} <= names, (extra, names)
 
 
@@ -285,17 +335,70 @@ def test_the_mesh_extras_bring_what_trimesh_needs_for_text_files() -> None:
 @pytest.mark.parametrize(
     ("args", "code", "needle"),
     [
-        (["inertia", "cuboid", "--sides", "1", "2", "3", "--plot", "{tmp}/no/such/dir/x.png"], EXIT_USAGE, "--plot"),
+        (
+            ["inertia", "cuboid", "--sides", "1", "2", "3", "--plot", "{tmp}/no/such/dir/x.png"],
+            EXIT_USAGE,
+            "--plot",
+        ),
         (["inertia", "cuboid", "--sides", "1", "2", "3", "--plot", "{tmp}"], EXIT_USAGE, "--plot"),
-        (["inertia", "cuboid", "--sides", "1", "2", "3", "--plot", "{tmp}/x.nosuchformat"], EXIT_USAGE, "--plot"),
-        (["inertia", "cuboid", "--sides", "1", "2", "3", "--plot", "{tmp}/" + "z" * 300 + ".png"], EXIT_REFUSED, "--plot"),
-        (["top", "--I1", "1", "--I3", "0.5", "--mgl", "1", "--theta", "0.8", "--plot", "{tmp}/file.txt/sub"],
-         EXIT_REFUSED, "--plot"),
-        (["top", "--I1", "1", "--I3", "0.5", "--mgl", "1", "--theta", "0.8", "--plot", "{tmp}/file.txt"],
-         EXIT_USAGE, "--plot"),
+        (
+            ["inertia", "cuboid", "--sides", "1", "2", "3", "--plot", "{tmp}/x.nosuchformat"],
+            EXIT_USAGE,
+            "--plot",
+        ),
+        (
+            [
+                "inertia",
+                "cuboid",
+                "--sides",
+                "1",
+                "2",
+                "3",
+                "--plot",
+                "{tmp}/" + "z" * 300 + ".png",
+            ],
+            EXIT_REFUSED,
+            "--plot",
+        ),
+        (
+            [
+                "top",
+                "--I1",
+                "1",
+                "--I3",
+                "0.5",
+                "--mgl",
+                "1",
+                "--theta",
+                "0.8",
+                "--plot",
+                "{tmp}/file.txt/sub",
+            ],
+            EXIT_REFUSED,
+            "--plot",
+        ),
+        (
+            [
+                "top",
+                "--I1",
+                "1",
+                "--I3",
+                "0.5",
+                "--mgl",
+                "1",
+                "--theta",
+                "0.8",
+                "--plot",
+                "{tmp}/file.txt",
+            ],
+            EXIT_USAGE,
+            "--plot",
+        ),
     ],
 )
-def test_unwritable_pictures_end_in_one_line(tmp_path: Path, args: list[str], code: int, needle: str) -> None:
+def test_unwritable_pictures_end_in_one_line(
+    tmp_path: Path, args: list[str], code: int, needle: str
+) -> None:
     pytest.importorskip("matplotlib")
     (tmp_path / "file.txt").write_text("a file, not a directory")
     args = [a.replace("{tmp}", str(tmp_path)) for a in args]
@@ -318,7 +421,9 @@ def test_non_finite_results_are_refused_not_printed(monkeypatch: pytest.MonkeyPa
         cli.require_finite({"period": math.nan})
     with pytest.raises(cli.Refused, match=r"omega\[2\]"):
         cli.require_finite({"omega": [1.0, 2.0, math.nan]})
-    cli.require_finite({"period": math.inf, "flip_interval": math.inf, "omega": [1.0, 2.0]})  # documented
+    cli.require_finite(
+        {"period": math.inf, "flip_interval": math.inf, "omega": [1.0, 2.0]}
+    )  # documented
 
 
 def test_an_output_that_cannot_be_written_is_one_line() -> None:
@@ -326,17 +431,31 @@ def test_an_output_that_cannot_be_written_is_one_line() -> None:
         pytest.skip("no /dev/full")
     env = {**os.environ, "PYTHONPATH": PYTHON_PATH}
     with open("/dev/full", "w") as full:
-        proc = subprocess.run([sys.executable, "-m", "poinsot", "inertia", "sphere", "--radius", "1", "--json"],
-                              stdout=full, stderr=subprocess.PIPE, text=True, env=env, timeout=120)
+        proc = subprocess.run(
+            [sys.executable, "-m", "poinsot", "inertia", "sphere", "--radius", "1", "--json"],
+            stdout=full,
+            stderr=subprocess.PIPE,
+            text=True,
+            env=env,
+            timeout=120,
+        )
     assert proc.returncode == EXIT_REFUSED, proc.stderr
     lines = proc.stderr.splitlines()
-    assert len(lines) == 1 and lines[0].startswith("error: cannot write") and "Traceback" not in proc.stderr
+    assert (
+        len(lines) == 1
+        and lines[0].startswith("error: cannot write")
+        and "Traceback" not in proc.stderr
+    )
 
 
 def test_a_reader_that_goes_away_gets_no_traceback() -> None:
     env = {**os.environ, "PYTHONPATH": PYTHON_PATH}
-    proc = subprocess.Popen([sys.executable, "-m", "poinsot", "tour"], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, env=env)
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "poinsot", "tour"],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        env=env,
+    )
     assert proc.stdout is not None and proc.stderr is not None
     proc.stdout.close()  # like `poinsot tour | true`: the first write meets a closed pipe
     err = proc.stderr.read().decode()
@@ -391,8 +510,13 @@ def test_ctrl_c_in_a_long_run_prints_interrupted_and_exits_130(tmp_path: Path) -
     script = tmp_path / "slow.py"
     script.write_text(SLOW_TOUR)
     env = {**os.environ, "PYTHONPATH": PYTHON_PATH}
-    proc = subprocess.Popen([sys.executable, str(script), "tour"], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True, env=env)
+    proc = subprocess.Popen(
+        [sys.executable, str(script), "tour"],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env=env,
+    )
     assert proc.stdout is not None
     assert proc.stdout.readline().strip() == "ready"
     t0 = time.monotonic()

@@ -4,10 +4,8 @@ torques and the energy theorem (2.76), the negative control, batches and bad inp
 from __future__ import annotations
 
 import numpy as np
-import pytest
-from scipy.integrate import solve_ivp
-
 import poinsot
+import pytest
 from poinsot import (
     BodyTorque,
     FreeRigidBody,
@@ -18,6 +16,7 @@ from poinsot import (
     simulate,
     simulate_batch,
 )
+from scipy.integrate import solve_ivp
 
 I123 = np.array([1.0, 2.0, 3.0])
 W0 = np.array([1.0, 0.1, 1.0])
@@ -35,8 +34,15 @@ def final_error(tr):
 
 @pytest.mark.parametrize(
     ("method", "tol"),
-    [("exact", 1e-14), ("auto", 1e-14), ("dop853", 1e-8), ("rk4", 1e-9), ("splitting2", 2e-4),
-     ("splitting4", 1e-9), ("splitting6", 1e-11)],
+    [
+        ("exact", 1e-14),
+        ("auto", 1e-14),
+        ("dop853", 1e-8),
+        ("rk4", 1e-9),
+        ("splitting2", 2e-4),
+        ("splitting4", 1e-9),
+        ("splitting6", 1e-11),
+    ],
 )
 def test_every_method_agrees_with_the_exact_flow(method, tol):
     tr = simulate(I123, W0, 20.0, method=method, dt=1e-3, samples=11)
@@ -55,8 +61,10 @@ def test_step_is_independent_of_the_sampling():
     assert c.step == pytest.approx(0.025)
 
 
-@pytest.mark.parametrize(("method", "order", "dt"), [("rk4", 4, 0.02), ("splitting2", 2, 0.02),
-                                                     ("splitting4", 4, 0.02), ("splitting6", 6, 0.1)])
+@pytest.mark.parametrize(
+    ("method", "order", "dt"),
+    [("rk4", 4, 0.02), ("splitting2", 2, 0.02), ("splitting4", 4, 0.02), ("splitting6", 6, 0.1)],
+)
 def test_convergence_order_under_dt_halving(method, order, dt):
     e1 = final_error(simulate(I123, W0, 10.0, method=method, dt=dt, samples=2))
     e2 = final_error(simulate(I123, W0, 10.0, method=method, dt=dt / 2, samples=2))
@@ -68,8 +76,18 @@ def test_time_reversibility_of_the_splitting():
     # to round-off; RK4 (not symmetric) does not.
     def back_and_forth(method):
         fwd = simulate(I123, W0, 20.0, method=method, dt=0.05, samples=2)
-        back = simulate(I123, -fwd.omega[-1], 20.0, attitude0=fwd.attitude[-1], method=method, dt=0.05, samples=2)
-        return max(np.linalg.norm(back.omega[-1] + W0), qdist(back.attitude[-1], np.array([1.0, 0, 0, 0])))
+        back = simulate(
+            I123,
+            -fwd.omega[-1],
+            20.0,
+            attitude0=fwd.attitude[-1],
+            method=method,
+            dt=0.05,
+            samples=2,
+        )
+        return max(
+            np.linalg.norm(back.omega[-1] + W0), qdist(back.attitude[-1], np.array([1.0, 0, 0, 0]))
+        )
 
     for method in ("splitting2", "splitting4", "splitting6"):
         assert back_and_forth(method) < 1e-12, method
@@ -101,11 +119,15 @@ def test_symmetric_top_closed_forms_versus_integration():
             assert qdist(q, qe) < 1e-10
         # The body cone (2.90) and the space cone (2.97), measured on the integration.
         om = tr.omega
-        np.testing.assert_allclose(np.arctan2(np.hypot(om[:, 0], om[:, 1]), om[:, 2]), top.body_cone_angle, atol=1e-10)
+        np.testing.assert_allclose(
+            np.arctan2(np.hypot(om[:, 0], om[:, 1]), om[:, 2]), top.body_cone_angle, atol=1e-10
+        )
         rot = tr.rotation()
         ws = rot.apply(om)
         ll = tr.angular_momentum
-        cos_s = np.einsum("ij,ij->i", ws, ll) / (np.linalg.norm(ws, axis=1) * np.linalg.norm(ll, axis=1))
+        cos_s = np.einsum("ij,ij->i", ws, ll) / (
+            np.linalg.norm(ws, axis=1) * np.linalg.norm(ll, axis=1)
+        )
         np.testing.assert_allclose(cos_s, np.cos(top.space_cone_angle), atol=1e-10)
 
 
@@ -113,11 +135,24 @@ def test_energy_theorem_under_torque():
     # ω·N = dT/dt (2.76): the power output against the derivative of the sampled T.
     body = [1.0, 1.3, 0.6]
     q0 = [np.sqrt(0.9), np.sqrt(0.1), 0.0, 0.0]
-    torques = [GravityTorque(mgl=0.8), SpaceTorque([0.1, -0.2, 0.3]), BodyTorque([0.0, 0.05, -0.1]),
-               lambda t, w, q: [0.1 * np.sin(t), 0.0, -0.05 * w[2]]]
+    torques = [
+        GravityTorque(mgl=0.8),
+        SpaceTorque([0.1, -0.2, 0.3]),
+        BodyTorque([0.0, 0.05, -0.1]),
+        lambda t, w, q: [0.1 * np.sin(t), 0.0, -0.05 * w[2]],
+    ]
     for torque in torques:
-        tr = simulate(body, [0.2, 0.5, 3.0], 4.0, attitude0=q0, torque=torque, method="dop853", rtol=1e-13,
-                      atol=1e-15, samples=2001)
+        tr = simulate(
+            body,
+            [0.2, 0.5, 3.0],
+            4.0,
+            attitude0=q0,
+            torque=torque,
+            method="dop853",
+            rtol=1e-13,
+            atol=1e-15,
+            samples=2001,
+        )
         dt = tr.t[1] - tr.t[0]
         e = tr.energy
         de = (e[:-4] - 8 * e[1:-3] + 8 * e[3:-1] - e[4:]) / (12 * dt)  # 4th-order central
@@ -134,6 +169,7 @@ def test_negative_control_dropping_the_gyroscopic_term_fails():
             if not gyro:
                 return [0.0, 0.0, 0.0]
             return [(2 - 3) * w[1] * w[2] / 1, (3 - 1) * w[2] * w[0] / 2, (1 - 2) * w[0] * w[1] / 3]
+
         return f
 
     exact = FreeRigidBody(I123, W0).omega(5.0)
@@ -147,26 +183,56 @@ def test_heavy_top_with_a_rigid_body_cone():
     # A solid cone: apex at the origin (the pivot), axis +z, centre of mass at 3h/4 on axis 3.
     cone = poinsot.RigidBody.solid_cone(1.0, 0.2, 0.4)
     q0 = [np.cos(0.25), np.sin(0.25), 0.0, 0.0]
-    tr = simulate(cone, [0.0, 0.0, 60.0], 3.0, attitude0=q0, torque=GravityTorque(), method="dop853", rtol=1e-12,
-                  atol=1e-14, samples=301)
+    tr = simulate(
+        cone,
+        [0.0, 0.0, 60.0],
+        3.0,
+        attitude0=q0,
+        torque=GravityTorque(),
+        method="dop853",
+        rtol=1e-12,
+        atol=1e-14,
+        samples=301,
+    )
     mgl = 1.0 * 9.80665 * 0.3
     assert tr.potential_energy[0] == pytest.approx(mgl * np.cos(0.5), rel=1e-14)  # V = m g l cos θ
     assert tr.energy_error().max() < 1e-9
-    split = simulate(cone, [0.0, 0.0, 60.0], 3.0, attitude0=q0, torque=GravityTorque(), method="splitting4",
-                     dt=1e-4, samples=301)
+    split = simulate(
+        cone,
+        [0.0, 0.0, 60.0],
+        3.0,
+        attitude0=q0,
+        torque=GravityTorque(),
+        method="splitting4",
+        dt=1e-4,
+        samples=301,
+    )
     assert split.energy_error().max() < 1e-6
     assert qdist(split.attitude[-1], tr.attitude[-1]) < 1e-6
     with pytest.raises(poinsot.PoinsotError, match="^body: "):
-        simulate(poinsot.RigidBody.from_inertia(1.0, np.eye(3), center_of_mass=(0.1, 0, 0.3)), [0, 0, 1], 1.0,
-                 torque=GravityTorque())
+        simulate(
+            poinsot.RigidBody.from_inertia(1.0, np.eye(3), center_of_mass=(0.1, 0, 0.3)),
+            [0, 0, 1],
+            1.0,
+            torque=GravityTorque(),
+        )
 
 
 def test_gravity_gradient_and_callback_agree_with_builtin():
     n = 0.3
     body = np.array([1.0, 2.0, 2.5])
     q0 = [np.sqrt(0.8), 0.0, np.sqrt(0.2), 0.0]
-    a = simulate(body, [0.01, 0.02, 0.3], 20.0, attitude0=q0, torque=GravityGradientTorque(n), method="dop853",
-                 rtol=1e-12, atol=1e-14, samples=3)
+    a = simulate(
+        body,
+        [0.01, 0.02, 0.3],
+        20.0,
+        attitude0=q0,
+        torque=GravityGradientTorque(n),
+        method="dop853",
+        rtol=1e-12,
+        atol=1e-14,
+        samples=3,
+    )
 
     def gg(t, w, q):
         from scipy.spatial.transform import Rotation
@@ -175,8 +241,17 @@ def test_gravity_gradient_and_callback_agree_with_builtin():
         rb = r.inv().apply([np.cos(n * t), np.sin(n * t), 0.0])
         return 3 * n * n * np.cross(rb, body * rb)
 
-    b = simulate(body, [0.01, 0.02, 0.3], 20.0, attitude0=q0, torque=gg, method="dop853", rtol=1e-12, atol=1e-14,
-                 samples=3)
+    b = simulate(
+        body,
+        [0.01, 0.02, 0.3],
+        20.0,
+        attitude0=q0,
+        torque=gg,
+        method="dop853",
+        rtol=1e-12,
+        atol=1e-14,
+        samples=3,
+    )
     np.testing.assert_allclose(a.omega, b.omega, atol=1e-10)
     assert b.torque_evaluations > 100
 
@@ -219,6 +294,7 @@ def test_progress_and_divergence():
     seen = []
     simulate(I123, W0, 5.0, method="rk4", dt=0.01, samples=101, progress=seen.append)
     assert seen and seen[-1] == pytest.approx(1.0) and np.all(np.diff(seen) > 0)
+
     def runaway(t, w, q):  # N ∝ |ω|⁴ ω: blows up in finite time
         with np.errstate(over="ignore", invalid="ignore"):
             return w * np.dot(w, w) ** 2
@@ -248,16 +324,54 @@ def test_progress_and_divergence():
         ({"torque": lambda t, w, q: [1.0, 2.0]}, poinsot.PoinsotError, "torque"),
         # Issue 10: a huge torque overflows the state under every method; the splittings used
         # to return an infinite energy silently.
-        ({"torque": SpaceTorque([1e308] * 3), "method": "splitting2", "dt": 0.01, "samples": 11},
-         poinsot.PoinsotError, "torque"),
-        ({"torque": SpaceTorque([1e308, 0, 0]), "omega0": [0.0, 0.0, 1.0], "method": "splitting2",
-          "dt": 0.01, "samples": 11}, poinsot.IntegrationError, "duration"),
-        ({"torque": SpaceTorque([1e308, 0, 0]), "omega0": [0.0, 0.0, 1.0], "method": "splitting6",
-          "dt": 0.01, "samples": 11}, poinsot.IntegrationError, "duration"),
-        ({"torque": SpaceTorque([1e308, 0, 0]), "omega0": [0.0, 0.0, 1.0], "method": "rk4",
-          "dt": 0.01, "samples": 11}, poinsot.IntegrationError, "duration"),
-        ({"torque": SpaceTorque([1e308, 0, 0]), "omega0": [0.0, 0.0, 1.0], "method": "dop853",
-          "samples": 11}, poinsot.IntegrationError, "duration"),
+        (
+            {"torque": SpaceTorque([1e308] * 3), "method": "splitting2", "dt": 0.01, "samples": 11},
+            poinsot.PoinsotError,
+            "torque",
+        ),
+        (
+            {
+                "torque": SpaceTorque([1e308, 0, 0]),
+                "omega0": [0.0, 0.0, 1.0],
+                "method": "splitting2",
+                "dt": 0.01,
+                "samples": 11,
+            },
+            poinsot.IntegrationError,
+            "duration",
+        ),
+        (
+            {
+                "torque": SpaceTorque([1e308, 0, 0]),
+                "omega0": [0.0, 0.0, 1.0],
+                "method": "splitting6",
+                "dt": 0.01,
+                "samples": 11,
+            },
+            poinsot.IntegrationError,
+            "duration",
+        ),
+        (
+            {
+                "torque": SpaceTorque([1e308, 0, 0]),
+                "omega0": [0.0, 0.0, 1.0],
+                "method": "rk4",
+                "dt": 0.01,
+                "samples": 11,
+            },
+            poinsot.IntegrationError,
+            "duration",
+        ),
+        (
+            {
+                "torque": SpaceTorque([1e308, 0, 0]),
+                "omega0": [0.0, 0.0, 1.0],
+                "method": "dop853",
+                "samples": 11,
+            },
+            poinsot.IntegrationError,
+            "duration",
+        ),
     ],
 )
 def test_bad_input_names_the_argument(kwargs, exc, name):

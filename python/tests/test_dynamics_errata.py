@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-
 from poinsot import FreeRigidBody, FreeSymmetricTop, simulate
 
 I123 = np.array([1.0, 2.0, 3.0])
@@ -15,7 +14,9 @@ W0 = np.array([1.0, 0.1, 1.0])
 def euler_rhs(moments, w):
     """ω̇ from Euler's equations 2.72 (torque-free), written out independently of the core."""
     i1, i2, i3 = moments
-    return np.array([(i2 - i3) * w[1] * w[2] / i1, (i3 - i1) * w[2] * w[0] / i2, (i1 - i2) * w[0] * w[1] / i3])
+    return np.array(
+        [(i2 - i3) * w[1] * w[2] / i1, (i3 - i1) * w[2] * w[0] / i2, (i1 - i2) * w[0] * w[1] / i3]
+    )
 
 
 def test_erratum_2_70_body_rate_of_l_is_i_dot_omega_dot():
@@ -29,7 +30,9 @@ def test_erratum_2_70_body_rate_of_l_is_i_dot_omega_dot():
     assert np.linalg.norm(dl - I123 * w) > 0.1
     # And 2.71 follows: in space L is constant although its body components turn.
     tr = simulate(I123, W0, 10.0, samples=11)
-    np.testing.assert_allclose(tr.angular_momentum, np.tile(tr.angular_momentum[0], (11, 1)), atol=1e-12)
+    np.testing.assert_allclose(
+        tr.angular_momentum, np.tile(tr.angular_momentum[0], (11, 1)), atol=1e-12
+    )
 
 
 def test_erratum_2_73_74_torque_free_omega_is_not_parallel_to_l():
@@ -38,7 +41,9 @@ def test_erratum_2_73_74_torque_free_omega_is_not_parallel_to_l():
     body = FreeRigidBody(I123, W0)
     ell = body.angular_momentum
     ws = body.herpolhode(np.linspace(0, 5, 11))
-    sin_angle = np.linalg.norm(np.cross(ws, ell), axis=1) / (np.linalg.norm(ws, axis=1) * np.linalg.norm(ell))
+    sin_angle = np.linalg.norm(np.cross(ws, ell), axis=1) / (
+        np.linalg.norm(ws, axis=1) * np.linalg.norm(ell)
+    )
     assert sin_angle.min() > 0.05
     assert np.linalg.norm(ws[5] - ws[0]) > 0.1  # ω moves in space, L does not
     # The exception: steady rotation about a principal axis, where ω ∥ L indeed.

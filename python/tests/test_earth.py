@@ -5,10 +5,9 @@ matrix exponential of the linear drop equations, closed-form ballistics)."""
 from __future__ import annotations
 
 import numpy as np
+import poinsot as ps
 import pytest
 from scipy.linalg import expm
-
-import poinsot as ps
 
 #: The unit prints 2–3 significant figures; relative tolerance for comparing with them.
 UNIT_DIGITS = 5e-3
@@ -19,7 +18,9 @@ def test_convention_enu_omega_direction() -> None:
     north pole, down at the south pole."""
     e = ps.Earth()
     w = e.rotation_rate
-    np.testing.assert_allclose(e.omega_enu(30, degrees=True), w * np.array([0, np.cos(np.pi / 6), 0.5]), rtol=1e-15)
+    np.testing.assert_allclose(
+        e.omega_enu(30, degrees=True), w * np.array([0, np.cos(np.pi / 6), 0.5]), rtol=1e-15
+    )
     np.testing.assert_allclose(e.omega_enu(0.0), [0, w, 0], atol=1e-25)
     np.testing.assert_allclose(e.omega_enu(np.pi / 2), [0, 0, w], atol=1e-20)
     np.testing.assert_allclose(e.omega_enu(-np.pi / 2), [0, 0, -w], atol=1e-20)
@@ -27,7 +28,9 @@ def test_convention_enu_omega_direction() -> None:
 
 def test_convention_sidereal_rate_by_default() -> None:
     assert ps.Earth().rotation_rate == 7.2921150e-5 == ps.SIDEREAL_RATE
-    assert ps.Earth("solar").rotation_rate == ps.Earth.solar_day().rotation_rate == 2 * np.pi / 86400
+    assert (
+        ps.Earth("solar").rotation_rate == ps.Earth.solar_day().rotation_rate == 2 * np.pi / 86400
+    )
     assert ps.Earth().g == 9.80665 and ps.Earth().radius == 6.371e6
 
 
@@ -62,12 +65,14 @@ def test_the_units_numbers_with_the_sidereal_rate() -> None:
 
 def test_effective_gravity_vector_magnitude_and_plumb_line() -> None:
     e = ps.Earth()
-    w2r = e.rotation_rate ** 2 * e.radius
+    w2r = e.rotation_rate**2 * e.radius
     lat = np.radians([-90, -45, 0, 45, 90])
     g = e.effective_gravity(lat)
     assert g.shape == (5, 3)
     # Eq. 2.31 by hand: g_e = −g ẑ + ω² R cos λ (0, −sin λ, cos λ).
-    expect = np.stack([np.zeros(5), -w2r * np.cos(lat) * np.sin(lat), -e.g + w2r * np.cos(lat) ** 2], axis=1)
+    expect = np.stack(
+        [np.zeros(5), -w2r * np.cos(lat) * np.sin(lat), -e.g + w2r * np.cos(lat) ** 2], axis=1
+    )
     np.testing.assert_allclose(g, expect, atol=1e-15)
     mag = e.effective_gravity_magnitude(lat)
     np.testing.assert_allclose(mag, np.linalg.norm(expect, axis=1), rtol=1e-15)
@@ -150,7 +155,9 @@ def test_projectile_range_drift_and_hemispheres() -> None:
     v, el = 300.0, 45.0
     still = e.projectile(v, el, 30, 45, degrees=True, rotation=False)
     assert still.range == pytest.approx(v * v / e.g, rel=1e-10)
-    assert abs(still.drift) < 1e-8 and still.time == pytest.approx(2 * v * np.sin(np.pi / 4) / e.g, rel=1e-10)
+    assert abs(still.drift) < 1e-8 and still.time == pytest.approx(
+        2 * v * np.sin(np.pi / 4) / e.g, rel=1e-10
+    )
     for az in (0, 90, 180, 270):
         n = e.projectile(v, el, az, 45, degrees=True)
         s = e.projectile(v, el, az, -45, degrees=True)
@@ -180,7 +187,9 @@ def test_foucault_plane_turns_at_omega_sin_latitude() -> None:
 def test_inertial_oscillation_and_the_low() -> None:
     e = ps.Earth()
     n = e.inertial_oscillation(45, [10.0, 0.0], degrees=True)
-    assert n.sense == "clockwise" and n.turning_rate == pytest.approx(-e.coriolis_parameter(45, degrees=True), rel=1e-9)
+    assert n.sense == "clockwise" and n.turning_rate == pytest.approx(
+        -e.coriolis_parameter(45, degrees=True), rel=1e-9
+    )
     assert n.period == pytest.approx(np.pi / (e.rotation_rate * np.sin(np.pi / 4)), rel=1e-14)
     # After two periods it is back where it started.
     assert np.hypot(*n.position[-1]) < 1e-6 * np.hypot(*n.position.T).max()
@@ -192,25 +201,28 @@ def test_inertial_oscillation_and_the_low() -> None:
     assert e.flow_into_low(0.0).sense == "none"
 
 
-@pytest.mark.parametrize("call, name", [
-    (lambda e: e.omega_enu(91, degrees=True), "latitude"),
-    (lambda e: e.omega_enu(-1.6), "latitude"),
-    (lambda e: e.effective_gravity(np.nan), "latitude"),
-    (lambda e: e.eastward_deflection(-1.0, 0.3), "height"),
-    (lambda e: e.drop(-5.0, 0.3), "height"),
-    (lambda e: e.drop(np.inf, 0.3), "height"),
-    (lambda e: e.drop(10.0, 100, degrees=True), "latitude"),
-    (lambda e: e.drop(10.0, 0.3, rtol=0.0), "rtol"),
-    (lambda e: e.drop(10.0, 0.3, atol=-1.0), "atol"),
-    (lambda e: e.drop(10.0, 0.3, gravity="flat"), "gravity"),
-    (lambda e: e.projectile(0.0, 0.5, 0.0, 0.3), "speed"),
-    (lambda e: e.foucault(0.5, amplitude=100.0), "amplitude"),
-    (lambda e: e.foucault(0.5, rtol=-1.0), "rtol"),
-    (lambda e: e.coriolis_acceleration(0.5, [1.0, 2.0]), "velocity_enu"),
-    (lambda e: ps.Earth(rotation_rate=-1.0), "rotation_rate"),
-    (lambda e: ps.Earth(g=0.0), "g"),
-    (lambda e: ps.Earth(rotation_rate="lunar"), "rotation_rate"),
-])
+@pytest.mark.parametrize(
+    "call, name",
+    [
+        (lambda e: e.omega_enu(91, degrees=True), "latitude"),
+        (lambda e: e.omega_enu(-1.6), "latitude"),
+        (lambda e: e.effective_gravity(np.nan), "latitude"),
+        (lambda e: e.eastward_deflection(-1.0, 0.3), "height"),
+        (lambda e: e.drop(-5.0, 0.3), "height"),
+        (lambda e: e.drop(np.inf, 0.3), "height"),
+        (lambda e: e.drop(10.0, 100, degrees=True), "latitude"),
+        (lambda e: e.drop(10.0, 0.3, rtol=0.0), "rtol"),
+        (lambda e: e.drop(10.0, 0.3, atol=-1.0), "atol"),
+        (lambda e: e.drop(10.0, 0.3, gravity="flat"), "gravity"),
+        (lambda e: e.projectile(0.0, 0.5, 0.0, 0.3), "speed"),
+        (lambda e: e.foucault(0.5, amplitude=100.0), "amplitude"),
+        (lambda e: e.foucault(0.5, rtol=-1.0), "rtol"),
+        (lambda e: e.coriolis_acceleration(0.5, [1.0, 2.0]), "velocity_enu"),
+        (lambda e: ps.Earth(rotation_rate=-1.0), "rotation_rate"),
+        (lambda e: ps.Earth(g=0.0), "g"),
+        (lambda e: ps.Earth(rotation_rate="lunar"), "rotation_rate"),
+    ],
+)
 def test_bad_input_names_the_argument(call, name) -> None:
     with pytest.raises(ps.PoinsotError, match=name) as info:
         call(ps.Earth())
@@ -224,6 +236,8 @@ def test_fall_time_is_the_units_2_41() -> None:
 
     earth = ps.Earth()
     assert earth.fall_time(100.0) == pytest.approx(math.sqrt(2 * 100.0 / 9.80665), rel=1e-15)
-    assert earth.drop(100.0, 45, degrees=True).time == pytest.approx(earth.fall_time(100.0), rel=1e-6)
+    assert earth.drop(100.0, 45, degrees=True).time == pytest.approx(
+        earth.fall_time(100.0), rel=1e-6
+    )
     with pytest.raises(ps.PoinsotError, match="^height:"):
         earth.fall_time(-1.0)

@@ -5,11 +5,10 @@ from __future__ import annotations
 import json
 
 import numpy as np
-from click.testing import CliRunner
-from rich.console import Console
-
 import poinsot as ps
+from click.testing import CliRunner
 from poinsot.cli import main
+from rich.console import Console
 
 
 def _json(args: list[str]) -> dict:
@@ -22,7 +21,9 @@ def test_fall_json_reproduces_the_unit() -> None:
     data = _json(["fall", "--height", "100", "--latitude", "45", "--degrees", "--json"])
     assert abs(data["east"] / 1.552e-2 - 1) < 1e-3 and data["north"] < 0
     assert abs(data["east"] / data["first_order_east"] - 1) < 1e-6
-    solar = _json(["fall", "--height", "100", "--latitude", "45", "--degrees", "--solar-day", "--json"])
+    solar = _json(
+        ["fall", "--height", "100", "--latitude", "45", "--degrees", "--solar-day", "--json"]
+    )
     assert f"{solar['east']:.2e}" == "1.55e-02"
     rad = _json(["fall", "--height", "100", "--latitude", str(np.pi / 4), "--json"])
     assert abs(rad["east"] - data["east"]) < 1e-12
@@ -38,10 +39,36 @@ def test_fall_table_and_errors() -> None:
 
 
 def test_projectile_json_drifts_right_in_the_north() -> None:
-    n = _json(["projectile", "--speed", "500", "--elevation", "40", "--azimuth", "0", "--latitude", "50",
-               "--degrees", "--json"])
-    s = _json(["projectile", "--speed", "500", "--elevation", "40", "--azimuth", "0", "--latitude", "-50",
-               "--degrees", "--json"])
+    n = _json(
+        [
+            "projectile",
+            "--speed",
+            "500",
+            "--elevation",
+            "40",
+            "--azimuth",
+            "0",
+            "--latitude",
+            "50",
+            "--degrees",
+            "--json",
+        ]
+    )
+    s = _json(
+        [
+            "projectile",
+            "--speed",
+            "500",
+            "--elevation",
+            "40",
+            "--azimuth",
+            "0",
+            "--latitude",
+            "-50",
+            "--degrees",
+            "--json",
+        ]
+    )
     assert n["with_rotation"]["drift"] > 0 > s["with_rotation"]["drift"]
     assert abs(n["without_rotation"]["drift"]) < 1e-6
     g = ps.Earth().g
@@ -65,5 +92,12 @@ def test_tour_sections_print_the_units_numbers() -> None:
             titles.append(title)
     assert len(titles) == 4
     text = con.export_text()
-    for needle in ("1.55e-2", "3.4e-2", "7.2722e-05", "1.5524e-02", "clockwise", "counterclockwise"):
+    for needle in (
+        "1.55e-2",
+        "3.4e-2",
+        "7.2722e-05",
+        "1.5524e-02",
+        "clockwise",
+        "counterclockwise",
+    ):
         assert needle in text, needle

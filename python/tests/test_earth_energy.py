@@ -6,12 +6,11 @@ closed form of J for a state at rest."""
 from __future__ import annotations
 
 import numpy as np
+import poinsot as ps
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
-
-import poinsot as ps
 
 #: Drift allowed of J along a Foucault run at the default rtol 1e-10, relative to g L.
 JACOBI_DRIFT = 1e-8
@@ -85,16 +84,33 @@ def test_low_energy_budget_closes(friction: float) -> None:
 def test_low_agrees_with_scipy() -> None:
     e = ps.Earth()
     lat, pull, gamma, rad = np.radians(-30), 1.5e-3, 2e-5, 5e5
-    flow = e.flow_into_low(lat, radius=rad, parcels=3, pull=pull, friction=gamma, duration=86400.0, samples=25)
+    flow = e.flow_into_low(
+        lat, radius=rad, parcels=3, pull=pull, friction=gamma, duration=86400.0, samples=25
+    )
     f, k = 2 * e.rotation_rate * np.sin(lat), pull / rad
 
     def rhs(_t: float, y: np.ndarray) -> list[float]:
         x, yy, vx, vy, _w = y
-        return [vx, vy, -k * x - gamma * vx + f * vy, -k * yy - gamma * vy - f * vx, gamma * (vx * vx + vy * vy)]
+        return [
+            vx,
+            vy,
+            -k * x - gamma * vx + f * vy,
+            -k * yy - gamma * vy - f * vx,
+            gamma * (vx * vx + vy * vy),
+        ]
 
     for p in range(3):
         a = 2 * np.pi * p / 3
-        sol = solve_ivp(rhs, (0, 86400.0), [rad * np.cos(a), rad * np.sin(a), 0, 0, 0], method="DOP853",
-                        t_eval=flow.t, rtol=1e-11, atol=1e-9)
+        sol = solve_ivp(
+            rhs,
+            (0, 86400.0),
+            [rad * np.cos(a), rad * np.sin(a), 0, 0, 0],
+            method="DOP853",
+            t_eval=flow.t,
+            rtol=1e-11,
+            atol=1e-9,
+        )
         np.testing.assert_allclose(flow.position[p], sol.y[:2].T, rtol=0, atol=SCIPY * rad)
-        np.testing.assert_allclose(flow.dissipated[p], sol.y[4], rtol=0, atol=SCIPY * flow.energy[p, 0])
+        np.testing.assert_allclose(
+            flow.dissipated[p], sol.y[4], rtol=0, atol=SCIPY * flow.energy[p, 0]
+        )

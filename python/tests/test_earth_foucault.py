@@ -11,13 +11,12 @@ import json
 
 import mpmath as mp
 import numpy as np
+import poinsot as ps
 import pytest
 from click.testing import CliRunner
+from poinsot.cli import main
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
-
-import poinsot as ps
-from poinsot.cli import main
 
 G = 9.80665
 # The fast planet of the issue: a turn in 86 s, 1000 times the Earth's spin.
@@ -46,13 +45,23 @@ def _rest(rate: float, lat: float, length: float) -> np.ndarray:
 
     if lat == 0.0 or rate == 0.0:
         return np.array([0.0, 0.0, -length])
-    phi = brentq(torque, 0.0, lat, xtol=1e-300, rtol=1e-15) if lat > 0 else -brentq(
-        lambda p: -torque(-p), 0.0, -lat, xtol=1e-300, rtol=1e-15)
+    phi = (
+        brentq(torque, 0.0, lat, xtol=1e-300, rtol=1e-15)
+        if lat > 0
+        else -brentq(lambda p: -torque(-p), 0.0, -lat, xtol=1e-300, rtol=1e-15)
+    )
     return length * np.array([0.0, np.sin(phi), -np.cos(phi)])
 
 
-def _scipy_run(rate: float, lat: float, length: float, amplitude: float, azimuth: float,
-               duration: float, about_plumb_line: bool = False) -> float:
+def _scipy_run(
+    rate: float,
+    lat: float,
+    length: float,
+    amplitude: float,
+    azimuth: float,
+    duration: float,
+    about_plumb_line: bool = False,
+) -> float:
     """The rate fitted through scipy's turning points (largest distances from the rest position,
     or from the suspension's plumb line for the negative control)."""
     w = _omega(rate, lat)
@@ -80,8 +89,15 @@ def _scipy_run(rate: float, lat: float, length: float, amplitude: float, azimuth
         return float(dd @ y[3:])
 
     event.direction = -1  # type: ignore[attr-defined]
-    sol = solve_ivp(rhs, (0.0, duration), np.concatenate([r0, np.zeros(3)]), method="DOP853", rtol=1e-12,
-                    atol=1e-12, events=event)
+    sol = solve_ivp(
+        rhs,
+        (0.0, duration),
+        np.concatenate([r0, np.zeros(3)]),
+        method="DOP853",
+        rtol=1e-12,
+        atol=1e-12,
+        events=event,
+    )
     # Released from rest, the event function starts at 0: not a turning point.
     keep = sol.t_events[0] > 0.0
     tt, yy = sol.t_events[0][keep], sol.y_events[0][keep]
@@ -105,10 +121,10 @@ def _mpmath_theory_rate(rate: float, lat: float, length: float) -> mp.mpf:
     lat_m = mp.mpf(lat)
     w = [mp.mpf(0), rate * mp.cos(lat_m), rate * mp.sin(lat_m)]
 
-    def cross(a, b):  # noqa: ANN001, ANN202
+    def cross(a, b):
         return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 
-    def torque(phi):  # noqa: ANN001, ANN202
+    def torque(phi):
         r = [mp.mpf(0), length * mp.sin(phi), -length * mp.cos(phi)]
         wr = cross(w, r)
         f = [-c for c in cross(w, wr)]
@@ -121,22 +137,27 @@ def _mpmath_theory_rate(rate: float, lat: float, length: float) -> mp.mpf:
     east = [mp.mpf(1), mp.mpf(0), mp.mpf(0)]
     north = cross(up, east)
 
-    def position(x, y):  # noqa: ANN001, ANN202
+    def position(x, y):
         s = mp.sqrt(length**2 - x**2 - y**2)
         return [s * e[k] + x * east[k] + y * north[k] for k in range(3)]
 
-    def potential(x, y):  # noqa: ANN001, ANN202
+    def potential(x, y):
         r = position(x, y)
         wr = cross(w, r)
         return G * r[2] - (wr[0] ** 2 + wr[1] ** 2 + wr[2] ** 2) / 2
 
-    def vector_potential(i):  # noqa: ANN001, ANN202
-        def a(x, y):  # noqa: ANN001, ANN202
+    def vector_potential(i):
+        def a(x, y):
             r = position(x, y)
-            dr = [mp.diff(lambda s: position(s, y)[k], x) if i == 0 else mp.diff(lambda s: position(x, s)[k], y)
-                  for k in range(3)]
+            dr = [
+                mp.diff(lambda s: position(s, y)[k], x)
+                if i == 0
+                else mp.diff(lambda s: position(x, s)[k], y)
+                for k in range(3)
+            ]
             wr = cross(w, r)
             return sum(dr[k] * wr[k] for k in range(3))
+
         return a
 
     h = mp.matrix(2, 2)
@@ -155,7 +176,9 @@ def _mpmath_theory_rate(rate: float, lat: float, length: float) -> mp.mpf:
             a[2 + i, j] = -h[i, j]
             a[2 + i, 2 + j] = -gyro[i, j]
     values, vectors = mp.eig(a)
-    modes = sorted(((mp.im(v), k) for k, v in enumerate(values) if mp.im(v) > 0), key=lambda m: m[0])
+    modes = sorted(
+        ((mp.im(v), k) for k, v in enumerate(values) if mp.im(v) > 0), key=lambda m: m[0]
+    )
     (nu_m, k_m), (nu_p, _) = modes
     qx, qy = vectors[0, k_m], vectors[1, k_m]
     slow_ccw = mp.im(mp.conj(qx) * qy) < 0
@@ -183,24 +206,42 @@ def test_negative_control_the_plumb_line_measurement_gets_the_sense_wrong() -> N
     assert _scipy_run(FAST, np.radians(54), 80.0, 1.0, 0.0, 60.0, about_plumb_line=True) > 0
 
 
-@pytest.mark.parametrize(("rate", "lat", "length"), [
-    (FAST, 54.0, 80.0), (FAST, -20.0, 10.0), (0.2, 60.0, 10.0), (ps.SIDEREAL_RATE, 48.85, 67.0),
-    (FAST, 90.0, 80.0), (1e-3, 3.0, 10.0),
-])
+@pytest.mark.parametrize(
+    ("rate", "lat", "length"),
+    [
+        (FAST, 54.0, 80.0),
+        (FAST, -20.0, 10.0),
+        (0.2, 60.0, 10.0),
+        (ps.SIDEREAL_RATE, 48.85, 67.0),
+        (FAST, 90.0, 80.0),
+        (1e-3, 3.0, 10.0),
+    ],
+)
 def test_theory_rate_is_the_mpmath_linearisation(rate: float, lat: float, length: float) -> None:
-    run = ps.Earth(rotation_rate=rate).foucault(lat, degrees=True, length=length, amplitude=0.01 * length,
-                                                duration=5.0, samples=2)
+    run = ps.Earth(rotation_rate=rate).foucault(
+        lat, degrees=True, length=length, amplitude=0.01 * length, duration=5.0, samples=2
+    )
     want = _mpmath_theory_rate(rate, np.radians(lat), length)
     assert run.theory_rate == pytest.approx(float(want), rel=MPMATH_RATE_TOL)
 
 
-@pytest.mark.parametrize(("lat", "sense"), [(45.0, "clockwise"), (-45.0, "counterclockwise"),
-                                            (90.0, "clockwise"), (-90.0, "counterclockwise")])
+@pytest.mark.parametrize(
+    ("lat", "sense"),
+    [
+        (45.0, "clockwise"),
+        (-45.0, "counterclockwise"),
+        (90.0, "clockwise"),
+        (-90.0, "counterclockwise"),
+    ],
+)
 def test_hemispheres_and_poles_on_a_fast_planet_match_scipy(lat: float, sense: str) -> None:
-    run = ps.Earth(rotation_rate=FAST).foucault(lat, degrees=True, length=10.0, amplitude=0.1, duration=60.0)
+    run = ps.Earth(rotation_rate=FAST).foucault(
+        lat, degrees=True, length=10.0, amplitude=0.1, duration=60.0
+    )
     assert (run.regime, run.sense) == ("precessing", sense)
-    assert run.precession_rate == pytest.approx(_scipy_run(FAST, np.radians(lat), 10.0, 0.1, 0.0, 60.0),
-                                                rel=SCIPY_RATE_TOL)
+    assert run.precession_rate == pytest.approx(
+        _scipy_run(FAST, np.radians(lat), 10.0, 0.1, 0.0, 60.0), rel=SCIPY_RATE_TOL
+    )
     if abs(lat) == 90.0:
         assert run.theory_rate == pytest.approx(-np.sign(lat) * FAST, rel=1e-14)
 
@@ -216,9 +257,13 @@ def test_regimes_without_a_rate() -> None:
     assert "rocks" in rocks.regime_note
     short = fast.foucault(54.0, degrees=True, length=80.0, duration=15.0, samples=2)
     assert (short.regime, short.precession_rate) == ("too_short", None)
-    loop = ps.Earth(rotation_rate=0.5).foucault(45.0, degrees=True, length=10.0, duration=60.0, samples=2)
+    loop = ps.Earth(rotation_rate=0.5).foucault(
+        45.0, degrees=True, length=10.0, duration=60.0, samples=2
+    )
     assert (loop.regime, loop.precession_rate) == ("not_a_swing", None)
-    flung = ps.Earth(rotation_rate=1.2).foucault(90.0, degrees=True, length=10.0, duration=20.0, samples=2)
+    flung = ps.Earth(rotation_rate=1.2).foucault(
+        90.0, degrees=True, length=10.0, duration=20.0, samples=2
+    )
     assert (flung.regime, flung.theory_rate, flung.precession_rate) == ("no_rest", None, None)
     wide = fast.foucault(20.0, degrees=True, length=80.0, amplitude=72.0, duration=600.0, samples=2)
     assert (wide.regime, wide.precession_rate) == ("wide_swing", None)
@@ -228,10 +273,14 @@ def test_regimes_without_a_rate() -> None:
 
 def test_cli_shows_the_regime() -> None:
     runner = CliRunner()
-    out = runner.invoke(main, ["foucault", "--latitude", "0", "--length", "80", "--duration", "600", "--json"])
+    out = runner.invoke(
+        main, ["foucault", "--latitude", "0", "--length", "80", "--duration", "600", "--json"]
+    )
     assert out.exit_code == 0, out.output
     data = json.loads(out.output)
     assert data["regime"] == "still" and data["sense"] == "none"
-    out = runner.invoke(main, ["foucault", "--latitude", "54", "--degrees", "--length", "80", "--duration", "15"])
+    out = runner.invoke(
+        main, ["foucault", "--latitude", "54", "--degrees", "--length", "80", "--duration", "15"]
+    )
     assert out.exit_code == 0, out.output
     assert "too_short" in out.output and "too few swings" in out.output and "—" in out.output

@@ -8,7 +8,6 @@ negative control: the typo would have been caught).
 from __future__ import annotations
 
 import numpy as np
-
 import poinsot as ps
 
 RNG = np.random.default_rng(20261121)
@@ -30,7 +29,9 @@ def test_erratum_2_51_sum_over_j() -> None:
     direct = sum(m * np.cross(r, np.cross(omega, r)) for m, r in zip(masses, positions))
     I_O = body.inertia_about(about)
     L_sum_over_j = np.array([sum(I_O[i, j] * omega[j] for j in range(3)) for i in range(3)])
-    np.testing.assert_allclose(body.angular_momentum(omega, about=about), direct, rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(
+        body.angular_momentum(omega, about=about), direct, rtol=1e-12, atol=1e-12
+    )
     np.testing.assert_allclose(L_sum_over_j, direct, rtol=1e-12, atol=1e-12)
     # the misprint (sum over i: the column sums times ω_j) gives another vector
     L_misprint = np.array([sum(I_O[i, j] * omega[j] for i in range(3)) for j in range(3)])
@@ -44,12 +45,14 @@ def test_erratum_2_66_kinetic_energy_principal() -> None:
     axes = body.principal_axes
     omega = axes @ omega_principal  # the same ω in the body's reference axes
     I1, I2, I3 = body.principal_moments
-    corrected = 0.5 * (I1 * omega_principal[0] ** 2 + I2 * omega_principal[1] ** 2
-                       + I3 * omega_principal[2] ** 2)
+    corrected = 0.5 * (
+        I1 * omega_principal[0] ** 2 + I2 * omega_principal[1] ** 2 + I3 * omega_principal[2] ** 2
+    )
     np.testing.assert_allclose(body.kinetic_energy(omega), corrected, rtol=1e-12)
     # T = ½ ω·L (2.53) as well
-    np.testing.assert_allclose(body.kinetic_energy(omega),
-                               0.5 * omega @ body.angular_momentum(omega), rtol=1e-12)
+    np.testing.assert_allclose(
+        body.kinetic_energy(omega), 0.5 * omega @ body.angular_momentum(omega), rtol=1e-12
+    )
 
 
 def test_erratum_2_99_omega3_is_omega_zeta() -> None:
@@ -59,5 +62,9 @@ def test_erratum_2_99_omega3_is_omega_zeta() -> None:
     w = ps.body_angular_velocity([phi, theta, psi], [dphi, dtheta, dpsi])
     np.testing.assert_allclose(w[2], dpsi + dphi * np.cos(theta), rtol=1e-14)
     assert abs(w[2] - dtheta) > 0.1  # the misprint would give θ̇
-    np.testing.assert_allclose(w[0], dtheta * np.cos(psi) + dphi * np.sin(theta) * np.sin(psi), rtol=1e-14)
-    np.testing.assert_allclose(w[1], -dtheta * np.sin(psi) + dphi * np.sin(theta) * np.cos(psi), rtol=1e-14)
+    np.testing.assert_allclose(
+        w[0], dtheta * np.cos(psi) + dphi * np.sin(theta) * np.sin(psi), rtol=1e-14
+    )
+    np.testing.assert_allclose(
+        w[1], -dtheta * np.sin(psi) + dphi * np.sin(theta) * np.cos(psi), rtol=1e-14
+    )

@@ -9,9 +9,8 @@ checks the JavaScript half against the same list.
 from __future__ import annotations
 
 import numpy as np
-import pytest
-
 import poinsot as ps
+import pytest
 from poinsot import _core
 
 #: Every kind of core error and its class, in the core's order — the same list as in

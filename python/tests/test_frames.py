@@ -7,13 +7,12 @@ differentiation in the fixed frame), closed-form straight-line motion in the fix
 from __future__ import annotations
 
 import numpy as np
+import poinsot as ps
 import pytest
 import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from sympy.physics.vector import Point, ReferenceFrame, dynamicsymbols
-
-import poinsot as ps
 
 #: Round-off allowance for O(1..10) quantities transformed once in float64.
 ROUND_OFF = 1e-12
@@ -52,12 +51,17 @@ def _sympy_model():
     a_total_1pt = P.a1pt_theory(Q, N, B)
     direct = (Rvec + rvec).dt(N).dt(N)
     exprs = {
-        "omega": omega, "alpha": alpha, "position": Rvec + rvec,
+        "omega": omega,
+        "alpha": alpha,
+        "position": Rvec + rvec,
         "velocity": (Rvec + rvec).dt(N),
         "relative": P.acc(B) if False else rvec.dt(B).dt(B),
-        "origin": Q.acc(N), "coriolis": 2 * omega.cross(v_rel),
-        "centripetal": omega.cross(omega.cross(rvec)), "euler": alpha.cross(rvec),
-        "a1pt": a_total_1pt, "direct": direct,
+        "origin": Q.acc(N),
+        "coriolis": 2 * omega.cross(v_rel),
+        "centripetal": omega.cross(omega.cross(rvec)),
+        "euler": alpha.cross(rvec),
+        "a1pt": a_total_1pt,
+        "direct": direct,
     }
     syms = []
     for f in (*q, *X, *x):
@@ -85,16 +89,22 @@ def test_each_acceleration_term_matches_sympy_kinematics(seed: int) -> None:
     x_dd, x_d, x = vals[6:9, 0], vals[6:9, 1], vals[6:9, 2]
     A = ref["attitude"]
     assert np.allclose(A.T @ A, np.eye(3)) and np.linalg.det(A) > 0
-    frame = ps.MovingFrame(origin=X, velocity=X_d, acceleration=X_dd,
-                           angular_velocity=ref["omega"].ravel(),
-                           angular_acceleration=ref["alpha"].ravel(), attitude=A)
+    frame = ps.MovingFrame(
+        origin=X,
+        velocity=X_d,
+        acceleration=X_dd,
+        angular_velocity=ref["omega"].ravel(),
+        angular_acceleration=ref["alpha"].ravel(),
+        attitude=A,
+    )
     out = frame.to_fixed(x, x_d, x_dd)
     assert np.linalg.norm(ref["omega"]) > 0.1, "non-trivial rotation"
     np.testing.assert_allclose(out.position, ref["position"].ravel(), atol=ROUND_OFF * 10)
     np.testing.assert_allclose(out.velocity, ref["velocity"].ravel(), atol=ROUND_OFF * 10)
     for name in ("relative", "origin", "coriolis", "centripetal", "euler"):
-        np.testing.assert_allclose(out.acceleration_terms[name], ref[name].ravel(), atol=ROUND_OFF * 100,
-                                   err_msg=name)
+        np.testing.assert_allclose(
+            out.acceleration_terms[name], ref[name].ravel(), atol=ROUND_OFF * 100, err_msg=name
+        )
     total = sum(out.acceleration_terms.values())
     np.testing.assert_allclose(total, out.acceleration, atol=ROUND_OFF)
     # Against sympy's one-point theorem and against differentiating r' = R + r twice in N.
@@ -113,8 +123,19 @@ def test_convention_moving_frame_attitude_columns_are_moving_axes() -> None:
 
 def test_convention_terms_are_named_as_in_the_unit() -> None:
     f = ps.MovingFrame(angular_velocity=[0, 0, 1.0])
-    assert set(f.to_fixed([1, 0, 0]).acceleration_terms) == {"relative", "origin", "coriolis", "centripetal", "euler"}
-    assert set(f.fictitious_forces(1.0, [1, 0, 0], [0, 0, 0])) == {"translational", "coriolis", "centrifugal", "euler"}
+    assert set(f.to_fixed([1, 0, 0]).acceleration_terms) == {
+        "relative",
+        "origin",
+        "coriolis",
+        "centripetal",
+        "euler",
+    }
+    assert set(f.fictitious_forces(1.0, [1, 0, 0], [0, 0, 0])) == {
+        "translational",
+        "coriolis",
+        "centrifugal",
+        "euler",
+    }
     # Centripetal points to the axis; centrifugal away from it (eqs. 2.23–2.24, 2.28).
     assert f.to_fixed([2.0, 0, 0]).acceleration_terms["centripetal"][0] < 0
     assert f.fictitious_forces(1.0, [2.0, 0, 0], [0, 0, 0])["centrifugal"][0] > 0
@@ -126,7 +147,9 @@ vec = st.lists(st.floats(-3, 3), min_size=3, max_size=3).map(np.array)
 @settings(max_examples=60, deadline=None)
 @given(o=vec, v=vec, a=vec, w=vec, wd=vec, r=vec, rv=vec, ra=vec)
 def test_to_moving_inverts_to_fixed(o, v, a, w, wd, r, rv, ra) -> None:
-    f = ps.MovingFrame(origin=o, velocity=v, acceleration=a, angular_velocity=w, angular_acceleration=wd)
+    f = ps.MovingFrame(
+        origin=o, velocity=v, acceleration=a, angular_velocity=w, angular_acceleration=wd
+    )
     out = f.to_fixed(r, rv, ra)
     back = f.to_moving(out.position, out.velocity, out.acceleration)
     np.testing.assert_allclose(back.position, r, atol=1e-11)
@@ -149,7 +172,9 @@ def test_pure_translation_galilean_invariance() -> None:
     forces = f.fictitious_forces(2.0, [1, 1, 1], [0, 1, 0])
     np.testing.assert_allclose(forces["translational"], [0, 0, 19.6])  # −m R̈ (eq. 2.5)
     uniform = ps.MovingFrame(velocity=[3, 0, 0])
-    assert all(np.all(x == 0) for x in uniform.fictitious_forces(1.0, [1, 2, 3], [4, 5, 6]).values())
+    assert all(
+        np.all(x == 0) for x in uniform.fictitious_forces(1.0, [1, 2, 3], [4, 5, 6]).values()
+    )
 
 
 def test_broadcasting_over_leading_dimensions() -> None:
@@ -182,12 +207,27 @@ def test_rotating_frame_integration_matches_inertial_motion() -> None:
     motion transformed into the frame, to 1e-10 relative."""
     w = np.array([0.2, -0.3, 0.9])
     A0 = ps.MovingFrame(angular_velocity=[1, 0, 0]).at(0.7).attitude  # some rotation
-    frame = ps.MovingFrame(origin=[1, -1, 0.5], velocity=[0.3, 0.1, 0], acceleration=[-0.4, 0.2, 0.1],
-                           angular_velocity=w, angular_acceleration=0.3 * w, attitude=A0)
+    frame = ps.MovingFrame(
+        origin=[1, -1, 0.5],
+        velocity=[0.3, 0.1, 0],
+        acceleration=[-0.4, 0.2, 0.1],
+        angular_velocity=w,
+        angular_acceleration=0.3 * w,
+        attitude=A0,
+    )
     r0, v0, mass = np.array([1.0, 0.5, -0.2]), np.array([0.1, -0.3, 0.8]), 2.0
     g = np.array([0.0, 0.0, -9.81])
-    traj = ps.simulate_particle(frame, r0, v0, 3.0, mass=mass, samples=31, rtol=1e-13, atol=1e-13,
-                                force=lambda t, r, v: mass * frame.at(t).attitude.T @ g)
+    traj = ps.simulate_particle(
+        frame,
+        r0,
+        v0,
+        3.0,
+        mass=mass,
+        samples=31,
+        rtol=1e-13,
+        atol=1e-13,
+        force=lambda t, r, v: mass * frame.at(t).attitude.T @ g,
+    )
     truth = _fixed_frame_truth(frame, r0, v0, g, traj.t)
     got = np.hstack([traj.position, traj.velocity])
     scale = np.maximum(np.abs(truth).max(axis=0), 1.0)
@@ -196,7 +236,9 @@ def test_rotating_frame_integration_matches_inertial_motion() -> None:
     free = ps.simulate_particle(frame, r0, v0, 3.0, samples=31, rtol=1e-13, atol=1e-13)
     truth = _fixed_frame_truth(frame, r0, v0, np.zeros(3), free.t)
     got = np.hstack([free.position, free.velocity])
-    assert np.max(np.abs(got - truth) / np.maximum(np.abs(truth).max(axis=0), 1.0)) < FRAME_AGREEMENT
+    assert (
+        np.max(np.abs(got - truth) / np.maximum(np.abs(truth).max(axis=0), 1.0)) < FRAME_AGREEMENT
+    )
     pos, _ = free.to_fixed()
     start = frame.to_fixed(r0, v0)
     np.testing.assert_allclose(pos, start.position + np.outer(free.t, start.velocity), atol=1e-9)
@@ -205,8 +247,11 @@ def test_rotating_frame_integration_matches_inertial_motion() -> None:
 def test_frame_given_as_a_function_of_time() -> None:
     """A tumbling frame, A(t) = R_z(φ) R_x(θ) with ω = φ̇ ẑ + θ̇ R_z(φ) x̂: a free particle must
     still move on a straight line in the fixed frame."""
+
     def rot(axis, a):
-        return ps.MovingFrame(angular_velocity=axis).at(a).attitude  # rotation by a about a unit axis
+        return (
+            ps.MovingFrame(angular_velocity=axis).at(a).attitude
+        )  # rotation by a about a unit axis
 
     def frame(t: float) -> ps.MovingFrame:
         phi, dphi, ddphi = 0.8 * t, 0.8, 0.0
@@ -214,10 +259,17 @@ def test_frame_given_as_a_function_of_time() -> None:
         rz = rot([0, 0, 1.0], phi)
         nodes = rz @ [1.0, 0, 0]
         w = dphi * np.array([0, 0, 1.0]) + dth * nodes
-        wd = ddphi * np.array([0, 0, 1.0]) + ddth * nodes + dth * dphi * np.cross([0, 0, 1.0], nodes)
-        return ps.MovingFrame(origin=[np.cos(t), np.sin(t), 0], velocity=[-np.sin(t), np.cos(t), 0],
-                              acceleration=[-np.cos(t), -np.sin(t), 0], angular_velocity=w,
-                              angular_acceleration=wd, attitude=rz @ rot([1.0, 0, 0], th))
+        wd = (
+            ddphi * np.array([0, 0, 1.0]) + ddth * nodes + dth * dphi * np.cross([0, 0, 1.0], nodes)
+        )
+        return ps.MovingFrame(
+            origin=[np.cos(t), np.sin(t), 0],
+            velocity=[-np.sin(t), np.cos(t), 0],
+            acceleration=[-np.cos(t), -np.sin(t), 0],
+            angular_velocity=w,
+            angular_acceleration=wd,
+            attitude=rz @ rot([1.0, 0, 0], th),
+        )
 
     r0, v0 = np.array([0.5, 0.0, 0.2]), np.array([0.0, 0.3, 0.0])
     traj = ps.simulate_particle(frame, r0, v0, 2.0, samples=21, rtol=1e-12, atol=1e-13)
@@ -235,10 +287,17 @@ def test_negative_control_frame_mismatch_is_detected() -> None:
     assert np.max(np.abs(np.hstack([traj.position, traj.velocity]) - truth)) > 1e-2
 
 
-@pytest.mark.parametrize("kwargs, name", [
-    ({"mass": -1.0}, "mass"), ({"rtol": 0.0}, "rtol"), ({"rtol": -1e-9}, "rtol"),
-    ({"atol": 0.0}, "atol"), ({"atol": float("nan")}, "atol"), ({"samples": 1}, "samples"),
-])
+@pytest.mark.parametrize(
+    "kwargs, name",
+    [
+        ({"mass": -1.0}, "mass"),
+        ({"rtol": 0.0}, "rtol"),
+        ({"rtol": -1e-9}, "rtol"),
+        ({"atol": 0.0}, "atol"),
+        ({"atol": float("nan")}, "atol"),
+        ({"samples": 1}, "samples"),
+    ],
+)
 def test_simulate_particle_bad_input_names_the_argument(kwargs, name) -> None:
     frame = ps.MovingFrame(angular_velocity=[0, 0, 1.0])
     with pytest.raises(ps.PoinsotError, match=name):
@@ -261,9 +320,11 @@ def test_bad_input_is_refused_with_the_argument_named() -> None:
         ps.simulate_particle(f, [1, 0, 0], [0, 0, 0], -1.0)
     with pytest.raises(ps.PoinsotError, match="angular_acceleration"):
         ps.MovingFrame(angular_velocity=[0, 0, 1.0], angular_acceleration=[1.0, 0, 0]).at(1.0)
+
     # A failing user force surfaces as its own exception; a wrong shape names force.
     def boom(t, r, v):
         raise ZeroDivisionError("inside the force")
+
     with pytest.raises(ZeroDivisionError):
         ps.simulate_particle(f, [1, 0, 0], [0, 0, 0], 1.0, force=boom)
     with pytest.raises(ps.PoinsotError, match="force"):
@@ -274,4 +335,6 @@ def test_blow_up_reports_the_time() -> None:
     """A force that blows up in finite time: IntegrationError naming t."""
     f = ps.MovingFrame()
     with pytest.raises(ps.IntegrationError, match="t = "):
-        ps.simulate_particle(f, [1, 0, 0], [1, 0, 0], 5.0, force=lambda t, r, v: np.array([r[0] ** 3, 0, 0]) * 10)
+        ps.simulate_particle(
+            f, [1, 0, 0], [1, 0, 0], 5.0, force=lambda t, r, v: np.array([r[0] ** 3, 0, 0]) * 10
+        )

@@ -7,11 +7,10 @@ conservation of the fixed-frame energy and of the Jacobi integral in a uniformly
 from __future__ import annotations
 
 import numpy as np
+import poinsot as ps
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
-import poinsot as ps
 
 
 def test_force_acceleration_and_potential_are_hookes_law() -> None:
@@ -26,10 +25,15 @@ def test_force_acceleration_and_potential_are_hookes_law() -> None:
 
 @settings(max_examples=25, deadline=None)
 @given(
-    k=st.floats(0.5, 20.0), m=st.floats(0.2, 5.0), rate=st.floats(-2.0, 2.0),
-    x=st.floats(-2.0, 2.0), vy=st.floats(-2.0, 2.0),
+    k=st.floats(0.5, 20.0),
+    m=st.floats(0.2, 5.0),
+    rate=st.floats(-2.0, 2.0),
+    x=st.floats(-2.0, 2.0),
+    vy=st.floats(-2.0, 2.0),
 )
-def test_fixed_frame_orbit_is_the_closed_form_ellipse(k: float, m: float, rate: float, x: float, vy: float) -> None:
+def test_fixed_frame_orbit_is_the_closed_form_ellipse(
+    k: float, m: float, rate: float, x: float, vy: float
+) -> None:
     p = ps.SpringParticle(m, k)
     table = ps.MovingFrame(angular_velocity=[0, 0, rate])
     r0, v0 = np.array([x, 0.3, 0.1]), np.array([0.2, vy, -0.1])
@@ -49,15 +53,25 @@ def test_fixed_frame_orbit_is_the_closed_form_ellipse(k: float, m: float, rate: 
 def test_jacobi_integral_is_conserved_on_a_uniform_turntable_only() -> None:
     p = ps.SpringParticle(1.0, 3.0)
     uniform = ps.MovingFrame(angular_velocity=[0, 0, 1.3])
-    run = p.simulate(uniform, [1.0, 0.5, 0.0], [0.0, -0.4, 0.2], 30.0, samples=300, rtol=1e-12, atol=1e-12)
-    j = np.array([p.jacobi_integral(run.frame_at(float(t)), r, v)
-                  for t, r, v in zip(run.t, run.position, run.velocity)])
+    run = p.simulate(
+        uniform, [1.0, 0.5, 0.0], [0.0, -0.4, 0.2], 30.0, samples=300, rtol=1e-12, atol=1e-12
+    )
+    j = np.array(
+        [
+            p.jacobi_integral(run.frame_at(float(t)), r, v)
+            for t, r, v in zip(run.t, run.position, run.velocity)
+        ]
+    )
     assert np.ptp(j) < 1e-9 * abs(j[0])
     # Negative control: a turntable spinning up (ω̇ ≠ 0) does work through the Euler force.
     spinning_up = ps.MovingFrame(angular_velocity=[0, 0, 1.3], angular_acceleration=[0, 0, 0.2])
     run = p.simulate(spinning_up, [1.0, 0.5, 0.0], [0.0, -0.4, 0.2], 30.0, samples=300)
-    j = np.array([p.jacobi_integral(run.frame_at(float(t)), r, v)
-                  for t, r, v in zip(run.t, run.position, run.velocity)])
+    j = np.array(
+        [
+            p.jacobi_integral(run.frame_at(float(t)), r, v)
+            for t, r, v in zip(run.t, run.position, run.velocity)
+        ]
+    )
     assert np.ptp(j) > 1e-2 * abs(j[0])
 
 
@@ -73,15 +87,30 @@ def test_stiffness_adds_to_a_callable_force() -> None:
     table = ps.MovingFrame(angular_velocity=[0, 0, 0.5])
     p = ps.SpringParticle(1.0, 2.0)
     a = p.simulate(table, [1.0, 0, 0], [0, 0.5, 0], 6.0, samples=30, rtol=1e-12, atol=1e-12)
-    b = ps.simulate_particle(table, [1.0, 0, 0], [0, 0.5, 0], 6.0, samples=30, rtol=1e-12, atol=1e-12,
-                             force=lambda t, r, v: -2.0 * np.asarray(r))
+    b = ps.simulate_particle(
+        table,
+        [1.0, 0, 0],
+        [0, 0.5, 0],
+        6.0,
+        samples=30,
+        rtol=1e-12,
+        atol=1e-12,
+        force=lambda t, r, v: -2.0 * np.asarray(r),
+    )
     np.testing.assert_allclose(a.states, b.states, atol=1e-10)
 
 
-@pytest.mark.parametrize(("args", "name"), [
-    ((0.0, 1.0), "mass"), ((-1.0, 1.0), "mass"), ((float("nan"), 1.0), "mass"),
-    ((1.0, -1.0), "stiffness"), ((1.0, float("inf")), "stiffness"), (("a", 1.0), "mass"),
-])
+@pytest.mark.parametrize(
+    ("args", "name"),
+    [
+        ((0.0, 1.0), "mass"),
+        ((-1.0, 1.0), "mass"),
+        ((float("nan"), 1.0), "mass"),
+        ((1.0, -1.0), "stiffness"),
+        ((1.0, float("inf")), "stiffness"),
+        (("a", 1.0), "mass"),
+    ],
+)
 def test_bad_particles_are_refused_by_name(args: tuple[object, object], name: str) -> None:
     with pytest.raises(ps.PoinsotError, match=f"^{name}"):
         ps.SpringParticle(*args)  # type: ignore[arg-type]

@@ -10,10 +10,9 @@ import numpy as np
 import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
-from scipy.spatial.transform import Rotation
-
 from poinsot import FreeRigidBody
 from poinsot.errors import PoinsotError
+from scipy.spatial.transform import Rotation
 
 #: T and |L| of the exact solution are conserved to ~1e-13 relative (test_free.py); the
 #: contact conditions are products of O(1) numbers on top of that.
@@ -34,7 +33,9 @@ def test_convention_contact_point_is_omega_over_root_2T_in_space_and_body() -> N
     rho = body.contact_point(t)
     assert rho.shape == rho_b.shape == (81, 3)
     np.testing.assert_allclose(rho_b * s, w, rtol=0, atol=1e-14 * s)
-    np.testing.assert_allclose(rho, np.einsum("nij,nj->ni", matrices(q), rho_b), rtol=0, atol=CONTACT_TOL)
+    np.testing.assert_allclose(
+        rho, np.einsum("nij,nj->ni", matrices(q), rho_b), rtol=0, atol=CONTACT_TOL
+    )
     np.testing.assert_allclose(rho * s, body.herpolhode(t), rtol=0, atol=1e-14 * s)
     # Broadcasting over t's shape, like the other methods.
     assert body.contact_point(t.reshape(9, 9)).shape == (9, 9, 3)
@@ -47,7 +48,9 @@ def test_convention_contact_point_is_omega_over_root_2T_in_space_and_body() -> N
     w=st.lists(st.floats(-3.0, 3.0), min_size=3, max_size=3),
     t=st.floats(0.0, 60.0),
 )
-def test_contact_point_is_on_the_ellipsoid_and_the_plane_and_tangent(m: list[float], w: list[float], t: float) -> None:
+def test_contact_point_is_on_the_ellipsoid_and_the_plane_and_tangent(
+    m: list[float], w: list[float], t: float
+) -> None:
     srt = sorted(m)
     assume(srt[0] + srt[1] >= 1.01 * srt[2] and np.linalg.norm(w) > 0.1)
     body = FreeRigidBody(m, w)
@@ -81,7 +84,9 @@ def test_contact_polhode_is_the_scaled_polhode_on_the_ellipsoid() -> None:
     body = FreeRigidBody([1.0, 2.0, 3.0], [0.05, 1.0, 0.05])
     p = body.contact_polhode(101)
     np.testing.assert_allclose(p * np.sqrt(2 * body.energy), body.polhode(101), rtol=0, atol=1e-13)
-    np.testing.assert_allclose(np.einsum("ni,i,ni->n", p, [1.0, 2.0, 3.0], p), 1.0, rtol=0, atol=CONTACT_TOL)
+    np.testing.assert_allclose(
+        np.einsum("ni,i,ni->n", p, [1.0, 2.0, 3.0], p), 1.0, rtol=0, atol=CONTACT_TOL
+    )
     np.testing.assert_allclose(p[0], p[-1], atol=1e-12)  # one period: closed
 
 

@@ -26,14 +26,13 @@ import sys
 from pathlib import Path
 
 import numpy as np
+import poinsot as ps
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-import poinsot as ps
-
 sys.path.insert(0, str(Path(__file__).parent))
-import fuzz_surface as fz  # noqa: E402
+import fuzz_surface as fz
 
 EXAMPLES = int(os.environ.get("POINSOT_FUZZ_EXAMPLES", "300"))
 
@@ -53,9 +52,13 @@ def test_every_public_name_is_fuzzed(sites: list[fz.Site]) -> None:
 
     for name, obj, module in fz.public_names():
         if inspect.isclass(obj) and not issubclass(obj, (BaseException, Warning)):
-            has_methods = any(inspect.isfunction(v) and not a.startswith("_") for a, v in vars(obj).items())
+            has_methods = any(
+                inspect.isfunction(v) and not a.startswith("_") for a, v in vars(obj).items()
+            )
             if has_methods:
-                assert name in fz.INSTANCES, f"{module}.{name}: add a valid instance to fuzz_surface.INSTANCES"
+                assert name in fz.INSTANCES, (
+                    f"{module}.{name}: add a valid instance to fuzz_surface.INSTANCES"
+                )
     assert len(sites) > 100, len(sites)
 
 
@@ -63,24 +66,29 @@ def test_valid_calls_keep_the_contract(sites: list[fz.Site]) -> None:
     """The harness's positive control: every site called with its valid arguments succeeds."""
     problems = []
     for site in sites:
-        problems += [p for p in fz.run_call(site, dict(site.valid))]
+        problems += list(fz.run_call(site, dict(site.valid)))
     assert not problems, "\n".join(problems)
 
 
 def test_the_harness_catches_broken_contracts() -> None:
     """Negative controls: a NaN result, a stray exception type, an error naming no argument, a
     panic and a hang are each reported."""
+
     def make(func):  # type: ignore[no-untyped-def]
         return fz.Site("fake", func, [], {}, [])
 
     assert fz.run_call(make(lambda: np.array([1.0, np.nan])), {})
     assert fz.run_call(make(lambda: [][1]), {})
+
     def wrong_name():  # type: ignore[no-untyped-def]
         raise ps.PoinsotError("mc: must be finite")
+
     assert fz.run_call(make(wrong_name), {})
+
     def hang():  # type: ignore[no-untyped-def]
         while True:
             pass
+
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(fz, "DEADLINE_S", 0.2)
         with fz.deadline(0.2):
@@ -149,10 +157,15 @@ def test_huge_sizes(tmp_path: Path) -> None:
         "            print('CALL', site.qualname, p.name, bad, flush=True)\n"
         "            calls += 1\n"
         "            problems += fz.run_call(site, args)\n"
-        "print('RESULT', json.dumps({'calls': calls, 'problems': problems}))\n")
-    proc = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, timeout=600)
+        "print('RESULT', json.dumps({'calls': calls, 'problems': problems}))\n"
+    )
+    proc = subprocess.run(
+        [sys.executable, str(script)], capture_output=True, text=True, timeout=600
+    )
     lines = proc.stdout.splitlines()
-    assert proc.returncode == 0, f"the child died ({proc.returncode}) after {lines[-1:]}: {proc.stderr[-2000:]}"
+    assert proc.returncode == 0, (
+        f"the child died ({proc.returncode}) after {lines[-1:]}: {proc.stderr[-2000:]}"
+    )
     result = json.loads(lines[-1].split(" ", 1)[1])
     assert result["calls"] > 20
     assert not result["problems"], "\n".join(result["problems"])
@@ -189,7 +202,9 @@ def _calls(draw: st.DrawFn, sites: list[fz.Site]) -> tuple[fz.Site, dict[str, ob
     site = draw(st.sampled_from([s for s in sites if s.params]))
     args = dict(site.valid)
     names = [p.name for p in site.params]
-    chosen = draw(st.lists(st.sampled_from(names), min_size=1, max_size=min(3, len(names)), unique=True))
+    chosen = draw(
+        st.lists(st.sampled_from(names), min_size=1, max_size=min(3, len(names)), unique=True)
+    )
     for name in chosen:
         value = _random_value(draw, name, site.valid.get(name))
         if name in _SIZE_PARAMS and _is_huge(value):
@@ -203,15 +218,25 @@ def test_hypothesis(sites: list[fz.Site]) -> None:
 
     calls = [0]
 
-    @settings(max_examples=EXAMPLES, deadline=None, derandomize=EXAMPLES <= 1000,
-              suppress_health_check=list(HealthCheck), database=None)
+    @settings(
+        max_examples=EXAMPLES,
+        deadline=None,
+        derandomize=EXAMPLES <= 1000,
+        suppress_health_check=list(HealthCheck),
+        database=None,
+    )
     @given(_calls(sites))
     def check(call: tuple[fz.Site, dict[str, object]]) -> None:
         site, args = call
         calls[0] += 1
         problems = fz.run_call(site, args)
-        assert not problems, "\n".join(problems) + "\n    with " + ", ".join(
-            f"{k}={fz.describe(v)}" for k, v in args.items() if v is not site.valid.get(k))
+        assert not problems, (
+            "\n".join(problems)
+            + "\n    with "
+            + ", ".join(
+                f"{k}={fz.describe(v)}" for k, v in args.items() if v is not site.valid.get(k)
+            )
+        )
 
     check()
     print(f"fuzz hypothesis: {calls[0]} calls, 0 problems")

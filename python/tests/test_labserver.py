@@ -18,7 +18,6 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
-
 from poinsot import _labserver
 from poinsot._labserver import LabServer, resolve_request, start_in_thread
 from poinsot.cli import main
@@ -47,7 +46,9 @@ def server(site: Path) -> Iterator[LabServer]:
     srv.server_close()
 
 
-def request(srv: LabServer, path: str, method: str = "GET", host: str | None = None) -> tuple[int, bytes, dict[str, str]]:
+def request(
+    srv: LabServer, path: str, method: str = "GET", host: str | None = None
+) -> tuple[int, bytes, dict[str, str]]:
     """Send `path` verbatim (http.client does not normalise it) and return status, body, headers."""
     conn = http.client.HTTPConnection("127.0.0.1", srv.server_address[1], timeout=5)
     try:
@@ -70,7 +71,11 @@ def test_serves_the_page_and_its_assets_with_their_types(server: LabServer) -> N
     status, _, headers = request(server, "/assets/app.js?v=1#frag")
     assert status == 200 and headers["content-type"].startswith("text/javascript")
     status, body, headers = request(server, "/assets/core.wasm")
-    assert status == 200 and headers["content-type"] == "application/wasm" and body.startswith(b"\x00asm")
+    assert (
+        status == 200
+        and headers["content-type"] == "application/wasm"
+        and body.startswith(b"\x00asm")
+    )
     status, body, _ = request(server, "/index.html", method="HEAD")
     assert status == 200 and body == b""
 
@@ -144,7 +149,9 @@ def test_binds_to_loopback_only(server: LabServer, site: Path) -> None:
             LabServer(site, 0, host=host)
     # Not reachable through any other local address of this machine.
     try:
-        others = {ai[4][0] for ai in socket.getaddrinfo(socket.gethostname(), None, socket.AF_INET)} - {"127.0.0.1"}
+        others = {
+            ai[4][0] for ai in socket.getaddrinfo(socket.gethostname(), None, socket.AF_INET)
+        } - {"127.0.0.1"}
     except OSError:
         others = set()
     for addr in sorted(a for a in others if not a.startswith("127.")):
@@ -166,7 +173,9 @@ def test_bad_port_is_refused(site: Path) -> None:
         LabServer(site, 70000)
 
 
-def test_cli_without_a_built_page_says_how_to_build_it(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+def test_cli_without_a_built_page_says_how_to_build_it(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
     monkeypatch.setattr(_labserver, "page_dir", lambda: tmp_path / "nothing")
     result = CliRunner().invoke(main, ["lab", "--no-browser"])
     assert result.exit_code != 0
@@ -210,16 +219,27 @@ def test_an_overlong_path_segment_is_404_and_the_connection_is_answered(
 ) -> None:
     # A segment longer than NAME_MAX (255) made the file system raise ENAMETOOLONG: the
     # connection was dropped without an answer and a traceback was printed (item 15).
-    for path in ("/" + "a" * n, "/assets/" + "b" * n + "/app.js", "/" + "%41" * n, "/" + "%C3%A9" * (n // 2)):
+    for path in (
+        "/" + "a" * n,
+        "/assets/" + "b" * n + "/app.js",
+        "/" + "%41" * n,
+        "/" + "%C3%A9" * (n // 2),
+    ):
         status, body, _ = request(server, path)
         # 404; 414 where the whole request path is too long to be looked at
-        assert status == (414 if len(path) > _labserver.MAX_REQUEST_PATH else 404), (n, path[:20], status)
+        assert status == (414 if len(path) > _labserver.MAX_REQUEST_PATH else 404), (
+            n,
+            path[:20],
+            status,
+        )
         assert SECRET not in body
     assert request(server, "/")[0] == 200  # still serving
     assert "Traceback" not in capsys.readouterr().err
 
 
-def test_an_overlong_request_path_is_414(server: LabServer, capsys: pytest.CaptureFixture[str]) -> None:
+def test_an_overlong_request_path_is_414(
+    server: LabServer, capsys: pytest.CaptureFixture[str]
+) -> None:
     for path in ("/" + "a" * 5000, "/" + "a/" * 2000 + "index.html"):
         status, _, _ = request(server, path)
         assert status == 414
@@ -360,13 +380,18 @@ def test_two_hundred_parallel_clients_are_all_served(server: LabServer) -> None:
 @pytest.fixture()
 def big_site(site: Path) -> Path:
     # A compressible script (like the page's bundles) and an incompressible picture.
-    lines = [f"export function f{i}(x) {{ return x * {i} + Math.sin(x / {i + 1}); }}\n" for i in range(3000)]
+    lines = [
+        f"export function f{i}(x) {{ return x * {i} + Math.sin(x / {i + 1}); }}\n"
+        for i in range(3000)
+    ]
     (site / "assets" / "bundle.js").write_text("".join(lines))
     (site / "assets" / "pic.png").write_bytes(os.urandom(20000))
     return site
 
 
-def get(srv: LabServer, path: str, headers: dict[str, str], method: str = "GET") -> tuple[int, bytes, dict[str, str]]:
+def get(
+    srv: LabServer, path: str, headers: dict[str, str], method: str = "GET"
+) -> tuple[int, bytes, dict[str, str]]:
     conn = http.client.HTTPConnection("127.0.0.1", srv.server_address[1], timeout=5)
     try:
         conn.request(method, path, headers=headers)
@@ -390,18 +415,24 @@ def test_compressible_assets_are_sent_gzipped_to_clients_that_accept_it(big_site
         assert h["content-type"].startswith("text/javascript")
         assert h["x-content-type-options"] == "nosniff" and "content-security-policy" in h
         # HEAD: the same headers, no body
-        status, hbody, hh = get(srv, "/assets/bundle.js", {"Accept-Encoding": "gzip"}, method="HEAD")
+        status, hbody, hh = get(
+            srv, "/assets/bundle.js", {"Accept-Encoding": "gzip"}, method="HEAD"
+        )
         assert status == 200 and hbody == b"" and hh["content-length"] == h["content-length"]
         assert hh["etag"] == h["etag"]
         # no Accept-Encoding, gzip refused by q=0, or only an unknown coding: the file as it is
         for accept in (None, "gzip;q=0", "identity", "br", "*;q=0", "gzip;q=0, *"):
-            status, body, h2 = get(srv, "/assets/bundle.js", {} if accept is None else {"Accept-Encoding": accept})
+            status, body, h2 = get(
+                srv, "/assets/bundle.js", {} if accept is None else {"Accept-Encoding": accept}
+            )
             assert status == 200 and body == original, accept
             assert "content-encoding" not in h2 and int(h2["content-length"]) == len(original)
             assert "accept-encoding" in h2["vary"].lower() and h2["etag"] != h["etag"]
         for accept in ("*", "GZIP", "x-gzip", "deflate, gzip;q=0.5"):
             status, body, h3 = get(srv, "/assets/bundle.js", {"Accept-Encoding": accept})
-            assert h3.get("content-encoding") == "gzip" and gzip.decompress(body) == original, accept
+            assert h3.get("content-encoding") == "gzip" and gzip.decompress(body) == original, (
+                accept
+            )
         # negative control: a picture is not worth compressing and is sent as it is
         pic = (big_site / "assets" / "pic.png").read_bytes()
         status, body, h4 = get(srv, "/assets/pic.png", {"Accept-Encoding": "gzip"})
@@ -416,14 +447,18 @@ def test_etag_revalidation_and_a_changed_file(big_site: Path) -> None:
     try:
         status, body, h = get(srv, "/index.html", {"Accept-Encoding": "gzip"})
         etag = h["etag"]
-        status, body, h304 = get(srv, "/index.html", {"Accept-Encoding": "gzip", "If-None-Match": etag})
+        status, body, h304 = get(
+            srv, "/index.html", {"Accept-Encoding": "gzip", "If-None-Match": etag}
+        )
         assert status == 304 and body == b"" and h304["etag"] == etag
         # a new build of the page: the cache notices (size and mtime) and serves the new bytes
         new = b"<!doctype html><title>lab, rebuilt</title>" + b" " * 100
         (big_site / "index.html").write_bytes(new)
         st = (big_site / "index.html").stat()
         os.utime(big_site / "index.html", ns=(st.st_atime_ns, st.st_mtime_ns + 10**9))
-        status, body, h2 = get(srv, "/index.html", {"Accept-Encoding": "gzip", "If-None-Match": etag})
+        status, body, h2 = get(
+            srv, "/index.html", {"Accept-Encoding": "gzip", "If-None-Match": etag}
+        )
         assert status == 200 and h2["etag"] != etag
         assert (gzip.decompress(body) if h2.get("content-encoding") == "gzip" else body) == new
     finally:
@@ -438,7 +473,9 @@ def test_nothing_outside_the_page_is_served_gzipped_either(server: LabServer, pa
     assert SECRET not in body and gzip.compress(SECRET, mtime=0)[10:30] not in body
 
 
-def get_raw_path(srv: LabServer, path: str, headers: dict[str, str]) -> tuple[int, bytes, dict[str, str]]:
+def get_raw_path(
+    srv: LabServer, path: str, headers: dict[str, str]
+) -> tuple[int, bytes, dict[str, str]]:
     conn = http.client.HTTPConnection("127.0.0.1", srv.server_address[1], timeout=5)
     try:
         conn.putrequest("GET", path, skip_accept_encoding=True)
@@ -451,12 +488,16 @@ def get_raw_path(srv: LabServer, path: str, headers: dict[str, str]) -> tuple[in
         conn.close()
 
 
-def test_a_client_that_goes_away_prints_no_traceback(big_site: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_a_client_that_goes_away_prints_no_traceback(
+    big_site: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     srv = start_in_thread(big_site)
     try:
         for _ in range(20):
             s = socket.create_connection(("127.0.0.1", srv.server_address[1]), timeout=5)
-            s.setsockopt(socket.SOL_SOCKET, socket.SO_LINGER, struct.pack("ii", 1, 0))  # RST on close
+            s.setsockopt(
+                socket.SOL_SOCKET, socket.SO_LINGER, struct.pack("ii", 1, 0)
+            )  # RST on close
             s.sendall(b"GET /assets/bundle.js HTTP/1.0\r\nHost: 127.0.0.1\r\n\r\n")
             s.close()
         assert request(srv, "/")[0] == 200
@@ -467,9 +508,12 @@ def test_a_client_that_goes_away_prints_no_traceback(big_site: Path, capsys: pyt
 
 
 def test_server_limits_are_checked(site: Path) -> None:
-    for kwargs, name in (({"max_workers": 0}, "max_workers"), ({"connection_timeout": 0.0}, "connection_timeout"),
-                         ({"connection_timeout": float("inf")}, "connection_timeout"),
-                         ({"connection_timeout": float("nan")}, "connection_timeout"),
-                         ({"max_pending": 0}, "max_pending")):
+    for kwargs, name in (
+        ({"max_workers": 0}, "max_workers"),
+        ({"connection_timeout": 0.0}, "connection_timeout"),
+        ({"connection_timeout": float("inf")}, "connection_timeout"),
+        ({"connection_timeout": float("nan")}, "connection_timeout"),
+        ({"max_pending": 0}, "max_pending"),
+    ):
         with pytest.raises(ValueError, match=name):
             LabServer(site, 0, **kwargs)  # type: ignore[arg-type]

@@ -14,9 +14,8 @@ import textwrap
 import time
 
 import numpy as np
-import pytest
-
 import poinsot as ps
+import pytest
 
 #: The issue's bound on the time from SIGINT to KeyboardInterrupt (s).
 INTERRUPT_LATENCY = 0.2
@@ -38,7 +37,9 @@ def test_memory_budget_refuses_huge_outputs_before_allocating() -> None:
         lambda: ps.FreeRigidBody([1, 2, 3], [1, 0.1, 1]).contact_polhode(10**12),
     ]
     for call in calls:
-        with pytest.raises(ps.PoinsotError, match=r"^(samples|parcels): .*would need [0-9.e]+ bytes"):
+        with pytest.raises(
+            ps.PoinsotError, match=r"^(samples|parcels): .*would need [0-9.e]+ bytes"
+        ):
             call()
 
 
@@ -71,7 +72,9 @@ def test_step_limits_are_checked_before_the_first_step() -> None:
     the keyword that raises the limit (it used to set out on them). The batch with
     ``dt=1e-308`` used to hang."""
     t0 = time.perf_counter()
-    with pytest.raises(ps.PoinsotError, match=r"^max_steps: the request needs 1\.0000e14 steps.*raise max_steps"):
+    with pytest.raises(
+        ps.PoinsotError, match=r"^max_steps: the request needs 1\.0000e14 steps.*raise max_steps"
+    ):
         ps.simulate([1, 2, 3], [0.1, 0.5, 1], 1e12, method="splitting4", dt=0.01)
     with pytest.raises(ps.PoinsotError, match=r"^max_steps: the request needs 1\.0000e308 steps"):
         ps.simulate_batch([[1, 2, 3]], [[0.1, 0.5, 1]], 1.0, method="rk4", dt=1e-308)
@@ -79,13 +82,16 @@ def test_step_limits_are_checked_before_the_first_step() -> None:
         ps.simulate([1, 2, 3], [0.1, 0.5, 1], 10.0, method="rk4", dt=0.01, max_steps=999)
     assert time.perf_counter() - t0 < 1.0
     # Raising the limit allows the request (negative control: the limit is what refused it).
-    tr = ps.simulate([1, 2, 3], [0.1, 0.5, 1], 10.0, method="rk4", dt=0.01, samples=11, max_steps=1000)
+    tr = ps.simulate(
+        [1, 2, 3], [0.1, 0.5, 1], 10.0, method="rk4", dt=0.01, samples=11, max_steps=1000
+    )
     assert tr.steps == 1000
 
 
 def test_an_exception_in_progress_stops_the_run() -> None:
     """The callback's exception propagates and the run stops there (it used to be kept and the
     run went on to the end)."""
+
     class Stop(Exception):
         pass
 
@@ -97,13 +103,27 @@ def test_an_exception_in_progress_stops_the_run() -> None:
 
     t0 = time.perf_counter()
     with pytest.raises(Stop):
-        ps.simulate([1, 2, 3], [0.1, 0.5, 1], 1e6, method="rk4", dt=1e-3, samples=11, max_steps=10**10,
-                    progress=progress)
+        ps.simulate(
+            [1, 2, 3],
+            [0.1, 0.5, 1],
+            1e6,
+            method="rk4",
+            dt=1e-3,
+            samples=11,
+            max_steps=10**10,
+            progress=progress,
+        )
     assert len(calls) == 1 and 0 <= calls[0] < 0.01
     assert time.perf_counter() - t0 < 2.0  # the whole run takes minutes
     with pytest.raises(Stop):
-        ps.simulate_batch(np.tile([1.0, 2.0, 3.0], (64, 1)), np.tile([0.1, 0.5, 1.0], (64, 1)), 1e5,
-                          dt=1e-3, max_steps=10**9, progress=progress)
+        ps.simulate_batch(
+            np.tile([1.0, 2.0, 3.0], (64, 1)),
+            np.tile([0.1, 0.5, 1.0], (64, 1)),
+            1e5,
+            dt=1e-3,
+            max_steps=10**9,
+            progress=progress,
+        )
 
 
 _CHILD = """
@@ -143,7 +163,9 @@ def test_ctrl_c_stops_long_runs(name: str) -> None:
     assert proc.returncode == 0, proc.stderr[-2000:]
     word, seconds = proc.stdout.split()
     assert word == "INTERRUPTED", f"{name} ran to the end in {seconds} s without seeing Ctrl-C"
-    assert float(seconds) < INTERRUPT_LATENCY, f"{name}: KeyboardInterrupt came {seconds} s after SIGINT"
+    assert float(seconds) < INTERRUPT_LATENCY, (
+        f"{name}: KeyboardInterrupt came {seconds} s after SIGINT"
+    )
 
 
 def test_a_panic_never_reaches_the_user(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -155,7 +177,7 @@ def test_a_panic_never_reaches_the_user(monkeypatch: pytest.MonkeyPatch) -> None
     raw = None
     try:
         _core._test_panic("boom")
-    except BaseException as exc:  # noqa: BLE001 - the raw panic is what we look at
+    except BaseException as exc:
         raw = exc
     assert raw is not None and type(raw).__name__ == "PanicException"
     assert not isinstance(raw, Exception)  # why it must not reach users
@@ -169,7 +191,7 @@ def test_a_panic_never_reaches_the_user(monkeypatch: pytest.MonkeyPatch) -> None
         ps.euler_to_matrix([0.1, 0.2, 0.3])
     body = ps.RigidBody.cuboid(1.0, (1, 2, 3))
     monkeypatch.setattr(ps.RigidBody, "_wrap", classmethod(lambda cls, *a, **k: panicking()))
-    with pytest.raises(ps.InternalError, match="^RigidBody.translated: "):   # a method
+    with pytest.raises(ps.InternalError, match="^RigidBody.translated: "):  # a method
         body.translated([1, 0, 0])
     with pytest.raises(ps.InternalError, match="^RigidBody.solid_sphere: "):  # a class method
         ps.RigidBody.solid_sphere(1.0, 1.0)

@@ -9,9 +9,8 @@ import inspect
 import re
 from pathlib import Path
 
-import pytest
-
 import poinsot
+import pytest
 from poinsot import _core
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -26,7 +26,10 @@ def test_cones_polhodes_conservation_and_animation(tmp_path):
     assert "prolate" in fig.axes[0].get_title()
     fig = plots_free.plot_polhodes((1.0, 2.0, 3.0), n=5)
     assert len(fig.axes[0].get_lines()) >= 4
-    runs = [ps.simulate([1, 2, 3], [1, 0.1, 1], 50.0, method=m, dt=0.01, samples=51) for m in ("splitting2", "rk4")]
+    runs = [
+        ps.simulate([1, 2, 3], [1, 0.1, 1], 50.0, method=m, dt=0.01, samples=51)
+        for m in ("splitting2", "rk4")
+    ]
     fig = plots_free.plot_conservation(runs)
     assert fig.axes[0].get_xscale() == "log" and fig.axes[0].get_yscale() == "log"
     anim = plots_free.animate_tumbling_box(frames=5, path=tmp_path / "box.gif")

@@ -11,12 +11,10 @@ import math
 import warnings
 
 import numpy as np
+import poinsot
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from scipy.spatial.transform import Rotation
-
-import poinsot
 from poinsot import (
     EULER_SEQUENCES,
     GimbalLockWarning,
@@ -30,6 +28,7 @@ from poinsot import (
     quaternion_to_matrix,
     rotate_vectors,
 )
+from scipy.spatial.transform import Rotation
 
 # Round-off of three elementary rotations multiplied (and of scipy's quaternion route): a few eps.
 MATRIX_TOL = 1e-14
@@ -169,7 +168,9 @@ def test_convention_uppercase_is_rejected_not_reinterpreted() -> None:
 @pytest.mark.parametrize(("seq", "intrinsic"), CONVENTIONS)
 @HYP
 @given(a=angle, b=angle, c=angle)
-def test_euler_to_matrix_matches_scipy(seq: str, intrinsic: bool, a: float, b: float, c: float) -> None:
+def test_euler_to_matrix_matches_scipy(
+    seq: str, intrinsic: bool, a: float, b: float, c: float
+) -> None:
     ours = euler_to_matrix([a, b, c], seq, intrinsic=intrinsic)
     ref = Rotation.from_euler(scipy_seq(seq, intrinsic), [a, b, c]).as_matrix()
     np.testing.assert_allclose(ours, ref, atol=MATRIX_TOL)
@@ -241,7 +242,9 @@ def test_quaternion_multiply_composes_like_matrices(a: float, b: float, c: float
 def test_quaternion_normalize_flag() -> None:
     with pytest.raises(InvalidRotationError, match=r"q: .*unit quaternion"):
         quaternion_to_matrix([2.0, 0.0, 0.0, 0.0])
-    np.testing.assert_allclose(quaternion_to_matrix([2.0, 0.0, 0.0, 0.0], normalize=True), np.eye(3))
+    np.testing.assert_allclose(
+        quaternion_to_matrix([2.0, 0.0, 0.0, 0.0], normalize=True), np.eye(3)
+    )
 
 
 def test_degrees_and_broadcasting_and_scipy_input() -> None:
@@ -249,10 +252,14 @@ def test_degrees_and_broadcasting_and_scipy_input() -> None:
     a = rng.uniform(-3, 3, (4, 5, 3))
     r = euler_to_matrix(a, "yxz", intrinsic=False)
     assert r.shape == (4, 5, 3, 3)
-    np.testing.assert_allclose(euler_to_matrix(np.degrees(a), "yxz", intrinsic=False, degrees=True), r, atol=1e-15)
+    np.testing.assert_allclose(
+        euler_to_matrix(np.degrees(a), "yxz", intrinsic=False, degrees=True), r, atol=1e-15
+    )
     back = matrix_to_euler(r, "yxz", intrinsic=False, degrees=True)
     assert back.shape == (4, 5, 3)
-    np.testing.assert_allclose(euler_to_matrix(back, "yxz", intrinsic=False, degrees=True), r, atol=MATRIX_TOL)
+    np.testing.assert_allclose(
+        euler_to_matrix(back, "yxz", intrinsic=False, degrees=True), r, atol=MATRIX_TOL
+    )
     # scipy Rotation accepted wherever a rotation is taken (single and stacked).
     single = Rotation.from_euler("ZXZ", [0.3, 1.1, -2.0])
     np.testing.assert_allclose(matrix_to_euler(single), [0.3, 1.1, -2.0], atol=1e-14)
@@ -311,18 +318,34 @@ REFLECTION = np.diag([1.0, 1.0, -1.0])
         (lambda: matrix_to_euler(np.full((3, 3), math.nan)), PoinsotError, r"^R: .*finite"),
         (lambda: matrix_to_euler(np.eye(4)), PoinsotError, r"^R: .*shape"),
         (lambda: matrix_to_euler(2 * np.eye(3)), InvalidRotationError, r"^R: .*orthonormal"),
-        (lambda: matrix_to_euler(REFLECTION), InvalidRotationError, r"^R: .*det R = -1.*reflection"),
+        (
+            lambda: matrix_to_euler(REFLECTION),
+            InvalidRotationError,
+            r"^R: .*det R = -1.*reflection",
+        ),
         (lambda: matrix_to_quaternion(REFLECTION), InvalidRotationError, r"^R: .*reflection"),
         (lambda: rotate_vectors(REFLECTION, [1, 0, 0]), InvalidRotationError, r"^R: "),
         (lambda: rotate_vectors(np.eye(3), [1, math.nan, 0]), PoinsotError, r"^v: .*finite"),
-        (lambda: rotate_vectors(np.eye(3)[None].repeat(2, 0), np.ones((3, 3))), PoinsotError, r"^v: .*broadcast"),
+        (
+            lambda: rotate_vectors(np.eye(3)[None].repeat(2, 0), np.ones((3, 3))),
+            PoinsotError,
+            r"^v: .*broadcast",
+        ),
         (lambda: check_rotation_matrix(REFLECTION), InvalidRotationError, r"^R: .*reflection"),
         (lambda: check_rotation_matrix(np.eye(3), tol=-1.0), PoinsotError, r"^tol: "),
         (lambda: quaternion_to_matrix([0.0, 0.0, 0.0, 0.0]), InvalidRotationError, r"^q: .*zero"),
-        (lambda: quaternion_to_matrix([0.0, 0.0, 0.0, 0.0], normalize=True), InvalidRotationError, r"^q: .*zero"),
+        (
+            lambda: quaternion_to_matrix([0.0, 0.0, 0.0, 0.0], normalize=True),
+            InvalidRotationError,
+            r"^q: .*zero",
+        ),
         (lambda: quaternion_to_matrix([1.0, 0.0, math.nan, 0.0]), PoinsotError, r"^q: .*finite"),
         (lambda: quaternion_to_matrix([1.0, 0.0, 0.0]), PoinsotError, r"^q: .*shape"),
-        (lambda: quaternion_multiply([1.0, math.inf, 0, 0], [1.0, 0, 0, 0]), PoinsotError, r"^p: .*finite"),
+        (
+            lambda: quaternion_multiply([1.0, math.inf, 0, 0], [1.0, 0, 0, 0]),
+            PoinsotError,
+            r"^p: .*finite",
+        ),
     ],
 )
 def test_bad_input_is_named(call, exc, pattern) -> None:  # type: ignore[no-untyped-def]

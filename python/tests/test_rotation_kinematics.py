@@ -11,7 +11,6 @@ import pytest
 import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
 from poinsot import (
     EULER_SEQUENCES,
     GimbalLockError,
@@ -40,8 +39,8 @@ def sympy_zxz() -> tuple[sp.Expr, ...]:
     skew(omega_body) = R^T dR/dt, skew(omega_space) = dR/dt R^T, simplified."""
     t = sp.symbols("t")
     phi, theta, psi = (sp.Function(n)(t) for n in ("phi", "theta", "psi"))
-    rz = lambda a: sp.Matrix([[sp.cos(a), -sp.sin(a), 0], [sp.sin(a), sp.cos(a), 0], [0, 0, 1]])  # noqa: E731
-    rx = lambda a: sp.Matrix([[1, 0, 0], [0, sp.cos(a), -sp.sin(a)], [0, sp.sin(a), sp.cos(a)]])  # noqa: E731
+    rz = lambda a: sp.Matrix([[sp.cos(a), -sp.sin(a), 0], [sp.sin(a), sp.cos(a), 0], [0, 0, 1]])
+    rx = lambda a: sp.Matrix([[1, 0, 0], [0, sp.cos(a), -sp.sin(a)], [0, sp.sin(a), sp.cos(a)]])
     r = rz(phi) * rx(theta) * rz(psi)
     rdot = r.diff(t)
     wb = sp.simplify(r.T * rdot)
@@ -60,7 +59,7 @@ def test_unit_eq_2_99_matches_sympy_symbolically() -> None:
     """The sympy derivation reduces to the unit's 2.99 (with its erratum omega_3 = omega_zeta):
     omega_1 = phidot sin(theta) sin(psi) + thetadot cos(psi), omega_2 = phidot sin(theta) cos(psi)
     - thetadot sin(psi), omega_3 = phidot cos(theta) + psidot."""
-    phi, theta, psi, dphi, dtheta, dpsi, *rest = sympy_zxz()
+    _phi, theta, psi, dphi, dtheta, dpsi, *rest = sympy_zxz()
     body = rest[:3]
     eq_299 = [
         dphi * sp.sin(theta) * sp.sin(psi) + dtheta * sp.cos(psi),
@@ -93,9 +92,10 @@ def test_unit_eq_2_101_symmetric_top_energy() -> None:
         (phi, theta, psi), (dphi, dtheta, dpsi) = rng.uniform(-3, 3, (2, 3))
         w = body_angular_velocity([phi, theta, psi], [dphi, dtheta, dpsi])
         t_200 = 0.5 * (i1 * w[0] ** 2 + i1 * w[1] ** 2 + i3 * w[2] ** 2)
-        t_201 = 0.5 * i1 * (dtheta**2 + dphi**2 * math.sin(theta) ** 2) + 0.5 * i3 * (
-            dpsi + dphi * math.cos(theta)
-        ) ** 2
+        t_201 = (
+            0.5 * i1 * (dtheta**2 + dphi**2 * math.sin(theta) ** 2)
+            + 0.5 * i3 * (dpsi + dphi * math.cos(theta)) ** 2
+        )
         assert t_200 == pytest.approx(t_201, rel=1e-14)
 
 

@@ -10,9 +10,8 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from scipy.spatial.transform import Rotation
-
 from poinsot import PoinsotError, euler_to_matrix, screw_axis
+from scipy.spatial.transform import Rotation
 
 # Round-off of Rodrigues' formula, of the axis extraction and of one composition: a few eps
 # on quantities of order 1–10.

@@ -10,8 +10,6 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from scipy.spatial.transform import Rotation
-
 from poinsot import (
     InvalidRotationError,
     PoinsotError,
@@ -21,6 +19,7 @@ from poinsot import (
     rotation_axis,
     screw_axis,
 )
+from scipy.spatial.transform import Rotation
 
 EPS = np.finfo(float).eps
 # Round-off of Rodrigues' formula and of the extraction: a few eps.
@@ -90,7 +89,9 @@ def test_rotation_axis_random_against_scipy(v: tuple[float, float, float], theta
         np.testing.assert_allclose(n * angle, ref, atol=1e-13)
     # scipy's Rodrigues agrees with poinsot's
     np.testing.assert_allclose(
-        Rotation.from_rotvec(np.array(v) / np.linalg.norm(v) * theta).as_matrix(), r, atol=MATRIX_TOL
+        Rotation.from_rotvec(np.array(v) / np.linalg.norm(v) * theta).as_matrix(),
+        r,
+        atol=MATRIX_TOL,
     )
 
 
@@ -191,15 +192,27 @@ def test_screw_is_frozen_and_checks_input() -> None:
     [
         (lambda: axis_angle_to_matrix([0.0, 0.0, 0.0], 1.0), PoinsotError, r"^axis: .*non-zero"),
         (lambda: axis_angle_to_matrix([0.0, math.nan, 1.0], 1.0), PoinsotError, r"^axis: .*finite"),
-        (lambda: axis_angle_to_matrix([0.0, 0.0, 1.0], math.inf), PoinsotError, r"^angle: .*finite"),
+        (
+            lambda: axis_angle_to_matrix([0.0, 0.0, 1.0], math.inf),
+            PoinsotError,
+            r"^angle: .*finite",
+        ),
         (lambda: axis_angle_to_matrix([0.0, 1.0], 1.0), PoinsotError, r"^axis: .*shape"),
-        (lambda: rotation_axis(np.diag([1.0, -1.0, 1.0])), InvalidRotationError, r"^R: .*reflection"),
+        (
+            lambda: rotation_axis(np.diag([1.0, -1.0, 1.0])),
+            InvalidRotationError,
+            r"^R: .*reflection",
+        ),
         (lambda: rotation_axis(np.ones((3, 3))), InvalidRotationError, r"^R: .*orthonormal"),
         (lambda: rotation_axis(np.full((3, 3), math.inf)), PoinsotError, r"^R: .*finite"),
         (lambda: rotation_axis(np.eye(2)), PoinsotError, r"^R: .*shape"),
         (lambda: screw_axis(np.eye(3), [1.0, math.nan, 0.0]), PoinsotError, r"^t: .*finite"),
         (lambda: screw_axis(np.eye(3), [1.0, 0.0]), PoinsotError, r"^t: .*shape"),
-        (lambda: screw_axis(np.stack([np.eye(3)] * 2), [1.0, 0.0, 0.0]), PoinsotError, r"^R: .*one rotation"),
+        (
+            lambda: screw_axis(np.stack([np.eye(3)] * 2), [1.0, 0.0, 0.0]),
+            PoinsotError,
+            r"^R: .*one rotation",
+        ),
         (lambda: screw_axis(-np.eye(3), [1.0, 0.0, 0.0]), InvalidRotationError, r"^R: .*det"),
     ],
 )

@@ -6,7 +6,6 @@ import mpmath as mp
 import numpy as np
 import pytest
 import scipy.special as sc
-
 from poinsot import PoinsotError, special
 
 #: scipy's ellipj is accurate to ~1e-15 for moderate m; ours to a few ulp.
@@ -41,7 +40,9 @@ def test_integrals_match_scipy():
     assert special.ellipf(1.1, 0.3) == pytest.approx(sc.ellipkinc(1.1, 0.3), rel=1e-15)
     assert special.ellipeinc(1.1, 0.3) == pytest.approx(sc.ellipeinc(1.1, 0.3), rel=1e-15)
     mp.mp.dps = 30
-    assert special.ellippiinc(1.1, -2.0, 0.3) == pytest.approx(float(mp.ellippi(-2.0, 1.1, 0.3)), rel=1e-14)
+    assert special.ellippiinc(1.1, -2.0, 0.3) == pytest.approx(
+        float(mp.ellippi(-2.0, 1.1, 0.3)), rel=1e-14
+    )
     assert special.ellippi(-2.0, 0.3) == pytest.approx(float(mp.ellippi(-2.0, 0.3)), rel=1e-14)
 
 

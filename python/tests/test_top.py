@@ -6,14 +6,13 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import poinsot as ps
 import pytest
 import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from scipy.integrate import solve_ivp
-
-import poinsot as ps
 from poinsot import HeavyTop
+from scipy.integrate import solve_ivp
 
 # Round-off of O(1) quantities after a few dozen operations.
 ROUND_OFF = 1e-12
@@ -32,6 +31,7 @@ def _constants(i1: float, i3: float, mgl: float, theta, theta_dot, phi_dot, psi_
 
 
 # ---- the contract -------------------------------------------------------------------------
+
 
 def test_contract_attributes_and_shapes() -> None:
     top = HeavyTop(1.0, 0.5, 1.0, 0.8, theta_dot=0.3, phi_dot=0.6, psi_dot=6.0)
@@ -66,8 +66,12 @@ def test_degrees_flag() -> None:
     deg = a.euler_angles(2.0, degrees=True)
     rad = b.euler_angles(2.0)
     assert deg == pytest.approx(tuple(np.degrees(rad)), rel=1e-12)
-    assert a.effective_potential(45.0, degrees=True) == pytest.approx(b.effective_potential(np.pi / 4))
-    assert HeavyTop.min_spin(1, 0.5, 1, 30, degrees=True) == pytest.approx(HeavyTop.min_spin(1, 0.5, 1, np.pi / 6))
+    assert a.effective_potential(45.0, degrees=True) == pytest.approx(
+        b.effective_potential(np.pi / 4)
+    )
+    assert HeavyTop.min_spin(1, 0.5, 1, 30, degrees=True) == pytest.approx(
+        HeavyTop.min_spin(1, 0.5, 1, np.pi / 6)
+    )
 
 
 def test_symmetry_axis_is_the_third_column_of_the_zxz_attitude() -> None:
@@ -75,13 +79,16 @@ def test_symmetry_axis_is_the_third_column_of_the_zxz_attitude() -> None:
     top = HeavyTop(1.0, 0.5, 1.0, 0.8, phi=0.3, psi=1.1, phi_dot=-0.5, psi_dot=6.0)
     t = np.linspace(0, 4, 9)
     phi, theta, _ = top.euler_angles(t)
-    expect = np.stack([np.sin(theta) * np.sin(phi), -np.sin(theta) * np.cos(phi), np.cos(theta)], axis=-1)
+    expect = np.stack(
+        [np.sin(theta) * np.sin(phi), -np.sin(theta) * np.cos(phi), np.cos(theta)], axis=-1
+    )
     assert np.max(np.abs(top.symmetry_axis(t) - expect)) < 1e-14
 
 
 # ---- errata --------------------------------------------------------------------------------
 
-def test_erratum_2_120_fast_rate_is_p_psi_over_I1_cos_theta0() -> None:  # noqa: N802
+
+def test_erratum_2_120_fast_rate_is_p_psi_over_I1_cos_theta0() -> None:
     """seed-errata.md: I1 = 1, I3 = 0.5, mgl = 0.3, omega3 = 40, theta0 = 0.6: the exact fast root is
     24.2176 and p_psi/(I1 cos theta0) = 24.2326; the unit's printed p_psi/(2 I1 cos theta0) is half."""
     slow, fast = HeavyTop.steady_precession_rates(1.0, 0.5, 0.3, 0.6, 40.0)
@@ -107,10 +114,20 @@ def test_erratum_2_117_square_root_holds_p_psi_squared() -> None:
         t1, t2 = top.turning_points
         assert top.motion_class == "steady precession" and t2 - t1 < 1e-12
         p_phi = top.p_phi
-        bad = 0.5 * top.p_psi * math.sin(th0) ** 2 / math.cos(th0) * (
-            1 + (1 if rate > 1 else -1) * math.sqrt(1 - 4 * mglv * i1v * math.cos(th0) / p_phi**2))
+        bad = (
+            0.5
+            * top.p_psi
+            * math.sin(th0) ** 2
+            / math.cos(th0)
+            * (
+                1
+                + (1 if rate > 1 else -1) * math.sqrt(1 - 4 * mglv * i1v * math.cos(th0) / p_phi**2)
+            )
+        )
         rate_bad = bad / (i1v * math.sin(th0) ** 2)
-        top_bad = HeavyTop(i1v, i3v, mglv, th0, phi_dot=rate_bad, psi_dot=w3 - rate_bad * math.cos(th0))
+        top_bad = HeavyTop(
+            i1v, i3v, mglv, th0, phi_dot=rate_bad, psi_dot=w3 - rate_bad * math.cos(th0)
+        )
         u1, u2 = top_bad.turning_points
         assert u2 - u1 > 1e-3
 
@@ -123,18 +140,23 @@ def test_minimum_spin_2_119_is_where_the_rates_merge() -> None:
     with pytest.raises(ps.PoinsotError, match="omega3.*2.119"):
         HeavyTop.steady_precession_rates(1.0, 0.5, 1.0, 0.8, 0.99 * w_min)
     assert HeavyTop.min_spin(1.0, 0.5, 1.0, 2.0) == 0.0
-    assert HeavyTop.sleeping_threshold(1.0, 0.5, 1.0) == pytest.approx(HeavyTop.min_spin(1.0, 0.5, 1.0, 0.0))
+    assert HeavyTop.sleeping_threshold(1.0, 0.5, 1.0) == pytest.approx(
+        HeavyTop.min_spin(1.0, 0.5, 1.0, 0.0)
+    )
 
 
 # ---- 2.110 and 2.113 against sympy ----------------------------------------------------------
+
 
 def test_effective_potential_and_its_derivative_match_sympy() -> None:
     th, p1, p2, i1, mgl = sp.symbols("theta p_phi p_psi I1 mgl")
     v = (p1 - p2 * sp.cos(th)) ** 2 / (2 * i1 * sp.sin(th) ** 2) + mgl * sp.cos(th)  # 2.110
     dv = sp.lambdify((th, p1, p2, i1, mgl), sp.diff(v, th))
     vf = sp.lambdify((th, p1, p2, i1, mgl), v)
-    unit_2_113 = sp.lambdify((th, p1, p2, i1, mgl), (p1 - p2 * sp.cos(th)) * (p2 - p1 * sp.cos(th))
-                             / (i1 * sp.sin(th) ** 3) - mgl * sp.sin(th))
+    unit_2_113 = sp.lambdify(
+        (th, p1, p2, i1, mgl),
+        (p1 - p2 * sp.cos(th)) * (p2 - p1 * sp.cos(th)) / (i1 * sp.sin(th) ** 3) - mgl * sp.sin(th),
+    )
     for args in [(0.8, 0.0, 0.0, 6.0), (2.4, 0.1, 0.7, 3.0), (0.05, -0.2, 3.0, 10.0)]:
         top = HeavyTop(1.3, 0.6, 0.9, args[0], theta_dot=args[1], phi_dot=args[2], psi_dot=args[3])
         grid = np.linspace(0.05, np.pi - 0.05, 50)
@@ -146,11 +168,15 @@ def test_effective_potential_and_its_derivative_match_sympy() -> None:
         assert np.allclose(got_d, unit_2_113(grid, *ref), rtol=1e-10, atol=1e-10)
     # Lagrangian 2.102 against its definition.
     lag = HeavyTop.lagrangian(1.3, 0.6, 0.9, 0.7, 0.2, 0.4, 5.0)
-    t = 0.5 * 1.3 * (0.2**2 + 0.4**2 * math.sin(0.7) ** 2) + 0.5 * 0.6 * (5.0 + 0.4 * math.cos(0.7)) ** 2
+    t = (
+        0.5 * 1.3 * (0.2**2 + 0.4**2 * math.sin(0.7) ** 2)
+        + 0.5 * 0.6 * (5.0 + 0.4 * math.cos(0.7)) ** 2
+    )
     assert lag == pytest.approx(t - 0.9 * math.cos(0.7), abs=ROUND_OFF)
 
 
 # ---- the exact motion ---------------------------------------------------------------------
+
 
 def _lagrange_rhs(i1: float, i3: float, mgl: float):
     """Euler-Lagrange equations of 2.102 in (theta, phi, psi, theta', phi', psi')."""
@@ -166,16 +192,30 @@ def _lagrange_rhs(i1: float, i3: float, mgl: float):
     return rhs
 
 
-@pytest.mark.parametrize("state", [
-    (0.8, 0.0, 0.0, 6.0), (0.8, 0.0, -0.5, 6.0), (0.8, 0.3, 0.6, 6.0), (2.5, 0.5, 0.3, 2.0), (0.05, 0.01, 0.5, 9.0),
-])
+@pytest.mark.parametrize(
+    "state",
+    [
+        (0.8, 0.0, 0.0, 6.0),
+        (0.8, 0.0, -0.5, 6.0),
+        (0.8, 0.3, 0.6, 6.0),
+        (2.5, 0.5, 0.3, 2.0),
+        (0.05, 0.01, 0.5, 9.0),
+    ],
+)
 def test_exact_angles_match_scipy_on_the_lagrangian(state) -> None:
     i1, i3, mgl = 1.0, 0.5, 1.0
     th0, thd0, phd0, psd0 = state
     top = HeavyTop(i1, i3, mgl, th0, theta_dot=thd0, phi_dot=phd0, psi_dot=psd0)
     t = np.linspace(0, 10, 41)
-    sol = solve_ivp(_lagrange_rhs(i1, i3, mgl), (0, 10), [th0, 0, 0, thd0, phd0, psd0], method="DOP853",
-                    rtol=1e-12, atol=1e-12, t_eval=t)
+    sol = solve_ivp(
+        _lagrange_rhs(i1, i3, mgl),
+        (0, 10),
+        [th0, 0, 0, thd0, phd0, psd0],
+        method="DOP853",
+        rtol=1e-12,
+        atol=1e-12,
+        t_eval=t,
+    )
     phi, theta, psi = top.euler_angles(t)
     for got, ref in ((phi, sol.y[1]), (theta, sol.y[0]), (psi, sol.y[2])):
         assert np.max(np.abs(got - ref)) < SCIPY_TOL
@@ -186,8 +226,12 @@ def test_exact_angles_match_scipy_on_the_lagrangian(state) -> None:
 
 @settings(max_examples=40, deadline=None)
 @given(
-    i3=st.floats(0.1, 2.0), mgl=st.floats(0.0, 3.0), th0=st.floats(0.02, 3.12), thd=st.floats(-2, 2),
-    phd=st.floats(-3, 3), w3=st.floats(-20, 20),
+    i3=st.floats(0.1, 2.0),
+    mgl=st.floats(0.0, 3.0),
+    th0=st.floats(0.02, 3.12),
+    thd=st.floats(-2, 2),
+    phd=st.floats(-3, 3),
+    w3=st.floats(-20, 20),
 )
 def test_constants_are_conserved_along_the_exact_solution(i3, mgl, th0, thd, phd, w3) -> None:
     i1 = 1.0
@@ -231,23 +275,27 @@ def test_sleeping_top_threshold_and_classes() -> None:
 
 # ---- bad input -----------------------------------------------------------------------------
 
-@pytest.mark.parametrize("kwargs, name, exc", [
-    (dict(I1=0.0), "I1", ps.PoinsotError),
-    (dict(I1=-1.0), "I1", ps.PoinsotError),
-    (dict(I1=float("nan")), "I1", ps.PoinsotError),
-    (dict(I3=0.0), "I3", ps.PoinsotError),
-    (dict(I3=-0.5), "I3", ps.PoinsotError),
-    (dict(I3=3.0), "I3", ps.InvalidInertiaError),
-    (dict(mgl=-0.1), "mgl", ps.PoinsotError),
-    (dict(mgl=float("inf")), "mgl", ps.PoinsotError),
-    (dict(theta=-0.1), "theta", ps.PoinsotError),
-    (dict(theta=3.2), "theta", ps.PoinsotError),
-    (dict(theta=float("nan")), "theta", ps.PoinsotError),
-    (dict(theta_dot=float("inf")), "theta_dot", ps.PoinsotError),
-    (dict(phi_dot=float("nan")), "phi_dot", ps.PoinsotError),
-    (dict(psi_dot=float("nan")), "psi_dot", ps.PoinsotError),
-    (dict(theta="abc"), "theta", ps.PoinsotError),
-])
+
+@pytest.mark.parametrize(
+    "kwargs, name, exc",
+    [
+        (dict(I1=0.0), "I1", ps.PoinsotError),
+        (dict(I1=-1.0), "I1", ps.PoinsotError),
+        (dict(I1=float("nan")), "I1", ps.PoinsotError),
+        (dict(I3=0.0), "I3", ps.PoinsotError),
+        (dict(I3=-0.5), "I3", ps.PoinsotError),
+        (dict(I3=3.0), "I3", ps.InvalidInertiaError),
+        (dict(mgl=-0.1), "mgl", ps.PoinsotError),
+        (dict(mgl=float("inf")), "mgl", ps.PoinsotError),
+        (dict(theta=-0.1), "theta", ps.PoinsotError),
+        (dict(theta=3.2), "theta", ps.PoinsotError),
+        (dict(theta=float("nan")), "theta", ps.PoinsotError),
+        (dict(theta_dot=float("inf")), "theta_dot", ps.PoinsotError),
+        (dict(phi_dot=float("nan")), "phi_dot", ps.PoinsotError),
+        (dict(psi_dot=float("nan")), "psi_dot", ps.PoinsotError),
+        (dict(theta="abc"), "theta", ps.PoinsotError),
+    ],
+)
 def test_bad_input_names_the_argument(kwargs, name, exc) -> None:
     args = dict(I1=1.0, I3=0.5, mgl=1.0, theta=0.5)
     rates = {k: kwargs.pop(k) for k in ("theta_dot", "phi_dot", "psi_dot") if k in kwargs}
@@ -292,8 +340,16 @@ def test_constants_of_state_equal_the_constants_along_the_motion() -> None:
     k = int(np.argmax(np.abs(thd)))
     bad = HeavyTop.constants_of_state(i1, i3, mgl, th[k], thd[k] + 1e-6, phd[k], psd[k])
     assert abs(bad["energy"] - top.energy) > 1e-8
-    deg = HeavyTop.constants_of_state(i1, i3, mgl, math.degrees(0.7), math.degrees(0.2), math.degrees(-0.4),
-                                      math.degrees(8.0), degrees=True)
+    deg = HeavyTop.constants_of_state(
+        i1,
+        i3,
+        mgl,
+        math.degrees(0.7),
+        math.degrees(0.2),
+        math.degrees(-0.4),
+        math.degrees(8.0),
+        degrees=True,
+    )
     assert deg["energy"] == pytest.approx(top.energy, abs=ROUND_OFF)
     with pytest.raises(ps.PoinsotError, match="^theta"):
         HeavyTop.constants_of_state(i1, i3, mgl, 4.0, 0.0, 0.0, 1.0)

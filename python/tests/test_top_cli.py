@@ -10,12 +10,11 @@ from pathlib import Path
 
 import matplotlib
 import numpy as np
+import poinsot as ps
 import pytest
 from click.testing import CliRunner
-from rich.console import Console
-
-import poinsot as ps
 from poinsot.cli import main
+from rich.console import Console
 
 matplotlib.use("Agg")
 
@@ -30,7 +29,22 @@ def _json(args: list[str]) -> dict:
 
 
 def test_top_json_matches_the_api() -> None:
-    data = _json(["top", "--I1", "1", "--I3", "0.5", "--mgl", "1", "--theta", "0.8", "--psi-dot", "6", "--json"])
+    data = _json(
+        [
+            "top",
+            "--I1",
+            "1",
+            "--I3",
+            "0.5",
+            "--mgl",
+            "1",
+            "--theta",
+            "0.8",
+            "--psi-dot",
+            "6",
+            "--json",
+        ]
+    )
     top = ps.HeavyTop(1.0, 0.5, 1.0, 0.8, psi_dot=6.0)
     assert data["motion_class"] == "cusps" == top.motion_class
     assert data["turning_points"] == list(top.turning_points)
@@ -43,28 +57,93 @@ def test_top_json_matches_the_api() -> None:
 
 
 def test_top_errata_example_and_degrees() -> None:
-    data = _json(["top", "--I1", "1", "--I3", "0.5", "--mgl", "0.3", "--theta", "0.6", "--psi-dot", "40", "--json"])
+    data = _json(
+        [
+            "top",
+            "--I1",
+            "1",
+            "--I3",
+            "0.5",
+            "--mgl",
+            "0.3",
+            "--theta",
+            "0.6",
+            "--psi-dot",
+            "40",
+            "--json",
+        ]
+    )
     steady = data["steady_precession_at_theta0"]
     assert round(steady["fast"], 4) == 24.2176 and round(steady["fast_approx_2_120"], 4) == 24.2326
-    deg = _json(["top", "--I1", "1", "--I3", "0.5", "--mgl", "0.3", "--theta", str(np.degrees(0.6)), "--degrees",
-                 "--psi-dot", str(np.degrees(40.0)), "--json"])
+    deg = _json(
+        [
+            "top",
+            "--I1",
+            "1",
+            "--I3",
+            "0.5",
+            "--mgl",
+            "0.3",
+            "--theta",
+            str(np.degrees(0.6)),
+            "--degrees",
+            "--psi-dot",
+            str(np.degrees(40.0)),
+            "--json",
+        ]
+    )
     assert deg["turning_points"] == pytest.approx(data["turning_points"], abs=1e-13)
 
 
 def test_top_below_minimum_spin_and_sleeping() -> None:
-    data = _json(["top", "--I1", "1", "--I3", "0.5", "--mgl", "1", "--theta", "0.0", "--psi-dot", "3", "--json"])
+    data = _json(
+        [
+            "top",
+            "--I1",
+            "1",
+            "--I3",
+            "0.5",
+            "--mgl",
+            "1",
+            "--theta",
+            "0.0",
+            "--psi-dot",
+            "3",
+            "--json",
+        ]
+    )
     assert data["motion_class"] == "sleeping" and data["sleeping_stable"] is False
     assert data["nutation_period"] == "inf"
     assert "omega3" in data["steady_precession_at_theta0"]["error"]
 
 
 def test_top_table_and_bad_input() -> None:
-    res = CliRunner().invoke(main, ["top", "--I1", "1", "--I3", "0.5", "--mgl", "1", "--theta", "0.8",
-                                    "--phi-dot", "-0.5", "--psi-dot", "6"])
+    res = CliRunner().invoke(
+        main,
+        [
+            "top",
+            "--I1",
+            "1",
+            "--I3",
+            "0.5",
+            "--mgl",
+            "1",
+            "--theta",
+            "0.8",
+            "--phi-dot",
+            "-0.5",
+            "--psi-dot",
+            "6",
+        ],
+    )
     assert res.exit_code == 0 and "loops" in res.output and "2.116" in res.output
-    bad = CliRunner().invoke(main, ["top", "--I1", "1", "--I3", "0.5", "--mgl", "-1", "--theta", "0.8"])
+    bad = CliRunner().invoke(
+        main, ["top", "--I1", "1", "--I3", "0.5", "--mgl", "-1", "--theta", "0.8"]
+    )
     assert bad.exit_code == 1 and "--mgl:" in bad.output  # refused input (poinsot --help)
-    bad = CliRunner().invoke(main, ["top", "--I1", "1", "--I3", "0.5", "--mgl", "1", "--theta", "4"])
+    bad = CliRunner().invoke(
+        main, ["top", "--I1", "1", "--I3", "0.5", "--mgl", "1", "--theta", "4"]
+    )
     assert bad.exit_code == 1 and "--theta:" in bad.output
 
 
@@ -72,14 +151,20 @@ def test_plots_return_figures(tmp_path: Path) -> None:
     from poinsot.plots import top as plots_top
 
     top = ps.HeavyTop(1.0, 0.5, 1.0, 0.8, phi_dot=-0.5, psi_dot=6.0)
-    for fig in (plots_top.plot_effective_potential(top), plots_top.plot_axis_locus(top),
-                plots_top.plot_angles(top), plots_top.plot_steady_precession(1.0, 0.5, 1.0, 0.8),
-                plots_top.plot_steady_precession(1.0, 0.5, 1.0, 2.0)):
+    for fig in (
+        plots_top.plot_effective_potential(top),
+        plots_top.plot_axis_locus(top),
+        plots_top.plot_angles(top),
+        plots_top.plot_steady_precession(1.0, 0.5, 1.0, 0.8),
+        plots_top.plot_steady_precession(1.0, 0.5, 1.0, 2.0),
+    ):
         assert fig.axes
     anim = plots_top.animate_top(top, tmp_path / "top.gif", frames=5)
     assert (tmp_path / "top.gif").stat().st_size > 0
     assert anim is not None
-    paths = plots_top.save_top_plots(ps.HeavyTop(1.0, 0.5, 1.0, 0.0, psi_dot=3.0), tmp_path / "sleep")
+    paths = plots_top.save_top_plots(
+        ps.HeavyTop(1.0, 0.5, 1.0, 0.0, psi_dot=3.0), tmp_path / "sleep"
+    )
     assert len(paths) == 4 and all(p.stat().st_size > 0 for p in paths)
 
 

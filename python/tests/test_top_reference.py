@@ -9,7 +9,6 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-
 from poinsot import HeavyTop
 
 DATA = json.loads((Path(__file__).parent / "reference" / "heavy_top_mpmath.json").read_text())
@@ -20,8 +19,15 @@ REFERENCE_TOL = 1e-12
 @pytest.mark.parametrize("case", DATA["cases"], ids=[c["name"] for c in DATA["cases"]])
 def test_exact_motion_matches_mpmath(case: dict) -> None:
     init = case["initial"]
-    top = HeavyTop(case["I1"], case["I3"], case["mgl"], init["theta"], theta_dot=init["theta_dot"],
-                   phi_dot=init["phi_dot"], psi_dot=init["psi_dot"])
+    top = HeavyTop(
+        case["I1"],
+        case["I3"],
+        case["mgl"],
+        init["theta"],
+        theta_dot=init["theta_dot"],
+        phi_dot=init["phi_dot"],
+        psi_dot=init["psi_dot"],
+    )
     assert top.motion_class == case["class"]
     for key in ("p_phi", "p_psi", "energy"):
         ref = float(case[key])

@@ -10,9 +10,8 @@ import math
 from pathlib import Path
 
 import numpy as np
-import pytest
-
 import poinsot as ps
+import pytest
 from poinsot import HeavyTop
 
 CSV = Path(__file__).parent / "reference" / "heavy_top_upright_mpmath.csv"
@@ -22,7 +21,9 @@ UPRIGHT_TOL = 1e-10
 
 
 def _cases() -> dict[str, list[dict]]:
-    rows = [r for r in csv.DictReader(line for line in CSV.read_text().splitlines() if not line.startswith("#"))]
+    rows = list(
+        csv.DictReader(line for line in CSV.read_text().splitlines() if not line.startswith("#"))
+    )
     cases: dict[str, list[dict]] = {}
     for r in rows:
         cases.setdefault(r["name"], []).append(r)
@@ -36,9 +37,18 @@ CASES = _cases()
 def test_near_upright_matches_mpmath(name: str) -> None:
     rows = CASES[name]
     r0 = rows[0]
-    f = {k: float(r0[k]) for k in ("I1", "I3", "mgl", "theta0", "theta_dot0", "phi_dot0", "psi_dot0")}
-    top = HeavyTop(f["I1"], f["I3"], f["mgl"], f["theta0"], theta_dot=f["theta_dot0"], phi_dot=f["phi_dot0"],
-                   psi_dot=f["psi_dot0"])
+    f = {
+        k: float(r0[k]) for k in ("I1", "I3", "mgl", "theta0", "theta_dot0", "phi_dot0", "psi_dot0")
+    }
+    top = HeavyTop(
+        f["I1"],
+        f["I3"],
+        f["mgl"],
+        f["theta0"],
+        theta_dot=f["theta_dot0"],
+        phi_dot=f["phi_dot0"],
+        psi_dot=f["psi_dot0"],
+    )
     assert top.motion_class == r0["class"]
     assert math.isfinite(top.nutation_period)
     t = np.array([float(r["t"]) for r in rows])

@@ -41,21 +41,30 @@ def rust_free_path() -> str:
     """PATH without any directory holding cargo or rustc (~/.cargo/bin, a system Rust)."""
     keep = []
     for entry in os.environ.get("PATH", os.defpath).split(os.pathsep):
-        if entry and not any(shutil.which(tool, path=entry) for tool in ("cargo", "rustc", "rustup")):
+        if entry and not any(
+            shutil.which(tool, path=entry) for tool in ("cargo", "rustc", "rustup")
+        ):
             keep.append(entry)
     return os.pathsep.join(keep)
 
 
 @pytest.fixture(scope="module")
-def installed(wheel: Path, tmp_path_factory: pytest.TempPathFactory) -> Iterator[tuple[Path, dict[str, str]]]:
+def installed(
+    wheel: Path, tmp_path_factory: pytest.TempPathFactory
+) -> Iterator[tuple[Path, dict[str, str]]]:
     """A fresh virtual environment with the wheel installed (binary packages only), and the
     environment to run it in: no Rust on PATH, no Cargo or PyO3 variables, no user site."""
     root = tmp_path_factory.mktemp("wheel-venv")
     env_dir = root / "venv"
     venv.EnvBuilder(with_pip=True, clear=True).create(env_dir)
     bindir = env_dir / ("Scripts" if os.name == "nt" else "bin")
-    env = {k: v for k, v in os.environ.items()
-           if not k.startswith(("CARGO", "RUSTUP", "RUSTC", "PYO3", "MATURIN", "VIRTUAL_ENV", "PYTHON"))}
+    env = {
+        k: v
+        for k, v in os.environ.items()
+        if not k.startswith(
+            ("CARGO", "RUSTUP", "RUSTC", "PYO3", "MATURIN", "VIRTUAL_ENV", "PYTHON")
+        )
+    }
     env["PATH"] = os.pathsep.join([str(bindir), rust_free_path()])
     env["PYTHONNOUSERSITE"] = "1"
     env["MPLBACKEND"] = "Agg"
@@ -63,16 +72,35 @@ def installed(wheel: Path, tmp_path_factory: pytest.TempPathFactory) -> Iterator
     for tool in ("cargo", "rustc", "rustup"):
         assert shutil.which(tool, path=env["PATH"]) is None, f"{tool} is still on PATH"
     # --only-binary: nothing may be compiled, the wheel and its dependencies install as they are.
-    subprocess.run([str(bindir / "python"), "-m", "pip", "install", "-q", "--only-binary", ":all:",
-                    str(wheel)], env=env, cwd=root, check=True, timeout=600)
+    subprocess.run(
+        [
+            str(bindir / "python"),
+            "-m",
+            "pip",
+            "install",
+            "-q",
+            "--only-binary",
+            ":all:",
+            str(wheel),
+        ],
+        env=env,
+        cwd=root,
+        check=True,
+        timeout=600,
+    )
     yield bindir, env
 
 
 def test_wheel_is_abi3_and_carries_the_lab(wheel: Path) -> None:
     assert re.fullmatch(r"poinsot-[^-]+-cp39-abi3-[^-]+\.whl", wheel.name), wheel.name
     names = set(zipfile.ZipFile(wheel).namelist())
-    for required in ("poinsot/__init__.py", "poinsot/cli.py", "poinsot/py.typed", "poinsot/_core.pyi",
-                     "poinsot/lab/index.html"):
+    for required in (
+        "poinsot/__init__.py",
+        "poinsot/cli.py",
+        "poinsot/py.typed",
+        "poinsot/_core.pyi",
+        "poinsot/lab/index.html",
+    ):
         assert required in names, required
     assert any(re.fullmatch(r"poinsot/_core\.(abi3\.so|pyd)", n) for n in names), sorted(names)
     assert any(n.startswith("poinsot/lab/") and n.endswith(".wasm") for n in names)
@@ -81,37 +109,65 @@ def test_wheel_is_abi3_and_carries_the_lab(wheel: Path) -> None:
     assert not any("node_modules" in n or "/tests/" in n for n in names)
 
 
-def test_installs_without_rust_and_imports_from_the_venv(installed: tuple[Path, dict[str, str]]) -> None:
+def test_installs_without_rust_and_imports_from_the_venv(
+    installed: tuple[Path, dict[str, str]],
+) -> None:
     bindir, env = installed
-    out = subprocess.run([str(bindir / "python"), "-c",
-                          "import poinsot, poinsot._core as c; print(poinsot.__file__); print(c.__file__)"],
-                         env=env, cwd=bindir.parent, capture_output=True, text=True, check=True).stdout
+    out = subprocess.run(
+        [
+            str(bindir / "python"),
+            "-c",
+            "import poinsot, poinsot._core as c; print(poinsot.__file__); print(c.__file__)",
+        ],
+        env=env,
+        cwd=bindir.parent,
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout
     for line in out.splitlines():
         assert Path(line).resolve().is_relative_to(bindir.parent.resolve()), line
 
 
 def test_tour_runs(installed: tuple[Path, dict[str, str]]) -> None:
     bindir, env = installed
-    proc = subprocess.run([str(bindir / "poinsot"), "tour"], env=env, cwd=bindir.parent,
-                          capture_output=True, text=True, timeout=300)
+    proc = subprocess.run(
+        [str(bindir / "poinsot"), "tour"],
+        env=env,
+        cwd=bindir.parent,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     assert proc.returncode == 0, proc.stderr
     for topic in ("Euler's theorem", "Chasles", "2.99", "inertia tensor", "dumbbell"):
         assert topic in proc.stdout, topic
 
 
 def fetch(url: str) -> tuple[int, str, bytes]:
-    with urllib.request.urlopen(url, timeout=10) as resp:  # noqa: S310 (loopback only)
+    with urllib.request.urlopen(url, timeout=10) as resp:
         return resp.status, resp.headers.get("Content-Type", ""), resp.read()
 
 
 def test_lab_serves_the_page_and_the_webassembly(installed: tuple[Path, dict[str, str]]) -> None:
     bindir, env = installed
-    lab = subprocess.run([str(bindir / "python"), "-c", "import poinsot._labserver as s; print(s.page_dir())"],
-                         env=env, capture_output=True, text=True, check=True).stdout.strip()
+    lab = subprocess.run(
+        [str(bindir / "python"), "-c", "import poinsot._labserver as s; print(s.page_dir())"],
+        env=env,
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout.strip()
     wasm = sorted(Path(lab).rglob("*.wasm"))
     assert wasm, f"no .wasm under {lab}"
-    proc = subprocess.Popen([str(bindir / "poinsot"), "lab", "--port", "0", "--no-browser"], env=env,
-                            cwd=bindir.parent, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    proc = subprocess.Popen(
+        [str(bindir / "poinsot"), "lab", "--port", "0", "--no-browser"],
+        env=env,
+        cwd=bindir.parent,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
     try:
         assert proc.stdout is not None
         first = proc.stdout.readline()

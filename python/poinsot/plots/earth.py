@@ -17,13 +17,18 @@ from ._mpl import pyplot as _pyplot
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
 
-__all__ = ["plot_deflection", "plot_trajectory", "plot_foucault_rosette", "plot_inertial_circles",
-           "animate_foucault"]
+__all__ = [
+    "plot_deflection",
+    "plot_trajectory",
+    "plot_foucault_rosette",
+    "plot_inertial_circles",
+    "animate_foucault",
+]
 
 
-
-def plot_deflection(earth: Earth | None = None, *, height: float = 100.0, latitude: float = 45.0,
-                    n: int = 19) -> Figure:
+def plot_deflection(
+    earth: Earth | None = None, *, height: float = 100.0, latitude: float = 45.0, n: int = 19
+) -> Figure:
     """The eastward deflection of a dropped body: against latitude (at ``height`` m) and against
     height (at ``latitude`` degrees), the unit's first-order eq. 2.42 beside the exact fall in
     the rotating frame, with the exact southward deflection on a second axis.
@@ -58,8 +63,12 @@ def plot_deflection(earth: Earth | None = None, *, height: float = 100.0, latitu
     exact_h = [earth.drop(h, latitude, degrees=True) for h in heights]
     ax2.loglog(heights, first_h, "-", label="east, first order (2.42)")
     ax2.loglog(heights, [f.east for f in exact_h], "o", ms=4, label="east, exact")
-    ax2.loglog(heights, earth.southward_deflection(heights, latitude, degrees=True), "--",
-               label="south, ¾ω² sin2λ h²/g")
+    ax2.loglog(
+        heights,
+        earth.southward_deflection(heights, latitude, degrees=True),
+        "--",
+        label="south, ¾ω² sin2λ h²/g",
+    )
     ax2.loglog(heights, [-f.north for f in exact_h], "s", ms=3, label="south, exact")
     ax2.set_xlabel("height (m)")
     ax2.set_ylabel("deflection (m)")
@@ -115,13 +124,21 @@ def plot_foucault_rosette(run: FoucaultRun, ax: Any = None, *, title: str | None
     ax.set_aspect("equal")
     ax.set_xlabel("east (m)")
     ax.set_ylabel("north (m)")
-    rate = f"{run.precession_rate:.3e} rad/s" if run.precession_rate is not None else f"no rate ({run.regime})"
+    rate = (
+        f"{run.precession_rate:.3e} rad/s"
+        if run.precession_rate is not None
+        else f"no rate ({run.regime})"
+    )
     ax.set_title(title or f"Foucault: {run.sense}, {rate} (−ω sin λ = {run.expected_rate:.3e})")
     return fig
 
 
-def plot_inertial_circles(earth: Earth | None = None, *, latitudes: tuple[float, ...] = (45.0, -45.0, 0.0),
-                          speed: float = 10.0) -> Figure:
+def plot_inertial_circles(
+    earth: Earth | None = None,
+    *,
+    latitudes: tuple[float, ...] = (45.0, -45.0, 0.0),
+    speed: float = 10.0,
+) -> Figure:
     """Inertial oscillations started eastward at ``speed`` m/s at each latitude (degrees): clockwise
     circles in the north, counterclockwise in the south, a straight line at the equator (over
     two inertial periods, or one day at the equator)."""
@@ -131,9 +148,13 @@ def plot_inertial_circles(earth: Earth | None = None, *, latitudes: tuple[float,
     for lat in latitudes:
         osc = earth.inertial_oscillation(lat, [speed, 0.0], degrees=True)
         x, y = osc.position[:, 0] / 1e3, osc.position[:, 1] / 1e3
-        line, = ax.plot(x, y, label=f"{lat:+g}°: {osc.sense}")
-        ax.annotate("", xy=(x[5], y[5]), xytext=(x[0], y[0]),
-                    arrowprops={"arrowstyle": "->", "color": line.get_color()})
+        (line,) = ax.plot(x, y, label=f"{lat:+g}°: {osc.sense}")
+        ax.annotate(
+            "",
+            xy=(x[5], y[5]),
+            xytext=(x[0], y[0]),
+            arrowprops={"arrowstyle": "->", "color": line.get_color()},
+        )
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("east (km)")
     ax.set_ylabel("north (km)")
@@ -142,8 +163,14 @@ def plot_inertial_circles(earth: Earth | None = None, *, latitudes: tuple[float,
     return fig
 
 
-def animate_foucault(run: FoucaultRun, path: str | Path | None = None, *, frames: int = 200,
-                     fps: int = 25, trail: int = 40) -> Any:
+def animate_foucault(
+    run: FoucaultRun,
+    path: str | Path | None = None,
+    *,
+    frames: int = 200,
+    fps: int = 25,
+    trail: int = 40,
+) -> Any:
     """An animation of the Foucault pendulum seen from above: the bob with a fading trail and the
     current swing plane. Saved to ``path`` if given (``.gif`` with Pillow, ``.mp4`` with
     ffmpeg); returns the :class:`matplotlib.animation.FuncAnimation`.
@@ -163,14 +190,14 @@ def animate_foucault(run: FoucaultRun, path: str | Path | None = None, *, frames
     ax.set_aspect("equal")
     ax.set_xlabel("east (m)")
     ax.set_ylabel("north (m)")
-    tr, = ax.plot([], [], lw=0.8, alpha=0.6)
-    bob, = ax.plot([], [], "o", ms=8)
+    (tr,) = ax.plot([], [], lw=0.8, alpha=0.6)
+    (bob,) = ax.plot([], [], "o", ms=8)
     text = ax.text(0.02, 0.96, "", transform=ax.transAxes, va="top", fontsize=9)
 
     def update(k: int) -> tuple[Any, ...]:
         i = idx[k]
         lo = idx[max(0, k - trail)]
-        tr.set_data(p[lo:i + 1, 0], p[lo:i + 1, 1])
+        tr.set_data(p[lo : i + 1, 0], p[lo : i + 1, 1])
         bob.set_data([p[i, 0]], [p[i, 1]])
         text.set_text(f"t = {run.t[i]:.0f} s")
         return tr, bob, text
@@ -178,6 +205,10 @@ def animate_foucault(run: FoucaultRun, path: str | Path | None = None, *, frames
     anim = animation.FuncAnimation(fig, update, frames=len(idx), interval=1000 / fps, blit=True)
     if path is not None:
         path = Path(path)
-        writer = animation.PillowWriter(fps=fps) if path.suffix.lower() == ".gif" else animation.FFMpegWriter(fps=fps)
+        writer = (
+            animation.PillowWriter(fps=fps)
+            if path.suffix.lower() == ".gif"
+            else animation.FFMpegWriter(fps=fps)
+        )
         anim.save(str(path), writer=writer)
     return anim

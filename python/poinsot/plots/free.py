@@ -23,14 +23,18 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["plot_omega", "plot_cones", "plot_polhodes", "plot_conservation", "animate_tumbling_box"]
 
 
-
 def _rotate(q: np.ndarray, v: np.ndarray) -> np.ndarray:
     """R(q) v for attitudes q (..., 4) [w, x, y, z] and body vectors v (..., 3), by the core."""
     return rotate_vectors(quaternion_to_matrix(q, normalize=True), v)
 
 
-def plot_omega(trajectory: Trajectory, exact: FreeRigidBody | None = None, ax: Any = None, *,
-               title: str | None = None) -> Figure:
+def plot_omega(
+    trajectory: Trajectory,
+    exact: FreeRigidBody | None = None,
+    ax: Any = None,
+    *,
+    title: str | None = None,
+) -> Figure:
     """ω components (body, rad/s) against time from ``trajectory``, with the exact solution
     ``exact`` overlaid as thin black lines when given."""
     plt = _pyplot()
@@ -39,8 +43,14 @@ def plot_omega(trajectory: Trajectory, exact: FreeRigidBody | None = None, ax: A
     else:
         fig = ax.figure
     for k, color in enumerate(("C0", "C1", "C2")):
-        ax.plot(trajectory.t, trajectory.omega[:, k], color=color, lw=2.2, alpha=0.7,
-                label=f"ω{k + 1} ({trajectory.method})")
+        ax.plot(
+            trajectory.t,
+            trajectory.omega[:, k],
+            color=color,
+            lw=2.2,
+            alpha=0.7,
+            label=f"ω{k + 1} ({trajectory.method})",
+        )
     if exact is not None:
         t = np.linspace(trajectory.t[0], trajectory.t[-1], 2000)
         om = exact.omega(t)
@@ -53,7 +63,9 @@ def plot_omega(trajectory: Trajectory, exact: FreeRigidBody | None = None, ax: A
     return fig
 
 
-def _cone(ax: Any, axis: np.ndarray, half_angle: float, height: float, color: str, label: str) -> None:
+def _cone(
+    ax: Any, axis: np.ndarray, half_angle: float, height: float, color: str, label: str
+) -> None:
     axis = axis / np.linalg.norm(axis)
     helper = np.array([1.0, 0, 0]) if abs(axis[0]) < 0.9 else np.array([0, 1.0, 0])
     e1 = np.cross(axis, helper)
@@ -63,9 +75,18 @@ def _cone(ax: Any, axis: np.ndarray, half_angle: float, height: float, color: st
     r = np.linspace(0, height, 10)
     pp, rr = np.meshgrid(phi, r)
     rad = rr * np.tan(half_angle)
-    pts = (rr[..., None] * axis + rad[..., None] * (np.cos(pp)[..., None] * e1 + np.sin(pp)[..., None] * e2))
+    pts = rr[..., None] * axis + rad[..., None] * (
+        np.cos(pp)[..., None] * e1 + np.sin(pp)[..., None] * e2
+    )
     ax.plot_surface(pts[..., 0], pts[..., 1], pts[..., 2], color=color, alpha=0.25, linewidth=0)
-    ax.plot([0, height * axis[0]], [0, height * axis[1]], [0, height * axis[2]], color=color, lw=2, label=label)
+    ax.plot(
+        [0, height * axis[0]],
+        [0, height * axis[1]],
+        [0, height * axis[2]],
+        color=color,
+        lw=2,
+        label=label,
+    )
 
 
 def plot_cones(top: FreeSymmetricTop, t: float = 0.0, ax: Any = None) -> Figure:
@@ -85,23 +106,36 @@ def plot_cones(top: FreeSymmetricTop, t: float = 0.0, ax: Any = None) -> Figure:
     h = 1.0
     _cone(ax, ell, top.space_cone_angle, h, "C0", "space cone about L")
     body_axis = e3 if np.dot(e3, w) >= 0 else -e3
-    _cone(ax, body_axis, min(top.body_cone_angle, np.pi - top.body_cone_angle), h, "C1", "body cone about e₃")
+    _cone(
+        ax,
+        body_axis,
+        min(top.body_cone_angle, np.pi - top.body_cone_angle),
+        h,
+        "C1",
+        "body cone about e₃",
+    )
     wn = w / np.linalg.norm(w) * h / np.cos(top.space_cone_angle)
     ax.plot([0, wn[0]], [0, wn[1]], [0, wn[2]], color="k", lw=2.5, label="ω (contact line)")
-    trace = _rotate(top.attitude(np.linspace(0, 2 * np.pi / max(top.space_precession_rate, 1e-12), 200)),
-                    top.omega(np.linspace(0, 2 * np.pi / max(top.space_precession_rate, 1e-12), 200)))
+    trace = _rotate(
+        top.attitude(np.linspace(0, 2 * np.pi / max(top.space_precession_rate, 1e-12), 200)),
+        top.omega(np.linspace(0, 2 * np.pi / max(top.space_precession_rate, 1e-12), 200)),
+    )
     trace = trace / np.linalg.norm(trace, axis=1)[:, None] * h / np.cos(top.space_cone_angle)
     ax.plot(trace[:, 0], trace[:, 1], trace[:, 2], color="C0", lw=1)
     ax.set_box_aspect((1, 1, 1))
     lim = 1.2 * h
     ax.set(xlim=(-lim, lim), ylim=(-lim, lim), zlim=(-lim, lim), xlabel="X", ylabel="Y", zlabel="Z")
     ax.legend(loc="upper left", fontsize=8)
-    ax.set_title(f"{top.shape} top: α_b = {np.degrees(top.body_cone_angle):.2f}°, "
-                 f"α_s = {np.degrees(top.space_cone_angle):.2f}°")
+    ax.set_title(
+        f"{top.shape} top: α_b = {np.degrees(top.body_cone_angle):.2f}°, "
+        f"α_s = {np.degrees(top.space_cone_angle):.2f}°"
+    )
     return fig
 
 
-def plot_polhodes(moments: Any = (1.0, 2.0, 3.0), energy: float = 0.5, n: int = 13, ax: Any = None) -> Figure:
+def plot_polhodes(
+    moments: Any = (1.0, 2.0, 3.0), energy: float = 0.5, n: int = 13, ax: Any = None
+) -> Figure:
     """Polhodes on the energy ellipsoid ω·I·ω = 2T of a body with principal ``moments``: the
     curves ω traces in the body for |L| from √(2T I₁) to √(2T I₃), closed loops about the
     smallest- and largest-moment axes, and the separatrix (red) through the intermediate
@@ -115,8 +149,14 @@ def plot_polhodes(moments: Any = (1.0, 2.0, 3.0), energy: float = 0.5, n: int = 
         fig = ax.figure
     a = np.sqrt(2 * energy / m)
     u, v = np.meshgrid(np.linspace(0, 2 * np.pi, 48), np.linspace(0, np.pi, 24))
-    ax.plot_surface(a[0] * np.cos(u) * np.sin(v), a[1] * np.sin(u) * np.sin(v), a[2] * np.cos(v),
-                    color="0.85", alpha=0.35, linewidth=0)
+    ax.plot_surface(
+        a[0] * np.cos(u) * np.sin(v),
+        a[1] * np.sin(u) * np.sin(v),
+        a[2] * np.cos(v),
+        color="0.85",
+        alpha=0.35,
+        linewidth=0,
+    )
     order = np.argsort(m)
     lo, mid, hi = order
     for frac in np.linspace(0.04, 0.96, n):
@@ -150,7 +190,9 @@ def plot_polhodes(moments: Any = (1.0, 2.0, 3.0), energy: float = 0.5, n: int = 
     return fig
 
 
-def plot_conservation(trajectories: list[Trajectory], ax: Any = None, *, title: str | None = None) -> Figure:
+def plot_conservation(
+    trajectories: list[Trajectory], ax: Any = None, *, title: str | None = None
+) -> Figure:
     """Relative energy error |ΔE/E| (solid) and momentum error |Δ|L|/|L|| (dotted) of each
     trajectory against time, on log axes (errors below 1e-17 are drawn at 1e-17)."""
     plt = _pyplot()
@@ -162,8 +204,21 @@ def plot_conservation(trajectories: list[Trajectory], ax: Any = None, *, title: 
         color = f"C{k}"
         label = tr.method + (f" (dt = {tr.step:g})" if tr.step else "")
         t = tr.t[1:]
-        ax.loglog(t, np.maximum(tr.energy_error()[1:], 1e-17), color=color, lw=1.5, label=f"{label}: energy")
-        ax.loglog(t, np.maximum(tr.momentum_error()[1:], 1e-17), color=color, lw=1, ls=":", label=f"{label}: |L|")
+        ax.loglog(
+            t,
+            np.maximum(tr.energy_error()[1:], 1e-17),
+            color=color,
+            lw=1.5,
+            label=f"{label}: energy",
+        )
+        ax.loglog(
+            t,
+            np.maximum(tr.momentum_error()[1:], 1e-17),
+            color=color,
+            lw=1,
+            ls=":",
+            label=f"{label}: |L|",
+        )
     ax.set_xlabel("t (s)")
     ax.set_ylabel("relative error")
     ax.legend(fontsize=7, ncol=2)
@@ -171,9 +226,16 @@ def plot_conservation(trajectories: list[Trajectory], ax: Any = None, *, title: 
     return fig
 
 
-def animate_tumbling_box(sides: Any = (2.0, 1.0, 0.4), spin: float = 2.0, wobble: float = 1e-2,
-                         duration: float | None = None, path: str | Path | None = None, *, frames: int = 240,
-                         fps: int = 30) -> Any:
+def animate_tumbling_box(
+    sides: Any = (2.0, 1.0, 0.4),
+    spin: float = 2.0,
+    wobble: float = 1e-2,
+    duration: float | None = None,
+    path: str | Path | None = None,
+    *,
+    frames: int = 240,
+    fps: int = 30,
+) -> Any:
     """An animation of a box (``sides`` along body x, y, z, m; the middle side along y makes y
     the intermediate axis for the default) spun at ``spin`` rad/s about body y with a small
     ``wobble`` (rad/s) about x and z: the exact free motion flips it over every
@@ -214,6 +276,10 @@ def animate_tumbling_box(sides: Any = (2.0, 1.0, 0.4), spin: float = 2.0, wobble
     anim = animation.FuncAnimation(fig, update, frames=frames, interval=1000 / fps, blit=False)
     if path is not None:
         path = Path(path)
-        writer = animation.PillowWriter(fps=fps) if path.suffix.lower() == ".gif" else animation.FFMpegWriter(fps=fps)
+        writer = (
+            animation.PillowWriter(fps=fps)
+            if path.suffix.lower() == ".gif"
+            else animation.FFMpegWriter(fps=fps)
+        )
         anim.save(str(path), writer=writer)
     return anim

@@ -9,6 +9,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
 from ._mpl import pyplot as _pyplot
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -17,9 +18,9 @@ if TYPE_CHECKING:  # pragma: no cover
     from ..body import RigidBody
 
 
-
-def plot_inertia_ellipsoid(body: RigidBody, ax: Any = None, *, title: str | None = None,
-                           resolution: int = 40) -> Figure:
+def plot_inertia_ellipsoid(
+    body: RigidBody, ax: Any = None, *, title: str | None = None, resolution: int = 40
+) -> Figure:
     """Draw the inertia ellipsoid of ``body`` with its principal axes.
 
     The inertia ellipsoid (Poinsot's ellipsoid) is the surface x·I·x = 1 about the centre of
@@ -61,12 +62,17 @@ def plot_inertia_ellipsoid(body: RigidBody, ax: Any = None, *, title: str | None
 
     u = np.linspace(0.0, 2.0 * np.pi, resolution)
     v = np.linspace(0.0, np.pi, resolution)
-    local = np.stack([np.outer(np.cos(u), np.sin(v)) * semi[0],
-                      np.outer(np.sin(u), np.sin(v)) * semi[1],
-                      np.outer(np.ones_like(u), np.cos(v)) * semi[2]])
+    local = np.stack(
+        [
+            np.outer(np.cos(u), np.sin(v)) * semi[0],
+            np.outer(np.sin(u), np.sin(v)) * semi[1],
+            np.outer(np.ones_like(u), np.cos(v)) * semi[2],
+        ]
+    )
     xyz = np.einsum("ij,jkl->ikl", axes, local)
-    ax.plot_surface(xyz[0], xyz[1], xyz[2], color="tab:blue", alpha=0.25, linewidth=0.3,
-                    edgecolor="tab:blue")
+    ax.plot_surface(
+        xyz[0], xyz[1], xyz[2], color="tab:blue", alpha=0.25, linewidth=0.3, edgecolor="tab:blue"
+    )
     colors = ("tab:red", "tab:green", "tab:purple")
     for i in range(3):
         tip = axes[:, i] * semi[i] * 1.15

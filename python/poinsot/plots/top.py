@@ -17,9 +17,14 @@ from ._mpl import pyplot as _pyplot
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
 
-__all__ = ["plot_effective_potential", "plot_axis_locus", "plot_angles", "plot_steady_precession",
-           "animate_top", "save_top_plots"]
-
+__all__ = [
+    "plot_effective_potential",
+    "plot_axis_locus",
+    "plot_angles",
+    "plot_steady_precession",
+    "animate_top",
+    "save_top_plots",
+]
 
 
 def _periods(top: HeavyTop, periods: float, fallback: float = 10.0) -> float:
@@ -49,7 +54,9 @@ def plot_effective_potential(top: HeavyTop, ax: Any = None, *, samples: int = 60
     return fig
 
 
-def plot_axis_locus(top: HeavyTop, ax: Any = None, *, periods: float = 3.0, samples: int = 3000) -> Figure:
+def plot_axis_locus(
+    top: HeavyTop, ax: Any = None, *, periods: float = 3.0, samples: int = 3000
+) -> Figure:
     """The path of the symmetry axis on the unit sphere seen from above the pivot (waves, loops
     or cusps between the circles theta1 and theta2), by orthographic projection onto the XY plane
     (points of the lower hemisphere drawn dashed)."""
@@ -59,14 +66,26 @@ def plot_axis_locus(top: HeavyTop, ax: Any = None, *, periods: float = 3.0, samp
     n = top.symmetry_axis(t)
     upper = n[:, 2] >= 0
     x, y = n[:, 0], n[:, 1]
-    ax.plot(np.where(upper, x, np.nan), np.where(upper, y, np.nan), lw=1.2, label="axis (upper hemisphere)")
+    ax.plot(
+        np.where(upper, x, np.nan),
+        np.where(upper, y, np.nan),
+        lw=1.2,
+        label="axis (upper hemisphere)",
+    )
     if not np.all(upper):
-        ax.plot(np.where(~upper, x, np.nan), np.where(~upper, y, np.nan), "--", lw=1.0,
-                label="axis (lower hemisphere)")
+        ax.plot(
+            np.where(~upper, x, np.nan),
+            np.where(~upper, y, np.nan),
+            "--",
+            lw=1.0,
+            label="axis (lower hemisphere)",
+        )
     a = np.linspace(0, 2 * np.pi, 361)
     for th, name in zip(top.turning_points, ("θ₁", "θ₂")):
         ax.plot(np.sin(th) * np.cos(a), np.sin(th) * np.sin(a), ":", lw=0.8, color="gray")
-        ax.annotate(name, (np.sin(th) / np.sqrt(2), -np.sin(th) / np.sqrt(2)), fontsize=8, color="gray")
+        ax.annotate(
+            name, (np.sin(th) / np.sqrt(2), -np.sin(th) / np.sqrt(2)), fontsize=8, color="gray"
+        )
     ax.plot(np.cos(a), np.sin(a), color="k", lw=0.6)
     ax.plot([x[0]], [y[0]], "o", ms=4, color="C3", label="t = 0")
     ax.set_aspect("equal")
@@ -99,13 +118,23 @@ def plot_angles(top: HeavyTop, *, periods: float = 3.0, samples: int = 2000) -> 
     axes[2].set_ylabel("ψ̇ (rad/s)")
     axes[2].set_xlabel("t (s)")
     axes[2].legend(fontsize=8)
-    axes[0].set_title(f"exact motion ({top.motion_class}, nutation period {top.nutation_period:.4g} s)")
+    axes[0].set_title(
+        f"exact motion ({top.motion_class}, nutation period {top.nutation_period:.4g} s)"
+    )
     fig.tight_layout()
     return fig
 
 
-def plot_steady_precession(I1: float, I3: float, mgl: float, theta0: float, ax: Any = None, *,  # noqa: N803
-                           max_spin: float | None = None, samples: int = 400) -> Figure:
+def plot_steady_precession(
+    I1: float,
+    I3: float,
+    mgl: float,
+    theta0: float,
+    ax: Any = None,
+    *,
+    max_spin: float | None = None,
+    samples: int = 400,
+) -> Figure:
     """The two exact steady-precession rates at ``theta0`` (rad) against the spin omega3, beside
     the fast-top approximations 2.120 (corrected) and 2.121, with the minimum spin 2.119 marked.
     Below the horizontal (theta0 > pi/2) every spin has a slow and a (negative) fast rate."""
@@ -119,9 +148,17 @@ def plot_steady_precession(I1: float, I3: float, mgl: float, theta0: float, ax: 
     fast = np.array([r.fast for r in rates])
     ax.plot(spins, fast, color="C0", label="fast (exact, 2.116)")
     ax.plot(spins, slow, color="C1", label="slow (exact, 2.116)")
-    ax.plot(spins, [r.fast_approx for r in rates], "--", color="C0", lw=0.8,
-            label="p_ψ/(I₁ cos θ₀)  (2.120, corrected)")
-    ax.plot(spins, [r.slow_approx for r in rates], "--", color="C1", lw=0.8, label="mgl/p_ψ  (2.121)")
+    ax.plot(
+        spins,
+        [r.fast_approx for r in rates],
+        "--",
+        color="C0",
+        lw=0.8,
+        label="p_ψ/(I₁ cos θ₀)  (2.120, corrected)",
+    )
+    ax.plot(
+        spins, [r.slow_approx for r in rates], "--", color="C1", lw=0.8, label="mgl/p_ψ  (2.121)"
+    )
     if w_min > 0:
         ax.axvline(w_min, color="C3", lw=0.8, label=f"minimum spin {w_min:.4g} rad/s (2.119)")
     finite = np.concatenate([slow[np.isfinite(slow)], fast[np.isfinite(fast)]])
@@ -135,8 +172,15 @@ def plot_steady_precession(I1: float, I3: float, mgl: float, theta0: float, ax: 
     return fig
 
 
-def animate_top(top: HeavyTop, path: str | Path | None = None, *, periods: float = 2.0, frames: int = 150,
-                fps: int = 25, trail: int = 60) -> Any:
+def animate_top(
+    top: HeavyTop,
+    path: str | Path | None = None,
+    *,
+    periods: float = 2.0,
+    frames: int = 150,
+    fps: int = 25,
+    trail: int = 60,
+) -> Any:
     """An animation of the top in 3-D: its symmetry axis (a stick from the pivot, with a disk
     drawn at the centre of mass carrying a mark that shows the spin) and the trail of the axis'
     tip. Saved to ``path`` if given (``.gif`` with Pillow, ``.mp4`` with ffmpeg); returns the
@@ -148,7 +192,9 @@ def animate_top(top: HeavyTop, path: str | Path | None = None, *, periods: float
     rot = top.attitude(t)
     tip = rot[:, :, 2]
     a = np.linspace(0, 2 * np.pi, 40)
-    ring_body = 0.35 * np.stack([np.cos(a), np.sin(a), np.zeros_like(a)], axis=1) + np.array([0, 0, 0.8])
+    ring_body = 0.35 * np.stack([np.cos(a), np.sin(a), np.zeros_like(a)], axis=1) + np.array(
+        [0, 0, 0.8]
+    )
     mark_body = np.array([[0, 0, 0.8], [0.35, 0, 0.8]])
     fig = plt.figure(figsize=(5, 5))
     ax = fig.add_subplot(projection="3d")
@@ -158,10 +204,10 @@ def animate_top(top: HeavyTop, path: str | Path | None = None, *, periods: float
     ax.set_xlabel("X")
     ax.set_ylabel("Y")
     ax.set_zlabel("Z")
-    stick, = ax.plot([], [], [], lw=2, color="k")
-    ring, = ax.plot([], [], [], lw=1.5, color="C0")
-    mark, = ax.plot([], [], [], lw=2, color="C3")
-    trail_line, = ax.plot([], [], [], lw=0.8, color="C1", alpha=0.7)
+    (stick,) = ax.plot([], [], [], lw=2, color="k")
+    (ring,) = ax.plot([], [], [], lw=1.5, color="C0")
+    (mark,) = ax.plot([], [], [], lw=2, color="C3")
+    (trail_line,) = ax.plot([], [], [], lw=0.8, color="C1", alpha=0.7)
     text = ax.text2D(0.02, 0.95, "", transform=ax.transAxes, fontsize=9)
 
     def update(k: int) -> tuple[Any, ...]:
@@ -172,14 +218,18 @@ def animate_top(top: HeavyTop, path: str | Path | None = None, *, periods: float
         mb = mark_body @ r.T
         mark.set_data_3d(mb[:, 0], mb[:, 1], mb[:, 2])
         lo = max(0, k - trail)
-        trail_line.set_data_3d(tip[lo:k + 1, 0], tip[lo:k + 1, 1], tip[lo:k + 1, 2])
+        trail_line.set_data_3d(tip[lo : k + 1, 0], tip[lo : k + 1, 1], tip[lo : k + 1, 2])
         text.set_text(f"t = {t[k]:.2f} s  ({top.motion_class})")
         return stick, ring, mark, trail_line, text
 
     anim = animation.FuncAnimation(fig, update, frames=len(t), interval=1000 / fps, blit=False)
     if path is not None:
         path = Path(path)
-        writer = animation.PillowWriter(fps=fps) if path.suffix.lower() == ".gif" else animation.FFMpegWriter(fps=fps)
+        writer = (
+            animation.PillowWriter(fps=fps)
+            if path.suffix.lower() == ".gif"
+            else animation.FFMpegWriter(fps=fps)
+        )
         anim.save(str(path), writer=writer)
     return anim
 
@@ -195,8 +245,9 @@ def save_top_plots(top: HeavyTop, directory: str | Path, *, animation: bool = Fa
         "potential.png": plot_effective_potential(top),
         "axis_locus.png": plot_axis_locus(top),
         "angles.png": plot_angles(top),
-        "steady_precession.png": plot_steady_precession(top.I1, top.I3, top.mgl,
-                                                        theta0 if 0.0 < theta0 < np.pi else 0.5),
+        "steady_precession.png": plot_steady_precession(
+            top.I1, top.I3, top.mgl, theta0 if 0.0 < theta0 < np.pi else 0.5
+        ),
     }
     paths = []
     for name, fig in figures.items():

@@ -30,9 +30,21 @@ HERE = Path(__file__).resolve().parent
 
 CASES = [
     # (name, moments, omega0, q0, times)
-    ("headline", (1.0, 2.0, 3.0), (1.0, 0.1, 1.0), (1.0, 0.0, 0.0, 0.0), (0.0, 0.5, 1.0, 10.0, 100.0, 1000.0)),
+    (
+        "headline",
+        (1.0, 2.0, 3.0),
+        (1.0, 0.1, 1.0),
+        (1.0, 0.0, 0.0, 0.0),
+        (0.0, 0.5, 1.0, 10.0, 100.0, 1000.0),
+    ),
     ("below", (1.0, 2.0, 3.0), (1.0, 0.1, 0.2), (1.0, 0.0, 0.0, 0.0), (0.7, 33.0, 1000.0)),
-    ("near_separatrix", (1.0, 2.0, 3.0), (1e-3, 1.0, 1.3e-3), (1.0, 0.0, 0.0, 0.0), (3.0, 17.0, 250.0)),
+    (
+        "near_separatrix",
+        (1.0, 2.0, 3.0),
+        (1e-3, 1.0, 1.3e-3),
+        (1.0, 0.0, 0.0, 0.0),
+        (3.0, 17.0, 250.0),
+    ),
     ("unsorted", (3.0, 1.0, 2.5), (-0.4, 2.0, 0.9), (0.5, 0.5, -0.5, 0.5), (0.3, 12.5, 999.0)),
     ("flat", (0.5, 1.7, 2.0), (0.2, -1.1, -3.0), (0.8, 0.0, 0.6, 0.0), (1.0, 400.0)),
 ]
@@ -48,11 +60,13 @@ def rot(axis: int, angle: mp.mpf) -> mp.matrix:
 
 def quat_to_matrix(q) -> mp.matrix:
     w, x, y, z = q
-    return mp.matrix([
-        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
-    ])
+    return mp.matrix(
+        [
+            [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+        ]
+    )
 
 
 def matrix_to_quat(r: mp.matrix) -> list:
@@ -87,7 +101,7 @@ class Exact:
         T2 = sum(I[k] * w[k] ** 2 for k in range(3))
         L2 = sum((I[k] * w[k]) ** 2 for k in range(3))
         self.T2, self.L = T2, mp.sqrt(L2)
-        I1, I2, I3 = I
+        _I1, I2, _I3 = I
         if L2 > T2 * I2:
             p, o = 2, 0
         else:
@@ -133,15 +147,17 @@ class Exact:
         w = self.omega_sorted(t)
         dw = [mp.diff(lambda x, k=k: self.omega_sorted(x)[k], t) for k in range(3)]
         I = self.I
-        res = [I[0] * dw[0] - (I[1] - I[2]) * w[1] * w[2],
-               I[1] * dw[1] - (I[2] - I[0]) * w[2] * w[0],
-               I[2] * dw[2] - (I[0] - I[1]) * w[0] * w[1]]
+        res = [
+            I[0] * dw[0] - (I[1] - I[2]) * w[1] * w[2],
+            I[1] * dw[1] - (I[2] - I[0]) * w[2] * w[0],
+            I[2] * dw[2] - (I[0] - I[1]) * w[0] * w[1],
+        ]
         return max(abs(r) for r in res)
 
     def phidot(self, t):
         w = self.omega_sorted(t)
         p, I = self.p, self.I
-        return self.L * (self.T2 - I[p] * w[p] ** 2) / (self.L ** 2 - (I[p] * w[p]) ** 2)
+        return self.L * (self.T2 - I[p] * w[p] ** 2) / (self.L**2 - (I[p] * w[p]) ** 2)
 
     def _phi_integral(self, a, b):
         n = 16
@@ -212,7 +228,9 @@ def main() -> None:
         q0n = [float(mp.mpf(c) / n) for c in q0]
         ex = Exact(moments, omega0, q0n)
         err = odefun_check(ex, moments, omega0, q0n)
-        print(f"{name}: m = {mp.nstr(ex.m, 8)}, period = {mp.nstr(ex.period, 8)}, odefun check {mp.nstr(err, 3)}")
+        print(
+            f"{name}: m = {mp.nstr(ex.m, 8)}, period = {mp.nstr(ex.period, 8)}, odefun check {mp.nstr(err, 3)}"
+        )
         for t in times:
             w, R = ex.state(t)
             q = matrix_to_quat(R)

@@ -35,8 +35,22 @@ from gen_free_body import Exact, matrix_to_quat  # noqa: E402
 CASES = [
     # (name, digits, moments, omega0, q0, times)
     ("far", 60, (1.0, 2.0, 3.0), (1.0, 0.1, 1.0), (1.0, 0.0, 0.0, 0.0), (1e6, 1e9, 1.3e12)),
-    ("hair_above", 400, (1.0, 2.0, 3.0), (1e-170, 1.0, 1e-170), (1.0, 0.0, 0.0, 0.0), (60.0, 400.0, 680.0, 1000.0)),
-    ("hair_below", 450, (1.0, 2.0, 3.0), (1e-200, 1.0, 0.0), (0.5, 0.5, 0.5, 0.5), (120.0, 800.0, 1500.0)),
+    (
+        "hair_above",
+        400,
+        (1.0, 2.0, 3.0),
+        (1e-170, 1.0, 1e-170),
+        (1.0, 0.0, 0.0, 0.0),
+        (60.0, 400.0, 680.0, 1000.0),
+    ),
+    (
+        "hair_below",
+        450,
+        (1.0, 2.0, 3.0),
+        (1e-200, 1.0, 0.0),
+        (0.5, 0.5, 0.5, 0.5),
+        (120.0, 800.0, 1500.0),
+    ),
     ("hair_max", 700, (1.0, 2.0, 3.0), (0.0, -1.0, 1e-300), (1.0, 0.0, 0.0, 0.0), (790.0, 1190.0)),
 ]
 HEADER = "# case,I1,I2,I3,w1,w2,w3,qw,qx,qy,qz,t,w1(t),w2(t),w3(t),qw(t),qx(t),qy(t),qz(t),digits"
@@ -104,12 +118,16 @@ def case_rows(name, digits, moments, omega0, q0, times) -> list[str]:
     rows = []
     with mp.workdps(digits):
         ex = (Exact if name == "far" else Hair)(moments, omega0, q0)
-        print(f"{name}: 1 - m = {mp.nstr(1 - ex.m, 5)}, period = {mp.nstr(ex.period, 8)}", flush=True)
+        print(
+            f"{name}: 1 - m = {mp.nstr(1 - ex.m, 5)}, period = {mp.nstr(ex.period, 8)}", flush=True
+        )
         for t in times:
             w, R = ex.state(t)
             q = matrix_to_quat(R)
             head = ",".join(repr(float(v)) for v in (*moments, *omega0, *q0, t))
-            rows.append(f"{name},{head}," + ",".join(f"{float(v):.17e}" for v in (*w, *q)) + f",{digits}")
+            rows.append(
+                f"{name},{head}," + ",".join(f"{float(v):.17e}" for v in (*w, *q)) + f",{digits}"
+            )
             print(f"  t = {t}: ω = {[mp.nstr(v, 8) for v in w]}", flush=True)
     return rows
 

@@ -40,7 +40,9 @@ TIMES = [0.25, 0.7, 1.3, 2.1, 3.0, 4.2, 5.5]
 GRID = [k * 0.01 for k in range(1, 551)]
 
 
-def steady_rates(i1: float, i3: float, mgl: float, theta0: float, omega3: float) -> tuple[mp.mpf, mp.mpf]:
+def steady_rates(
+    i1: float, i3: float, mgl: float, theta0: float, omega3: float
+) -> tuple[mp.mpf, mp.mpf]:
     """The two roots of I1 cos(th0) ph'^2 - p_psi ph' + mgl = 0 (the unit's 2.116), at 40 digits."""
     c = mp.cos(mp.mpf(theta0))
     p = mp.mpf(i3) * mp.mpf(omega3)
@@ -50,16 +52,108 @@ def steady_rates(i1: float, i3: float, mgl: float, theta0: float, omega3: float)
 
 def case_list() -> list[dict]:
     cases = [
-        dict(name="cusps", I1=1.0, I3=0.5, mgl=1.0, theta=0.8, theta_dot=0.0, phi_dot=0.0, psi_dot=6.0, label="cusps"),
-        dict(name="loops", I1=1.0, I3=0.5, mgl=1.0, theta=0.8, theta_dot=0.0, phi_dot=-0.5, psi_dot=6.0),
-        dict(name="waves", I1=1.0, I3=0.5, mgl=1.0, theta=0.8, theta_dot=0.0, phi_dot=0.5, psi_dot=6.0),
-        dict(name="moving_start", I1=1.0, I3=0.5, mgl=1.0, theta=0.8, theta_dot=0.3, phi_dot=0.6, psi_dot=6.0),
-        dict(name="near_sleeping", I1=1.0, I3=0.5, mgl=1.0, theta=0.01, theta_dot=0.001, phi_dot=0.2, psi_dot=10.0),
-        dict(name="near_sleeping_loops", I1=1.0, I3=0.5, mgl=1.0, theta=1e-3, theta_dot=0.0, phi_dot=1.0, psi_dot=10.0),
-        dict(name="below_horizontal", I1=1.0, I3=0.5, mgl=1.0, theta=2.5, theta_dot=0.5, phi_dot=0.3, psi_dot=2.0),
-        dict(name="free_top", I1=1.0, I3=0.5, mgl=0.0, theta=0.8, theta_dot=0.2, phi_dot=1.0, psi_dot=3.0),
-        dict(name="near_bottom_pass", I1=1.0, I3=0.5, mgl=1.0, theta=0.8, theta_dot=0.0, phi_dot=1e-3, psi_dot=0.0),
-        dict(name="fast_top_cusps", I1=1.0, I3=0.5, mgl=0.3, theta=0.6, theta_dot=0.0, phi_dot=0.0, psi_dot=40.0, label="cusps"),
+        dict(
+            name="cusps",
+            I1=1.0,
+            I3=0.5,
+            mgl=1.0,
+            theta=0.8,
+            theta_dot=0.0,
+            phi_dot=0.0,
+            psi_dot=6.0,
+            label="cusps",
+        ),
+        dict(
+            name="loops",
+            I1=1.0,
+            I3=0.5,
+            mgl=1.0,
+            theta=0.8,
+            theta_dot=0.0,
+            phi_dot=-0.5,
+            psi_dot=6.0,
+        ),
+        dict(
+            name="waves",
+            I1=1.0,
+            I3=0.5,
+            mgl=1.0,
+            theta=0.8,
+            theta_dot=0.0,
+            phi_dot=0.5,
+            psi_dot=6.0,
+        ),
+        dict(
+            name="moving_start",
+            I1=1.0,
+            I3=0.5,
+            mgl=1.0,
+            theta=0.8,
+            theta_dot=0.3,
+            phi_dot=0.6,
+            psi_dot=6.0,
+        ),
+        dict(
+            name="near_sleeping",
+            I1=1.0,
+            I3=0.5,
+            mgl=1.0,
+            theta=0.01,
+            theta_dot=0.001,
+            phi_dot=0.2,
+            psi_dot=10.0,
+        ),
+        dict(
+            name="near_sleeping_loops",
+            I1=1.0,
+            I3=0.5,
+            mgl=1.0,
+            theta=1e-3,
+            theta_dot=0.0,
+            phi_dot=1.0,
+            psi_dot=10.0,
+        ),
+        dict(
+            name="below_horizontal",
+            I1=1.0,
+            I3=0.5,
+            mgl=1.0,
+            theta=2.5,
+            theta_dot=0.5,
+            phi_dot=0.3,
+            psi_dot=2.0,
+        ),
+        dict(
+            name="free_top",
+            I1=1.0,
+            I3=0.5,
+            mgl=0.0,
+            theta=0.8,
+            theta_dot=0.2,
+            phi_dot=1.0,
+            psi_dot=3.0,
+        ),
+        dict(
+            name="near_bottom_pass",
+            I1=1.0,
+            I3=0.5,
+            mgl=1.0,
+            theta=0.8,
+            theta_dot=0.0,
+            phi_dot=1e-3,
+            psi_dot=0.0,
+        ),
+        dict(
+            name="fast_top_cusps",
+            I1=1.0,
+            I3=0.5,
+            mgl=0.3,
+            theta=0.6,
+            theta_dot=0.0,
+            phi_dot=0.0,
+            psi_dot=40.0,
+            label="cusps",
+        ),
     ]
     # Steady precession at the slow and fast rates (rounded to doubles: the nutation left is
     # of the order of that rounding).
@@ -67,8 +161,19 @@ def case_list() -> list[dict]:
         i1, i3, mgl, th, w3 = 1.0, 0.5, 1.0, 0.8, 6.0
         rate = float(steady_rates(i1, i3, mgl, th, w3)[idx])
         psi_dot = float(mp.mpf(w3) - mp.mpf(rate) * mp.cos(mp.mpf(th)))
-        cases.append(dict(name=which, I1=i1, I3=i3, mgl=mgl, theta=th, theta_dot=0.0, phi_dot=rate,
-                          psi_dot=psi_dot, label="steady precession"))
+        cases.append(
+            dict(
+                name=which,
+                I1=i1,
+                I3=i3,
+                mgl=mgl,
+                theta=th,
+                theta_dot=0.0,
+                phi_dot=rate,
+                psi_dot=psi_dot,
+                label="steady precession",
+            )
+        )
     return cases
 
 
@@ -165,11 +270,17 @@ def write(results: list[dict]) -> None:
     path.write_text(json.dumps(doc, indent=1) + "\n")
     print(f"wrote {path}", file=sys.stderr)
     keys = ("phi", "theta", "psi", "phi_dot", "theta_dot", "psi_dot")
-    lines = ["# " + doc["description"] + "; generator " + doc["generator"],
-             "name,class,I1,I3,mgl,theta0,theta_dot0,phi_dot0,psi_dot0,t," + ",".join(keys)]
+    lines = [
+        "# " + doc["description"] + "; generator " + doc["generator"],
+        "name,class,I1,I3,mgl,theta0,theta_dot0,phi_dot0,psi_dot0,t," + ",".join(keys),
+    ]
     for c in results:
-        head = [c["name"], c["class"], *(repr(c[k]) for k in ("I1", "I3", "mgl")),
-                *(repr(c["initial"][k]) for k in ("theta", "theta_dot", "phi_dot", "psi_dot"))]
+        head = [
+            c["name"],
+            c["class"],
+            *(repr(c[k]) for k in ("I1", "I3", "mgl")),
+            *(repr(c["initial"][k]) for k in ("theta", "theta_dot", "phi_dot", "psi_dot")),
+        ]
         for i, t in enumerate(c["times"]):
             lines.append(",".join([*head, repr(t), *(repr(c["trajectory"][k][i]) for k in keys)]))
     (HERE / "heavy_top_mpmath.csv").write_text("\n".join(lines) + "\n")

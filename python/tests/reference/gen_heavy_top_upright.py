@@ -68,22 +68,56 @@ def case_list() -> list[dict]:
         times = fractions(t_bottom, FALL)
         if th == 1e-9:
             times = sorted(set(times) | {5.0, 10.0})  # the figures
-        cases.append(dict(name=f"fall_{th:g}", theta=th, theta_dot=0.0, phi_dot=0.0, psi_dot=0.0,
-                          times=times, label="through vertical"))
+        cases.append(
+            dict(
+                name=f"fall_{th:g}",
+                theta=th,
+                theta_dot=0.0,
+                phi_dot=0.0,
+                psi_dot=0.0,
+                times=times,
+                label="through vertical",
+            )
+        )
     # Half the sleeping threshold: the fall is slower (growth rate sqrt(2 beta - a^2) / 2 = 0.87/s)
     # and ends at theta2 = 2 pi / 3; the times go past the lower turning point.
     for th in (1e-12, 1e-9, 1e-6, 1e-3):
         t_bottom = float(mp.log(4 / mp.mpf(th)) / mp.sqrt(3) * 2)
-        cases.append(dict(name=f"half_{th:g}", theta=th, theta_dot=0.0, phi_dot=0.0,
-                          psi_dot=psi_dot_for_spin(th, 0.0, 2.0),
-                          times=fractions(t_bottom, (0.1, 0.3, 0.5, 0.7, 0.9, 1.0, 1.1)), label="cusps"))
-    cases.append(dict(name="half_moving_1e-09", theta=1e-9, theta_dot=5e-10, phi_dot=0.3,
-                      psi_dot=psi_dot_for_spin(1e-9, 0.3, 2.0), times=[2.0, 5.0, 10.0, 15.0, 20.0, 25.0, 27.0]))
+        cases.append(
+            dict(
+                name=f"half_{th:g}",
+                theta=th,
+                theta_dot=0.0,
+                phi_dot=0.0,
+                psi_dot=psi_dot_for_spin(th, 0.0, 2.0),
+                times=fractions(t_bottom, (0.1, 0.3, 0.5, 0.7, 0.9, 1.0, 1.1)),
+                label="cusps",
+            )
+        )
+    cases.append(
+        dict(
+            name="half_moving_1e-09",
+            theta=1e-9,
+            theta_dot=5e-10,
+            phi_dot=0.3,
+            psi_dot=psi_dot_for_spin(1e-9, 0.3, 2.0),
+            times=[2.0, 5.0, 10.0, 15.0, 20.0, 25.0, 27.0],
+        )
+    )
     # Twice the threshold: nutation near upright, period ~ 1-3 s.
     near = [0.25, 0.7, 1.3, 2.1, 3.0, 4.2, 5.5]
     for th in (1e-12, 1e-9, 1e-6, 1e-2):
-        cases.append(dict(name=f"above_cusps_{th:g}", theta=th, theta_dot=0.0, phi_dot=0.0,
-                          psi_dot=psi_dot_for_spin(th, 0.0, 8.0), times=near, label="cusps"))
+        cases.append(
+            dict(
+                name=f"above_cusps_{th:g}",
+                theta=th,
+                theta_dot=0.0,
+                phi_dot=0.0,
+                psi_dot=psi_dot_for_spin(th, 0.0, 8.0),
+                times=near,
+                label="cusps",
+            )
+        )
     for name, th, thd, phd in (
         ("above_loops_1e-09", 1e-9, 0.0, -1.0),
         ("above_waves_1e-09", 1e-9, 0.0, 1.0),
@@ -93,16 +127,33 @@ def case_list() -> list[dict]:
         ("above_moving_1e-06", 1e-6, 1e-6, 3.0),
         ("above_slow_1e-09", 1e-9, 0.0, 0.25),
     ):
-        cases.append(dict(name=name, theta=th, theta_dot=thd, phi_dot=phd,
-                          psi_dot=psi_dot_for_spin(th, phd, 8.0), times=near))
+        cases.append(
+            dict(
+                name=name,
+                theta=th,
+                theta_dot=thd,
+                phi_dot=phd,
+                psi_dot=psi_dot_for_spin(th, phd, 8.0),
+                times=near,
+            )
+        )
     # Around the threshold 4 rad/s.
     for name, w3, times in (
         ("threshold_below", 3.96, [1.0, 5.0, 10.0, 20.0, 30.0, 40.0]),
         ("threshold_at", 4.0, [1.0, 5.0, 10.0, 20.0, 30.0, 40.0]),
         ("threshold_above", 4.04, [1.0, 5.0, 10.0, 20.0, 30.0, 40.0]),
     ):
-        cases.append(dict(name=name, theta=1e-9, theta_dot=0.0, phi_dot=0.0,
-                          psi_dot=psi_dot_for_spin(1e-9, 0.0, w3), times=times, label="cusps"))
+        cases.append(
+            dict(
+                name=name,
+                theta=1e-9,
+                theta_dot=0.0,
+                phi_dot=0.0,
+                psi_dot=psi_dot_for_spin(1e-9, 0.0, w3),
+                times=times,
+                label="cusps",
+            )
+        )
     return cases
 
 
@@ -160,8 +211,14 @@ def write(results: list[dict]) -> None:
         "name,class,I1,I3,mgl,theta0,theta_dot0,phi_dot0,psi_dot0,t," + ",".join(keys),
     ]
     for c in results:
-        head = [c["name"], c["class"], repr(I1), repr(I3), repr(MGL),
-                *(repr(c[k]) for k in ("theta", "theta_dot", "phi_dot", "psi_dot"))]
+        head = [
+            c["name"],
+            c["class"],
+            repr(I1),
+            repr(I3),
+            repr(MGL),
+            *(repr(c[k]) for k in ("theta", "theta_dot", "phi_dot", "psi_dot")),
+        ]
         for i, t in enumerate(c["times"]):
             lines.append(",".join([*head, repr(t), *(repr(c["trajectory"][k][i]) for k in keys)]))
     path = HERE / "heavy_top_upright_mpmath.csv"

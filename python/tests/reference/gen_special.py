@@ -42,15 +42,48 @@ def jacobi_rows() -> list[tuple[float, float]]:
     points = []
     for m in ms:
         k = float(mp.ellipk(m)) if m < 1 else 20.0
-        us = [0.0, 1e-300, 1e-10, -1e-10, 1e-3, 0.3, -0.7, 1.0, 2.0, 10.0, -57.3, 100.0, 1000.0, -12345.678]
-        us += [k * f for f in (0.25, 0.5, 0.5000001, 0.9, 0.999, 0.999999, 1.0, 1.5, 2.0, 3.0 + 1e-3, 4.0, 40.5)]
+        us = [
+            0.0,
+            1e-300,
+            1e-10,
+            -1e-10,
+            1e-3,
+            0.3,
+            -0.7,
+            1.0,
+            2.0,
+            10.0,
+            -57.3,
+            100.0,
+            1000.0,
+            -12345.678,
+        ]
+        us += [
+            k * f
+            for f in (
+                0.25,
+                0.5,
+                0.5000001,
+                0.9,
+                0.999,
+                0.999999,
+                1.0,
+                1.5,
+                2.0,
+                3.0 + 1e-3,
+                4.0,
+                40.5,
+            )
+        ]
         us += [rng.choice((-1, 1)) * 10 ** rng.uniform(-6, 4) for _ in range(10)]
         points += [(u, m) for u in us]
     return points
 
 
 def main() -> None:
-    lines = ["# u,m,sn,cn,dn,am   (u and m as Python repr, which round-trips exactly; values 40-digit mpmath rounded to double)"]
+    lines = [
+        "# u,m,sn,cn,dn,am   (u and m as Python repr, which round-trips exactly; values 40-digit mpmath rounded to double)"
+    ]
     for u, m in jacobi_rows():
         if u == 0.0:
             sn, cn, dn, am = 0.0, 1.0, 1.0, 0.0

@@ -71,15 +71,45 @@ def fmt(v) -> str:
 
 def integral_rows() -> list[str]:
     rows = []
-    ms = [-MAX, -1e308, -1e200, -1e100, -1e20, -1e10, -10.0, -1.0, -1e-300, -5e-324, 5e-324, 1e-300, 0.5,
-          1.0 - 2.0**-30, 1.0 - 2.0**-52, 1.0 - 2.0**-53]
+    ms = [
+        -MAX,
+        -1e308,
+        -1e200,
+        -1e100,
+        -1e20,
+        -1e10,
+        -10.0,
+        -1.0,
+        -1e-300,
+        -5e-324,
+        5e-324,
+        1e-300,
+        0.5,
+        1.0 - 2.0**-30,
+        1.0 - 2.0**-52,
+        1.0 - 2.0**-53,
+    ]
     for m in ms:
         M = mp.mpf(m)
         rows.append(f"K,0,0,{m!r},{fmt(stable(lambda: mp.ellipk(M), 60))}")
         rows.append(f"E,0,0,{m!r},{fmt(stable(lambda: mp.ellipe(M), 60))}")
     rows.append("K,0,0,1.0,ERR:m")
     rows.append("E,0,0,1.0,1.00000000000000000e+00")
-    ns = [-MAX, -1e200, -1e20, -1e5, -3.0, -5e-324, 5e-324, 0.5, 1.0 - 2.0**-40, 1.0 + 2.0**-40, 2.5, 1e10, 1e300]
+    ns = [
+        -MAX,
+        -1e200,
+        -1e20,
+        -1e5,
+        -3.0,
+        -5e-324,
+        5e-324,
+        0.5,
+        1.0 - 2.0**-40,
+        1.0 + 2.0**-40,
+        2.5,
+        1e10,
+        1e300,
+    ]
     for n in ns:
         for m in [-1e300, -1e10, -0.5, 0.0, 0.3, 0.9, 1.0 - 2.0**-40]:
             N, M = mp.mpf(n), mp.mpf(m)
@@ -97,7 +127,21 @@ def integral_rows() -> list[str]:
     print("complete done", flush=True)
     rows.append("PI,0,1.0,0.5,ERR:n")
     rows.append("PI,0,0.5,1.0,ERR:m")
-    phis = [5e-324, 1e-300, 0.3, 1.5707963267948966, 1.6, 3.0, -7.5, 1e3, 1e15, 1.4e16, -1e20, 1e300, MAX]
+    phis = [
+        5e-324,
+        1e-300,
+        0.3,
+        1.5707963267948966,
+        1.6,
+        3.0,
+        -7.5,
+        1e3,
+        1e15,
+        1.4e16,
+        -1e20,
+        1e300,
+        MAX,
+    ]
     for m in [-1e308, -1e100, -1e10, -1.0, 0.0, 5e-324, 0.5, 0.9, 1.0 - 2.0**-40, 1.0]:
         M = mp.mpf(m)
         for phi in phis:
@@ -143,8 +187,11 @@ def integral_rows() -> list[str]:
                         p = mp.sqrt((N - 1) * (1 - w))
                         delta = mp.sqrt(1 - M * mp.sin(r) ** 2)
                         t = mp.tan(r)
-                        v = (mp.ellipf(r, M) - mp.ellippi(w, r, M)
-                             + mp.re(mp.atanh(p * t / delta)) / p)  # ½ln|(1+x)/(1−x)|
+                        v = (
+                            mp.ellipf(r, M)
+                            - mp.ellippi(w, r, M)
+                            + mp.re(mp.atanh(p * t / delta)) / p
+                        )  # ½ln|(1+x)/(1−x)|
                         whole = mp.ellipk(M) - mp.ellippi(w, M)
                     else:
                         v = mp.ellippi(N, r, M)
@@ -167,7 +214,10 @@ def jacobi_rows() -> list[str]:
         for u in [0.999 * limit, -0.7 * limit, 2.0**40 * k + 0.3, 123456789.123]:
             U = mp.mpf(u)
             d = digits_for(u)
-            vals = [stable(lambda kind=kind: mp.ellipfun(kind, U, m=M), d) for kind in ("sn", "cn", "dn")]
+            vals = [
+                stable(lambda kind=kind: mp.ellipfun(kind, U, m=M), d)
+                for kind in ("sn", "cn", "dn")
+            ]
             rows.append(f"JAC,{u!r},{m!r}," + ",".join(fmt(v) for v in vals))
         rows.append(f"JAC,{1.001 * limit!r},{m!r},ERR:u")
     for kc in [1e-200, 1e-300]:
@@ -180,7 +230,18 @@ def jacobi_rows() -> list[str]:
         with mp.workdps(digits):
             k = mp.ellipk(1 - mp.mpf(kc) ** 2)
         kf = float(k)
-        for u in [0.5, 10.0, 200.0, kf - 3.0, kf - 1e-9, kf, kf + 0.7, 2 * kf - 3.0, 3.3 * kf, -5.5 * kf]:
+        for u in [
+            0.5,
+            10.0,
+            200.0,
+            kf - 3.0,
+            kf - 1e-9,
+            kf,
+            kf + 0.7,
+            2 * kf - 3.0,
+            3.3 * kf,
+            -5.5 * kf,
+        ]:
             with mp.workdps(60):
                 U, K, KC = mp.mpf(u), +k, mp.mpf(kc)
                 j = mp.nint(U / (2 * K))
@@ -200,8 +261,10 @@ def jacobi_rows() -> list[str]:
 
 
 def main() -> None:
-    lines = ["# kind,phi,n,m,value (K|E|PI|F|EINC|PIINC) | JAC,u,m,sn,cn,dn | JKC,u,kc,sn,cn,dn;"
-             " ERR:<argument> where poinsot must refuse naming it"]
+    lines = [
+        "# kind,phi,n,m,value (K|E|PI|F|EINC|PIINC) | JAC,u,m,sn,cn,dn | JKC,u,kc,sn,cn,dn;"
+        " ERR:<argument> where poinsot must refuse naming it"
+    ]
     lines += integral_rows()
     lines += jacobi_rows()
     (HERE / "special_edges.csv").write_text("\n".join(lines) + "\n")
