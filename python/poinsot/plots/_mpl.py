@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any
 
 
@@ -12,3 +13,16 @@ def pyplot() -> Any:
     except ImportError as exc:  # pragma: no cover - depends on the environment
         raise ImportError("poinsot's plots need matplotlib: pip install 'poinsot[plot]'") from exc
     return plt
+
+
+def save_animation(anim: Any, path: str | Path, fps: float) -> None:
+    """Writes a matplotlib animation to ``path``: a ``.gif`` through Pillow (always available),
+    any other suffix (``.mp4``) through ffmpeg, which must then be installed."""
+    from matplotlib import animation
+
+    path = Path(path)
+    if path.suffix.lower() == ".gif":
+        writer: Any = animation.PillowWriter(fps=fps)
+    else:
+        writer = animation.FFMpegWriter(fps=fps)
+    anim.save(str(path), writer=writer)

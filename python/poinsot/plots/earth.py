@@ -13,6 +13,7 @@ import numpy as np
 
 from ..earth import Earth, Fall, Flight, FoucaultRun
 from ._mpl import pyplot as _pyplot
+from ._mpl import save_animation
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -204,11 +205,5 @@ def animate_foucault(
 
     anim = animation.FuncAnimation(fig, update, frames=len(idx), interval=1000 / fps, blit=True)
     if path is not None:
-        path = Path(path)
-        writer = (
-            animation.PillowWriter(fps=fps)
-            if path.suffix.lower() == ".gif"
-            else animation.FFMpegWriter(fps=fps)
-        )
-        anim.save(str(path), writer=writer)
+        save_animation(anim, path, fps)
     return anim

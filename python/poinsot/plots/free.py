@@ -16,6 +16,7 @@ from ..dynamics import Trajectory
 from ..free import FreeRigidBody, FreeSymmetricTop
 from ..rotation import quaternion_to_matrix, rotate_vectors
 from ._mpl import pyplot as _pyplot
+from ._mpl import save_animation
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -275,11 +276,5 @@ def animate_tumbling_box(
 
     anim = animation.FuncAnimation(fig, update, frames=frames, interval=1000 / fps, blit=False)
     if path is not None:
-        path = Path(path)
-        writer = (
-            animation.PillowWriter(fps=fps)
-            if path.suffix.lower() == ".gif"
-            else animation.FFMpegWriter(fps=fps)
-        )
-        anim.save(str(path), writer=writer)
+        save_animation(anim, path, fps)
     return anim
