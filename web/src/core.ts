@@ -16,7 +16,7 @@ export const coreStatus = core.coreStatus;
 export const {
   version, start, errorClasses, eulerToMatrix, matrixToEuler, rotationAxis, screwAxis, bodyAngularVelocity,
   eulerRates, axisStability, simulateParticle,
-  AxisStability, Earth, EulerAngles, Fall, FixedMotion, Foucault, FreeRigidBody, FreeSymmetricTop, HeavyTop,
+  AxisStability, Earth, EulerAngles, Fall, FixedMotion, FoucaultRun, FreeRigidBody, FreeSymmetricTop, HeavyTop,
   InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, Screw, SpringParticle, SteadyPrecession,
 } = core;
 export type AxisStability = raw.AxisStability;
@@ -24,7 +24,7 @@ export type Earth = raw.Earth;
 export type EulerAngles = raw.EulerAngles;
 export type Fall = raw.Fall;
 export type FixedMotion = raw.FixedMotion;
-export type Foucault = raw.Foucault;
+export type FoucaultRun = raw.FoucaultRun;
 export type FreeRigidBody = raw.FreeRigidBody;
 export type FreeSymmetricTop = raw.FreeSymmetricTop;
 export type HeavyTop = raw.HeavyTop;
@@ -41,7 +41,7 @@ export type SteadyPrecession = raw.SteadyPrecession;
 const exported = {
   version, start, errorClasses, eulerToMatrix, matrixToEuler, rotationAxis, screwAxis, bodyAngularVelocity,
   eulerRates, axisStability, simulateParticle,
-  AxisStability, Earth, EulerAngles, Fall, FixedMotion, Foucault, FreeRigidBody, FreeSymmetricTop, HeavyTop,
+  AxisStability, Earth, EulerAngles, Fall, FixedMotion, FoucaultRun, FreeRigidBody, FreeSymmetricTop, HeavyTop,
   InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, Screw, SpringParticle, SteadyPrecession,
 };
 type Unlisted = Exclude<keyof typeof raw, keyof typeof exported | "default" | "initSync" | "__wbg_reset_state">;

@@ -548,7 +548,11 @@ fn finite_pairs(
     if r.len() != v.len() {
         return Err(invalid(
             "velocity",
-            format!("must have as many rows as position ({}), got {}", r.len(), v.len()),
+            format!(
+                "must have as many rows as position ({}), got {}",
+                r.len(),
+                v.len()
+            ),
         ));
     }
     Ok((r, v))

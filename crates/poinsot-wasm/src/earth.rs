@@ -244,11 +244,11 @@ impl Earth {
 /// state at any time of the run.
 #[wasm_bindgen]
 #[derive(Debug, Clone)]
-pub struct Foucault {
+pub struct FoucaultRun {
     inner: ea::FoucaultSwing,
 }
 
-impl Foucault {
+impl FoucaultRun {
     fn state_at(&self, t: f64) -> Out<ParticleState> {
         self.inner
             .state_at(t)
@@ -257,7 +257,7 @@ impl Foucault {
 }
 
 #[wasm_bindgen]
-impl Foucault {
+impl FoucaultRun {
     /// The length of the run (s).
     #[wasm_bindgen(getter)]
     pub fn duration(&self) -> f64 {
@@ -449,7 +449,7 @@ impl Earth {
         #[wasm_bindgen(unchecked_param_type = "number")] azimuth: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] duration: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] samples: Count,
-    ) -> Out<Foucault> {
+    ) -> Out<FoucaultRun> {
         let latitude = number("latitude", &latitude)?;
         let length = number("length", &length)?;
         let amplitude = number("amplitude", &amplitude)?;
@@ -475,7 +475,7 @@ impl Earth {
                 renamed_all(&[("state0", "length, amplitude"), ("max_steps", "duration")])
                     .otherwise("latitude, length, amplitude, azimuth, duration, samples"),
             )?;
-        Ok(Foucault { inner })
+        Ok(FoucaultRun { inner })
     }
 
     /// Parcels starting at rest on a ring of `radius` (m) — `parcels` of them, the first due east,

@@ -5,7 +5,7 @@
 // rate beside −Ω sin λ. The Earth turns once a sidereal day, so the plane needs a day/|sin λ| to
 // turn round; a planet spinning faster (the exaggeration factor) makes the turn visible.
 import * as THREE from "three";
-import { Earth, type Foucault } from "../core";
+import { Earth, type FoucaultRun } from "../core";
 import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
 import { disposeTree, fixedAxes } from "../view";
 
@@ -82,7 +82,7 @@ export const foucaultScene: SceneDef = {
 
     let p: Params = {};
     let earth: Earth | null = null;
-    let run: Foucault | null = null;
+    let run: FoucaultRun | null = null;
     let times: Float64Array = new Float64Array();
     let turnTimes: Float64Array = new Float64Array();
     let turnAngles: Float64Array = new Float64Array();
@@ -106,7 +106,7 @@ export const foucaultScene: SceneDef = {
         p = params;
         const rate = Earth.siderealRate() * Number(p.spin);
         const nextEarth = new Earth(rate, Earth.meanRadius(), Earth.standardGravity());
-        let nextRun: Foucault;
+        let nextRun: FoucaultRun;
         try {
           nextRun = nextEarth.foucault(Number(p.latitude) * DEG, Number(p.length), Number(p.amplitude), 0, FOUCAULT_DURATION, FOUCAULT_SAMPLES);
         } catch (e) {
