@@ -189,6 +189,7 @@ def frame_simulate_particle(
     stiffness: float = 0.0,
 ) -> tuple[NDArray[np.float64], int]: ...
 
+@final
 class SpringParticleCore:
     def __new__(cls, mass: float, stiffness: float) -> SpringParticleCore: ...
     @property
