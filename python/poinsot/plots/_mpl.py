@@ -15,7 +15,7 @@ def pyplot() -> Any:
     return plt
 
 
-def save_animation(anim: Any, path: str | Path, fps: float) -> None:
+def save_animation(anim: Any, path: str | Path, fps: int) -> None:
     """Writes a matplotlib animation to ``path``: a ``.gif`` through Pillow (always available),
     any other suffix (``.mp4``) through ffmpeg, which must then be installed."""
     from matplotlib import animation
