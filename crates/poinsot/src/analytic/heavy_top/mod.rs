@@ -107,18 +107,9 @@ pub(crate) enum Motion {
 /// ```
 #[derive(Debug, Clone)]
 pub struct HeavyTop {
-    i1: f64,
-    i3: f64,
-    mgl: f64,
-    p_phi: f64,
-    p_psi: f64,
-    energy: f64,
-    reduced_energy: f64,
-    /// The reduced constants in the time unit 1/σ of `ts`.
-    r: Reduced,
-    ts: TimeScale,
-    start: EulerState,
-    turning: Turning,
+    /// The constants, the time unit, the start and the turning points (what the constructors
+    /// computed).
+    a: Assembly,
     class: MotionClass,
     motion: Motion,
     /// The largest |t| (s) evaluated: [`MAX_PHASE`] over the fastest rate (∞ if none).
@@ -126,7 +117,8 @@ pub struct HeavyTop {
 }
 
 /// What the constructors of [`HeavyTop`] compute before the motion is classified and solved
-/// ([`HeavyTop::assemble`]).
+/// ([`HeavyTop::assemble`]); the top keeps it.
+#[derive(Debug, Clone)]
 struct Assembly {
     i1: f64,
     i3: f64,
@@ -364,21 +356,17 @@ impl HeavyTop {
         let Assembly {
             i1,
             i3,
-            mgl,
-            p_phi,
-            p_psi,
-            energy,
-            reduced_energy,
-            r,
-            ts,
-            start,
-            turning,
+            ref r,
+            ref ts,
+            ref start,
+            ref turning,
             from_state,
+            ..
         } = a;
-        let class = classify(&r, &turning);
+        let class = classify(r, turning);
         let motion = if turning.w_lo == turning.w_hi {
             let theta = theta_from_wv(turning.w_lo, turning.v_lo);
-            let (phi_rate, psi_rate) = uniform_rates(i1, i3, &r, &ts, &turning, &start, from_state);
+            let (phi_rate, psi_rate) = uniform_rates(i1, i3, r, ts, turning, start, from_state);
             Motion::Uniform {
                 theta,
                 phi_rate,
@@ -386,7 +374,7 @@ impl HeavyTop {
             }
         } else {
             // Built in the time unit 1/σ, then carried to seconds (exactly: σ = 2ᵏ).
-            let mut n = Nutation::new(i1, i3, &r, &turning, &start, from_state)?;
+            let mut n = Nutation::new(i1, i3, r, turning, start, from_state)?;
             n.rescale_time(ts.sigma);
             Motion::Nutating(Box::new(n))
         };
@@ -408,17 +396,7 @@ impl HeavyTop {
             f64::INFINITY
         };
         let top = Self {
-            i1,
-            i3,
-            mgl,
-            p_phi,
-            p_psi,
-            energy,
-            reduced_energy,
-            r,
-            ts,
-            start,
-            turning,
+            a,
             class,
             motion,
             max_time,
@@ -445,9 +423,9 @@ impl HeavyTop {
                  scales (theta1 = {t1:e} rad from the vertical, the rates |p_psi|/I1 = {:e} and |p_phi|/I1 \
                  = {:e} rad/s against each other and against sqrt(2 mgl/I1) = {:e} rad/s) lie further apart \
                  than it spans",
-                self.ts.rate_to_si(self.r.a).abs(),
-                self.ts.rate_to_si(self.r.b).abs(),
-                self.ts.rate_to_si(self.r.beta.sqrt()),
+                self.a.ts.rate_to_si(self.a.r.a).abs(),
+                self.a.ts.rate_to_si(self.a.r.b).abs(),
+                self.a.ts.rate_to_si(self.a.r.beta.sqrt()),
             ),
         ))
     }
@@ -484,64 +462,64 @@ impl HeavyTop {
 
     /// I₁ (kg·m²), the moment about a transverse axis through the pivot.
     pub fn i1(&self) -> f64 {
-        self.i1
+        self.a.i1
     }
     /// I₃ (kg·m²), the moment about the symmetry axis.
     pub fn i3(&self) -> f64 {
-        self.i3
+        self.a.i3
     }
     /// m g l (N·m).
     pub fn mgl(&self) -> f64 {
-        self.mgl
+        self.a.mgl
     }
     /// p_φ = I₁ φ̇ sin²θ + p_ψ cos θ (kg·m²/s), the conserved vertical angular momentum L_Z (2.104).
     pub fn p_phi(&self) -> f64 {
-        self.p_phi
+        self.a.p_phi
     }
     /// p_ψ = I₃ ω₃ (kg·m²/s), the conserved angular momentum about the symmetry axis (2.103).
     pub fn p_psi(&self) -> f64 {
-        self.p_psi
+        self.a.p_psi
     }
     /// ω₃ = ψ̇ + φ̇ cos θ = p_ψ / I₃ (rad/s), the constant spin (2.99, 2.103).
     pub fn omega3(&self) -> f64 {
-        self.p_psi / self.i3
+        self.a.p_psi / self.a.i3
     }
     /// The total energy E = T + V (J, 2.105).
     pub fn energy(&self) -> f64 {
-        self.energy
+        self.a.energy
     }
     /// The reduced energy E' = E − p_ψ²/(2I₃) = ½ I₁ θ̇² + V(θ) (J, 2.109).
     pub fn reduced_energy(&self) -> f64 {
-        self.reduced_energy
+        self.a.reduced_energy
     }
     /// The state at time 0 (as given to [`HeavyTop::new`], with θ̇ turned into [0, π] at a pole;
     /// for [`HeavyTop::from_constants`], the upper turning point with φ = ψ = 0 and rates 0).
     pub fn initial_state(&self) -> EulerState {
-        self.start
+        self.a.start
     }
     /// The turning points (θ₁, θ₂), θ₁ ≤ θ₂ (rad): the roots of the cubic f(cos θ) in [0, π]
     /// (where E' = V(θ), 2.109–2.110), computed without cancellation at the poles.
     pub fn turning_points(&self) -> (f64, f64) {
-        self.turning.thetas()
+        self.a.turning.thetas()
     }
     /// The cosines of the turning points (u₂ = cos θ₁, u₁ = cos θ₂), and the third root u₃ ≥ 1 of
     /// the cubic (infinite for m g l = 0).
     pub fn cubic_roots(&self) -> (f64, f64, f64) {
-        let u2 = 1.0 - self.turning.w_lo;
-        let u1 = self.turning.v_lo - 1.0;
+        let u2 = 1.0 - self.a.turning.w_lo;
+        let u1 = self.a.turning.v_lo - 1.0;
         let u1 = if u1 > 0.0 {
-            1.0 - self.turning.w_hi
+            1.0 - self.a.turning.w_hi
         } else {
             u1
         };
         let u2 = if u2 < 0.0 {
-            self.turning.v_hi - 1.0
+            self.a.turning.v_hi - 1.0
         } else {
             u2
         };
-        let (p, _) = self.r.p_and_complement(&self.turning);
-        let u3 = if self.r.beta > 0.0 {
-            u1 + p / self.r.beta
+        let (p, _) = self.a.r.p_and_complement(&self.a.turning);
+        let u3 = if self.a.r.beta > 0.0 {
+            u1 + p / self.a.r.beta
         } else {
             f64::INFINITY
         };
@@ -554,7 +532,7 @@ impl HeavyTop {
     /// Whether an upright top with this spin would sleep stably: ω₃² > 4 m g l I₁ / I₃².
     pub fn is_sleeping_stable(&self) -> bool {
         let w3 = self.omega3();
-        w3 * w3 * self.i3 * self.i3 > 4.0 * self.mgl * self.i1
+        w3 * w3 * self.a.i3 * self.a.i3 > 4.0 * self.a.mgl * self.a.i1
     }
     /// The period of θ(t) (s): `2K(m)/κ` with κ = ½√(β(u₃ − u₁)) (β = 2mgl/I₁) and
     /// m = (u₂ − u₁)/(u₃ − u₁); for steady motion (θ₁ = θ₂), the period of small nutations about
@@ -565,8 +543,8 @@ impl HeavyTop {
             Motion::Nutating(n) => n.period(),
             Motion::Uniform { .. } => {
                 // P in the unit 1/σ²: the period 2π/√P in units of 1/σ.
-                let (p, _) = self.r.p_and_complement(&self.turning);
-                (p > 0.0).then(|| 2.0 * std::f64::consts::PI / p.sqrt() / self.ts.sigma)
+                let (p, _) = self.a.r.p_and_complement(&self.a.turning);
+                (p > 0.0).then(|| 2.0 * std::f64::consts::PI / p.sqrt() / self.a.ts.sigma)
             }
         }
         .filter(|p| p.is_finite())
@@ -598,7 +576,7 @@ impl HeavyTop {
         finite_at_theta(
             "V(theta)",
             theta,
-            effective_potential_reduced(self.i1, self.mgl, &self.r, &self.ts, theta),
+            effective_potential_reduced(self.a.i1, self.a.mgl, &self.a.r, &self.a.ts, theta),
         )
     }
 
@@ -610,7 +588,9 @@ impl HeavyTop {
         finite_at_theta(
             "dV/dtheta",
             theta,
-            effective_potential_derivative_reduced(self.i1, self.mgl, &self.r, &self.ts, theta),
+            effective_potential_derivative_reduced(
+                self.a.i1, self.a.mgl, &self.a.r, &self.a.ts, theta,
+            ),
         )
     }
 
@@ -636,9 +616,9 @@ impl HeavyTop {
                 phi_rate,
                 psi_rate,
             } => [
-                self.start.phi + phi_rate * t,
+                self.a.start.phi + phi_rate * t,
                 *theta,
-                self.start.psi + psi_rate * t,
+                self.a.start.psi + psi_rate * t,
             ],
             Motion::Nutating(n) => n.angles(t),
         }
