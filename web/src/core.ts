@@ -15,7 +15,7 @@ export const coreStatus = core.coreStatus;
 
 export const {
   version, start, errorClasses, eulerToMatrix, matrixToEuler, rotationAxis, screwAxis, bodyAngularVelocity,
-  eulerRates, axisStability, simulateParticle,
+  eulerRates, axisStability, simulateParticle, sampleTimes,
   AxisStability, Earth, EulerAngles, Fall, FixedMotion, FoucaultRun, FreeRigidBody, FreeSymmetricTop, HeavyTop,
   InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, Screw, SpringParticle, SteadyPrecession,
 } = core;
@@ -40,7 +40,7 @@ export type SteadyPrecession = raw.SteadyPrecession;
 // A new export of the binding must be listed above: tsc fails here until it is.
 const exported = {
   version, start, errorClasses, eulerToMatrix, matrixToEuler, rotationAxis, screwAxis, bodyAngularVelocity,
-  eulerRates, axisStability, simulateParticle,
+  eulerRates, axisStability, simulateParticle, sampleTimes,
   AxisStability, Earth, EulerAngles, Fall, FixedMotion, FoucaultRun, FreeRigidBody, FreeSymmetricTop, HeavyTop,
   InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, Screw, SpringParticle, SteadyPrecession,
 };

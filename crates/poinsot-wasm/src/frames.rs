@@ -2,7 +2,7 @@
 //! fixed-frame acceleration split into the unit's terms (2.1–2.28); the steady motion of a frame
 //! (`MovingFrame.at`), and a particle on a spring (free when k = 0) integrated in a turning frame.
 
-use crate::args::{number, numbers_each, vector, Number, Numbers};
+use crate::args::{count, number, numbers_each, vector, Count, Number, Numbers};
 use crate::convert::{finite, finite1, mat_out, renamed_all, vec_out, Out};
 use poinsot::frames as fr;
 use wasm_bindgen::prelude::wasm_bindgen;
@@ -613,4 +613,19 @@ mod tests {
             .unwrap();
         assert_eq!(j, -0.5);
     }
+}
+
+/// `samples` evenly spaced times (s) from `t0` to `t_end`, both ends included: the core's one
+/// grid (`poinsot::integrate::sample_times`, the one Python's runs use), so that the lab samples
+/// a run exactly where Python does. `samples` is a whole number ≥ 2 within the memory budget;
+/// errors name `t0`, `t_end` or `samples`.
+#[wasm_bindgen(js_name = sampleTimes)]
+pub fn sample_times(
+    #[wasm_bindgen(unchecked_param_type = "number")] t0: Number,
+    #[wasm_bindgen(unchecked_param_type = "number")] t_end: Number,
+    #[wasm_bindgen(unchecked_param_type = "number")] samples: Count,
+) -> Out<Vec<f64>> {
+    let (t0, t_end) = (number("t0", &t0)?, number("t_end", &t_end)?);
+    let n = count("samples", &samples, 8)?;
+    Ok(poinsot::integrate::sample_times(t0, t_end, n, 8)?)
 }

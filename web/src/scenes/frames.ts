@@ -5,7 +5,7 @@
 // acceleration into the relative, Coriolis, centripetal and Euler terms. Every number comes from
 // the core; the scene only draws.
 import * as THREE from "three";
-import { MovingFrame, SpringParticle, simulateParticle } from "../core";
+import { MovingFrame, SpringParticle, sampleTimes, simulateParticle } from "../core";
 import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
 import { Arrow, bufferLine, disposeTree, fixedAxes, matrix4, vec } from "../view";
 
@@ -253,7 +253,7 @@ export const framesScene: SceneDef = {
         jacobi0 = particle.jacobiIntegral(frame0, r0, v0rel);
 
         // The paths over one loop, both views, from one integration.
-        times = Float64Array.from({ length: TRAIL_SAMPLES }, (_, i) => (i === TRAIL_SAMPLES - 1 ? loop : (loop * i) / (TRAIL_SAMPLES - 1)));
+        times = sampleTimes(0, loop, TRAIL_SAMPLES);
         states = simulateParticle(frame0, r0, v0rel, loop, times, MASS, k);
         for (let i = 0; i < TRAIL_SAMPLES; i++) {
           const r = states.subarray(6 * i, 6 * i + 3), v = states.subarray(6 * i + 3, 6 * i + 6);

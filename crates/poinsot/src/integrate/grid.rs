@@ -42,14 +42,18 @@ pub fn even_times(t0: f64, t_end: f64, n: usize) -> Vec<f64> {
 /// ([`even_times`]: `t_i = t0 + (t_end − t0)·i/(samples − 1)`), after checking the count:
 /// `samples ≥ 2`, and `samples` outputs of `bytes_each` bytes each (the time and what the
 /// caller stores per sample) within the memory budget ([`crate::limits::check_count`]). The
-/// errors name `samples`: a count out of range is refused, never clamped.
+/// errors name `samples` (a count out of range is refused, never clamped), or `t0` / `t_end`
+/// when not finite.
 ///
 /// ```
 /// let t = poinsot::integrate::sample_times(0.0, 2.0, 5, 8).unwrap();
 /// assert_eq!(t, vec![0.0, 0.5, 1.0, 1.5, 2.0]);
 /// assert!(poinsot::integrate::sample_times(0.0, 2.0, 1, 8).unwrap_err().to_string().starts_with("samples: must be >= 2"));
+/// assert!(poinsot::integrate::sample_times(0.0, f64::NAN, 5, 8).unwrap_err().to_string().starts_with("t_end"));
 /// ```
 pub fn sample_times(t0: f64, t_end: f64, samples: usize, bytes_each: usize) -> Result<Vec<f64>> {
+    check_finite("t0", &[t0])?;
+    check_finite("t_end", &[t_end])?;
     check_count("samples", samples, 2, bytes_each)?;
     Ok(even_times(t0, t_end, samples))
 }
