@@ -9,9 +9,9 @@
 //! also near the sleeping top, where the naive 1 − cos θ would lose half the digits.
 
 mod common;
-use common::load_reference;
+use common::{load_reference, top};
 
-use poinsot::analytic::{EulerState, HeavyTop, MotionClass};
+use poinsot::analytic::MotionClass;
 
 /// Round-off of the exact solution (see the module docs).
 const REFERENCE_TOL: f64 = 1e-12;
@@ -28,20 +28,7 @@ fn exact_solution_matches_the_40_digit_reference() {
         let r0 = &rows[0];
         let [i1, i3, mgl] = r0.params;
         let [theta, theta_dot, phi_dot, psi_dot] = r0.initial;
-        let top = HeavyTop::new(
-            i1,
-            i3,
-            mgl,
-            EulerState {
-                theta,
-                theta_dot,
-                phi_dot,
-                psi_dot,
-                phi: 0.0,
-                psi: 0.0,
-            },
-        )
-        .unwrap();
+        let top = top(i1, i3, mgl, theta, theta_dot, phi_dot, psi_dot);
         assert_eq!(class_name(top.motion_class()), r0.class, "{name}: class");
         let mut worst = 0.0f64;
         for row in rows {
@@ -85,19 +72,7 @@ fn near_sleeping_theta_keeps_relative_accuracy() {
         let rows = &cases[name];
         let [i1, i3, mgl] = rows[0].params;
         let [theta, theta_dot, phi_dot, psi_dot] = rows[0].initial;
-        let top = HeavyTop::new(
-            i1,
-            i3,
-            mgl,
-            EulerState {
-                theta,
-                theta_dot,
-                phi_dot,
-                psi_dot,
-                ..Default::default()
-            },
-        )
-        .unwrap();
+        let top = top(i1, i3, mgl, theta, theta_dot, phi_dot, psi_dot);
         for row in rows {
             let th = top.euler_angles(row.t).unwrap()[1];
             assert!(
