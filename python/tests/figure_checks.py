@@ -1,0 +1,97 @@
+"""Measuring a drawn matplotlib figure: text that leaves the figure, tick labels that collide,
+axes without units. Used by the plot tests of every module (``layout_problems(fig)`` returns
+a list of sentences, empty when the figure is clean)."""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+# A text may overhang the figure's edge by this many pixels (antialiasing of the glyphs'
+# bounding boxes) before it counts as cut off.
+EDGE_TOLERANCE_PX = 1.0
+# Two tick labels of one axis whose boxes overlap by more than this many pixels (in both
+# directions) collide; touching boxes (0 px) do not.
+OVERLAP_TOLERANCE_PX = 0.5
+
+_UNIT = re.compile(r"\(([^()]*)\)\s*$|\[[^\[\]]+\]\s*$")
+
+
+def _visible_texts(fig: Any) -> list[Any]:
+    from matplotlib.text import Text
+
+    out = []
+    for t in fig.findobj(Text):
+        if not t.get_visible() or not t.get_text().strip():
+            continue
+        if t.axes is not None and not t.axes.get_visible():
+            continue
+        out.append(t)
+    return out
+
+
+def _overlap(a: Any, b: Any) -> bool:
+    w = min(a.x1, b.x1) - max(a.x0, b.x0)
+    h = min(a.y1, b.y1) - max(a.y0, b.y0)
+    return w > OVERLAP_TOLERANCE_PX and h > OVERLAP_TOLERANCE_PX
+
+
+def layout_problems(fig: Any) -> list[str]:
+    """Draws ``fig`` and lists every text outside the figure and every pair of overlapping
+    tick labels on one axis (as sentences naming the text)."""
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    box = fig.bbox
+    problems = []
+    for t in _visible_texts(fig):
+        if t.get_clip_on() and t.axes is not None and t.get_clip_box() is not None:
+            # Clipped to its axes (annotations inside a plot): only the axes must fit.
+            continue
+        e = t.get_window_extent(renderer)
+        if (
+            e.x0 < box.x0 - EDGE_TOLERANCE_PX
+            or e.y0 < box.y0 - EDGE_TOLERANCE_PX
+            or e.x1 > box.x1 + EDGE_TOLERANCE_PX
+            or e.y1 > box.y1 + EDGE_TOLERANCE_PX
+        ):
+            problems.append(
+                f"text {t.get_text()!r} leaves the figure "
+                f"({e.x0:.0f}..{e.x1:.0f} × {e.y0:.0f}..{e.y1:.0f} px in "
+                f"{box.x1:.0f} × {box.y1:.0f})"
+            )
+    for ax in fig.axes:
+        if not ax.get_visible():
+            continue
+        axes = [ax.xaxis, ax.yaxis] + ([ax.zaxis] if hasattr(ax, "zaxis") else [])
+        for axis in axes:
+            labels = [
+                lab
+                for lab in axis.get_ticklabels()
+                if lab.get_visible() and lab.get_text().strip()
+            ]
+            extents = [lab.get_window_extent(renderer) for lab in labels]
+            for i in range(len(labels)):
+                for j in range(i + 1, len(labels)):
+                    if _overlap(extents[i], extents[j]):
+                        problems.append(
+                            f"tick labels {labels[i].get_text()!r} and {labels[j].get_text()!r} "
+                            f"overlap on the {axis.axis_name}-axis of {ax.get_title()!r}"
+                        )
+    return problems
+
+
+def axes_without_units(fig: Any) -> list[str]:
+    """Every visible axis (x, y, z of each axes that shows ticks) whose label does not end in
+    a unit in parentheses or brackets: ``"t (s)"``, ``"θ (rad)"``, ``"x / L (1)"``."""
+    out = []
+    for ax in fig.axes:
+        if not ax.get_visible() or not ax.axison:
+            continue
+        axes = [ax.xaxis, ax.yaxis] + ([ax.zaxis] if hasattr(ax, "zaxis") else [])
+        for axis in axes:
+            if not axis.get_visible() or not [t for t in axis.get_ticklabels() if t.get_text()]:
+                continue
+            label = axis.get_label_text()
+            if not _UNIT.search(label):
+                out.append(f"{axis.axis_name}-axis of {ax.get_title()!r}: label {label!r}")
+    return out
