@@ -11,7 +11,7 @@ PY := $(VENV)/bin/python
 export PYO3_PYTHON := $(abspath $(PY))
 export MPLBACKEND := Agg
 
-.PHONY: setup demo test test-rust lint doc publish-check test-python examples bench stubtest clean lab lab-build test-web web-setup fuzz fuzz-python fuzz-web wheel test-wheel
+.PHONY: docs docs-setup setup demo test test-rust lint doc publish-check test-python examples bench stubtest clean lab lab-build test-web web-setup fuzz fuzz-python fuzz-web wheel test-wheel
 
 $(PY):
 	$(PYTHON) -m venv $(VENV)
@@ -19,7 +19,7 @@ $(PY):
 
 # Build the Rust core + bindings (maturin, release) and install poinsot editable with all extras.
 setup: $(PY)
-	$(PY) -m pip install -q -e '.[all,test]'
+	$(PY) -m pip install -q -e '.[all,test,docs]'
 
 demo: setup
 	$(VENV)/bin/poinsot tour
@@ -64,6 +64,15 @@ bench: setup
 # wasm-bindgen-cli of the Cargo.lock version and node/npm (.ci/run installs them).
 web-setup:
 	bash web/setup.sh
+
+# The documentation site (Sphinx, docs/conf.py) into docs/_build/html: the topic pages, the
+# gallery (examples/ executed), the API and CLI references, the notebooks, the lab. Offline:
+# MathJax (docs/node_modules) and the built lab are inside. Warnings are errors.
+docs-setup:
+	cd docs && npm ci --no-audit --no-fund
+
+docs: lab-build docs-setup
+	$(PY) -m sphinx -W --keep-going -b html docs docs/_build/html
 
 lab-build: setup web-setup
 	bash web/build.sh

@@ -1,4 +1,7 @@
-"""The falling body on the rotating Earth (the unit's eqs. 2.32–2.42), effective gravity (2.31),
+"""The falling body and projectiles on the rotating Earth
+======================================================
+
+The falling body on the rotating Earth (the unit's eqs. 2.32–2.42), effective gravity (2.31),
 the unit's worked numbers, and projectiles deflected to the right in the north.
 
 Writes deflection.png and inertial_circles.png into out/ (or the folder given as argument).

@@ -1,4 +1,7 @@
-"""The unit's two-particle example (eqs. 2.58–2.59): a dumbbell turning about an axis that is not
+"""The dumbbell and the torque that keeps it turning
+=================================================
+
+The unit's two-particle example (eqs. 2.58–2.59): a dumbbell turning about an axis that is not
 along its rod has an angular momentum L that is not parallel to ω; L turns with the body and
 traces a cone, so a torque N = dL/dt = ω × L must act to keep ω constant.
 

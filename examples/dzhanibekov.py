@@ -1,4 +1,7 @@
-"""The Dzhanibekov effect (the tennis-racket theorem): a body spun about its intermediate axis
+"""The Dzhanibekov effect
+======================
+
+The Dzhanibekov effect (the tennis-racket theorem): a body spun about its intermediate axis
 flips over again and again, while spins about the largest and smallest axes are stable.
 
 Computed exactly (Jacobi elliptic functions near the separatrix), checked against RK4, with the

@@ -1,4 +1,7 @@
-"""Euler's and Chasles' theorems (the unit's section "Euler's Theorem").
+"""Euler's and Chasles' theorems
+=============================
+
+Euler's and Chasles' theorems (the unit's section "Euler's Theorem").
 
 Euler: a displacement of a rigid body with one point fixed is a rotation about one axis through
 that point. Chasles: the most general displacement is a rotation about an axis plus a

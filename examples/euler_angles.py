@@ -1,4 +1,7 @@
-"""Euler angles, the unit's way (section "Euler's Angles", eqs. 2.98-2.101).
+"""Euler angles
+============
+
+Euler angles, the unit's way (section "Euler's Angles", eqs. 2.98-2.101).
 
 The unit turns the fixed axes XYZ into the body axes 123 in three steps: phi about Z (the X axis
 becomes the line of nodes xi), theta about the line of nodes, psi about body axis 3. That is the

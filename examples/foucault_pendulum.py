@@ -1,4 +1,7 @@
-"""The Foucault pendulum, simulated in the rotating frame (the unit's discussion of Figs. 2.5–2.6).
+"""Foucault's pendulum
+===================
+
+The Foucault pendulum, simulated in the rotating frame (the unit's discussion of Figs. 2.5–2.6).
 
 Its swing plane turns at −ω sin λ: clockwise seen from above in the northern hemisphere, once in
 about 32 h in Paris. To see the rosette in a short run this example also spins a fictitious

@@ -1,4 +1,7 @@
-"""The heavy symmetric top, exactly (the unit's "Motion of a Symmetrical Top", eqs. 2.102–2.114).
+"""The heavy symmetric top
+=======================
+
+The heavy symmetric top, exactly (the unit's "Motion of a Symmetrical Top", eqs. 2.102–2.114).
 
 One top (I1 = 1 kg m², I3 = 0.5 kg m², m g l = 1 N m, spin about 6 rad/s, axis released at
 0.8 rad from the vertical) started three ways: with a forward push in φ (waves), at rest in φ

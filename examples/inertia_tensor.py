@@ -1,4 +1,7 @@
-"""The inertia tensor (the unit's eqs. 2.46–2.50, 2.60–2.66): the standard solids side by side
+"""The inertia tensor of the standard solids
+=========================================
+
+The inertia tensor (the unit's eqs. 2.46–2.50, 2.60–2.66): the standard solids side by side
 with their textbook formulas, then the principal axes of a skewed body.
 
 Run: python examples/inertia_tensor.py   (prints; no display needed)

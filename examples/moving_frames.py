@@ -1,4 +1,7 @@
-"""Moving frames (the unit's eqs. 2.1–2.28): the acceleration of a particle seen from a turning,
+"""Moving frames
+=============
+
+Moving frames (the unit's eqs. 2.1–2.28): the acceleration of a particle seen from a turning,
 accelerating frame, split into its named terms; the fictitious forces; and a particle integrated
 in the moving frame that agrees with the same motion integrated in the fixed frame.
 """

@@ -1,4 +1,7 @@
-"""Steady precession of a heavy top (the unit's eqs. 2.114–2.121), exact and approximate.
+"""Steady precession of the heavy top
+==================================
+
+Steady precession of a heavy top (the unit's eqs. 2.114–2.121), exact and approximate.
 
 A top held at θ0 with spin ω3 precesses without nutation at exactly two rates, the roots of the
 quadratic 2.116; they exist only above the minimum spin 2.119. For a fast top the unit

@@ -1,4 +1,7 @@
-"""The free symmetric top of the unit (eqs. 2.77–2.97), and the asymmetric top beside it.
+"""The torque-free symmetric top
+=============================
+
+The free symmetric top of the unit (eqs. 2.77–2.97), and the asymmetric top beside it.
 
 A prolate and an oblate top: Ω, A, the body and space cones, ω₃² and A² from T and L, checked
 against an integration of Euler's equations; then the asymmetric top I = (1, 2, 3) solved

@@ -1,0 +1,122 @@
+"""poinsot's own Sphinx hooks.
+
+* ``config-inited``: MathJax is copied from docs/node_modules/mathjax (``npm ci`` in docs/) into
+  the build, so the site serves it itself; the API page is written from ``poinsot.__all__``
+  and the public submodules, so a new public name gets its page without an edit here.
+* ``build-finished``: the built browser lab (python/poinsot/lab, ``make lab-build``) is copied
+  to ``lab/`` of the site, so the site alone is a complete offline companion.
+"""
+
+from __future__ import annotations
+
+import inspect
+import shutil
+from pathlib import Path
+from typing import Any
+
+DOCS = Path(__file__).resolve().parent.parent
+ROOT = DOCS.parent
+MATHJAX = DOCS / "node_modules" / "mathjax" / "es5"
+# The parts of MathJax 3 that the TeX → CommonHTML page needs: the combined component, its
+# fonts, the TeX extensions it may autoload, the menu and the assistive MathML.
+MATHJAX_PARTS = ["tex-chtml.js", "output/chtml", "input/tex/extensions", "ui", "a11y"]
+LAB = ROOT / "python" / "poinsot" / "lab"
+
+# The public submodules documented beside the package's top-level names.
+SUBMODULES = ["poinsot.plots", "poinsot.special"]
+
+
+def _copy_mathjax(app: Any, config: Any) -> None:
+    if not (MATHJAX / "tex-chtml.js").is_file():
+        raise RuntimeError(
+            f"MathJax is missing ({MATHJAX}): run `npm ci` in docs/ (make docs does)"
+        )
+    static = Path(app.outdir).parent / "_mathjax_static"
+    dest = static / "mathjax"
+    if dest.exists():
+        shutil.rmtree(dest)
+    for part in MATHJAX_PARTS:
+        src = MATHJAX / part
+        if src.is_dir():
+            shutil.copytree(src, dest / part)
+        else:
+            (dest / part).parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy2(src, dest / part)
+    config.html_static_path.append(str(static))
+
+
+def _kind(obj: Any) -> str:
+    if inspect.isclass(obj):
+        return "class"
+    if callable(obj):
+        return "function"
+    return "data"
+
+
+def api_names() -> dict[str, list[str]]:
+    """The documented names: ``poinsot.__all__`` and each public submodule's ``__all__``."""
+    import importlib
+
+    import poinsot
+
+    out = {"poinsot": [n for n in poinsot.__all__ if n != "__version__"]}
+    for mod in SUBMODULES:
+        out[mod] = list(importlib.import_module(mod).__all__)
+    return out
+
+
+def _write_api(app: Any, config: Any) -> None:
+    import importlib
+
+    lines = [
+        "API reference",
+        "=============",
+        "",
+        "Every public name of poinsot, generated from the docstrings (numpydoc: parameters "
+        "with their units and shapes). SI units and radians throughout; quaternions are "
+        "scalar-first ``[w, x, y, z]``.",
+        "",
+    ]
+    for mod, names in api_names().items():
+        module = importlib.import_module(mod)
+        title = f"``{mod}``"
+        lines += [title, "-" * len(title), "", f".. currentmodule:: {mod}", ""]
+        doc = inspect.getdoc(module) or ""
+        if mod != "poinsot" and doc:
+            lines += [doc.split("\n\n")[0], ""]
+        for kind, heading in (("class", "Classes"), ("function", "Functions"), ("data", "Constants")):
+            group = [n for n in names if _kind(getattr(module, n)) == kind]
+            if not group:
+                continue
+            lines += [f"**{heading}**", "", ".. autosummary::", "   :toctree: generated/", ""]
+            if kind == "class":
+                lines.insert(len(lines) - 1, "   :template: class.rst")
+            lines += [f"   {n}" for n in group] + [""]
+    target = DOCS / "api.rst"
+    text = "\n".join(lines) + "\n"
+    if not target.exists() or target.read_text() != text:
+        target.write_text(text)
+
+
+def _copy_lab(app: Any, exc: Exception | None) -> None:
+    if exc is not None or app.builder.format != "html":
+        return
+    if not (LAB / "index.html").is_file():
+        raise RuntimeError(f"the built lab is missing ({LAB}): run `make lab-build` first")
+    dest = Path(app.outdir) / "lab"
+    if dest.exists():
+        shutil.rmtree(dest)
+    shutil.copytree(LAB, dest)
+
+
+def setup(app: Any) -> dict[str, Any]:
+    app.connect("config-inited", _copy_mathjax)
+    app.connect("config-inited", _write_api)
+    app.connect("build-finished", _copy_lab)
+    return {"parallel_read_safe": True, "parallel_write_safe": True}
+
+
+def gallery_argv(gallery_conf: Any, script_vars: Any) -> list[str]:
+    """The arguments the gallery passes to each example: the folder for the files it writes
+    (a scratch folder inside the build, so a build never writes into the source tree)."""
+    return [str(DOCS / "_build" / "gallery_out")]
