@@ -37,6 +37,7 @@ from typing import Any
 import numpy as np
 
 from . import _core
+from . import _display as show
 from ._validate import (
     FloatArray,
     as_callable,
@@ -134,7 +135,7 @@ def _scalar(value: Any, name: str) -> float:
     return as_scalar(value, name)
 
 
-class RigidBody:
+class RigidBody(show.Displayed):
     """The mass properties of a rigid body, and what follows from them for a body turning with
     angular velocity ω.
 
@@ -703,14 +704,71 @@ class RigidBody:
             d["integration_error"] = dataclasses.asdict(self._integration_error)
         return d
 
-    def __repr__(self) -> str:
-        def fmt(a: FloatArray) -> str:
-            return np.array2string(np.asarray(a), precision=6, separator=", ", suppress_small=True)
+    def _rows(self) -> list[show.Row]:
+        rows = [
+            show.scalar("mass", "mass", "m", self.mass, "kg"),
+            show.vec("center_of_mass", "centre of mass", "r_cm", self.center_of_mass, "m"),
+            show.vec(
+                "principal_moments",
+                "principal moments",
+                "I₁, I₂, I₃",
+                self.principal_moments,
+                "kg·m²",
+            ),
+            show.words("kind", "kind of top (after 2.66)", self.kind),
+            show.mat(
+                "inertia",
+                "inertia tensor about the centre of mass (2.60)",
+                "I",
+                self.inertia,
+                "kg·m²",
+            ),
+            show.mat("principal_axes", "principal axes (columns)", "", self.principal_axes),
+        ]
+        err = self._integration_error
+        if err is not None:
+            rows += [
+                show.scalar(
+                    "integration_error.mass",
+                    "error estimate of the mass",
+                    "",
+                    err.mass,
+                    "kg",
+                    brief=False,
+                ),
+                show.scalar(
+                    "integration_error.center_of_mass",
+                    "error estimate of the centre of mass",
+                    "",
+                    err.center_of_mass,
+                    "m",
+                    brief=False,
+                ),
+                show.scalar(
+                    "integration_error.inertia",
+                    "error estimate of the inertia",
+                    "",
+                    err.inertia,
+                    "kg·m²",
+                    brief=False,
+                ),
+                show.scalar(
+                    "integration_error.evaluations",
+                    "density evaluations",
+                    "",
+                    err.evaluations,
+                    brief=False,
+                ),
+                show.words(
+                    "integration_error.converged", "converged", str(err.converged), brief=False
+                ),
+            ]
+        return rows
 
-        return (
-            f"RigidBody(mass={self.mass:.6g} kg, center_of_mass={fmt(self.center_of_mass)} m, "
-            f"principal_moments={fmt(self.principal_moments)} kg·m², kind={self.kind!r})"
-        )
+    def _repr_latex_(self) -> str:
+        """The inertia tensor about the centre of mass as a matrix with its unit (eq. 2.60;
+        products of inertia negated, 2.49–2.50), for Jupyter and nbconvert."""
+        return show.latex_matrix(r"\overline{I}", self.inertia, r"\mathrm{kg\,m^{2}}")
 
     def __reduce__(self) -> tuple[Any, ...]:
         return (_restore, (self.mass, self.inertia, self.center_of_mass, self._integration_error))

@@ -26,6 +26,7 @@ from typing import Any, Union
 import numpy as np
 
 from . import _core
+from . import _display as show
 from ._validate import (
     FloatArray,
     as_callable,
@@ -142,7 +143,7 @@ TorqueLike = Union[
 ]
 
 
-class Trajectory:
+class Trajectory(show.Displayed):
     """A sampled rigid-body trajectory (returned by :func:`simulate`).
 
     Attributes
@@ -182,11 +183,29 @@ class Trajectory:
         self.steps: int = int(d["steps"])
         self.torque_evaluations: int = int(d["torque_evaluations"])
 
-    def __repr__(self) -> str:
-        return (
-            f"Trajectory({len(self.t)} samples over [0, {self.t[-1]:g}] s, method={self.method!r}, "
-            f"{self.steps} steps)"
-        )
+    def _rows(self) -> list[show.Row]:
+        return [
+            show.scalar("samples", "samples", "N", len(self.t)),
+            show.span("t", "time", "t", self.t[0], self.t[-1], "s"),
+            show.words("method", "method", self.method),
+            show.scalar("steps", "steps taken", "", self.steps),
+            show.scalar("step", "fixed step", "Δt", self.step, "s", brief=False),
+            show.scalar(
+                "torque_evaluations", "torque evaluations", "", self.torque_evaluations, brief=False
+            ),
+            show.samples("omega", "angular velocity, body axes", "ω", self.omega, "rad/s"),
+            show.samples("attitude", "attitude [w, x, y, z], body → space", "q", self.attitude),
+            show.samples(
+                "angular_momentum",
+                "angular momentum, space axes",
+                "L",
+                self.angular_momentum,
+                "kg·m²/s",
+            ),
+            show.samples("energy", "kinetic energy", "T", self.energy, "J"),
+            show.samples("potential_energy", "potential energy", "V", self.potential_energy, "J"),
+            show.samples("power", "power of the torque (2.76)", "ω·N", self.power, "W"),
+        ]
 
     @property
     def total_energy(self) -> FloatArray:

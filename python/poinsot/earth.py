@@ -14,6 +14,7 @@ from typing import Any
 import numpy as np
 
 from . import _core
+from . import _display as show
 from ._validate import (
     FloatArray,
     as_angle,
@@ -53,8 +54,8 @@ _DROP, _FOUCAULT, _INERTIAL, _LOW = (_DEFAULTS[k] for k in ("drop", "foucault", 
 _GRAVITY = ("uniform", "inverse-square")
 
 
-@dataclass(frozen=True)
-class Fall:
+@dataclass(frozen=True, repr=False)
+class Fall(show.Displayed):
     """A body dropped from rest, integrated in the rotating frame until it lands.
 
     Attributes
@@ -83,9 +84,31 @@ class Fall:
     first_order_east: float = 0.0
     second_order_south: float = 0.0
 
+    def _rows(self) -> list[show.Row]:
+        return [
+            show.scalar("time", "time of fall", "t", self.time, "s"),
+            show.scalar("east", "landing point east of the plumb line", "x", self.east, "m"),
+            show.scalar("north", "landing point north of the plumb line", "y", self.north, "m"),
+            show.scalar(
+                "first_order_east",
+                "eastward deflection, first order (2.42)",
+                "",
+                self.first_order_east,
+                "m",
+            ),
+            show.scalar(
+                "second_order_south",
+                "southward deflection, second order",
+                "",
+                self.second_order_south,
+                "m",
+            ),
+            *_sampled(self.t, self.position, self.velocity),
+        ]
 
-@dataclass(frozen=True)
-class Flight:
+
+@dataclass(frozen=True, repr=False)
+class Flight(show.Displayed):
     """A projectile's flight until it lands.
 
     Attributes
@@ -114,9 +137,22 @@ class Flight:
     position: FloatArray = field(repr=False)
     velocity: FloatArray = field(repr=False)
 
+    def _rows(self) -> list[show.Row]:
+        return [
+            show.scalar("time", "time of flight", "t", self.time, "s"),
+            show.scalar("east", "landing point east of the launch", "x", self.east, "m"),
+            show.scalar("north", "landing point north of the launch", "y", self.north, "m"),
+            show.scalar("range", "horizontal distance to the landing point", "", self.range, "m"),
+            show.scalar(
+                "downrange", "displacement along the launch azimuth", "", self.downrange, "m"
+            ),
+            show.scalar("drift", "displacement to the right of the azimuth", "", self.drift, "m"),
+            *_sampled(self.t, self.position, self.velocity),
+        ]
 
-@dataclass(frozen=True)
-class FoucaultRun:
+
+@dataclass(frozen=True, repr=False)
+class FoucaultRun(show.Displayed):
     """A Foucault pendulum integrated in the rotating frame, and what its swing plane did.
 
     Attributes
@@ -161,6 +197,40 @@ class FoucaultRun:
     regime: str = "too_short"
     regime_note: str = ""
     theory_rate: float | None = None
+
+    def _rows(self) -> list[show.Row]:
+        return [
+            show.scalar(
+                "precession_rate",
+                "swing plane's rate of turn, fitted",
+                "",
+                self.precession_rate,
+                "rad/s",
+            ),
+            show.scalar(
+                "expected_rate", "the unit's rate", "−ω sin λ", self.expected_rate, "rad/s"
+            ),
+            show.words("sense", "sense seen from above", self.sense),
+            show.words("regime", "regime", self.regime),
+            show.words("regime_note", "note", self.regime_note),
+            show.scalar(
+                "theory_rate", "small-swing theory's mean rate", "", self.theory_rate, "rad/s"
+            ),
+            *_sampled(self.t, self.position, self.velocity),
+            show.samples("turn_times", "times of the turning points", "", self.turn_times, "s"),
+            show.samples(
+                "turn_angles", "directions at the turning points", "", self.turn_angles, "rad"
+            ),
+        ]
+
+
+def _sampled(t: FloatArray, position: FloatArray, velocity: FloatArray) -> list[show.Row]:
+    """The rows of a run's samples (ENU)."""
+    return [
+        show.samples("t", "sample times", "t", t, "s"),
+        show.samples("position", "position, east-north-up", "r", position, "m"),
+        show.samples("velocity", "velocity, east-north-up", "v", velocity, "m/s"),
+    ]
 
 
 @dataclass(frozen=True)

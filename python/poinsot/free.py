@@ -21,6 +21,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from . import _core
+from . import _display as show
 from ._validate import FloatArray, as_choice, as_count, as_float_array, as_scalar, as_vector3
 from .errors import PoinsotError
 
@@ -46,7 +47,7 @@ def _times(t: Any) -> tuple[FloatArray, tuple[int, ...]]:
     return np.ascontiguousarray(arr.reshape(-1)), arr.shape
 
 
-class FreeSymmetricTop:
+class FreeSymmetricTop(show.Displayed):
     """The exact torque-free motion of a symmetric top, I₁ = I₂ ≠ I₃ (the unit's 2.77–2.97).
 
     Parameters
@@ -98,11 +99,77 @@ class FreeSymmetricTop:
         self.I3 = float(I3)
         self.omega0 = np.array(as_vector3(omega0, "omega0"))
 
-    def __repr__(self) -> str:
-        return (
-            f"FreeSymmetricTop(I1={self.I1:g}, I3={self.I3:g}, omega0={self.omega0.tolist()}, "
-            f"{self.shape}, Ω={self.precession_rate:.6g} rad/s)"
-        )
+    def _rows(self) -> list[show.Row]:
+        return [
+            show.scalar("I1", "moment about axes 1 and 2", "I₁", self.I1, "kg·m²"),
+            show.scalar("I3", "moment about the symmetry axis", "I₃", self.I3, "kg·m²"),
+            show.vec("omega0", "ω at t = 0, body axes", "ω(0)", self.omega0, "rad/s"),
+            show.words("shape", "shape", self.shape, label=""),
+            show.scalar(
+                "precession_rate",
+                "precession rate of ω in the body (2.83)",
+                "Ω",
+                self.precession_rate,
+                "rad/s",
+                label="Ω",
+            ),
+            show.scalar("omega3", "spin, constant (2.80)", "ω₃", self.omega3, "rad/s", brief=False),
+            show.scalar(
+                "amplitude", "amplitude of ω₁, ω₂ (2.88)", "A", self.amplitude, "rad/s", brief=False
+            ),
+            show.scalar(
+                "phase", "phase of ω₁ = A sin(Ωt + θ₀) (2.85)", "θ₀", self.phase, "rad", brief=False
+            ),
+            show.scalar(
+                "omega_magnitude",
+                "|ω|, constant (2.89)",
+                "|ω|",
+                self.omega_magnitude,
+                "rad/s",
+                brief=False,
+            ),
+            show.scalar(
+                "body_cone_angle",
+                "body cone half-angle (2.90)",
+                "α_b",
+                self.body_cone_angle,
+                "rad",
+                brief=False,
+            ),
+            show.scalar(
+                "space_cone_angle",
+                "space cone half-angle (2.97)",
+                "α_s",
+                self.space_cone_angle,
+                "rad",
+                brief=False,
+            ),
+            show.scalar("energy", "kinetic energy (2.91)", "T", self.energy, "J", brief=False),
+            show.scalar(
+                "angular_momentum_magnitude",
+                "|L| (2.93)",
+                "|L|",
+                self.angular_momentum_magnitude,
+                "kg·m²/s",
+                brief=False,
+            ),
+            show.scalar(
+                "nutation_angle",
+                "angle between L and the symmetry axis",
+                "θ",
+                self.nutation_angle,
+                "rad",
+                brief=False,
+            ),
+            show.scalar(
+                "space_precession_rate",
+                "rate of the axis about L",
+                "|L|/I₁",
+                self.space_precession_rate,
+                "rad/s",
+                brief=False,
+            ),
+        ]
 
     @property
     def precession_rate(self) -> float:
@@ -225,7 +292,7 @@ def _samples(samples: Any) -> int:
     return n
 
 
-class FreeRigidBody:
+class FreeRigidBody(show.Displayed):
     """The exact torque-free motion of any rigid body.
 
     ω(t) by the Jacobi elliptic functions on either side of the separatrix, the attitude by the
@@ -275,11 +342,32 @@ class FreeRigidBody:
         self.moments = m.copy()
         self.omega0 = np.array(as_vector3(omega0, "omega0"))
 
-    def __repr__(self) -> str:
-        return (
-            f"FreeRigidBody(moments={self.moments.tolist()}, omega0={self.omega0.tolist()}, "
-            f"{self.regime}, period={self.period:.6g} s)"
-        )
+    def _rows(self) -> list[show.Row]:
+        return [
+            show.vec("moments", "principal moments", "I₁, I₂, I₃", self.moments, "kg·m²"),
+            show.vec("omega0", "ω at t = 0, body axes", "ω(0)", self.omega0, "rad/s"),
+            show.words("regime", "regime", self.regime, label=""),
+            show.scalar("period", "period of ω in the body", "", self.period, "s"),
+            show.scalar("energy", "kinetic energy", "T", self.energy, "J", brief=False),
+            show.vec(
+                "angular_momentum",
+                "angular momentum, space axes",
+                "L",
+                self.angular_momentum,
+                "kg·m²/s",
+                brief=False,
+            ),
+            show.scalar("parameter", "Jacobi parameter", "m = k²", self.parameter, brief=False),
+            show.scalar(
+                "frequency", "rate of τ = λt + τ₀", "λ", self.frequency, "1/s", brief=False
+            ),
+            show.scalar(
+                "flip_interval", "interval between flips", "", self.flip_interval, "s", brief=False
+            ),
+            show.scalar(
+                "pole_axis", "principal axis ω circles (index)", "", self.pole_axis, brief=False
+            ),
+        ]
 
     @property
     def energy(self) -> float:

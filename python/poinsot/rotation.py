@@ -36,6 +36,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from . import _core
+from . import _display as show
 from ._validate import _is_scipy_rotation, as_float_array, as_scalar
 from .errors import GimbalLockWarning, PoinsotError
 
@@ -305,12 +306,8 @@ def axis_angle_to_matrix(axis: Any, angle: Any, *, degrees: bool = False) -> Flo
 # ---- Chasles' theorem ----------------------------------------------------------------------
 
 
-def _fmt(v: FloatArray) -> str:
-    return "[" + ", ".join(f"{x:.6g}" for x in v) + "]"
-
-
-@dataclass(frozen=True, eq=False)
-class Screw:
+@dataclass(frozen=True, eq=False, repr=False)
+class Screw(show.Displayed):
     """The screw of a rigid displacement ``x -> R @ x + t`` (Chasles' theorem).
 
     The displacement is a rotation by ``angle`` about the line through ``point`` along ``axis``
@@ -339,11 +336,14 @@ class Screw:
     slide: float
     pitch: float
 
-    def __repr__(self) -> str:
-        return (
-            f"Screw(axis={_fmt(self.axis)}, point={_fmt(self.point)} m, "
-            f"angle={self.angle:.6g} rad, slide={self.slide:.6g} m, pitch={self.pitch:.6g} m/rad)"
-        )
+    def _rows(self) -> list[show.Row]:
+        return [
+            show.vec("axis", "direction of the screw axis", "n", self.axis),
+            show.vec("point", "point of the axis nearest the origin", "p", self.point, "m"),
+            show.scalar("angle", "rotation about the axis", "α", self.angle, "rad"),
+            show.scalar("slide", "translation along the axis", "d", self.slide, "m"),
+            show.scalar("pitch", "pitch, slide / angle", "", self.pitch, "m/rad"),
+        ]
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Screw):

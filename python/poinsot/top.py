@@ -25,6 +25,7 @@ from typing import Any
 import numpy as np
 
 from . import _core
+from . import _display as show
 from ._validate import FloatArray, as_angle, as_flag, as_flat, as_scalar, shaped
 
 __all__ = ["HeavyTop", "SteadyPrecession", "MOTION_CLASSES"]
@@ -76,7 +77,7 @@ class SteadyPrecession:
     min_spin: float
 
 
-class HeavyTop:
+class HeavyTop(show.Displayed):
     """A heavy symmetric top started from Euler angles and rates, with its exact motion.
 
     Parameters
@@ -202,13 +203,67 @@ class HeavyTop:
         )
         return top
 
-    def __repr__(self) -> str:
+    def _rows(self) -> list[show.Row]:
         i1, i3, mgl = self._core.parameters
         t1, t2 = self.turning_points
-        return (
-            f"HeavyTop(I1={i1:g}, I3={i3:g}, mgl={mgl:g}; {self.motion_class}, "
-            f"theta in [{t1:.6g}, {t2:.6g}] rad, omega3={self.omega3:.6g} rad/s)"
-        )
+        q = "kg·m²/s"
+        return [
+            show.scalar(
+                "I1", "moment about a transverse axis through the pivot", "I₁", i1, "kg·m²"
+            ),
+            show.scalar("I3", "moment about the symmetry axis", "I₃", i3, "kg·m²"),
+            show.scalar("mgl", "weight × pivot-to-centre-of-mass distance", "mgl", mgl, "N·m"),
+            show.words("motion_class", "motion of the axis", self.motion_class, label=""),
+            show.span(
+                "turning_points",
+                "nutation between the turning points",
+                "θ₁, θ₂",
+                t1,
+                t2,
+                "rad",
+                label="theta",
+            ),
+            show.scalar("omega3", "spin (2.99)", "ω₃", self.omega3, "rad/s"),
+            show.scalar(
+                "p_phi", "momentum about the vertical (2.104)", "p_φ", self.p_phi, q, brief=False
+            ),
+            show.scalar(
+                "p_psi",
+                "momentum about the symmetry axis (2.103)",
+                "p_ψ",
+                self.p_psi,
+                q,
+                brief=False,
+            ),
+            show.scalar("energy", "total energy (2.105)", "E", self.energy, "J", brief=False),
+            show.scalar(
+                "reduced_energy",
+                "reduced energy (2.109)",
+                "E′",
+                self.reduced_energy,
+                "J",
+                brief=False,
+            ),
+            show.scalar(
+                "nutation_period", "period of θ", "", self.nutation_period, "s", brief=False
+            ),
+            show.scalar(
+                "mean_precession_rate",
+                "mean precession rate",
+                "⟨φ′⟩",
+                self.mean_precession_rate,
+                "rad/s",
+                brief=False,
+            ),
+            show.scalar(
+                "mean_spin_rate",
+                "mean spin rate",
+                "⟨ψ′⟩",
+                self.mean_spin_rate,
+                "rad/s",
+                brief=False,
+            ),
+        ]
 
     # ---- parameters and constants of the motion -------------------------------------------
     @property
