@@ -65,9 +65,7 @@ def layout_problems(fig: Any) -> list[str]:
         axes = [ax.xaxis, ax.yaxis] + ([ax.zaxis] if hasattr(ax, "zaxis") else [])
         for axis in axes:
             labels = [
-                lab
-                for lab in axis.get_ticklabels()
-                if lab.get_visible() and lab.get_text().strip()
+                lab for lab in axis.get_ticklabels() if lab.get_visible() and lab.get_text().strip()
             ]
             extents = [lab.get_window_extent(renderer) for lab in labels]
             for i in range(len(labels)):
