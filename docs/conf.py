@@ -1,7 +1,7 @@
 """Sphinx configuration of poinsot's documentation site (`make docs` → docs/_build/html).
 
-Sphinx + pydata-sphinx-theme + myst-nb + sphinx-gallery + numpydoc, as scipy, matplotlib and
-scikit-learn do: the topic pages stay markdown (MyST), the API reference is generated from the
+Sphinx + pydata-sphinx-theme + myst-nb + sphinx-gallery, docstrings in numpydoc sections read
+by napoleon, as scipy, matplotlib and scikit-learn do: the topic pages stay markdown (MyST), the API reference is generated from the
 numpydoc docstrings, the gallery executes examples/ at build time, and MathJax is served from
 the site itself (docs/node_modules/mathjax, `npm ci` in docs/), so the built site works offline.
 """
@@ -29,7 +29,7 @@ extensions = [
     "myst_nb",
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
-    "numpydoc",
+    "sphinx.ext.napoleon",
     "sphinx.ext.mathjax",
     "sphinx_gallery.gen_gallery",
     "sphinx_click",
@@ -62,8 +62,13 @@ mathjax_path = "mathjax/tex-chtml.js"
 autosummary_generate = True
 autodoc_typehints = "none"
 autodoc_default_options = {"members": True, "inherited-members": False}
-numpydoc_show_class_members = False
-numpydoc_validation_checks: set[str] = set()
+# The docstrings use numpydoc sections (Parameters / Returns with units and shapes) and, in
+# older modules, Google-style ones (Attributes:, Raises:); napoleon reads both.
+napoleon_google_docstring = True
+napoleon_numpy_docstring = True
+napoleon_use_rtype = False
+napoleon_attr_annotations = True
+napoleon_use_ivar = True
 
 sphinx_gallery_conf = {
     "examples_dirs": str(ROOT / "examples"),

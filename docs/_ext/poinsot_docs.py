@@ -10,6 +10,7 @@
 from __future__ import annotations
 
 import inspect
+import re
 import shutil
 from pathlib import Path
 from typing import Any
@@ -109,7 +110,23 @@ def _copy_lab(app: Any, exc: Exception | None) -> None:
     shutil.copytree(LAB, dest)
 
 
+_BAR = re.compile(r"(?<!\\)\|")
+
+
+def _escape_bars(app: Any, what: str, name: str, obj: Any, options: Any, lines: list[str]) -> None:
+    """The docstrings write magnitudes as ``|L|`` and ``|sin λ|`` (readable in ``help()``);
+    reStructuredText would read them as substitutions, so they are escaped for the site."""
+    for i, line in enumerate(lines):
+        bare = line.strip()
+        table = bare.startswith(("+-", "+=")) or (
+            bare.startswith("|") and bare.endswith("|") and bare.count("|") >= 3
+        )
+        if "|" in line and not table:
+            lines[i] = _BAR.sub(r"\\|", line)
+
+
 def setup(app: Any) -> dict[str, Any]:
+    app.connect("autodoc-process-docstring", _escape_bars, priority=400)
     app.connect("config-inited", _copy_mathjax)
     app.connect("config-inited", _write_api)
     app.connect("build-finished", _copy_lab)

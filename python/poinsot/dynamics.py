@@ -323,6 +323,8 @@ def simulate(
         fraction done and once with 1.0 at the end. An exception it raises stops the run and
         propagates.
 
+    Notes
+    -----
     The run can be stopped with Ctrl-C (``KeyboardInterrupt``, within a tenth of a second).
     ``samples`` is checked against the memory budget (:func:`memory_budget`) before any work.
 

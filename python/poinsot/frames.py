@@ -111,8 +111,12 @@ class FrameTransform:
 
     Attributes
     ----------
-    position, velocity, acceleration:
-        Arrays of shape ``(..., 3)`` (m, m/s, m/s²).
+    position:
+        Array of shape ``(..., 3)`` (m).
+    velocity:
+        Array of shape ``(..., 3)`` (m/s).
+    acceleration:
+        Array of shape ``(..., 3)`` (m/s²).
     acceleration_terms:
         The named terms of ``acceleration`` (each ``(..., 3)``), which sum to it. From
         :meth:`MovingFrame.to_fixed` (fixed components, eq. 2.21): ``"relative"`` (d²r/dt²)_rot,
