@@ -35,8 +35,8 @@ lint: $(PY)
 	cargo clippy --workspace --all-targets --release -- -D warnings
 	$(PY) -m mypy.stubtest poinsot._core --allowlist python/stubtest-allowlist.txt
 	RUSTDOCFLAGS="-D warnings" cargo doc -p poinsot --no-deps
-	$(PY) -m ruff check python examples
-	$(PY) -m ruff format --check python examples
+	$(PY) -m ruff check python examples docs/conf.py docs/_ext
+	$(PY) -m ruff format --check python examples docs/conf.py docs/_ext
 	$(PY) -m mypy python/poinsot
 
 # The core crate's API documentation (target/doc/poinsot), warnings as errors (also in `lint`).

@@ -9,7 +9,6 @@ the site itself (docs/node_modules/mathjax, `npm ci` in docs/), so the built sit
 from __future__ import annotations
 
 import os
-import shutil
 import sys
 from pathlib import Path
 
@@ -40,8 +39,17 @@ extensions = [
 
 source_suffix = {".rst": "restructuredtext", ".md": "myst-nb", ".ipynb": "myst-nb"}
 root_doc = "index"
-exclude_patterns = ["_build", "node_modules", "_ext", "README.md", "gallery/*.ipynb",
-                    "gallery/*.py", "gallery/*.md5", "gallery/*.codeobj.json", "gallery/*.zip"]
+exclude_patterns = [
+    "_build",
+    "node_modules",
+    "_ext",
+    "README.md",
+    "gallery/*.ipynb",
+    "gallery/*.py",
+    "gallery/*.md5",
+    "gallery/*.codeobj.json",
+    "gallery/*.zip",
+]
 suppress_warnings = ["myst.header"]
 
 # MyST: $…$ and $$…$$ math, ::: fences, definition lists, heading anchors for links like

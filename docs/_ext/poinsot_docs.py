@@ -85,7 +85,11 @@ def _write_api(app: Any, config: Any) -> None:
         doc = inspect.getdoc(module) or ""
         if mod != "poinsot" and doc:
             lines += [doc.split("\n\n")[0], ""]
-        for kind, heading in (("class", "Classes"), ("function", "Functions"), ("data", "Constants")):
+        for kind, heading in (
+            ("class", "Classes"),
+            ("function", "Functions"),
+            ("data", "Constants"),
+        ):
             group = [n for n in names if _kind(getattr(module, n)) == kind]
             if not group:
                 continue
