@@ -11,7 +11,7 @@ PY := $(VENV)/bin/python
 export PYO3_PYTHON := $(abspath $(PY))
 export MPLBACKEND := Agg
 
-.PHONY: docs docs-setup setup demo test test-rust lint doc publish-check test-python examples bench stubtest clean lab lab-build test-web web-setup fuzz fuzz-python fuzz-web wheel test-wheel
+.PHONY: docs docs-setup test-docs setup demo test test-rust lint doc publish-check test-python examples bench stubtest clean lab lab-build test-web web-setup fuzz fuzz-python fuzz-web wheel test-wheel
 
 $(PY):
 	$(PYTHON) -m venv $(VENV)
@@ -24,7 +24,7 @@ setup: $(PY)
 demo: setup
 	$(VENV)/bin/poinsot tour
 
-test: setup test-rust lint test-python examples test-web test-wheel
+test: setup test-rust lint test-python examples test-web test-docs test-wheel
 
 test-rust:
 	cargo test -p poinsot --release
@@ -73,6 +73,10 @@ docs-setup:
 
 docs: lab-build docs-setup
 	$(PY) -m sphinx -W --keep-going -b html docs docs/_build/html
+
+# The built site in Debian's chromium (docs/tests/site.test.mjs): home, math, gallery, API, lab, search.
+test-docs: docs
+	cd docs && node --test --test-concurrency=1 tests/
 
 lab-build: setup web-setup
 	bash web/build.sh

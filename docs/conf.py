@@ -100,6 +100,7 @@ sphinx_gallery_conf = {
 html_theme = "pydata_sphinx_theme"
 html_title = f"poinsot {release}"
 html_static_path = ["_static"]
+html_favicon = "_static/favicon.svg"
 html_css_files = ["poinsot.css"]
 html_theme_options = {
     "navbar_align": "left",
