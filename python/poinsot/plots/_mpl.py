@@ -8,7 +8,7 @@ layout, so titles and labels are kept inside the figure.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
@@ -125,9 +125,21 @@ def _keep_dpi(fig: Any, dpi: float) -> None:
     fig.savefig = savefig
 
 
-def save_animation(anim: Any, path: str | Path, fps: int, dpi: float | None = None) -> None:
+def save_animation(
+    anim: Any,
+    path: str | Path,
+    fps: int,
+    dpi: float | None = None,
+    progress: Callable[[int, int], Any] | None = None,
+) -> None:
     """Writes a matplotlib animation to ``path``: a ``.gif`` through Pillow (always available),
-    any other suffix (``.mp4``) through ffmpeg, which must then be installed."""
+    any other suffix (``.mp4``) through ffmpeg, which must then be installed. ``progress``, if
+    given, is called as ``progress(frame, frames)`` after each frame is written (matplotlib's
+    ``progress_callback``).
+
+    Each frame is drawn once, into the file: matplotlib's saving loop also redraws the figure
+    on its canvas after each frame (for a screen nobody watches while saving), which doubles
+    the time; that redraw is skipped here."""
     from matplotlib import animation
 
     path = Path(path)
@@ -135,4 +147,9 @@ def save_animation(anim: Any, path: str | Path, fps: int, dpi: float | None = No
         writer: Any = animation.PillowWriter(fps=fps)
     else:
         writer = animation.FFMpegWriter(fps=fps)
-    anim.save(str(path), writer=writer, dpi=dpi)
+    canvas = anim._fig.canvas
+    canvas.draw_idle = lambda *args, **kwargs: None
+    try:
+        anim.save(str(path), writer=writer, dpi=dpi, progress_callback=progress)
+    finally:
+        del canvas.draw_idle  # back to the class' method
