@@ -134,15 +134,21 @@ def save_animation(
 ) -> None:
     """Writes a matplotlib animation to ``path``: a ``.gif`` through Pillow (always available),
     any other suffix (``.mp4``) through ffmpeg, which must then be installed. ``progress``, if
-    given, is called as ``progress(frame, frames)`` after each frame is written (matplotlib's
-    ``progress_callback``).
+    given, is called as ``progress(frame, frames)`` after each frame is written (as
+    matplotlib's ``progress_callback``). ``dpi``: the figure's own by default.
 
-    Each frame is drawn once, into the file: matplotlib's saving loop also redraws the figure
-    on its canvas after each frame (for a screen nobody watches while saving), which doubles
-    the time; that redraw is skipped here."""
+    A GIF of a blitting :class:`~matplotlib.animation.FuncAnimation` (``blit=True``: its
+    function returns the artists it changes) is drawn by blitting: the still parts once, then
+    only the moving artists on top of them, frame by frame — several times faster than
+    matplotlib's saving loop, which redraws the whole figure twice a frame. Any other
+    animation goes through ``anim.save``, drawn once a frame (the redraw for a screen is
+    skipped)."""
     from matplotlib import animation
 
     path = Path(path)
+    if path.suffix.lower() == ".gif" and getattr(anim, "_blit", False) and hasattr(anim, "_func"):
+        _save_gif_blitting(anim, path, fps, dpi, progress)
+        return
     if path.suffix.lower() == ".gif":
         writer: Any = animation.PillowWriter(fps=fps)
     else:
@@ -153,3 +159,52 @@ def save_animation(
         anim.save(str(path), writer=writer, dpi=dpi, progress_callback=progress)
     finally:
         del canvas.draw_idle  # back to the class' method
+
+
+def _save_gif_blitting(
+    anim: Any,
+    path: Path,
+    fps: int,
+    dpi: float | None,
+    progress: Callable[[int, int], Any] | None,
+) -> None:
+    """The frames of a blitting FuncAnimation drawn by blitting, written as a GIF by Pillow
+    (as matplotlib's PillowWriter writes them, each opaque frame with its own 256 colours)."""
+    import numpy as np
+    from PIL import Image
+
+    fig = anim._fig
+    canvas = fig.canvas
+    frames = list(anim.new_saved_frame_seq())
+    moving = list(anim._func(frames[0], *anim._args))
+    old_dpi = fig.dpi
+    images = []
+    try:
+        if dpi is not None:
+            fig.set_dpi(dpi)
+        for artist in moving:
+            artist.set_animated(True)
+        canvas.draw()  # everything that does not move, once
+        still = canvas.copy_from_bbox(fig.bbox)
+        for i, frame in enumerate(frames):
+            canvas.restore_region(still)
+            for artist in anim._func(frame, *anim._args):
+                if hasattr(artist, "do_3d_projection"):  # a 3-D collection sorts its faces
+                    artist.do_3d_projection()
+                fig.draw_artist(artist)
+            rgba = np.array(canvas.buffer_rgba())
+            im = Image.fromarray(rgba, "RGBA")
+            if rgba[..., 3].min() == 255:
+                # opaque: to a palette by the fast octree (Pillow's default median cut
+                # takes ten times as long as drawing the frame)
+                im = im.convert("RGB").quantize(256, method=Image.Quantize.FASTOCTREE)
+            images.append(im)
+            if progress is not None:
+                progress(i, len(frames))
+    finally:
+        for artist in moving:
+            artist.set_animated(False)
+        fig.set_dpi(old_dpi)
+    images[0].save(
+        str(path), save_all=True, append_images=images[1:], duration=int(1000 / fps), loop=0
+    )

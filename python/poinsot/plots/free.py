@@ -432,7 +432,7 @@ def animate_tumbling_box(
             return poly, text
 
         update(0)
-        anim = animation.FuncAnimation(fig, update, frames=frames, interval=1000 / fps, blit=False)
+        anim = animation.FuncAnimation(fig, update, frames=frames, interval=1000 / fps, blit=True)
     if path is not None:
         save_animation(anim, path, fps, progress=progress)
     return anim
@@ -526,7 +526,7 @@ def animate_free_body(
             return (*axes_lines, *rings, omega_line, omega_trail, text)
 
         update(0)
-        anim = animation.FuncAnimation(fig, update, frames=frames, interval=1000 / fps, blit=False)
+        anim = animation.FuncAnimation(fig, update, frames=frames, interval=1000 / fps, blit=True)
     if path is not None:
         save_animation(anim, path, fps, progress=progress)
     return anim

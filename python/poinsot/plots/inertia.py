@@ -6,6 +6,7 @@ given) and never calls ``plt.show()``: save it with ``fig.savefig(...)`` or show
 
 from __future__ import annotations
 
+import textwrap
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -98,8 +99,9 @@ def plot_inertia_ellipsoid(
         label_3d(ax, f"x ({unit})", f"y ({unit})", f"z ({unit})")
         if title is None:
             shown = ", ".join(f"{m:.4g}" for m in moments)
-            what = f"{name} ({body.kind})" if name else body.kind
-            title = f"inertia ellipsoid ρ·I·ρ = 1 of the {what}\nI₁, I₂, I₃ = {shown} kg·m²"
+            what = textwrap.fill(f"inertia ellipsoid ρ·I·ρ = 1 of the {name or body.kind}", 50)
+            kind = f"{body.kind}: " if name else ""
+            title = f"{what}\n{kind}I₁, I₂, I₃ = {shown} kg·m²"
         ax.set_title(title)
     return fig
 

@@ -289,7 +289,7 @@ def animate_top(
             return stick, ring, mark, trail_line, text
 
         update(0)
-        anim = animation.FuncAnimation(fig, update, frames=len(t), interval=1000 / fps, blit=False)
+        anim = animation.FuncAnimation(fig, update, frames=len(t), interval=1000 / fps, blit=True)
     if path is not None:
         save_animation(anim, path, fps, progress=progress)
     return anim
