@@ -488,6 +488,33 @@ def _save_animation(anim: Any, path: str, fps: int, description: str) -> None:
         pyplot().close(anim._fig)
 
 
+#: A printed value is 0 when it is within this many machine epsilons (2.2e-16) of the size
+#: of the quantities it was computed from (see :func:`at_precision`).
+PRECISION_EPS = 8
+
+
+def at_precision(value: float, scale: float, spec: str = ".9g") -> str:
+    """``value`` formatted with ``spec`` — or ``"0"`` when it is below the precision of the
+    computation that produced it: |value| ≤ 8 ε × |scale|, with ε = 2.2e-16 the machine
+    epsilon of a double and ``scale`` the size of the quantities the value was computed from.
+
+    A value computed from numbers of size S carries a round-off error of a few ε × S, so
+    anything smaller is that error, not a result: the drift of a shot fired on a planet that
+    does not turn, the landing point's component across the line of fire, comes out as
+    8.1e-28 m or 3.6e-12 m for a range of 65 km (ε × range = 1.4e-11 m) and reads 0. A value
+    above the bound is printed as it is, however small: a drift of 1e-9 m over a range of
+    1 m is a result. NaN and infinities are printed as they are. The rule is documented in
+    docs/limits.md ("What the command line prints")."""
+    v, k = float(value), abs(float(scale))
+    if (
+        math.isfinite(v)
+        and math.isfinite(k)
+        and abs(v) <= PRECISION_EPS * sys.float_info.epsilon * k
+    ):
+        return "0"
+    return format(v, spec)
+
+
 def emit_json(data: dict[str, Any]) -> None:
     """Print ``data`` as one JSON document on stdout."""
     click.echo(json.dumps(_jsonable(data), indent=2))
@@ -949,7 +976,15 @@ def projectile(
         ("drift", "drift, right + (m)"),
     ):
         a, b = getattr(spin, k), getattr(still, k)
-        table.add_row(label, f"{a:.9g}", f"{b:.9g}", f"{a - b:+.4g}")
+        # each value computed from numbers of the size of its flight's time or range
+        size = "time" if k == "time" else "range"
+        sa, sb = getattr(spin, size), getattr(still, size)
+        table.add_row(
+            label,
+            at_precision(a, sa),
+            at_precision(b, sb),
+            at_precision(a - b, max(abs(sa), abs(sb)), "+.4g"),
+        )
     Console().print(table)
     _echo_saved(data)
 
