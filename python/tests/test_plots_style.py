@@ -252,3 +252,20 @@ def test_the_checks_ignore_what_is_not_drawn() -> None:
         ax.set(xlabel="t (s)", ylabel="x (m)", xlim=(0, 1))
     kept = [t.get_text() for t in ax.xaxis.get_ticklabels()]
     assert kept and layout_problems(fig) == []
+
+
+def test_the_figures_page_runs() -> None:
+    """docs/plots.md's Python blocks run in one namespace, and what they print holds."""
+    import re
+
+    doc = Path(__file__).resolve().parents[2] / "docs" / "plots.md"
+    blocks = re.findall(r"```python\n(.*?)```", doc.read_text(encoding="utf-8"), re.DOTALL)
+    assert len(blocks) >= 2
+    namespace: dict[str, Any] = {"__name__": "__doc__"}
+    for i, block in enumerate(blocks):
+        exec(compile(block, f"docs/plots.md[block {i}]", "exec"), namespace)
+    assert list(namespace["fig"].get_size_inches()) == pytest.approx([17.6, 8.8])
+    from PIL import Image
+
+    with Image.open(namespace["folder"] / "cones.png") as png:
+        assert png.size == (3520, 1760) and png.info["dpi"][0] == pytest.approx(200, abs=0.5)
