@@ -654,15 +654,12 @@ def inertia(
 
 def _dimensions(given: dict[str, Any], needs: tuple[str, ...]) -> str:
     """A standard shape's dimensions as a title says them: "r = 0.5 m, h = 2 m", "1 × 2 × 3 m"."""
+    symbols = {"radius": "r = ", "height": "h = ", "length": "l = ", "semi_axes": "semi-axes "}
     parts = []
     for n in needs:
         v = given[n]
-        if n in ("sides", "semi_axes"):
-            parts.append(
-                ("semi-axes " if n == "semi_axes" else "") + " × ".join(f"{x:g}" for x in v) + " m"
-            )
-        else:
-            parts.append(f"{ {'radius': 'r', 'height': 'h', 'length': 'l'}[n] } = {v:g} m")
+        shown = " × ".join(f"{x:g}" for x in v) if isinstance(v, tuple) else f"{v:g}"
+        parts.append(f"{symbols.get(n, '')}{shown} m")
     return ", ".join(parts)
 
 

@@ -253,9 +253,7 @@ def animate_top(
         circle = np.stack([np.cos(a), np.sin(a)], axis=1)
         fig = new_figure(style, 6.0, 6.5)
         ax = fig.add_subplot(projection="3d")
-        (vertical,) = ax.plot(
-            [0, 0], [0, 0], [0, 1.0], color="0.5", ls="--", lw=0.4 * _lw(), label="vertical Z"
-        )
+        ax.plot([0, 0], [0, 0], [0, 1.0], color="0.5", ls="--", lw=0.4 * _lw(), label="vertical Z")
         bands = []
         for th, ls in ((t1, ":"), (t2, "-.")):
             xy = np.sin(th) * circle
@@ -275,7 +273,6 @@ def animate_top(
         fig.legend(loc="outside lower center", ncol=2)
         ax.set_title(f"heavy top: {top.motion_class}")
         text = ax.text2D(0.98, 0.02, "", transform=ax.transAxes, ha="right")
-        del vertical
 
         def update(k: int) -> tuple[Any, ...]:
             r = rot[k]
