@@ -80,7 +80,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from poinsot.plots.top import animate_top, plot_angles, plot_axis_locus, plot_effective_potential
 
-fig, axes = plt.subplots(1, 3, figsize=(15, 5))
+fig, axes = plt.subplots(1, 3, figsize=(15, 6), layout="constrained")  # labels kept apart
 for ax, name in zip(axes, ("waves", "cusps", "loops")):
     plot_axis_locus(tops[name], ax)
 fig.savefig(out / "heavy_top_loci.png", dpi=110, bbox_inches="tight")

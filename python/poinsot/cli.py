@@ -18,8 +18,9 @@ import math
 import os
 import stat
 import sys
+import time
 import warnings
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any, NoReturn
 
@@ -27,6 +28,7 @@ import click
 import numpy as np
 
 from .errors import PoinsotError
+from .plots._mpl import STYLES
 
 SHAPES = {
     # name: (constructor, the dimension options it needs)
@@ -326,6 +328,193 @@ def _interactive() -> bool:
         return False
 
 
+def _stderr_interactive() -> bool:
+    """Whether stderr is a terminal: the render progress bars are drawn there, and only there."""
+    try:
+        return sys.stderr.isatty()
+    except (AttributeError, ValueError):
+        return False
+
+
+#: A render shows its progress bar once it has run this long (s): shorter ones stay silent.
+SHOW_PROGRESS_AFTER_S = 1.0
+
+
+@contextlib.contextmanager
+def render_progress(description: str) -> Iterator[Callable[[int, int], None]]:
+    """A callback ``progress(done, total)`` for a render (frames of an animation, pictures of
+    a set) that draws a rich progress bar on stderr once the render has taken longer than
+    :data:`SHOW_PROGRESS_AFTER_S`, and only when stderr is a terminal (piped or captured output
+    stays clean, as with the CLI's other progress bars); the bar is removed when done."""
+    start = time.perf_counter()
+    show = _stderr_interactive()
+    bar: Any = None
+    task: Any = None
+
+    def update(done: int, total: int) -> None:
+        nonlocal bar, task
+        if not show:
+            return
+        if bar is None:
+            if time.perf_counter() - start < SHOW_PROGRESS_AFTER_S:
+                return
+            from rich.console import Console
+            from rich.progress import Progress
+
+            bar = Progress(console=Console(stderr=True), transient=True)
+            bar.start()
+            task = bar.add_task(description, total=total)
+        bar.update(task, completed=done, total=total)
+
+    try:
+        yield update
+    finally:
+        if bar is not None:
+            bar.stop()
+
+
+def _picture_options(
+    plot_help: str, animate_help: str | None = None
+) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
+    """The options ``--plot PATH``, ``--animate PATH`` (when ``animate_help`` is given) and
+    ``--style`` of a computing command."""
+
+    def deco(f: Callable[..., Any]) -> Callable[..., Any]:
+        f = click.option(
+            "--style",
+            type=click.Choice(list(STYLES)),
+            default="paper",
+            show_default=True,
+            help=f"Style of {'--plot and --animate' if animate_help else '--plot'}: paper (a "
+            "page) or slides (a projector: larger text, thicker lines, 200 dpi).",
+        )(f)
+        if animate_help is not None:
+            f = click.option(
+                "--animate",
+                "animate_path",
+                type=click.Path(dir_okay=False),
+                default=None,
+                help=animate_help + " A .gif, or a .mp4 when ffmpeg is installed.",
+            )(f)
+        return click.option(
+            "--plot",
+            "plot_path",
+            type=click.Path(dir_okay=False),
+            default=None,
+            help=plot_help + " The suffix picks the format (.png, .pdf, .svg, ...).",
+        )(f)
+
+    return deco
+
+
+#: Suffixes ``--animate`` writes: the writer and the program it needs (None: Pillow, always
+#: there with matplotlib).
+ANIMATION_SUFFIXES = {".gif": None, ".mp4": "ffmpeg"}
+
+
+def _check_animation_path(path: str) -> None:
+    """--animate must name a file in an existing directory, ending in .gif, or in .mp4 with
+    ffmpeg on PATH: a usage error (naming --animate) otherwise, before any work starts."""
+    import shutil
+
+    target = Path(path)
+    if not target.parent.is_dir():
+        raise click.UsageError(
+            f"--animate: no directory '{target.parent}' to save {target.name} into"
+        )
+    suffix = target.suffix.lower()
+    if suffix not in ANIMATION_SUFFIXES:
+        raise click.UsageError(
+            f"--animate: cannot write '{target.suffix or target.name}' animations; give a path "
+            "ending in .gif (or .mp4, with ffmpeg installed)"
+        )
+    program = ANIMATION_SUFFIXES[suffix]
+    if program is not None and shutil.which(program) is None:
+        raise click.UsageError(
+            f"--animate: writing {suffix} needs {program}, which is not installed (not on "
+            "PATH); give a .gif path, or install ffmpeg"
+        )
+    try:
+        import matplotlib  # noqa: F401
+    except ImportError as exc:
+        raise Refused(
+            "--animate needs matplotlib, which is not installed: pip install 'poinsot[plot]'"
+        ) from exc
+
+
+def _check_pictures(plot_path: str | None, animate_path: str | None = None) -> None:
+    """Checks --plot and --animate before any work starts (usage errors naming them)."""
+    if plot_path is not None:
+        _check_picture_path(plot_path)
+    if animate_path is not None:
+        _check_animation_path(animate_path)
+
+
+def _echo_saved(data: dict[str, Any]) -> None:
+    """Says where the pictures of --plot and --animate went (after the table)."""
+    for p in data.get("plots", []):
+        click.echo(f"saved {p}")
+
+
+#: Samples of a Foucault run drawn by --plot and --animate, per half swing (between turning
+#: points), and at most in all: enough for a smooth track and a bob that does not jump.
+FOUCAULT_SAMPLES_PER_TURN = 24
+FOUCAULT_MAX_SAMPLES = 200_001
+
+
+def _save_figure(fig: Any, path: str) -> None:
+    """Saves a figure of --plot (at its style's dpi), a write failure refused naming --plot."""
+    from .plots._mpl import pyplot
+
+    try:
+        fig.savefig(path)
+    except OSError as exc:
+        raise Refused(f"--plot: cannot write {path}: {exc.strerror or exc}") from exc
+    finally:
+        pyplot().close(fig)
+
+
+def _save_animation(anim: Any, path: str, fps: int, description: str) -> None:
+    """Saves an animation of --animate with a progress bar, a write failure refused naming
+    --animate."""
+    from .plots._mpl import pyplot, save_animation
+
+    try:
+        with render_progress(description) as progress:
+            save_animation(anim, path, fps, progress=progress)
+    except OSError as exc:
+        raise Refused(f"--animate: cannot write {path}: {exc.strerror or exc}") from exc
+    finally:
+        pyplot().close(anim._fig)
+
+
+#: A printed value is 0 when it is within this many machine epsilons (2.2e-16) of the size
+#: of the quantities it was computed from (see :func:`at_precision`).
+PRECISION_EPS = 8
+
+
+def at_precision(value: float, scale: float, spec: str = ".9g") -> str:
+    """``value`` formatted with ``spec`` — or ``"0"`` when it is below the precision of the
+    computation that produced it: |value| ≤ 8 ε × |scale|, with ε = 2.2e-16 the machine
+    epsilon of a double and ``scale`` the size of the quantities the value was computed from.
+
+    A value computed from numbers of size S carries a round-off error of a few ε × S, so
+    anything smaller is that error, not a result: the drift of a shot fired on a planet that
+    does not turn, the landing point's component across the line of fire, comes out as
+    8.1e-28 m or 3.6e-12 m for a range of 65 km (ε × range = 1.4e-11 m) and reads 0. A value
+    above the bound is printed as it is, however small: a drift of 1e-9 m over a range of
+    1 m is a result. NaN and infinities are printed as they are. The rule is documented in
+    docs/limits.md ("What the command line prints")."""
+    v, k = float(value), abs(float(scale))
+    if (
+        math.isfinite(v)
+        and math.isfinite(k)
+        and abs(v) <= PRECISION_EPS * sys.float_info.epsilon * k
+    ):
+        return "0"
+    return format(v, spec)
+
+
 def emit_json(data: dict[str, Any]) -> None:
     """Print ``data`` as one JSON document on stdout."""
     click.echo(json.dumps(_jsonable(data), indent=2))
@@ -381,13 +570,7 @@ def tour() -> None:
 @click.option(
     "--density", type=FINITE, default=None, help="Density in kg/m³ (mesh files; default 1)."
 )
-@click.option(
-    "--plot",
-    "plot_path",
-    type=click.Path(dir_okay=False),
-    default=None,
-    help="Save a picture of the inertia ellipsoid and principal axes to this file.",
-)
+@_picture_options("Save a picture of the inertia ellipsoid and principal axes to this file.")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
 def inertia(
     shape: str,
@@ -399,6 +582,7 @@ def inertia(
     semi_axes: tuple[float, float, float] | None,
     density: float | None,
     plot_path: str | None,
+    style: str,
     as_json: bool,
 ) -> None:
     """Mass properties of a standard SHAPE or of a closed mesh file (.stl, .obj, ...).
@@ -442,6 +626,7 @@ def inertia(
             _check_picture_path(plot_path)
         body = getattr(RigidBody, ctor)(1.0 if mass is None else mass, *(given[n] for n in needs))
         source = shape
+        name = f"{shape} {_dimensions(given, needs)}, {body.mass:g} kg"
     else:
         path = _mesh_file(shape)
         if mass is not None:
@@ -450,24 +635,32 @@ def inertia(
             _check_picture_path(plot_path)  # before a long mesh is read
         body = _load_mesh(path, 1.0 if density is None else density)
         source = str(path)
+        name = f"mesh {path.name}, {body.mass:.4g} kg"
 
     data = {"source": source, **body.to_dict()}
     require_finite(data)
     if plot_path is not None:
         from .plots.inertia import plot_inertia_ellipsoid
 
-        fig = plot_inertia_ellipsoid(body, title=source)
-        try:
-            fig.savefig(plot_path, dpi=120, bbox_inches="tight")
-        except OSError as exc:
-            raise Refused(f"--plot: cannot write {plot_path}: {exc.strerror or exc}") from exc
+        _save_figure(plot_inertia_ellipsoid(body, name=name, style=style), plot_path)
+        data["plots"] = [plot_path]
 
     if as_json:
         emit_json(data)
         return
     _print_body(source, body)
-    if plot_path is not None:
-        click.echo(f"picture saved to {plot_path}")
+    _echo_saved(data)
+
+
+def _dimensions(given: dict[str, Any], needs: tuple[str, ...]) -> str:
+    """A standard shape's dimensions as a title says them: "r = 0.5 m, h = 2 m", "1 × 2 × 3 m"."""
+    symbols = {"radius": "r = ", "height": "h = ", "length": "l = ", "semi_axes": "semi-axes "}
+    parts = []
+    for n in needs:
+        v = given[n]
+        shown = " × ".join(f"{x:g}" for x in v) if isinstance(v, tuple) else f"{v:g}"
+        parts.append(f"{symbols.get(n, '')}{shown} m")
+    return ", ".join(parts)
 
 
 def _mesh_file(shape: str) -> Path:
@@ -619,9 +812,20 @@ def _angle_unit(degrees: bool) -> str:
     show_default=True,
     help="Uniform gravity (the unit's model) or g falling off with height.",
 )
+@_picture_options(
+    "Save a picture of the fall to this file: east and south displacement against height, "
+    "beside 2.42 and the second-order south."
+)
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
 def fall(
-    height: float, latitude: float, degrees: bool, solar_day: bool, gravity: str, as_json: bool
+    height: float,
+    latitude: float,
+    degrees: bool,
+    solar_day: bool,
+    gravity: str,
+    plot_path: str | None,
+    style: str,
+    as_json: bool,
 ) -> None:
     """A body dropped from rest on the rotating Earth (eqs. 2.32–2.42).
 
@@ -632,7 +836,9 @@ def fall(
     Examples:
       poinsot fall --height 100 --latitude 45 --degrees          # the unit's 1.55e-2 m
       poinsot fall --height 100 --latitude 45 --degrees --solar-day --json
+      poinsot fall --height 100 --latitude 45 --degrees --plot fall.png --style slides
     """
+    _check_pictures(plot_path)
     earth = _earth(solar_day)
     res = earth.drop(height, latitude, degrees)
     data = {
@@ -652,6 +858,11 @@ def fall(
         res = earth.drop(height, latitude, degrees, gravity=gravity)
         data.update(time=res.time, east=res.east, north=res.north)
     require_finite(data)
+    if plot_path is not None:
+        from .plots.earth import plot_trajectory
+
+        _save_figure(plot_trajectory(res, style=style), plot_path)
+        data["plots"] = [plot_path]
     if as_json:
         emit_json(data)
         return
@@ -673,6 +884,7 @@ def fall(
         "south (m)", f"{-data['north']:.6e}", f"{res.second_order_south:.6e}  ¾ω² sin2λ h²/g"
     )
     Console().print(table)
+    _echo_saved(data)
 
 
 @main.command()
@@ -694,6 +906,7 @@ def fall(
 @click.option("--height", type=FINITE, default=0.0, show_default=True, help="Launch height in m.")
 @click.option("--degrees", is_flag=True, help="Read the angles in degrees.")
 @click.option("--solar-day", "solar_day", is_flag=True, help="Use the unit's rate 2π/86400.")
+@_picture_options("Save a picture of the flight (its track in east, north, up) to this file.")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
 def projectile(
     speed: float,
@@ -703,6 +916,8 @@ def projectile(
     height: float,
     degrees: bool,
     solar_day: bool,
+    plot_path: str | None,
+    style: str,
     as_json: bool,
 ) -> None:
     """A projectile on the rotating Earth, with and without the Earth's rotation.
@@ -714,6 +929,7 @@ def projectile(
     Example:
       poinsot projectile --speed 800 --elevation 45 --azimuth 90 --latitude 50 --degrees
     """
+    _check_pictures(plot_path)
     earth = _earth(solar_day)
     kw = {"degrees": degrees, "height": height}
     spin = earth.projectile(speed, elevation, azimuth, latitude, **kw)
@@ -731,6 +947,11 @@ def projectile(
         "without_rotation": {k: getattr(still, k) for k in keys},
     }
     require_finite(data)
+    if plot_path is not None:
+        from .plots.earth import plot_trajectory
+
+        _save_figure(plot_trajectory(spin, style=style), plot_path)
+        data["plots"] = [plot_path]
     if as_json:
         emit_json(data)
         return
@@ -752,8 +973,17 @@ def projectile(
         ("drift", "drift, right + (m)"),
     ):
         a, b = getattr(spin, k), getattr(still, k)
-        table.add_row(label, f"{a:.9g}", f"{b:.9g}", f"{a - b:+.4g}")
+        # each value computed from numbers of the size of its flight's time or range
+        size = "time" if k == "time" else "range"
+        sa, sb = getattr(spin, size), getattr(still, size)
+        table.add_row(
+            label,
+            at_precision(a, sa),
+            at_precision(b, sb),
+            at_precision(a - b, max(abs(sa), abs(sb)), "+.4g"),
+        )
     Console().print(table)
+    _echo_saved(data)
 
 
 @main.command()
@@ -773,6 +1003,11 @@ def projectile(
     "--duration", type=FINITE, default=3600.0, show_default=True, help="Simulated time in s."
 )
 @click.option("--solar-day", "solar_day", is_flag=True, help="Use the unit's rate 2π/86400.")
+@_picture_options(
+    "Save the rosette to this file: the track seen from above, and the swing plane's angle "
+    "at every turning point against time.",
+    "Save an animation of the bob seen from above to this file (200 frames over the run).",
+)
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
 def foucault(
     latitude: float,
@@ -781,6 +1016,9 @@ def foucault(
     amplitude: float,
     duration: float,
     solar_day: bool,
+    plot_path: str | None,
+    animate_path: str | None,
+    style: str,
     as_json: bool,
 ) -> None:
     """The Foucault pendulum, simulated in the rotating frame.
@@ -792,7 +1030,9 @@ def foucault(
     \b
     Example:
       poinsot foucault --latitude 48.85 --degrees --duration 7200
+      poinsot foucault --latitude 45 --degrees --duration 600 --plot rosette.png --animate bob.gif
     """
+    _check_pictures(plot_path, animate_path)
     earth = _earth(solar_day)
     run = earth.foucault(
         latitude,
@@ -821,6 +1061,30 @@ def foucault(
         "full_turn_hours": hours,
     }
     require_finite(data)
+    if plot_path is not None or animate_path is not None:
+        from .plots.earth import animate_foucault, plot_foucault_rosette
+
+        # The table needs only the measurement; a picture needs the track: the same run,
+        # sampled FOUCAULT_SAMPLES_PER_TURN times between turning points.
+        samples = min(
+            max(2, FOUCAULT_SAMPLES_PER_TURN * (len(run.turn_times) + 1) + 1), FOUCAULT_MAX_SAMPLES
+        )
+        track = earth.foucault(
+            latitude,
+            degrees,
+            length=length,
+            amplitude=amplitude,
+            duration=duration,
+            samples=samples,
+        )
+        data["plots"] = []
+        if plot_path is not None:
+            _save_figure(plot_foucault_rosette(track, style=style), plot_path)
+            data["plots"].append(plot_path)
+        if animate_path is not None:
+            anim = animate_foucault(track, frames=200, fps=25, style=style)
+            _save_animation(anim, animate_path, 25, "animating the pendulum")
+            data["plots"].append(animate_path)
     if as_json:
         emit_json(data)
         return
@@ -846,6 +1110,7 @@ def foucault(
     console = Console()
     console.print(table)
     console.print(run.regime_note)
+    _echo_saved(data)
 
 
 def _floats3(ctx: click.Context, param: click.Parameter, value: Any) -> Any:
@@ -875,6 +1140,11 @@ def _floats3(ctx: click.Context, param: click.Parameter, value: Any) -> Any:
 @click.option(
     "--samples", type=int, default=201, show_default=True, help="Evenly spaced output times."
 )
+@_picture_options(
+    "Save a picture of ω(t) in the body to this file: the chosen method beside the exact solution.",
+    "Save an animation of the body in space to this file (its principal axes and inertia "
+    "ellipsoid, L fixed, ω moving): 200 frames over --duration.",
+)
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
 def free(
     moments: tuple[float, float, float],
@@ -883,6 +1153,9 @@ def free(
     method: str,
     dt: float | None,
     samples: int,
+    plot_path: str | None,
+    animate_path: str | None,
+    style: str,
     as_json: bool,
 ) -> None:
     """The torque-free rigid body: the exact solution beside an integrator.
@@ -893,10 +1166,11 @@ def free(
     \b
     Example:
       poinsot free --moments 1 2 3 --omega 1 0.1 1 --duration 1000 --method splitting6 --dt 0.01
+      poinsot free --moments 1 2 3 --omega 0.01 3 0.01 --duration 20 --animate flip.gif
     """
-    import time
-
     from .dynamics import simulate
+
+    _check_pictures(plot_path, animate_path)
     from .free import FreeRigidBody, axis_stability
 
     exact = FreeRigidBody(moments, omega)
@@ -955,6 +1229,7 @@ def free(
         "axis_stability": [s.stability for s in stab],
     }
     require_finite(data)
+    data.update(_free_pictures(exact, tr, duration, plot_path, animate_path, style))
     if as_json:
         emit_json(data)
         return
@@ -981,6 +1256,31 @@ def free(
     table.add_row("|ω − ω_exact| / |q − q_exact|", f"{data['omega_error']:.2e} / {q_err:.2e}")
     table.add_row("steps / wall time", f"{tr.steps} / {wall:.3g} s")
     Console().print(table)
+    _echo_saved(data)
+
+
+def _free_pictures(
+    exact: Any,
+    tr: Any,
+    duration: float,
+    plot_path: str | None,
+    animate_path: str | None,
+    style: str,
+) -> dict[str, Any]:
+    """The pictures of `poinsot free`: ω(t) (--plot) and the body in space (--animate)."""
+    if plot_path is None and animate_path is None:
+        return {}
+    from .plots.free import animate_free_body, plot_omega
+
+    saved = []
+    if plot_path is not None:
+        _save_figure(plot_omega(tr, exact, style=style), plot_path)
+        saved.append(plot_path)
+    if animate_path is not None:
+        anim = animate_free_body(exact, duration=duration, frames=200, fps=25, style=style)
+        _save_animation(anim, animate_path, 25, "animating the body")
+        saved.append(animate_path)
+    return {"plots": saved}
 
 
 @main.command()
@@ -1041,6 +1341,22 @@ def free(
     help="Save pictures (V(θ), the axis' locus, θ/φ̇/ψ̇ against t, steady rates against spin) "
     "and an animation (top.gif) into this folder.",
 )
+@click.option(
+    "--animate",
+    "animate_path",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="Save an animation of the top (two nutation periods) to this file: a .gif, or a .mp4 "
+    "when ffmpeg is installed.",
+)
+@click.option(
+    "--style",
+    type=click.Choice(list(STYLES)),
+    default="paper",
+    show_default=True,
+    help="Style of --plot and --animate: paper (a page) or slides (a projector: larger text, "
+    "thicker lines, 200 dpi).",
+)
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
 def top(
     i1: float,
@@ -1052,6 +1368,8 @@ def top(
     theta_dot: float,
     degrees: bool,
     plot_dir: str | None,
+    animate_path: str | None,
+    style: str,
     as_json: bool,
 ) -> None:
     """The heavy symmetric top (eqs. 2.98–2.121), solved exactly.
@@ -1066,8 +1384,11 @@ def top(
       poinsot top --I1 1 --I3 0.5 --mgl 1 --theta 0.8 --psi-dot 6            # cusps
       poinsot top --I1 1 --I3 0.5 --mgl 0.3 --theta 0.6 --psi-dot 40 --json
       poinsot top --I1 1 --I3 0.5 --mgl 1 --theta 45 --degrees --phi-dot -30 --psi-dot 340 --plot out/
+      poinsot top --I1 1 --I3 0.5 --mgl 1 --theta 0.8 --phi-dot -0.5 --psi-dot 6 --animate top.gif
     """
     from .top import HeavyTop
+
+    _check_pictures(None, animate_path)
 
     t = HeavyTop(
         i1, i3, mgl, theta, theta_dot=theta_dot, phi_dot=phi_dot, psi_dot=psi_dot, degrees=degrees
@@ -1113,9 +1434,18 @@ def top(
         from .plots.top import save_top_plots
 
         try:
-            saved = [str(p) for p in save_top_plots(t, plot_dir, animation=True)]
+            with render_progress("drawing the top") as progress:
+                paths = save_top_plots(t, plot_dir, animation=True, style=style, progress=progress)
+            saved = [str(p) for p in paths]
         except OSError as exc:
             raise Refused(f"--plot: cannot write into {plot_dir}: {exc.strerror or exc}") from exc
+    if animate_path is not None:
+        from .plots.top import animate_top
+
+        anim = animate_top(t, style=style)
+        _save_animation(anim, animate_path, 24, "animating the top")
+        saved.append(animate_path)
+    if saved:
         data["plots"] = saved
     if as_json:
         emit_json(data)

@@ -13,6 +13,7 @@ import numpy as np
 from rich.console import Console
 from rich.panel import Panel
 from rich.table import Table
+from rich.text import Text
 
 import poinsot as ps
 
@@ -366,25 +367,25 @@ def _heavy_top(con: Console) -> None:
         title=f"I₁ = {i1} kg·m², I₃ = {i3} kg·m², m g l = {mgl} N·m, θ₀ = 0.8 rad, ω₃ ≈ 6 rad/s, "
         "released with θ̇₀ = 0"
     )
-    table.add_column("φ̇₀ (rad/s)", justify="right")
-    table.add_column("p_φ, p_ψ (kg·m²/s)", justify="right")
-    table.add_column("E′ (J)", justify="right")
-    table.add_column("θ₁, θ₂ (rad)", justify="right")
-    table.add_column("nutation period (s)", justify="right")
-    table.add_column("⟨φ̇⟩ (rad/s)", justify="right")
-    table.add_column("the axis traces")
+    table.add_column("quantity")
+    tops = []
     for phi_dot in (0.5, 0.0, -0.5):
-        top = ps.HeavyTop(i1, i3, mgl, 0.8, phi_dot=phi_dot, psi_dot=6.0 - phi_dot * np.cos(0.8))
-        t1, t2 = top.turning_points
-        table.add_row(
-            f"{phi_dot:+.1f}",
-            f"{top.p_phi:.6f}, {top.p_psi:.6f}",
-            f"{top.reduced_energy:.6f}",
-            f"{t1:.6f}, {t2:.6f}",
-            f"{top.nutation_period:.6f}",
-            f"{top.mean_precession_rate:.6f}",
-            top.motion_class,
+        tops.append(
+            ps.HeavyTop(i1, i3, mgl, 0.8, phi_dot=phi_dot, psi_dot=6.0 - phi_dot * np.cos(0.8))
         )
+        table.add_column(f"φ̇₀ = {phi_dot:+.1f} rad/s", justify="right")
+    rows: list[tuple[str, Callable[[ps.HeavyTop], str]]] = [
+        ("p_φ (kg·m²/s)", lambda top: f"{top.p_phi:.6f}"),
+        ("p_ψ (kg·m²/s)", lambda top: f"{top.p_psi:.6f}"),
+        ("E′ (J)", lambda top: f"{top.reduced_energy:.6f}"),
+        ("θ₁ (rad)", lambda top: f"{top.turning_points[0]:.6f}"),
+        ("θ₂ (rad)", lambda top: f"{top.turning_points[1]:.6f}"),
+        ("nutation period (s)", lambda top: f"{top.nutation_period:.6f}"),
+        ("⟨φ̇⟩ (rad/s)", lambda top: f"{top.mean_precession_rate:.6f}"),
+        ("the axis traces", lambda top: top.motion_class),
+    ]
+    for name, value in rows:
+        table.add_row(name, *(value(top) for top in tops))
     con.print(table)
     top = ps.HeavyTop(i1, i3, mgl, 0.8, psi_dot=6.0)
     t1, t2 = top.turning_points
@@ -447,6 +448,15 @@ def _fast_top(con: Console) -> None:
     )
 
 
+def heading(con: Console, title: str) -> None:
+    """A section's heading: a rule across the console, then the title in bold, wrapped at the
+    console's width (a rule's own title is cut with "…" where it does not fit: at 80 columns
+    most of the unit's headings did not)."""
+    con.print()
+    con.rule(style="blue")
+    con.print(Text(title, style="bold"))
+
+
 def run_tour(console: Console | None = None) -> None:
     """Print every section of the tour to ``console`` (a new rich Console by default)."""
     con = console or Console()
@@ -458,7 +468,7 @@ def run_tour(console: Console | None = None) -> None:
         )
     )
     for i, (title, fn) in enumerate(_SECTIONS, start=1):
-        con.rule(f"[bold]{i}. {title}")
+        heading(con, f"{i}. {title}")
         fn(con)
     con.rule()
     con.print("More: `poinsot inertia --help`, the examples/ folder, and the docs/ pages.")

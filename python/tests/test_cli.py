@@ -117,3 +117,72 @@ def test_bad_input_names_the_argument(args: tuple[str, ...], needle: str, status
     assert code == status
     assert needle in err and out == ""
     assert len(err.splitlines()) == 1 and err.startswith("error: ")
+
+
+def _tour_text(width: int) -> str:
+    import io
+
+    from poinsot.tour import run_tour
+    from rich.console import Console
+
+    con = Console(width=width, record=True, file=io.StringIO())
+    run_tour(con)
+    return con.export_text()
+
+
+def test_tour_fits_80_columns() -> None:
+    # At 80 columns every heading was cut with "…" (rich's rule) and the heavy-top table cut
+    # its cells: now headings wrap, and the text at 80 columns holds every "…" it holds at 200
+    # (the ones written in the tour's own text) and no more.
+    from poinsot.tour import _SECTIONS
+
+    narrow, wide = _tour_text(80), _tour_text(200)
+    from rich.cells import cell_len  # columns on screen (φ̇ is two characters, one column)
+
+    assert max(cell_len(line) for line in narrow.splitlines()) <= 80
+    assert narrow.count("…") == wide.count("…")
+    flat = " ".join(narrow.split())
+    for i, (title, _) in enumerate(_SECTIONS, start=1):
+        assert f"{i}. {title}" in flat, title
+    for value in ("2.347420", "1.832820", "1.255704", "cusps", "loops", "waves"):
+        assert value in narrow
+    # negative control: the same headings drawn as rich rules are cut at 80 columns
+    import io
+
+    from rich.console import Console
+
+    con = Console(width=80, record=True, file=io.StringIO())
+    con.rule(f"1. {_SECTIONS[0][0]}")
+    assert "…" in con.export_text()
+
+
+def test_at_precision_shows_round_off_as_zero_and_keeps_small_results() -> None:
+    from poinsot.cli import at_precision
+
+    eps = np.finfo(float).eps
+    # the drifts of a shot on a planet that does not turn, over a 65 km range: round-off
+    assert at_precision(8.07793567e-28, 65261.8376) == "0"
+    assert at_precision(3.63797881e-12, 65261.8376) == "0"
+    assert at_precision(-3.6e-12, -65261.8376) == "0"
+    # the bound, 8 ε × scale, and just above it
+    assert at_precision(8 * eps * 1000.0, 1000.0) == "0"
+    assert at_precision(9 * eps * 1000.0, 1000.0) != "0"
+    # negative controls: real small values stay, in the format asked for
+    assert at_precision(1e-9, 1.0) == "1e-09"
+    assert at_precision(424.582113, 65496.2) == "424.582113"
+    assert at_precision(2.5e-7, 0.0, "+.3g") == "+2.5e-07"
+    assert at_precision(float("nan"), 1.0) == "nan"
+
+
+def test_projectile_prints_a_zero_drift_without_rotation() -> None:
+    args = ("projectile", "--speed", "800", "--elevation", "45", "--azimuth", "90")
+    code, out, _ = run(*args, "--latitude", "50", "--degrees", "--json")
+    data = json.loads(out)
+    still, spin = data["without_rotation"], data["with_rotation"]
+    # the computed drift without rotation is round-off, below ε × range (not exactly 0)
+    assert abs(still["drift"]) <= 8 * np.finfo(float).eps * still["range"]
+    code, out, _ = run(*args, "--latitude", "50", "--degrees")
+    assert code == 0
+    row = next(line for line in out.splitlines() if "drift" in line)
+    cells = [c.strip() for c in row.strip("│ ").split("│")]
+    assert cells[2] == "0" and float(cells[1]) == pytest.approx(spin["drift"], rel=1e-8)

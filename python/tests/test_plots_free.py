@@ -23,7 +23,7 @@ def test_omega_plot_overlays_the_exact_solution():
 
 def test_cones_polhodes_conservation_and_animation(tmp_path):
     fig = plots_free.plot_cones(ps.FreeSymmetricTop(2.0, 1.0, [0.8, 0.0, 1.0]), 0.5)
-    assert "prolate" in fig.axes[0].get_title()
+    assert "prolate" in fig.get_suptitle() and "outside" in fig.get_suptitle()
     fig = plots_free.plot_polhodes((1.0, 2.0, 3.0), n=5)
     assert len(fig.axes[0].get_lines()) >= 4
     runs = [
@@ -35,3 +35,30 @@ def test_cones_polhodes_conservation_and_animation(tmp_path):
     anim = plots_free.animate_tumbling_box(frames=5, path=tmp_path / "box.gif")
     assert (tmp_path / "box.gif").stat().st_size > 0
     assert anim is not None
+
+
+@pytest.mark.parametrize(
+    ("I1", "I3", "omega0", "t"),
+    [
+        (1.0, 0.5, [0.1, 0.0, 2.0], 0.0),
+        (1.0, 1.8, [0.8, 0.0, 1.0], 0.5),
+        (2.0, 1.0, [0.8, 0, 1], 3.0),
+    ],
+)
+def test_cones_seen_along_L_put_omega_and_e3_at_their_angles_from_L(I1, I3, omega0, t):
+    # The README's top has cones of 2.9°: the panel seen along L draws every direction at its
+    # angle from L, so ω sits at α_s (2.97) and e₃ at the nutation angle from the centre.
+    top = ps.FreeSymmetricTop(I1, I3, omega0)
+    fig = plots_free.plot_cones(top, t)
+    along = fig.axes[1]
+    points = {line.get_label(): np.ravel(line.get_xydata())[:2] for line in along.get_lines()}
+    w = points["ω: the line of contact"]
+    e3 = points["e₃"]
+    np.testing.assert_allclose(np.hypot(*w), np.degrees(top.space_cone_angle), rtol=1e-9)
+    e3_angle = min(top.nutation_angle, np.pi - top.nutation_angle)
+    np.testing.assert_allclose(np.hypot(*e3), np.degrees(e3_angle), rtol=1e-9)
+    # the space cone's rim is the circle of radius α_s about L (the origin)
+    rim = along.get_lines()[0].get_xydata()
+    np.testing.assert_allclose(np.hypot(rim[:, 0], rim[:, 1]), np.degrees(top.space_cone_angle))
+    # negative control: a wrong angle is told apart at these sizes (2.85° vs 2.86°)
+    assert abs(np.hypot(*w) - np.degrees(top.body_cone_angle)) > 1e-3 or I3 != 0.5

@@ -23,7 +23,14 @@ from .earth import (
     plot_inertial_circles,
     plot_trajectory,
 )
-from .free import animate_tumbling_box, plot_cones, plot_conservation, plot_omega, plot_polhodes
+from .free import (
+    animate_free_body,
+    animate_tumbling_box,
+    plot_cones,
+    plot_conservation,
+    plot_omega,
+    plot_polhodes,
+)
 from .inertia import plot_inertia_ellipsoid
 from .top import (
     animate_top,
@@ -41,6 +48,7 @@ __all__ = [
     "plot_polhodes",
     "plot_conservation",
     "animate_tumbling_box",
+    "animate_free_body",
     "plot_effective_potential",
     "plot_axis_locus",
     "plot_angles",
