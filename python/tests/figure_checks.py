@@ -17,12 +17,35 @@ OVERLAP_TOLERANCE_PX = 0.5
 _UNIT = re.compile(r"\(([^()]*)\)\s*$|\[[^\[\]]+\]\s*$")
 
 
-def _visible_texts(fig: Any) -> list[Any]:
+def _draw(fig: Any) -> dict[int, Any]:
+    """Draws ``fig`` and returns the window extent (pixels) of each text matplotlib drew, by
+    the text's id, measured as it is drawn: an axis also keeps labelled ticks beyond its ends
+    that it does not draw (no part of the picture), and a 3-D text is at its projected place
+    only while it is drawn."""
+    from matplotlib.text import Text
+
+    drawn: dict[int, Any] = {}
+    original = Text.draw
+
+    def draw(self: Any, renderer: Any) -> Any:
+        if self.get_visible() and self.get_text().strip():
+            drawn[id(self)] = self.get_window_extent(renderer)
+        return original(self, renderer)
+
+    Text.draw = draw  # type: ignore[method-assign]
+    try:
+        fig.canvas.draw()
+    finally:
+        Text.draw = original  # type: ignore[method-assign]
+    return drawn
+
+
+def _visible_texts(fig: Any, drawn: dict[int, Any]) -> list[Any]:
     from matplotlib.text import Text
 
     out = []
     for t in fig.findobj(Text):
-        if not t.get_visible() or not t.get_text().strip():
+        if not t.get_visible() or not t.get_text().strip() or id(t) not in drawn:
             continue
         if t.axes is not None and not t.axes.get_visible():
             continue
@@ -39,15 +62,15 @@ def _overlap(a: Any, b: Any) -> bool:
 def layout_problems(fig: Any) -> list[str]:
     """Draws ``fig`` and lists every text outside the figure and every pair of overlapping
     tick labels on one axis (as sentences naming the text)."""
-    fig.canvas.draw()
+    drawn = _draw(fig)
     renderer = fig.canvas.get_renderer()
     box = fig.bbox
     problems = []
-    for t in _visible_texts(fig):
+    for t in _visible_texts(fig, drawn):
         if t.get_clip_on() and t.axes is not None and t.get_clip_box() is not None:
             # Clipped to its axes (annotations inside a plot): only the axes must fit.
             continue
-        e = t.get_window_extent(renderer)
+        e = drawn[id(t)]
         if (
             e.x0 < box.x0 - EDGE_TOLERANCE_PX
             or e.y0 < box.y0 - EDGE_TOLERANCE_PX
@@ -67,9 +90,9 @@ def layout_problems(fig: Any) -> list[str]:
             labels = [
                 lab
                 for lab in axis.get_ticklabels()
-                if lab.get_visible() and lab.get_text().strip()
+                if lab.get_visible() and lab.get_text().strip() and id(lab) in drawn
             ]
-            extents = [lab.get_window_extent(renderer) for lab in labels]
+            extents = [drawn[id(lab)] for lab in labels]
             for i in range(len(labels)):
                 for j in range(i + 1, len(labels)):
                     if _overlap(extents[i], extents[j]):
@@ -85,7 +108,9 @@ def axes_without_units(fig: Any) -> list[str]:
     a unit in parentheses or brackets: ``"t (s)"``, ``"θ (rad)"``, ``"x / L (1)"``."""
     out = []
     for ax in fig.axes:
-        if not ax.get_visible() or not ax.axison:
+        # a 3-D axes keeps ``axison`` False and says whether it shows its axes in _axis3don
+        shown = ax._axis3don if hasattr(ax, "zaxis") else ax.axison
+        if not ax.get_visible() or not shown:
             continue
         axes = [ax.xaxis, ax.yaxis] + ([ax.zaxis] if hasattr(ax, "zaxis") else [])
         for axis in axes:
