@@ -53,6 +53,29 @@ def _visible_texts(fig: Any, drawn: dict[int, Any]) -> list[Any]:
     return out
 
 
+def _name(ax: Any) -> str:
+    """The first line of an axes' title, to name it in a message."""
+    lines = ax.get_title().splitlines()
+    return lines[0] if lines else ""
+
+
+def _owners(fig: Any) -> dict[int, Any]:
+    """The axes each text of an axes belongs to, by the text's id: its title, axis labels,
+    tick labels, legend and texts (the other texts belong to the figure)."""
+    from matplotlib.text import Text
+
+    out: dict[int, Any] = {}
+    for ax in fig.axes:
+        for t in ax.findobj(Text):
+            out[id(t)] = ax
+    return out
+
+
+def _says(ax: Any) -> str:
+    """What a text belongs to, for a message: an axes (by title) or the figure."""
+    return f"axes {_name(ax)!r}" if ax is not None else "the figure"
+
+
 def _overlap(a: Any, b: Any) -> bool:
     w = min(a.x1, b.x1) - max(a.x0, b.x0)
     h = min(a.y1, b.y1) - max(a.y0, b.y0)
@@ -60,16 +83,19 @@ def _overlap(a: Any, b: Any) -> bool:
 
 
 def layout_problems(fig: Any) -> list[str]:
-    """Draws ``fig`` and lists every text outside the figure and every pair of overlapping
-    tick labels on one axis (as sentences naming the text)."""
+    """Draws ``fig`` and lists every text outside the figure, every two texts of different
+    axes (or of an axes and the figure) that overlap — a label running into the next panel
+    —, every pair of overlapping tick labels on one axis and every axis label overlapping its
+    axis' tick labels (as sentences naming the text)."""
     drawn = _draw(fig)
-    renderer = fig.canvas.get_renderer()
     box = fig.bbox
     problems = []
+    free = []  # the texts not clipped to an axes
     for t in _visible_texts(fig, drawn):
         if t.get_clip_on() and t.axes is not None and t.get_clip_box() is not None:
             # Clipped to its axes (annotations inside a plot): only the axes must fit.
             continue
+        free.append(t)
         e = drawn[id(t)]
         if (
             e.x0 < box.x0 - EDGE_TOLERANCE_PX
@@ -82,6 +108,15 @@ def layout_problems(fig: Any) -> list[str]:
                 f"({e.x0:.0f}..{e.x1:.0f} × {e.y0:.0f}..{e.y1:.0f} px in "
                 f"{box.x1:.0f} × {box.y1:.0f})"
             )
+    owner = _owners(fig)
+    for i, a in enumerate(free):
+        for b in free[i + 1 :]:
+            oa, ob = owner.get(id(a)), owner.get(id(b))
+            if oa is not ob and _overlap(drawn[id(a)], drawn[id(b)]):
+                problems.append(
+                    f"texts {a.get_text()!r} ({_says(oa)}) and {b.get_text()!r} ({_says(ob)}) "
+                    "overlap"
+                )
     for ax in fig.axes:
         if not ax.get_visible():
             continue
@@ -93,12 +128,20 @@ def layout_problems(fig: Any) -> list[str]:
                 if lab.get_visible() and lab.get_text().strip() and id(lab) in drawn
             ]
             extents = [drawn[id(lab)] for lab in labels]
+            title = axis.label
+            if id(title) in drawn:
+                for lab, ext in zip(labels, extents):
+                    if _overlap(drawn[id(title)], ext):
+                        problems.append(
+                            f"axis label {title.get_text()!r} overlaps tick label "
+                            f"{lab.get_text()!r} on the {axis.axis_name}-axis of {_name(ax)!r}"
+                        )
             for i in range(len(labels)):
                 for j in range(i + 1, len(labels)):
                     if _overlap(extents[i], extents[j]):
                         problems.append(
                             f"tick labels {labels[i].get_text()!r} and {labels[j].get_text()!r} "
-                            f"overlap on the {axis.axis_name}-axis of {ax.get_title()!r}"
+                            f"overlap on the {axis.axis_name}-axis of {_name(ax)!r}"
                         )
     return problems
 
@@ -118,5 +161,5 @@ def axes_without_units(fig: Any) -> list[str]:
                 continue
             label = axis.get_label_text()
             if not _UNIT.search(label):
-                out.append(f"{axis.axis_name}-axis of {ax.get_title()!r}: label {label!r}")
+                out.append(f"{axis.axis_name}-axis of {_name(ax)!r}: label {label!r}")
     return out
