@@ -80,6 +80,10 @@ _VELOCITY = "C1"  # velocities
 _MOMENTUM = "C4"  # angular momentum
 _TORQUE = "C5"
 
+#: A quantity computed from numbers of size S is zero at the computation's precision when it is
+#: below this many times S (a few ε).
+_ROUND_OFF = 8 * float(np.finfo(float).eps)
+
 _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 
@@ -92,7 +96,7 @@ def _num(x: float, digits: int = 3, *, scale: float = 0.0) -> str:
     ``scale`` (a few ε × scale), so that a component that is zero at the computation's
     precision reads 0."""
     x = float(x)
-    if x == 0.0 or abs(x) <= 8 * np.finfo(float).eps * abs(scale):
+    if x == 0.0 or abs(x) <= _ROUND_OFF * abs(scale):
         return "0"
     a = abs(x)
     if 1e-2 <= a < 1e4:
@@ -1243,7 +1247,13 @@ def plot_dumbbell(
     origin = np.zeros(3)
     L = body.angular_momentum(w, about=origin)
     N = body.holding_torque(w, about=origin)
+    # |L| and |N| at the computation's precision: zero below the round-off of numbers of the
+    # size of Σ m r² ω (and of that times ω).
+    size = wn * float(np.sum(m * np.sum(pos**2, axis=1)))
     Ln, Nn = float(np.linalg.norm(L)), float(np.linalg.norm(N))
+    Ln = 0.0 if Ln <= _ROUND_OFF * size else Ln
+    Nn = 0.0 if Nn <= _ROUND_OFF * size * wn else Nn
+    angle = float(body.momentum_angle(w, about=origin)) if Ln > 0 else 0.0
     turns = np.linspace(0.0, 2 * np.pi, 61)
     cone = np.array(
         [
@@ -1313,7 +1323,7 @@ def plot_dumbbell(
             [
                 f"m₁ = {_num(m[0])} kg, m₂ = {_num(m[1])} kg, ω = {_num(wn)} rad/s",
                 f"L = {_vec(L)} kg·m²/s (2.58)",
-                f"L ⊥ rod; angle of L from ω: {_deg(float(body.momentum_angle(w, about=origin)), 4)}",
+                f"L ⊥ rod; angle of L from ω: {_deg(angle, 4)}" if Ln > 0 else "L = 0",
                 f"N = ω × L = {_vec(N)} N·m (2.59)",
             ],
             "info",
@@ -1757,7 +1767,9 @@ class UnitFigure:
     arguments:
         Builds the keyword arguments of the classroom example (models are made when drawn).
     lab:
-        The browser lab's scene that shows the same thing (its ``?scene=`` id), or ``None``.
+        The browser lab's scene that shows the same thing, as the query of its address
+        (``"scene=low&latitude=45"``: ``poinsot lab``, then ``?scene=low&latitude=45``), or
+        ``None``.
     """
 
     number: str
@@ -1794,13 +1806,13 @@ def _registry() -> dict[str, UnitFigure]:
             "2.2",
             "fixed axes x′y′z′ and axes turning with ω about the common origin",
             plot_rotating_frame,
-            lab="frames",
+            lab="scene=frames",
         ),
         UnitFigure(
             "2.3",
             "the centripetal acceleration ω×(ω×r), ω² r sin θ towards the axis",
             plot_centripetal,
-            lab="frames",
+            lab="scene=frames",
         ),
         UnitFigure(
             "2.4",
@@ -1812,25 +1824,26 @@ def _registry() -> dict[str, UnitFigure]:
             "the Coriolis acceleration at 45° N: ω's vertical part turns horizontal motion to the right",
             plot_earth_coriolis,
             lambda: {"latitude": 45.0},
-            lab="drop",
+            lab="scene=low&latitude=45",
         ),
         UnitFigure(
             "2.6",
             "the Coriolis acceleration at the North Pole: the largest, 2ω v",
             plot_earth_coriolis,
             lambda: {"latitude": 90.0},
+            lab="scene=low&latitude=90",
         ),
         UnitFigure(
             "2.7",
             "the cyclone: air drawn into a low circles it counterclockwise in the north",
             plot_flow_into_low,
-            lab="low",
+            lab="scene=low&latitude=45",
         ),
         UnitFigure(
             "2.8",
             "Euler's theorem: A→A′, B→B′ is one rotation about OC",
             plot_euler_theorem,
-            lab="inertia",
+            lab="scene=inertia",
         ),
         UnitFigure(
             "2.9", "the dumbbell: L ⊥ rod, not along ω; the torque ω×L keeps ω fixed", plot_dumbbell
@@ -1839,14 +1852,14 @@ def _registry() -> dict[str, UnitFigure]:
             "2.10",
             "the body cone: ω precesses about e₃ at Ω, half-angle α_b",
             plot_body_cone,
-            lab="freetop",
+            lab="scene=freetop&I1=1&I3=0.5&w1=0.8&w3=2",
         ),
         UnitFigure(
             "2.11",
             "the body cone rolling on the space cone about the fixed L",
             plot_cones,
             _free_top_arguments,
-            lab="freetop",
+            lab="scene=freetop&I1=1&I3=0.5&w1=0.8&w3=2",
         ),
         *(
             UnitFigure(
@@ -1854,7 +1867,7 @@ def _registry() -> dict[str, UnitFigure]:
                 caption,
                 plot_euler_angle_steps,
                 _step_arguments(s),
-                lab="euler",
+                lab="scene=euler&phi=40&theta=55&psi=30",
             )
             for s, caption in zip(
                 _STEPS,
@@ -1870,21 +1883,21 @@ def _registry() -> dict[str, UnitFigure]:
             "2.13",
             "ω = φ̇ Z + θ̇ ξ + ψ̇ ζ resolved along ξηζ (2.98) and 1 2 3 (2.99)",
             plot_omega_components,
-            lab="euler",
+            lab="scene=euler&phi=40&theta=55&psi=30&phiDot=40&thetaDot=30&psiDot=60",
         ),
         UnitFigure(
             "2.14",
             "the heavy symmetric top: θ, φ, l, m g, the axis between θ₁ and θ₂",
             plot_heavy_top,
             _heavy_top_arguments,
-            lab="heavytop",
+            lab="scene=heavytop",
         ),
         UnitFigure(
             "2.15",
             "the effective potential V(θ) with E′ and the turning points θ₁, θ₂",
             plot_effective_potential,
             _heavy_top_arguments,
-            lab="heavytop",
+            lab="scene=heavytop",
         ),
     ]
     return {e.number: e for e in entries}
