@@ -429,12 +429,12 @@ def plot_translating_frame(
                 ax1.text(o[0], o[1] + 1.12 * unit, "y", color=_MOVING, ha="center", va="bottom")
             else:
                 ax1.text(
-                    o[0],
-                    o[1] + 1.1 * unit,
+                    o[0] + 0.08 * unit,
+                    o[1] - 0.1 * unit,
                     f"O at t = {t:g} s",
                     color=_MOVING,
-                    ha="center",
-                    va="bottom",
+                    ha="left",
+                    va="top",
                 )
         ax1.plot([0, unit], [0, 0], color=_FIXED, lw=0.8 * lw)
         ax1.plot([0, 0], [0, unit], color=_FIXED, lw=0.8 * lw)
@@ -455,8 +455,8 @@ def plot_translating_frame(
             va="bottom",
         )
         lo, hi = pts[:, :2].min(axis=0), pts[:, :2].max(axis=0)
-        ax1.set_xlim(lo[0] - 0.6 * unit, hi[0] + 1.6 * unit)
-        ax1.set_ylim(lo[1] - 0.8 * unit, hi[1] + 4.5 * unit)
+        ax1.set_xlim(lo[0] - 0.6 * unit, hi[0] + 2.8 * unit)
+        ax1.set_ylim(lo[1] - 0.8 * unit, hi[1] + 4.0 * unit)
         ax1.set_aspect("equal", adjustable="box")
         ax1.set_xlabel("x′ (m)")
         ax1.set_ylabel("y′ (m)")
@@ -1372,7 +1372,7 @@ def plot_body_cone(
         if len(pts) > 10:
             _arrow3d(ax, pts[len(pts) // 4], pts[len(pts) // 4 + 3], _OMEGA, "precession-sense")
         _arrow3d(ax, np.zeros(3), pts[0], _OMEGA, "omega")
-        _label3d(ax, 1.1 * pts[0], "ω", "omega-label", color=_OMEGA)
+        _label3d(ax, 1.2 * pts[0], "ω", "omega-label", color=_OMEGA, ha="left")
         foot = pts[0, 2] * np.array([0.0, 0.0, 1.0])
         ax.plot(*np.stack([foot, pts[0]]).T, color=_ACCEL, lw=0.8 * lw, gid="A")
         _label3d(ax, 0.5 * (foot + pts[0]), "A", "A-label", color=_ACCEL, va="bottom")
@@ -1435,7 +1435,7 @@ def _step_panel(ax: Any, step: str, phi: float, theta: float, psi: float) -> Non
     X, Z = np.array([1.0, 0.0, 0.0]), np.array([0.0, 0.0, 1.0])
     xi, zeta = after_theta[:, 0], after_theta[:, 2]
     lw = _style_lw()
-    fixed_names = ("X", "Y", "Z") if step in ("c", "d") else ("X", "Y", "")
+    fixed_names = ("X", "Y", "") if step == "a" else ("X", "Y", "Z")
     _triad(ax, np.eye(3), fixed_names, _FIXED, "fixed", lw=0.6 * lw)
     if step == "a":
         _triad(ax, after_phi, ("ξ", "η′", "Z"), _MOVING, "step")
