@@ -37,9 +37,6 @@ from .top import (
 )
 from .unit import (
     UNIT_FIGURES,
-    UnitFigure,
-    classroom_free_top,
-    classroom_heavy_top,
     plot_body_cone,
     plot_centripetal,
     plot_dumbbell,
@@ -85,9 +82,6 @@ __all__ = [
     "plot_euler_angle_steps",
     "plot_omega_components",
     "plot_heavy_top",
-    "classroom_free_top",
-    "classroom_heavy_top",
-    "UnitFigure",
     "UNIT_FIGURES",
     "unit_figure",
 ]
