@@ -8,7 +8,8 @@
 * :mod:`poinsot.plots.earth` — the rotating Earth: deflection, trajectories, the Foucault
   rosette, inertial circles, the pendulum's animation;
 * :mod:`poinsot.plots.unit` — the unit's own Figs. 2.1–2.15 from poinsot's numbers, by number:
-  :func:`unit_figure` and :data:`UNIT_FIGURES` (docs/figures.md lists them).
+  :func:`unit_figure` and the registry :data:`UNIT_FIGURES` (importable from here, not in
+  ``__all__``, which lists the drawing functions; docs/figures.md lists them).
 
 Every function returns a :class:`matplotlib.figure.Figure` (or an animation) and never calls
 ``plt.show()``: save it with ``fig.savefig(...)`` or show it yourself. The physics comes from the
@@ -36,7 +37,7 @@ from .top import (
     save_top_plots,
 )
 from .unit import (
-    UNIT_FIGURES,
+    UNIT_FIGURES,  # noqa: F401 - the registry, importable from here; __all__ lists the functions
     plot_body_cone,
     plot_centripetal,
     plot_dumbbell,
@@ -82,6 +83,5 @@ __all__ = [
     "plot_euler_angle_steps",
     "plot_omega_components",
     "plot_heavy_top",
-    "UNIT_FIGURES",
     "unit_figure",
 ]
