@@ -1557,3 +1557,90 @@ def lab(port: int, no_browser: bool, verbose: bool) -> None:
         click.echo("poinsot lab: stopped")
     finally:
         server.server_close()
+
+
+# -- poinsot figure: the unit's own figures (docs/figures.md) ------------------------------------
+@main.command()
+@click.argument("number", required=False)
+@click.option(
+    "--style",
+    type=click.Choice(["paper", "slides"]),
+    default="paper",
+    show_default=True,
+    help="paper: for a page (10 pt, 150 dpi); slides: for a projector (16 pt, thick lines, 200 dpi).",
+)
+@click.option(
+    "--out",
+    "out_path",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="The picture to write (.png, .pdf, .svg, ...); default fig-NUMBER.png "
+    "(fig-NUMBER-slides.png with --style slides) in the current folder.",
+)
+@click.option(
+    "--list", "list_all", is_flag=True, help="List the unit's figures and what draws them."
+)
+def figure(number: str | None, style: str, out_path: str | None, list_all: bool) -> None:
+    """The unit's figure NUMBER drawn from poinsot's numbers, saved as a picture.
+
+    NUMBER is one of the unit's figures, 2.1 to 2.15 (2.12a to 2.12d for the four steps of
+    Euler's angles): each is drawn with a classroom example's numbers, every value computed by
+    poinsot (docs/figures.md lists them, with the Python call that draws each).
+
+    \b
+    Examples:
+      poinsot figure --list
+      poinsot figure 2.5                                  # writes fig-2.5.png
+      poinsot figure 2.12b --style slides --out euler-b.png
+    """
+    from .plots.unit import UNIT_FIGURES, unit_figure
+
+    if list_all:
+        if number is not None:
+            raise click.UsageError("--list lists every figure: give it without NUMBER")
+        for n, entry in UNIT_FIGURES.items():
+            click.echo(f"{n:<6} {entry.caption}  [{entry.function.__name__}]")
+        return
+    if number is None:
+        raise click.UsageError(
+            "NUMBER: missing; give one of the unit's figures (poinsot figure --list shows them)"
+        )
+    if number not in UNIT_FIGURES:
+        raise click.UsageError(
+            f"NUMBER: the unit has no figure '{number}'; give one of {', '.join(UNIT_FIGURES)}"
+        )
+    path = Path(
+        out_path or (f"fig-{number}.png" if style == "paper" else f"fig-{number}-{style}.png")
+    )
+    _check_figure_out(path)
+    fig = unit_figure(number, style=style)
+    try:
+        fig.savefig(path)
+    except OSError as exc:
+        raise Refused(f"--out: cannot write {path}: {exc.strerror or exc}") from exc
+    finally:
+        from .plots._mpl import pyplot
+
+        pyplot().close(fig)
+    click.echo(f"Fig. {number}, {UNIT_FIGURES[number].caption}: saved to {path}")
+
+
+def _check_figure_out(path: Path) -> None:
+    """``poinsot figure --out``: a file in an existing folder, of a kind matplotlib writes."""
+    if not path.parent.is_dir():
+        raise click.UsageError(f"--out: no folder '{path.parent}' to save {path.name} into")
+    if path.is_dir():
+        raise click.UsageError(f"--out: '{path}' is a folder; give a file name")
+    suffix = path.suffix.lower().lstrip(".")
+    try:
+        from matplotlib.backend_bases import FigureCanvasBase
+    except ImportError as exc:
+        raise Refused(
+            "poinsot figure needs matplotlib, which is not installed: pip install 'poinsot[plot]'"
+        ) from exc
+    kinds = FigureCanvasBase.get_supported_filetypes()
+    if suffix not in kinds:
+        raise click.UsageError(
+            f"--out: matplotlib cannot write {'.' + suffix if suffix else 'a file without a suffix'}"
+            f"; use one of {', '.join('.' + k for k in sorted(kinds))}"
+        )

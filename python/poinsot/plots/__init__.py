@@ -6,7 +6,10 @@
 * :mod:`poinsot.plots.top` — the heavy top: V(θ), the locus of the axis, the angles, steady
   precession, the animation;
 * :mod:`poinsot.plots.earth` — the rotating Earth: deflection, trajectories, the Foucault
-  rosette, inertial circles, the pendulum's animation.
+  rosette, inertial circles, the pendulum's animation;
+* :mod:`poinsot.plots.unit` — the unit's own Figs. 2.1–2.15 from poinsot's numbers, by number:
+  :func:`unit_figure` and the registry :data:`UNIT_FIGURES` (importable from here, not in
+  ``__all__``, which lists the drawing functions; docs/figures.md lists them).
 
 Every function returns a :class:`matplotlib.figure.Figure` (or an animation) and never calls
 ``plt.show()``: save it with ``fig.savefig(...)`` or show it yourself. The physics comes from the
@@ -40,6 +43,22 @@ from .top import (
     plot_steady_precession,
     save_top_plots,
 )
+from .unit import (
+    UNIT_FIGURES,  # noqa: F401 - the registry, importable from here; __all__ lists the functions
+    plot_body_cone,
+    plot_centripetal,
+    plot_dumbbell,
+    plot_earth_centrifugal,
+    plot_earth_coriolis,
+    plot_euler_angle_steps,
+    plot_euler_theorem,
+    plot_flow_into_low,
+    plot_heavy_top,
+    plot_omega_components,
+    plot_rotating_frame,
+    plot_translating_frame,
+    unit_figure,
+)
 
 __all__ = [
     "plot_inertia_ellipsoid",
@@ -60,4 +79,17 @@ __all__ = [
     "plot_foucault_rosette",
     "plot_inertial_circles",
     "animate_foucault",
+    "plot_translating_frame",
+    "plot_rotating_frame",
+    "plot_centripetal",
+    "plot_earth_centrifugal",
+    "plot_earth_coriolis",
+    "plot_flow_into_low",
+    "plot_euler_theorem",
+    "plot_dumbbell",
+    "plot_body_cone",
+    "plot_euler_angle_steps",
+    "plot_omega_components",
+    "plot_heavy_top",
+    "unit_figure",
 ]
