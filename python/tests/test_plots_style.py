@@ -84,6 +84,20 @@ BUILD: dict[str, Callable[..., Any]] = {
     "animate_foucault": lambda style: plots.animate_foucault(
         _foucault(), frames=FRAMES, style=style
     ),
+    # the unit's own figures (plots/unit.py, docs/figures.md), with their classroom defaults
+    "plot_translating_frame": lambda style: plots.plot_translating_frame(style=style),
+    "plot_rotating_frame": lambda style: plots.plot_rotating_frame(style=style),
+    "plot_centripetal": lambda style: plots.plot_centripetal(velocity=[0.0, 0.3, 0.2], style=style),
+    "plot_earth_centrifugal": lambda style: plots.plot_earth_centrifugal(style=style),
+    "plot_earth_coriolis": lambda style: plots.plot_earth_coriolis(style=style),
+    "plot_flow_into_low": lambda style: plots.plot_flow_into_low(style=style),
+    "plot_euler_theorem": lambda style: plots.plot_euler_theorem(style=style),
+    "plot_dumbbell": lambda style: plots.plot_dumbbell(style=style),
+    "plot_body_cone": lambda style: plots.plot_body_cone(style=style),
+    "plot_euler_angle_steps": lambda style: plots.plot_euler_angle_steps(style=style),
+    "plot_omega_components": lambda style: plots.plot_omega_components(style=style),
+    "plot_heavy_top": lambda style: plots.plot_heavy_top(style=style),
+    "unit_figure": lambda style: plots.unit_figure("2.5", style=style),
 }
 
 #: More figures of the same functions, where one function draws different pictures.

@@ -10,7 +10,6 @@ ways, and each of its calls must draw.
 
 from __future__ import annotations
 
-import inspect
 import os
 import re
 import sys
@@ -184,14 +183,7 @@ def test_the_reference_lines_are_the_units() -> None:
 # ---------------------------------------------------------------------------------------------
 @pytest.mark.parametrize("style", ["paper", "slides"])
 @pytest.mark.parametrize("number", list(UNIT_FIGURES))
-def test_every_figure_fits_and_has_units(number: str, style: str, request: Any) -> None:
-    entry = UNIT_FIGURES[number]
-    if "style" not in inspect.signature(entry.function).parameters:
-        # plot_cones / plot_effective_potential get their style on branch i12-figs; until
-        # then they are drawn inside figure_style and may miss a unit.
-        request.applymarker(
-            pytest.mark.xfail(reason=f"{entry.function.__name__} has no style yet", strict=False)
-        )
+def test_every_figure_fits_and_has_units(number: str, style: str) -> None:
     fig = unit_figure(number, style=style)
     assert layout_problems(fig) == []
     assert axes_without_units(fig) == []

@@ -22,7 +22,6 @@ returns a :class:`matplotlib.figure.Figure` and never calls ``plt.show()``.
 
 from __future__ import annotations
 
-import inspect
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -1784,12 +1783,8 @@ class UnitFigure:
 
 
 def _draw(function: Callable[..., Any], kwargs: dict[str, Any], style: str) -> Any:
-    """``function(**kwargs, style=style)``; a function without a ``style`` argument is drawn
-    inside :func:`figure_style` instead."""
-    if "style" in inspect.signature(function).parameters:
-        return function(**kwargs, style=style)
-    with figure_style(style):
-        return function(**kwargs)
+    """``function(**kwargs, style=style)`` (every plot function takes ``style``)."""
+    return function(**kwargs, style=style)
 
 
 def _registry() -> dict[str, UnitFigure]:
