@@ -90,6 +90,18 @@ test("math is typeset by the site's own MathJax, no raw TeX is left", async () =
   await page.close();
 });
 
+test("a page that cites the unit's equations shows them: eq. 2.42 on the Earth page", async () => {
+  const { page, problems } = await open("earth.html");
+  await page.waitForSelector("#the-unit-s-equations-on-this-page mjx-container", { timeout: 20000 });
+  const items = await page.$$eval("#the-unit-s-equations-on-this-page li", (xs) => xs.map((x) => x.innerText.split("\n")[0]));
+  assert.ok(items.some((t) => t.startsWith("(2.42)")), `items: ${items.join(" / ")}`);
+  // every item is typeset, none is raw TeX
+  const raw = await page.$$eval("#the-unit-s-equations-on-this-page li", (xs) => xs.filter((x) => !x.querySelector("mjx-container")).length);
+  assert.equal(raw, 0);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
 test("the gallery shows every example with the figures drawn at build time", async () => {
   const { page, problems } = await open("gallery/index.html");
   const thumbs = await page.$$eval(".sphx-glr-thumbcontainer", (xs) => xs.length);
