@@ -283,3 +283,36 @@ def test_the_figures_page_runs() -> None:
 
     with Image.open(namespace["folder"] / "cones.png") as png:
         assert png.size == (3520, 1760) and png.info["dpi"][0] == pytest.approx(200, abs=0.5)
+
+
+ANIMATIONS = [name for name in plots.__all__ if name.startswith("animate_")]
+
+
+@pytest.mark.parametrize("name", ANIMATIONS)
+def test_animations_play_inline_in_a_notebook(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Jupyter shows an object through ``_repr_html_``: every animation gives JavaScript frames
+    without ffmpeg (one per frame drawn), and an HTML5 video where ffmpeg is installed."""
+    import shutil
+
+    anim = BUILD[name]("paper")
+    monkeypatch.setattr(shutil, "which", lambda _name: None)
+    html = anim._repr_html_()
+    assert "<script" in html and html.count("data:image/png;base64") >= FRAMES, name
+    monkeypatch.undo()
+    if shutil.which("ffmpeg"):
+        assert "<video" in anim._repr_html_()
+
+
+def test_a_plain_matplotlib_animation_does_not_play_inline() -> None:
+    """Negative control: matplotlib's own FuncAnimation shows nothing by default, which is why
+    poinsot's animations carry their own ``_repr_html_``."""
+    import matplotlib as mpl
+    import matplotlib.pyplot as plt
+    from matplotlib import animation
+
+    fig = plt.figure()
+    (line,) = fig.gca().plot([0, 1], [0, 1])
+    anim = animation.FuncAnimation(fig, lambda i: (line,), frames=2, blit=True)
+    assert mpl.rcParams["animation.html"] == "none"
+    assert anim._repr_html_() is None
+    plt.close(fig)

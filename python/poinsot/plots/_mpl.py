@@ -8,8 +8,10 @@ layout, so titles and labels are kept inside the figure.
 
 from __future__ import annotations
 
+import shutil
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from functools import cache
 from pathlib import Path
 from typing import Any
 
@@ -64,6 +66,28 @@ def pyplot() -> Any:
     except ImportError as exc:  # pragma: no cover - depends on the environment
         raise ImportError("poinsot's plots need matplotlib: pip install 'poinsot[plot]'") from exc
     return plt
+
+
+def func_animation(fig: Any, update: Any, **kwargs: Any) -> Any:
+    """``matplotlib.animation.FuncAnimation(fig, update, **kwargs)`` that also plays inline in
+    Jupyter: its ``_repr_html_`` is an HTML5 video where ffmpeg is installed, else JavaScript
+    frames (``to_jshtml``, no external tool); matplotlib's own returns nothing by default."""
+    return _inline_animation_class()(fig, update, **kwargs)
+
+
+@cache
+def _inline_animation_class() -> Any:
+    from matplotlib.animation import FuncAnimation
+
+    class InlineAnimation(FuncAnimation):  # type: ignore[misc]
+        """A FuncAnimation that displays itself in a notebook (see :func:`func_animation`)."""
+
+        def _repr_html_(self) -> str:
+            if shutil.which("ffmpeg"):
+                return str(self.to_html5_video())
+            return str(self.to_jshtml())
+
+    return InlineAnimation
 
 
 def check_style(style: Any) -> str:

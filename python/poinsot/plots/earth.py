@@ -14,7 +14,7 @@ import numpy as np
 
 from ..earth import Earth, Fall, Flight, FoucaultRun
 from ._axes import few_ticks, label_3d
-from ._mpl import figure_style, new_figure, save_animation, subplots
+from ._mpl import figure_style, func_animation, new_figure, save_animation, subplots
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -319,7 +319,6 @@ def animate_foucault(
     ``run`` should be sampled densely enough (``samples``) to show the swing: ``frames`` frames
     are taken evenly from its samples.
     """
-    from matplotlib import animation
 
     with figure_style(style) as style:
         p = run.position
@@ -354,7 +353,7 @@ def animate_foucault(
             return plane, tr, bob, text
 
         update(0)
-        anim = animation.FuncAnimation(fig, update, frames=len(idx), interval=1000 / fps, blit=True)
+        anim = func_animation(fig, update, frames=len(idx), interval=1000 / fps, blit=True)
     if path is not None:
         save_animation(anim, path, fps, progress=progress)
     return anim

@@ -17,7 +17,7 @@ from ..dynamics import Trajectory
 from ..free import FreeRigidBody, FreeSymmetricTop
 from ..rotation import quaternion_to_matrix, rotate_vectors
 from ._axes import cube_limits, few_ticks, label_3d
-from ._mpl import figure_style, new_figure, save_animation, subplots
+from ._mpl import figure_style, func_animation, new_figure, save_animation, subplots
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -395,7 +395,6 @@ def animate_tumbling_box(
     ``progress(frame, frames)`` after each frame written; returns the FuncAnimation (its
     figure is ``anim._fig``). ``style``: ``"paper"`` or ``"slides"``.
     """
-    from matplotlib import animation
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
     with figure_style(style) as style:
@@ -432,7 +431,7 @@ def animate_tumbling_box(
             return poly, text
 
         update(0)
-        anim = animation.FuncAnimation(fig, update, frames=frames, interval=1000 / fps, blit=True)
+        anim = func_animation(fig, update, frames=frames, interval=1000 / fps, blit=True)
     if path is not None:
         save_animation(anim, path, fps, progress=progress)
     return anim
@@ -462,7 +461,6 @@ def animate_free_body(
     :class:`matplotlib.animation.FuncAnimation` (its figure is ``anim._fig``). ``style``:
     ``"paper"`` or ``"slides"``.
     """
-    from matplotlib import animation
 
     with figure_style(style) as style:
         period = body.period
@@ -526,7 +524,7 @@ def animate_free_body(
             return (*axes_lines, *rings, omega_line, omega_trail, text)
 
         update(0)
-        anim = animation.FuncAnimation(fig, update, frames=frames, interval=1000 / fps, blit=True)
+        anim = func_animation(fig, update, frames=frames, interval=1000 / fps, blit=True)
     if path is not None:
         save_animation(anim, path, fps, progress=progress)
     return anim

@@ -14,7 +14,7 @@ import numpy as np
 
 from ..top import HeavyTop
 from ._axes import cube_limits, few_ticks, label_3d
-from ._mpl import check_style, figure_style, new_figure, save_animation, subplots
+from ._mpl import check_style, figure_style, func_animation, new_figure, save_animation, subplots
 from ._mpl import pyplot as _pyplot
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -237,7 +237,6 @@ def animate_top(
     ``progress(frame, frames)`` after each frame written; returns the
     :class:`matplotlib.animation.FuncAnimation` (its figure is ``anim._fig``). ``style``:
     ``"paper"`` (default) or ``"slides"``."""
-    from matplotlib import animation
 
     with figure_style(style) as style:
         t = np.linspace(0.0, _periods(top, periods), frames)
@@ -286,7 +285,7 @@ def animate_top(
             return stick, ring, mark, trail_line, text
 
         update(0)
-        anim = animation.FuncAnimation(fig, update, frames=len(t), interval=1000 / fps, blit=True)
+        anim = func_animation(fig, update, frames=len(t), interval=1000 / fps, blit=True)
     if path is not None:
         save_animation(anim, path, fps, progress=progress)
     return anim
