@@ -9,6 +9,8 @@ import http from "node:http";
 import { readFile, stat } from "node:fs/promises";
 import path from "node:path";
 import { fileURLToPath } from "node:url";
+import { execFileSync } from "node:child_process";
+import { existsSync } from "node:fs";
 import { chromium } from "playwright-core";
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -122,6 +124,23 @@ test("the API page of HeavyTop documents its parameters with units", async () =>
   for (const name of ["turning_points", "motion_class", "effective_potential"]) assert.ok(text.includes(name), `no ${name}`);
   assert.deepEqual(problems, []);
   await page.close();
+});
+
+test("every public name has its API page", () => {
+  const python = process.env.PYTHON ?? path.join(here, "..", "..", ".venv", "bin", "python");
+  const script = `
+import importlib, json
+out = []
+for mod in ("poinsot", "poinsot.plots", "poinsot.special"):
+    m = importlib.import_module(mod)
+    out += [f"{mod}.{n}" for n in m.__all__ if n != "__version__"]
+print(json.dumps(out))`;
+  const names = JSON.parse(execFileSync(python, ["-c", script], { encoding: "utf8" }));
+  assert.ok(names.length > 80, `${names.length} public names`);
+  const missing = names.filter((n) => !existsSync(path.join(site, "generated", `${n}.html`)));
+  assert.deepEqual(missing, []);
+  // negative control: a name that is not public has no page
+  assert.equal(existsSync(path.join(site, "generated", "poinsot._validate.html")), false);
 });
 
 test("the lab ships inside the site and draws its canvas", async () => {
