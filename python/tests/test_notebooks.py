@@ -44,6 +44,9 @@ CELL_TIMEOUT_S = 300
 # A display equation $$ … $$ of the markdown, and an equation number of the unit cited in it.
 DISPLAY_MATH = re.compile(r"\$\$(.+?)\$\$", re.S)
 UNIT_TAG = re.compile(r"\\tag\{2\.\d+")
+# The value of a cell's last line that only says a matplotlib object was made (a lesson ends such
+# a line with ";"): noise on a projected page.
+STRAY_REPR = re.compile(r"\[?<matplotlib\.|\[?Text\(|\[?<mpl_toolkits\.")
 
 # Injected before a notebook's first cell when the test runs it (never saved into the file): a
 # post_execute hook, registered before matplotlib's inline backend registers its own (which
@@ -66,8 +69,7 @@ def _poinsot_check_figures():
         titles = [ax.get_title() for ax in fig.axes if ax.get_title()]
         name = fig._suptitle.get_text() if fig._suptitle is not None else ""
         with open("figures.json", "a") as out:
-            out.write(_json.dumps({{"cell": get_ipython().execution_count,
-                                   "name": name or (titles[0] if titles else ""),
+            out.write(_json.dumps({{"name": name or (titles[0] if titles else ""),
                                    "problems": _layout(fig) + _units(fig)}}) + "\\n")
 get_ipython().events.register("post_execute", _poinsot_check_figures)
 """
@@ -122,32 +124,35 @@ def run_notebook(nb: Any, workdir: Path) -> tuple[Any, list[dict[str, Any]], flo
     return nb, figures, seconds
 
 
-def figure_outputs(nb: Any) -> int:
-    """The number of pictures (PNG) a notebook's outputs show."""
-    return sum(
-        1
-        for cell in nb.cells
+def figure_outputs(nb: Any) -> list[int]:
+    """The index of the cell of each picture (PNG) the notebook's outputs show, in order."""
+    return [
+        i
+        for i, cell in enumerate(nb.cells)
         if cell.cell_type == "code"
         for out in cell.outputs
         if "image/png" in out.get("data", {})
-    )
+    ]
 
 
 def output_problems(nb: Any, figures: list[dict[str, Any]]) -> list[str]:
     """What is wrong with an executed notebook's outputs: error outputs, no picture, pictures
     the figure hook did not measure, and every figure's layout and unit problems."""
     problems = []
-    for cell in nb.cells:
+    for i, cell in enumerate(nb.cells):
         for out in cell.get("outputs", []):
             if out.get("output_type") == "error":
-                problems.append(f"cell {cell.get('execution_count')}: {out.get('ename')}")
+                problems.append(f"cell {i}: {out.get('ename')}")
+            text = out.get("data", {}).get("text/plain", "")
+            if out.get("output_type") == "execute_result" and STRAY_REPR.match(text):
+                problems.append(f"cell {i} shows {text[:40]}")
     shown = figure_outputs(nb)
-    if shown == 0:
+    if not shown:
         problems.append("no figure is shown")
-    if len(figures) != shown:
-        problems.append(f"{shown} pictures shown but {len(figures)} figures measured")
-    for fig in figures:
-        problems += [f"cell {fig['cell']} ({fig['name']!r}): {p}" for p in fig["problems"]]
+    if len(figures) != len(shown):
+        problems.append(f"{len(shown)} pictures shown but {len(figures)} figures measured")
+    for i, fig in zip(shown, figures):
+        problems += [f"cell {i} ({fig['name']!r}): {p}" for p in fig["problems"]]
     return problems
 
 
@@ -187,6 +192,10 @@ def test_lesson_structure(path: Path) -> None:
     assert equations, "no display equation $$ … $$ in the markdown"
     assert any(UNIT_TAG.search(e) for e in equations), "no equation carries the unit's number"
     assert all("\\" in e for e in equations), "an equation without any LaTeX command"
+    # Sphinx wraps a display equation holding a line break \\ in a split environment, where
+    # MathJax refuses \tag: such an equation breaks its lines with \cr.
+    tagged_breaks = [e for e in equations if "\\tag" in e and "\\\\" in e]
+    assert tagged_breaks == [], "use \\cr, not \\\\, in an equation with a \\tag"
     code = [c for c in nb["cells"] if c["cell_type"] == "code"]
     assert any("assert" in "".join(c["source"]) for c in code), "no comparison is asserted"
     sections = re.split(r"^## ", text, flags=re.M)[1:]
@@ -264,7 +273,8 @@ def test_negative_control_a_broken_closed_form_fails_the_lesson(tmp_path: Path) 
 
 def test_negative_control_bad_figures_are_reported(tmp_path: Path) -> None:
     """A figure with an axis without its unit and a title running off the figure is reported
-    by the figure hook; a notebook that shows no figure is reported too."""
+    by the figure hook, and so is the stray value of the cell's last line (``Text(...)``); a
+    notebook that shows no figure is reported too."""
     nbformat = pytest.importorskip("nbformat", reason="nbformat is not installed")
     nb = nbformat.v4.new_notebook()
     nb.cells = [
@@ -279,6 +289,7 @@ def test_negative_control_bad_figures_are_reported(tmp_path: Path) -> None:
     problems = output_problems(nb, figures)
     assert any("label 'time'" in p for p in problems), problems
     assert any("leaves the figure" in p for p in problems), problems
+    assert any("shows Text(" in p for p in problems), problems  # set_title's value, shown
     clean = nbformat.v4.new_notebook()
     clean.cells = [nbformat.v4.new_code_cell("x = 1")]
     (tmp_path / "none").mkdir()
