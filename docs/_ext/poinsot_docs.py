@@ -2,7 +2,9 @@
 
 * ``config-inited``: MathJax is copied from docs/node_modules/mathjax (``npm ci`` in docs/) into
   the build, so the site serves it itself; the API page is written from ``poinsot.__all__``
-  and the public submodules, so a new public name gets its page without an edit here.
+  and the public submodules, so a new public name gets its page without an edit here; the
+  teaching notebooks (``notebooks/*.ipynb``, outside docs/ where Sphinx cannot read them) are
+  copied into docs/notebooks/ (git-ignored), where myst-nb executes them at build time.
 * ``build-finished``: the built browser lab (python/poinsot/lab, ``make lab-build``) is copied
   to ``lab/`` of the site, so the site alone is a complete offline companion.
 """
@@ -22,6 +24,8 @@ MATHJAX = DOCS / "node_modules" / "mathjax" / "es5"
 # fonts, the TeX extensions it may autoload, the menu and the assistive MathML.
 MATHJAX_PARTS = ["tex-chtml.js", "output/chtml", "input/tex/extensions", "ui", "a11y"]
 LAB = ROOT / "python" / "poinsot" / "lab"
+NOTEBOOKS = ROOT / "notebooks"
+NOTEBOOK_COPIES = DOCS / "notebooks"
 
 # The public submodules documented beside the package's top-level names.
 SUBMODULES = ["poinsot.plots", "poinsot.special"]
@@ -44,6 +48,24 @@ def _copy_mathjax(app: Any, config: Any) -> None:
             (dest / part).parent.mkdir(parents=True, exist_ok=True)
             shutil.copy2(src, dest / part)
     config.html_static_path.append(str(static))
+
+
+def _copy_notebooks(app: Any, config: Any) -> None:
+    """notebooks/*.ipynb into docs/notebooks/ (the page notebooks.md lists them by glob): a
+    copy whose bytes are unchanged is left alone (Sphinx reads a file again when it changes),
+    and a copy whose notebook is gone is removed, so the site shows exactly the folder."""
+    sources = sorted(NOTEBOOKS.glob("*.ipynb"))
+    if not sources:
+        raise RuntimeError(f"no notebook in {NOTEBOOKS}: the docs' notebooks page lists them")
+    NOTEBOOK_COPIES.mkdir(exist_ok=True)
+    names = {src.name for src in sources}
+    for stale in NOTEBOOK_COPIES.glob("*.ipynb"):
+        if stale.name not in names:
+            stale.unlink()
+    for src in sources:
+        dest = NOTEBOOK_COPIES / src.name
+        if not dest.exists() or dest.read_bytes() != src.read_bytes():
+            shutil.copy2(src, dest)
 
 
 def _kind(obj: Any) -> str:
@@ -133,6 +155,7 @@ def setup(app: Any) -> dict[str, Any]:
     app.connect("autodoc-process-docstring", _escape_bars, priority=400)
     app.connect("config-inited", _copy_mathjax)
     app.connect("config-inited", _write_api)
+    app.connect("config-inited", _copy_notebooks)
     app.connect("build-finished", _copy_lab)
     return {"parallel_read_safe": True, "parallel_write_safe": True}
 
