@@ -142,8 +142,9 @@ impl FoucaultMeasurement {
 /// How close the unit's rate −ω sin λ must be to a run for it to describe the run, as a
 /// fraction ([`UnitRateCheck`]): 1 %, the unit's formula to two significant digits. The spin's
 /// departure stays below it while ω is small against the pendulum's √(g/L) (on the browser
-/// lab's planet spinning 1000 times faster than the Earth, at 49° up to L ≈ 50 m), the
-/// amplitude's while A/L ≲ 0.2 (docs/lab.md lists measured values).
+/// lab's planet spinning 1000 times faster than the Earth, at 49° up to L ≈ 40 m, ω/√(g/L) ≈
+/// 0.15), the amplitude's, about 0.3 (A/L)², while A/L ≲ 0.18 (docs/lab.md lists measured
+/// values).
 pub const UNIT_RATE_TOLERANCE: f64 = 0.01;
 
 /// Whether the unit's rate −ω sin λ (the Foucault rate of eq. 2.33) describes a Foucault run,
