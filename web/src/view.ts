@@ -171,8 +171,8 @@ export function overlaps(a: Rect, b: Rect, hair = 0.5): boolean {
 }
 
 /** The rectangle of `viewport` free of every rectangle of `huds` (with a gap of `gap` pixels)
- * whose inscribed circle is largest (then whose area is): the place for the main object. The
- * candidates' edges are the viewport's and the HUD rectangles' edges. */
+ * whose inscribed circle is largest (within 3 %, then whose area is): the place for the main
+ * object. The candidates' edges are the viewport's and the HUD rectangles' edges. */
 export function freeRect(viewport: Rect, huds: Rect[], gap = 6): Rect {
   const hs = huds.filter((r) => r.w > 0 && r.h > 0 && overlaps(r, viewport, 0)).map((r) => ({ x: r.x - gap, y: r.y - gap, w: r.w + 2 * gap, h: r.h + 2 * gap }));
   if (hs.length === 0) return viewport;
@@ -191,8 +191,10 @@ export function freeRect(viewport: Rect, huds: Rect[], gap = 6): Rect {
       if (b - t <= 0) continue;
       const c = { x: l, y: t, w: r - l, h: b - t };
       if (hs.some((h) => overlaps(h, c, 0))) continue;
+      // The largest inscribed circle; within 3 % of it, the larger area (a wider band rather
+      // than a column a few pixels taller, so that the view stays centred).
       const s = [Math.min(c.w, c.h), c.w * c.h];
-      if (s[0] > score[0] || (s[0] === score[0] && s[1] > score[1])) {
+      if (s[0] > score[0] * 1.03 || (s[0] >= score[0] * 0.97 && s[1] > score[1])) {
         best = c;
         score = s;
       }

@@ -66,7 +66,7 @@ export const foucaultScene: SceneDef = {
     "The swing plane turns at −Ω sin λ: clockwise seen from above in the north, counterclockwise in the south, not at all at the equator. " +
     "The core integrates the bob in the rotating frame; white: the swing plane at the last turning point, yellow: the bob's trace on the floor (the rosette); it was released towards the north. " +
     "The real Earth needs a day/|sin λ| for a turn, so the spin factor puts the pendulum on a planet spinning that much faster — a physical parameter of the simulated planet, not a faster film. " +
-    "−Ω sin λ holds while Ω ≪ √(g/L) and the amplitude ≪ L: push the spin, length or amplitude up to watch the fitted rate part from it — " +
+    "−Ω sin λ holds while Ω ≪ √(g/L) and the amplitude ≪ L: push the spin, length or amplitude up to watch the fitted rate part from it; the view says when it no longer applies (the core measures both departures) — " +
     "and where the plane no longer turns steadily (near the equator of a fast planet, a spin not small against √(g/L), a swing too wide) the core's regime says so and gives no rate. " +
     "J = ½v² + gz − ½|Ω×r|², the energy in the rotating frame, is conserved (Coriolis and the wire do no work): its drift checks the integration. " +
     "Horizontal distances are drawn enlarged; red is east, green north.",

@@ -242,6 +242,7 @@ export const inertiaScene: SceneDef = {
     let T: number[] = [0, 0, 0];
     let moments: number[] = [];
     let displaced = false;
+    let inertiaRadius = 1;
 
     const release = () => {
       screw?.free();
@@ -330,6 +331,7 @@ export const inertiaScene: SceneDef = {
         const r = semi.map((x) => (Number.isFinite(x) ? Math.min(x * k, 2.2 * size) : 2.2 * size));
         principal.matrix.copy(matrix4(axes));
         ellipsoid.matrix.makeScale(r[0], r[1], r[2]);
+        inertiaRadius = 1.05 * Math.max(size, ...r.map((x) => Math.max(x, 0.5 * size) + 0.5));
         arrows.forEach((arr, i) => {
           const len = Math.max(r[i], 0.5 * size) + 0.35;
           arr.setLength(len, 0.16, 0.08);
@@ -370,7 +372,7 @@ export const inertiaScene: SceneDef = {
         const lamina = belowPrecision(margins[2], top);
         const tScale = Math.max(1, ...T.map(Math.abs));
         fixed = [
-          { key: "mass", label: "mass (kg)", value: body.mass, text: fmt(body.mass, 8) },
+          { key: "mass", label: "mass (kg)", value: body.mass, text: fmt(body.mass, 6) },
           { key: "com", label: "CM, body axes (m)", value: com, text: fmtVec(com) },
           { key: "inertia", label: "I about CM (kg·m²)", value: inertia, text: rows(inertia) },
           { key: "principalMoments", label: "I₁ ≤ I₂ ≤ I₃ (kg·m²)", value: moments, text: fmtVec(moments, 4, top) },
@@ -432,7 +434,9 @@ export const inertiaScene: SceneDef = {
         return out;
       },
       frame() {
-        return displaced ? frameOf([start.mesh, target.mesh, helix], 0.2) : frameOf([moving.mesh, principal], 0.1);
+        // The displacement's two poses and the helix; or the body about its CM (at the origin)
+        // with its principal axes.
+        return displaced ? frameOf([start.mesh, target.mesh, helix], 0.2) : { center: new THREE.Vector3(), radius: inertiaRadius };
       },
       main() {
         return displaced ? [start.mesh, target.mesh, moving.mesh] : [moving.mesh];

@@ -81,7 +81,8 @@ export const lowScene: SceneDef = {
     const inertial = new THREE.Line(new THREE.BufferGeometry(), new THREE.LineDashedMaterial({ color: 0x9aa4b1, dashSize: 0.05, gapSize: 0.04 }));
     inertial.frustumCulled = false;
     root.add(inertial);
-    ctx.camera.position.set(0, -4.6, 8.6);
+    // From the south-south-east, above: up stands apart from north on the screen.
+    ctx.camera.position.set(2.2, -6, 6.5);
     ctx.target.set(0, 0, 0);
 
     let p: Params = {};
@@ -93,6 +94,7 @@ export const lowScene: SceneDef = {
     let f = 0;
     let turning = 0;
     let windScale = 1;
+    let circScale = 0;
     let out: Readout[] = [];
     let offMap: Readout | null = null;
 
@@ -163,6 +165,9 @@ export const lowScene: SceneDef = {
             };
         // Winds drawn so that the speed the pull alone would give (√(pull · R)) is half the ring.
         windScale = (0.5 * RING) / Math.sqrt(pull * LOW_RADIUS);
+        // The scale of x v_y − y v_x: the ring's radius times that speed (a circulation within
+        // a few ε of it is round-off: 0 at the equator).
+        circScale = LOW_RADIUS * Math.sqrt(pull * LOW_RADIUS);
       },
       step(t) {
         if (!flow) return;
@@ -189,7 +194,7 @@ export const lowScene: SceneDef = {
         out = [
           { key: "tau", label: "t in the run (h)", value: tau, text: fmt(tau / 3600, 5) },
           { key: "parcel", label: "parcel 1: x, y (km), v (m/s)", value: first, text: fmtVec([first[0] / 1e3, first[1] / 1e3, first[2], first[3]], 4) },
-          { key: "circulation", label: "circulation (m²/s)", value: circ, text: fmt(circ, 8) },
+          { key: "circulation", label: "circulation (m²/s)", value: circ, text: fmt(circ, 8, circScale) },
           { key: "sense", label: "sense (from the run)", value: sense, text: sense === "none" ? "none (no turning)" : `${sense} (seen from above)` },
           { key: "coriolis", label: "f = 2Ω sin λ (1/s)", value: f, text: fmt(f, 6) },
           { key: "inertialPeriod", label: "inertial period (h)", value: period, text: Number.isFinite(period) ? fmt(period / 3600, 6) : "∞ (no inertial circle)" },
