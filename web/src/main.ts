@@ -1,10 +1,13 @@
 // The lab's shell: loads the core (WebAssembly), builds the scene tabs, the parameter controls
-// and the readouts, runs the animation loop with the physics in it, and keeps the URL (the
-// "share" link) in step with the parameters.
+// and the readouts (all of them in the panel, the scene's three or four that matter pinned on the
+// canvas), frames the camera around the HUD (titles, insets, pinned readouts), runs the
+// animation loop with the physics in it, and keeps the URL (the "share" link) in step with the
+// parameters. Camera keys: arrows orbit a focused view, + and − zoom, 0 resets the view.
 import "./style.css";
+import * as THREE from "three";
 import init, { coreStatus, version, type CoreStatus } from "./core";
-import { createView } from "./view";
-import { fmt, type Params, type Readout, type SceneDef, type SceneInstance } from "./scene";
+import { aimCamera, createView, fitDistance, freeRect, Labels, projectBox } from "./view";
+import { fmtStep, type Params, type Readout, type Rect, type SceneDef, type SceneInstance } from "./scene";
 import { SCENES } from "./scenes";
 
 /** What the tests (and a curious user, from the console) can see: window.__lab. */
@@ -21,28 +24,57 @@ interface LabHandle {
   /** Mean physics time per frame (ms) over the last `PHYSICS_WINDOW` frames. */
   physicsMs: number;
   error: string | null;
+  /** Whether the page honours prefers-reduced-motion (it starts paused). */
+  reducedMotion: boolean;
   /** The core's guard: restarts of the WebAssembly instance after an internal error. */
   core(): CoreStatus;
   readouts(): Record<string, Readout["value"]>;
   seek(t: number): void;
+  /** The layout of the view (stage pixels, page coordinates): the HUD elements (by id or
+   * class), the free rectangles of the viewports, and the screen boxes of the main object. */
+  layout(): { stage: Rect; huds: { id: string; rect: Rect }[]; free: Rect[]; main: Rect[] };
+  /** The camera: position, target (scene units). */
+  camera(): { position: number[]; target: number[] };
+  /** The scene's named points on the screen (page pixels), e.g. a mark's centre. */
+  probes(): Record<string, { x: number; y: number }>;
 }
 
 const PHYSICS_WINDOW = 120;
+/** A pinned readout longer than this (characters) is a sentence: it wraps across the box. */
+const LONG_TEXT = 34;
+/** Keyboard orbit: one arrow press turns the view by this much (rad); + and − zoom by ZOOM. */
+const ORBIT_STEP = (10 * Math.PI) / 180;
+const ZOOM = 1.15;
+/** The camera is refitted on a parameter change when the framed sphere moves or grows by more
+ * than this fraction of its radius (or when the user has not moved the camera). */
+const REFRAME = 0.25;
 const $ = <T extends HTMLElement>(id: string) => document.getElementById(id) as T;
 
 async function main(): Promise<void> {
   await init();
+  const stage = $("stage");
   const view = createView($("view"));
+  const canvas = view.renderer.domElement;
+  const reducedMotion = window.matchMedia?.("(prefers-reduced-motion: reduce)").matches ?? false;
+  view.controls.enableDamping = !reducedMotion;
   const lab: LabHandle = {
     ready: false, version: version(), scenes: SCENES.map((d) => d.id), scene: "", params: {}, t: 0, playing: true, frames: 0,
-    physicsMs: 0, error: null, core: coreStatus,
+    physicsMs: 0, error: null, reducedMotion, core: coreStatus,
     readouts: () => Object.fromEntries(current.readouts().map((r) => [r.key, r.value])),
     seek: (t: number) => { lab.t = t; stepOnce(); },
+    layout: () => layoutNow(),
+    camera: () => ({ position: view.camera.position.toArray(), target: view.controls.target.toArray() }),
+    probes: () => {
+      const s = stageRect();
+      const pts = current.probes?.(view.camera, viewports()[0]) ?? {};
+      return Object.fromEntries(Object.entries(pts).map(([k, p]) => [k, { x: p.x + s.x, y: p.y + s.y }]));
+    },
   };
   (window as unknown as { __lab: LabHandle }).__lab = lab;
 
   let def: SceneDef = SCENES[0];
   let current: SceneInstance;
+  let labels: Labels;
   let speed = 1;
   const costs: number[] = [];
 
@@ -53,7 +85,7 @@ async function main(): Promise<void> {
     alertBox.textContent = lab.error;
     alertBox.hidden = false;
     // No stale numbers beside an error: the readouts wait for valid parameters.
-    for (const dd of cells.values()) {
+    for (const dd of [...cells.values(), ...pinnedCells.values()]) {
       dd.textContent = "—";
       dd.dataset.value = "null";
     }
@@ -91,10 +123,13 @@ async function main(): Promise<void> {
   // --- controls ---------------------------------------------------------------------------
   const form = $<HTMLFormElement>("controls");
   form.addEventListener("submit", (ev) => ev.preventDefault());
+  const controlRows = new Map<string, HTMLElement>();
   function buildControls(): void {
     form.replaceChildren();
+    controlRows.clear();
     for (const spec of def.params) {
       const label = document.createElement("label");
+      label.dataset.key = spec.key;
       const name = document.createElement("span");
       name.textContent = spec.kind === "number" && spec.unit ? `${spec.label} (${spec.unit})` : spec.label;
       label.append(name);
@@ -104,35 +139,49 @@ async function main(): Promise<void> {
         input.value = String(lab.params[spec.key]);
         input.dataset.key = spec.key;
         const out = document.createElement("output");
-        out.textContent = fmt(Number(input.value), 4);
+        out.textContent = fmtStep(Number(input.value), spec.step);
         input.addEventListener("input", () => {
-          out.textContent = fmt(Number(input.value), 4);
+          out.textContent = fmtStep(Number(input.value), spec.step);
           setParam(spec.key, Number(input.value));
         });
         label.append(input, out);
       } else {
+        label.classList.add("choice");
         const select = document.createElement("select");
         select.name = spec.key;
         select.dataset.key = spec.key;
         for (const o of spec.options) select.add(new Option(o, o));
         select.value = String(lab.params[spec.key]);
         select.addEventListener("change", () => setParam(spec.key, select.value));
-        label.append(select, document.createElement("span"));
+        label.append(select);
       }
       form.append(label);
+      controlRows.set(spec.key, label);
+    }
+    showApplicable();
+  }
+  /** Shows the controls that apply to the current parameters only. */
+  function showApplicable(): void {
+    for (const spec of def.params) {
+      const row = controlRows.get(spec.key);
+      if (row) row.hidden = spec.when ? !spec.when(lab.params) : false;
     }
   }
   function setParam(key: string, value: number | string): void {
     lab.params = { ...lab.params, [key]: value };
+    showApplicable();
     configure();
     writeUrl();
   }
 
-  // --- readouts ---------------------------------------------------------------------------
+  // --- readouts: all of them in the panel, the pinned ones on the canvas ---------------------
   const dl = $("readouts");
   const cells = new Map<string, HTMLElement>();
+  const pinnedDl = $("pinned");
+  const pinnedCells = new Map<string, HTMLElement>();
   function renderReadouts(): void {
-    for (const r of current.readouts()) {
+    const list = current.readouts();
+    for (const r of list) {
       let dd = cells.get(r.key);
       if (!dd) {
         const dt = document.createElement("dt");
@@ -145,17 +194,180 @@ async function main(): Promise<void> {
       if (dd.textContent !== r.text) dd.textContent = r.text;
       dd.dataset.value = JSON.stringify(r.value);
       dd.classList.toggle("warn", !!r.warn);
+      if (dd.title !== (r.detail ?? "")) dd.title = r.detail ?? "";
+    }
+    // The pinned readouts: the scene's keys, in its order, then the warnings it pins now.
+    const pinnedKeys = typeof def.pinned === "function" ? def.pinned(lab.params) : def.pinned;
+    const want = [...pinnedKeys.map((k) => list.find((r) => r.key === k)).filter((r): r is Readout => !!r), ...list.filter((r) => r.pin && !pinnedKeys.includes(r.key))];
+    const keys = want.map((r) => r.key).join(" ");
+    if (pinnedDl.dataset.keys !== keys) {
+      pinnedDl.replaceChildren();
+      pinnedCells.clear();
+      for (const r of want) {
+        const row = document.createElement("div");
+        // A sentence spans the box (its label above it); a number sits beside its label.
+        row.className = pinnedKeys.includes(r.key) ? (r.text.length > LONG_TEXT ? "item long" : r.text.length > 18 ? "item wide" : "item") : "note";
+        const dt = document.createElement("dt");
+        dt.textContent = r.label;
+        const dd = document.createElement("dd");
+        dd.dataset.key = r.key;
+        row.append(dt, dd);
+        pinnedDl.append(row);
+        pinnedCells.set(r.key, dd);
+      }
+      pinnedDl.dataset.keys = keys;
+    }
+    for (const r of want) {
+      const dd = pinnedCells.get(r.key)!;
+      if (dd.textContent !== r.text) dd.textContent = r.text;
+      dd.classList.toggle("warn", !!r.warn);
+      if (dd.title !== (r.detail ?? "")) dd.title = r.detail ?? "";
     }
   }
+
+  // --- framing: the camera keeps the main object clear of the HUD ----------------------------
+  let hudRects: { id: string; rect: Rect }[] = [];
+  let hudsDirty = true;
+  let userMoved = false;
+  const home = new THREE.Vector3(1, 1, 1);
+  let framed = { center: new THREE.Vector3(), radius: 1 };
+  const stageRect = (): Rect => {
+    const r = stage.getBoundingClientRect();
+    return { x: r.left, y: r.top, w: r.width, h: r.height };
+  };
+  function measureHuds(): void {
+    const s = stage.getBoundingClientRect();
+    hudRects = [];
+    for (const el of stage.querySelectorAll<HTMLElement>(".hud")) {
+      if (el.hidden || el.offsetParent === null) continue;
+      const r = el.getBoundingClientRect();
+      if (r.width === 0 || r.height === 0) continue;
+      hudRects.push({ id: el.id || el.className, rect: { x: r.left - s.left, y: r.top - s.top, w: r.width, h: r.height } });
+    }
+    hudsDirty = false;
+  }
+  const freeCache = new Map<string, Rect>();
+  /** The free part of a viewport. Where the scene has several viewports side by side, the part
+   * free in all of them (in each one's own coordinates), so that its views are framed alike. */
+  function freeOf(vp: Rect): Rect {
+    const key = `${vp.x},${vp.y},${vp.w},${vp.h}`;
+    let f = freeCache.get(key);
+    if (!f) {
+      const huds = hudRects.map((h) => h.rect);
+      const all = current?.viewports ? viewports() : [vp];
+      const local = all.map((v) => {
+        const r = freeRect(v, huds);
+        return { x0: r.x - v.x, y0: r.y - v.y, x1: r.x + r.w - v.x, y1: r.y + r.h - v.y };
+      });
+      const x0 = Math.max(...local.map((r) => r.x0)), y0 = Math.max(...local.map((r) => r.y0));
+      const x1 = Math.min(...local.map((r) => r.x1)), y1 = Math.min(...local.map((r) => r.y1));
+      f = { x: vp.x + x0, y: vp.y + y0, w: Math.max(1, x1 - x0), h: Math.max(1, y1 - y0) };
+      freeCache.set(key, f);
+    }
+    return f;
+  }
+  const canvasSize = () => ({ w: Math.max(1, stage.clientWidth), h: Math.max(1, stage.clientHeight) });
+  const viewports = (): Rect[] => {
+    const { w, h } = canvasSize();
+    return current.viewports?.(w, h) ?? [{ x: 0, y: 0, w, h }];
+  };
+  function aimDefault(): void {
+    const { w, h } = canvasSize();
+    const vp = { x: 0, y: 0, w, h };
+    aimCamera(view.camera, vp, freeOf(vp));
+  }
+  /** Puts the camera on the scene's home direction at the distance that fits its frame. */
+  function fit(): void {
+    framed = current.frame();
+    let d = 0;
+    for (const vp of viewports()) d = Math.max(d, fitDistance(view.camera, framed.radius, vp, freeOf(vp)));
+    view.controls.target.copy(framed.center);
+    view.camera.position.copy(framed.center).addScaledVector(home, d);
+    view.camera.near = Math.max(0.01, d / 200);
+    view.camera.far = Math.max(50, 20 * (d + framed.radius));
+    view.camera.updateProjectionMatrix();
+    const damping = view.controls.enableDamping;
+    view.controls.enableDamping = false; // no glide out of a reset
+    view.controls.update();
+    view.controls.enableDamping = damping;
+    userMoved = false;
+  }
+  /** After a parameter change: refit unless the user has moved the camera and the frame stayed. */
+  function maybeRefit(): void {
+    const f = current.frame();
+    const moved = f.center.distanceTo(framed.center) > REFRAME * framed.radius || Math.abs(f.radius - framed.radius) > REFRAME * framed.radius;
+    if (!userMoved || moved) fit();
+  }
+  view.controls.addEventListener("start", () => { userMoved = true; });
+  const relayout = () => { hudsDirty = true; };
+  const sizes = new ResizeObserver(relayout);
+  sizes.observe(stage);
+  sizes.observe(pinnedDl);
+  sizes.observe($("view-buttons"));
+  const overlay = $("overlay");
+  // HUD elements a scene adds to the overlay (titles, insets) are watched too.
+  new MutationObserver(() => {
+    for (const el of overlay.querySelectorAll<HTMLElement>(".hud")) sizes.observe(el);
+    relayout();
+  }).observe(overlay, { childList: true, subtree: true, attributes: true, attributeFilter: ["hidden", "class"] });
+
+  function layoutNow(): ReturnType<LabHandle["layout"]> {
+    measureHuds();
+    freeCache.clear();
+    const vps = viewports();
+    const main = current.mainBoxes?.() ?? [projectBox(current.main(), view.camera, vps[0])].filter((b): b is Rect => b !== null);
+    return { stage: stageRect(), huds: hudRects, free: vps.map(freeOf), main };
+  }
+
+  // Keyboard orbit on the focused view; 0 (anywhere) resets it.
+  const offset = new THREE.Vector3();
+  function orbit(dAzimuth: number, dPolar: number, zoom = 1): void {
+    offset.copy(view.camera.position).sub(view.controls.target);
+    const r = offset.length() * zoom;
+    let azimuth = Math.atan2(offset.y, offset.x) + dAzimuth;
+    let polar = Math.acos(Math.min(1, Math.max(-1, offset.z / offset.length()))) + dPolar;
+    polar = Math.min(Math.PI - 0.05, Math.max(0.05, polar));
+    if (!Number.isFinite(azimuth)) azimuth = 0;
+    offset.set(r * Math.sin(polar) * Math.cos(azimuth), r * Math.sin(polar) * Math.sin(azimuth), r * Math.cos(polar));
+    view.camera.position.copy(view.controls.target).add(offset);
+    view.controls.update();
+    userMoved = true;
+  }
+  canvas.addEventListener("keydown", (ev) => {
+    const keys: Record<string, () => void> = {
+      ArrowLeft: () => orbit(-ORBIT_STEP, 0),
+      ArrowRight: () => orbit(ORBIT_STEP, 0),
+      ArrowUp: () => orbit(0, -ORBIT_STEP),
+      ArrowDown: () => orbit(0, ORBIT_STEP),
+      "+": () => orbit(0, 0, 1 / ZOOM),
+      "=": () => orbit(0, 0, 1 / ZOOM),
+      "-": () => orbit(0, 0, ZOOM),
+      Home: () => fit(),
+    };
+    const act = keys[ev.key];
+    if (act && !ev.ctrlKey && !ev.metaKey && !ev.altKey) {
+      ev.preventDefault();
+      ev.stopPropagation();
+      act();
+    }
+  });
+  $("reset-view").addEventListener("click", () => fit());
 
   // --- scenes -------------------------------------------------------------------------------
   const nav = $("scenes");
   const panel = $("scene-extra");
-  const overlay = $("overlay");
   SCENES.forEach((d, i) => {
     const b = document.createElement("button");
     b.type = "button";
-    b.textContent = d.title;
+    const long = document.createElement("span");
+    long.className = "long";
+    long.textContent = d.title;
+    const short = document.createElement("span");
+    short.className = "short";
+    short.textContent = d.short;
+    short.setAttribute("aria-hidden", "true");
+    b.append(long, short);
+    b.title = d.title;
     b.dataset.scene = d.id;
     b.setAttribute("aria-keyshortcuts", String(i + 1));
     b.addEventListener("click", () => openScene(d, new URLSearchParams()));
@@ -167,6 +379,7 @@ async function main(): Promise<void> {
       current.configure(lab.params);
       clearError();
       stepOnce();
+      maybeRefit();
     } catch (e) {
       showError(e);
     }
@@ -185,30 +398,60 @@ async function main(): Promise<void> {
     renderReadouts();
   }
 
+  const about = $<HTMLDetailsElement>("about");
+  const narrow = () => window.matchMedia("(max-width: 800px)").matches;
   function openScene(d: SceneDef, q: URLSearchParams): void {
     current?.dispose();
+    labels?.dispose();
     def = d;
     lab.scene = d.id;
     lab.params = paramsFromUrl(d, q);
     const t = Number(q.get("t"));
     lab.t = Number.isFinite(t) && t >= 0 ? t : 0;
-    setPlaying(q.get("paused") !== "1");
+    // prefers-reduced-motion: nothing moves until the user presses Play.
+    setPlaying(!reducedMotion && q.get("paused") !== "1");
     costs.length = 0;
     cells.clear();
     dl.replaceChildren();
+    pinnedCells.clear();
+    pinnedDl.replaceChildren();
+    delete pinnedDl.dataset.keys;
     $("scene-title").textContent = d.title;
     $("scene-blurb").textContent = d.blurb;
+    about.open = !narrow();
+    canvas.setAttribute("aria-label", `${d.title}: ${d.describe}. Drag to turn the view, or focus it and use the arrow keys; + and − zoom; 0 resets the view.`);
     for (const b of nav.querySelectorAll("button")) {
-      if ((b as HTMLElement).dataset.scene === d.id) b.setAttribute("aria-current", "page");
-      else b.removeAttribute("aria-current");
+      if ((b as HTMLElement).dataset.scene === d.id) {
+        b.setAttribute("aria-current", "page");
+        b.scrollIntoView?.({ block: "nearest", inline: "nearest" });
+      } else b.removeAttribute("aria-current");
     }
+    view.camera.clearViewOffset();
     view.camera.position.set(5.5, 4.2, 3.4);
     view.controls.target.set(0, 0, 0);
+    view.camera.layers.set(0);
     panel.replaceChildren();
     overlay.replaceChildren();
-    current = d.create({ scene: view.scene, camera: view.camera, target: view.controls.target, panel, overlay });
+    labels = new Labels(overlay);
+    current = d.create({
+      scene: view.scene, camera: view.camera, target: view.controls.target, panel, overlay, labels,
+      freeRect: (vp) => freeOf(vp),
+      aim: (camera, vp) => aimCamera(camera, vp, freeOf(vp)),
+    });
+    home.copy(view.camera.position).sub(view.controls.target).normalize();
     buildControls();
-    configure();
+    // The first layout with this scene's HUD, then the frame.
+    try {
+      current.configure(lab.params);
+      clearError();
+      stepOnce();
+    } catch (e) {
+      showError(e);
+    }
+    measureHuds();
+    freeCache.clear();
+    aimDefault();
+    fit();
     writeUrl();
   }
 
@@ -246,6 +489,7 @@ async function main(): Promise<void> {
     if (ev.key === " " && tag !== "BUTTON") { ev.preventDefault(); setPlaying(!lab.playing); writeUrl(); }
     else if (ev.key === "r" || ev.key === "R") reset();
     else if (ev.key === "s" || ev.key === "S") share();
+    else if (ev.key === "0") fit();
     else if (/^[1-9]$/.test(ev.key) && SCENES[Number(ev.key) - 1]) openScene(SCENES[Number(ev.key) - 1], new URLSearchParams());
   });
 
@@ -256,6 +500,7 @@ async function main(): Promise<void> {
   openScene(SCENES.find((d) => d.id === q.get("scene")) ?? SCENES[0], q);
 
   let last = performance.now();
+  const full = (): Rect => ({ x: 0, y: 0, ...canvasSize() });
   const loop = (now: number) => {
     // rAF's timestamp is the frame's start, which can precede `last` (taken with performance.now()).
     const dt = Math.min(0.1, Math.max(0, (now - last) / 1000));
@@ -264,9 +509,16 @@ async function main(): Promise<void> {
       lab.t += dt * speed;
       stepOnce();
     }
+    if (hudsDirty) {
+      measureHuds();
+      freeCache.clear();
+      aimDefault();
+      if (!userMoved) fit();
+    }
     view.controls.update();
     if (current.render) current.render(view.renderer, view.scene, view.camera);
     else view.renderer.render(view.scene, view.camera);
+    if (!current.viewports) labels.update(view.camera, full());
     lab.frames++;
     requestAnimationFrame(loop);
   };

@@ -54,7 +54,7 @@ test("both halves of the canvas are drawn, each with its own content", async () 
 test("the four terms sum to the fixed-frame acceleration F/m at round-off, and follow 2.21", async () => {
   const cases = [
     { t: "2.5" },
-    { omega: "-1.5", omegaDot: "0.3", stiffness: "2", r0: "0.6", speed: "0.4", direction: "90", launch: "rotating frame", t: "6.25" },
+    { omega: "-1.5", omegaDot: "0.3", stiffness: "2", r0: "0.6", speed: "0.4", direction: "1.55", launch: "rotating frame", t: "6.25" },
     { omega: "2", omegaDot: "-0.5", stiffness: "4", t: "7.9" },
   ];
   for (const c of cases) {
@@ -104,11 +104,12 @@ test("with ω = 0 the Coriolis, centripetal and Euler terms vanish (negative con
 });
 
 test("free particle: straight at constant speed when seen fixed, Jacobi integral kept only while ω̇ = 0", async () => {
-  // r0 = (0.8, 0, 0), v0' = 0.6 (cos 150°, sin 150°, 0) in the fixed frame.
-  const v0 = [0.6 * Math.cos((150 * Math.PI) / 180), 0.6 * Math.sin((150 * Math.PI) / 180), 0];
-  const { page } = await open(query({ t: "0" }));
+  // r0 = (0.8, 0, 0), v0' = 0.6 (cos 2.6, sin 2.6, 0) in the fixed frame (the direction in rad,
+  // the scene's angle unit): it reaches the table's rim, where the loop restarts, at 2.66 s.
+  const v0 = [0.6 * Math.cos(2.6), 0.6 * Math.sin(2.6), 0];
+  const { page } = await open(query({ direction: "2.6", t: "0" }));
   const jacobi = [];
-  for (const t of [0, 1.25, 2.5, 4.75]) {
+  for (const t of [0, 1.25, 2.0, 2.6]) {
     await page.evaluate((x) => window.__lab.seek(x), t);
     const r = await readouts(page);
     const line = [0.8 + v0[0] * t, v0[1] * t, 0];
@@ -132,7 +133,8 @@ test("free particle: straight at constant speed when seen fixed, Jacobi integral
 });
 
 test("seek shows the state at t, the same as opening the page at t", async () => {
-  const p = { omega: "1.2", omegaDot: "0.2", stiffness: "1.5", launch: "rotating frame" };
+  // A bound orbit that stays on the table: the loop is the whole 8 s.
+  const p = { omega: "1.2", omegaDot: "0.2", stiffness: "1.5", r0: "0.5", speed: "0.3", launch: "rotating frame" };
   const fresh = await open(query({ ...p, t: "3.4" }));
   const want = await readouts(fresh.page);
   await fresh.page.close();

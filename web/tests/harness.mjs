@@ -54,9 +54,10 @@ export async function startLab() {
 export const urlFor = (query) => new URL(query, base).href;
 
 /** Open the page at `query`, collecting console errors and uncaught exceptions; `beforeLoad`, a
- * function, runs in the page before its scripts (playwright's addInitScript). */
-export async function open(query, viewport = { width: 1200, height: 800 }, { beforeLoad } = {}) {
-  const page = await browser.newPage({ viewport });
+ * function, runs in the page before its scripts (playwright's addInitScript); `reducedMotion`
+ * ("reduce" or "no-preference") emulates the user's prefers-reduced-motion. */
+export async function open(query, viewport = { width: 1200, height: 800 }, { beforeLoad, reducedMotion } = {}) {
+  const page = await browser.newPage({ viewport, ...(reducedMotion ? { reducedMotion } : {}) });
   if (beforeLoad) await page.addInitScript(beforeLoad);
   const errors = [];
   page.on("console", (msg) => {

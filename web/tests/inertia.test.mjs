@@ -168,7 +168,7 @@ test("inertia: STL chosen without a file says so (no numbers)", async () => {
 test("inertia: Chasles — the screw recomposes the displacement to round-off; the motion keeps the moments", async () => {
   const cases = ["phi=40&theta=65&psi=20&tx=1.5&ty=0.5&tz=1", "phi=-170&theta=120&psi=95&tx=-2.5&ty=3&tz=-0.4", "phi=3&theta=1&psi=-2&tx=0.1&ty=-2&tz=0.3"];
   for (const q of cases) {
-    const { page, errors } = await open(`?scene=inertia&shape=cone&${q}&paused=1`);
+    const { page, errors } = await open(`?scene=inertia&shape=cone&motion=Chasles&${q}&paused=1`);
     const r0 = await readouts(page);
     assert.ok(r0.residual <= ROUND_OFF, `${q}: residual ${r0.residual}`);
     // t = 0: the first pose; the middle of the motion; t = 4.5 s: the second pose (R, t).
@@ -205,7 +205,7 @@ test("inertia: Euler — a rotation about the CM has its screw axis through the 
 });
 
 test("inertia: playing animates the screw motion", async () => {
-  const { page, errors } = await open("?scene=inertia");
+  const { page, errors } = await open("?scene=inertia&motion=Chasles");
   await page.evaluate(() => window.__lab.seek(0.6));
   const a = (await readouts(page)).pose;
   await page.waitForTimeout(400);

@@ -3,8 +3,9 @@ page must display, computed here by the Python API (issue 6: "the numbers the pa
 fixed parameters equal the Python API's to 1e-12").
 
 Each case names the page's URL parameters and the readouts (by their `data-key`) expected for
-them. The parameter → argument mapping is the page's (degrees × π/180, angle + rate × t), so a
-mismatch is a difference in the numbers, not in the set-up.
+them. The parameter → argument mapping is the page's (each scene's angle unit: degrees × π/180
+where its sliders are in degrees, radians as they are where they are in radians; angle + rate ×
+t), so a mismatch is a difference in the numbers, not in the set-up.
 
     python web/tests/make_golden.py web/tests/golden.json
 """
@@ -143,7 +144,8 @@ def low_case(params: dict[str, Any], i: int) -> dict[str, Any]:
 
 FRAMES_MASS = 1.0  # the page's particle mass (kg)
 FRAMES_SAMPLES = 600  # the page's path samples (TRAIL_SAMPLES)
-FRAMES_LOOP_MAX, FRAMES_LOOP_MIN, FRAMES_FREE_RUN = 8.0, 1.5, 3.0  # the page's loop (s, s, m)
+FRAMES_LOOP_MAX = 8.0  # the page's loop (s) at most
+FRAMES_TABLE = 1.0  # the table's radius (m): the loop ends where the path first leaves it
 
 
 def frames_case(params: dict[str, Any], t: float) -> dict[str, Any]:
@@ -153,26 +155,34 @@ def frames_case(params: dict[str, Any], t: float) -> dict[str, Any]:
     w, wd, k = params["omega"], params["omegaDot"], params["stiffness"]
     frame0 = poinsot.MovingFrame(angular_velocity=[0.0, 0.0, w], angular_acceleration=[0.0, 0.0, wd])
     r0 = np.array([params["r0"], 0.0, 0.0])
-    d = params["direction"] * DEG
+    d = params["direction"]  # rad, the scene's angle unit
     launch = np.array([params["speed"] * math.cos(d), params["speed"] * math.sin(d), 0.0])
 
     def accel(x: np.ndarray) -> np.ndarray:
         return -k * x / FRAMES_MASS
 
     if params["launch"] == "rotating frame":
-        v0rel, v0fixed = launch, frame0.to_fixed(r0, launch).velocity
+        v0rel = launch
     else:
-        v0rel, v0fixed = frame0.to_moving(r0, launch, accel(r0)).velocity, launch
-    s0 = float(np.linalg.norm(v0fixed))
-    free_loop = k == 0 and s0 * FRAMES_LOOP_MAX >= FRAMES_FREE_RUN
-    loop = max(FRAMES_LOOP_MIN, FRAMES_FREE_RUN / s0) if free_loop else FRAMES_LOOP_MAX
-    tau = t % loop
-    # The page's scheme: the path over the loop at FRAMES_SAMPLES times, then from the last sample
-    # before tau to tau.
+        v0rel = frame0.to_moving(r0, launch, accel(r0)).velocity
+    # The page's scheme: the path over FRAMES_LOOP_MAX at FRAMES_SAMPLES times; the loop ends at the
+    # last sample before the path first leaves the table (the first sample interval if it leaves at
+    # once), the path is sampled again over the loop; then from the last sample before tau to tau.
     n = FRAMES_SAMPLES
-    times = [loop if i == n - 1 else loop * i / (n - 1) for i in range(n)]
     force = None if k == 0 else (lambda _t, x, _v: -k * x)
+
+    def grid(length: float) -> list[float]:
+        return [length if i == n - 1 else length * i / (n - 1) for i in range(n)]
+
+    loop = FRAMES_LOOP_MAX
+    times = grid(loop)
     path = poinsot.simulate_particle(frame0, r0, v0rel, loop, t_eval=times, mass=FRAMES_MASS, force=force)
+    out = np.flatnonzero(np.linalg.norm(path.position[1:], axis=1) > FRAMES_TABLE)
+    if out.size:
+        loop = times[max(1, int(out[0]))]
+        times = grid(loop)
+        path = poinsot.simulate_particle(frame0, r0, v0rel, loop, t_eval=times, mass=FRAMES_MASS, force=force)
+    tau = t % loop
     i = min(n - 1, math.floor(tau / loop * (n - 1)))
     while i > 0 and times[i] > tau:
         i -= 1
@@ -215,7 +225,7 @@ def frames_case(params: dict[str, Any], t: float) -> dict[str, Any]:
     return {"scene": "frames", "params": params, "t": t, "readouts": readouts}
 
 
-FRAMES = {"omega": 1, "omegaDot": 0, "stiffness": 0, "r0": 0.8, "speed": 0.6, "direction": 150,
+FRAMES = {"omega": 1, "omegaDot": 0, "stiffness": 0, "r0": 0.8, "speed": 0.6, "direction": 2.6,
           "launch": "fixed frame"}
 
 INERTIA_MOTIONS = ("Chasles", "Euler")
@@ -333,7 +343,7 @@ def heavytop_case(params: dict[str, Any], t: float) -> dict[str, Any]:
     """The heavy top (2.102–2.121): the page's preset → initial state (θ̇₀ = 0 and φ̇₀ a fraction of
     the slow steady-precession rate; sleeping: θ₀ = 0; custom: the sliders), then the readouts."""
     i1, i3, mgl, w3 = params["I1"], params["I3"], params["mgl"], params["w3"]
-    theta0 = params["theta0"] * DEG
+    theta0 = params["theta0"]  # rad, the scene's angle unit
     preset = params["preset"]
     theta_dot0, phi_dot0 = 0.0, 0.0
     if preset == "sleeping":
@@ -378,7 +388,7 @@ def heavytop_case(params: dict[str, Any], t: float) -> dict[str, Any]:
     return {"scene": "heavytop", "params": params, "t": t, "readouts": readouts}
 
 
-HEAVYTOP = {"preset": "loops", "w3": 9, "theta0": 50, "phiDot0": 0.5, "thetaDot0": 0, "mgl": 1.5,
+HEAVYTOP = {"preset": "loops", "w3": 9, "theta0": 0.87, "phiDot0": 0.5, "thetaDot0": 0, "mgl": 1.5,
             "I1": 1, "I3": 0.5}
 
 
@@ -406,7 +416,7 @@ def cases() -> list[dict[str, Any]]:
         frames_case(FRAMES, 2.5),  # free particle: straight when fixed, curved when rotating
         # Spinning up (Euler term) with a spring, launched across the table in its own frame.
         frames_case({**FRAMES, "omega": -1.5, "omegaDot": 0.3, "stiffness": 2, "r0": 0.6, "speed": 0.4,
-                     "direction": 90, "launch": "rotating frame"}, 6.25),
+                     "direction": 1.55, "launch": "rotating frame"}, 6.25),
         frames_case({**FRAMES, "omega": 0, "stiffness": 1}, 1.7),  # no rotation: no fictitious terms
         inertia_case(INERTIA, 1.7),  # asymmetric top, mid-screw
         inertia_case({**INERTIA, "shape": "cone", "a": 0.5, "b": 1.5, "mass": 3.3}, 3.25),  # CM off the origin
@@ -418,11 +428,11 @@ def cases() -> list[dict[str, Any]]:
         poinsot_case({**POINSOT, "axis": "smallest", "eps": 0.3, "a": 0.1, "b": 0.3, "c": 0.18}, 40.0),
         poinsot_case({**POINSOT, "axis": "largest", "eps": 0.8, "spin": 2.5}, 0.0),
         heavytop_case(HEAVYTOP, 3.7),  # loops
-        heavytop_case({**HEAVYTOP, "preset": "cusps", "w3": 12, "theta0": 30}, 5.25),
+        heavytop_case({**HEAVYTOP, "preset": "cusps", "w3": 12, "theta0": 0.52}, 5.25),
         heavytop_case({**HEAVYTOP, "preset": "waves", "mgl": 2, "I1": 1.2, "I3": 0.7}, 1.1),
-        heavytop_case({**HEAVYTOP, "preset": "steady precession", "theta0": 120}, 2.0),
+        heavytop_case({**HEAVYTOP, "preset": "steady precession", "theta0": 2.09}, 2.0),
         heavytop_case({**HEAVYTOP, "preset": "sleeping", "w3": 7}, 1.0),
-        heavytop_case({**HEAVYTOP, "preset": "custom", "theta0": 100, "phiDot0": -1.2, "thetaDot0": 0.7}, 4.0),
+        heavytop_case({**HEAVYTOP, "preset": "custom", "theta0": 1.75, "phiDot0": -1.2, "thetaDot0": 0.7}, 4.0),
     ]
 
 

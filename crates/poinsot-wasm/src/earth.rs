@@ -246,6 +246,9 @@ impl Earth {
 #[derive(Debug, Clone)]
 pub struct FoucaultRun {
     inner: ea::FoucaultSwing,
+    /// Whether the unit's rate −ω sin λ describes the run (`FoucaultSwing::unit_rate`, made
+    /// once with the run).
+    unit_rate: ea::UnitRateCheck,
 }
 
 impl FoucaultRun {
@@ -298,6 +301,48 @@ impl FoucaultRun {
     #[wasm_bindgen(getter, js_name = regimeNote)]
     pub fn regime_note(&self) -> String {
         self.inner.measurement.note.clone()
+    }
+    /// Whether the unit's rate −ω sin λ describes this run (both departures within the core's
+    /// `UNIT_RATE_TOLERANCE`, the plane turning steadily or not at all): `UnitRateCheck.holds`.
+    #[wasm_bindgen(getter, js_name = unitRateHolds)]
+    pub fn unit_rate_holds(&self) -> bool {
+        self.unit_rate.holds
+    }
+    /// One sentence on whether −ω sin λ describes this run, with its figures:
+    /// `UnitRateCheck.note`.
+    #[wasm_bindgen(getter, js_name = unitRateNote)]
+    pub fn unit_rate_note(&self) -> String {
+        self.unit_rate.note.clone()
+    }
+    /// ω/√(g/L), the planet's spin against the pendulum's own frequency (dimensionless):
+    /// `UnitRateCheck.spin_ratio`.
+    #[wasm_bindgen(getter, js_name = spinRatio)]
+    pub fn spin_ratio(&self) -> f64 {
+        self.unit_rate.spin_ratio
+    }
+    /// A/L, the release's distance from rest against the length (dimensionless):
+    /// `UnitRateCheck.amplitude_ratio`.
+    #[wasm_bindgen(getter, js_name = amplitudeRatio)]
+    pub fn amplitude_ratio(&self) -> f64 {
+        self.unit_rate.amplitude_ratio
+    }
+    /// |Δ − (−ω sin λ)| / max(|Δ|, |ω sin λ|), the exact small-swing rate's departure from the
+    /// unit's (a fraction), or `undefined` without a stable rest: `UnitRateCheck.spin_departure`.
+    #[wasm_bindgen(getter, js_name = spinDeparture)]
+    pub fn spin_departure(&self) -> Option<f64> {
+        self.unit_rate.spin_departure
+    }
+    /// |r − r_lin| / |r_lin|, the measured rate's departure from the small-swing theory's fit
+    /// over the run (a fraction), or `undefined` without a steady turn:
+    /// `UnitRateCheck.amplitude_departure`.
+    #[wasm_bindgen(getter, js_name = amplitudeDeparture)]
+    pub fn amplitude_departure(&self) -> Option<f64> {
+        self.unit_rate.amplitude_departure
+    }
+    /// The core's tolerance on both departures (a fraction): `UNIT_RATE_TOLERANCE`.
+    #[wasm_bindgen(js_name = unitRateTolerance)]
+    pub fn unit_rate_tolerance() -> f64 {
+        ea::UNIT_RATE_TOLERANCE
     }
     /// The sample times (s).
     pub fn times(&self) -> Vec<f64> {
@@ -475,7 +520,10 @@ impl Earth {
                 renamed_all(&[("state0", "length, amplitude"), ("max_steps", "duration")])
                     .otherwise("latitude, length, amplitude, azimuth, duration, samples"),
             )?;
-        Ok(FoucaultRun { inner })
+        let unit_rate = inner
+            .unit_rate()
+            .map_err(renamed_all(&[]).otherwise("latitude, length"))?;
+        Ok(FoucaultRun { inner, unit_rate })
     }
 
     /// Parcels starting at rest on a ring of `radius` (m) — `parcels` of them, the first due east,

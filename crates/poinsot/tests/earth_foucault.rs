@@ -4,7 +4,8 @@
 
 use poinsot::earth::{
     fit_precession_rate, Earth, FoucaultMeasurement, FoucaultRegime, FoucaultRun, Sense,
-    MEAN_RADIUS, SIDEREAL_RATE, STANDARD_GRAVITY,
+    UnitRateCheck, FOUCAULT_TOLERANCES, MEAN_RADIUS, SIDEREAL_RATE, STANDARD_GRAVITY,
+    UNIT_RATE_TOLERANCE,
 };
 use poinsot::frames::ParticleState;
 use poinsot::integrate::{dop853_scan, Crossing, Options};
@@ -590,4 +591,120 @@ proptest! {
             other => prop_assert!(false, "inconsistent measurement {other:?}: {}", m.note),
         }
     }
+}
+
+/// The browser lab's run (120 s, 2401 samples) on its planet spinning `spin` times the Earth's
+/// sidereal rate: whether the unit's rate −ω sin λ describes it.
+fn lab_unit_rate(
+    spin: f64,
+    lat: f64,
+    len: f64,
+    amp: f64,
+    duration: f64,
+) -> (UnitRateCheck, FoucaultMeasurement) {
+    let e = planet(spin * SIDEREAL_RATE);
+    let run = e
+        .foucault_swing(
+            deg(lat),
+            len,
+            amp,
+            0.0,
+            duration,
+            2401,
+            &FOUCAULT_TOLERANCES,
+        )
+        .unwrap();
+    (run.unit_rate().unwrap(), run.measurement)
+}
+
+/// Issue 12: the lab says when −ω sin λ stops holding. It holds for the lab's default run; it
+/// stops when the spin is not small against √(g/L) (a long pendulum) or the swing is wide, and
+/// the note says which; the departures are the measurement's own numbers (Δ against −ω sin λ,
+/// the measured rate against the small-swing theory's fit); at the pole the spin's departure is
+/// 0 whatever the spin (Δ = −ω exactly, the closed form); the amplitude's grows as (A/L)², of
+/// the size of the swing's own precession (3/8)(A/L)².
+#[test]
+fn unit_rate_applies_only_to_a_slow_spin_and_a_small_swing() {
+    // The lab's default: λ = 49°, L = 10 m, A = 1 m, 1000 times the Earth's spin.
+    let (ok, m) = lab_unit_rate(1000.0, 49.0, 10.0, 1.0, 120.0);
+    assert_eq!(m.regime, FoucaultRegime::Precessing, "{}", m.note);
+    assert!(ok.holds, "{}", ok.note);
+    let (delta, e) = (m.theory_rate.unwrap(), m.expected_rate);
+    assert_eq!(
+        ok.spin_departure,
+        Some((delta - e).abs() / delta.abs().max(e.abs()))
+    );
+    let (r, fit) = (m.precession_rate.unwrap(), m.theory_fit_rate.unwrap());
+    assert_eq!(ok.amplitude_departure, Some((r - fit).abs() / fit.abs()));
+    assert!(
+        (ok.spin_ratio - 1000.0 * SIDEREAL_RATE / (STANDARD_GRAVITY / 10.0).sqrt()).abs() < 1e-15
+    );
+    assert!(
+        (ok.amplitude_ratio - 0.1).abs() < 1e-6,
+        "{}",
+        ok.amplitude_ratio
+    );
+    assert!(
+        ok.note.starts_with("-omega sin(lambda) applies"),
+        "{}",
+        ok.note
+    );
+
+    // A long pendulum: ω/√(g/L) = 0.21, the small-swing rate is off −ω sin λ by over 1 %.
+    let (long, m) = lab_unit_rate(1000.0, 49.0, 80.0, 1.0, 120.0);
+    assert_eq!(m.regime, FoucaultRegime::Precessing, "{}", m.note);
+    assert!(!long.holds);
+    assert!(long.spin_departure.unwrap() > UNIT_RATE_TOLERANCE);
+    assert!(long.amplitude_departure.unwrap() <= UNIT_RATE_TOLERANCE);
+    assert!(
+        long.note
+            .contains("the spin is not small against the pendulum")
+            && !long.note.contains("wide"),
+        "{}",
+        long.note
+    );
+
+    // A wide swing, A/L = 0.3: the measured rate leaves the small-swing theory's.
+    let (wide, m) = lab_unit_rate(1000.0, 49.0, 10.0, 3.0, 120.0);
+    assert_eq!(m.regime, FoucaultRegime::Precessing, "{}", m.note);
+    assert!(!wide.holds);
+    assert!(wide.spin_departure.unwrap() <= UNIT_RATE_TOLERANCE);
+    let a = wide.amplitude_departure.unwrap();
+    assert!(a > UNIT_RATE_TOLERANCE, "{a}");
+    // Of the size of the swing's own precession: within a factor 2 of (3/8)(A/L)².
+    let airy = 0.375 * 0.3_f64.powi(2);
+    assert!(a > 0.5 * airy && a < 2.0 * airy, "{a} vs {airy}");
+    assert!(
+        wide.note.contains("the swing is wide") && !wide.note.contains("spin is not small"),
+        "{}",
+        wide.note
+    );
+    // Growing as (A/L)²: doubling A/L from 0.1 to 0.2 multiplies it by about 4 (the spin's
+    // own part, common to both, aside).
+    let (a1, _) = lab_unit_rate(1000.0, 49.0, 10.0, 1.0, 120.0);
+    let (a2, _) = lab_unit_rate(1000.0, 49.0, 10.0, 2.0, 120.0);
+    let growth = a2.amplitude_departure.unwrap() / a1.amplitude_departure.unwrap();
+    assert!(growth > 2.5 && growth < 6.0, "{growth}");
+
+    // The pole: Δ = −ω exactly, so the spin's departure vanishes for a fast spin too.
+    let (pole, m) = lab_unit_rate(1000.0, 90.0, 80.0, 1.0, 120.0);
+    assert!(
+        pole.spin_departure.unwrap() < 1e-12,
+        "{:?} ({})",
+        pole.spin_departure,
+        m.note
+    );
+    assert!(pole.holds, "{}", pole.note);
+
+    // Negative control: a run that gives no steady turn is not said to follow −ω sin λ.
+    let (short, m) = lab_unit_rate(1000.0, 49.0, 10.0, 1.0, 5.0);
+    assert_ne!(m.regime, FoucaultRegime::Precessing);
+    assert!(!short.holds && short.amplitude_departure.is_none());
+    assert!(
+        short
+            .note
+            .starts_with("-omega sin(lambda) cannot be compared"),
+        "{}",
+        short.note
+    );
 }

@@ -3,11 +3,12 @@
 // visible (discs 1 and 3 coincide; the rates of 2.99 become undefined and the core says so).
 import * as THREE from "three";
 import { bodyAngularVelocity, eulerRates, eulerToMatrix, matrixToEuler, rotationAxis } from "../core";
-import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
-import { AXIS_COLORS, bodyAxes, disposeTree, fixedAxes, matrix4 } from "../view";
+import { angles, DEG, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
+import { AXIS_COLORS, axisLabels, bodyAxes, disposeTree, fixedAxes, matrix4 } from "../view";
 
 export const SEQUENCES = ["zxz", "zyz", "xyx", "xzx", "yxy", "yzy", "xyz", "xzy", "yxz", "yzx", "zxy", "zyx"];
 const AXIS_INDEX: Record<string, number> = { x: 0, y: 1, z: 2 };
+const A = angles("°");
 
 /** Column k of a row-major 3×3 matrix. */
 function column(m: ArrayLike<number>, k: number): THREE.Vector3 {
@@ -17,6 +18,10 @@ function column(m: ArrayLike<number>, k: number): THREE.Vector3 {
 export const eulerScene: SceneDef = {
   id: "euler",
   title: "Euler angles",
+  short: "Euler",
+  angleUnit: "°",
+  pinned: ["angles", "angle", "axis", "gimbalLock"],
+  describe: "a plate with a fin turned by three Euler angles, the three rotation discs of a gimbal and the dashed line of nodes; the fixed axes x, y, z and the body axes 1, 2, 3 are labelled",
   blurb:
     "R = R_a(α) R_b(β) R_c(γ) (intrinsic; extrinsic reverses the product). The unit's φ, θ, ψ are intrinsic zxz. " +
     "Each disc is the plane of one rotation; the dashed line is the line of nodes (the axis of the middle rotation). " +
@@ -35,6 +40,7 @@ export const eulerScene: SceneDef = {
     const root = new THREE.Group();
     ctx.scene.add(root);
     root.add(fixedAxes(2.6));
+    axisLabels(ctx.labels, 2.6, ["x", "y", "z"]);
 
     // The body: a flat plate with a fin, so that every orientation reads at a glance.
     const body = new THREE.Group();
@@ -44,6 +50,7 @@ export const eulerScene: SceneDef = {
     fin.position.set(-0.5, 0, 0.32);
     body.add(plate, fin, bodyAxes(1.7));
     root.add(body);
+    axisLabels(ctx.labels, 1.7, ["1", "2", "3"], [], { obj: body });
 
     // The three rotation discs (radii 2.2, 1.95, 1.7), coloured as the axis they turn about.
     const discs = [2.2, 1.95, 1.7].map((r) => {
@@ -103,33 +110,43 @@ export const eulerScene: SceneDef = {
         back.free();
         const omega = bodyAngularVelocity(angles, rates, seq, intrinsic);
         let ratesText: string;
+        let ratesDetail: string | undefined;
         let ratesValue: number[] | string;
         try {
           ratesValue = Array.from(eulerRates(angles, omega, seq, intrinsic));
-          ratesText = fmtVec(ratesValue.map((r) => r / DEG), 4) + " °/s";
+          ratesText = A.vec(ratesValue, 4);
         } catch (e) {
+          // The core's error, in full in the value and the tooltip; in a few words on the page.
           const err = e as Error;
           ratesValue = `${err.name}: ${err.message}`;
-          ratesText = ratesValue;
+          ratesText = `none at gimbal lock (${err.name})`;
+          ratesDetail = ratesValue;
         }
         const sep = normals[0].angleTo(normals[2]);
         state = {
           angles, rates, R,
           readouts: [
-            { key: "angles", label: "angles (rad)", value: angles, text: fmtVec(angles) },
-            { key: "R", label: "R (rows)", value: Array.from(R), text: [0, 1, 2].map((i) => fmtVec(R.subarray(3 * i, 3 * i + 3), 4)).join(" ") },
-            { key: "axis", label: "rotation axis", value: [ax, ay, az], text: fmtVec([ax, ay, az]) },
-            { key: "angle", label: "rotation angle", value: angle, text: `${fmt(angle / DEG)}°` },
-            { key: "recovered", label: "angles from R (rad)", value: recovered, text: fmtVec(recovered) },
+            { key: "angles", label: `angles (${A.name})`, value: angles, text: A.vec(angles, 5, 1) },
+            { key: "R", label: "R (rows)", value: Array.from(R), text: [0, 1, 2].map((i) => fmtVec(R.subarray(3 * i, 3 * i + 3), 4, 1)).join(" ") },
+            { key: "axis", label: "rotation axis", value: [ax, ay, az], text: fmtVec([ax, ay, az], 4, 1) },
+            { key: "angle", label: `rotation angle (${A.name})`, value: angle, text: A.angle(angle, 6) },
+            { key: "recovered", label: `angles from R (${A.name})`, value: recovered, text: A.vec(recovered, 5, 1) },
             { key: "gimbalLock", label: "gimbal lock", value: lock, text: lock ? "yes: only a sum/difference of the outer angles is defined" : "no", warn: lock },
-            { key: "discSeparation", label: "disc 1 ∠ disc 3", value: sep, text: `${fmt(sep / DEG, 4)}°`, warn: lock },
-            { key: "omegaBody", label: "ω body (rad/s, 2.99)", value: Array.from(omega), text: fmtVec(omega) },
-            { key: "ratesFromOmega", label: "rates from ω", value: ratesValue, text: ratesText, warn: typeof ratesValue === "string" },
+            { key: "discSeparation", label: `disc 1 ∠ disc 3 (${A.name})`, value: sep, text: A.angle(sep, 4), warn: lock },
+            { key: "omegaBody", label: `ω body (${A.perSecond}, 2.99)`, value: Array.from(omega), text: A.vec(omega, 5) },
+            { key: "ratesFromOmega", label: `rates from ω (${A.perSecond})`, value: ratesValue, text: ratesText, detail: ratesDetail, warn: typeof ratesValue === "string" },
           ],
         };
       },
       readouts() {
         return state?.readouts ?? [];
+      },
+      frame() {
+        // The outer disc's sphere holds every disc and the body, whatever the angles.
+        return { center: new THREE.Vector3(), radius: 2.3 };
+      },
+      main() {
+        return [body, ...discs];
       },
       dispose() {
         disposeTree(root);

@@ -3,11 +3,12 @@
 // rest). The particle is free, or tied to the axis by a spring; the core integrates it in the
 // rotating frame with every fictitious force, maps it back to the fixed frame, and splits its
 // acceleration into the relative, Coriolis, centripetal and Euler terms. Every number comes from
-// the core; the scene only draws.
+// the core; the scene only draws. The loop restarts when the particle reaches the table's rim
+// (read from the core's path), so that it never leaves the table.
 import * as THREE from "three";
 import { MovingFrame, SpringParticle, sampleTimes, simulateParticle } from "../core";
-import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
-import { Arrow, bufferLine, disposeTree, fixedAxes, matrix4, vec } from "../view";
+import { fmt, fmtVec, type Params, type Readout, type Rect, type SceneDef } from "../scene";
+import { Arrow, axisLabels, bufferLine, disposeTree, fixedAxes, Labels, matrix4, projectBox, vec } from "../view";
 
 /** Drawn radius of the turntable (m). */
 const TABLE = 1;
@@ -18,12 +19,11 @@ const ACC_SCALE = 0.3;
 const VEL_SCALE = 0.5;
 /** Samples of the precomputed paths drawn as trails. */
 const TRAIL_SAMPLES = 600;
-/** The animation loops after this time (s), or sooner for a fast free particle (it has left
- * the view by then); see `loopTime`. */
+/** The animation loops after this time (s), or at the last sample of the particle's path (the
+ * core's samples over LOOP_MAX) before it first leaves the table. */
 const LOOP_MAX = 8;
-const LOOP_MIN = 1.5;
-/** Distance (m) a free particle travels before the loop restarts. */
-const FREE_RUN = 3;
+/** Below this half-view width (CSS px) the view titles take their short form. */
+const SHORT_TITLES = 330;
 
 /** Colours of the arrows (and of the legend). */
 const COLOURS = {
@@ -71,23 +71,31 @@ class Path {
 export const framesScene: SceneDef = {
   id: "frames",
   title: "Rotating frames",
+  short: "Frames",
+  angleUnit: "rad",
+  pinned: ["tau", "speedFixed", "speedRotating", "residual"],
+  describe: "a turntable and a particle seen side by side from the fixed frame (left, the table turns) and from the table's own frame (right, the table at rest), with its path and the arrows of its acceleration and of the forces per mass; the fixed axes x′, y′ and the table's axes x, y are labelled",
   blurb:
     "A particle seen from the fixed frame (left, the turntable turns) and from the turntable's own frame (right, the table at rest). " +
     "The core integrates it in the rotating frame, m a_rel = F − 2m ω×v − m ω×(ω×r) − m ω̇×r (2.26–2.28), and maps it back (2.20–2.21): " +
-    "a free particle (k = 0) runs straight on the left and curves on the right. Arrows on the right: the relative acceleration and the forces per mass that make it.",
+    "a free particle (k = 0) runs straight on the left and curves on the right. Arrows on the right: the relative acceleration and the forces per mass that make it. " +
+    "Primed axes (x′, y′) are fixed, unprimed ones (x, y) turn with the table; the loop restarts when the particle reaches the rim.",
   params: [
     { kind: "number", key: "omega", label: "table ω", unit: "rad/s", min: -2, max: 2, step: 0.05, value: 0.8 },
     { kind: "number", key: "omegaDot", label: "table ω̇", unit: "rad/s²", min: -0.5, max: 0.5, step: 0.05, value: 0 },
     { kind: "number", key: "stiffness", label: "spring k (m = 1 kg)", unit: "N/m", min: 0, max: 4, step: 0.1, value: 0 },
     { kind: "number", key: "r0", label: "start radius r₀", unit: "m", min: 0, max: 1, step: 0.05, value: 0.8 },
     { kind: "number", key: "speed", label: "launch speed v₀", unit: "m/s", min: 0, max: 2, step: 0.05, value: 0.6 },
-    { kind: "number", key: "direction", label: "launch direction", unit: "°", min: -180, max: 180, step: 5, value: 150 },
+    { kind: "number", key: "direction", label: "launch direction", unit: "rad", min: -3.15, max: 3.15, step: 0.05, value: 2.6 },
     { kind: "choice", key: "launch", label: "v₀ is given in the", options: ["fixed frame", "rotating frame"], value: "fixed frame" },
   ],
   create(ctx) {
     const root = new THREE.Group();
     ctx.scene.add(root);
     root.add(fixedAxes(1.6, 0.6));
+    // The two views' labels: the fixed axes (primed, the unit's convention) and the table's.
+    const rightLabels = new Labels(ctx.overlay);
+    let boxes: Rect[] = [];
 
     // The turntable: a disk with spokes and its own x (red) and y (green) axes; carries the
     // rotating view's path and arrows.
@@ -110,6 +118,10 @@ export const framesScene: SceneDef = {
     for (const [k, c] of [[0, 0xe5484d], [1, 0x46a758]] as const) {
       const dir = new THREE.Vector3().setComponent(k, 1);
       table.add(new THREE.ArrowHelper(dir, new THREE.Vector3(0, 0, -0.04), TABLE * 1.15, c, 0.1, 0.05));
+    }
+    for (const l of [ctx.labels, rightLabels]) {
+      axisLabels(l, 1.6, ["x′", "y′", "z′"]);
+      axisLabels(l, TABLE * 1.15, ["x", "y", "z"], [2], { obj: table });
     }
 
     const ball = new THREE.Mesh(new THREE.SphereGeometry(0.045, 24, 16), new THREE.MeshStandardMaterial({ color: 0xe5484d }));
@@ -140,25 +152,25 @@ export const framesScene: SceneDef = {
 
     // The rotating view's camera: the orbit camera carried along by the table.
     const rotCam = new THREE.PerspectiveCamera();
-    let fullAspect = ctx.camera.aspect;
     ctx.camera.position.set(1.75, -3.1, 2.85);
     ctx.target.set(0, 0, -0.1);
 
     // Labels over the two halves, and the legend under the controls.
-    const label = (text: string, left: string) => {
+    // The two views' titles (HUD: each stays within its half), short on a narrow screen.
+    const TITLES = [
+      ["Fixed (inertial) frame — the table turns", "Fixed frame"],
+      ["Rotating frame — carried by the table", "Rotating frame"],
+    ];
+    const titles = TITLES.map(([long]) => {
       const d = document.createElement("div");
-      d.textContent = text;
-      Object.assign(d.style, { position: "absolute", top: "0.5rem", left, font: "600 0.85rem system-ui, sans-serif", color: "#dfe6ee", background: "rgba(16,20,24,0.7)", padding: "0.15rem 0.45rem", borderRadius: "3px" });
+      d.className = "hud-title hud frames-title";
+      d.textContent = long;
       ctx.overlay.append(d);
       return d;
-    };
-    label("Fixed (inertial) frame — the table turns", "0.6rem");
-    const rightLabel = label("Rotating frame — carried by the table", "calc(50% + 0.6rem)");
+    });
     const divider = document.createElement("div");
     Object.assign(divider.style, { position: "absolute", top: "0", bottom: "0", left: "50%", width: "1px", background: "#3a4654" });
     ctx.overlay.append(divider);
-    const clock = label("", "0.6rem");
-    Object.assign(clock.style, { top: "auto", bottom: "0.5rem", fontWeight: "400" });
 
     const legend = document.createElement("div");
     legend.setAttribute("role", "list");
@@ -233,7 +245,7 @@ export const framesScene: SceneDef = {
 
         // At t = 0 the frames coincide; the launch velocity is given in one of them (polar input).
         r0 = Float64Array.of(Number(p.r0), 0, 0);
-        const dir = Number(p.direction) * DEG;
+        const dir = Number(p.direction);
         const launch = Float64Array.of(Number(p.speed) * Math.cos(dir), Number(p.speed) * Math.sin(dir), 0);
         let v0fixed: Float64Array;
         if (p.launch === "rotating frame") {
@@ -245,16 +257,23 @@ export const framesScene: SceneDef = {
           v0rel = m.velocity;
           m.free();
         }
-        // A free particle leaves the view: restart once it has run FREE_RUN metres.
-        const s0 = norm(v0fixed);
-        loop = k > 0 || s0 * LOOP_MAX < FREE_RUN ? LOOP_MAX : Math.max(LOOP_MIN, FREE_RUN / s0);
-
         energy0 = particle.energy(r0, v0fixed);
         jacobi0 = particle.jacobiIntegral(frame0, r0, v0rel);
 
-        // The paths over one loop, both views, from one integration.
+        // The path over LOOP_MAX; the loop ends where it first leaves the table (|r| is the same
+        // in both frames, which share the axis), and the path is sampled again over the loop.
+        loop = LOOP_MAX;
         times = sampleTimes(0, loop, TRAIL_SAMPLES);
         states = simulateParticle(frame0, r0, v0rel, loop, times, MASS, k);
+        for (let i = 1; i < TRAIL_SAMPLES; i++) {
+          if (norm(states.subarray(6 * i, 6 * i + 3)) > TABLE) {
+            // Leaving at once (from the rim, outwards): the first sample interval.
+            loop = times[Math.max(1, i - 1)];
+            times = sampleTimes(0, loop, TRAIL_SAMPLES);
+            states = simulateParticle(frame0, r0, v0rel, loop, times, MASS, k);
+            break;
+          }
+        }
         for (let i = 0; i < TRAIL_SAMPLES; i++) {
           const r = states.subarray(6 * i, 6 * i + 3), v = states.subarray(6 * i + 3, 6 * i + 6);
           rotatingPath.set(i, r);
@@ -318,14 +337,16 @@ export const framesScene: SceneDef = {
         centrifugal.set(vec(fict.centrifugal), atRel);
         euler.set(vec(fict.euler), atRel);
         force.set(vec(fict.inertial), atRel);
-        clock.textContent = `t = ${fmt(tau, 4)} s of a ${fmt(loop, 3)} s loop`;
 
         const residual = Math.hypot(terms.sum[0] - aTrue[0], terms.sum[1] - aTrue[1], terms.sum[2] - aTrue[2]);
+        // The scale of the terms summed: the largest of them.
+        const aScale = Math.max(...[terms.relative, terms.coriolis, terms.centripetal, terms.euler, aTrue].map(norm));
         const uniform = Number(p.omegaDot) === 0;
         const eDrift = energy - energy0, jDrift = jacobi - jacobi0;
         const vecOut = (key: string, label: string, x: ArrayLike<number>, digits = 4): Readout => ({ key, label, value: Array.from(x), text: fmtVec(x, digits) });
         out = [
-          { key: "tau", label: "t in the loop (s)", value: tau, text: fmt(tau, 5) },
+          { key: "tau", label: "t in the loop (s)", value: tau, text: fmt(tau, 4) },
+          { key: "loop", label: "loop (s), to the rim or 8 s", value: loop, text: fmt(loop, 4) },
           { key: "omegaNow", label: "ω(t) of the table (rad/s)", value: omegaNow[2], text: fmt(omegaNow[2], 6) },
           vecOut("positionFixed", "r′ fixed frame (m)", fixed.position),
           vecOut("positionRotating", "r rotating frame (m)", r),
@@ -339,55 +360,77 @@ export const framesScene: SceneDef = {
           vecOut("euler", "Euler ω̇×r", terms.euler),
           vecOut("sum", "sum of the four (m/s²)", terms.sum),
           vecOut("accelerationFixed", "r̈′ = F/m (m/s²)", aTrue),
-          { key: "residual", label: "|sum − F/m| (m/s²)", value: residual, text: fmt(residual, 3), warn: residual > 1e-12 },
-          { key: "energy", label: "E = ½mṙ′² + ½kr′² (J)", value: energy, text: `${fmt(energy, 9)} (drift ${fmt(eDrift, 2)})` },
+          { key: "residual", label: "|sum − F/m| (m/s²)", value: residual, text: fmt(residual, 3, aScale), warn: residual > 1e-12 },
+          { key: "energy", label: "E = ½mṙ′² + ½kr′² (J)", value: energy, text: `${fmt(energy, 9)} (drift ${fmt(eDrift, 2, Math.max(Math.abs(energy), Math.abs(energy0)))})` },
           {
             key: "jacobi",
             label: "Jacobi ½mv² + ½kr² − ½m|ω×r|² (J)",
             value: jacobi,
-            text: `${fmt(jacobi, 9)} (${uniform ? "conserved, drift" : "not conserved: ω̇ ≠ 0, change"} ${fmt(jDrift, 2)})`,
+            text: `${fmt(jacobi, 9)} (${uniform ? "conserved, drift" : "not conserved: ω̇ ≠ 0, change"} ${fmt(jDrift, 2, Math.max(Math.abs(jacobi), Math.abs(jacobi0), Math.abs(energy)))})`,
           },
         ];
       },
       readouts() {
         return out;
       },
+      viewports(w, h) {
+        const half = Math.floor(w / 2);
+        return [{ x: 0, y: 0, w: half, h }, { x: half, y: 0, w: w - half, h }];
+      },
       render(renderer, scene, camera) {
         const size = renderer.getSize(new THREE.Vector2());
-        const w = size.x, h = size.y, half = Math.floor(w / 2);
-        fullAspect = w / h;
+        const w = size.x, h = size.y;
+        const [left, right] = this.viewports!(w, h);
+        // Titles: the long form where a half has room for it.
+        const short = left.w < SHORT_TITLES ? 1 : 0;
+        titles.forEach((d, i) => {
+          if (d.textContent !== TITLES[i][short]) d.textContent = TITLES[i][short];
+        });
+        titles[1].style.left = `${right.x + 8}px`;
+        titles[0].style.left = "8px";
+        for (const d of titles) d.style.maxWidth = `${left.w - 16}px`;
+        divider.style.left = `${right.x}px`;
         renderer.setScissorTest(true);
         // Left: the fixed frame, through the orbit camera.
-        camera.aspect = half / h;
-        camera.updateProjectionMatrix();
+        ctx.aim(camera, left);
         camera.layers.set(0);
         camera.layers.enable(FIXED_ONLY);
-        renderer.setViewport(0, 0, half, h);
-        renderer.setScissor(0, 0, half, h);
+        renderer.setViewport(left.x, 0, left.w, h);
+        renderer.setScissor(left.x, 0, left.w, h);
         renderer.render(scene, camera);
         // Right: the same camera carried by the table (turned with it about the axis).
         rotCam.fov = camera.fov;
         rotCam.near = camera.near;
         rotCam.far = camera.far;
-        rotCam.aspect = (w - half) / h;
-        rotCam.updateProjectionMatrix();
+        ctx.aim(rotCam, right);
         rotCam.position.copy(camera.position).applyQuaternion(table.quaternion);
         rotCam.quaternion.copy(table.quaternion).multiply(camera.quaternion);
         rotCam.layers.set(0);
         rotCam.layers.enable(ROTATING_ONLY);
-        renderer.setViewport(half, 0, w - half, h);
-        renderer.setScissor(half, 0, w - half, h);
+        renderer.setViewport(right.x, 0, right.w, h);
+        renderer.setScissor(right.x, 0, right.w, h);
         renderer.render(scene, rotCam);
         renderer.setScissorTest(false);
         renderer.setViewport(0, 0, w, h);
-        rightLabel.style.left = `calc(${(100 * half) / w}% + 0.6rem)`;
+        rotCam.updateMatrixWorld();
+        ctx.labels.update(camera, left);
+        rightLabels.update(rotCam, right);
+        boxes = [projectBox([disk], camera, left), projectBox([disk], rotCam, right)].filter((r): r is Rect => r !== null);
+      },
+      frame() {
+        return { center: new THREE.Vector3(0, 0, -0.05), radius: TABLE * 1.12 };
+      },
+      main() {
+        return [disk];
+      },
+      mainBoxes() {
+        return boxes;
       },
       dispose() {
         release();
         disposeTree(root);
+        rightLabels.dispose();
         ctx.camera.layers.set(0);
-        ctx.camera.aspect = fullAspect;
-        ctx.camera.updateProjectionMatrix();
       },
     };
   },

@@ -4,14 +4,19 @@
 // space cone. Every number comes from the core's exact solution.
 import * as THREE from "three";
 import { FreeSymmetricTop, RigidBody } from "../core";
-import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
-import { Arrow, bodyAxes, cone, disposeTree, fixedAxes, quaternion, Trail, vec } from "../view";
+import { angles, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
+import { Arrow, axisLabels, bodyAxes, cone, disposeTree, fixedAxes, quaternion, Trail, vec } from "../view";
 
 const SLANT = 2.4;
+const A = angles("rad");
 
 export const freeTopScene: SceneDef = {
   id: "freetop",
   title: "Free top",
+  short: "Free top",
+  angleUnit: "rad",
+  pinned: ["shape", "precessionRate", "bodyConeAngle", "spaceConeAngle"],
+  describe: "a torque-free symmetric top with its body cone (orange) rolling on the space cone (blue) around the fixed angular momentum L; ω (white) lies along their line of contact; the fixed axes x, y, z and the body axes 1, 2, 3 are labelled",
   blurb:
     "A torque-free symmetric top: ω precesses about the symmetry axis at Ω = (I₁ − I₃) ω₃ / I₁ in the body (2.83). " +
     "The body cone (orange, carried by the body) rolls on the space cone (blue, around the fixed L); they touch along ω (white).",
@@ -25,10 +30,12 @@ export const freeTopScene: SceneDef = {
     const root = new THREE.Group();
     ctx.scene.add(root);
     root.add(fixedAxes(3));
+    axisLabels(ctx.labels, 3, ["x", "y", "z"]);
 
     const body = new THREE.Group();
     root.add(body);
     body.add(bodyAxes(1.2));
+    axisLabels(ctx.labels, 1.2, ["1", "2", "3"], [], { obj: body });
     let solid: THREE.Mesh | null = null;
     let bodyCone: THREE.Mesh | null = null;
     let spaceCone: THREE.Mesh | null = null;
@@ -37,6 +44,8 @@ export const freeTopScene: SceneDef = {
     const omegaArrow = new Arrow(0xffffff, 1);
     const lArrow = new Arrow(0x7cc4ff, 1);
     root.add(omegaArrow.obj, lArrow.obj);
+    const omegaLabel = ctx.labels.add("ω", new THREE.Vector3(), { className: "label3d axis" });
+    const lLabel = ctx.labels.add("L", new THREE.Vector3(), { className: "label3d axis", color: "#7cc4ff" });
     const trail = new Trail(600, 0xf2b84b);
     root.add(trail.obj);
 
@@ -88,6 +97,7 @@ export const freeTopScene: SceneDef = {
         lHat = L.lengthSq() > 0 ? L.clone().normalize() : new THREE.Vector3(0, 0, 1);
         spaceConeHolder.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1), lHat);
         lArrow.set(lHat.clone().multiplyScalar(SLANT * 1.15));
+        ctx.labels.move(lLabel, lHat.clone().multiplyScalar(SLANT * 1.22));
         trail.clear();
       },
       step(t) {
@@ -99,6 +109,7 @@ export const freeTopScene: SceneDef = {
         const wSpace = vec(w).applyQuaternion(att);
         const wDir = wSpace.lengthSq() > 0 ? wSpace.clone().normalize() : wSpace;
         omegaArrow.set(wDir.clone().multiplyScalar(SLANT));
+        ctx.labels.move(omegaLabel, wDir.clone().multiplyScalar(SLANT * 1.08));
         trail.push(wDir.clone().multiplyScalar(SLANT));
 
         const T = rigid.kineticEnergy(w);
@@ -110,19 +121,26 @@ export const freeTopScene: SceneDef = {
           { key: "t", label: "t (s)", value: t, text: fmt(t, 5) },
           { key: "shape", label: "shape", value: top.shape, text: top.shape },
           { key: "omega", label: "ω body (rad/s)", value: Array.from(w), text: fmtVec(w) },
-          { key: "attitude", label: "attitude [w,x,y,z]", value: Array.from(q), text: fmtVec(q, 4) },
+          { key: "attitude", label: "attitude [w,x,y,z]", value: Array.from(q), text: fmtVec(q, 4, 1) },
           { key: "precessionRate", label: "Ω (rad/s, 2.83)", value: top.precessionRate, text: fmt(top.precessionRate) },
           { key: "amplitude", label: "A (rad/s)", value: top.amplitude, text: fmt(top.amplitude) },
-          { key: "bodyConeAngle", label: "body cone", value: top.bodyConeAngle, text: `${fmt(top.bodyConeAngle / DEG, 5)}°` },
-          { key: "spaceConeAngle", label: "space cone", value: top.spaceConeAngle, text: `${fmt(top.spaceConeAngle / DEG, 5)}°` },
+          { key: "bodyConeAngle", label: `body cone (${A.name})`, value: top.bodyConeAngle, text: A.angle(top.bodyConeAngle) },
+          { key: "spaceConeAngle", label: `space cone (${A.name})`, value: top.spaceConeAngle, text: A.angle(top.spaceConeAngle) },
           { key: "energy", label: "T (J), conserved", value: T0, text: fmt(T0, 8) },
-          { key: "energyNow", label: "T(t) from ω(t)", value: T, text: `${fmt(T, 8)} (rel. drift ${fmt(T0 > 0 ? (T - T0) / T0 : 0, 2)})` },
+          { key: "energyNow", label: "T(t) from ω(t) (J)", value: T, text: `${fmt(T, 8)} (rel. drift ${fmt(T0 > 0 ? (T - T0) / T0 : 0, 2, 1)})` },
           { key: "angularMomentum", label: "|L| (kg·m²/s)", value: L0, text: fmt(L0, 8) },
-          { key: "angularMomentumNow", label: "|L(t)| from ω(t)", value: Lmag, text: fmt(Lmag, 8) },
+          { key: "angularMomentumNow", label: "|L(t)| from ω(t) (kg·m²/s)", value: Lmag, text: `${fmt(Lmag, 8)} (rel. drift ${fmt(L0 > 0 ? (Lmag - L0) / L0 : 0, 2, 1)})` },
         ];
       },
       readouts() {
         return out;
+      },
+      frame() {
+        // The cones' slant and the L arrow, about the fixed point.
+        return { center: new THREE.Vector3(), radius: SLANT * 1.2 };
+      },
+      main() {
+        return [body, spaceConeHolder];
       },
       dispose() {
         free();

@@ -6,8 +6,8 @@
 // the steady-precession roots used by the presets, and the energy recomputed from the state at t.
 import * as THREE from "three";
 import { eulerToMatrix, HeavyTop } from "../core";
-import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
-import { bufferLine, disposeTree, fixedAxes, matrix4 } from "../view";
+import { angles, fmt, type Params, type Readout, type SceneDef } from "../scene";
+import { axisLabels, bufferLine, disposeTree, fixedAxes, matrix4 } from "../view";
 
 export const PRESETS = ["loops", "waves", "cusps", "steady precession", "sleeping", "custom"];
 
@@ -18,13 +18,17 @@ const PATH_SAMPLES = 3000;
 const V_SAMPLES = 240;
 /** The bright trail keeps this many points at most. */
 const TRAIL_CAPACITY = 4000;
+/** The scene's angle unit: radians, as its rate sliders (rad/s) and the unit's equations. */
+const A = angles("rad");
+/** Below this stage width (CSS px) the V(θ) inset starts folded, so that it does not cover the top. */
+const NARROW_STAGE = 600;
 
 /** The initial state a preset starts from: θ₀ (rad), θ̇₀, φ̇₀ (rad/s), given the spin ω₃ (the
  * steady-precession root comes from the core). Choosing initial conditions is not physics:
  * each preset is a fraction of the core's slow steady-precession rate at θ₀. */
 function initialState(p: Params): { theta0: number; thetaDot0: number; phiDot0: number } {
   const I1 = Number(p.I1), I3 = Number(p.I3), mgl = Number(p.mgl), w3 = Number(p.w3);
-  const theta0 = Number(p.theta0) * DEG;
+  const theta0 = Number(p.theta0);
   const preset = String(p.preset);
   if (preset === "sleeping") return { theta0: 0, thetaDot0: 0, phiDot0: 0 };
   if (preset === "custom") return { theta0, thetaDot0: Number(p.thetaDot0), phiDot0: Number(p.phiDot0) };
@@ -99,25 +103,40 @@ class PotentialPlot {
   private y1 = 1;
   private ePrime = 0;
   private turning: number[] = [];
-  private readonly W = 330;
-  private readonly H = 190;
+  private readonly W = 300;
+  private readonly H = 170;
   private readonly pad = { l: 44, r: 10, t: 22, b: 28 };
 
-  constructor(host: HTMLElement) {
+  /** The inset (a HUD element: the camera keeps the top clear of it) with its fold button. */
+  readonly box: HTMLElement;
+  readonly toggle: HTMLButtonElement;
+
+  constructor(host: HTMLElement, open: boolean) {
+    this.box = document.createElement("div");
+    this.box.className = "inset hud heavytop-inset";
+    this.toggle = document.createElement("button");
+    this.toggle.type = "button";
+    this.toggle.addEventListener("click", () => this.setOpen(this.canvas.hidden));
     this.canvas = document.createElement("canvas");
     this.canvas.className = "heavytop-potential";
     const dpr = Math.min(2, window.devicePixelRatio || 1);
     this.canvas.width = this.W * dpr;
     this.canvas.height = this.H * dpr;
-    Object.assign(this.canvas.style, {
-      position: "absolute", left: "0.6rem", top: "0.6rem", width: `${this.W}px`, height: `${this.H}px`,
-      background: "rgba(16, 20, 24, 0.82)", border: "1px solid #2a323c", borderRadius: "4px",
-    });
+    Object.assign(this.canvas.style, { width: `${this.W}px`, height: `${this.H}px` });
     this.canvas.setAttribute("role", "img");
     this.canvas.setAttribute("aria-label", "effective potential V(θ) with the energy line E′ and the turning points");
-    host.append(this.canvas);
+    this.box.append(this.toggle, this.canvas);
+    host.append(this.box);
     this.g = this.canvas.getContext("2d") as CanvasRenderingContext2D;
     this.g.scale(dpr, dpr);
+    this.setOpen(open);
+  }
+
+  /** Shows or folds the plot (the button stays). */
+  setOpen(open: boolean): void {
+    this.canvas.hidden = !open;
+    this.toggle.textContent = open ? "V(θ) ▾ hide" : "V(θ) ▸ show";
+    this.toggle.setAttribute("aria-expanded", String(open));
   }
 
   /** New samples: θ grid (rad), V(θ) from the core, E', turning points. */
@@ -153,15 +172,16 @@ class PotentialPlot {
     g.clearRect(0, 0, W, H);
     g.font = "11px system-ui, sans-serif";
     g.fillStyle = "#9aa4b1";
-    g.fillText("V(θ) (J, 2.110)   E′ (2.109)", P.l, 14);
+    g.fillText("V(θ) (J, 2.110) · E′ (J, 2.109)", P.l, 14);
     // Frame and θ ticks (degrees).
     g.strokeStyle = "#3a4654";
     g.lineWidth = 1;
     g.strokeRect(P.l, P.t, W - P.l - P.r, H - P.t - P.b);
-    g.fillText(`${fmt(this.x0 / DEG, 3)}°`, P.l - 4, H - 10);
-    const right = `${fmt(this.x1 / DEG, 3)}°`;
+    g.fillText(A.angle(this.x0, 3), P.l - 4, H - 10);
+    const right = A.angle(this.x1, 3);
     g.fillText(right, W - P.r - g.measureText(right).width, H - 10);
-    g.fillText("θ", (P.l + W - P.r) / 2, H - 10);
+    const axis = `θ (${A.name})`;
+    g.fillText(axis, (P.l + W - P.r - g.measureText(axis).width) / 2, H - 10);
     g.save();
     g.beginPath();
     g.rect(P.l, P.t, W - P.l - P.r, H - P.t - P.b);
@@ -278,6 +298,10 @@ class TipTrail {
 export const heavyTopScene: SceneDef = {
   id: "heavytop",
   title: "Heavy top",
+  short: "Heavy top",
+  angleUnit: "rad",
+  pinned: ["motionClass", "turningPoints", "nutationPeriod", "meanPrecessionRate"],
+  describe: "a spinning top on a pivot under gravity, the tip of its axis moving on a translucent sphere between two dashed turning circles, with its trail; an inset plots the effective potential V(θ); the axes x, y, z are labelled",
   blurb:
     "A symmetric top on a pivot under gravity, exactly (θ by Jacobi's sn, φ and ψ by elliptic integrals; 2.102–2.121). " +
     "The tip of its axis moves on the sphere between the turning circles θ₁, θ₂ (dashed), where E′ = V(θ) (inset): " +
@@ -287,9 +311,9 @@ export const heavyTopScene: SceneDef = {
   params: [
     { kind: "choice", key: "preset", label: "Motion", options: PRESETS, value: "loops" },
     { kind: "number", key: "w3", label: "spin ω₃", unit: "rad/s", min: 0, max: 40, step: 0.5, value: 9 },
-    { kind: "number", key: "theta0", label: "tilt θ₀", unit: "°", min: 0, max: 170, step: 1, value: 50 },
-    { kind: "number", key: "phiDot0", label: "φ̇₀ (custom)", unit: "rad/s", min: -3, max: 3, step: 0.05, value: 0.5 },
-    { kind: "number", key: "thetaDot0", label: "θ̇₀ (custom)", unit: "rad/s", min: -3, max: 3, step: 0.05, value: 0 },
+    { kind: "number", key: "theta0", label: "tilt θ₀", unit: "rad", min: 0, max: 2.97, step: 0.01, value: 0.87, when: (p) => p.preset !== "sleeping" },
+    { kind: "number", key: "phiDot0", label: "φ̇₀", unit: "rad/s", min: -3, max: 3, step: 0.05, value: 0.5, when: (p) => p.preset === "custom" },
+    { kind: "number", key: "thetaDot0", label: "θ̇₀", unit: "rad/s", min: -3, max: 3, step: 0.05, value: 0, when: (p) => p.preset === "custom" },
     { kind: "number", key: "mgl", label: "m g l", unit: "N·m", min: 0, max: 5, step: 0.05, value: 1.5 },
     { kind: "number", key: "I1", label: "I₁ (pivot)", unit: "kg·m²", min: 0.2, max: 3, step: 0.05, value: 1 },
     { kind: "number", key: "I3", label: "I₃", unit: "kg·m²", min: 0.1, max: 3, step: 0.05, value: 0.5 },
@@ -298,6 +322,7 @@ export const heavyTopScene: SceneDef = {
     const root = new THREE.Group();
     ctx.scene.add(root);
     root.add(fixedAxes(2.8, 0.3));
+    axisLabels(ctx.labels, 2.8, ["x", "y", "z"]);
 
     // The sphere of the tip, its equator, and the turning circles θ₁, θ₂.
     const sphere = new THREE.Mesh(
@@ -341,7 +366,8 @@ export const heavyTopScene: SceneDef = {
     const trail = new TipTrail(0xf2b84b);
     root.add(trail.obj);
 
-    const plot = new PotentialPlot(ctx.overlay);
+    const plot = new PotentialPlot(ctx.overlay, ctx.overlay.clientWidth >= NARROW_STAGE);
+    plot.toggle.addEventListener("click", () => { drawn.dirty = true; });
 
     let top: HeavyTop | null = null;
     let p: Params = {};
@@ -396,24 +422,24 @@ export const heavyTopScene: SceneDef = {
         const sleepAt = HeavyTop.sleepingThreshold(I1, I3, mgl);
         const stable = top.isSleepingStable;
         let steady: number[] = [];
-        let steadyText = `none: |ω₃| < ${fmt(minSpin, 4)} rad/s (2.119)`;
+        let steadyText = `none: |ω₃| < ${A.rate(minSpin, 4)} (2.119)`;
         if (Math.abs(w3) >= minSpin) {
           const s = HeavyTop.steadyPrecession(I1, I3, mgl, s0.theta0, w3);
           steady = [s.slow, s.fast];
-          steadyText = `slow ${fmt(s.slow, 6)}, fast ${fmt(s.fast, 6)}`;
+          steadyText = `slow ${A.rate(s.slow, 6)}, fast ${A.rate(s.fast, 6)}`;
           s.free();
         }
         const init = Array.from(top.initialState);
         fixed = [
           { key: "motionClass", label: "motion", value: top.motionClass, text: top.motionClass },
-          { key: "initialRates", label: "φ̇₀, θ̇₀, ψ̇₀ (rad/s)", value: init.slice(3), text: fmtVec(init.slice(3)) },
-          { key: "omega3", label: "ω₃ (rad/s, 2.99)", value: top.omega3, text: fmt(top.omega3) },
-          { key: "turningPoints", label: "θ₁, θ₂", value: [th1, th2], text: `${fmt(th1 / DEG, 7)}°, ${fmt(th2 / DEG, 7)}°` },
+          { key: "initialRates", label: `φ̇₀, θ̇₀, ψ̇₀ (${A.perSecond})`, value: init.slice(3), text: A.vec(init.slice(3)) },
+          { key: "omega3", label: `ω₃ (${A.perSecond}, 2.99)`, value: top.omega3, text: A.rate(top.omega3, 6) },
+          { key: "turningPoints", label: `θ₁, θ₂ (${A.name})`, value: [th1, th2], text: `${A.angle(th1, 5)}, ${A.angle(th2, 5)}` },
           { key: "nutationPeriod", label: "nutation period (s)", value: top.nutationPeriod, text: fmt(top.nutationPeriod) },
-          { key: "meanPrecessionRate", label: "⟨φ̇⟩ (rad/s)", value: top.meanPrecessionRate, text: fmt(top.meanPrecessionRate) },
-          { key: "steadyRates", label: "steady φ̇ at θ₀ (2.116)", value: steady, text: steadyText },
-          { key: "minSpin", label: "min spin at θ₀ (2.119)", value: minSpin, text: `${fmt(minSpin)} rad/s` },
-          { key: "sleepingThreshold", label: "sleeping threshold", value: sleepAt, text: `${fmt(sleepAt)} rad/s` },
+          { key: "meanPrecessionRate", label: `⟨φ̇⟩ (${A.perSecond})`, value: top.meanPrecessionRate, text: A.rate(top.meanPrecessionRate) },
+          { key: "steadyRates", label: `steady φ̇ at θ₀ (${A.perSecond}, 2.116)`, value: steady, text: steadyText },
+          { key: "minSpin", label: `min spin at θ₀ (${A.perSecond}, 2.119)`, value: minSpin, text: A.rate(minSpin) },
+          { key: "sleepingThreshold", label: `sleeping threshold (${A.perSecond})`, value: sleepAt, text: A.rate(sleepAt) },
           {
             key: "sleepsStably", label: "upright top sleeps", value: stable,
             text: stable ? "stably (ω₃² > 4mglI₁/I₃²)" : "no: it would fall (ω₃² ≤ 4mglI₁/I₃²)", warn: !stable,
@@ -436,11 +462,11 @@ export const heavyTopScene: SceneDef = {
         const vNow = top.effectivePotential([theta])[0];
         drawn = { theta, vNow, dirty: true };
         const E = top.energy, pPhi = top.pPhi, pPsi = top.pPsi;
-        const rel = (a: number, b: number) => fmt(b !== 0 ? (a - b) / Math.abs(b) : a - b, 2);
+        const rel = (a: number, b: number) => fmt(b !== 0 ? (a - b) / Math.abs(b) : a - b, 2, 1);
         out = [
           { key: "t", label: "t (s)", value: t, text: fmt(t, 5) },
-          { key: "angles", label: "φ, θ, ψ (rad)", value: [phi, theta, psi], text: fmtVec([phi, theta, psi]) },
-          { key: "rates", label: "φ̇, θ̇, ψ̇ (rad/s)", value: [phiDot, thetaDot, psiDot], text: fmtVec([phiDot, thetaDot, psiDot]) },
+          { key: "angles", label: `φ, θ, ψ (${A.name})`, value: [phi, theta, psi], text: A.vec([phi, theta, psi], 5, 1) },
+          { key: "rates", label: `φ̇, θ̇, ψ̇ (${A.perSecond})`, value: [phiDot, thetaDot, psiDot], text: A.vec([phiDot, thetaDot, psiDot]) },
           ...fixed,
           { key: "energy", label: "E (J, 2.105), conserved", value: E, text: fmt(E, 10) },
           { key: "energyNow", label: "E(t) from the state", value: eNow, text: `${fmt(eNow, 10)} (rel. drift ${rel(eNow, E)})` },
@@ -460,10 +486,17 @@ export const heavyTopScene: SceneDef = {
         drawn.dirty = false;
         renderer.render(scene, camera);
       },
+      frame() {
+        // The sphere of the tip holds the top at every time, and the post with its foot.
+        return { center: new THREE.Vector3(), radius: R_TIP * 1.04 };
+      },
+      main() {
+        return [sphere];
+      },
       dispose() {
         free();
         disposeTree(root);
-        plot.canvas.remove();
+        plot.box.remove();
       },
     };
   },

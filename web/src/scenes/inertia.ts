@@ -2,19 +2,27 @@
 // nine standard solids, or an STL file), its inertia tensor, principal moments and axes, kind of
 // top and ellipsoid of inertia; then a displaced copy, the rotation axis of the displacement
 // (Euler) and its screw axis (Chasles), and the body carried from the first pose to the second by
-// the screw motion — every pose from the core (Screw.displacementAt).
+// the screw motion — every pose from the core (Screw.displacementAt). One picture at a time:
+// the body with its principal axes and ellipsoid (no displacement), or the displacement (Euler
+// or Chasles) without the ellipsoid; the controls shown are those that apply.
 import * as THREE from "three";
 import { eulerToMatrix, RigidBody, rotationAxis, screwAxis, type Screw } from "../core";
-import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
-import { disposeTree, fixedAxes, matrix4, vec } from "../view";
+import { angles, belowPrecision, DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
+import { axisLabels, disposeTree, fixedAxes, frameOf, matrix4, vec } from "../view";
 import { mergeVertices, parseStl } from "../stl";
 
 /** The shapes of the choice; each is the core constructor named in MEANING (RigidBody.cuboid,
  * .solidSphere, .sphericalShell, .solidCylinder, .solidCone, .ellipsoid, .thinRod, .thinDisk,
  * .thinRing; .fromMesh for an STL file). */
 export const SHAPES = ["cuboid", "sphere", "shell", "cylinder", "cone", "ellipsoid", "rod", "disk", "ring", "STL file"];
-/** Chasles: the general displacement (R, t); Euler: the rotation R about the CM (t = 0). */
-export const MOTIONS = ["Chasles", "Euler"];
+/** None: the body at rest with its principal axes and ellipsoid of inertia; Euler: the rotation
+ * R about the CM (t = 0); Chasles: the general displacement (R, t). */
+export const MOTIONS = ["none", "Euler", "Chasles"];
+const STL = "STL file";
+/** The shapes whose constructor takes b, and c (MEANING). */
+const USES_B = ["cuboid", "cylinder", "cone", "ellipsoid"];
+const USES_C = ["cuboid", "ellipsoid"];
+const A = angles("°");
 const UNITS: Record<string, number> = { m: 1, cm: 0.01, mm: 0.001 };
 
 /** What the sliders a, b, c mean for each shape (the core constructor's arguments). */
@@ -78,42 +86,52 @@ function poseMatrix(r: ArrayLike<number>, t: ArrayLike<number>): THREE.Matrix4 {
   return matrix4(r).setPosition(t[0], t[1], t[2]);
 }
 
-const rows = (m: ArrayLike<number>, d = 4) => [0, 1, 2].map((i) => fmtVec(Array.from(m).slice(3 * i, 3 * i + 3), d)).join(" ");
+/** A 3×3 matrix's rows; an entry below the precision at the matrix's largest entry is 0. */
+const rows = (m: ArrayLike<number>, d = 4) => {
+  const scale = Math.max(...Array.from(m, Math.abs));
+  return [0, 1, 2].map((i) => fmtVec(Array.from(m).slice(3 * i, 3 * i + 3), d, scale)).join(" ");
+};
 
 export const inertiaScene: SceneDef = {
   id: "inertia",
   title: "Inertia",
+  short: "Inertia",
+  angleUnit: "°",
+  pinned: (p) =>
+    p.motion === "Chasles" ? ["screwAngle", "screwSlide", "screwPitch", "s"] : p.motion === "Euler" ? ["eulerAngle", "eulerAxis", "s"] : ["mass", "principalMoments", "kind"],
+  describe: "a solid with its principal axes and ellipsoid of inertia, or, for a displacement, the solid carried from a grey ghost to an orange ghost along its screw axis (yellow); the x, y and z axes are labelled",
   blurb:
     "A solid's inertia tensor about its centre of mass (2.58–2.62), principal moments and axes (2.65–2.66; arrows gold I₁ ≤ violet I₂ ≤ teal I₃), " +
     "kind of top, triangle margins I₂+I₃−I₁, I₃+I₁−I₂, I₁+I₂−I₃ (zero for a lamina) and ellipsoid of inertia x·I·x = 1 (blue wire, semi-axes ∝ 1/√I_k, scaled to the body). " +
-    "The body (CM at the origin, grey ghost) is displaced by x ↦ R x + t, R = R_z(φ) R_x(θ) R_z(ψ), to the orange ghost. " +
+    "Choose a displacement to see it: the body (CM at the origin, grey ghost) is displaced by x ↦ R x + t, R = R_z(φ) R_x(θ) R_z(ψ), to the orange ghost. " +
     "Euler: a rotation about the CM is a turn about one axis through it. Chasles: any displacement is a screw — a turn about one line (yellow) and a slide along it; " +
     "the body moves along that screw, its CM on the helix.",
   params: [
-    { kind: "number", key: "mass", label: "mass m", unit: "kg", min: 0.1, max: 10, step: 0.1, value: 2 },
     { kind: "choice", key: "shape", label: "Shape", options: SHAPES, value: "cuboid" },
-    { kind: "number", key: "a", label: "a", unit: "m", min: 0.1, max: 2, step: 0.05, value: 1.2 },
-    { kind: "number", key: "b", label: "b", unit: "m", min: 0.1, max: 2, step: 0.05, value: 0.8 },
-    { kind: "number", key: "c", label: "c", unit: "m", min: 0.1, max: 2, step: 0.05, value: 0.4 },
-    { kind: "number", key: "density", label: "density ρ (STL)", unit: "kg/m³", min: 10, max: 20000, step: 10, value: 1000 },
-    { kind: "choice", key: "unit", label: "STL unit", options: Object.keys(UNITS), value: "m" },
+    { kind: "number", key: "mass", label: "mass m", unit: "kg", min: 0.1, max: 10, step: 0.1, value: 2, when: (p) => p.shape !== STL },
+    { kind: "number", key: "a", label: "a", unit: "m", min: 0.1, max: 2, step: 0.05, value: 1.2, when: (p) => p.shape !== STL },
+    { kind: "number", key: "b", label: "b", unit: "m", min: 0.1, max: 2, step: 0.05, value: 0.8, when: (p) => USES_B.includes(String(p.shape)) },
+    { kind: "number", key: "c", label: "c", unit: "m", min: 0.1, max: 2, step: 0.05, value: 0.4, when: (p) => USES_C.includes(String(p.shape)) },
+    { kind: "number", key: "density", label: "density ρ", unit: "kg/m³", min: 10, max: 20000, step: 10, value: 1000, when: (p) => p.shape === STL },
+    { kind: "choice", key: "unit", label: "file's unit", options: Object.keys(UNITS), value: "m", when: (p) => p.shape === STL },
     { kind: "choice", key: "motion", label: "Displacement", options: MOTIONS, value: MOTIONS[0] },
-    { kind: "number", key: "phi", label: "φ", unit: "°", min: -180, max: 180, step: 1, value: 60 },
-    { kind: "number", key: "theta", label: "θ", unit: "°", min: -180, max: 180, step: 1, value: 30 },
-    { kind: "number", key: "psi", label: "ψ", unit: "°", min: -180, max: 180, step: 1, value: 30 },
-    { kind: "number", key: "tx", label: "t_x (Chasles)", unit: "m", min: -3, max: 3, step: 0.05, value: 2 },
-    { kind: "number", key: "ty", label: "t_y (Chasles)", unit: "m", min: -3, max: 3, step: 0.05, value: 0 },
-    { kind: "number", key: "tz", label: "t_z (Chasles)", unit: "m", min: -3, max: 3, step: 0.05, value: 0.8 },
+    { kind: "number", key: "phi", label: "φ", unit: "°", min: -180, max: 180, step: 1, value: 60, when: (p) => p.motion !== "none" },
+    { kind: "number", key: "theta", label: "θ", unit: "°", min: -180, max: 180, step: 1, value: 30, when: (p) => p.motion !== "none" },
+    { kind: "number", key: "psi", label: "ψ", unit: "°", min: -180, max: 180, step: 1, value: 30, when: (p) => p.motion !== "none" },
+    { kind: "number", key: "tx", label: "t_x", unit: "m", min: -3, max: 3, step: 0.05, value: 2, when: (p) => p.motion === "Chasles" },
+    { kind: "number", key: "ty", label: "t_y", unit: "m", min: -3, max: 3, step: 0.05, value: 0, when: (p) => p.motion === "Chasles" },
+    { kind: "number", key: "tz", label: "t_z", unit: "m", min: -3, max: 3, step: 0.05, value: 0.8, when: (p) => p.motion === "Chasles" },
   ],
   create(ctx) {
     const root = new THREE.Group();
     ctx.scene.add(root);
     root.add(fixedAxes(3.2, 0.3));
+    axisLabels(ctx.labels, 3.2, ["x", "y", "z"]);
     ctx.camera.position.set(2.2, -5.2, 2.6);
 
     // Materials: the moving body, the two ghosts (first and second pose).
     const solidMat = new THREE.MeshStandardMaterial({ color: 0xc9d1d9, roughness: 0.55, side: THREE.DoubleSide, flatShading: false });
-    const startMat = new THREE.MeshStandardMaterial({ color: 0x8b98a5, transparent: true, opacity: 0.2, depthWrite: false, side: THREE.DoubleSide });
+    const startMat = new THREE.MeshStandardMaterial({ color: 0x8b98a5, transparent: true, opacity: 0.14, depthWrite: false, side: THREE.DoubleSide });
     const targetMat = new THREE.MeshStandardMaterial({ color: 0xf08c3c, transparent: true, opacity: 0.3, depthWrite: false, side: THREE.DoubleSide });
     const makeHolder = (mat: THREE.Material) => {
       const pose = new THREE.Group();
@@ -145,6 +163,7 @@ export const inertiaScene: SceneDef = {
       principal.add(a);
       return a;
     });
+    const arrowNames = arrows.map((a, k) => ctx.labels.add(["I₁", "I₂", "I₃"][k], new THREE.Vector3(0, 1.1, 0), { obj: a, color: `#${PRINCIPAL_COLORS[k].toString(16)}`, className: "label3d axis" }));
 
     // The screw axis (a long line with an arrow for its direction) and the CM's path.
     // Lines drawn over the solids (depth test off) so that they read through the bodies.
@@ -170,20 +189,23 @@ export const inertiaScene: SceneDef = {
     const meaning = document.createElement("p");
     meaning.className = "blurb";
     const fileLabel = document.createElement("label");
+    fileLabel.className = "stl-only";
     fileLabel.textContent = "STL file (binary or ASCII, closed mesh): ";
     const file = document.createElement("input");
     Object.assign(file, { type: "file", accept: ".stl,model/stl,application/sla", name: "stl" });
     fileLabel.append(file);
     const fileStatus = document.createElement("p");
-    fileStatus.className = "blurb";
+    fileStatus.className = "blurb stl-only";
     fileStatus.dataset.key = "stlStatus";
     fileStatus.textContent = "No file loaded.";
     const legend = document.createElement("p");
     legend.className = "blurb";
-    legend.innerHTML =
+    const legendInertia =
       '<span style="color:#f2b84b">■ I₁</span> · <span style="color:#c77dff">■ I₂</span> · <span style="color:#2ec4b6">■ I₃</span> principal axes · ' +
-      '<span style="color:#7fb4ff">wire</span> ellipsoid of inertia · <span style="color:#ffe066">- -</span> screw axis · ' +
-      '<span style="color:#f08c3c">—</span> CM path';
+      '<span style="color:#7fb4ff">wire</span> ellipsoid of inertia';
+    const legendMotion =
+      'grey ghost: the first pose · <span style="color:#f08c3c">orange ghost</span>: the second · <span style="color:#ffe066">- -</span> screw axis · ' +
+      '<span style="color:#ffa65c">—</span> CM path';
     ctx.panel.append(meaning, fileLabel, fileStatus, legend);
 
     let stl: { name: string; vertices: Float64Array; faces: Float64Array; triangles: number } | null = null;
@@ -219,6 +241,8 @@ export const inertiaScene: SceneDef = {
     let R: Float64Array = new Float64Array(9);
     let T: number[] = [0, 0, 0];
     let moments: number[] = [];
+    let displaced = false;
+    let inertiaRadius = 1;
 
     const release = () => {
       screw?.free();
@@ -259,6 +283,9 @@ export const inertiaScene: SceneDef = {
         const shape = String(p.shape);
         const [m, a, b, c] = [Number(p.mass), Number(p.a), Number(p.b), Number(p.c)];
         meaning.textContent = `${shape}: ${MEANING[shape] ?? ""}`;
+        for (const el of [fileLabel, fileStatus]) el.hidden = shape !== STL;
+        displaced = p.motion !== "none";
+        legend.innerHTML = displaced ? legendMotion : legendInertia;
         // Build everything first; swap only when all of it succeeded.
         const nextBody = build(shape, m, a, b, c);
         let nextCentred: RigidBody, nextScrew: Screw, rot: Float64Array, kind: string;
@@ -267,7 +294,7 @@ export const inertiaScene: SceneDef = {
           kind = nextBody.kind();
           nextCentred = nextBody.translated(com.map((x) => -x));
           rot = eulerToMatrix([Number(p.phi) * DEG, Number(p.theta) * DEG, Number(p.psi) * DEG], "zxz", true);
-          T = p.motion === MOTIONS[1] ? [0, 0, 0] : [Number(p.tx), Number(p.ty), Number(p.tz)];
+          T = p.motion === "Chasles" ? [Number(p.tx), Number(p.ty), Number(p.tz)] : [0, 0, 0];
           nextScrew = screwAxis(rot, T);
         } catch (e) {
           nextBody.free();
@@ -304,7 +331,12 @@ export const inertiaScene: SceneDef = {
         const r = semi.map((x) => (Number.isFinite(x) ? Math.min(x * k, 2.2 * size) : 2.2 * size));
         principal.matrix.copy(matrix4(axes));
         ellipsoid.matrix.makeScale(r[0], r[1], r[2]);
-        arrows.forEach((arr, i) => arr.setLength(Math.max(r[i], 0.5 * size) + 0.35, 0.16, 0.08));
+        inertiaRadius = 1.05 * Math.max(size, ...r.map((x) => Math.max(x, 0.5 * size) + 0.5));
+        arrows.forEach((arr, i) => {
+          const len = Math.max(r[i], 0.5 * size) + 0.35;
+          arr.setLength(len, 0.16, 0.08);
+          ctx.labels.move(arrowNames[i], new THREE.Vector3(0, len + 0.12, 0));
+        });
 
         // The screw axis and the CM's helix (the CM starts at the origin, so its position at
         // fraction s is the translation t(s) of the pose).
@@ -321,8 +353,10 @@ export const inertiaScene: SceneDef = {
           helixPos.set([d[9], d[10], d[11]], 3 * i);
         }
         helixGeom.getAttribute("position").needsUpdate = true;
-        // Look at the middle of the displacement.
-        ctx.target.set(T[0] / 2, T[1] / 2, T[2] / 2);
+        // One picture at a time: the body and its ellipsoid, or the displacement.
+        start.pose.visible = target.pose.visible = displaced;
+        axisLine.visible = axisArrow.visible = helix.visible = cmDot.visible = displaced;
+        principal.visible = !displaced;
         start.pose.matrix.identity();
         target.pose.matrix.copy(poseMatrix(R, T));
         for (const h of [start, target]) h.pose.matrixWorldNeedsUpdate = true;
@@ -335,28 +369,40 @@ export const inertiaScene: SceneDef = {
         let residual = 0;
         for (let i = 0; i < 9; i++) residual = Math.max(residual, Math.abs(whole[i] - R[i]));
         for (let i = 0; i < 3; i++) residual = Math.max(residual, Math.abs(whole[9 + i] - T[i]));
+        const lamina = belowPrecision(margins[2], top);
+        const tScale = Math.max(1, ...T.map(Math.abs));
         fixed = [
-          { key: "mass", label: "mass (kg)", value: body.mass, text: fmt(body.mass, 8) },
+          { key: "mass", label: "mass (kg)", value: body.mass, text: fmt(body.mass, 6) },
           { key: "com", label: "CM, body axes (m)", value: com, text: fmtVec(com) },
           { key: "inertia", label: "I about CM (kg·m²)", value: inertia, text: rows(inertia) },
-          { key: "principalMoments", label: "I₁ ≤ I₂ ≤ I₃ (kg·m²)", value: moments, text: fmtVec(moments, 6) },
+          { key: "principalMoments", label: "I₁ ≤ I₂ ≤ I₃ (kg·m²)", value: moments, text: fmtVec(moments, 4, top) },
           { key: "principalAxes", label: "principal axes (columns)", value: Array.from(axes), text: rows(axes) },
           { key: "kind", label: "kind", value: kind, text: kind },
-          { key: "triangleMargins", label: "triangle margins (kg·m²)", value: margins, text: fmtVec(margins, 5) + (margins[2] <= 1e-12 * top ? " — a lamina" : ""), warn: margins[2] <= 1e-12 * top },
-          { key: "R", label: "R (rows)", value: Array.from(R), text: rows(R) },
-          { key: "translation", label: "t (m)", value: T, text: fmtVec(T) },
-          { key: "eulerAxis", label: "Euler axis of R", value: [ax, ay, az], text: fmtVec([ax, ay, az]) },
-          { key: "eulerAngle", label: "Euler angle (rad)", value: angle, text: `${fmt(angle, 8)} (${fmt(angle / DEG, 6)}°)` },
-          { key: "screwAxis", label: "screw axis", value: Array.from(screw.axis), text: fmtVec(screw.axis) },
-          { key: "screwPoint", label: "screw point (m)", value: Array.from(screw.point), text: fmtVec(screw.point) },
-          { key: "screwAngle", label: "screw angle (rad)", value: screw.angle, text: `${fmt(screw.angle, 8)} (${fmt(screw.angle / DEG, 6)}°)` },
-          { key: "screwSlide", label: "slide (m)", value: screw.slide, text: fmt(screw.slide, 8) },
-          { key: "screwPitch", label: "pitch (m/rad)", value: screw.pitch, text: fmt(screw.pitch, 8) },
-          { key: "residual", label: "check |D(1) − (R, t)|∞", value: residual, text: fmt(residual, 3), warn: residual > 1e-12 },
+          { key: "triangleMargins", label: "triangle margins (kg·m²)", value: margins, text: fmtVec(margins, 4, top) + (lamina ? " — a lamina" : ""), warn: lamina },
         ];
+        if (displaced) {
+          fixed.push(
+            { key: "R", label: "R (rows)", value: Array.from(R), text: rows(R) },
+            { key: "translation", label: "t (m)", value: T, text: fmtVec(T) },
+            { key: "eulerAxis", label: "Euler axis of R", value: [ax, ay, az], text: fmtVec([ax, ay, az], 5, 1) },
+            { key: "eulerAngle", label: `Euler angle (${A.name})`, value: angle, text: A.angle(angle, 6) },
+            { key: "screwAxis", label: "screw axis", value: Array.from(screw.axis), text: fmtVec(screw.axis, 5, 1) },
+            { key: "screwPoint", label: "screw point (m)", value: Array.from(screw.point), text: fmtVec(screw.point, 5, tScale) },
+            { key: "screwAngle", label: `screw angle (${A.name})`, value: screw.angle, text: A.angle(screw.angle, 6) },
+            { key: "screwSlide", label: "slide (m)", value: screw.slide, text: fmt(screw.slide, 6, tScale) },
+            { key: "screwPitch", label: `pitch (m/${A.name})`, value: screw.pitch, text: fmt(screw.pitch * DEG, 6, tScale * DEG) },
+            { key: "residual", label: "check |D(1) − (R, t)|∞", value: residual, text: fmt(residual, 3, tScale), warn: residual > 1e-12 * tScale },
+          );
+        }
       },
       step(t) {
         if (!screw || !centred || !body) return;
+        if (!displaced) {
+          moving.pose.matrix.identity();
+          moving.pose.matrixWorldNeedsUpdate = true;
+          out = fixed;
+          return;
+        }
         const s = screwFraction(t);
         const d = screw.displacementAt(s);
         const Rs = d.subarray(0, 9);
@@ -374,17 +420,26 @@ export const inertiaScene: SceneDef = {
         moved.free();
         const scale = Math.max(...moments);
         const drift = Math.max(...movedMoments.map((x, i) => Math.abs(x - moments[i]))) / scale;
+        const tScale = Math.max(1, ...T.map(Math.abs));
         out = [
           ...fixed,
           { key: "s", label: "s (screw fraction)", value: s, text: fmt(s, 4) },
-          { key: "pose", label: "pose R(s) rows, t(s)", value: Array.from(d), text: rows(Rs, 3) + " " + fmtVec(ts, 4) },
-          { key: "movedCom", label: "CM at s (m)", value: movedCom, text: fmtVec(movedCom) },
+          { key: "pose", label: "pose R(s) rows, t(s) (m)", value: Array.from(d), text: rows(Rs, 3) + " " + fmtVec(ts, 4, tScale) },
+          { key: "movedCom", label: "CM at s (m)", value: movedCom, text: fmtVec(movedCom, 5, tScale) },
           { key: "movedInertia", label: "R(s) I R(s)ᵀ (kg·m²)", value: movedInertia, text: rows(movedInertia) },
-          { key: "momentDrift", label: "moments of R(s) I R(s)ᵀ: drift", value: drift, text: fmt(drift, 3), warn: drift > 1e-12 },
+          { key: "momentDrift", label: "moments of R(s) I R(s)ᵀ: drift", value: drift, text: fmt(drift, 3, 1), warn: drift > 1e-12 },
         ];
       },
       readouts() {
         return out;
+      },
+      frame() {
+        // The displacement's two poses and the helix; or the body about its CM (at the origin)
+        // with its principal axes.
+        return displaced ? frameOf([start.mesh, target.mesh, helix], 0.2) : { center: new THREE.Vector3(), radius: inertiaRadius };
+      },
+      main() {
+        return displaced ? [start.mesh, target.mesh, moving.mesh] : [moving.mesh];
       },
       dispose() {
         release();

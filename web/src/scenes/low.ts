@@ -2,11 +2,13 @@
 // low-pressure centre, the pressure gradient pulls them in, the Coriolis force turns them to the
 // right in the north (to the left in the south), friction lets them spiral in. The core
 // integrates them; the page draws the map, the tracks and the winds, and reads the sense of the
-// circulation out of the simulation. One second of the page is one hour of the simulation.
+// circulation out of the simulation. One second of the page is one hour of the simulation. The
+// map is drawn to scale (a scale bar says which), with a compass; the page says when the inertial
+// circle is too large for the map.
 import * as THREE from "three";
 import { Earth, type LowFlow } from "../core";
-import { DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
-import { Arrow, disposeTree } from "../view";
+import { angles, DEG, fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
+import { Arrow, axisLabels, compass, disposeTree, fixedAxes, roundDown125, roundText, ScaleBar } from "../view";
 
 /** Radius of the ring the parcels start on (m) and its drawn radius (scene units). */
 export const LOW_RADIUS = 5e5;
@@ -19,11 +21,16 @@ export const SECONDS_PER_PAGE_SECOND = 3600;
 /** The inertial parcel's speed (m/s) and its run when there is no inertial period (the equator). */
 export const INERTIAL_SPEED = 10;
 export const INERTIAL_EQUATOR_RUN = 86400;
+const A = angles("°");
 const COLORS = [0xe5484d, 0xf2b84b, 0x46a758, 0x3ec7c7, 0x3e7bfa, 0x8e6cf0, 0xe56cc4, 0xc9d1d9];
 
 export const lowScene: SceneDef = {
   id: "low",
   title: "Flow into a low",
+  short: "Low",
+  angleUnit: "°",
+  pinned: ["tau", "sense", "circulation", "inertialPeriod"],
+  describe: "a round map around a low-pressure centre with isobars, eight parcels of air with their tracks and winds, and the dashed circle of an inertial oscillation; east, north and up are labelled, a compass and a scale bar lie on the map",
   blurb:
     "Air at rest on a ring 500 km from a low-pressure centre is pulled in by the pressure gradient, turned by the Coriolis force (to the right in the north, to the left in the south, not at all at the equator) and slowed by friction. " +
     "The core integrates the parcels; the sense of the circulation is measured from the run: counterclockwise round a northern low, clockwise round a southern one. " +
@@ -49,9 +56,18 @@ export const lowScene: SceneDef = {
     const centre = new THREE.Mesh(new THREE.RingGeometry(0.07, 0.12, 48), new THREE.MeshBasicMaterial({ color: 0xe5484d, side: THREE.DoubleSide }));
     centre.position.z = 0.004;
     root.add(centre);
-    const label = document.createElement("div");
-    label.style.cssText = "position:absolute;left:.8rem;top:.6rem;color:#9aa4b1;font-size:.85rem";
-    ctx.overlay.append(label);
+    const axes = fixedAxes(RING * 1.25, 0.5);
+    axes.position.z = 0.003;
+    root.add(axes);
+    // East and north end at the compass ring (its E and N name them); up is labelled.
+    axisLabels(ctx.labels, RING * 1.25, ["east", "north", "up"], [0, 1]);
+    root.add(compass(ctx.labels, RING * 1.32, 0.001));
+    // The map is to scale: a round distance about a unit long.
+    const scale = RING / LOW_RADIUS;
+    const bar = new ScaleBar(ctx.labels, new THREE.Vector3(-0.45, -2.45, 0.02), new THREE.Vector3(1, 0, 0), new THREE.Vector3(0, 0.06, 0));
+    const km = roundDown125(1.0 / scale / 1000);
+    bar.set(km * 1000 * scale, `${roundText(km)} km`);
+    root.add(bar.obj);
 
     const parcels = COLORS.slice(0, LOW_PARCELS).map((color) => {
       const dot = new THREE.Mesh(new THREE.SphereGeometry(0.06, 20, 12), new THREE.MeshStandardMaterial({ color }));
@@ -65,7 +81,8 @@ export const lowScene: SceneDef = {
     const inertial = new THREE.Line(new THREE.BufferGeometry(), new THREE.LineDashedMaterial({ color: 0x9aa4b1, dashSize: 0.05, gapSize: 0.04 }));
     inertial.frustumCulled = false;
     root.add(inertial);
-    ctx.camera.position.set(0, -4.6, 8.6);
+    // From the south-south-east, above: up stands apart from north on the screen.
+    ctx.camera.position.set(2.2, -6, 6.5);
     ctx.target.set(0, 0, 0);
 
     let p: Params = {};
@@ -77,8 +94,9 @@ export const lowScene: SceneDef = {
     let f = 0;
     let turning = 0;
     let windScale = 1;
+    let circScale = 0;
     let out: Readout[] = [];
-    const scale = RING / LOW_RADIUS;
+    let offMap: Readout | null = null;
 
     const release = () => {
       flow?.free();
@@ -135,8 +153,21 @@ export const lowScene: SceneDef = {
         inertial.geometry.dispose();
         inertial.geometry = new THREE.BufferGeometry().setFromPoints(pts);
         inertial.computeLineDistances();
+        // The drawn circle's reach from the centre: beyond the map it is hidden, and the page says so.
+        const reach = Math.max(...pts.map((q) => Math.hypot(q.x, q.y)));
+        inertial.visible = reach <= RING * 1.25;
+        const across = Math.max(...pts.map((q) => Math.hypot(q.x - pts[0].x, q.y - pts[0].y))) / scale / 1000;
+        offMap = inertial.visible
+          ? null
+          : {
+              key: "inertialOffMap", label: "inertial circle", value: across, warn: true, pin: true,
+              text: Number.isFinite(period) ? `${fmt(across, 3)} km across: larger than the map, not drawn` : "no inertial circle at the equator (a straight line off the map), not drawn",
+            };
         // Winds drawn so that the speed the pull alone would give (√(pull · R)) is half the ring.
         windScale = (0.5 * RING) / Math.sqrt(pull * LOW_RADIUS);
+        // The scale of x v_y − y v_x: the ring's radius times that speed (a circulation within
+        // a few ε of it is round-off: 0 at the equator).
+        circScale = LOW_RADIUS * Math.sqrt(pull * LOW_RADIUS);
       },
       step(t) {
         if (!flow) return;
@@ -159,23 +190,30 @@ export const lowScene: SceneDef = {
         const lostMean = dissipated.reduce((a, b) => a + b, 0) / parcels.length;
         const circ = flow.circulation;
         const sense = flow.sense;
-        label.textContent = `${fmt(tau / 3600, 3)} h · ${sense === "none" ? "no circulation" : sense}`;
         const first = Array.from(now.subarray(0, 4));
         out = [
           { key: "tau", label: "t in the run (h)", value: tau, text: fmt(tau / 3600, 5) },
           { key: "parcel", label: "parcel 1: x, y (km), v (m/s)", value: first, text: fmtVec([first[0] / 1e3, first[1] / 1e3, first[2], first[3]], 4) },
-          { key: "circulation", label: "circulation (m²/s)", value: circ, text: fmt(circ, 8) },
+          { key: "circulation", label: "circulation (m²/s)", value: circ, text: fmt(circ, 8, circScale) },
           { key: "sense", label: "sense (from the run)", value: sense, text: sense === "none" ? "none (no turning)" : `${sense} (seen from above)` },
           { key: "coriolis", label: "f = 2Ω sin λ (1/s)", value: f, text: fmt(f, 6) },
           { key: "inertialPeriod", label: "inertial period (h)", value: period, text: Number.isFinite(period) ? fmt(period / 3600, 6) : "∞ (no inertial circle)" },
-          { key: "inertialTurning", label: "inertial turning (rad/s)", value: turning, text: fmt(turning, 8) },
+          { key: "inertialTurning", label: `inertial turning (${A.perHour})`, value: turning, text: A.perHourRate(turning, 6) },
           { key: "energy", label: "energy ½v²+½kr² (J/kg)", value: energy, text: fmt(energy, 8) },
           { key: "dissipated", label: "friction's work (J/kg)", value: lostMean, text: fmt(lostMean, 8) },
-          { key: "budgetDrift", label: "budget |E+W−E₀|/E₀", value: worst, text: fmt(worst, 3), warn: worst > 1e-8 },
+          { key: "budgetDrift", label: "budget |E+W−E₀|/E₀", value: worst, text: fmt(worst, 3, 1), warn: worst > 1e-8 },
+          ...(offMap ? [offMap] : []),
         ];
       },
       readouts() {
         return out;
+      },
+      frame() {
+        // The map (radius 1.25 ring) and the compass round it.
+        return { center: new THREE.Vector3(), radius: RING * 1.32 };
+      },
+      main() {
+        return [map];
       },
       dispose() {
         release();

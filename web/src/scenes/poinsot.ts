@@ -12,7 +12,7 @@
 import * as THREE from "three";
 import { axisStability, FreeRigidBody, RigidBody } from "../core";
 import { fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
-import { Arrow, AXIS_COLORS, bufferLine, disposeTree, fixedAxes, quaternion, vec } from "../view";
+import { Arrow, AXIS_COLORS, axisLabels, bufferLine, disposeTree, fixedAxes, quaternion, vec } from "../view";
 
 export const POINSOT_VIEWS = ["Poinsot ellipsoid", "tumbling box"];
 export const SPIN_AXES = ["intermediate", "smallest", "largest"];
@@ -104,9 +104,39 @@ class Polyline {
   }
 }
 
+/** The regime in words, with the axis ω circles (the core's pole axis). */
+function regimeText(regime: string, pole: number | undefined): string {
+  const axis = pole === undefined ? "" : ` (${"xyz"[pole]})`;
+  if (regime === "about max axis") return `about max axis: ω circles the largest-moment axis${axis}`;
+  if (regime === "about min axis") return `about min axis: ω circles the smallest-moment axis${axis}`;
+  if (regime === "separatrix") return "separatrix: ω tends to the intermediate axis";
+  return regime;
+}
+
+/** How near the separatrix the motion is, and why: the Jacobi parameter m of the core's exact
+ * solution (m = 1 on the separatrix, 0 for a steady or symmetric motion), shown as 1 − m, with
+ * the core's linear stability of the spun axis. */
+function separatrixReadout(m: number, regime: string, pole: number | undefined, spun: number, spunStability: string): Readout {
+  const gap = fmt(1 - m, 3, 1);
+  const side = regime === "about max axis" ? "above" : regime === "about min axis" ? "below" : "";
+  const circled = pole === undefined ? "" : "xyz"[pole];
+  const axis = "xyz"[spun];
+  let text: string;
+  if (regime === "separatrix" || gap === "0") text = "1 − m = 0: on the separatrix";
+  else if (regime === "steady" || regime === "symmetric") text = `1 − m = ${gap}: ${regime}, no separatrix`;
+  else if (spunStability === "unstable")
+    text = `1 − m = ${gap}, just ${side} it: a spin about ${axis} is unstable, ε moves ω off the separatrix, so ω circles ${circled} and flips past ±${axis}`;
+  else text = `1 − m = ${gap}, ${side} it: a spin about ${axis} is ${spunStability}, ω circles ${circled}`;
+  return { key: "separatrix", label: "from the separatrix (m = 1)", value: m, text };
+}
+
 export const poinsotScene: SceneDef = {
   id: "poinsot",
   title: "Poinsot & tumbling box",
+  short: "Poinsot",
+  angleUnit: "rad",
+  pinned: ["regime", "separatrix", "spinComponent", "flipInterval"],
+  describe: "either the inertia ellipsoid rolling on the invariable plane below it, with the polhode (orange) and the herpolhode (white), or a box tumbling about its centre with the arrows of ω (white) and L (blue); the body axes 1, 2, 3 and the fixed axes x, y, z are labelled",
   blurb:
     "A free asymmetric body (a uniform box, 1 kg), exact solution. Poinsot: the inertia ellipsoid ρ·I·ρ = 1, fixed in the body, " +
     "rolls without slipping on the invariable plane ⊥ L at distance (2T)^½/|L|, touching it at ρ = ω/(2T)^½; orange: the polhode " +
@@ -124,6 +154,8 @@ export const poinsotScene: SceneDef = {
   create(ctx) {
     const root = new THREE.Group();
     ctx.scene.add(root);
+    ctx.camera.position.set(4.9, 3.7, 1.8);
+    ctx.target.set(0, 0, -0.5);
 
     // --- the Poinsot view: in `poinsotRoot`, turned so that L̂ points along −z ---------------
     const poinsotRoot = new THREE.Group();
@@ -145,6 +177,7 @@ export const poinsotScene: SceneDef = {
     });
     const centre = new THREE.Mesh(new THREE.SphereGeometry(0.04, 16, 12), new THREE.MeshBasicMaterial({ color: 0xffffff }));
     ellBody.add(ellipsoid, ellipsoidWire, centre, ...ellAxes);
+    const ellAxisNames = ellAxes.map((a, k) => ctx.labels.add("xyz"[k], new THREE.Vector3(0, 1.1, 0), { obj: a, className: "label3d axis", color: ["#ff7a7e", "#7ad38a", "#7fa6ff"][k] }));
     const polhode = new Polyline(POLHODE_SAMPLES + 1, 0xffa94d);
     ellBody.add(polhode.obj);
     const plane = new THREE.Group();
@@ -168,6 +201,7 @@ export const poinsotScene: SceneDef = {
     const boxRoot = new THREE.Group();
     root.add(boxRoot);
     boxRoot.add(fixedAxes(2.6, 0.3));
+    axisLabels(ctx.labels, 2.6, ["X", "Y", "Z"], [], { obj: boxRoot });
     const boxBody = new THREE.Group();
     boxRoot.add(boxBody);
     // Faces +x, −x, +y, −y, +z, −z: the + faces in the colour of their axis, so a flip shows.
@@ -181,6 +215,7 @@ export const poinsotScene: SceneDef = {
       return new THREE.ArrowHelper(dir, new THREE.Vector3(), 1, AXIS_COLORS[k], 0.15, 0.07);
     });
     boxBody.add(...boxAxes);
+    const boxAxisNames = boxAxes.map((a, k) => ctx.labels.add("xyz"[k], new THREE.Vector3(0, 1.1, 0), { obj: a, className: "label3d axis", color: ["#ff7a7e", "#7ad38a", "#7fa6ff"][k] }));
     // The path of the spun axis's tip in space over the last period: a flip is a swing from
     // near +L to near −L and back.
     const tipTrail = new Polyline(TRAIL_POINTS + 1, 0xffffff, 0.8);
@@ -198,8 +233,8 @@ export const poinsotScene: SceneDef = {
     const fig = document.createElement("figure");
     fig.className = "poinsot-plot";
     const canvas = document.createElement("canvas");
-    canvas.width = 320;
-    canvas.height = 140;
+    canvas.width = 640;
+    canvas.height = 300;
     canvas.setAttribute("role", "img");
     canvas.setAttribute("aria-label", "ω components in the body against time");
     canvas.style.width = "100%";
@@ -226,9 +261,8 @@ export const poinsotScene: SceneDef = {
     let omegaCurve: GridCurve | null = null;
     let omega0Norm = 1;
     let tNow = 0;
-    let wasPoinsot: boolean | null = null;
     /** The motion's constants, read from the core once per configure. */
-    let constants = { d: 0, T0: 0, L0: 0, period: 0, flip: 0, regime: "" };
+    let constants = { d: 0, T0: 0, L0: 0, period: 0, flip: 0, regime: "", m: 0, pole: undefined as number | undefined };
     let out: Readout[] = [];
 
     const free = () => {
@@ -238,39 +272,75 @@ export const poinsotScene: SceneDef = {
       rigid = null;
     };
 
+    /** The ω(t) plot, with its axes: ω (rad/s) ticks at ±|ω(0)| and 0, t (s) ticks at the
+     * window's ends; canvas pixels are twice the CSS size (crisp text). */
     function drawPlot(): void {
       const g = canvas.getContext("2d");
       if (!g || !omegaCurve) return;
-      const W = canvas.width, H = canvas.height;
+      const W = canvas.width, H = canvas.height, k = 2;
+      const pad = { l: 50 * k, r: 8 * k, t: 6 * k, b: 18 * k };
+      g.setTransform(1, 0, 0, 1, 0, 0);
       g.fillStyle = "#101418";
       g.fillRect(0, 0, W, H);
+      const x0 = pad.l, x1 = W - pad.r, y0 = pad.t, y1 = H - pad.b;
+      const span = (omegaCurve.capacity - 1) * omegaCurve.dt;
+      // The window: the last `span` seconds, or [0, span] until then.
+      const tStart = Math.max(0, tNow - span);
+      const w0 = omega0Norm || 1;
+      const py = (w: number) => (y0 + y1) / 2 - (w / w0) * 0.45 * (y1 - y0);
+      const px = (t: number) => x0 + ((t - tStart) / span) * (x1 - x0);
+      // Axes, ticks and their labels.
       g.strokeStyle = "#3a4652";
-      g.beginPath();
-      g.moveTo(0, H / 2);
-      g.lineTo(W, H / 2);
-      g.stroke();
+      g.lineWidth = 1;
+      g.strokeRect(x0, y0, x1 - x0, y1 - y0);
+      g.font = `${11 * k}px system-ui, sans-serif`;
+      g.fillStyle = "#9aa4ae";
+      g.textBaseline = "middle";
+      g.textAlign = "right";
+      const yTicks = [w0, 0, -w0].map((w) => ({ w, text: fmt(w, 3) }));
+      for (const { w, text } of yTicks) {
+        g.beginPath();
+        g.moveTo(x0 - 4, py(w));
+        g.lineTo(w === 0 ? x1 : x0, py(w));
+        g.stroke();
+        g.fillText(text, x0 - 6, py(w));
+      }
+      g.save();
+      g.translate(8 * k, (y0 + y1) / 2);
+      g.rotate(-Math.PI / 2);
+      g.textAlign = "center";
+      g.fillText("ω (rad/s)", 0, 0);
+      g.restore();
+      g.textBaseline = "top";
+      g.textAlign = "left";
+      g.fillText(fmt(tStart, 3), x0, y1 + 4);
+      g.textAlign = "right";
+      g.fillText(fmt(tStart + span, 3), x1, y1 + 4);
+      g.textAlign = "center";
+      g.fillText("t (s)", (x0 + x1) / 2, y1 + 4);
+      canvas.dataset.axes = `t (s): ${fmt(tStart, 3)} to ${fmt(tStart + span, 3)}; ω (rad/s): ${yTicks.map((y) => y.text).join(", ")}`;
+      // The curves.
       const pts = omegaCurve.points;
       const n = pts.length / 3;
       if (n < 2) return;
-      const span = (omegaCurve.capacity - 1) * omegaCurve.dt;
-      const tStart = tNow - span;
-      const yScale = (0.45 * H) / (omega0Norm || 1);
       const k0 = Math.max(0, Math.floor(tNow / omegaCurve.dt) - omegaCurve.capacity + 1);
+      g.save();
+      g.beginPath();
+      g.rect(x0, y0, x1 - x0, y1 - y0);
+      g.clip();
       for (let c = 0; c < 3; c++) {
         g.strokeStyle = `#${AXIS_COLORS[c].toString(16).padStart(6, "0")}`;
-        g.lineWidth = c === spunAxis ? 2 : 1;
+        g.lineWidth = c === spunAxis ? 2 * k : k;
         g.beginPath();
         for (let j = 0; j < n; j++) {
-          const x = (((k0 + j) * omegaCurve.dt - tStart) / span) * W;
-          const y = H / 2 - pts[3 * j + c] * yScale;
+          const x = px((k0 + j) * omegaCurve.dt);
+          const y = py(pts[3 * j + c]);
           if (j === 0) g.moveTo(x, y);
           else g.lineTo(x, y);
         }
         g.stroke();
       }
-      g.fillStyle = "#9aa4ae";
-      g.font = "11px sans-serif";
-      g.fillText(`${fmt(span, 3)} s`, 4, H - 4);
+      g.restore();
     }
 
     return {
@@ -316,6 +386,8 @@ export const poinsotScene: SceneDef = {
           period: body.period,
           flip: body.flipInterval,
           regime: body.regime,
+          m: body.parameter,
+          pole: body.poleAxis,
         };
         const w0 = vec(body.omega(0));
         omega0Norm = w0.length();
@@ -324,7 +396,10 @@ export const poinsotScene: SceneDef = {
         kEll = R_ELLIPSOID * Math.sqrt(Math.min(...moments));
         ellipsoid.scale.set(kEll / Math.sqrt(moments[0]), kEll / Math.sqrt(moments[1]), kEll / Math.sqrt(moments[2]));
         ellipsoidWire.scale.copy(ellipsoid.scale);
-        ellAxes.forEach((a, k) => a.setLength(kEll / Math.sqrt(moments[k]), 0.12, 0.06));
+        ellAxes.forEach((a, k) => {
+          a.setLength(kEll / Math.sqrt(moments[k]), 0.12, 0.06);
+          ctx.labels.move(ellAxisNames[k], new THREE.Vector3(0, kEll / Math.sqrt(moments[k]) + 0.15, 0));
+        });
         poinsotRoot.quaternion.setFromUnitVectors(lHat, new THREE.Vector3(0, 0, -1));
         const d = body.invariablePlaneDistance * kEll;
         plane.position.copy(lHat.clone().multiplyScalar(d));
@@ -332,12 +407,6 @@ export const poinsotScene: SceneDef = {
         lRay.set(lHat.clone().multiplyScalar(d));
         // The polhode, drawn a hair outside the surface so that it is not hidden by it.
         polhode.set(body.contactPolhode(POLHODE_SAMPLES), kEll * 1.004);
-        ctx.target.set(0, 0, poinsot ? -0.5 : 0);
-        if (poinsot !== wasPoinsot) {
-          if (poinsot) ctx.camera.position.set(4.9, 3.7, 1.8);
-          else ctx.camera.position.set(5.2, 3.9, 3.0);
-          wasPoinsot = poinsot;
-        }
 
         // The grids: fine enough for the fastest turn (|L|/I_min rad/s about L).
         const turnRate = vec(body.angularMomentum).length() / Math.min(...moments);
@@ -357,7 +426,10 @@ export const poinsotScene: SceneDef = {
         boxBody.add(box, boxEdges);
         kOmega = 2.2 / (omega0Norm || 1);
         const half = sides.map((x) => 0.5 * x * kBox);
-        boxAxes.forEach((a, k) => a.setLength(Math.max(1.4 * half[k], 0.35), 0.15, 0.07));
+        boxAxes.forEach((a, k) => {
+          a.setLength(Math.max(1.4 * half[k], 0.35), 0.15, 0.07);
+          ctx.labels.move(boxAxisNames[k], new THREE.Vector3(0, Math.max(1.4 * half[k], 0.35) + 0.15, 0));
+        });
         tipLength = Math.max(1.4 * half[spunAxis], 0.35);
         tipSphere.scale.setScalar(tipLength);
         const e = new THREE.Vector3().setComponent(spunAxis, tipLength);
@@ -385,7 +457,7 @@ export const poinsotScene: SceneDef = {
         const att = quaternion(q);
         const rhoBody = body.contactPointBody(t);
         const rho = body.contactPoint(t);
-        const { d, T0, L0, period, flip, regime } = constants;
+        const { d, T0, L0, period, flip, regime, m, pole } = constants;
 
         if (view === POINSOT_VIEWS[0]) {
           ellBody.quaternion.copy(att);
@@ -420,7 +492,8 @@ export const poinsotScene: SceneDef = {
             key: "stabilityRates", label: "  oscillation / growth rate (1/s)", value: stability.rates,
             text: fmtVec(stability.rates, 4),
           },
-          { key: "regime", label: "regime", value: regime, text: regime, warn: regime === "separatrix" },
+          { key: "regime", label: "regime", value: regime, text: regimeText(regime, pole), warn: regime === "separatrix" },
+          separatrixReadout(m, regime, pole, spunAxis, stability.kinds[spunAxis] ?? ""),
           { key: "period", label: "period of ω (s)", value: Number.isFinite(period) ? period : String(period), text: fmt(period) },
           {
             key: "flipInterval", label: "flip interval (half period, s)", value: Number.isFinite(flip) ? flip : String(flip),
@@ -428,28 +501,37 @@ export const poinsotScene: SceneDef = {
           },
           { key: "omega", label: "ω body (rad/s)", value: Array.from(w), text: fmtVec(w) },
           {
-            key: "spinComponent", label: `ω on the spun axis ${"xyz"[spunAxis]}`, value: w[spunAxis],
+            key: "spinComponent", label: `ω on the spun axis ${"xyz"[spunAxis]} (rad/s)`, value: w[spunAxis],
             text: `${fmt(w[spunAxis])}${w[spunAxis] < 0 ? "  (flipped)" : ""}`, warn: w[spunAxis] < 0,
           },
-          { key: "attitude", label: "attitude [w,x,y,z]", value: Array.from(q), text: fmtVec(q, 4) },
+          { key: "attitude", label: "attitude [w,x,y,z]", value: Array.from(q), text: fmtVec(q, 4, 1) },
           { key: "planeDistance", label: "plane distance (2T)^½/|L|", value: d, text: fmt(d) },
-          { key: "planeNormal", label: "plane normal L̂", value: Array.from(lHat.toArray()), text: fmtVec(lHat.toArray(), 4) },
+          { key: "planeNormal", label: "plane normal L̂", value: Array.from(lHat.toArray()), text: fmtVec(lHat.toArray(), 4, 1) },
           { key: "contactPoint", label: "contact ρ (space)", value: Array.from(rho), text: fmtVec(rho) },
           {
             key: "contactResidual", label: "contact: ρ·I·ρ − 1, ρ·L̂/d − 1", value: [onEllipsoid, onPlane],
-            text: `${fmt(onEllipsoid, 2)}, ${fmt(onPlane, 2)}`, warn: Math.max(Math.abs(onEllipsoid), Math.abs(onPlane)) > 1e-10,
+            text: `${fmt(onEllipsoid, 2, 1)}, ${fmt(onPlane, 2, 1)}`, warn: Math.max(Math.abs(onEllipsoid), Math.abs(onPlane)) > 1e-10,
           },
           { key: "energy", label: "T (J), conserved", value: T0, text: fmt(T0, 8) },
-          { key: "energyNow", label: "T(t) from ω(t)", value: T, text: `${fmt(T, 8)} (rel. drift ${fmt((T - T0) / T0, 2)})` },
+          { key: "energyNow", label: "T(t) from ω(t) (J)", value: T, text: `${fmt(T, 8)} (rel. drift ${fmt((T - T0) / T0, 2, 1)})` },
           { key: "angularMomentum", label: "|L| (kg·m²/s), conserved", value: L0, text: fmt(L0, 8) },
           {
-            key: "angularMomentumNow", label: "|L(t)| from ω(t)", value: L,
-            text: `${fmt(L, 8)} (rel. drift ${fmt((L - L0) / L0, 2)})`,
+            key: "angularMomentumNow", label: "|L(t)| from ω(t) (kg·m²/s)", value: L,
+            text: `${fmt(L, 8)} (rel. drift ${fmt((L - L0) / L0, 2, 1)})`,
           },
         ];
       },
       readouts() {
         return out;
+      },
+      frame() {
+        if (view !== POINSOT_VIEWS[0]) return { center: new THREE.Vector3(), radius: 2.6 };
+        // The ellipsoid about the centre and the plane's disc a distance d below it (L̂ is −z).
+        const d = constants.d * kEll;
+        return { center: new THREE.Vector3(0, 0, -d / 2), radius: Math.max(Math.hypot(PLANE_RADIUS, d / 2), R_ELLIPSOID + d / 2) };
+      },
+      main() {
+        return view === POINSOT_VIEWS[0] ? [ellipsoid, planeDisc] : box ? [box] : [];
       },
       render(renderer, scene, camera) {
         drawPlot();

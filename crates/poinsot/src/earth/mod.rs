@@ -17,8 +17,9 @@ mod winds;
 pub use fall::{Fall, FallModel, Flight, Gravity};
 pub use pendulum::{fit_precession_rate, FoucaultRun};
 pub use pendulum_measurement::{
-    FoucaultMeasurement, FoucaultRegime, Sense, AMPLITUDE_TOLERANCE, MAX_TURN_PER_SWING,
-    MAX_WOBBLE, MIN_TURNING_POINTS, SCATTER_TOLERANCE, STEADY_TOLERANCE, STILL_ANGLE,
+    FoucaultMeasurement, FoucaultRegime, Sense, UnitRateCheck, AMPLITUDE_TOLERANCE,
+    MAX_TURN_PER_SWING, MAX_WOBBLE, MIN_TURNING_POINTS, SCATTER_TOLERANCE, STEADY_TOLERANCE,
+    STILL_ANGLE, UNIT_RATE_TOLERANCE,
 };
 pub use pendulum_theory::{FoucaultModes, FoucaultTheory, LinearSwing};
 pub use planet::{

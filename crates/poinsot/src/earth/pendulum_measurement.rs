@@ -139,6 +139,138 @@ impl FoucaultMeasurement {
     }
 }
 
+/// How close the unit's rate −ω sin λ must be to a run for it to describe the run, as a
+/// fraction ([`UnitRateCheck`]): 1 %, the unit's formula to two significant digits. The spin's
+/// departure stays below it while ω is small against the pendulum's √(g/L) (on the browser
+/// lab's planet spinning 1000 times faster than the Earth, at 49° up to L ≈ 40 m, ω/√(g/L) ≈
+/// 0.15), the amplitude's, about 0.3 (A/L)², while A/L ≲ 0.18 (docs/lab.md lists measured
+/// values).
+pub const UNIT_RATE_TOLERANCE: f64 = 0.01;
+
+/// Whether the unit's rate −ω sin λ (the Foucault rate of eq. 2.33) describes a Foucault run,
+/// and if not why ([`super::FoucaultSwing::unit_rate`]).
+///
+/// −ω sin λ is the rate of a small swing on a planet that spins slowly against the pendulum
+/// (ω ≪ √(g/L)). Two departures measure how far a run is from that limit:
+///
+/// * the spin's, |Δ − (−ω sin λ)| / max(|Δ|, |ω sin λ|): the exact small-swing theory's mean
+///   rate Δ ([`super::FoucaultModes`]) against the unit's (0 where both vanish: the equator);
+/// * the amplitude's, |r − r_lin| / |r_lin|: the rate r measured through the run's turning
+///   points against the small-swing theory's own fit r_lin through its turning points over the
+///   same run (so that the wobble, common to both, cancels): the swing's own precession.
+///
+/// It holds when the run shows a steady turn (regime precessing, or still: then only the spin's
+/// departure is judged) and both departures are at most [`UNIT_RATE_TOLERANCE`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct UnitRateCheck {
+    /// Whether −ω sin λ describes the run.
+    pub holds: bool,
+    /// ω / √(g/L): the planet's spin against the pendulum's own frequency (dimensionless).
+    pub spin_ratio: f64,
+    /// A / L: the release's distance from the rest position against the length (dimensionless).
+    pub amplitude_ratio: f64,
+    /// The spin's departure (a fraction), or `None` where the bob has no stable rest position.
+    pub spin_departure: Option<f64>,
+    /// The amplitude's departure (a fraction), or `None` where the run gives no rate to compare
+    /// (its regime is neither precessing nor still) or does not turn (still).
+    pub amplitude_departure: Option<f64>,
+    /// One sentence for the front ends to show, with the figures.
+    pub note: String,
+}
+
+/// |diff| / scale, 0 when both vanish (∞ when only the scale does).
+fn fraction(diff: f64, scale: f64) -> f64 {
+    if diff == 0.0 {
+        0.0
+    } else if scale == 0.0 {
+        f64::INFINITY
+    } else {
+        diff.abs() / scale
+    }
+}
+
+impl FoucaultMeasurement {
+    /// Whether the unit's rate −ω sin λ describes the measured run ([`UnitRateCheck`]), given
+    /// the run's `spin_ratio` ω/√(g/L) and `amplitude_ratio` A/L (for the note).
+    pub fn unit_rate_check(&self, spin_ratio: f64, amplitude_ratio: f64) -> UnitRateCheck {
+        let e = self.expected_rate;
+        let spin_departure = self
+            .theory_rate
+            .map(|d| fraction(d - e, d.abs().max(e.abs())));
+        let still = self.regime == FoucaultRegime::Still;
+        let amplitude_departure = match (self.regime, self.precession_rate, self.theory_fit_rate) {
+            (FoucaultRegime::Precessing, Some(r), Some(f)) => Some(fraction(r - f, f.abs())),
+            _ => None,
+        };
+        let percent = |x: f64| format!("{} %", sig(100.0 * x));
+        let spin_ok = spin_departure.is_some_and(|x| x <= UNIT_RATE_TOLERANCE);
+        let amplitude_ok = still || amplitude_departure.is_some_and(|x| x <= UNIT_RATE_TOLERANCE);
+        let steady = still || self.regime == FoucaultRegime::Precessing;
+        let holds = steady && spin_ok && amplitude_ok;
+        let note = if !steady {
+            format!(
+                "-omega sin(lambda) cannot be compared with this run: its swing plane does not turn steadily (regime {}; \
+                 omega/sqrt(g/L) = {}, A/L = {})",
+                self.regime.name(),
+                sig(spin_ratio),
+                sig(amplitude_ratio)
+            )
+        } else if holds {
+            let spin = spin_departure.map_or_else(String::new, &percent);
+            match amplitude_departure {
+                Some(a) => format!(
+                    "-omega sin(lambda) applies: the small-swing rate is within {spin} of it (omega/sqrt(g/L) = {}) and the \
+                     measured rate within {} of the small-swing theory's (A/L = {})",
+                    sig(spin_ratio),
+                    percent(a),
+                    sig(amplitude_ratio)
+                ),
+                None => format!(
+                    "-omega sin(lambda) applies: the plane does not turn measurably, and the small-swing rate is within \
+                     {spin} of the unit's (omega/sqrt(g/L) = {})",
+                    sig(spin_ratio)
+                ),
+            }
+        } else {
+            let mut why = Vec::new();
+            if !spin_ok {
+                why.push(match spin_departure {
+                    Some(x) => format!(
+                        "the spin is not small against the pendulum (omega/sqrt(g/L) = {}): the exact small-swing rate \
+                         departs from it by {}",
+                        sig(spin_ratio),
+                        percent(x)
+                    ),
+                    None => "the bob has no stable rest position".to_string(),
+                });
+            }
+            if !amplitude_ok {
+                if let Some(x) = amplitude_departure {
+                    why.push(format!(
+                        "the swing is wide (A/L = {}): its own precession moves the measured rate {} from the small-swing \
+                         theory's",
+                        sig(amplitude_ratio),
+                        percent(x)
+                    ));
+                }
+            }
+            format!(
+                "-omega sin(lambda) does not apply (tolerance {}): {}",
+                percent(UNIT_RATE_TOLERANCE),
+                why.join("; and ")
+            )
+        };
+        UnitRateCheck {
+            holds,
+            spin_ratio,
+            amplitude_ratio,
+            spin_departure,
+            amplitude_departure,
+            note,
+        }
+    }
+}
+
 /// A least-squares line through the swing-plane angles at turning points, fed one by one and
 /// unwrapped modulo π on the way (a swing plane has no head or tail; the turning points
 /// alternate between its two ends). Welford's updates, free of cancellation over long runs.

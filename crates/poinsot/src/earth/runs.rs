@@ -17,6 +17,7 @@ use crate::error::{check_non_negative, check_positive, Error, Result};
 use crate::frames::ParticleState;
 use crate::integrate::{sample_before, sample_times, Options, Tolerances};
 use crate::limits::{check_bytes, check_count};
+use crate::Vec3;
 
 /// Tolerances of the exact drop and of projectiles ([`Earth::drop`], [`Earth::projectile`]):
 /// rtol = atol = 1e-12 (m, m/s), 10⁶ steps.
@@ -267,6 +268,20 @@ pub struct FoucaultSwing {
 }
 
 impl FoucaultSwing {
+    /// Whether the unit's rate −ω sin λ describes this run, and if not why
+    /// ([`super::UnitRateCheck`]): from the measurement, with ω/√(g/L) and the release's
+    /// distance from the rest position over the length, A/L. Errors as
+    /// [`Earth::foucault_theory`] (never, for a run that was made).
+    pub fn unit_rate(&self) -> Result<super::UnitRateCheck> {
+        let theory = self.earth.foucault_theory(self.latitude, self.length)?;
+        let r0 = Vec3::new(self.state0[0], self.state0[1], self.state0[2]);
+        let [east, north] = theory.displacement_of(&r0);
+        let spin_ratio = self.earth.rotation_rate / (self.earth.g / self.length).sqrt();
+        Ok(self
+            .measurement
+            .unit_rate_check(spin_ratio, east.hypot(north) / self.length))
+    }
+
     /// The length of the run (s).
     pub fn duration(&self) -> f64 {
         self.run.t[self.run.t.len() - 1]
