@@ -184,6 +184,20 @@ class FoucaultRun(show.Displayed):
     theory_rate:
         The exact small-swing theory's mean rate of turn (rad/s): −ω sin λ for a slow spin, exactly
         −ω at the poles; ``None`` where the bob has no stable rest position.
+    unit_rate_holds:
+        Whether the unit's −ω sin λ describes this run: the small-swing rate is within
+        1 % (the core's ``UNIT_RATE_TOLERANCE``) of it (ω ≪ √(g/L)) and the measured rate within 1 % of the
+        small-swing theory's (a small amplitude), in a run that turns steadily. The core's rule,
+        the same as the lab's warning.
+    unit_rate_note:
+        One sentence saying why (or why not), with the figures.
+    spin_ratio:
+        ω / √(g/L), the planet's spin against the pendulum's frequency (dimensionless).
+    amplitude_ratio:
+        A / L, the release's distance from the rest position over the length (dimensionless).
+    spin_departure, amplitude_departure:
+        The two departures (fractions) judged against 1 %; ``None`` where there is nothing to
+        compare (no rest position; no rate).
     """
 
     t: FloatArray = field(repr=False)
@@ -197,6 +211,12 @@ class FoucaultRun(show.Displayed):
     regime: str = "too_short"
     regime_note: str = ""
     theory_rate: float | None = None
+    unit_rate_holds: bool = False
+    unit_rate_note: str = ""
+    spin_ratio: float = 0.0
+    amplitude_ratio: float = 0.0
+    spin_departure: float | None = None
+    amplitude_departure: float | None = None
 
     def _rows(self) -> list[show.Row]:
         return [
@@ -691,6 +711,12 @@ class Earth:
             out["regime"],
             out["note"],
             out["theory_rate"],
+            out["unit_rate_holds"],
+            out["unit_rate_note"],
+            out["spin_ratio"],
+            out["amplitude_ratio"],
+            out["spin_departure"],
+            out["amplitude_departure"],
         )
 
     def inertial_oscillation(

@@ -284,3 +284,32 @@ def test_cli_shows_the_regime() -> None:
     )
     assert out.exit_code == 0, out.output
     assert "too_short" in out.output and "too few swings" in out.output and "—" in out.output
+
+
+def test_the_run_says_whether_the_units_rate_applies() -> None:
+    """FoucaultRun.unit_rate_holds is the core's rule (the lab's warning): −ω sin λ applies to
+    Paris's pendulum (ω/√(g/L) ≈ 2e-4, A/L ≈ 0.015), not to a wide swing (its own precession)
+    nor to a planet spinning at half the pendulum's frequency (the plane does not turn
+    steadily). The departures are the documented fractions, judged against 1 %."""
+    import math
+
+    earth = ps.Earth()
+    paris = earth.foucault(48.85, degrees=True)
+    assert paris.unit_rate_holds
+    # ω/√(g/L) and A/L from their definitions
+    assert math.isclose(
+        paris.spin_ratio, earth.rotation_rate / math.sqrt(earth.g / 67.0), rel_tol=1e-12
+    )
+    assert math.isclose(paris.amplitude_ratio, 1.0 / 67.0, rel_tol=1e-6)
+    assert paris.spin_departure is not None and paris.spin_departure < 0.01
+    assert paris.amplitude_departure is not None and paris.amplitude_departure < 0.01
+    assert "applies" in paris.unit_rate_note
+
+    wide = earth.foucault(48.85, degrees=True, amplitude=30.0)  # A/L ≈ 0.45
+    assert not wide.unit_rate_holds
+    assert wide.amplitude_departure is not None and wide.amplitude_departure > 0.01
+    assert "wide" in wide.unit_rate_note
+
+    fast = ps.Earth(rotation_rate=0.2).foucault(48.85, degrees=True, duration=600.0)
+    assert not fast.unit_rate_holds and fast.spin_ratio > 0.5
+    assert "does not turn steadily" in fast.unit_rate_note

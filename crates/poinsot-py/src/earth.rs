@@ -316,7 +316,9 @@ fn tolerances(rtol: f64, atol: f64, max_steps: usize) -> Tolerances {
 /// `progress(fraction)` when given: `Earth::foucault_swing_in`): {"t", "states", "turn_times",
 /// "turn_angles", "state0", "evaluations", and the measurement's "regime", "note",
 /// "precession_rate", "sense", "theory_rate", "expected_rate", "theory_fit_rate",
-/// "turning_points"}.
+/// "turning_points"; and whether the unit's −ω sin λ describes it (`FoucaultSwing::unit_rate`):
+/// "unit_rate_holds", "unit_rate_note", "spin_ratio", "amplitude_ratio", "spin_departure",
+/// "amplitude_departure"}.
 #[pyfunction]
 #[pyo3(signature = (rotation_rate, radius, g, latitude, length, amplitude, azimuth, duration, samples, rtol, atol, max_steps, progress=None))]
 #[allow(clippy::too_many_arguments)]
@@ -348,6 +350,7 @@ fn earth_foucault_swing<'py>(
             latitude, length, amplitude, azimuth, duration, samples, &tol, stretches,
         )
     })?;
+    let check = swing.unit_rate().py()?;
     let (r, m) = (swing.run, swing.measurement);
     let d = PyDict::new(py);
     d.set_item("t", PyArray1::from_vec(py, r.t))?;
@@ -364,6 +367,12 @@ fn earth_foucault_swing<'py>(
     d.set_item("expected_rate", m.expected_rate)?;
     d.set_item("theory_fit_rate", m.theory_fit_rate)?;
     d.set_item("turning_points", m.turning_points)?;
+    d.set_item("unit_rate_holds", check.holds)?;
+    d.set_item("unit_rate_note", &check.note)?;
+    d.set_item("spin_ratio", check.spin_ratio)?;
+    d.set_item("amplitude_ratio", check.amplitude_ratio)?;
+    d.set_item("spin_departure", check.spin_departure)?;
+    d.set_item("amplitude_departure", check.amplitude_departure)?;
     Ok(d)
 }
 
