@@ -144,7 +144,11 @@ print(json.dumps(out))`;
 });
 
 test("the lab ships inside the site and draws its canvas", async () => {
-  const { page, problems } = await open("lab/index.html");
+  const doc = await open("lab.html");
+  const hrefs = await doc.page.$$eval("article a", (as) => as.map((a) => a.getAttribute("href")));
+  assert.ok(hrefs.includes("lab/index.html"), "the lab page does not link the embedded lab");
+  await doc.page.close();
+  const { page, problems } = await open("lab/index.html?scene=heavytop");
   const canvas = await page.waitForSelector("canvas", { timeout: 20000 });
   await page.waitForTimeout(1500);
   const box = await canvas.boundingBox();
