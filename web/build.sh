@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Build the browser lab: the core compiled to WebAssembly (poinsot-wasm), its JavaScript glue
 # (wasm-bindgen --target web, into src/wasm, git-ignored) and the page (vite, into
-# python/poinsot/lab, git-ignored, shipped in the wheel through maturin's python-source).
+# python/poinsot/lab, git-ignored, shipped in the wheel through maturin's python-source), then the
+# notebook widgets' front end (vite.widget.config.ts: one ES module with the core inlined, into
+# python/poinsot/widgets/static, git-ignored, in the wheel).
 #   bash web/build.sh          everything
 #   bash web/build.sh wasm     the WebAssembly module and its glue only
 set -euo pipefail
@@ -28,3 +30,4 @@ cd "$here"
 if [[ ! -d node_modules ]]; then npm ci --no-audit --no-fund; fi
 npx tsc --noEmit
 npx vite build
+npx vite build -c vite.widget.config.ts
