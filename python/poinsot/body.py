@@ -74,13 +74,19 @@ class IntegrationWarning(UserWarning):
 class IntegrationErrorEstimate:
     """Error estimates of a body integrated from a density (:meth:`RigidBody.from_density`).
 
-    Attributes:
-        mass: error estimate of the mass (kg).
-        center_of_mass: largest error estimate of the three coordinates of the centre of
-            mass (m).
-        inertia: largest error estimate of the nine entries of the inertia tensor (kg·m²).
-        evaluations: number of density evaluations (points).
-        converged: whether ``rtol`` was reached within ``max_evals``.
+    Attributes
+    ----------
+    mass
+        error estimate of the mass (kg).
+    center_of_mass
+        largest error estimate of the three coordinates of the centre of
+        mass (m).
+    inertia
+        largest error estimate of the nine entries of the inertia tensor (kg·m²).
+    evaluations
+        number of density evaluations (points).
+    converged
+        whether ``rtol`` was reached within ``max_evals``.
     """
 
     mass: float
@@ -100,10 +106,13 @@ def classify(moments: Any, rtol: float = DEFAULT_KIND_RTOL) -> str:
     times the largest. A single point mass (all moments zero) satisfies the unit's definition
     of a rotor (I1 = I2, I3 = 0) and is reported as ``"rotor"``.
 
-    Raises:
-        InvalidInertiaError: the moments are negative or violate I1 + I2 ≥ I3 (message names
-            ``moments``).
-        PoinsotError: non-finite moments, a shape other than (3,), or a negative ``rtol``.
+    Raises
+    ------
+    InvalidInertiaError
+        the moments are negative or violate I1 + I2 ≥ I3 (message names
+        ``moments``).
+    PoinsotError
+        non-finite moments, a shape other than (3,), or a negative ``rtol``.
     """
     m = as_float_array(moments, "moments")
     if m.shape != (3,):
@@ -119,10 +128,13 @@ def check_inertia(inertia: Any) -> FloatArray:
     the triangle inequality I1 + I2 ≥ I3 (tolerance 16 ε of the largest moment, so thin rods,
     plates and rings, which lie on the boundary, pass).
 
-    Raises:
-        InvalidInertiaError: one of the conditions fails; the message names ``inertia``, the
-            failing condition and by how much.
-        PoinsotError: the shape is not (3, 3).
+    Raises
+    ------
+    InvalidInertiaError
+        one of the conditions fails; the message names ``inertia``, the
+        failing condition and by how much.
+    PoinsotError
+        the shape is not (3, 3).
     """
     arr = as_float_array(inertia, "inertia", finite=False)
     if arr.shape != (3, 3):
@@ -146,16 +158,24 @@ class RigidBody(show.Displayed):
     :meth:`from_density`, :meth:`from_mesh`, :meth:`from_trimesh`, :meth:`load_mesh`; combine
     bodies with ``a + b`` or :meth:`combine`. Instances are immutable.
 
-    Attributes:
-        mass: mass (kg).
-        center_of_mass: centre of mass (m), shape (3,).
-        inertia: inertia tensor about the centre of mass (kg·m², (3, 3)), products of inertia
-            negated (eqs. 2.46–2.50).
-        principal_moments: principal moments (kg·m², (3,)), ascending.
-        principal_axes: principal axes as the columns of a proper rotation ((3, 3), det +1).
-        kind: "spherical top", "symmetric top", "asymmetric top" or "rotor".
-        integration_error: for bodies from :meth:`from_density` (and their translations), an
-            :class:`IntegrationErrorEstimate`; otherwise ``None``.
+    Attributes
+    ----------
+    mass
+        mass (kg).
+    center_of_mass
+        centre of mass (m), shape (3,).
+    inertia
+        inertia tensor about the centre of mass (kg·m², (3, 3)), products of inertia
+        negated (eqs. 2.46–2.50).
+    principal_moments
+        principal moments (kg·m², (3,)), ascending.
+    principal_axes
+        principal axes as the columns of a proper rotation ((3, 3), det +1).
+    kind
+        "spherical top", "symmetric top", "asymmetric top" or "rotor".
+    integration_error
+        for bodies from :meth:`from_density` (and their translations), an
+        :class:`IntegrationErrorEstimate`; otherwise ``None``.
     """
 
     __slots__ = ("_core", "_integration_error")
@@ -198,12 +218,15 @@ class RigidBody(show.Displayed):
         by the parallel-axis theorem run backwards, I_cm = I_P − m (|d|² 1 − d dᵀ),
         d = com − P, and the checks allow for the round-off of that subtraction.
 
-        Raises:
-            InvalidInertiaError: ``inertia`` (about the centre of mass) is not finite, not
-                symmetric, has a negative principal moment or violates I1 + I2 ≥ I3 (see
-                :func:`check_inertia`).
-            PoinsotError: ``mass`` not finite and > 0, non-finite ``center_of_mass`` or
-                ``about``, shapes.
+        Raises
+        ------
+        InvalidInertiaError
+            ``inertia`` (about the centre of mass) is not finite, not
+            symmetric, has a negative principal moment or violates I1 + I2 ≥ I3 (see
+            :func:`check_inertia`).
+        PoinsotError
+            ``mass`` not finite and > 0, non-finite ``center_of_mass`` or
+            ``about``, shapes.
         """
         if about is None:
             return cls(mass, inertia, center_of_mass)
@@ -222,9 +245,11 @@ class RigidBody(show.Displayed):
         of eqs. 2.46–2.50, taken about the centre of mass Σ m r / Σ m. One point mass is
         allowed (zero inertia about itself; its kind is "rotor", see :func:`classify`).
 
-        Raises:
-            PoinsotError: empty, non-finite or non-positive masses (with the index), non-finite
-                positions, or shapes that do not match; the message names the argument.
+        Raises
+        ------
+        PoinsotError
+            empty, non-finite or non-positive masses (with the index), non-finite
+            positions, or shapes that do not match; the message names the argument.
         """
         m = as_float_array(masses, "masses")
         if m.ndim == 0:
@@ -334,26 +359,36 @@ class RigidBody(show.Displayed):
         cubature of eqs. 2.61–2.62 (Genz–Malik degree-7/5 rules, subdivision where the density
         varies most).
 
-        Args:
-            density: a **vectorised** callable: given points of shape (N, 3) (m) it returns the
-                densities, shape (N,) (kg/m³, finite and ≥ 0; a scalar is broadcast). It is
-                called with batches of many points at once.
-            bounds: ``((xmin, xmax), (ymin, ymax), (zmin, zmax))`` (m), shape (3, 2), with
-                min < max; the density is taken as zero outside.
-            rtol: relative tolerance: the mass to ``rtol·m``, the centre of mass to ``rtol`` times
-                the half-diagonal of the box, the inertia to ``rtol·tr(I)/2``.
-            atol: absolute tolerance on the inertia entries (kg·m²); the looser one wins.
-            max_evals: the most density evaluations (points).
+        Parameters
+        ----------
+        density
+            a **vectorised** callable: given points of shape (N, 3) (m) it returns the
+            densities, shape (N,) (kg/m³, finite and ≥ 0; a scalar is broadcast). It is
+            called with batches of many points at once.
+        bounds
+            ``((xmin, xmax), (ymin, ymax), (zmin, zmax))`` (m), shape (3, 2), with
+            min < max; the density is taken as zero outside.
+        rtol
+            relative tolerance: the mass to ``rtol·m``, the centre of mass to ``rtol`` times
+            the half-diagonal of the box, the inertia to ``rtol·tr(I)/2``.
+        atol
+            absolute tolerance on the inertia entries (kg·m²); the looser one wins.
+        max_evals
+            the most density evaluations (points).
 
+        Notes
+        -----
         The error estimates are in :attr:`integration_error`. If ``max_evals`` is reached
         before the tolerance, the best estimate is returned with an :class:`IntegrationWarning`
         (discontinuous densities, e.g. the indicator of a shape, converge slowly).
 
-        Raises:
-            PoinsotError: bad ``bounds`` (shape, non-finite, min ≥ max), ``rtol``, ``atol`` or
-                ``max_evals``; a density value that is negative, not finite or of the wrong
-                shape; a density that integrates to zero mass (message names ``density``).
-                Exceptions raised by ``density`` itself propagate unchanged.
+        Raises
+        ------
+        PoinsotError
+            bad ``bounds`` (shape, non-finite, min ≥ max), ``rtol``, ``atol`` or
+            ``max_evals``; a density value that is negative, not finite or of the wrong
+            shape; a density that integrates to zero mass (message names ``density``).
+            Exceptions raised by ``density`` itself propagate unchanged.
         """
         if not callable(density):
             raise PoinsotError(
@@ -409,14 +444,21 @@ class RigidBody(show.Displayed):
         """The solid bounded by a closed triangle mesh, of uniform ``density`` (kg/m³), by exact
         polyhedral integrals (eqs. 2.61–2.62 summed over signed tetrahedra).
 
-        Args:
-            vertices: vertex coordinates (m), shape (N, 3).
-            faces: vertex indices, integer array of shape (M, 3); each face counter-clockwise
-                seen from outside (normals point out of the solid).
-            density: uniform density (kg/m³), > 0.
-            merge_vertices: first merge vertices with exactly equal coordinates (needed for
-                meshes that repeat vertices per face, such as STL "triangle soups").
+        Parameters
+        ----------
+        vertices
+            vertex coordinates (m), shape (N, 3).
+        faces
+            vertex indices, integer array of shape (M, 3); each face counter-clockwise
+            seen from outside (normals point out of the solid).
+        density
+            uniform density (kg/m³), > 0.
+        merge_vertices
+            first merge vertices with exactly equal coordinates (needed for
+            meshes that repeat vertices per face, such as STL "triangle soups").
 
+        Notes
+        -----
         The mesh is checked before integrating and refused, never silently integrated, if it
         does not bound a solid: indices out of range, non-finite vertices, all faces degenerate,
         open (boundary edges), non-manifold (an edge shared by more than two faces),
@@ -425,11 +467,14 @@ class RigidBody(show.Displayed):
         or with shells nested wrongly (a shell inside another of the same winding, a cavity
         outside any solid). Vertices that no face uses are ignored.
 
-        Raises:
-            InvalidMeshError: one of the conditions above; the message names ``faces`` or
-                ``vertices`` and says what is wrong and where (e.g. the number of boundary
-                edges and one of them).
-            PoinsotError: ``density`` not finite and > 0.
+        Raises
+        ------
+        InvalidMeshError
+            one of the conditions above; the message names ``faces`` or
+            ``vertices`` and says what is wrong and where (e.g. the number of boundary
+            edges and one of them).
+        PoinsotError
+            ``density`` not finite and > 0.
         """
         v = as_float_array(vertices, "vertices", finite=False)
         if v.ndim != 2 or v.shape[1] != 3:
@@ -487,12 +532,16 @@ class RigidBody(show.Displayed):
         every triangle with its own three vertices, and without merging every STL would look
         open. See :meth:`from_mesh` for the checks.
 
-        Raises:
-            ImportError: trimesh is not installed.
-            PoinsotError: ``path`` does not exist, is not a regular file (a directory, a device
-                such as ``/dev/zero``) or is larger than the memory budget.
-            InvalidMeshError: the file cannot be read as a mesh, holds no triangles, or holds a
-                mesh that does not bound a solid.
+        Raises
+        ------
+        ImportError
+            trimesh is not installed.
+        PoinsotError
+            ``path`` does not exist, is not a regular file (a directory, a device
+            such as ``/dev/zero``) or is larger than the memory budget.
+        InvalidMeshError
+            the file cannot be read as a mesh, holds no triangles, or holds a
+            mesh that does not bound a solid.
         """
         try:
             import trimesh
@@ -646,9 +695,11 @@ class RigidBody(show.Displayed):
         ``omega`` (rad/s, shape (..., 3)) → shape (...) (a float for one ω): zero when ω lies along a principal
         axis; otherwise L is not parallel to ω (eq. 2.57).
 
-        Raises:
-            PoinsotError: ω = 0, or L = 0 (ω along an axis of zero moment), where the angle is
-                undefined (message names ``omega``).
+        Raises
+        ------
+        PoinsotError
+            ω = 0, or L = 0 (ω along an axis of zero moment), where the angle is
+            undefined (message names ``omega``).
         """
         a = self._per_omega("momentum_angle", omega, about, ())
         return np.degrees(a)[()] if as_flag(degrees, "degrees") else a
@@ -666,8 +717,10 @@ class RigidBody(show.Displayed):
         centre of mass): com ↦ R·com, I ↦ R I Rᵀ. To turn it in place, rotate then translate
         back, or build it at the origin first.
 
-        Raises:
-            InvalidRotationError: ``rotation`` is not orthonormal with det = +1 (within 1e-9).
+        Raises
+        ------
+        InvalidRotationError
+            ``rotation`` is not orthonormal with det = +1 (within 1e-9).
         """
         mats, lead = as_matrices(rotation, "rotation")
         if lead != ():

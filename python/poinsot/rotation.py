@@ -369,8 +369,10 @@ class Screw(show.Displayed):
         identity, ``s = 1`` gives :meth:`displacement`; any finite ``s`` is accepted (negative
         runs the motion backwards).
 
-        Raises:
-            PoinsotError: ``s`` not finite.
+        Raises
+        ------
+        PoinsotError
+            ``s`` not finite.
         """
         return _core.screw_displacement_at(
             self.axis, self.point, self.angle, self.slide, as_scalar(s, "s")
