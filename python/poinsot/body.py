@@ -310,6 +310,26 @@ class RigidBody(show.Displayed):
             _core.MassProperties.cuboid(_scalar(mass, "mass"), as_vector3(sides, "sides"))
         )
 
+    @staticmethod
+    def cuboid_sides(mass: float, moments: Any) -> FloatArray:
+        """The sides (a, b, c) (m), shape (3,), of the uniform solid cuboid of mass ``mass``
+        (kg) whose principal moments about x, y, z are ``moments`` (kg·m², shape (3,)): the
+        inverse of :meth:`cuboid`, a² = 6 (I_yy + I_zz − I_xx)/m and cyclically (computed in
+        the core, to the last bits at any scale).
+
+        Raises
+        ------
+        PoinsotError
+            ``mass`` not finite and > 0; ``moments`` not finite and ≥ 0, not those of a box
+            (each needs the other two to sum to more than it), or sides beyond the double
+            range — the message names ``mass`` or ``moments``.
+        """
+        return np.asarray(
+            _core.MassProperties.cuboid_sides(
+                _scalar(mass, "mass"), np.ascontiguousarray(as_vector3(moments, "moments"))
+            )
+        )
+
     @classmethod
     def ellipsoid(cls, mass: float, semi_axes: Any) -> RigidBody:
         """A uniform solid ellipsoid of mass ``mass`` (kg) with semi-axes ``semi_axes`` =

@@ -534,3 +534,23 @@ def test_extreme_sizes_are_exact_or_refused_naming_the_argument() -> None:
         ps.RigidBody.solid_sphere(1.0, 1.0).kinetic_energy([1e200, 0.0, 0.0])
     with pytest.raises(ps.PoinsotError, match="^point: "):
         ps.RigidBody.solid_sphere(1.0, 1.0).inertia_about([1e200, 0.0, 0.0])
+
+
+def test_cuboid_sides_is_the_inverse_of_cuboid() -> None:
+    """RigidBody.cuboid_sides (the core's inverse of cuboid): the sides come back from the
+    principal moments; a cube of 12 kg and moments 2 kg·m² has sides 1 m (I = m a²/6, closed
+    form); moments that no box has are refused naming ``moments`` (negative control)."""
+    for mass, sides in (
+        (2.0, (1.0, 2.0, 3.0)),
+        (0.3, (0.24, 0.16, 0.04)),
+        (5.0, (1e-9, 2e-9, 3e-9)),
+    ):
+        moments = np.diag(ps.RigidBody.cuboid(mass, sides).inertia)
+        np.testing.assert_allclose(ps.RigidBody.cuboid_sides(mass, moments), sides, rtol=1e-13)
+    np.testing.assert_allclose(
+        ps.RigidBody.cuboid_sides(12.0, [2.0, 2.0, 2.0]), [1, 1, 1], rtol=1e-15
+    )
+    with pytest.raises(ps.PoinsotError, match="^moments: .*not the moments of a box"):
+        ps.RigidBody.cuboid_sides(1.0, [1.0, 1.0, 3.0])
+    with pytest.raises(ps.PoinsotError, match="^mass:"):
+        ps.RigidBody.cuboid_sides(-1.0, [1.0, 1.0, 1.0])

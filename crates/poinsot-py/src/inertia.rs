@@ -97,6 +97,14 @@ impl PyMassProperties {
         wrap(inertia::cuboid(mass, vec3("sides", &sides)?))
     }
 
+    /// The sides (3,) of the uniform cuboid of `mass` with principal `moments` (3,) about
+    /// x, y, z: the inverse of `cuboid` (`inertia::cuboid_sides`).
+    #[staticmethod]
+    fn cuboid_sides(mass: f64, moments: PyReadonlyArray1<'_, f64>) -> PyResult<Vector> {
+        let m = vec3("moments", &moments)?;
+        Ok(Vector::from(inertia::cuboid_sides(mass, m).py()?))
+    }
+
     /// Solid ellipsoid with semi-axes (3,) along x, y, z.
     #[staticmethod]
     fn ellipsoid(mass: f64, semi_axes: PyReadonlyArray1<'_, f64>) -> PyResult<Self> {

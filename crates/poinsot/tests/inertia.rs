@@ -773,3 +773,65 @@ fn inertia_tensor_refusals() {
         }
     }
 }
+
+// ---- cuboid_sides: the inverse of cuboid -----------------------------------------------------
+
+proptest! {
+    /// The sides come back from the box's moments to a few ulps, at any scale of the double
+    /// range (the moments of a 1e-150 m box are 1e-300 kg·m²; of a 1e150 m box 1e300).
+    #[test]
+    fn cuboid_sides_inverts_cuboid(
+        a in 0.05f64..20.0, b in 0.05f64..20.0, c in 0.05f64..20.0,
+        mass in 0.01f64..100.0, scale in -140i32..140,
+    ) {
+        let s = 10f64.powi(scale);
+        let body = inertia::cuboid(mass, [a * s, b * s, c * s]).unwrap();
+        let i = body.inertia();
+        let sides = inertia::cuboid_sides(mass, [i[(0, 0)], i[(1, 1)], i[(2, 2)]]).unwrap();
+        // The box's own moments carry a few ulps; their differences (b² + c² − a² form) lose
+        // up to a factor (largest side / smallest side)² ≤ 400², hence the tolerance.
+        for (got, want) in sides.iter().zip([a * s, b * s, c * s]) {
+            prop_assert!(((got - want) / want).abs() < 1e-10, "{got} vs {want}");
+        }
+    }
+}
+
+#[test]
+fn cuboid_sides_refuses_what_is_not_a_box() {
+    // A thin rod along z (I_x = I_y, I_z = 0) is the limit of a box with two zero sides.
+    let rod = inertia::thin_rod(1.0, 2.0).unwrap().inertia();
+    let err = inertia::cuboid_sides(1.0, [rod[(0, 0)], rod[(1, 1)], rod[(2, 2)]]).unwrap_err();
+    assert_eq!(err.kind, ErrorKind::InvalidArgument);
+    assert_eq!(err.argument, "moments");
+    // 1 + 1 < 3: no box has these moments (negative control beside the round trip above).
+    let err = inertia::cuboid_sides(1.0, [1.0, 1.0, 3.0]).unwrap_err();
+    assert!(
+        err.message.contains("not the moments of a box"),
+        "{}",
+        err.message
+    );
+    assert_eq!(
+        inertia::cuboid_sides(0.0, [1.0, 1.0, 1.0])
+            .unwrap_err()
+            .argument,
+        "mass"
+    );
+    assert_eq!(
+        inertia::cuboid_sides(1.0, [f64::NAN, 1.0, 1.0])
+            .unwrap_err()
+            .argument,
+        "moments"
+    );
+    assert_eq!(
+        inertia::cuboid_sides(1.0, [-1.0, 1.0, 1.0])
+            .unwrap_err()
+            .argument,
+        "moments"
+    );
+    // A cube of side 1 m and 12 kg has moments 2 kg·m² about each axis (closed form).
+    let s = inertia::cuboid_sides(12.0, [2.0, 2.0, 2.0]).unwrap();
+    assert!(s.iter().all(|x| (x - 1.0).abs() < 1e-15), "{s:?}");
+    // Sides beyond the double range are refused, not returned as inf.
+    let err = inertia::cuboid_sides(1e-308, [1e308, 1e308, 1e308]).unwrap_err();
+    assert_eq!(err.argument, "moments");
+}

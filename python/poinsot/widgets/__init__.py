@@ -325,18 +325,11 @@ class PoinsotWidget(_SceneWidget):
             raise PoinsotError(
                 f"body: the scene starts at the identity attitude; this body starts at {q0}"
             )
-        # A uniform box's sides from its moments, I_x = M (b² + c²)/12 and cyclically (the core's
-        # RigidBody.cuboid), checked by building that box with the core below.
-        sides = []
-        for k, key in enumerate("abc"):
-            s2 = 6.0 * (m[(k + 1) % 3] + m[(k + 2) % 3] - m[k]) / BOX_MASS
-            if not s2 > 0:
-                raise PoinsotError(
-                    f"body: moments {m} are not those of a box (side {key} would be sqrt({s2}))"
-                )
-            sides.append(math.sqrt(s2))
-        if not all(_close(x, y) for x, y in zip(self._moments(sides), m, strict=True)):
-            raise PoinsotError(f"body: moments {m} are not those of a uniform {BOX_MASS} kg box")
+        # The uniform box with these moments: the core's inverse of RigidBody.cuboid.
+        try:
+            sides = [float(x) for x in RigidBody.cuboid_sides(BOX_MASS, m)]
+        except PoinsotError as err:
+            raise PoinsotError(f"body: not the scene's {BOX_MASS} kg box ({err})") from None
         # ω₀ = spin on one axis, eps·spin on the other two (0 ≤ eps ≤ 1).
         found = None
         for i in range(3):

@@ -24,8 +24,8 @@ pub use density::{
 };
 pub use mesh::{mesh_mass_properties, mesh_mass_properties_rows, FaceIndex, MAX_VERTICES};
 pub use shapes::{
-    cuboid, ellipsoid, solid_cone, solid_cylinder, solid_sphere, spherical_shell, thin_disk,
-    thin_ring, thin_rod,
+    cuboid, cuboid_sides, ellipsoid, solid_cone, solid_cylinder, solid_sphere, spherical_shell,
+    thin_disk, thin_ring, thin_rod,
 };
 pub use tensor::{
     check_inertia, check_inertia_scaled, classify, point_inertia, principal, rotate,

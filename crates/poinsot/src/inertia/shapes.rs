@@ -14,7 +14,7 @@
 //! (`2.2e-308`, where precision is lost) is an [`Error::invalid`](crate::Error::invalid)
 //! naming the more extreme of `mass` and the dimension, with the magnitude it would have.
 
-use crate::error::{check_positive, Result};
+use crate::error::{check_positive, Error, Result};
 use crate::inertia::body::MassProperties;
 use crate::inertia::scaling::{check_range, exponent, ldexp, split};
 use crate::{Mat3, Vec3};
@@ -119,6 +119,74 @@ pub fn cuboid(mass: f64, sides: [f64; 3]) -> Result<MassProperties> {
         let [a, b, c] = [l[0] * l[0], l[1] * l[1], l[2] * l[2]];
         [(b + c) / 12.0, (c + a) / 12.0, (a + b) / 12.0]
     })
+}
+
+/// The sides `[a, b, c]` (m) of the uniform solid cuboid of mass `mass` (kg) whose principal
+/// moments about `x, y, z` are `moments` (kg·m²): the inverse of [`cuboid`], from
+/// `I_xx = m (b² + c²)/12` and cyclically, `a² = 6 (I_yy + I_zz − I_xx)/m` and cyclically.
+///
+/// Computed on mantissas (the moments and the mass scaled by exact powers of two), so any
+/// moments of the double range give sides good to the last bits. Errors: `mass` not finite and
+/// `> 0`; `moments` not finite and `≥ 0`, or not those of a box — every side needs
+/// `I_yy + I_zz > I_xx` (and cyclically), strictly: a box has no side of length zero — or sides
+/// beyond the double range (named `moments`).
+///
+/// ```
+/// use poinsot::inertia::{cuboid, cuboid_sides};
+/// let box_ = cuboid(2.0, [1.0, 2.0, 3.0]).unwrap();
+/// let i = box_.inertia();
+/// let sides = cuboid_sides(2.0, [i[(0, 0)], i[(1, 1)], i[(2, 2)]]).unwrap();
+/// assert!((sides[0] - 1.0).abs() < 1e-15 && (sides[2] - 3.0).abs() < 1e-15);
+/// ```
+pub fn cuboid_sides(mass: f64, moments: [f64; 3]) -> Result<[f64; 3]> {
+    check_positive("mass", mass)?;
+    for m in moments {
+        if !(m.is_finite() && m >= 0.0) {
+            return Err(Error::invalid(
+                "moments",
+                format!("must be finite and >= 0, got {moments:?}"),
+            ));
+        }
+    }
+    let (mm, em) = split(mass);
+    let k = exponent(moments.iter().fold(0.0f64, |a, x| a.max(*x)));
+    let i = moments.map(|x| ldexp(x, -k));
+    let mut sides = [0.0; 3];
+    for n in 0..3 {
+        let d = i[(n + 1) % 3] + i[(n + 2) % 3] - i[n];
+        if !(d > 0.0) {
+            return Err(Error::invalid(
+                "moments",
+                format!(
+                    "{moments:?} kg·m² are not the moments of a box: side {} would need \
+                     I{} + I{} > I{}",
+                    ["a", "b", "c"][n],
+                    (n + 1) % 3 + 1,
+                    (n + 2) % 3 + 1,
+                    n + 1
+                ),
+            ));
+        }
+        // s² = 6 d / mm · 2^(k − em); an even exponent keeps the square root exact in scale.
+        let mut e = k - em;
+        let mut q = 6.0 * d / mm;
+        if e % 2 != 0 {
+            q *= 2.0;
+            e -= 1;
+        }
+        sides[n] = ldexp(q.sqrt(), e / 2);
+        if !(sides[n].is_finite() && sides[n] > 0.0 && sides[n] >= f64::MIN_POSITIVE) {
+            return Err(Error::invalid(
+                "moments",
+                format!(
+                    "the box's side {} (2^{} m) lies outside the range of doubles; {HINT}",
+                    ["a", "b", "c"][n],
+                    e / 2
+                ),
+            ));
+        }
+    }
+    Ok(sides)
 }
 
 /// A solid ellipsoid with semi-axes `semi_axes = [a, b, c]` along `x, y, z`:
