@@ -4,61 +4,20 @@
 // typeset by the site's MathJax without a TeX error (a \tag inside the split environment Sphinx
 // wraps round a multi-line equation is one) and within the text column, its figures drawn,
 // its outputs there and no traceback among them, and no request leaving the site.
-import { test, before, after } from "node:test";
+import { test } from "node:test";
 import assert from "node:assert/strict";
-import http from "node:http";
-import { readdir, readFile, stat } from "node:fs/promises";
+import { readdir } from "node:fs/promises";
 import path from "node:path";
-import { fileURLToPath } from "node:url";
-import { chromium } from "playwright-core";
+import { here, startSite } from "./serve.mjs";
 
-const here = path.dirname(fileURLToPath(import.meta.url));
-const site = path.resolve(process.env.SITE ?? path.join(here, "..", "_build", "html"));
 const notebooks = (await readdir(path.join(here, "..", "..", "notebooks")))
   .filter((f) => f.endsWith(".ipynb"))
   .map((f) => f.slice(0, -".ipynb".length))
   .sort();
-const TYPES = {
-  ".html": "text/html; charset=utf-8", ".js": "text/javascript", ".mjs": "text/javascript",
-  ".css": "text/css", ".json": "application/json", ".png": "image/png", ".gif": "image/gif",
-  ".svg": "image/svg+xml", ".woff": "font/woff", ".woff2": "font/woff2", ".ttf": "font/ttf",
-  ".txt": "text/plain", ".ico": "image/x-icon",
-};
 // A display equation may overhang the text column by this many pixels (sub-pixel rounding).
 const OVERHANG_PX = 1;
 
-let server;
-let base;
-let browser;
-
-before(async () => {
-  server = http.createServer(async (req, res) => {
-    const url = new URL(req.url, "http://127.0.0.1");
-    let file = path.join(site, decodeURIComponent(url.pathname));
-    if (!file.startsWith(site)) { res.writeHead(403).end(); return; }
-    try {
-      if ((await stat(file)).isDirectory()) file = path.join(file, "index.html");
-      const body = await readFile(file);
-      res.writeHead(200, { "content-type": TYPES[path.extname(file)] ?? "application/octet-stream" });
-      res.end(body);
-    } catch {
-      res.writeHead(404).end("not found");
-    }
-  });
-  await new Promise((r) => server.listen(0, "127.0.0.1", r));
-  base = `http://127.0.0.1:${server.address().port}/`;
-  browser = await chromium.launch({
-    executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
-    headless: true,
-    args: ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
-      "--disable-component-update", "--disable-sync", "--no-first-run"],
-  });
-});
-
-after(async () => {
-  await browser?.close();
-  server?.close();
-});
+const { base, browser } = await startSite();
 
 /** Opens `rel` of the site; returns the page and the problems seen (console errors, failed or
  * off-site requests, 404s). */

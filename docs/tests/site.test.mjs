@@ -3,58 +3,14 @@
 // with its images, the API page of HeavyTop, the embedded lab drawing its canvas, and the
 // search. The site is served from loopback by a small static server, as a user's browser would
 // read it; any request that leaves 127.0.0.1 fails the test (the site must work offline).
-import { test, before, after } from "node:test";
+import { test } from "node:test";
 import assert from "node:assert/strict";
-import http from "node:http";
-import { readFile, stat } from "node:fs/promises";
 import path from "node:path";
-import { fileURLToPath } from "node:url";
 import { execFileSync } from "node:child_process";
 import { existsSync } from "node:fs";
-import { chromium } from "playwright-core";
+import { here, site, startSite } from "./serve.mjs";
 
-const here = path.dirname(fileURLToPath(import.meta.url));
-const site = path.resolve(process.env.SITE ?? path.join(here, "..", "_build", "html"));
-const TYPES = {
-  ".html": "text/html; charset=utf-8", ".js": "text/javascript", ".mjs": "text/javascript",
-  ".css": "text/css", ".json": "application/json", ".png": "image/png", ".gif": "image/gif",
-  ".svg": "image/svg+xml", ".wasm": "application/wasm", ".woff": "font/woff",
-  ".woff2": "font/woff2", ".ttf": "font/ttf", ".txt": "text/plain", ".inv": "application/octet-stream",
-  ".ico": "image/x-icon", ".mp4": "video/mp4",
-};
-
-let server;
-let base;
-let browser;
-
-before(async () => {
-  server = http.createServer(async (req, res) => {
-    const url = new URL(req.url, "http://127.0.0.1");
-    let file = path.join(site, decodeURIComponent(url.pathname));
-    if (!file.startsWith(site)) { res.writeHead(403).end(); return; }
-    try {
-      if ((await stat(file)).isDirectory()) file = path.join(file, "index.html");
-      const body = await readFile(file);
-      res.writeHead(200, { "content-type": TYPES[path.extname(file)] ?? "application/octet-stream" });
-      res.end(body);
-    } catch {
-      res.writeHead(404).end("not found");
-    }
-  });
-  await new Promise((r) => server.listen(0, "127.0.0.1", r));
-  base = `http://127.0.0.1:${server.address().port}/`;
-  browser = await chromium.launch({
-    executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
-    headless: true,
-    args: ["--headless", "--no-sandbox", "--disable-gpu", "--enable-unsafe-swiftshader",
-      "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run"],
-  });
-});
-
-after(async () => {
-  await browser?.close();
-  server?.close();
-});
+const { base, browser } = await startSite();
 
 /** Opens `page` of the site; returns the page and the problems seen (console errors, failed
  * or off-site requests, 404s). */
