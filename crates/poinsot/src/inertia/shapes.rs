@@ -154,7 +154,8 @@ pub fn cuboid_sides(mass: f64, moments: [f64; 3]) -> Result<[f64; 3]> {
     let mut sides = [0.0; 3];
     for n in 0..3 {
         let d = i[(n + 1) % 3] + i[(n + 2) % 3] - i[n];
-        if !(d > 0.0) {
+        // d is finite: the moments were checked finite above.
+        if d <= 0.0 {
             return Err(Error::invalid(
                 "moments",
                 format!(
