@@ -132,7 +132,9 @@ def test_a_body_the_scene_cannot_show_is_refused_naming_body():
         w.body = FreeRigidBody([1.0, 2.0, 2.5], [1.0, 0.2, 0.3])
     with pytest.raises(PoinsotError, match=r"body: a = 0.7\d* \(m\) is outside"):
         w.body = FreeRigidBody(poinsot.RigidBody.cuboid(1.0, [0.7, 0.2, 0.1]), [4.0, 0.2, 0.2])
-    with pytest.raises(PoinsotError, match="body: not the scene.s .* box .*moments: .* not the moments of a box"):
+    with pytest.raises(
+        PoinsotError, match="body: not the scene.s .* box .*moments: .* not the moments of a box"
+    ):
         w.body = FreeRigidBody([1.0, 1.0, 2.0], [4.0, 0.2, 0.2])
     with pytest.raises(PoinsotError, match="body: the scene starts at the identity attitude"):
         w.body = FreeRigidBody([0.004, 0.005, 0.007], [4.0, 0.2, 0.2], [0.0, 1.0, 0.0, 0.0])
