@@ -1,0 +1,413 @@
+"""The machinery of :mod:`poinsot.derive`: checked steps, the unit's vector notation, a fast
+zero test, and the printed equations that :func:`poinsot.derive.errata` compares.
+
+A step is written in the unit's notation (``Cross(omega, V)`` prints as ω⃗ × V⃗) and checked in a
+*model*: the derivation's map from that notation to components (sympy matrices of functions of
+time) in which every step must reduce to zero. What is shown and what is checked are the same
+sympy object, so a derivation that builds is a proof of each equation it shows.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import sympy as sp
+from sympy.physics.vector.printing import vlatex
+
+from ..errors import PoinsotError
+
+__all__ = [
+    "Vec",
+    "Unit",
+    "Cross",
+    "Dot",
+    "DtFix",
+    "DtRot",
+    "VectorModel",
+    "Step",
+    "Derivation",
+    "Printed",
+    "Erratum",
+    "is_zero",
+    "cross_matrix",
+]
+
+# ---- the unit's vector notation -----------------------------------------------------------------
+
+
+class Vec(sp.Symbol):
+    """A vector of the unit, printed with an arrow: ``Vec("omega")`` is ω⃗, ``Vec("r'")`` is r⃗′.
+
+    It is a scalar to sympy (sums and scalar multiples print as written); a :class:`VectorModel`
+    gives it components when a step is checked."""
+
+    def _latex(self, printer: Any) -> str:
+        base, prime = (self.name[:-1], "'") if self.name.endswith("'") else (self.name, "")
+        sub = ""
+        if "_" in base:
+            base, sub = base.split("_", 1)
+            sub = "_{" + sub + "}"
+        return r"\vec{" + printer._print(sp.Symbol(base)) + "}" + prime + sub
+
+
+class Unit(sp.Symbol):
+    """A unit vector of the unit, printed with a hat: ``Unit("i")`` is î, ``Unit("k'")`` is k̂′."""
+
+    def _latex(self, printer: Any) -> str:
+        base, prime = (self.name[:-1], "'") if self.name.endswith("'") else (self.name, "")
+        body = {"i": r"\imath", "j": r"\jmath"}.get(base, printer._print(sp.Symbol(base)))
+        return r"\hat{" + body + "}" + prime
+
+
+def _wrap(printer: Any, e: Any, cross_right: bool = False) -> str:
+    s = printer._print(e)
+    if isinstance(e, sp.Add) or (cross_right and isinstance(e, Cross)):
+        return r"\left(" + s + r"\right)"
+    return s
+
+
+class Cross(sp.Function):
+    """The cross product a × b, unevaluated (its components come from the model)."""
+
+    nargs = 2
+
+    def _latex(self, printer: Any) -> str:
+        a, b = self.args
+        return _wrap(printer, a) + r" \times " + _wrap(printer, b, cross_right=True)
+
+
+class Dot(sp.Function):
+    """The scalar product a · b, unevaluated."""
+
+    nargs = 2
+
+    def _latex(self, printer: Any) -> str:
+        a, b = self.args
+        return _wrap(printer, a) + r" \cdot " + _wrap(printer, b)
+
+
+def _dt_latex(printer: Any, e: Any, frame: str) -> str:
+    order, inner = 1, e.args[0]
+    while isinstance(inner, type(e)):
+        order, inner = order + 1, inner.args[0]
+    d = "d" if order == 1 else f"d^{{{order}}}"
+    dt = "dt" if order == 1 else f"dt^{{{order}}}"
+    if isinstance(inner, (sp.Symbol, sp.Function)) and not isinstance(inner, (Cross, Dot)):
+        frac = r"\frac{" + d + " " + printer._print(inner) + "}{" + dt + "}"
+    else:
+        frac = r"\frac{" + d + "}{" + dt + r"}\left(" + printer._print(inner) + r"\right)"
+    return r"\left(" + frac + r"\right)_{\mathrm{" + frame + "}}"
+
+
+class DtFix(sp.Function):
+    """(dX/dt)_fix: the rate of change of X seen in the fixed (primed, inertial) frame."""
+
+    nargs = 1
+
+    def _latex(self, printer: Any) -> str:
+        return _dt_latex(printer, self, "fix")
+
+
+class DtRot(sp.Function):
+    """(dX/dt)_rot: the rate of change of X seen in the rotating (unprimed) frame."""
+
+    nargs = 1
+
+    def _latex(self, printer: Any) -> str:
+        return _dt_latex(printer, self, "rot")
+
+
+def cross_matrix(a: Any) -> sp.Matrix:
+    """The matrix [a]× with [a]× b = a × b (a a 3-vector of sympy expressions)."""
+    return sp.Matrix([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+
+
+@dataclass
+class VectorModel:
+    """Components for the unit's notation: ``vectors`` maps each :class:`Vec`/:class:`Unit` to a
+    3×1 sympy matrix; ``dt_fix`` and ``dt_rot`` map a component matrix to the components of its
+    rate in the fixed and the rotating frame; ``scalars`` substitutes scalar symbols."""
+
+    vectors: Mapping[Any, sp.Matrix]
+    dt_fix: Callable[[sp.Matrix], sp.Matrix] | None = None
+    dt_rot: Callable[[sp.Matrix], sp.Matrix] | None = None
+    scalars: Mapping[Any, Any] = field(default_factory=dict)
+
+    def __call__(self, e: Any) -> Any:
+        """The components of ``e`` (a matrix for a vector expression, else a scalar)."""
+        return self._ev(sp.sympify(e))
+
+    def _ev(self, e: Any) -> Any:
+        if e in self.vectors:
+            return self.vectors[e]
+        if e in self.scalars:
+            return self.scalars[e]
+        if isinstance(e, (Vec, Unit)):
+            raise PoinsotError(f"the model has no components for the vector {e}")
+        if isinstance(e, Cross):
+            a, b = (self._ev(x) for x in e.args)
+            return sp.Matrix(a).cross(sp.Matrix(b))
+        if isinstance(e, Dot):
+            a, b = (self._ev(x) for x in e.args)
+            return (sp.Matrix(a).T * sp.Matrix(b))[0, 0]
+        if isinstance(e, DtFix):
+            if self.dt_fix is None:
+                raise PoinsotError("the model has no fixed-frame rate")
+            return self.dt_fix(self._ev(e.args[0]))
+        if isinstance(e, DtRot):
+            if self.dt_rot is None:
+                raise PoinsotError("the model has no rotating-frame rate")
+            return self.dt_rot(self._ev(e.args[0]))
+        if isinstance(e, sp.Add):
+            parts = [self._ev(x) for x in e.args]
+            total = parts[0]
+            for p in parts[1:]:
+                total = total + p
+            return total
+        if isinstance(e, sp.Mul):
+            out: Any = sp.Integer(1)
+            for x in e.args:
+                v = self._ev(x)
+                out = v * out if isinstance(out, sp.MatrixBase) else out * v
+            return out
+        if isinstance(e, sp.Pow):
+            return self._ev(e.base) ** e.exp
+        if e.args and not isinstance(e, sp.Derivative) and isinstance(e, sp.Function):
+            return e.func(*(self._ev(x) for x in e.args))
+        return e
+
+
+# ---- the zero test ------------------------------------------------------------------------------
+
+
+def _trig_polynomial_zero(e: Any) -> bool:
+    """Whether ``e`` (expanded, free of matrices) is zero as a polynomial in the sines and cosines
+    of its angles modulo sin² + cos² = 1, with every other function treated as a symbol.
+
+    Exact and fast for the rotation matrices of Euler angles, where ``simplify`` takes seconds."""
+    e = sp.expand_trig(e)
+    atoms = sorted(e.atoms(sp.sin, sp.cos), key=sp.default_sort_key)
+    args = sorted({a.args[0] for a in atoms}, key=sp.default_sort_key)
+    rep: dict[Any, Any] = {}
+    mods = []
+    for k, a in enumerate(args):
+        s, c = sp.Dummy(f"s{k}"), sp.Dummy(f"c{k}")
+        rep[sp.sin(a)], rep[sp.cos(a)] = s, c
+        mods.append((s, c))
+    # every remaining function of time (and its derivatives) becomes a plain symbol
+    others = sorted(e.atoms(sp.Derivative), key=lambda x: -sp.count_ops(x))
+    for k, x in enumerate(others):
+        rep[x] = sp.Dummy(f"d{k}")
+    p = sp.expand(e.xreplace(rep) if not others else e.subs(rep))
+    funcs = [f for f in p.atoms(sp.Function) if not isinstance(f, (sp.sin, sp.cos))]
+    p = p.xreplace({f: sp.Dummy(f"f{k}") for k, f in enumerate(funcs)})
+    num = sp.numer(sp.together(p))
+    num = sp.expand(num)
+    for s, c in mods:
+        if num.has(s):
+            num = sp.expand(sp.rem(num, s**2 + c**2 - 1, s))
+    return bool(num == 0)
+
+
+def is_zero(e: Any) -> bool:
+    """Whether the scalar or matrix ``e`` is identically zero: expanded first, then as a
+    trigonometric polynomial (:func:`_trig_polynomial_zero`), then by ``simplify``."""
+    if isinstance(e, sp.MatrixBase):
+        return all(is_zero(x) for x in e)
+    e = sp.sympify(e)
+    if e == 0:
+        return True
+    x = sp.expand(e)
+    if x == 0:
+        return True
+    if x.has(sp.sin, sp.cos) or x.has(sp.Derivative):
+        try:
+            if _trig_polynomial_zero(x):
+                return True
+        except (sp.PolynomialError, sp.polys.polyerrors.PolificationFailed):
+            pass
+    return bool(sp.simplify(x) == 0)
+
+
+# ---- steps and derivations ----------------------------------------------------------------------
+
+
+def _latex(e: Any) -> str:
+    """LaTeX in the unit's style: functions of time without "(t)", rates with dots
+    (sympy.physics.vector's printer), terms in the order written."""
+    return str(vlatex(e, order="none"))
+
+
+@dataclass(frozen=True)
+class Step:
+    """One step of a derivation: what is done (``text``), the equation it gives
+    (``equation``, a sympy ``Eq`` in the unit's notation, or a chain of them) and the unit's
+    equation ``number`` it reaches, if any."""
+
+    text: str
+    equation: Any
+    number: str | None = None
+
+    def latex(self) -> str:
+        """The step's equation as LaTeX, tagged with the unit's number."""
+        tag = f" \\tag{{{self.number}}}" if self.number else ""
+        return _chain_latex(self.equation) + tag
+
+
+def _chain_latex(eq: Any) -> str:
+    if isinstance(eq, (list, tuple)):
+        out = _latex(eq[0].lhs)
+        for e in eq:
+            out += " = " + _latex(e.rhs)
+        return out
+    if isinstance(eq, sp.Equality):
+        return _latex(eq.lhs) + " = " + _latex(eq.rhs)
+    return _latex(eq)
+
+
+def _eqs(eq: Any) -> list[Any]:
+    return list(eq) if isinstance(eq, (list, tuple)) else [eq]
+
+
+@dataclass
+class Derivation:
+    """A derivation of the unit: ``steps`` from its starting point to ``result`` (the derived
+    equations keyed by the unit's equation numbers, e.g. ``"2.14"``).
+
+    ``model`` maps the notation to components (identity for scalar derivations); ``context``
+    substitutes the derivation's standing assumptions (e.g. ``I₂ = I₁``) before a check."""
+
+    name: str
+    title: str
+    summary: str = ""
+    model: Callable[[Any], Any] = field(default=lambda e: e, repr=False)
+    context: dict[Any, Any] = field(default_factory=dict)
+    steps: list[Step] = field(default_factory=list)
+    result: dict[str, Any] = field(default_factory=dict)
+    #: lambdify-ready forms of results: number → (expression, symbols in order)
+    functions: dict[str, tuple[Any, tuple[Any, ...]]] = field(default_factory=dict)
+
+    def residual(self, eq: Any) -> Any:
+        """``lhs − rhs`` of ``eq`` in components under the context (zero when ``eq`` holds)."""
+        diff = self.model(eq.lhs) - self.model(eq.rhs)
+        if self.context:
+            diff = diff.subs(self.context)
+        return diff
+
+    def holds(self, eq: Any) -> bool:
+        """Whether ``eq`` (an ``Eq`` in the notation, or a chain of them) holds in the model."""
+        return all(is_zero(self.residual(e)) for e in _eqs(eq))
+
+    def step(self, text: str, eq: Any, number: str | None = None) -> Any:
+        """Records ``eq`` (an ``Eq``, or a list ``[Eq(a, b), Eq(b, c), ...]`` shown as
+        ``a = b = c``) after checking that it holds; returns the last right-hand side. A step that
+        does not hold raises :class:`PoinsotError` naming it: a derivation cannot record a false
+        equation."""
+        for e in _eqs(eq):
+            if not is_zero(self.residual(e)):
+                raise PoinsotError(
+                    f"derivation {self.name}: the step {text!r} does not hold: "
+                    f"{sp.sstr(e)} leaves {sp.sstr(self.residual(e))}"
+                )
+        return self._record(text, eq, number)
+
+    def given(self, text: str, eq: Any, number: str | None = None) -> Any:
+        """Records a definition or starting point of the unit (an axiom of this derivation: it
+        is not checked, and a reader should see it as the place the derivation starts)."""
+        return self._record("Given: " + text if not text.startswith("Given") else text, eq, number)
+
+    def _record(self, text: str, eq: Any, number: str | None) -> Any:
+        self.steps.append(Step(text, eq, number))
+        if number is not None:
+            self.result[number] = eq
+        return _eqs(eq)[-1].rhs
+
+    def function(self, number: str, expr: Any, symbols: Sequence[Any]) -> None:
+        """Registers the numeric form of result ``number`` (for :meth:`lambdify`)."""
+        self.functions[number] = (expr, tuple(symbols))
+
+    def lambdify(self, number: str) -> Callable[..., Any]:
+        """The result ``number`` as a numpy function of its symbols (in registration order)."""
+        expr, syms = self.functions[number]
+        return sp.lambdify(syms, expr, "numpy")  # type: ignore[no-any-return]
+
+    def latex(self) -> str:
+        """The derivation as a LaTeX document fragment: each step's sentence and equation."""
+        parts = [f"\\section*{{{self.title}}}"]
+        if self.summary:
+            parts.append(self.summary)
+        for s in self.steps:
+            parts.append(s.text)
+            parts.append("\\begin{equation}" + s.latex() + "\\end{equation}")
+        return "\n\n".join(parts) + "\n"
+
+    def markdown(self, heading: str = "##") -> str:
+        """The derivation as Markdown with ``$$`` display math (MyST, Jupyter, GitHub)."""
+        parts = [f"{heading} {self.title}", ""]
+        if self.summary:
+            parts += [self.summary, ""]
+        for k, s in enumerate(self.steps, 1):
+            parts += [f"{k}. {s.text}", "", f"   $$ {s.latex()} $$", ""]
+        return "\n".join(parts)
+
+
+# ---- the unit as printed ------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Printed:
+    """An equation of the unit as printed: its ``number``, the printed text transcribed
+    (``as_printed``, LaTeX as in the unit) and the same equation in the derivation's notation
+    (``equation``, an ``Eq`` or a chain). ``derivation`` names the derivation whose model judges
+    it; ``note`` says what was read into the scan (e.g. a subscript f read as (d/dt)_fix)."""
+
+    number: str
+    derivation: str
+    as_printed: str
+    equation: Any
+    note: str = ""
+
+
+@dataclass(frozen=True)
+class Erratum:
+    """A printed equation that does not follow from the derivation: the printed form, the
+    derived form (``derived``, the derivation's result of that number) and which link of a
+    printed chain fails (``failing``)."""
+
+    number: str
+    derivation: str
+    as_printed: str
+    printed: Any
+    derived: Any
+    failing: tuple[Any, ...]
+    note: str = ""
+
+    def printed_latex(self) -> str:
+        """The printed equation, in the derivation's notation, as LaTeX."""
+        return _chain_latex(self.printed)
+
+    def derived_latex(self) -> str:
+        """The derived equation as LaTeX."""
+        return _chain_latex(self.derived)
+
+
+def judge(printed: Iterable[Printed], derivations: Mapping[str, Derivation]) -> list[Erratum]:
+    """The printed equations that do not hold in their derivation's model."""
+    out = []
+    for p in printed:
+        d = derivations[p.derivation]
+        failing = tuple(e for e in _eqs(p.equation) if not is_zero(d.residual(e)))
+        if failing:
+            if p.number not in d.result:
+                raise PoinsotError(
+                    f"printed equation {p.number} does not follow, and derivation {d.name} "
+                    "derives no equation of that number to show instead"
+                )
+            out.append(
+                Erratum(
+                    p.number, d.name, p.as_printed, p.equation, d.result[p.number], failing, p.note
+                )
+            )
+    return out
