@@ -11,7 +11,7 @@ PY := $(VENV)/bin/python
 export PYO3_PYTHON := $(abspath $(PY))
 export MPLBACKEND := Agg
 
-.PHONY: docs docs-setup test-docs setup demo test test-rust lint doc publish-check test-python examples bench stubtest clean lab lab-build test-web web-setup fuzz fuzz-python fuzz-web wheel test-wheel
+.PHONY: docs errata-page docs-setup test-docs setup demo test test-rust lint doc publish-check test-python examples bench stubtest clean lab lab-build test-web web-setup fuzz fuzz-python fuzz-web wheel test-wheel
 
 $(PY):
 	$(PYTHON) -m venv $(VENV)
@@ -68,6 +68,10 @@ web-setup:
 # The documentation site (Sphinx, docs/conf.py) into docs/_build/html: the topic pages, the
 # gallery (examples/ executed), the API and CLI references, the notebooks, the lab. Offline:
 # MathJax (docs/node_modules) and the built lab are inside. Warnings are errors.
+# docs/errata.md from poinsot.derive.errata() (kept in git; test_derive_pages.py holds it equal).
+errata-page:
+	$(PY) docs/_ext/derive_pages.py
+
 docs-setup:
 	cd docs && npm ci --no-audit --no-fund
 

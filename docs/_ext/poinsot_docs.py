@@ -5,6 +5,8 @@
   and the public submodules, so a new public name gets its page without an edit here; the
   teaching notebooks (``notebooks/*.ipynb``, outside docs/ where Sphinx cannot read them) are
   copied into docs/notebooks/ (git-ignored), where myst-nb executes them at build time.
+* ``config-inited`` too: the derivations page and the errata page are written from
+  :mod:`poinsot.derive` (docs/_ext/derive_pages.py).
 * ``build-finished``: the built browser lab (python/poinsot/lab, ``make lab-build``) is copied
   to ``lab/`` of the site, so the site alone is a complete offline companion.
 """
@@ -17,6 +19,8 @@ import shutil
 from pathlib import Path
 from typing import Any
 
+import derive_pages  # docs/_ext/, on the path beside this module
+
 DOCS = Path(__file__).resolve().parent.parent
 ROOT = DOCS.parent
 MATHJAX = DOCS / "node_modules" / "mathjax" / "es5"
@@ -28,7 +32,7 @@ NOTEBOOKS = ROOT / "notebooks"
 NOTEBOOK_COPIES = DOCS / "notebooks"
 
 # The public submodules documented beside the package's top-level names.
-SUBMODULES = ["poinsot.plots", "poinsot.special"]
+SUBMODULES = ["poinsot.plots", "poinsot.special", "poinsot.derive"]
 
 
 def _copy_mathjax(app: Any, config: Any) -> None:
@@ -156,6 +160,7 @@ def setup(app: Any) -> dict[str, Any]:
     app.connect("config-inited", _copy_mathjax)
     app.connect("config-inited", _write_api)
     app.connect("config-inited", _copy_notebooks)
+    app.connect("config-inited", derive_pages.write_pages)
     app.connect("build-finished", _copy_lab)
     return {"parallel_read_safe": True, "parallel_write_safe": True}
 

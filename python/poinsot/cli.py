@@ -1644,3 +1644,76 @@ def _check_figure_out(path: Path) -> None:
             f"--out: matplotlib cannot write {'.' + suffix if suffix else 'a file without a suffix'}"
             f"; use one of {', '.join('.' + k for k in sorted(kinds))}"
         )
+
+
+# -- poinsot derive: the unit, derived (poinsot.derive, the symbolic extra) ------------------------
+@main.command()
+@click.argument("name", required=False)
+@click.option("--list", "list_all", is_flag=True, help="List the derivations and what they derive.")
+@click.option(
+    "--latex", "as_latex", is_flag=True, help="Write the derivation as LaTeX instead of text."
+)
+@click.option(
+    "--markdown",
+    "as_markdown",
+    is_flag=True,
+    help="Write the derivation as Markdown with $$ math (MyST, Jupyter, GitHub).",
+)
+def derive(name: str | None, list_all: bool, as_latex: bool, as_markdown: bool) -> None:
+    """The unit's derivation NAME, step by step, each step checked by sympy.
+
+    NAME is one of the derivations (``--list`` shows them, in the unit's order), or
+    ``questions`` (the unit's question bank with the package's answers) or ``errata`` (the
+    unit's printed equations that do not follow from the derivations, with the derived form).
+    Needs sympy: ``pip install 'poinsot[symbolic]'``.
+
+    \b
+    Examples:
+      poinsot derive --list
+      poinsot derive heavy_top
+      poinsot derive rigid_body --markdown > rigid_body.md
+      poinsot derive errata
+      poinsot derive questions
+    """
+    try:
+        from . import derive as d
+    except ImportError as exc:
+        raise Refused(
+            "poinsot derive needs sympy, which is not installed: pip install 'poinsot[symbolic]'"
+        ) from exc
+    if as_latex and as_markdown:
+        raise click.UsageError("--latex and --markdown: give one of them, not both")
+    special = ("questions", "errata")
+    if list_all:
+        if name is not None:
+            raise click.UsageError("--list lists every derivation: give it without NAME")
+        for one in d.derivations():
+            click.echo(f"{one.name:<16} {one.title}")
+            click.echo(f"{'':<16} derives {', '.join(one.result)}")
+        click.echo(f"{'questions':<16} The unit's question bank, answered from the package")
+        click.echo(f"{'errata':<16} The unit's printed equations that do not follow")
+        return
+    if name is None:
+        raise click.UsageError(
+            "NAME: missing; give a derivation (poinsot derive --list shows them), "
+            "'questions' or 'errata'"
+        )
+    if name not in d.names() and name not in special:
+        raise click.UsageError(
+            f"NAME: no derivation '{name}'; give one of {', '.join(d.names() + list(special))}"
+        )
+    if name == "questions":
+        if as_latex:
+            raise click.UsageError("--latex: the question bank is written as text or Markdown")
+        from .derive.questions import render
+
+        click.echo(render(d.questions(), markdown=as_markdown))
+        return
+    if name == "errata":
+        from .derive._core import render_errata
+
+        style = "latex" if as_latex else "markdown" if as_markdown else "text"
+        click.echo(render_errata(d.errata(), style))
+        return
+    one = d.derivation(name)
+    click.echo(one.latex() if as_latex else one.markdown() if as_markdown else one.text())

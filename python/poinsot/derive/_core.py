@@ -14,7 +14,8 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import sympy as sp
-from sympy.physics.vector.printing import vlatex
+from sympy.physics.vector.printing import VectorPrettyPrinter, vlatex
+from sympy.printing.pretty.stringpict import prettyForm
 
 from ..errors import PoinsotError
 
@@ -51,6 +52,12 @@ class Vec(sp.Symbol):
             sub = "_{" + sub + "}"
         return r"\vec{" + printer._print(sp.Symbol(base)) + "}" + prime + sub
 
+    def _pretty(self, printer: Any) -> Any:
+        base, prime = (self.name[:-1], "'") if self.name.endswith("'") else (self.name, "")
+        base, _, sub = base.partition("_")
+        glyph = printer._print(sp.Symbol(base)).render(wrap_line=False)
+        return prettyForm(glyph + "\u20d7" + prime + (f"_{sub}" if sub else ""))
+
 
 class Unit(sp.Symbol):
     """A unit vector of the unit, printed with a hat: ``Unit("i")`` is î, ``Unit("k'")`` is k̂′."""
@@ -59,6 +66,23 @@ class Unit(sp.Symbol):
         base, prime = (self.name[:-1], "'") if self.name.endswith("'") else (self.name, "")
         body = {"i": r"\imath", "j": r"\jmath"}.get(base, printer._print(sp.Symbol(base)))
         return r"\hat{" + body + "}" + prime
+
+    def _pretty(self, printer: Any) -> Any:
+        base, prime = (self.name[:-1], "'") if self.name.endswith("'") else (self.name, "")
+        return prettyForm(base + "\u0302" + prime)
+
+
+def _pwrap(printer: Any, e: Any, cross_right: bool = False) -> Any:
+    f = printer._print(e)
+    if isinstance(e, sp.Add) or (cross_right and isinstance(e, Cross)):
+        f = prettyForm(*f.parens())
+    return f
+
+
+def _pretty_binary(printer: Any, e: Any, op: str) -> Any:
+    a, b = e.args
+    left = _pwrap(printer, a)
+    return prettyForm(*left.right(f" {op} ", _pwrap(printer, b, cross_right=op == "×")))
 
 
 def _wrap(printer: Any, e: Any, cross_right: bool = False) -> str:
@@ -77,6 +101,9 @@ class Cross(sp.Function):
         a, b = self.args
         return _wrap(printer, a) + r" \times " + _wrap(printer, b, cross_right=True)
 
+    def _pretty(self, printer: Any) -> Any:
+        return _pretty_binary(printer, self, "×")
+
 
 class Dot(sp.Function):
     """The scalar product a · b, unevaluated."""
@@ -86,6 +113,9 @@ class Dot(sp.Function):
     def _latex(self, printer: Any) -> str:
         a, b = self.args
         return _wrap(printer, a) + r" \cdot " + _wrap(printer, b)
+
+    def _pretty(self, printer: Any) -> Any:
+        return _pretty_binary(printer, self, "·")
 
 
 def _dt_latex(printer: Any, e: Any, frame: str) -> str:
@@ -101,6 +131,19 @@ def _dt_latex(printer: Any, e: Any, frame: str) -> str:
     return r"\left(" + frac + r"\right)_{\mathrm{" + frame + "}}"
 
 
+def _dt_pretty(printer: Any, e: Any, frame: str) -> Any:
+    order, inner = 1, e.args[0]
+    while isinstance(inner, type(e)):
+        order, inner = order + 1, inner.args[0]
+    power = "" if order == 1 else "²³⁴⁵⁶⁷⁸⁹"[order - 2]
+    body = printer._print(inner)
+    if isinstance(inner, (Vec, Unit, sp.Symbol)):
+        text = f"(d{power}{body.render(wrap_line=False)}/dt{power})_{frame}"
+        return prettyForm(text)
+    head = prettyForm(f"(d{power}/dt{power})_{frame}")
+    return prettyForm(*head.right(prettyForm(*body.parens())))
+
+
 class DtFix(sp.Function):
     """(dX/dt)_fix: the rate of change of X seen in the fixed (primed, inertial) frame."""
 
@@ -108,6 +151,9 @@ class DtFix(sp.Function):
 
     def _latex(self, printer: Any) -> str:
         return _dt_latex(printer, self, "fix")
+
+    def _pretty(self, printer: Any) -> Any:
+        return _dt_pretty(printer, self, "fix")
 
 
 class DtRot(sp.Function):
@@ -117,6 +163,9 @@ class DtRot(sp.Function):
 
     def _latex(self, printer: Any) -> str:
         return _dt_latex(printer, self, "rot")
+
+    def _pretty(self, printer: Any) -> Any:
+        return _dt_pretty(printer, self, "rot")
 
 
 def cross_matrix(a: Any) -> sp.Matrix:
@@ -255,6 +304,31 @@ class Step:
         tag = f" \\tag{{{self.number}}}" if self.number else ""
         return _chain_latex(self.equation) + tag
 
+    def pretty(self) -> str:
+        """The step's equation as Unicode text (multi-line where there are fractions)."""
+        tag = f"   ({self.number})" if self.number else ""
+        return _chain_text(self.equation) + tag
+
+
+def _printer() -> Any:
+    return VectorPrettyPrinter({"use_unicode": True, "order": "none", "wrap_line": False})
+
+
+def _chain_text(eq: Any, prefix: str = "") -> str:
+    """An equation (or a chain a = b = c) as Unicode text the way a terminal shows it (sympy's
+    pretty printer: fractions on lines, rates with dots), after ``prefix`` on its baseline."""
+    printer = _printer()
+    eqs = _eqs(eq)
+    if not isinstance(eqs[0], sp.Equality):
+        out = printer._print(eqs[0])
+    else:
+        out = printer._print(eqs[0].lhs)
+        for e in eqs:
+            out = prettyForm(*out.right(" = ", printer._print(e.rhs)))
+    if prefix:
+        out = prettyForm(*prettyForm(prefix).right(out))
+    return str(out.render(wrap_line=False))
+
 
 def _chain_latex(eq: Any) -> str:
     if isinstance(eq, (list, tuple)):
@@ -343,6 +417,21 @@ class Derivation:
             parts.append("\\begin{equation}" + s.latex() + "\\end{equation}")
         return "\n\n".join(parts) + "\n"
 
+    def text(self) -> str:
+        """The derivation as plain Unicode text for a terminal: each step's sentence and its
+        equation pretty-printed."""
+        import textwrap
+
+        parts = [self.title, "=" * len(self.title), ""]
+        if self.summary:
+            parts += [textwrap.fill(self.summary, 96), ""]
+        for k, s in enumerate(self.steps, 1):
+            parts.append(textwrap.fill(f"{k}. {s.text}", 96, subsequent_indent="   "))
+            parts.append("")
+            parts += ["      " + line for line in s.pretty().splitlines()]
+            parts.append("")
+        return "\n".join(parts)
+
     def markdown(self, heading: str = "##") -> str:
         """The derivation as Markdown with ``$$`` display math (MyST, Jupyter, GitHub)."""
         parts = [f"{heading} {self.title}", ""]
@@ -411,3 +500,38 @@ def judge(printed: Iterable[Printed], derivations: Mapping[str, Derivation]) -> 
                 )
             )
     return out
+
+
+def render_errata(errata: Sequence[Erratum], style: str = "text") -> str:
+    """The errata as ``"text"`` (Unicode, for a terminal), ``"markdown"`` or ``"latex"``: each
+    with the unit's number, the equation as printed, and the derived form."""
+    if style not in ("text", "markdown", "latex"):
+        raise PoinsotError(f"style: {style!r} is not one of text, markdown, latex")
+    out: list[str] = []
+    for e in errata:
+        if style == "text":
+            out += [f"({e.number})  [{e.derivation}]"]
+            out += [
+                _chain_text(e.printed, "   printed:  "),
+                _chain_text(e.derived, "   derived:  "),
+            ]
+            if e.note:
+                out.append("   note:     " + e.note)
+            out.append("")
+        elif style == "markdown":
+            out += [f"**({e.number})** — derivation `{e.derivation}`", ""]
+            out += [f"- printed: $\\displaystyle {e.printed_latex()}$"]
+            out += [f"- derived: $\\displaystyle {e.derived_latex()}$"]
+            if e.note:
+                out.append(f"- note: {e.note}")
+            out.append("")
+        else:
+            out += [f"\\paragraph{{({e.number})}} derivation \\texttt{{{e.derivation}}}"]
+            out += [
+                f"printed: \\[ {e.printed_latex()} \\]",
+                f"derived: \\[ {e.derived_latex()} \\]",
+            ]
+            if e.note:
+                out.append(e.note)
+            out.append("")
+    return "\n".join(out)

@@ -1,0 +1,154 @@
+"""The pages of the site that :mod:`poinsot.derive` writes, so the text and the code cannot differ.
+
+* ``docs/derivations.md`` (git-ignored, written at every build): every derivation of the unit,
+  step by step, from :func:`poinsot.derive.derivations`, and the question bank with the
+  package's answers from :func:`poinsot.derive.questions`.
+* ``docs/errata.md`` (kept in git, because the equation index and its test read it before any
+  build): the unit's misprints from :func:`poinsot.derive.errata`. The docs build rewrites it;
+  ``python/tests/test_derive_pages.py`` fails when the kept file differs from what the errata
+  give, and ``python docs/_ext/derive_pages.py`` (``make errata-page``) rewrites it.
+"""
+
+from __future__ import annotations
+
+import re
+import sys
+from pathlib import Path
+from typing import Any
+
+DOCS = Path(__file__).resolve().parent.parent
+ROOT = DOCS.parent
+DERIVATIONS = DOCS / "derivations.md"
+ERRATA = DOCS / "errata.md"
+PY_TESTS = ROOT / "python" / "tests"
+
+_ERRATUM_TEST = re.compile(r"def (test_erratum_(\w+?))\(")
+
+
+def pinning_tests() -> dict[str, list[str]]:
+    """Equation number → the tests named ``test_erratum_2_x[_2_y...]_...`` that pin its
+    corrected result (``python/tests/<file>::<test>``)."""
+    out: dict[str, list[str]] = {}
+    for path in sorted(PY_TESTS.glob("test_*.py")):
+        for m in _ERRATUM_TEST.finditer(path.read_text(encoding="utf-8")):
+            numbers = re.findall(r"(?:^|_)2_(\d{1,3})(?=_|$)", m.group(2))
+            for n in numbers:
+                out.setdefault(f"2.{n}", []).append(f"python/tests/{path.name}::{m.group(1)}")
+    return out
+
+
+def _cell(text: str) -> str:
+    return text.replace("|", r"\|").replace("\n", " ")
+
+
+def _number_key(number: str) -> str:
+    """"2.73–2.74" → "2.73"; "2.18 (third line)" → "2.18"."""
+    m = re.match(r"2\.\d{1,3}", number)
+    return m.group(0) if m else number
+
+
+def errata_markdown() -> str:
+    """docs/errata.md, from :func:`poinsot.derive.errata`."""
+    from poinsot import derive
+
+    pins = pinning_tests()
+    errata = derive.errata()
+    lines = [
+        "# Errata of the course unit",
+        "",
+        "<!-- Written by docs/_ext/derive_pages.py from poinsot.derive.errata(): do not edit;",
+        "     run `make errata-page` after changing a derivation or a transcription. -->",
+        "",
+        "The unit (`shared/seed/unit-2-moving-frames-and-rigid-bodies.md`) is a scanned text: "
+        "some dots, primes and indices were lost, and a few equations are wrong. poinsot "
+        "implements the physics, not the typos.",
+        "",
+        "This page is computed, not written: every numbered equation of the unit is transcribed "
+        "once as printed ({func}`poinsot.derive.printed`), and each is judged in the model of the "
+        "derivation it belongs to ([Derivations](derivations.md)). The equations listed here "
+        "are those that do not follow — {func}`poinsot.derive.errata` — with the derived form "
+        "beside them; a printed equation that follows cannot appear, and one that does not "
+        "cannot be missed. `poinsot derive errata` prints the same list.",
+        "",
+        f"{len(errata)} of the {len(derive.printed())} transcribed equations do not follow.",
+        "",
+        "| eq. | the unit prints | derived | what was lost or wrong | pinned by |",
+        "|---|---|---|---|---|",
+    ]
+    for e in errata:
+        tests = pins.get(_number_key(e.number), [])
+        pinned = " ".join(f"`{t}`" for t in tests) or "`poinsot.derive.errata()`"
+        lines.append(
+            f"| {e.number} | $\\displaystyle {_cell(e.printed_latex())}$ "
+            f"| $\\displaystyle {_cell(e.derived_latex())}$ | {_cell(e.note)} | {pinned} |"
+        )
+    lines += [
+        "",
+        "Conventions the unit uses, and poinsot keeps as defaults: primed = fixed (inertial), "
+        "unprimed = moving; Earth ENU (x east, y north, z up), ω = ω(0, cos λ, sin λ); Euler "
+        "angles intrinsic z-x-z (φ precession, θ nutation, ψ spin); heavy top pivot at the "
+        "origin with the centre of mass at +l on body axis 3 and gravity −g along fixed Z; "
+        "torque-free top Ω = (I₁ − I₃) ω₃ / I₁ with ω̇₁ = Ω ω₂.",
+        "",
+    ]
+    return "\n".join(lines)
+
+
+def derivations_markdown() -> str:
+    """docs/derivations.md, from :func:`poinsot.derive.derivations` and the question bank."""
+    from poinsot import derive
+    from poinsot.derive.questions import render
+
+    lines = [
+        "# Derivations",
+        "",
+        "<!-- Written by docs/_ext/derive_pages.py at every build: do not edit. -->",
+        "",
+        "The unit as executable mathematics ({mod}`poinsot.derive`, on sympy: "
+        "`pip install 'poinsot[symbolic]'`). Each topic is a derivation from the unit's "
+        "starting point to its result, in the unit's notation, and every step is checked when "
+        "it is made: the step's two sides are reduced, in components, to the same expression, "
+        "or the derivation does not build. The numbers in brackets are the unit's equation "
+        "numbers; each derived formula is also checked against poinsot's numeric core at "
+        "random inputs (the tests `python/tests/test_derive_*.py`). The printed equations "
+        "that do not follow are on the [errata](errata.md) page.",
+        "",
+        "```python",
+        "from poinsot import derive",
+        "d = derive.derivation('heavy_top')",
+        "d.result['2.118']        # a sympy equation",
+        "print(d.markdown())      # this page's section",
+        "```",
+        "",
+        "On the command line: `poinsot derive --list`, `poinsot derive heavy_top "
+        "[--latex | --markdown]`, `poinsot derive errata`, `poinsot derive questions`.",
+        "",
+    ]
+    for d in derive.derivations():
+        lines += [f"({d.name})=", d.markdown(heading="##"), ""]
+    lines += [
+        "(questions)=",
+        "## The question bank, answered",
+        "",
+        render(derive.questions(), markdown=True),
+        "",
+    ]
+    return "\n".join(lines)
+
+
+def _write(path: Path, text: str) -> bool:
+    if path.exists() and path.read_text(encoding="utf-8") == text:
+        return False
+    path.write_text(text, encoding="utf-8")
+    return True
+
+
+def write_pages(app: Any = None, config: Any = None) -> None:
+    """The Sphinx hook (``config-inited``): both pages, rewritten only when they change."""
+    _write(DERIVATIONS, derivations_markdown())
+    _write(ERRATA, errata_markdown())
+
+
+if __name__ == "__main__":  # `make errata-page`
+    changed = _write(ERRATA, errata_markdown())
+    sys.stdout.write(f"{ERRATA.relative_to(ROOT)}: {'rewritten' if changed else 'unchanged'}\n")
