@@ -55,6 +55,7 @@ __all__ = [
     "dumbbell",
 ]
 
+#: The kinds of question, in the unit's order (the headings of its question bank).
 KINDS = ("multiple choice", "short", "long")
 _LETTERS = "abcd"
 
@@ -310,8 +311,8 @@ def holding_requirements(body: Any, omega: Any, step: float = 1e-3) -> dict[str,
     Raises
     ------
     PoinsotError
-        ω = 0, or the two torques disagree by more than 1e-5 of |ω||L| (they cannot, unless
-        the package is wrong).
+        ω = 0, or the two torques disagree by more than 1e-5 of |ω|² I (I the largest moment
+        about the origin; they cannot, unless the package is wrong).
     """
     w = np.asarray(omega, dtype=float)
     rate = float(np.linalg.norm(w))
@@ -329,8 +330,8 @@ def holding_requirements(body: Any, omega: Any, step: float = 1e-3) -> dict[str,
         after.angular_momentum(w, about=origin) - before.angular_momentum(w, about=origin)
     ) / (2 * h)
     held = body.holding_torque(w, about=origin)
-    L = body.angular_momentum(w, about=origin)
-    if np.linalg.norm(torque - held) > 1e-5 * rate * max(float(np.linalg.norm(L)), 1e-300):
+    big = float(np.max(np.linalg.eigvalsh(body.inertia_about(origin))))
+    if np.linalg.norm(torque - held) > 1e-5 * rate**2 * big:
         raise PoinsotError(f"dL/dt = {torque} but holding_torque = {held}")
     return {"force": body.mass * accel, "torque": torque}
 
@@ -892,11 +893,11 @@ def questions() -> list[Question]:
     return list(_questions())
 
 
-def render(items: Iterable[Question], answers: bool = True, width: int = 100) -> str:
-    """The plain-text listing of ``items`` (e.g. :func:`questions`) that
+def render(questions: Iterable[Question], answers: bool = True, width: int = 100) -> str:
+    """The plain-text listing of ``questions`` (e.g. those of :func:`questions`) that
     ``poinsot derive questions`` prints, grouped by kind under headings, wrapped at ``width``
     columns. With ``answers=False`` only the questions and their choices (a quiz sheet)."""
-    items = list(items)
+    items = list(questions)
     titles = {
         "multiple choice": "Multiple-choice questions",
         "short": "Short questions",
