@@ -364,12 +364,6 @@ def test_derivation_questions_point_at_derived_results(bank: list[Question], nam
         assert not missing, f"{q.number} cites {sorted(missing)}, which {name} does not derive"
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="poinsot/derive/__init__.py imports .questions lazily inside questions(), and the "
-    "import binds the submodule poinsot.derive.questions over the function (fix: import it at "
-    "the top of __init__.py, or rename the module)",
-)
 def test_package_entry_point_survives_a_second_call() -> None:
     code = (
         "import poinsot.derive as pd\n"

@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import importlib
 from functools import cache
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from ..errors import PoinsotError
 
@@ -37,9 +37,7 @@ except ImportError as exc:  # pragma: no cover
     raise ImportError("poinsot.derive needs sympy: pip install 'poinsot[symbolic]'") from exc
 
 from ._core import Derivation, Erratum, Printed, Step, judge
-
-if TYPE_CHECKING:
-    from .questions import Question
+from .questions import Question, questions
 
 __all__ = [
     "Step",
@@ -52,6 +50,7 @@ __all__ = [
     "printed",
     "errata",
     "questions",
+    "Question",
 ]
 
 #: The derivations in the unit's order: name → module (each module has ``derive()`` returning
@@ -109,10 +108,3 @@ def errata() -> list[Erratum]:
     """Each printed equation of the unit that does not follow from its derivation, with the
     derived form (:class:`Erratum`), in the unit's order."""
     return list(_errata())
-
-
-def questions() -> list[Question]:
-    """The unit's question bank, each question answered from the package."""
-    from .questions import questions as _questions
-
-    return _questions()

@@ -893,11 +893,16 @@ def questions() -> list[Question]:
     return list(_questions())
 
 
-def render(questions: Iterable[Question], answers: bool = True, width: int = 100) -> str:
+def render(
+    questions: Iterable[Question], answers: bool = True, width: int = 100, markdown: bool = False
+) -> str:
     """The plain-text listing of ``questions`` (e.g. those of :func:`questions`) that
     ``poinsot derive questions`` prints, grouped by kind under headings, wrapped at ``width``
-    columns. With ``answers=False`` only the questions and their choices (a quiz sheet)."""
+    columns. With ``answers=False`` only the questions and their choices (a quiz sheet);
+    with ``markdown=True`` Markdown for the docs (``poinsot derive questions --markdown``)."""
     items = list(questions)
+    if markdown:
+        return _render_markdown(items, answers)
     titles = {
         "multiple choice": "Multiple-choice questions",
         "short": "Short questions",
@@ -939,3 +944,34 @@ def render(questions: Iterable[Question], answers: bool = True, width: int = 100
                     )
                 )
     return "\n".join(out) + "\n"
+
+
+def _render_markdown(items: list[Question], answers: bool) -> str:
+    titles = {
+        "multiple choice": "Multiple-choice questions",
+        "short": "Short questions",
+        "long": "Long questions",
+    }
+    out: list[str] = []
+    for kind in KINDS:
+        group = [q for q in items if q.kind == kind]
+        if not group:
+            continue
+        out += [f"### {titles[kind]}", ""]
+        for q in group:
+            out += [f"**{q.number}.** {q.text}", ""]
+            if q.choices:
+                out += ["   ".join(f"({_LETTERS[k]}) {c}" for k, c in enumerate(q.choices)), ""]
+            if not answers:
+                continue
+            out.append(f"- *Answer:* {q.answer}")
+            out.append(f"- *How:* {q.how}")
+            if q.derivation:
+                where = f"[{q.derivation}](#{q.derivation})"
+                if q.results:
+                    where += f" (eqs. {', '.join(q.results)})"
+                out.append(f"- *Derived:* {where}")
+            if q.note:
+                out.append(f"- *Note:* {q.note}")
+            out.append("")
+    return "\n".join(out)

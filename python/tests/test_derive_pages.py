@@ -1,0 +1,55 @@
+"""The site's pages written from poinsot.derive (docs/_ext/derive_pages.py): the kept errata
+page is exactly what poinsot.derive.errata() gives, and the derivations page carries every
+derivation and the question bank."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest
+
+pytest.importorskip("sympy")
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "docs" / "_ext"))
+
+import derive_pages  # noqa: E402
+from poinsot import derive  # noqa: E402
+
+
+def test_the_kept_errata_page_is_the_computed_one() -> None:
+    kept = derive_pages.ERRATA.read_text(encoding="utf-8")
+    assert kept == derive_pages.errata_markdown(), (
+        "docs/errata.md differs from poinsot.derive.errata(): run `make errata-page`"
+    )
+
+
+def test_the_errata_page_lists_each_erratum_once() -> None:
+    text = derive_pages.errata_markdown()
+    rows = [line for line in text.splitlines() if line.startswith("| 2.")]
+    assert [r.split("|")[1].strip() for r in rows] == [e.number for e in derive.errata()]
+
+
+def test_a_changed_transcription_changes_the_page(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Negative control: the page follows the computation, so dropping one erratum shows."""
+    errata = derive.errata()
+    monkeypatch.setattr(derive, "errata", lambda: errata[1:])
+    assert derive_pages.errata_markdown() != derive_pages.ERRATA.read_text(encoding="utf-8")
+
+
+def test_the_derivations_page_has_every_derivation_and_the_questions() -> None:
+    text = derive_pages.derivations_markdown()
+    for d in derive.derivations():
+        assert f"({d.name})=" in text and d.title in text
+        for n in d.result:
+            assert f"\\tag{{{n}}}" in text
+    assert "(questions)=" in text
+    for q in derive.questions():
+        assert q.text.split()[0] in text
+
+
+def test_erratum_tests_are_found_by_number() -> None:
+    pins = derive_pages.pinning_tests()
+    assert any("test_erratum_2_78" in t for t in pins["2.78"])
+    assert any("test_erratum_2_2_2_3" in t for t in pins["2.3"])
