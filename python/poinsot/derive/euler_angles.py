@@ -37,11 +37,12 @@ Results
 ``"2.98"``, ``"2.99"``, ``"2.100"``, ``"2.101"``; and for each convention ``tag`` (``"zxz-intrinsic"``,
 ``"xyz-extrinsic"``, ...): ``"R/tag"`` (the matrix), ``"2.99/tag"`` (ω in body axes),
 ``"space/tag"`` (ω′ in space axes), ``"det/tag"`` (det of the rate map), ``"rates/tag"`` and
-``"rates-space/tag"`` (the rates from ω or ω′), ``"angles/tag"`` (the angles from R). The numeric
-forms (:meth:`~poinsot.derive.Derivation.lambdify`) take plain arguments in the order of the
-sequence: angles (rad), then rates (rad/s) or ω components (rad/s), or the nine entries
-``R11 ... R33`` of R row by row; ``"2.100"`` and ``"2.101"`` take the moments of inertia (kg·m²)
-after the angles and rates.
+``"rates-space/tag"`` (the rates from ω or ω′), ``"angles/tag"`` (the angles from R), and
+``"lock/tag@β"`` (R at each singular angle β, e.g. ``"lock/xyz-intrinsic@π/2"``). The numeric
+forms (:meth:`~poinsot.derive.Derivation.lambdify`) of all but the lock take plain arguments,
+angles (rad) in the order of the sequence, then rates (rad/s) or ω components (rad/s), or else
+the nine entries ``R11 ... R33`` of R row by row (``"angles/tag"``); ``"2.99"``, ``"2.100"``
+(then I₁, I₂, I₃ in kg·m²) and ``"2.101"`` (then I₁, I₃) take (φ, θ, ψ, φ̇, θ̇, ψ̇).
 """
 
 from __future__ import annotations
@@ -232,6 +233,7 @@ class _Model:
         self.d = [gens[4 * k + 3] for k in range(n)]
         self.p = gens[4 * n :]
         self.basis = [self.s[k] ** 2 + self.c[k] ** 2 - 1 for k in range(n)]
+        self._sine_slots = [4 * k + 1 for k in range(n)]
         self.one, self.zero = self.ring.one, self.ring.zero
         self.index = {q: k for k, q in enumerate(_ANGLES)}
         self.scalar_index = {x: k for k, x in enumerate(_SCALARS)}
@@ -250,7 +252,24 @@ class _Model:
 
     # -- values
     def nf(self, p: Any) -> Any:
-        return p.rem(self.basis)
+        """The normal form of ``p`` modulo s² + c² − 1 for every angle (reduction skipped where
+        no sine appears squared, where ``p`` already is one)."""
+        sines = self._sine_slots
+        if all(monom[i] < 2 for monom in p for i in sines):
+            return p
+        out: dict[Any, Any] = {}
+        work = list(p.items())
+        while work:
+            monom, coeff = work.pop()
+            slot = next((i for i in sines if monom[i] >= 2), None)
+            if slot is None:
+                out[monom] = out.get(monom, 0) + coeff
+                continue
+            # s^e = s^(e−2) (1 − c²): the sine's cosine is the next slot
+            low = monom[:slot] + (monom[slot] - 2,) + monom[slot + 1 :]
+            cos2 = low[: slot + 1] + (low[slot + 1] + 2,) + low[slot + 2 :]
+            work += [(low, coeff), (cos2, -coeff)]
+        return self.ring.from_dict({k: v for k, v in out.items() if v != 0})
 
     def sc(self, p: Any) -> tuple[Any, Any]:
         return (p, self.one)
@@ -285,6 +304,10 @@ class _Model:
             return tuple(tuple(self.mul(a, y) for a in r) for r in x)
         if _is_mat(y):
             return tuple(tuple(self.mul(x, a) for a in r) for r in y)
+        if x[0] == 0 or y[0] == 0:
+            return (self.zero, self.one)
+        if x[1] == 1 and y[1] == 1:
+            return (self.nf(x[0] * y[0]), self.one)
         return self._frac(self.nf(x[0] * y[0]), self.nf(x[1] * y[1]))
 
     def inv(self, x: Any) -> Any:
@@ -500,7 +523,7 @@ def _item(values: Callable[[], Any], k: int) -> Callable[[], Any]:
     return lambda: values()[k]
 
 
-def _vee(m: _Model, w: Any) -> list[Any]:
+def _vee(w: Any) -> list[Any]:
     """The vector of an antisymmetric matrix [w]×: (W₃₂, W₁₃, W₂₁)."""
     return [w[2][1], w[0][2], w[1][0]]
 
@@ -535,8 +558,8 @@ def _unit(d: Derivation, m: _Model) -> None:
     w_vec = _sym(r"\vec{\omega}", tag, vector=True)
     w = [_sym(rf"\omega_{{{k + 1}}}", tag) for k in range(3)]
     ws_vec = _sym(r"\vec{\omega}'", tag, vector=True)
-    body = lambda: _vee(m, m.ev(sp.Mul(_Tr(R), _Dot(R))))
-    space = lambda: _vee(m, m.ev(sp.Mul(_Dot(R), _Tr(R))))
+    body = lambda: _vee(m.ev(sp.Mul(_Tr(R), _Dot(R))))
+    space = lambda: _vee(m.ev(sp.Mul(_Dot(R), _Tr(R))))
     m.define(w_vec, lambda: tuple((x,) for x in body()))
     m.define(ws_vec, lambda: tuple((x,) for x in space()))
     for k in range(3):
@@ -639,7 +662,7 @@ def _unit(d: Derivation, m: _Model) -> None:
 # ---- every convention ----------------------------------------------------------------------
 
 
-def _rows_over(m: _Model, nums: list[list[Any]], den: Any) -> tuple[list[list[Any]], Any]:
+def _rows_over(nums: list[list[Any]], den: Any) -> tuple[list[list[Any]], list[Any]]:
     """Cancels the common factor of the numerators of one row and the denominator; the
     denominator is made to start with a positive coefficient."""
     out = []
@@ -671,7 +694,7 @@ def _inverse_rates(m: _Model, jac: Any, omega: Sequence[Any]) -> tuple[sp.Immuta
             )
             row.append(minor if (i + j) % 2 == 0 else -minor)
         nums.append(row)
-    rows, dens = _rows_over(m, nums, det)
+    rows, dens = _rows_over(nums, det)
     out = []
     for r, dd in zip(rows, dens):
         top = sp.Add(*[m._poly(x) * w for x, w in zip(r, omega)])
@@ -716,8 +739,8 @@ def _sequence(d: Derivation, m: _Model, seq: str, intrinsic: bool, have_r: bool)
     ws_vec = _sym(r"\vec{\omega}'", tag, vector=True)
     w = [_sym(rf"\omega_{{{k + 1}}}", tag) for k in range(3)]
     ws = [_sym(rf"\omega_{{{n}}}", tag) for n in "XYZ"]
-    body = lambda: _vee(m, m.ev(sp.Mul(_Tr(R), _Dot(R))))
-    space = lambda: _vee(m, m.ev(sp.Mul(_Dot(R), _Tr(R))))
+    body = lambda: _vee(m.ev(sp.Mul(_Tr(R), _Dot(R))))
+    space = lambda: _vee(m.ev(sp.Mul(_Dot(R), _Tr(R))))
     if w_vec not in m.defs:
         m.define(w_vec, lambda: tuple((x,) for x in body()))
         m.define(ws_vec, lambda: tuple((x,) for x in space()))
@@ -771,9 +794,14 @@ def _sequence(d: Derivation, m: _Model, seq: str, intrinsic: bool, have_r: bool)
     d.function(f"rates/{tag}", inv.xreplace(dict(zip(w, wp))).xreplace(rep), [*angles, *wp])
 
     d.step(
-        f"{label.capitalize()}, space axes ([ω′]× = ṘRᵀ, ω′ = R ω): the first rate turns about "
-        "its fixed axis, each later one about its axis as turned by the turns before it.",
-        [_eq(ws_vec, per_axis_space), _eq(per_axis_space, rs)],
+        f"{label.capitalize()}, space axes ([ω′]× = ṘRᵀ): ω′ is ω carried to the fixed axes, "
+        "R ω; the first rate turns about its fixed axis, each later one about its axis as "
+        "turned by the turns before it.",
+        [
+            _eq(ws_vec, sp.Mul(R, w_vec)),
+            _eq(sp.Mul(R, w_vec), per_axis_space),
+            _eq(per_axis_space, rs),
+        ],
         f"space/{tag}",
     )
     d.function(f"space/{tag}", rs.xreplace(rep), [*angles, *plain_rates])
@@ -808,7 +836,7 @@ def _sequence(d: Derivation, m: _Model, seq: str, intrinsic: bool, have_r: bool)
         first, last = _name(fq[0]), _name(fq[2])
         at = _ANGLE_TEXT[beta]
         d.step(
-            f"At {qb} = {at} ({label}) R_{_AXIS[fax[1]]}({at}) carries the {_AXIS[fax[2]]} axis onto "
+            f"At {qb} = {at} ({label}), R_{_AXIS[fax[1]]}({at}) carries the {_AXIS[fax[2]]} axis onto "
             f"{'+' if sign > 0 else '−'}{_AXIS[fax[0]]}, so R depends on {first} "
             f"{'+' if sign > 0 else '−'} {last} alone: only that combination can be read from R.",
             _eq(locked, merged),
@@ -920,6 +948,11 @@ def derive() -> Derivation:
         context={_I2: _I1},
     )
     _unit(d, m)
+    d.given(
+        "the elementary rotation about y (active, right-handed: it turns ẑ towards x̂), for the "
+        "sequences that turn about y.",
+        _eq(_Rot(1, _BETA), _mat(m.expr(m.ev(_Rot(1, _BETA))))),
+    )
     for seq in SEQUENCES:
         for intrinsic in (True, False):
             _sequence(d, m, seq, intrinsic, have_r=(seq == "zxz" and intrinsic))
