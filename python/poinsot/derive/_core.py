@@ -219,7 +219,7 @@ class VectorModel:
             out: Any = sp.Integer(1)
             for x in e.args:
                 v = self._ev(x)
-                out = v * out if isinstance(out, sp.MatrixBase) else out * v
+                out = out * v  # left to right: a matrix product keeps its order
             return out
         if isinstance(e, sp.Pow):
             return self._ev(e.base) ** e.exp
