@@ -1,8 +1,9 @@
 """The pages of the site that :mod:`poinsot.derive` writes, so the text and the code cannot differ.
 
-* ``docs/derivations.md`` (git-ignored, written at every build): every derivation of the unit,
-  step by step, from :func:`poinsot.derive.derivations`, and the question bank with the
-  package's answers from :func:`poinsot.derive.questions`.
+* ``docs/derivations.md`` and ``docs/derivations/`` (git-ignored, written at every build): the
+  derivations' index, one page per derivation of the unit, step by step, from
+  :func:`poinsot.derive.derivations`, and the question bank with the package's answers from
+  :func:`poinsot.derive.questions`.
 * ``docs/errata.md`` (kept in git, because the equation index and its test read it before any
   build): the unit's misprints from :func:`poinsot.derive.errata`. The docs build rewrites it;
   ``python/tests/test_derive_pages.py`` fails when the kept file differs from what the errata
@@ -19,6 +20,7 @@ from typing import Any
 DOCS = Path(__file__).resolve().parent.parent
 ROOT = DOCS.parent
 DERIVATIONS = DOCS / "derivations.md"
+PAGES = DOCS / "derivations"
 ERRATA = DOCS / "errata.md"
 PY_TESTS = ROOT / "python" / "tests"
 
@@ -42,7 +44,7 @@ def _cell(text: str) -> str:
 
 
 def _number_key(number: str) -> str:
-    """"2.73–2.74" → "2.73"; "2.18 (third line)" → "2.18"."""
+    """ "2.73–2.74" → "2.73"; "2.18 (third line)" → "2.18"."""
     m = re.match(r"2\.\d{1,3}", number)
     return m.group(0) if m else number
 
@@ -95,9 +97,9 @@ def errata_markdown() -> str:
 
 
 def derivations_markdown() -> str:
-    """docs/derivations.md, from :func:`poinsot.derive.derivations` and the question bank."""
+    """docs/derivations.md: what the derivations are and how they are checked, with a table of
+    the seven and links to their pages (:func:`derivation_pages`)."""
     from poinsot import derive
-    from poinsot.derive.questions import render
 
     lines = [
         "# Derivations",
@@ -111,29 +113,67 @@ def derivations_markdown() -> str:
         "or the derivation does not build. The numbers in brackets are the unit's equation "
         "numbers; each derived formula is also checked against poinsot's numeric core at "
         "random inputs (the tests `python/tests/test_derive_*.py`). The printed equations "
-        "that do not follow are on the [errata](errata.md) page.",
+        "that do not follow are on the [errata](errata.md) page; the unit's question bank is "
+        "answered on [its own page](derivations/questions.md).",
         "",
         "```python",
         "from poinsot import derive",
         "d = derive.derivation('heavy_top')",
         "d.result['2.118']        # a sympy equation",
-        "print(d.markdown())      # this page's section",
+        "print(d.markdown())      # its page below",
         "```",
         "",
         "On the command line: `poinsot derive --list`, `poinsot derive heavy_top "
         "[--latex | --markdown]`, `poinsot derive errata`, `poinsot derive questions`.",
         "",
+        "| derivation | the unit's equations | steps | derives |",
+        "|---|---|---|---|",
     ]
     for d in derive.derivations():
-        lines += [f"({d.name})=", d.markdown(heading="##"), ""]
+        unit = [n for n in d.result if re.fullmatch(r"2\.\d{1,3}[a-z]?", n)]
+        span = f"{unit[0]}–{unit[-1]}" if unit else ""
+        others = len(d.result) - len(unit)
+        more = f" and {others} more" if others else ""
+        lines.append(
+            f"| [{_cell(d.title)}](derivations/{d.name}.md) | {span} | {len(d.steps)} "
+            f"| {', '.join(unit)}{more} |"
+        )
     lines += [
-        "(questions)=",
-        "## The question bank, answered",
         "",
-        render(derive.questions(), markdown=True),
+        "```{toctree}",
+        ":hidden:",
+        "",
+        *[f"derivations/{d.name}" for d in derive.derivations()],
+        "derivations/questions",
+        "```",
         "",
     ]
     return "\n".join(lines)
+
+
+def derivation_pages() -> dict[Path, str]:
+    """docs/derivations/<name>.md for each derivation and docs/derivations/questions.md."""
+    from poinsot import derive
+    from poinsot.derive.questions import render
+
+    out = {}
+    for d in derive.derivations():
+        head = f"<!-- Written by docs/_ext/derive_pages.py from poinsot.derive.derivation({d.name!r}). -->"
+        out[PAGES / f"{d.name}.md"] = f"({d.name})=\n{d.markdown(heading='#')}\n\n{head}\n"
+    out[PAGES / "questions.md"] = "\n".join(
+        [
+            "(questions)=",
+            "# The question bank, answered",
+            "",
+            "The unit's questions (its last section), each answered from poinsot: the "
+            "multiple-choice ones by computation, the derivation questions by the derivation "
+            "named (`poinsot derive questions` prints the same).",
+            "",
+            render(derive.questions(), markdown=True),
+            "",
+        ]
+    )
+    return out
 
 
 def _write(path: Path, text: str) -> bool:
@@ -146,6 +186,13 @@ def _write(path: Path, text: str) -> bool:
 def write_pages(app: Any = None, config: Any = None) -> None:
     """The Sphinx hook (``config-inited``): both pages, rewritten only when they change."""
     _write(DERIVATIONS, derivations_markdown())
+    PAGES.mkdir(exist_ok=True)
+    pages = derivation_pages()
+    for stale in PAGES.glob("*.md"):
+        if stale not in pages:
+            stale.unlink()
+    for path, text in pages.items():
+        _write(path, text)
     _write(ERRATA, errata_markdown())
 
 

@@ -38,15 +38,18 @@ def test_a_changed_transcription_changes_the_page(monkeypatch: pytest.MonkeyPatc
     assert derive_pages.errata_markdown() != derive_pages.ERRATA.read_text(encoding="utf-8")
 
 
-def test_the_derivations_page_has_every_derivation_and_the_questions() -> None:
-    text = derive_pages.derivations_markdown()
+def test_the_derivations_pages_have_every_derivation_and_the_questions() -> None:
+    index = derive_pages.derivations_markdown()
+    pages = derive_pages.derivation_pages()
     for d in derive.derivations():
+        assert f"derivations/{d.name}.md" in index and f"derivations/{d.name}\n" in index
+        text = pages[derive_pages.PAGES / f"{d.name}.md"]
         assert f"({d.name})=" in text and d.title in text
         for n in d.result:
             assert f"\\tag{{{n}}}" in text
-    assert "(questions)=" in text
+    questions = pages[derive_pages.PAGES / "questions.md"]
     for q in derive.questions():
-        assert q.text.split()[0] in text
+        assert f"**{q.number}.**" in questions
 
 
 def test_erratum_tests_are_found_by_number() -> None:
