@@ -125,10 +125,16 @@ def _trig_reduce(e: Any) -> Any:
 def _canon_roots(e: Any) -> Any:
     """Every fractional power in ``e`` with its base in canonical form (trigonometric reduction,
     then factored), so that equal roots are written alike (√((A² + ω₃²)(I₁²A² + I₃²ω₃²)) splits
-    into the product of the two roots when both factors are positive)."""
+    into the product of the two roots when both factors are positive); the arguments of atan2
+    reduced likewise."""
     if isinstance(e, sp.MatrixBase):
         return e.applyfunc(_canon_roots)
     e = sp.sympify(e)
+    if e.has(sp.atan2):
+        e = e.replace(
+            lambda x: isinstance(x, sp.atan2),
+            lambda x: sp.atan2(*(_trig_reduce(sp.expand(a)) for a in x.args)),
+        )
     if not e.has(sp.Pow):
         return e
     return e.replace(
@@ -143,13 +149,19 @@ class _Model(VectorModel):
     ``vectors``: ``Dot(I, ω)`` is the matrix product), scalar rates (:class:`_Ddt` and
     ``Derivative``, differentiated in ``t``), magnitudes (:class:`_Norm`) and, optionally, the
     equations of motion: ``flow`` rewrites the rates a differentiation produced (e.g. ω̇ by
-    Euler's equations), so that a step is checked along every motion."""
+    Euler's equations), so that a step is checked along every motion; ``post`` rewrites every
+    value last."""
 
     t: Any = None
     flow: Callable[[Any], Any] | None = None
+    #: a last rewriting of every value (e.g. a constant's relation to the others)
+    post: Callable[[Any], Any] | None = None
 
     def __call__(self, e: Any) -> Any:
-        return _canon_roots(self._ev(sp.sympify(e)))
+        out = self._ev(sp.sympify(e))
+        if self.post is not None:
+            out = out.applyfunc(self.post) if isinstance(out, sp.MatrixBase) else self.post(out)
+        return _canon_roots(out)
 
     def _rate(self, x: Any, variables: Sequence[tuple[Any, int]]) -> Any:
         for v, n in variables:
@@ -196,10 +208,10 @@ def _chain(*sides: Any) -> list[sp.Equality]:
 
 
 def _plain(expr: Any, names: Mapping[Any, Any]) -> Any:
-    """``expr`` with functions of time and their rates replaced by plain symbols (for
-    lambdify), the rates first."""
-    order = sorted(names, key=lambda x: -sp.count_ops(x))
-    return expr.xreplace({k: names[k] for k in order})
+    """``expr`` with functions of time and their rates replaced by plain symbols and ½ made a
+    number again (for lambdify)."""
+    out = sp.sympify(expr).replace(lambda x: isinstance(x, sp.UnevaluatedExpr), lambda x: x.args[0])
+    return out.xreplace(dict(names))
 
 
 # ---- the notation of this derivation -------------------------------------------------------
