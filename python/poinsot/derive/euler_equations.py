@@ -23,7 +23,7 @@ milliseconds.
 
 Results
 -------
-``result`` holds 2.67, 2.69, 2.70, 2.71, 2.72, 2.73, 2.74, 2.75 and 2.76. Numeric forms
+``result`` holds 2.67, 2.68, 2.69, 2.70, 2.71, 2.72, 2.73, 2.74, 2.75 and 2.76. Numeric forms
 (:meth:`~poinsot.derive.Derivation.lambdify`): ``"2.72"`` gives (ω̇₁, ω̇₂, ω̇₃) (rad/s²) from
 (I₁, I₂, I₃, ω₁, ω₂, ω₃, N₁, N₂, N₃); ``"2.76"`` gives dT/dt (W) from
 (I₁, I₂, I₃, ω₁, ω₂, ω₃, ω̇₁, ω̇₂, ω̇₃).
@@ -369,6 +369,7 @@ def derive() -> Derivation:
         "The rate of a vector in the fixed frame is its rate in the rotating frame plus ω⃗ × "
         "(2.68, which is 2.14, proved in the frames derivation).",
         _eq(DtFix(V), _add(DtRot(V), _Cross(omega, V))),
+        "2.68",
     )
     d.step(
         "Take the body itself as the rotating frame (it turns with ω⃗) and apply 2.68 to L⃗ in 2.67.",

@@ -402,7 +402,7 @@ def derive() -> Derivation:
     )
     d.step("The solution of 2.84 (2.85).", _eq(w1, s1), "2.85")
     d.step(
-        "Put 2.85 in 2.81 (the unit integrates 2.82, with the same result) (2.86).",
+        "Put 2.85 in 2.81 (2.86; the unit integrates 2.82 instead, with the same result).",
         _chain(w2, wd1 / Omega, c1),
         "2.86",
     )
