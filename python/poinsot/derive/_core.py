@@ -60,16 +60,19 @@ class Vec(sp.Symbol):
 
 
 class Unit(sp.Symbol):
-    """A unit vector of the unit, printed with a hat: ``Unit("i")`` is î, ``Unit("k'")`` is k̂′."""
+    """A unit vector of the unit, printed with a hat: ``Unit("i")`` is î, ``Unit("k'")`` is k̂′,
+    ``Unit("e_x")`` is ê with the subscript x."""
 
     def _latex(self, printer: Any) -> str:
         base, prime = (self.name[:-1], "'") if self.name.endswith("'") else (self.name, "")
+        base, _, sub = base.partition("_")
         body = {"i": r"\imath", "j": r"\jmath"}.get(base, printer._print(sp.Symbol(base)))
-        return r"\hat{" + body + "}" + prime
+        return r"\hat{" + body + "}" + prime + (f"_{{{sub}}}" if sub else "")
 
     def _pretty(self, printer: Any) -> Any:
         base, prime = (self.name[:-1], "'") if self.name.endswith("'") else (self.name, "")
-        return prettyForm(base + "\u0302" + prime)
+        base, _, sub = base.partition("_")
+        return prettyForm(base + "\u0302" + prime + (f"_{sub}" if sub else ""))
 
 
 def _pwrap(printer: Any, e: Any, cross_right: bool = False) -> Any:
@@ -199,8 +202,12 @@ class VectorModel:
             a, b = (self._ev(x) for x in e.args)
             return sp.Matrix(a).cross(sp.Matrix(b))
         if isinstance(e, Dot):
-            a, b = (self._ev(x) for x in e.args)
-            return (sp.Matrix(a).T * sp.Matrix(b))[0, 0]
+            a, b = (sp.Matrix(self._ev(x)) for x in e.args)
+            if a.shape == (3, 3):  # a tensor: I·ω is the vector I ω
+                return a * b
+            if b.shape == (3, 3):  # ω·I is the (row) vector ωᵀ I, returned as a column
+                return (a.T * b).T
+            return (a.T * b)[0, 0]
         if isinstance(e, DtFix):
             if self.dt_fix is None:
                 raise PoinsotError("the model has no fixed-frame rate")
@@ -365,6 +372,11 @@ class Derivation:
 
     def residual(self, eq: Any) -> Any:
         """``lhs − rhs`` of ``eq`` in components under the context (zero when ``eq`` holds)."""
+        if not isinstance(eq, sp.Equality):
+            raise PoinsotError(
+                f"derivation {self.name}: {eq!r} is not an equation (write Eq(lhs, rhs, "
+                "evaluate=False): sympy reduced an Eq whose sides it could compare to True/False)"
+            )
         diff = self.model(eq.lhs) - self.model(eq.rhs)
         if self.context:
             diff = diff.subs(self.context)
