@@ -84,9 +84,9 @@ class _E(Unit):
 ex, ey, ez = _E("e_x"), _E("e_y"), _E("e_z")
 
 x, y, z = dynamicsymbols("x y z")  # the body's exact coordinates (m)
-x0, y0, z0 = dynamicsymbols("x_{(0)} y_{(0)} z_{(0)}")
-x1, y1, z1 = dynamicsymbols("x_{(1)} y_{(1)} z_{(1)}")
-x2, y2, z2 = dynamicsymbols("x_{(2)} y_{(2)} z_{(2)}")
+x0, y0, z0 = dynamicsymbols("x_(0) y_(0) z_(0)")
+x1, y1, z1 = dynamicsymbols("x_(1) y_(1) z_(1)")
+x2, y2, z2 = dynamicsymbols("x_(2) y_(2) z_(2)")
 y_cor, y_cf = dynamicsymbols(r"y_{\mathrm{Cor}} y_{\mathrm{cf}}")
 
 
@@ -97,6 +97,13 @@ class _Dec(sp.Symbol):
     def _latex(self, printer: Any) -> str:
         mant, _, exp = self.name.partition("e")
         return mant + (rf" \times 10^{{{int(exp)}}}" if exp else "")
+
+    def _pretty(self, printer: Any) -> Any:
+        from sympy.printing.pretty.stringpict import prettyForm
+
+        mant, _, exp = self.name.partition("e")
+        sup = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+        return prettyForm(mant + (f"×10{str(int(exp)).translate(sup)}" if exp else ""))
 
 
 class _Num(sp.Function):
@@ -109,6 +116,9 @@ class _Num(sp.Function):
 
     def _latex(self, printer: Any) -> str:
         return str(printer._print(self.args[0]))
+
+    def _pretty(self, printer: Any) -> Any:
+        return printer._print(self.args[0])
 
 
 def _mul(*args: Any) -> Any:
