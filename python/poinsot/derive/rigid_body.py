@@ -918,7 +918,9 @@ def _dumbbell_part(d: _RigidDerivation) -> None:
         "instant the rod lies in the xz plane):",
         _eq(N_HAT, _add(_mul(sp.sin(ALPHA), I_HAT), _mul(sp.cos(ALPHA), K_HAT))),
     )
-    d.step("so that", _eq(_Dot(N_HAT, W), _mul(OMEGA, sp.cos(ALPHA))))
+    d.step(
+        "The component of ω⃗ along the rod is then", _eq(_Dot(N_HAT, W), _mul(OMEGA, sp.cos(ALPHA)))
+    )
     i_rod = _add(_mul(m1, B1**2), _mul(m2, B2**2))
     d.step(
         "Its angular momentum (2.58), with 2.43 and the triple product as in 2.44 (n̂·n̂ = 1):",
