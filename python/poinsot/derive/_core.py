@@ -88,11 +88,22 @@ def _pretty_binary(printer: Any, e: Any, op: str) -> Any:
     return prettyForm(*left.right(f" {op} ", _pwrap(printer, b, cross_right=op == "×")))
 
 
-def _wrap(printer: Any, e: Any, cross_right: bool = False) -> str:
+def _wrap(printer: Any, e: Any, cross_right: bool = False, in_dot: bool = False) -> str:
     s = printer._print(e)
-    if isinstance(e, sp.Add) or (cross_right and isinstance(e, Cross)):
+    if (
+        isinstance(e, sp.Add)
+        or (cross_right and isinstance(e, Cross))
+        or (in_dot and isinstance(e, (Cross, Dot)))
+    ):
         return r"\left(" + s + r"\right)"
     return s
+
+
+def _power(text: str, exp: Any, printer: Any) -> str:
+    """``text`` raised to ``exp`` (sympy's printer passes ``exp`` for a power of a function)."""
+    if exp is None:
+        return text
+    return r"\left(" + text + r"\right)^{" + str(printer._print(exp)) + "}"
 
 
 class Cross(sp.Function):
@@ -100,9 +111,10 @@ class Cross(sp.Function):
 
     nargs = 2
 
-    def _latex(self, printer: Any) -> str:
+    def _latex(self, printer: Any, exp: Any = None) -> str:
         a, b = self.args
-        return _wrap(printer, a) + r" \times " + _wrap(printer, b, cross_right=True)
+        text = _wrap(printer, a) + r" \times " + _wrap(printer, b, cross_right=True)
+        return _power(text, exp, printer)
 
     def _pretty(self, printer: Any) -> Any:
         return _pretty_binary(printer, self, "×")
@@ -113,9 +125,10 @@ class Dot(sp.Function):
 
     nargs = 2
 
-    def _latex(self, printer: Any) -> str:
+    def _latex(self, printer: Any, exp: Any = None) -> str:
         a, b = self.args
-        return _wrap(printer, a) + r" \cdot " + _wrap(printer, b)
+        text = _wrap(printer, a, in_dot=True) + r" \cdot " + _wrap(printer, b, in_dot=True)
+        return _power(text, exp, printer)
 
     def _pretty(self, printer: Any) -> Any:
         return _pretty_binary(printer, self, "·")
@@ -152,8 +165,8 @@ class DtFix(sp.Function):
 
     nargs = 1
 
-    def _latex(self, printer: Any) -> str:
-        return _dt_latex(printer, self, "fix")
+    def _latex(self, printer: Any, exp: Any = None) -> str:
+        return _power(_dt_latex(printer, self, "fix"), exp, printer)
 
     def _pretty(self, printer: Any) -> Any:
         return _dt_pretty(printer, self, "fix")
@@ -164,8 +177,8 @@ class DtRot(sp.Function):
 
     nargs = 1
 
-    def _latex(self, printer: Any) -> str:
-        return _dt_latex(printer, self, "rot")
+    def _latex(self, printer: Any, exp: Any = None) -> str:
+        return _power(_dt_latex(printer, self, "rot"), exp, printer)
 
     def _pretty(self, printer: Any) -> Any:
         return _dt_pretty(printer, self, "rot")
@@ -278,6 +291,10 @@ def is_zero(e: Any) -> bool:
     x = sp.expand(e)
     if x == 0:
         return True
+    if not x.has(sp.Function, sp.Derivative) and all(
+        p.exp.is_Integer for p in x.atoms(sp.Pow)
+    ):  # a rational function of symbols: exact and quick
+        return bool(sp.cancel(sp.together(x)) == 0)
     if x.has(sp.sin, sp.cos) or x.has(sp.Derivative):
         try:
             if _trig_polynomial_zero(x):
@@ -377,7 +394,13 @@ class Derivation:
                 f"derivation {self.name}: {eq!r} is not an equation (write Eq(lhs, rhs, "
                 "evaluate=False): sympy reduced an Eq whose sides it could compare to True/False)"
             )
-        diff = self.model(eq.lhs) - self.model(eq.rhs)
+        lhs, rhs = self.model(eq.lhs), self.model(eq.rhs)
+        # a vector equated to 0 (or 0 to a vector): the zero vector of that shape
+        if isinstance(lhs, sp.MatrixBase) and not isinstance(rhs, sp.MatrixBase) and rhs == 0:
+            rhs = sp.zeros(*lhs.shape)
+        if isinstance(rhs, sp.MatrixBase) and not isinstance(lhs, sp.MatrixBase) and lhs == 0:
+            lhs = sp.zeros(*rhs.shape)
+        diff = lhs - rhs
         if self.context:
             diff = diff.subs(self.context)
         return diff
