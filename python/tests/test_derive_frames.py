@@ -13,6 +13,7 @@ import pytest
 sp = pytest.importorskip("sympy")
 
 import poinsot as ps  # noqa: E402
+from poinsot import derive  # noqa: E402
 from poinsot.derive import _core  # noqa: E402
 from poinsot.derive import frames as fr  # noqa: E402
 
@@ -72,6 +73,7 @@ def _frame(att, v, **zero) -> ps.MovingFrame:
 
 def test_builds_and_every_recorded_step_holds(d):
     assert d.name == "frames" and d.steps
+    assert derive.derivation("frames").result.keys() == d.result.keys()  # the registry's
     for s in d.steps:
         assert d.holds(s.equation), s.text
 
@@ -102,10 +104,13 @@ def test_a_false_step_raises(d):
     assert "wrong axis" not in [s.text for s in d.steps]
 
 
-def test_the_axes_setting_checks_2_14_rather_than_assuming_it(d):
-    # (d/dt)_fix = Rᵀ d/dt (R X) there: 2.14 holds because RᵀṘ = [ω]× with 2.99's ω, and fails
-    # for any other ω (here with ω₃ = φ̇ cos θ and the ψ̇ dropped)
+def test_the_axes_setting_checks_2_13_2_14_rather_than_assuming_them(d):
+    # There (d/dt)_fix X = Rᵀ d/dt (R X) with R = R_z(φ)R_x(θ)R_z(ψ) and ω⃗ has 2.99's components
+    # on the rotating axes: RᵀṘ = [ω]× holds, ṘRᵀ = [ω]× (the fixed-axes form) does not, and
+    # 2.14 holds only with its ω⃗ × V⃗ term.
     big_v, w = fr._X["V"], fr._X["omega"]
+    assert d.holds(sp.Eq(fr.MAT_R.T * fr.MAT_RDOT, fr.MAT_OMEGA))
+    assert not d.holds(sp.Eq(fr.MAT_RDOT * fr.MAT_R.T, fr.MAT_OMEGA))
     assert d.holds(sp.Eq(_core.DtFix(big_v), _core.DtRot(big_v) + _core.Cross(w, big_v)))
     assert not d.holds(sp.Eq(_core.DtFix(big_v), _core.DtRot(big_v)))
 
