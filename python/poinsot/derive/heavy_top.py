@@ -22,28 +22,33 @@ gravity −g along the fixed Z′ axis, so V = m g l cos θ):
 
 Model
 -----
-Every step is checked in one model of the heavy top (:class:`_TopModel`), in three stages:
+Every step is checked in one model of the heavy top (:class:`_TopModel`), in four stages:
 
 1. *definitions*: ω₁, ω₂, ω₃ (2.99), T (2.100), L = T − mgl cos θ, E = T + mgl cos θ,
-   E′ = E − p_ψ²/(2I₃), V(θ) (2.110), u = cos θ, the constants of the cubic, the unit's b, the
-   precession rate φ̇₀ at θ₀ and the two roots of the steady-precession condition (solved by
-   sympy in the model, not typed in) are substituted; partial and time derivatives are taken
-   in the variables in which each quantity is defined (∂L/∂φ̇ at fixed θ, θ̇, ψ̇; ∂V/∂θ at
-   fixed p_φ, p_ψ);
+   E′ = E − p_ψ²/(2I₃), V(θ) (2.110), t(θ) = ∫dθ/θ̇, u = cos θ, the constants of the cubic,
+   the unit's b, the precession rate φ̇₀ (2.106 at θ₀) and the two roots of the
+   steady-precession condition (solved by sympy in the model, not typed in) are substituted;
+   partial and time derivatives are taken in the variables in which each quantity is defined
+   (∂L/∂φ̇ at fixed θ, θ̇, ψ̇; ∂V/∂θ at fixed p_φ, p_ψ); a value at a point (``Subs``) is taken
+   after cancelling, so that a removable 0/0 (V at θ = 0 of the sleeping top) is removed;
 2. *coordinates*: the rates φ̇, ψ̇ are replaced by the momenta (the Legendre map p = ∂L/∂q̇,
-   solved by sympy), θ̇ by a positive symbol, and p_φ and mgl by a parametrisation of every
-   top by the angle θ₀ at which its effective potential is least: p_φ = p_ψ cos θ₀ +
-   I₁ φ̇₀ sin²θ₀ with φ̇₀ = p_ψ(1 + σr)/(2 I₁ cos θ₀), r ≥ 0, σ = (−1)ᵏ = ±1 (the branch), and
-   mgl solved from ∂V/∂θ(θ₀) = 0. Generic (p_φ, mgl) ↔ (θ₀, r, σ) is a change of variables, so
-   an identity in the unit's variables stays one here, while the steady-precession equations
-   (which hold only at θ₀) hold too; a printed ``±`` is the branch sign σ;
-3. *roots*: the argument of every fractional power is reduced (trigonometric polynomial modulo
-   sin² + cos² = 1, cancelled, factored), so that √(θ̇²) = θ̇ and
-   √(p_ψ² − 4 mgl I₁ cos θ₀) = p_ψ r.
+   solved by sympy), θ̇ and p_ψ by positive symbols, and p_φ and mgl by a labelling of every top
+   by the angle θ₀ at which its effective potential is least: p_φ = p_ψ cos θ₀ + I₁ φ̇₀ sin²θ₀
+   with φ̇₀ = p_ψ(1 + σr)/(2 I₁ cos θ₀), r > 0 and the branch σ = ±1 (σ² = 1), and mgl solved
+   from ∂V/∂θ(θ₀) = 0. (p_φ, mgl) ↔ (θ₀, r, σ) is a change of variables, so an identity in the
+   unit's variables stays one, while the steady-precession equations (true only at θ₀) hold
+   too; a printed ± is the branch σ of the top;
+3. *roots*: the argument of every fractional power is put in canonical form and factored, so
+   that √(θ̇²) = θ̇ and √(p_ψ² − 4 mgl I₁ cos θ₀) = p_ψ r;
+4. *canonical form*: the value becomes N/D, polynomials in the sines and cosines of its angles,
+   σ and the other symbols, N reduced modulo sin² + cos² = 1 and σ² = 1, D rationalised free of
+   sines and σ, common factors cancelled (:func:`_canonical`). Equal values give the same
+   expression, so checking a step is a subtraction.
 
-Inequalities (2.118, 2.119) are checked by proving lhs − rhs ≥ 0 in the model (a p_ψ > 0 top);
+An inequality a ≥ b (2.118, 2.119) is written max(a, b) = a and checked by proving a ≥ b in the
+model (a p_ψ > 0 top);
 an approximation "for a fast top" (2.120, 2.121) is the leading term of the exact root as
-p_ψ → ∞ at fixed mgl, I₁, θ₀. The whole derivation builds and checks in well under 2 s.
+p_ψ → ∞ at fixed mgl, I₁, θ₀. The derivation builds and checks in about 1 s.
 
 Results
 -------
@@ -87,9 +92,6 @@ class _Named(sp.Symbol):
 
     def _pretty(self, printer: Any) -> Any:
         return prettyForm(_SHOWN[self.name][1])
-
-    def _sympystr(self, printer: Any) -> str:
-        return _SHOWN[self.name][1]
 
 
 def _named(name: str, latex: str, text: str) -> _Named:
@@ -144,28 +146,25 @@ class _PlusMinus(sp.Function):
         return prettyForm(*a.right(" ± ", b))
 
 
-class _AtLeast(sp.Function):
-    """The inequality a ≥ b as a step or a printed equation: the machinery checks ``lhs − rhs``
-    for zero, so ``lhs`` is the relation itself, which the model maps to 0 exactly when it
-    proves a − b ≥ 0 (and to a − b otherwise), and ``rhs`` is 0. Shown as "a ≥ b"."""
+class _Larger(sp.Function):
+    """max(a, b), unevaluated (the model evaluates it where it proves which is larger)."""
 
     nargs = 2
 
-    @property
-    def lhs(self) -> Any:
-        return self
-
-    @property
-    def rhs(self) -> Any:
-        return sp.S.Zero
-
     def _latex(self, printer: Any) -> str:
-        a, b = self.args
-        return printer._print(a) + r" \geq " + printer._print(b)
+        a, b_ = (printer._print(x) for x in self.args)
+        return r"\max\left(" + a + ", " + b_ + r"\right)"
 
     def _pretty(self, printer: Any) -> Any:
-        a, b = (printer._print(x) for x in self.args)
-        return prettyForm(*a.right(" ≥ ", b))
+        a, b_ = (printer._print(x) for x in self.args)
+        inner = prettyForm(*a.right(", ", b_))
+        return prettyForm(*prettyForm(*inner.parens()).left("max"))
+
+
+def _at_least(a: Any, b_: Any) -> Any:
+    """The inequality a ≥ b as an equation, max(a, b) = a (the machinery checks equations; the
+    model proves a ≥ b to evaluate the max)."""
+    return _eq(_Larger(a, b_), a)
 
 
 def _add(*terms: Any) -> Any:
@@ -199,7 +198,8 @@ mgl = sp.Symbol("mgl")
 omega1, omega2, omega3 = sp.symbols("omega_1 omega_2 omega_3")
 T, L, E = sp.symbols("T L E")
 E_red = sp.Symbol("E'")
-p_phi, p_psi = sp.symbols("p_phi p_psi")
+p_phi = _named("p_phi", r"p_{\phi}", "p_φ")
+p_psi = _named("p_psi", r"p_{\psi}", "p_ψ")
 V = sp.Function("V")
 t_of = sp.Function("t")
 f = sp.Function("f")
@@ -326,7 +326,10 @@ def _canonical(expr: Any) -> Any:
     rest = (e.free_symbols | {x for _, sq in roots for x in sq.free_symbols}) - set(first)
     gens = first + sorted(rest, key=sp.default_sort_key)
     ring = field(gens, QQ)[0].ring
-    num, den = _fraction(e, ring, {g: ring(g) for g in gens})
+    try:
+        num, den = _fraction(e, ring, {g: ring(g) for g in gens})
+    except TypeError:  # an atom this form does not cover (a float, π): left to the zero test
+        return expr
     rels = [ring(g) ** 2 - ring(sq) for g, sq in roots]
     if rels:
         num, den = num.rem(rels), den.rem(rels)
@@ -450,23 +453,26 @@ class _TopModel:
             self._values[e] = _canonical(self.roots(self.coordinates(self.unfold(e))))
         return self._values[e]
 
-    def prove_at_least(self, a: Any, b_: Any) -> Any:
-        """0 where a ≥ b holds in the model (a − b reduces to a manifestly non-negative
-        expression, or a ≥ 0 and a² − b² ≥ 0 with b real), else a − b."""
-        x, y = self.value(a), self.value(b_)
-        diff = sp.factor(_canonical(x - y))
+    def at_least(self, x: Any, y: Any) -> bool:
+        """Whether x ≥ y (values of the model): x − y reduces to a manifestly non-negative
+        expression, or x ≥ 0 and x² − y² ≥ 0 (y real). Moments of inertia are positive."""
         pos = {I1: sp.Symbol("I1p", positive=True), I3: sp.Symbol("I3p", positive=True)}
-        if diff == 0 or diff.xreplace(pos).is_nonnegative:
-            return sp.S.Zero
+        diff = sp.factor(_canonical(x - y)).xreplace(pos)
+        if diff == 0 or diff.is_nonnegative:
+            return True
         square = sp.factor(_canonical(x**2 - y**2)).xreplace(pos)
-        if sp.factor(x).xreplace(pos).is_nonnegative and square.is_nonnegative:
-            return sp.S.Zero
-        return diff
+        return bool(sp.factor(x).xreplace(pos).is_nonnegative and square.is_nonnegative)
 
     def __call__(self, e: Any) -> Any:
         e = sp.sympify(e)
-        if isinstance(e, _AtLeast):
-            return self.prove_at_least(*e.args)
+        if isinstance(e, _Larger):
+            # the larger, where the model proves which it is; else the max stays unevaluated
+            x, y = (self.value(a) for a in e.args)
+            if self.at_least(x, y):
+                return x
+            if self.at_least(y, x):
+                return y
+            return _Larger(x, y)
         return self.value(e)
 
 
@@ -748,17 +754,26 @@ def derive() -> Derivation:
         "the unit says, and for a fast top one of them is small.",
         _eq(_mul(phid_plus, phid_minus), _frac(mgl, _mul(I1, c0))),
     )
+    disc = _add(p_psi**2, -_mul(4, mgl, I1, c0))
     d.step(
-        "b is real only where the root of 2.117 is (2.118). Below the horizontal (θ₀ > π/2, "
-        "cos θ₀ < 0) this holds for any spin.",
-        _AtLeast(p_psi**2, _mul(4, mgl, I1, c0)),
+        "The quantity under the root of 2.117 (times p_ψ²) is the square of I₁ cos θ₀ "
+        "(φ̇₀₊ − φ̇₀₋): steady precession, with real rates, needs it ≥ 0.",
+        _eq(disc, _pow(_mul(I1, c0, _add(phid_plus, -phid_minus)), 2)),
+    )
+    d.step(
+        "So p_ψ² ≥ 4mglI₁ cos θ₀ (2.118), written as max(p_ψ², 4mglI₁ cos θ₀) = p_ψ². Below the "
+        "horizontal (θ₀ > π/2, cos θ₀ < 0) it holds for any spin.",
+        _at_least(p_psi**2, _mul(4, mgl, I1, c0)),
         "2.118",
     )
-    d.step("With p_ψ = I₃ω₃ (2.103).", _AtLeast(_pow(_mul(I3, omega3), 2), _mul(4, mgl, I1, c0)))
     d.step(
-        "The minimum spin for steady precession (2.119), for ω₃ > 0 and θ₀ < π/2. At equality "
-        "the two rates coincide.",
-        _AtLeast(omega3, MIN_SPIN),
+        "With p_ψ = I₃ω₃ (2.103): (I₃ω₃)² ≥ 4mglI₁ cos θ₀.",
+        _at_least(_pow(_mul(I3, omega3), 2), _mul(4, mgl, I1, c0)),
+    )
+    d.step(
+        "For ω₃ > 0 and θ₀ < π/2 the square root gives the minimum spin for steady precession, "
+        "ω₃ ≥ (2/I₃)√(mglI₁ cos θ₀) (2.119). At equality the two rates coincide.",
+        _at_least(omega3, MIN_SPIN),
         "2.119",
     )
     d.step(
@@ -974,15 +989,17 @@ PRINTED: tuple[Printed, ...] = (
         "2.118",
         "heavy_top",
         r"p_{\Psi}^2 \ge 4mglI_1cos\theta_0, \quad for \theta_0 < \frac{\pi}{2}",
-        _AtLeast(p_psi**2, _mul(4, mgl, I1, c0)),
-        "p_Ψ read as p_ψ; the model proves it for every θ₀ (for θ₀ > π/2 trivially)",
+        _at_least(p_psi**2, _mul(4, mgl, I1, c0)),
+        "an inequality a ≥ b, written max(a, b) = a; p_Ψ read as p_ψ; it holds for every θ₀ "
+        "(for θ₀ > π/2 trivially)",
     ),
     Printed(
         "2.119",
         "heavy_top",
         r"\therefore \omega_3 \ge \frac{2}{I_3}\sqrt{mglI_1cos\theta_0}",
-        _AtLeast(omega3, MIN_SPIN),
-        "for ω₃ > 0 and θ₀ < π/2, as the unit's 2.118 assumes",
+        _at_least(omega3, MIN_SPIN),
+        "an inequality a ≥ b, written max(a, b) = a; for ω₃ > 0 and θ₀ < π/2, as the unit's "
+        "2.118 assumes",
     ),
     Printed(
         "2.120",
