@@ -988,7 +988,7 @@ PRINTED: tuple[Printed, ...] = (
     Printed(
         "2.118",
         "heavy_top",
-        r"p_{\Psi}^2 \ge 4mglI_1cos\theta_0, \quad for \theta_0 < \frac{\pi}{2}",
+        r"p_{\Psi}^2 \ge 4mglI_1cos\theta_0, for \theta_0 < \frac{\pi}{2}",
         _at_least(p_psi**2, _mul(4, mgl, I1, c0)),
         "an inequality a ≥ b, written max(a, b) = a; p_Ψ read as p_ψ; it holds for every θ₀ "
         "(for θ₀ > π/2 trivially)",
