@@ -7,6 +7,7 @@ test_derive_<topic>.py.
 
 from __future__ import annotations
 
+import os
 import re
 from pathlib import Path
 
@@ -30,14 +31,26 @@ from poinsot.derive._core import (  # noqa: E402
 )
 
 ROOT = Path(__file__).resolve().parents[2]
-SEED_ERRATA = ROOT.parent / "shared" / "seed-errata.md"
-UNIT = ROOT.parent / "shared" / "seed" / "unit-2-moving-frames-and-rigid-bodies.md"
 
 
-def _number_value(number: str) -> tuple[int, str]:
+def _beside(name: str) -> Path | None:
+    """The unit's files are kept beside the repository (shared/), not in it; POINSOT_SHARED
+    names the folder where they are elsewhere."""
+    for base in (os.environ.get("POINSOT_SHARED", ""), ROOT.parent / "shared", "/work/shared"):
+        if base and (Path(base) / name).is_file():
+            return Path(base) / name
+    return None
+
+
+SEED_ERRATA = _beside("seed-errata.md")
+UNIT = _beside("seed/unit-2-moving-frames-and-rigid-bodies.md")
+
+
+def _number_value(number: str) -> tuple[int, str] | None:
+    """(N, rest) of a number "2.N..." of the unit; None for the label of an equation that the
+    unit prints without a number (e.g. "Earth's rate")."""
     m = re.match(r"2\.(\d+)(.*)", number)
-    assert m, number
-    return int(m.group(1)), m.group(2)
+    return (int(m.group(1)), m.group(2)) if m else None
 
 
 # ---- the registry ---------------------------------------------------------------------------
@@ -57,7 +70,7 @@ def test_seven_topics_in_the_units_order() -> None:
     ds = derive.derivations()
     assert [d.name for d in ds] == names
     # each derivation's results start after the previous one's (the unit's order)
-    firsts = [min(_number_value(n)[0] for n in d.result) for d in ds]
+    firsts = [min(v[0] for n in d.result if (v := _number_value(n))) for d in ds]
     assert firsts == sorted(firsts), firsts
 
 
@@ -157,6 +170,8 @@ def test_rendering_carries_every_step_and_number() -> None:
 def _seed_errata_numbers() -> set[str]:
     """The equation numbers of the hand-made list (seed-errata.md's table): an independent
     reference, found by a careful reader, not by this code."""
+    if SEED_ERRATA is None:
+        pytest.skip("seed-errata.md is not at hand (POINSOT_SHARED names its folder)")
     out = set()
     for line in SEED_ERRATA.read_text(encoding="utf-8").splitlines():
         if line.startswith("| 2."):
@@ -165,7 +180,8 @@ def _seed_errata_numbers() -> set[str]:
 
 
 def test_errata_find_every_misprint_of_the_hand_made_list() -> None:
-    found = {re.match(r"2\.\d+", e.number).group(0) for e in derive.errata()}  # type: ignore[union-attr]
+    found = {m.group(0) for e in derive.errata() if (m := re.match(r"2\.\d+", e.number))}
+    assert "Earth's rate" in {e.number for e in derive.errata()}  # the row of seed-errata
     seed = _seed_errata_numbers()
     assert seed, "the hand-made list was not read"
     # 2.73-2.74 are a claim in words, filed under 2.73; the rest are equations
@@ -174,12 +190,18 @@ def test_errata_find_every_misprint_of_the_hand_made_list() -> None:
 
 
 def test_every_printed_equation_names_a_number_of_the_unit() -> None:
+    if UNIT is None:
+        pytest.skip("the unit is not at hand (POINSOT_SHARED names its folder)")
     text = UNIT.read_text(encoding="utf-8")
-    printed_numbers = set(re.findall(r"\(2\.(\d{1,3})\)", text))
+    printed_numbers = set(re.findall(r"[({]2\.(\d{1,3})[)}]", text))  # (2.6) or \tag{2.1}
+    flat = " ".join(text.split())
     for p in derive.printed():
-        n, _ = _number_value(p.number)
-        assert str(n) in printed_numbers, p.number
         assert p.derivation in derive.names()
+        v = _number_value(p.number)
+        if v is None:  # an unnumbered equation: its printed text must be the unit's
+            assert " ".join(p.as_printed.split()) in flat, p.number
+        else:
+            assert str(v[0]) in printed_numbers, p.number
 
 
 def test_errata_show_the_derived_form() -> None:
@@ -230,3 +252,14 @@ def test_cli_refuses_by_name(args: list[str], needle: str) -> None:
     r = CliRunner().invoke(main, args)
     assert r.exit_code == 2, r.output
     assert needle in r.output
+
+
+def test_the_quick_refusal_of_a_false_equation_is_sound() -> None:
+    """A false equation is refused at a numeric point; a true one never is, also where it holds
+    only by the symbols' assumptions (positive, integer)."""
+    x, y = sp.symbols("x y", positive=True)
+    n = sp.Symbol("n", integer=True)
+    assert not is_zero(sp.sqrt(x**2 * y**2) - x * y + sp.Rational(1, 10**9))
+    assert is_zero(sp.sqrt(x**2 * y**2) - x * y)  # needs x, y > 0
+    assert is_zero(sp.sin(n * sp.pi))  # needs n an integer
+    assert not is_zero(sp.sqrt(x) * sp.sqrt(y) - sp.sqrt(x * y) + x)

@@ -112,9 +112,12 @@ class Cross(sp.Function):
     nargs = 2
 
     def _latex(self, printer: Any, exp: Any = None) -> str:
+        return _power(self._body_latex(printer), exp, printer)
+
+    def _body_latex(self, printer: Any) -> str:
+        """The LaTeX without a power (a notation of a topic overrides this)."""
         a, b = self.args
-        text = _wrap(printer, a) + r" \times " + _wrap(printer, b, cross_right=True)
-        return _power(text, exp, printer)
+        return _wrap(printer, a) + r" \times " + _wrap(printer, b, cross_right=True)
 
     def _pretty(self, printer: Any) -> Any:
         return _pretty_binary(printer, self, "×")
@@ -126,9 +129,12 @@ class Dot(sp.Function):
     nargs = 2
 
     def _latex(self, printer: Any, exp: Any = None) -> str:
+        return _power(self._body_latex(printer), exp, printer)
+
+    def _body_latex(self, printer: Any) -> str:
+        """The LaTeX without a power (a notation of a topic overrides this)."""
         a, b = self.args
-        text = _wrap(printer, a, in_dot=True) + r" \cdot " + _wrap(printer, b, in_dot=True)
-        return _power(text, exp, printer)
+        return _wrap(printer, a, in_dot=True) + r" \cdot " + _wrap(printer, b, in_dot=True)
 
     def _pretty(self, printer: Any) -> Any:
         return _pretty_binary(printer, self, "·")
@@ -166,7 +172,11 @@ class DtFix(sp.Function):
     nargs = 1
 
     def _latex(self, printer: Any, exp: Any = None) -> str:
-        return _power(_dt_latex(printer, self, "fix"), exp, printer)
+        return _power(self._body_latex(printer), exp, printer)
+
+    def _body_latex(self, printer: Any) -> str:
+        """The LaTeX without a power (a notation of a topic overrides this)."""
+        return _dt_latex(printer, self, "fix")
 
     def _pretty(self, printer: Any) -> Any:
         return _dt_pretty(printer, self, "fix")
@@ -178,7 +188,11 @@ class DtRot(sp.Function):
     nargs = 1
 
     def _latex(self, printer: Any, exp: Any = None) -> str:
-        return _power(_dt_latex(printer, self, "rot"), exp, printer)
+        return _power(self._body_latex(printer), exp, printer)
+
+    def _body_latex(self, printer: Any) -> str:
+        """The LaTeX without a power (a notation of a topic overrides this)."""
+        return _dt_latex(printer, self, "rot")
 
     def _pretty(self, printer: Any) -> Any:
         return _dt_pretty(printer, self, "rot")
@@ -280,6 +294,35 @@ def _trig_polynomial_zero(e: Any) -> bool:
     return bool(num == 0)
 
 
+def _clearly_nonzero(x: Any) -> bool:
+    """Whether ``x`` (free of unknown functions) is nonzero at two points of its symbols'
+    domain, evaluated to 30 digits: a value far from zero there proves it is not identically
+    zero, so a false equation is refused without ``simplify`` (which may take seconds)."""
+    from sympy.core.function import AppliedUndef
+
+    if x.atoms(AppliedUndef, sp.Derivative) or not x.free_symbols:
+        return False
+    if any(sym.is_integer for sym in x.free_symbols):  # sin(nπ) = 0 holds only at integers
+        return False
+    rng = __import__("random").Random(20261124)
+    for _ in range(2):
+        point = {}
+        for sym in x.free_symbols:
+            v = sp.Rational(rng.randint(300, 1700), 1000)
+            point[sym] = -v if sym.is_negative or sym.is_nonpositive else v
+        try:
+            value = complex(x.xreplace(point).evalf(30))
+            scale = max(
+                (abs(complex(a.xreplace(point).evalf(30))) for a in sp.Add.make_args(x)),
+                default=0.0,
+            )
+        except (TypeError, ValueError, ZeroDivisionError):
+            return False
+        if not (abs(value) > 1e-12 * scale and abs(value) == abs(value)):  # NaN: undecided
+            return False
+    return True
+
+
 def is_zero(e: Any) -> bool:
     """Whether the scalar or matrix ``e`` is identically zero: expanded first, then as a
     trigonometric polynomial (:func:`_trig_polynomial_zero`), then by ``simplify``."""
@@ -295,6 +338,8 @@ def is_zero(e: Any) -> bool:
         p.exp.is_Integer for p in x.atoms(sp.Pow)
     ):  # a rational function of symbols: exact and quick
         return bool(sp.cancel(sp.together(x)) == 0)
+    if _clearly_nonzero(x):
+        return False
     if x.has(sp.sin, sp.cos) or x.has(sp.Derivative):
         try:
             if _trig_polynomial_zero(x):

@@ -73,7 +73,7 @@ class _Cross(Cross):
     """a⃗ × b⃗ with a scalar product on either side in parentheses: ω⃗ × (I⃗·ω⃗), as the unit
     writes it (``Cross`` prints ω⃗ × I⃗ · ω⃗)."""
 
-    def _latex(self, printer: Any) -> str:
+    def _body_latex(self, printer: Any) -> str:
         a, b = self.args
         wrap = lambda x: (
             r"\left(" + printer._print(x) + r"\right)"

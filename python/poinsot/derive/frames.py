@@ -104,7 +104,7 @@ _ACCENT = {1: r"\dot", 2: r"\ddot", 3: r"\dddot"}
 class _Dot(DtFix):
     """Ẋ: the unit's dot, the rate seen from the fixed frame (nested: Ẍ)."""
 
-    def _latex(self, printer: Any) -> str:
+    def _body_latex(self, printer: Any) -> str:
         order, inner = _nest(self)
         if isinstance(inner, (Vec, Unit)) and order in _ACCENT:
             base, prime = _base_prime(printer, inner)
@@ -125,14 +125,14 @@ def _frac(printer: Any, e: Any, d: str) -> str:
 class _DPrime(DtFix):
     """d′X/dt: the unit's notation (2.17) for the fixed-frame rate."""
 
-    def _latex(self, printer: Any) -> str:
+    def _body_latex(self, printer: Any) -> str:
         return _frac(printer, self, "d'")
 
 
 class _DPlain(DtRot):
     """dX/dt: the unit's notation (2.17) for the rotating-frame rate."""
 
-    def _latex(self, printer: Any) -> str:
+    def _body_latex(self, printer: Any) -> str:
         return _frac(printer, self, "d")
 
 
@@ -147,14 +147,14 @@ def _subscripted(printer: Any, e: Any, sub: str, dots: bool) -> str:
 class _SubF(DtFix):
     """ṙ′_f, r̈′_f: the compact form of 2.22–2.23, subscript f for the fixed-frame rate."""
 
-    def _latex(self, printer: Any) -> str:
+    def _body_latex(self, printer: Any) -> str:
         return _subscripted(printer, self, "f", True)
 
 
 class _SubR(DtRot):
     """ṙ_r, r̈_r: subscript r for the rotating-frame rate."""
 
-    def _latex(self, printer: Any) -> str:
+    def _body_latex(self, printer: Any) -> str:
         return _subscripted(printer, self, "r", True)
 
 
@@ -162,14 +162,14 @@ class _ScanF(DtFix):
     """The scan's r⃗_f of 2.22–2.23: a subscript f with its dots lost (the order is read from
     the text: first rates in 2.22, the compact 2.20, second in 2.23, the compact 2.21)."""
 
-    def _latex(self, printer: Any) -> str:
+    def _body_latex(self, printer: Any) -> str:
         return _subscripted(printer, self, "f", False)
 
 
 class _ScanR(DtRot):
     """The scan's r⃗_r: a subscript r with its dot lost."""
 
-    def _latex(self, printer: Any) -> str:
+    def _body_latex(self, printer: Any) -> str:
         return _subscripted(printer, self, "r", False)
 
 

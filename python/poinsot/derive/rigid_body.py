@@ -191,7 +191,7 @@ class _Dot(Dot):
     """The scalar product, printed with its cross-product operands in parentheses:
     (ω⃗ × r⃗)·(ω⃗ × r⃗)."""
 
-    def _latex(self, printer: Any) -> str:
+    def _body_latex(self, printer: Any) -> str:
         x, y = self.args
         return _parens(printer, x) + r" \cdot " + _parens(printer, y)
 
