@@ -49,6 +49,13 @@ def _number_key(number: str) -> str:
     return m.group(0) if m else number
 
 
+def _anchor(number: str) -> str:
+    """The anchor MyST gives the heading "(2.18)" (lower case, punctuation dropped, spaces to
+    hyphens)."""
+    text = re.sub(r"[^\w\s-]", "", f"({number})".lower()).strip()
+    return re.sub(r"\s+", "-", text)
+
+
 def errata_markdown() -> str:
     """docs/errata.md, from :func:`poinsot.derive.errata`."""
     from poinsot import derive
@@ -74,16 +81,30 @@ def errata_markdown() -> str:
         "",
         f"{len(errata)} of the {len(derive.printed())} transcribed equations do not follow.",
         "",
-        "| eq. | the unit prints | derived | what was lost or wrong | pinned by |",
-        "|---|---|---|---|---|",
+        "| eq. | derivation | how the scan was read |",
+        "|---|---|---|",
     ]
     for e in errata:
+        link = f"[{e.number}](#{_anchor(e.number)})"
+        lines.append(f"| {link} | {e.derivation} | {_cell(e.note) or '—'} |")
+    lines += ["", "## Each erratum, printed and derived", ""]
+    for e in errata:
+        lines += [
+            f"### ({e.number})",
+            "",
+            f"Derivation [{e.derivation}](derivations/{e.derivation}.md). The unit prints:",
+            "",
+            f"$$ {e.printed_latex()} $$",
+            "",
+            "Derived:",
+            "",
+            f"$$ {e.derived_latex()} $$",
+            "",
+        ]
         tests = pins.get(_number_key(e.number), [])
-        pinned = " ".join(f"`{t}`" for t in tests) or "`poinsot.derive.errata()`"
-        lines.append(
-            f"| {e.number} | $\\displaystyle {_cell(e.printed_latex())}$ "
-            f"| $\\displaystyle {_cell(e.derived_latex())}$ | {_cell(e.note)} | {pinned} |"
-        )
+        if tests:
+            lines += ["The corrected result is pinned by:", ""]
+            lines += [f"- `{t}`" for t in tests] + [""]
     lines += [
         "",
         "Conventions the unit uses, and poinsot keeps as defaults: primed = fixed (inertial), "
@@ -159,10 +180,9 @@ def derivation_pages() -> dict[Path, str]:
     out = {}
     for d in derive.derivations():
         head = f"<!-- Written by docs/_ext/derive_pages.py from poinsot.derive.derivation({d.name!r}). -->"
-        out[PAGES / f"{d.name}.md"] = f"({d.name})=\n{d.markdown(heading='#')}\n\n{head}\n"
+        out[PAGES / f"{d.name}.md"] = f"{d.markdown(heading='#')}\n\n{head}\n"
     out[PAGES / "questions.md"] = "\n".join(
         [
-            "(questions)=",
             "# The question bank, answered",
             "",
             "The unit's questions (its last section), each answered from poinsot: the "

@@ -967,7 +967,7 @@ def _render_markdown(items: list[Question], answers: bool) -> str:
             out.append(f"- *Answer:* {q.answer}")
             out.append(f"- *How:* {q.how}")
             if q.derivation:
-                where = f"[{q.derivation}](#{q.derivation})"
+                where = f"[{q.derivation}]({q.derivation}.md)"  # the pages sit side by side
                 if q.results:
                     where += f" (eqs. {', '.join(q.results)})"
                 out.append(f"- *Derived:* {where}")
