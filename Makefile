@@ -19,7 +19,7 @@ $(PY):
 
 # Build the Rust core + bindings (maturin, release) and install poinsot editable with all extras.
 setup: $(PY)
-	$(PY) -m pip install -q -e '.[all,test,docs,notebook]'
+	$(PY) -m pip install -q -e '.[all,test,docs,notebook,parallel]'
 
 demo: setup
 	$(VENV)/bin/poinsot tour
