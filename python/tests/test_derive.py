@@ -7,7 +7,6 @@ test_derive_<topic>.py.
 
 from __future__ import annotations
 
-import os
 import re
 from pathlib import Path
 
@@ -29,21 +28,13 @@ from poinsot.derive._core import (  # noqa: E402
     is_zero,
     judge,
 )
+from unit_source import shared_file, unit_path  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
-def _beside(name: str) -> Path | None:
-    """The unit's files are kept beside the repository (shared/), not in it; POINSOT_SHARED
-    names the folder where they are elsewhere."""
-    for base in (os.environ.get("POINSOT_SHARED", ""), ROOT.parent / "shared", "/work/shared"):
-        if base and (Path(base) / name).is_file():
-            return Path(base) / name
-    return None
-
-
-SEED_ERRATA = _beside("seed-errata.md")
-UNIT = _beside("seed/unit-2-moving-frames-and-rigid-bodies.md")
+SEED_ERRATA = shared_file("seed-errata.md")
+UNIT = unit_path()
 
 
 def _number_value(number: str) -> tuple[int, str] | None:

@@ -4,12 +4,12 @@ equations and the energy theorem agree with the core's rigid-body integrator."""
 
 from __future__ import annotations
 
-import os
 import time
 from pathlib import Path
 
 import numpy as np
 import pytest
+from unit_source import unit_text
 
 sp = pytest.importorskip("sympy")
 
@@ -24,16 +24,6 @@ TIGHT = 1e-12
 POINTS = 25
 
 ROOT = Path(__file__).resolve().parents[2]
-#: Where the unit may be found (it is kept beside the repository, not in it).
-UNIT_PATHS = [
-    Path(p)
-    for p in (
-        os.environ.get("POINSOT_UNIT", ""),
-        str(ROOT.parent / "seed" / "unit-2-moving-frames-and-rigid-bodies.md"),
-        "/work/shared/seed/unit-2-moving-frames-and-rigid-bodies.md",
-    )
-    if p
-]
 
 
 @pytest.fixture(scope="module")
@@ -102,10 +92,7 @@ def test_every_numbered_equation_of_the_range_is_transcribed():
 
 
 def test_transcriptions_are_verbatim():
-    unit = next((p for p in UNIT_PATHS if p.is_file()), None)
-    if unit is None:
-        pytest.skip("the course unit is not available")
-    text = unit.read_text(encoding="utf-8")
+    text = unit_text()
     for p in ee.PRINTED:
         for line in p.as_printed.split("\n"):
             assert line in text, (p.number, line)

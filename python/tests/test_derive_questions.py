@@ -19,6 +19,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from unit_source import unit_text
 
 pytest.importorskip("sympy")
 
@@ -36,16 +37,6 @@ if pd.questions is qb:
     pd.questions = _entry
 
 ROOT = Path(__file__).resolve().parents[2]
-#: Where the unit may be found (it is kept beside the repository, not in it).
-UNIT_PATHS = [
-    Path(p)
-    for p in (
-        os.environ.get("POINSOT_UNIT", ""),
-        str(ROOT.parent / "seed" / "unit-2-moving-frames-and-rigid-bodies.md"),
-        "/work/shared/seed/unit-2-moving-frames-and-rigid-bodies.md",
-    )
-    if p
-]
 
 
 @pytest.fixture(scope="module")
@@ -59,13 +50,6 @@ def by_number(bank: list[Question]) -> dict[str, Question]:
 
 
 # ---- the unit's question bank, parsed independently -----------------------------------------------
-
-
-def _unit_text() -> str:
-    for p in UNIT_PATHS:
-        if p.is_file():
-            return p.read_text(encoding="utf-8")
-    pytest.skip("the course unit is not beside the repository (set POINSOT_UNIT)")
 
 
 def _parse_bank(text: str) -> dict[str, list[dict[str, object]]]:
@@ -105,7 +89,7 @@ def _first_word(text: str) -> str:
 
 
 def test_every_question_of_the_unit_is_there_in_its_order(bank: list[Question]) -> None:
-    unit = _parse_bank(_unit_text())
+    unit = _parse_bank(unit_text())
     assert [len(unit[k]) for k in qb.KINDS] == [6, 13, 12]
     for kind, prefix in zip(qb.KINDS, ("MC", "S", "L")):
         ours = [q for q in bank if q.kind == kind]

@@ -4,12 +4,12 @@ core also computes agrees with :class:`poinsot.FreeSymmetricTop`."""
 
 from __future__ import annotations
 
-import os
 import time
 from pathlib import Path
 
 import numpy as np
 import pytest
+from unit_source import unit_text
 
 sp = pytest.importorskip("sympy")
 
@@ -24,16 +24,6 @@ TIGHT = 1e-12
 POINTS = 25
 
 ROOT = Path(__file__).resolve().parents[2]
-#: Where the unit may be found (it is kept beside the repository, not in it).
-UNIT_PATHS = [
-    Path(p)
-    for p in (
-        os.environ.get("POINSOT_UNIT", ""),
-        str(ROOT.parent / "seed" / "unit-2-moving-frames-and-rigid-bodies.md"),
-        "/work/shared/seed/unit-2-moving-frames-and-rigid-bodies.md",
-    )
-    if p
-]
 
 NUMBERS = {f"2.{k}" for k in range(77, 98)} - {"2.92"}  # the unit has no 2.92
 
@@ -110,10 +100,7 @@ def test_every_numbered_equation_of_the_range_is_transcribed():
 
 
 def test_transcriptions_are_verbatim():
-    unit = next((p for p in UNIT_PATHS if p.is_file()), None)
-    if unit is None:
-        pytest.skip("the course unit is not available")
-    text = unit.read_text(encoding="utf-8")
+    text = unit_text()
     for p in tf.PRINTED:
         for line in p.as_printed.split("\n"):
             assert line in text, (p.number, line)

@@ -10,7 +10,6 @@ ways, and each of its calls must draw.
 
 from __future__ import annotations
 
-import os
 import re
 import sys
 from pathlib import Path
@@ -18,6 +17,7 @@ from typing import Any
 
 import numpy as np
 import pytest
+from unit_source import unit_text
 
 matplotlib = pytest.importorskip("matplotlib")
 matplotlib.use("Agg")
@@ -34,17 +34,6 @@ ROOT = Path(__file__).resolve().parents[2]
 REFERENCE = Path(__file__).resolve().parent / "reference"
 sys.path.insert(0, str(REFERENCE))
 from gen_unit_figures import figure_lines  # noqa: E402
-
-#: Where the unit may be found (it is kept beside the repository, not in it).
-UNIT_PATHS = [
-    Path(p)
-    for p in (
-        os.environ.get("POINSOT_UNIT", ""),
-        str(ROOT.parent / "seed" / "unit-2-moving-frames-and-rigid-bodies.md"),
-        "/work/shared/seed/unit-2-moving-frames-and-rigid-bodies.md",
-    )
-    if p
-]
 
 #: Agreement of numbers read back from a drawing with their reference: the drawing stores
 #: the core's doubles, so only round-off separates them.
@@ -172,10 +161,7 @@ def test_a_figure_missing_from_the_registry_would_fail() -> None:
 
 
 def test_the_reference_lines_are_the_units() -> None:
-    unit = next((p for p in UNIT_PATHS if p.is_file()), None)
-    if unit is None:
-        pytest.skip("the unit is not at hand (POINSOT_UNIT names it)")
-    assert figure_lines(unit.read_text(encoding="utf-8")) == reference_lines()
+    assert figure_lines(unit_text()) == reference_lines()
 
 
 # ---------------------------------------------------------------------------------------------
