@@ -361,6 +361,74 @@ def test_binding_takes_tuples_or_arrays_and_names_the_argument() -> None:
         ht.euler_angles_at(math.nan)
 
 
+# ---- the guard forwards with the function's own signature ------------------------------
+
+
+def _sig_a(x, y=2, /, z=3, *args, k, m=5, **kw):  # type: ignore[no-untyped-def]
+    return (x, y, z, args, k, m, kw)
+
+
+def _sig_b(self, t):  # type: ignore[no-untyped-def]
+    return (self, t)
+
+
+def _sig_c(*args, **kwargs):  # type: ignore[no-untyped-def]
+    return (args, kwargs)
+
+
+def _sig_d(a, b=None, *, degrees=False):  # type: ignore[no-untyped-def]
+    return (a, b, degrees)
+
+
+@pytest.mark.parametrize("func", [_sig_a, _sig_b, _sig_c, _sig_d])
+def test_guard_wrapper_is_the_function_for_every_call(func: Callable[..., Any]) -> None:
+    """The guard's wrapper, generated with the function's own parameters (not ``*args,
+    **kwargs``), returns what the function returns and raises the same TypeError for a wrong
+    call; reference: the unwrapped function."""
+    from poinsot._guard import _guarded
+
+    wrapped = _guarded(func, "f")
+    import inspect
+
+    assert inspect.signature(wrapped) == inspect.signature(func)
+    calls: list[tuple[tuple[Any, ...], dict[str, Any]]] = [
+        ((), {}),
+        ((1,), {}),
+        ((1, 2), {}),
+        ((1, 2, 3), {}),
+        ((1, 2, 3, 4, 5), {"k": 6}),
+        ((1,), {"k": 6}),
+        ((1,), {"k": 6, "m": 7, "extra": 8}),
+        ((), {"x": 1, "k": 2}),
+        ((1,), {"y": 2, "k": 3}),
+        ((1,), {"t": 2}),
+        ((), {"self": 1, "t": 2}),
+        ((1,), {"degrees": True}),
+        ((1, 2), {"degrees": True, "b": 3}),
+        ((1, 2, 3), {"degrees": True}),
+    ]
+    for args, kwargs in calls:
+        assert outcome(lambda: wrapped(*args, **kwargs)) == outcome(
+            lambda: func(*args, **kwargs)
+        ), (args, kwargs)
+
+
+def test_guard_wrapper_turns_a_panic_into_internal_error_and_passes_others() -> None:
+    from poinsot._guard import _guarded
+    from poinsot.errors import InternalError
+
+    def panics(x: float, *, why: str = "boom") -> None:
+        _core._test_panic(why)
+
+    def fails(x: float) -> None:
+        raise KeyError(x)
+
+    with pytest.raises(InternalError, match="^f: internal error .*boom"):
+        _guarded(panics, "f")(1.0)
+    with pytest.raises(KeyError):
+        _guarded(fails, "g")(1.0)
+
+
 def test_binding_reads_plain_vectors_and_declines_the_rest() -> None:
     """``FreeBodySolution.from_plain`` builds the body only from three exact, finite Python
     floats (list or tuple) or a contiguous float64 ndarray (3,); for anything else it returns
