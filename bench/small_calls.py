@@ -104,8 +104,7 @@ def layers() -> None:
         ("  FreeBodySolution.from_plain(arrays)", lambda: free._free_body_from_plain(m_arr, w_arr)),
         ("  FreeBodySolution(tuples)  (after Python's conversion)",
          lambda: _core.FreeBodySolution(m_tup, w_tup, None)),
-        ("  the guard's wrapper: body.state(t) − the unwrapped state", lambda: None),
-        ("    unwrapped FreeRigidBody.state(body, t)", lambda: raw_state(body, T)),
+        ("  FreeRigidBody.state(body, t) without the guard's wrapper", lambda: raw_state(body, T)),
         ("  plain_float(t)  (is t a plain finite number)", lambda: _validate.plain_float(T)),
         ("  c.state_at(t)  (binding + core state, two arrays out)", lambda: body._core.state_at(T)),
         ("the general path's pieces, for comparison:", lambda: None),
@@ -120,7 +119,7 @@ def layers() -> None:
     print("where FreeRigidBody(lists).state(t) goes")
     print(f"  {load()}")
     for name, fn in steps:
-        if name.endswith(":") or "−" in name:
+        if name.endswith(":"):
             print(f"  {name}")
             continue
         print(f"  {name:<66} {best(fn, 20_000) * 1e6:7.3f} µs")
