@@ -3,6 +3,7 @@ errors name the argument. Physics never lives here."""
 
 from __future__ import annotations
 
+import math
 import sys
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -19,6 +20,18 @@ FloatArray = NDArray[np.float64]
 #: and step limits are asked: what a C ``ssize_t`` holds.
 MAX_COUNT = sys.maxsize
 
+_F64 = np.dtype(np.float64)
+_isfinite = math.isfinite
+
+#: Python containers and scalars from which ``np.asarray`` always builds a new array: when it is
+#: already float64 it is used as it is (no ``astype`` copy, no overflow check: float64 to float64
+#: cannot overflow).
+_FRESH = (list, tuple, float, int, np.float64)
+
+#: The largest ``int`` the scalar fast path converts itself (``float()`` of a larger one may
+#: overflow; those take the general path and its error).
+_INT_FAST = 2**1023
+
 
 def as_float_array(value: Any, name: str, *, finite: bool = True) -> FloatArray:
     """``value`` as a float64 array; raises :class:`ArgumentTypeError` naming ``name`` for text,
@@ -30,6 +43,8 @@ def as_float_array(value: Any, name: str, *, finite: bool = True) -> FloatArray:
             raw = np.asarray(value)
         except (TypeError, ValueError) as exc:
             raise PoinsotError(f"{name}: must be an array of real numbers ({exc})") from None
+        if raw.dtype is _F64 and type(value) in _FRESH:
+            return _finite(raw, name) if finite else raw
         kind = raw.dtype.kind
         if kind == "c":
             raise ArgumentTypeError(f"{name}: must be real, got complex numbers")
@@ -51,15 +66,70 @@ def as_float_array(value: Any, name: str, *, finite: bool = True) -> FloatArray:
             raise PoinsotError(
                 f"{name}: a number is beyond the range of doubles (about 1.8e308)"
             ) from None
-    arr = value
-    if finite and not np.all(np.isfinite(arr)):
-        bad = arr[~np.isfinite(arr)].ravel()[0]
-        raise PoinsotError(f"{name}: must be finite, got {bad}")
-    return arr
+    return _finite(value, name) if finite else value
+
+
+def _finite(arr: FloatArray, name: str) -> FloatArray:
+    """``arr`` if every entry is finite, else :class:`PoinsotError` naming ``name`` and the
+    first non-finite entry. Small arrays are checked entry by entry in Python (numpy's
+    reductions cost microseconds of overhead on three numbers)."""
+    if arr.size <= 8:
+        if all(map(math.isfinite, arr.ravel().tolist())):
+            return arr
+    elif np.isfinite(arr).all():
+        return arr
+    bad = arr[~np.isfinite(arr)].ravel()[0]
+    raise PoinsotError(f"{name}: must be finite, got {bad}")
+
+
+def plain_float(value: Any) -> float | None:
+    """The fast path of a scalar argument: ``value`` as a Python float when it plainly is a
+    finite number — a ``float`` or numpy ``float64``, or an ``int`` (not a bool) of at most
+    2**1023 in magnitude — else None, and the caller takes the general path
+    (:func:`as_scalar`, :func:`as_float_array`), whose checks raise. It accepts nothing the
+    general path refuses and returns the same number."""
+    kind = type(value)
+    if kind is float:
+        return value if _isfinite(value) else None
+    if kind is np.float64:
+        return float(value) if _isfinite(value) else None
+    if kind is int and -_INT_FAST <= value <= _INT_FAST:
+        return float(value)
+    return None
+
+
+def _plain_triple(value: Any) -> tuple[float, float, float] | None:
+    """``value`` as three finite Python floats when it plainly is a 3-vector — a list or
+    tuple of three :func:`plain_float` numbers, or a float64 array of shape (3,) — else None."""
+    kind = type(value)
+    if kind is list or kind is tuple:
+        if len(value) != 3:
+            return None
+        x, y, z = value
+        if type(x) is not float or type(y) is not float or type(z) is not float:
+            x, y, z = plain_float(x), plain_float(y), plain_float(z)
+            if x is None or y is None or z is None:
+                return None
+            return x, y, z
+    elif kind is np.ndarray:
+        if value.dtype is not _F64 or value.shape != (3,):
+            return None
+        x, y, z = value.tolist()
+    else:
+        return None
+    # All three finite when their sum is (a NaN or an infinity makes it NaN or infinite); a
+    # sum that overflows only sends finite numbers to the general path.
+    total = x + y + z
+    if total - total == 0.0:
+        return value if kind is tuple else (x, y, z)
+    return None
 
 
 def as_scalar(value: Any, name: str) -> float:
     """``value`` as a finite Python float; raises :class:`PoinsotError` naming ``name``."""
+    x = plain_float(value)
+    if x is not None:
+        return x
     arr = as_float_array(value, name)
     if arr.ndim != 0:
         raise PoinsotError(f"{name}: must be a scalar, got shape {arr.shape}")
@@ -136,10 +206,28 @@ def as_vectors(value: Any, name: str, size: int = 3) -> tuple[FloatArray, tuple[
 
 def as_vector3(value: Any, name: str) -> FloatArray:
     """``value`` as one 3-vector of shape ``(3,)``."""
+    fast = _plain_triple(value)
+    if fast is not None:
+        return value if type(value) is np.ndarray else np.array(fast)
     arr = as_float_array(value, name)
     if arr.shape != (3,):
         raise PoinsotError(f"{name}: must have shape (3,), got {arr.shape}")
     return arr
+
+
+def as_triple(value: Any, name: str, *, finite: bool = True) -> tuple[float, float, float]:
+    """``value`` as one 3-vector given as three Python floats (what the binding's
+    constructors take without building an array): the checks and errors of
+    :func:`as_vector3` (with ``finite=False``, non-finite entries pass, for the core to judge),
+    and a fast path for a list or tuple of three plain numbers or a float64 array (3,)."""
+    fast = _plain_triple(value)
+    if fast is not None:
+        return fast
+    arr = as_float_array(value, name, finite=finite)
+    if arr.shape != (3,):
+        raise PoinsotError(f"{name}: must have shape (3,), got {arr.shape}")
+    x, y, z = arr.tolist()
+    return x, y, z
 
 
 def as_matrices(value: Any, name: str) -> tuple[FloatArray, tuple[int, ...]]:

@@ -12,6 +12,9 @@ Conventions (pinned by the ``test_convention_*`` and ``test_erratum_*`` tests):
   (2.81–2.82; Goldstein writes the opposite sign of Ω: the same physics).
 
 All computation runs in the compiled core; this module converts arrays and broadcasts ``t``.
+A plain number ``t`` (a float or an int) takes a fast path: one call of the binding that
+returns the arrays of that one time, without building and reshaping an array of times (same
+numbers, same checks: anything not plainly a finite number goes the general way).
 """
 
 from __future__ import annotations
@@ -22,7 +25,15 @@ import numpy as np
 
 from . import _core
 from . import _display as show
-from ._validate import FloatArray, as_choice, as_count, as_float_array, as_scalar, as_vector3
+from ._validate import (
+    FloatArray,
+    as_choice,
+    as_count,
+    as_float_array,
+    as_scalar,
+    as_triple,
+    plain_float,
+)
 from .errors import PoinsotError
 
 __all__ = ["FreeSymmetricTop", "FreeRigidBody", "AxisStability", "axis_stability"]
@@ -89,15 +100,19 @@ class FreeSymmetricTop(show.Displayed):
     """
 
     def __init__(self, I1: float, I3: float, omega0: Any, attitude0: Any = None) -> None:
-        self._core = _core.SymmetricTopSolution(
-            as_scalar(I1, "I1"),
-            as_scalar(I3, "I3"),
-            as_vector3(omega0, "omega0"),
-            _quat(attitude0, "attitude0"),
-        )
-        self.I1 = float(I1)
-        self.I3 = float(I3)
-        self.omega0 = np.array(as_vector3(omega0, "omega0"))
+        i1 = as_scalar(I1, "I1")
+        i3 = as_scalar(I3, "I3")
+        w = as_triple(omega0, "omega0")
+        q = None if attitude0 is None else _quat(attitude0, "attitude0")
+        self._core = _core.SymmetricTopSolution(i1, i3, w, q)
+        self.I1 = i1
+        self.I3 = i3
+        self._omega0 = w
+
+    @property
+    def omega0(self) -> FloatArray:
+        """ω at t = 0 in body components, as given (rad/s, shape (3,); a new array)."""
+        return np.array(self._omega0)
 
     def _rows(self) -> list[show.Row]:
         return [
@@ -244,17 +259,26 @@ class FreeSymmetricTop(show.Displayed):
 
     def omega(self, t: Any) -> FloatArray:
         """ω(t) in body components (2.85–2.86), rad/s; ``t`` (s) of any shape → shape + (3,)."""
+        x = plain_float(t)
+        if x is not None:
+            return self._core.omega_at(x)
         ts, shape = _times(t)
         return np.asarray(self._core.omega(ts)).reshape(shape + (3,))
 
     def attitude(self, t: Any) -> FloatArray:
         """The attitude at ``t`` (s), quaternions [w, x, y, z] (body → space), shape + (4,):
         R(t) = R₀ · Rot(L̂_body(0), |L| t / I₁) · Rot(e₃, Ω t)."""
+        x = plain_float(t)
+        if x is not None:
+            return self._core.attitude_at(x)
         ts, shape = _times(t)
         return np.asarray(self._core.attitude(ts)).reshape(shape + (4,))
 
     def symmetry_axis(self, t: Any) -> FloatArray:
         """The symmetry axis e₃ in space components at ``t``, shape + (3,)."""
+        x = plain_float(t)
+        if x is not None:
+            return self._core.symmetry_axis_at(x)
         ts, shape = _times(t)
         return np.asarray(self._core.symmetry_axis(ts)).reshape(shape + (3,))
 
@@ -283,6 +307,11 @@ class FreeSymmetricTop(show.Displayed):
                 as_scalar(angular_momentum, "angular_momentum"),
             )
         )
+
+
+#: The binding's constructor for plain input (None when the input is not plain); a name of its
+#: own so that the tests can switch it off and compare with the general path.
+_free_body_from_plain = _core.FreeBodySolution.from_plain
 
 
 def _samples(samples: Any) -> int:
@@ -331,16 +360,29 @@ class FreeRigidBody(show.Displayed):
     """
 
     def __init__(self, moments: Any, omega0: Any, attitude0: Any = None) -> None:
-        if hasattr(moments, "principal_moments"):
+        kind = type(moments)
+        plain = kind is list or kind is tuple or kind is np.ndarray
+        if not plain and hasattr(moments, "principal_moments"):
             moments = moments.principal_moments
-        m = as_float_array(moments, "moments", finite=False)
-        if m.shape != (3,):
-            raise PoinsotError(f"moments: must have shape (3,), got {m.shape}")
-        self._core = _core.FreeBodySolution(
-            np.ascontiguousarray(m), as_vector3(omega0, "omega0"), _quat(attitude0, "attitude0")
-        )
-        self.moments = m.copy()
-        self.omega0 = np.array(as_vector3(omega0, "omega0"))
+        # Three plain finite floats each (lists, tuples, float64 arrays): read by the binding
+        # directly. Anything else: converted and checked here, with the API's errors.
+        core = _free_body_from_plain(moments, omega0) if attitude0 is None else None
+        if core is None:
+            m = as_triple(moments, "moments", finite=False)
+            w = as_triple(omega0, "omega0")
+            q = None if attitude0 is None else _quat(attitude0, "attitude0")
+            core = _core.FreeBodySolution(m, w, q)
+        self._core = core
+
+    @property
+    def moments(self) -> FloatArray:
+        """The principal moments, as given (kg·m², shape (3,); a new array)."""
+        return np.asarray(self._core.moments)
+
+    @property
+    def omega0(self) -> FloatArray:
+        """ω at t = 0 in body components, as given (rad/s, shape (3,); a new array)."""
+        return np.asarray(self._core.omega0)
 
     def _rows(self) -> list[show.Row]:
         return [
@@ -442,6 +484,9 @@ class FreeRigidBody(show.Displayed):
     def state(self, t: Any) -> tuple[FloatArray, FloatArray]:
         """(ω (body, rad/s), attitude [w, x, y, z]) at ``t`` (s): shapes t.shape + (3,) and
         t.shape + (4,); quaternion signs are continuous along ``t``."""
+        x = plain_float(t)
+        if x is not None:
+            return self._core.state_at(x)
         ts, shape = _times(t)
         w, q = self._core.state(ts)
         return np.asarray(w).reshape(shape + (3,)), np.asarray(q).reshape(shape + (4,))

@@ -26,7 +26,7 @@ import numpy as np
 
 from . import _core
 from . import _display as show
-from ._validate import FloatArray, as_angle, as_flag, as_flat, as_scalar, shaped
+from ._validate import FloatArray, as_angle, as_flag, as_flat, as_scalar, plain_float, shaped
 
 __all__ = ["HeavyTop", "SteadyPrecession", "MOTION_CLASSES"]
 
@@ -45,6 +45,15 @@ sphere (Goldstein Fig. 5.9) — ``"waves"`` (phi' keeps one sign between the tur
 ``"steady precession"`` (theta constant, 0 < theta < pi), ``"sleeping"`` (theta stays 0: spinning
 upright), ``"hanging"`` (theta stays pi), ``"through vertical"`` (the axis passes through a pole,
 where phi and psi jump by pi)."""
+
+
+def _degrees(values: tuple[float, float, float], degrees: Any) -> tuple[float, float, float]:
+    """Three angles (or rates) of one time, in degrees when ``degrees`` is true: ``math.degrees``
+    is the same product as ``np.degrees`` (x · (180/π), bit for bit)."""
+    if as_flag(degrees, "degrees"):
+        a, b, c = values
+        return math.degrees(a), math.degrees(b), math.degrees(c)
+    return values
 
 
 @dataclass(frozen=True)
@@ -379,6 +388,9 @@ class HeavyTop(show.Displayed):
         however close to upright (down to 1e-60 rad). Raises :class:`PoinsotError` naming ``t``
         beyond ``|t| = 4.5e9 rad / (the motion's fastest rate)``, where the phase would carry more
         than 1e-6 rad of rounding (see docs/heavy_top.md, *Range of validity*)."""
+        x = plain_float(t)
+        if x is not None:  # one plain number: the same kernel without the arrays
+            return _degrees(self._core.euler_angles_at(x), degrees)
         flat, shape = as_flat(t, "t")
         out = self._core.euler_angles(flat)
         if as_flag(degrees, "degrees"):
@@ -388,6 +400,9 @@ class HeavyTop(show.Displayed):
     def euler_rates(self, t: Any, *, degrees: bool = False) -> tuple[Any, Any, Any]:
         """The rates ``(phi', theta', psi')`` (rad/s; deg/s with ``degrees=True``) at times ``t``:
         ``phi'`` by 2.106, ``psi' = omega3 - phi' cos(theta)``, ``theta'`` from the solution."""
+        x = plain_float(t)
+        if x is not None:
+            return _degrees(self._core.euler_rates_at(x), degrees)
         flat, shape = as_flat(t, "t")
         out = self._core.euler_rates(flat)
         if as_flag(degrees, "degrees"):

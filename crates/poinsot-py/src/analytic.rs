@@ -3,7 +3,7 @@ use numpy::PyReadonlyArray1;
 use poinsot::analytic::{axis_stability as core_axis_stability, FreeRigidBody, FreeSymmetricTop};
 use pyo3::prelude::*;
 
-use crate::convert::{opt_quat, times, vec3, vector, Rows, Vector};
+use crate::convert::{opt_quat, plain_triple, times, triple, vec3, Numbers, Rows, Vector};
 use crate::errors::IntoPy;
 
 /// `f` at each of the times `t` (N,), each finite → (N, K) rows.
@@ -34,10 +34,10 @@ impl PySymmetricTop {
     fn new(
         i1: f64,
         i3: f64,
-        omega0: PyReadonlyArray1<'_, f64>,
+        omega0: &Bound<'_, PyAny>,
         attitude0: Option<PyReadonlyArray1<'_, f64>>,
     ) -> PyResult<Self> {
-        let w = vector("omega0", &omega0)?;
+        let w = triple("omega0", omega0)?.into();
         let q = opt_quat("attitude0", &attitude0)?;
         Ok(Self {
             inner: FreeSymmetricTop::new(i1, i3, w, q).py()?,
@@ -107,6 +107,18 @@ impl PySymmetricTop {
     fn symmetry_axis(&self, t: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<3>> {
         at_times(&t, |t| self.inner.symmetry_axis(t))
     }
+    /// ω at one time t → (3,).
+    fn omega_at(&self, t: f64) -> PyResult<Vector> {
+        self.inner.omega(t).map(Vector).py()
+    }
+    /// The attitude at one time t → (4,) [w, x, y, z].
+    fn attitude_at(&self, t: f64) -> PyResult<Numbers<4>> {
+        self.inner.attitude(t).map(Numbers).py()
+    }
+    /// The symmetry axis in space at one time t → (3,).
+    fn symmetry_axis_at(&self, t: f64) -> PyResult<Vector> {
+        self.inner.symmetry_axis(t).map(Vector).py()
+    }
     /// ω₃² from T and |L| (2.95).
     #[staticmethod]
     fn omega3_squared_from(i1: f64, i3: f64, energy: f64, l: f64) -> PyResult<f64> {
@@ -130,16 +142,38 @@ impl PyFreeBody {
     #[new]
     #[pyo3(signature = (moments, omega0, attitude0=None))]
     fn new(
-        moments: PyReadonlyArray1<'_, f64>,
-        omega0: PyReadonlyArray1<'_, f64>,
+        moments: &Bound<'_, PyAny>,
+        omega0: &Bound<'_, PyAny>,
         attitude0: Option<PyReadonlyArray1<'_, f64>>,
     ) -> PyResult<Self> {
-        let m = vec3("moments", &moments)?;
-        let w = vector("omega0", &omega0)?;
+        let m = triple("moments", moments)?;
+        let w = triple("omega0", omega0)?.into();
         let q = opt_quat("attitude0", &attitude0)?;
         Ok(Self {
             inner: FreeRigidBody::new(m, w, q).py()?,
         })
+    }
+    /// The body from `moments` and `omega0` in the identity attitude when both are plainly
+    /// three finite floats ([`plain_triple`]); `None` otherwise (the Python layer then converts
+    /// them, with its errors). The core's own errors are raised as by the constructor.
+    #[staticmethod]
+    fn from_plain(moments: &Bound<'_, PyAny>, omega0: &Bound<'_, PyAny>) -> PyResult<Option<Self>> {
+        let (Some(m), Some(w)) = (plain_triple(moments), plain_triple(omega0)) else {
+            return Ok(None);
+        };
+        Ok(Some(Self {
+            inner: FreeRigidBody::new(m, w.into(), None).py()?,
+        }))
+    }
+    /// The principal moments as given (kg·m², (3,)).
+    #[getter]
+    fn moments(&self) -> Vector {
+        Vector::from(self.inner.moments())
+    }
+    /// ω at t = 0 as given (body, rad/s, (3,)).
+    #[getter]
+    fn omega0(&self) -> Vector {
+        Vector(self.inner.omega0())
     }
     #[getter]
     fn energy(&self) -> PyResult<f64> {
@@ -187,6 +221,12 @@ impl PyFreeBody {
         }
         .py()?;
         Ok((Rows(w), Rows(q)))
+    }
+    /// (ω (3,) body, attitude (4,) [w, x, y, z]) at one time t: `state` of [t] without the
+    /// arrays of times (the same numbers).
+    fn state_at(&self, t: f64) -> PyResult<(Vector, Numbers<4>)> {
+        let (w, q) = self.inner.state(t).py()?;
+        Ok((Vector(w), Numbers(q)))
     }
     /// ω in space components at times t (N,) → (N, 3) (the herpolhode).
     fn omega_space(&self, t: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<3>> {

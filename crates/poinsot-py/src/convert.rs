@@ -4,19 +4,21 @@
 //!
 //! Arguments come in through functions that take the argument's name, because a shape error must
 //! be a `PoinsotError` naming it (pyo3's own extraction knows no argument name): [`vector`],
-//! [`array_in`], [`matrix`], [`rows_in`], [`times`], [`opt_quat`], [`parse`]. Results go out
-//! through newtypes that convert themselves to numpy arrays, so that a getter is one line:
-//! [`Vector`] (3,), [`Matrix`] (3, 3), [`Rows`] (N, K), [`Values`] (N,).
+//! [`triple`], [`array_in`], [`matrix`], [`rows_in`], [`times`], [`opt_quat`], [`parse`].
+//! Results go out through newtypes that convert themselves to numpy arrays, so that a getter is
+//! one line: [`Vector`] (3,), [`Numbers`] (K,), [`Matrix`] (3, 3), [`Rows`] (N, K), [`Values`]
+//! (N,).
 use std::str::FromStr;
 
 use numpy::ndarray::Array2;
 use numpy::{
     IntoPyArray, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2,
-    PyUntypedArrayMethods,
+    PyUntypedArray, PyUntypedArrayMethods,
 };
 use poinsot::integrate::Options;
 use poinsot::{Mat3, Vec3};
 use pyo3::prelude::*;
+use pyo3::types::{PyFloat, PyList, PyTuple};
 
 use crate::errors::{invalid, IntoPy};
 
@@ -58,6 +60,66 @@ pub fn vec3(argument: &str, a: &PyReadonlyArray1<'_, f64>) -> PyResult<[f64; 3]>
 /// A length-3 float array → a core vector.
 pub fn vector(argument: &str, a: &PyReadonlyArray1<'_, f64>) -> PyResult<Vec3> {
     vec3(argument, a).map(Vec3::from)
+}
+
+/// A 3-vector given as a tuple of three floats (what the Python layer's fast path passes: no
+/// array to build, borrow and read) or as a float64 array of shape (3,) → `[f64; 3]`; anything
+/// else is a `PoinsotError` naming `argument`.
+pub fn triple(argument: &str, a: &Bound<'_, PyAny>) -> PyResult<[f64; 3]> {
+    if let Ok(t) = a.cast::<PyTuple>() {
+        if t.len() != 3 {
+            return Err(invalid(
+                argument,
+                format!("must have shape (3,), got ({},)", t.len()),
+            ));
+        }
+        let (x, y, z): (f64, f64, f64) = t
+            .extract()
+            .map_err(|_| invalid(argument, "must be three real numbers"))?;
+        return Ok([x, y, z]);
+    }
+    let arr: PyReadonlyArray1<'_, f64> = a.extract().map_err(|_| {
+        invalid(
+            argument,
+            "must be a float64 array of shape (3,) or a tuple of three floats",
+        )
+    })?;
+    vec3(argument, &arr)
+}
+
+/// Three finite floats when `a` plainly is a 3-vector — a list or tuple (exactly) of three
+/// Python floats (exactly: no ints, bools or subclasses), or a contiguous float64 ndarray
+/// (exactly) of shape (3,) — else `None`, and the Python layer converts it with its own checks
+/// and errors (`_validate.as_triple`, which takes everything this takes, to the same numbers).
+/// The fast path of small calls: no Python-level conversion at all.
+pub fn plain_triple(a: &Bound<'_, PyAny>) -> Option<[f64; 3]> {
+    let v = if let Ok(l) = a.cast_exact::<PyList>() {
+        if l.len() != 3 {
+            return None;
+        }
+        let f = |i| exact_float(&l.get_item(i).ok()?);
+        [f(0)?, f(1)?, f(2)?]
+    } else if let Ok(t) = a.cast_exact::<PyTuple>() {
+        if t.len() != 3 {
+            return None;
+        }
+        let f = |i| exact_float(&t.get_item(i).ok()?);
+        [f(0)?, f(1)?, f(2)?]
+    } else if a.get_type().is(a.py().get_type::<PyUntypedArray>()) {
+        let arr = a.cast::<PyArray1<f64>>().ok()?.try_readonly().ok()?;
+        match arr.as_slice().ok()? {
+            [x, y, z] => [*x, *y, *z],
+            _ => return None,
+        }
+    } else {
+        return None;
+    };
+    v.iter().all(|x| x.is_finite()).then_some(v)
+}
+
+/// The value of an exact Python float (not an int, a bool or a subclass of float).
+fn exact_float(item: &Bound<'_, PyAny>) -> Option<f64> {
+    item.cast_exact::<PyFloat>().ok().map(|f| f.value())
 }
 
 /// An optional length-3 float array → an optional core vector.
@@ -252,6 +314,9 @@ pub fn zeros<'py>(py: Python<'py>, dims: &[usize]) -> Bound<'py, numpy::PyArrayD
 /// A vector result: a new numpy array of shape (3,).
 pub struct Vector(pub Vec3);
 
+/// K numbers (a quaternion, a small state): a new numpy array of shape (K,).
+pub struct Numbers<const K: usize>(pub [f64; K]);
+
 /// A matrix result: a new numpy array of shape (3, 3).
 pub struct Matrix(pub Mat3);
 
@@ -303,6 +368,15 @@ impl<'py> IntoPyObject<'py> for Vector {
     type Error = std::convert::Infallible;
     fn into_pyobject(self, py: Python<'py>) -> Result<Self::Output, Self::Error> {
         Ok(vec3_out(py, a3(&self.0)))
+    }
+}
+
+impl<'py, const K: usize> IntoPyObject<'py> for Numbers<K> {
+    type Target = PyArray1<f64>;
+    type Output = Bound<'py, PyArray1<f64>>;
+    type Error = std::convert::Infallible;
+    fn into_pyobject(self, py: Python<'py>) -> Result<Self::Output, Self::Error> {
+        Ok(PyArray1::from_slice(py, &self.0))
     }
 }
 

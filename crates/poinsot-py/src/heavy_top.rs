@@ -44,6 +44,21 @@ fn batch<'py>(
         .into_pyarray(py))
 }
 
+/// Evaluates `f` (a batch kernel) at the one time `t`, with the GIL held (releasing it costs
+/// more than one evaluation); errors name `t` as in [`batch`].
+fn one(t: f64, f: impl Fn(&[f64], &mut [f64]) -> poinsot::Result<()>) -> PyResult<(f64, f64, f64)> {
+    let mut out = [0.0; 3];
+    f(&[t], &mut out)
+        .map_err(|mut e| {
+            if e.argument == "times" {
+                e.argument = "t".into();
+            }
+            e
+        })
+        .py()?;
+    Ok((out[0], out[1], out[2]))
+}
+
 #[pymethods]
 impl PyHeavyTop {
     /// The top (I₁, I₃, m g l) started at t = 0 from Euler angles and rates (rad, rad/s).
@@ -209,6 +224,17 @@ impl PyHeavyTop {
         t: PyReadonlyArray1<'py, f64>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
         batch(py, &t, |ts, out| self.inner.euler_rates_into(ts, out))
+    }
+
+    /// (φ, θ, ψ) (rad) at one time t (s): `euler_angles` of [t] without the arrays (the same
+    /// numbers, by the same batch kernel).
+    fn euler_angles_at(&self, t: f64) -> PyResult<(f64, f64, f64)> {
+        one(t, |ts, out| self.inner.euler_angles_into(ts, out))
+    }
+
+    /// (φ̇, θ̇, ψ̇) (rad/s) at one time t (s): `euler_rates` of [t] without the arrays.
+    fn euler_rates_at(&self, t: f64) -> PyResult<(f64, f64, f64)> {
+        one(t, |ts, out| self.inner.euler_rates_into(ts, out))
     }
 
     /// (N, 3) Euler angles by the incomplete elliptic integrals (sn, R_J) at every time.
