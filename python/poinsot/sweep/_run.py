@@ -288,7 +288,7 @@ def _on_cluster(
     try:
         if report is not None:
             for done, _ in enumerate(distributed.as_completed(futures), start=1):
-                report(done / len(futures))
+                report(min(1.0, done / len(futures)))
         return list(client.gather(futures))
     except BaseException:
         client.cancel(futures)
