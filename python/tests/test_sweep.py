@@ -7,7 +7,9 @@ test_sweep_cluster.py."""
 from __future__ import annotations
 
 import importlib
+import re
 import sys
+from pathlib import Path
 
 import numpy as np
 import poinsot as ps
@@ -399,3 +401,14 @@ def test_without_the_extra_the_error_names_it(monkeypatch) -> None:
         _top_sweep()
     # The package itself imports without xarray or dask.
     assert "xarray" not in importlib.import_module("poinsot").__dict__
+
+
+def test_the_docs_page_blocks_run() -> None:
+    """Every ```python block of docs/sweeps.md runs (in order, one namespace); the cluster recipes
+    are ``{code-block}`` blocks, shown, not run."""
+    doc = Path(__file__).resolve().parents[2] / "docs" / "sweeps.md"
+    blocks = re.findall(r"```python\n(.*?)```", doc.read_text(encoding="utf-8"), re.DOTALL)
+    assert len(blocks) >= 6
+    namespace: dict[str, object] = {"__name__": "__doc__"}
+    for i, block in enumerate(blocks):
+        exec(compile(block, f"docs/sweeps.md[block {i}]", "exec"), namespace)
