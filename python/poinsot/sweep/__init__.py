@@ -276,12 +276,15 @@ _COMMON = """    quantities : str or list of str, optional
     client : dask.distributed.Client, optional
         Run chunk by chunk on its cluster.
     chunks : int or dict, optional
-        Chunk sizes along the dimensions (an int for every dimension, or ``{dimension: size}``).
+        Chunk sizes along the dimensions (an int for every dimension, or ``{dimension: size}``;
+        the others are not split): with a client, the tasks of the cluster; without one, the
+        sweep also runs chunk by chunk here (one core call a chunk).
     to_zarr : str or path, optional
         Write the results chunk by chunk into this new zarr store and return it opened lazily.
     progress : callable, bool or None
-        ``progress(fraction)``, called as the sweep advances; ``None`` (default) draws a bar on
-        stderr when it is a terminal; ``False`` reports nothing.
+        ``progress(fraction)``, called as the sweep advances (an exception it raises stops the
+        sweep); ``None`` (default) draws a bar on stderr once the sweep has run a second, when
+        stderr is a terminal; ``True`` draws it in any case; ``False`` reports nothing.
 
     Returns
     -------

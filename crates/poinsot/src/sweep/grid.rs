@@ -298,34 +298,39 @@ impl<'a> Grid<'a> {
     /// Computes `f` at every point, in parallel across the cores, in row-major order. The loop
     /// polls [`crate::control`] (Ctrl-C and progress: one unit of work per point) and `f`'s own
     /// loops obey a stop request too. A point whose `f` fails stops the run with the error of
-    /// the first failing point in row-major order, located ([`Grid::at_point`]).
+    /// the first failing point in row-major order, located ([`Grid::at_point`]): the points
+    /// before it are searched again on failure, so that the error does not depend on the
+    /// order in which the threads met them.
     pub fn compute<T: Send>(&self, f: impl Fn(usize) -> Result<T> + Sync) -> Result<Vec<T>> {
-        let results: Vec<Result<T>> = control::parallel(self.len as u64, |cancel| {
-            Ok((0..self.len)
+        let outcome = control::parallel(self.len as u64, |cancel| {
+            (0..self.len)
                 .into_par_iter()
                 .with_min_len(16)
                 .map(|p| {
                     cancel.check()?;
                     let (result, _) = control::watched(Arc::clone(cancel), || f(p));
                     cancel.advance(1);
-                    result.map_err(|e| self.at_point(e, p))
+                    result
                 })
-                .collect())
-        })?;
-        let mut out = Vec::with_capacity(results.len());
-        let mut interrupted = None;
-        for r in results {
-            match r {
-                Ok(v) => out.push(v),
-                Err(e) if e.kind == crate::ErrorKind::Interrupted => {
-                    interrupted.get_or_insert(e);
-                }
-                Err(e) => return Err(e),
+                .collect::<Result<Vec<T>>>()
+        });
+        match outcome {
+            Ok(out) => Ok(out),
+            Err(e) if e.kind == crate::ErrorKind::Interrupted => Err(e),
+            Err(e) => {
+                // Some point failed: find the first one in row-major order (stoppable too).
+                let first = control::parallel(self.len as u64, |cancel| {
+                    Ok((0..self.len).into_par_iter().find_first(|&p| {
+                        cancel.check().is_err()
+                            || control::watched(Arc::clone(cancel), || f(p)).0.is_err()
+                    }))
+                })?;
+                Err(match first.map(|p| (p, f(p))) {
+                    Some((p, Err(first_error))) => self.at_point(first_error, p),
+                    Some((_, Ok(_))) => control::interrupted(),
+                    None => e,
+                })
             }
-        }
-        match interrupted {
-            Some(e) => Err(e),
-            None => Ok(out),
         }
     }
 }
