@@ -284,7 +284,9 @@ def _on_cluster(
     """The tasks' results, in order, computed on the cluster of ``client``. A task whose worker
     dies is computed again by Dask (its result is only ever taken once)."""
     distributed = require("distributed")
-    futures = [client.submit(fn, *args, pure=True) for fn, *args in tasks]
+    # Keys of this call's own (pure=False): a sweep that failed or was stopped cancels its
+    # futures, which must not cancel the same chunk of a later sweep.
+    futures = [client.submit(fn, *args, pure=False) for fn, *args in tasks]
     try:
         if report is not None:
             for done, _ in enumerate(distributed.as_completed(futures), start=1):
