@@ -556,6 +556,7 @@ SWEEP_DROP_KEYWORDS: list[str]
 SWEEP_PROJECTILE_KEYWORDS: list[str]
 
 def sweep_categories() -> dict[str, list[str]]: ...
+def sweep_check_memory(dims: Sequence[tuple[str, int, int]], bytes_each: int) -> None: ...
 def sweep_heavy_top(
     dims: Sequence[tuple[str, int, int]],
     columns: Sequence[tuple[str, NDArray[np.float64], int | None]],

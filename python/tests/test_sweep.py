@@ -383,7 +383,7 @@ def test_the_memory_budget_is_checked_before_work() -> None:
                 psi_dot=np.linspace(1.0, 2.0, 1000),
                 progress=False,
             )
-        with pytest.raises(ps.PoinsotError, match="memory budget"):
+        with pytest.raises(ps.PoinsotError, match="^psi_dot: .*memory budget"):
             sweep.heavy_top(
                 I1=1.0,
                 I3=0.5,
@@ -392,6 +392,18 @@ def test_the_memory_budget_is_checked_before_work() -> None:
                 psi_dot=np.linspace(1.0, 2.0, 1000),
                 chunks=100,
             )
+        # A dimension not named after a keyword is named by the user's argument.
+        with pytest.raises(ps.PoinsotError, match="^samples: a sweep of 100000 points"):
+            sweep.heavy_top(
+                I1=1.0,
+                I3=0.5,
+                mgl=1.0,
+                theta=sweep.uniform(0.1, 1.0),
+                psi_dot=np.linspace(1.0, 2.0, 10),
+                samples=10_000,
+            )
+        with pytest.raises(ps.PoinsotError, match="^omega0: a sweep of 20000 points"):
+            sweep.simulate(moments=[1.0, 2.0, 3.0], omega0=np.ones((20_000, 3)), duration=1.0)
     finally:
         ps.set_memory_budget(previous)
 

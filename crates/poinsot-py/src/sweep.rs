@@ -59,6 +59,14 @@ fn codes<'py, T>(py: Python<'py>, points: &[T], f: impl Fn(&T) -> u8) -> Bound<'
     PyArray1::from_vec(py, points.iter().map(f).collect())
 }
 
+/// Checks that `bytes_each` bytes a point of the sweep of `dims` fit in the memory budget (the
+/// results of a sweep gathered from its chunks); the error names the longest dimension.
+#[pyfunction]
+fn sweep_check_memory(dims: Dims, bytes_each: usize) -> PyResult<()> {
+    let columns: Columns<'_> = Vec::new();
+    grid(&dims, &columns)?.check_memory(bytes_each).py()
+}
+
 /// The names of the categories' codes, from the core's tables: `{"motion_class": [...],
 /// "regime": [...], "stability": [...]}` (a code is an index into its list).
 #[pyfunction]
@@ -313,6 +321,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
         core::PROJECTILE_KEYWORDS.to_vec(),
     )?;
     m.add_function(wrap_pyfunction!(sweep_categories, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep_check_memory, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_heavy_top, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_free_body, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_simulate, m)?)?;

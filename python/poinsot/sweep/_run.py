@@ -21,7 +21,7 @@ from typing import Any, Callable, Optional
 import numpy as np
 
 from .. import _core
-from .._validate import as_callable, as_count
+from .._validate import as_callable, as_count, public_names
 from ..errors import ArgumentTypeError, PoinsotError
 from ._spec import Output, Plan, bytes_per_point, component_dim, component_labels
 
@@ -216,7 +216,13 @@ def run(
     to_zarr: Any,
     progress: Any,
 ) -> Any:
-    """Runs ``plan`` and returns its Dataset (see :mod:`poinsot.sweep`)."""
+    """Runs ``plan`` and returns its Dataset (see :mod:`poinsot.sweep`); an error naming a
+    dimension names the user's argument instead."""
+    with public_names(**plan.argument_names):
+        return _run(plan, client=client, chunks=chunks, to_zarr=to_zarr, progress=progress)
+
+
+def _run(plan: Plan, *, client: Any, chunks: Any, to_zarr: Any, progress: Any) -> Any:
     xr = require("xarray")
     names = [o.name for o in plan.outputs]
     model = plan.model
@@ -241,7 +247,7 @@ def run(
     if to_zarr is not None:
         path = _zarr_template(xr, plan, sizes, to_zarr)
     elif client is not None or not plan.lazy:
-        _core.check_memory(_longest(plan), float(plan.points), bytes_per_point(plan.outputs))
+        _core.sweep_check_memory(plan.core_columns()[0], bytes_per_point(plan.outputs))
 
     if plan.lazy and client is None and path is None:
         return _lazy(xr, plan, sizes, todo)
@@ -269,13 +275,6 @@ def run(
             raise RuntimeError(f"wrote {written} points of {plan.points}")
         return open_zarr(path)
     return dataset(xr, plan, _assemble(plan, sizes, results, names))
-
-
-def _longest(plan: Plan) -> str:
-    if not plan.dims:
-        return plan.columns[0].key.name if plan.columns else "sweep"
-    d = max(plan.dims, key=lambda d: d.size)
-    return "samples" if d.name == "sample" else d.members[0]
 
 
 def _on_cluster(

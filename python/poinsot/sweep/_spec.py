@@ -173,6 +173,19 @@ class Plan:
     outputs: list[Output]
 
     @property
+    def argument_names(self) -> dict[str, str]:
+        """The user's argument for each dimension not named after one (for errors that name a
+        dimension, such as the memory budget's): ``sample`` → ``samples``, ``omega0_index`` →
+        ``omega0``, a paired dimension → its first keyword."""
+        out = {}
+        for d in self.dims:
+            if d.name == SAMPLE:
+                out[d.name] = "samples"
+            elif d.name not in d.members:
+                out[d.name] = d.members[0]
+        return out
+
+    @property
     def shape(self) -> tuple[int, ...]:
         return tuple(d.size for d in self.dims)
 
