@@ -256,6 +256,12 @@ def test_chunked_lazy_and_zarr_paths_equal_the_one_call(tmp_path) -> None:
     assert z.theta.attrs["units"] == "rad"
     with pytest.raises(ps.PoinsotError, match="^to_zarr: .* exists already"):
         _top_sweep(to_zarr=tmp_path / "top.zarr")
+    # A sweep of a single point (no dimension) through every path.
+    one = dict(I1=1.0, I3=0.5, mgl=1.0, theta=0.3, psi_dot=5.0)
+    single = sweep.heavy_top(**one)
+    assert single.motion_class.dims == () and single.motion_class.item() == "cusps"
+    _assert_same(single, sweep.heavy_top(**one, chunks=1))
+    _assert_same(single, sweep.heavy_top(**one, to_zarr=tmp_path / "one.zarr").compute())
     # Plain xarray sees the categories as codes into their attribute.
     raw = xr.open_zarr(tmp_path / "top.zarr", consolidated=False)
     codes = raw.motion_class.values

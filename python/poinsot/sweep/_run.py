@@ -147,7 +147,8 @@ def block_to_zarr(
         if o.extra:
             region[o.extra] = slice(0, arr.shape[-1])
         data[o.name] = (vdims, arr)
-    xr.Dataset(data).to_zarr(path, region=region, mode="r+", consolidated=False)
+    # A sweep of one point (no dimension) writes its arrays whole.
+    xr.Dataset(data).to_zarr(path, region=region if dims else None, mode="r+", consolidated=False)
     return int(math.prod(n for _, n, _ in dims))
 
 
