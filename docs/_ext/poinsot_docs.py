@@ -32,7 +32,7 @@ NOTEBOOKS = ROOT / "notebooks"
 NOTEBOOK_COPIES = DOCS / "notebooks"
 
 # The public submodules documented beside the package's top-level names.
-SUBMODULES = ["poinsot.plots", "poinsot.special", "poinsot.derive"]
+SUBMODULES = ["poinsot.plots", "poinsot.special", "poinsot.derive", "poinsot.sweep"]
 
 
 def _copy_mathjax(app: Any, config: Any) -> None:

@@ -18,7 +18,9 @@ The public API (the README and the docs/ pages describe each part; ARCHITECTURE.
 * errors: :class:`PoinsotError` (a ``ValueError``) and its subclasses;
 * limits: :func:`memory_budget`, :func:`set_memory_budget` (the largest output of one call;
   every long run also takes ``max_steps`` and stops on Ctrl-C);
-* pictures: :mod:`poinsot.plots` (matplotlib, one module per topic).
+* pictures: :mod:`poinsot.plots` (matplotlib, one module per topic);
+* parameter studies: :mod:`poinsot.sweep` (a model over a grid of its keywords as an xarray
+  ``Dataset``, locally or on a Dask cluster; the ``[parallel]`` extra).
 
 SI units and radians everywhere; quaternions are scalar-first ``[w, x, y, z]``.
 """
@@ -59,8 +61,10 @@ __all__ = [
 ]
 
 from . import special as _special
+from . import sweep
 from ._guard import guard as _guard
 
 # No Rust panic reaches a user as PanicException: see _guard.py.
 _guard(globals(), __all__)
 _guard(vars(_special), _special.__all__)
+_guard(vars(sweep), sweep.__all__)

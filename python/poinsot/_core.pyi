@@ -556,3 +556,71 @@ def heavy_top_lagrangian(
 def heavy_top_constants_of_state(
     i1: float, i3: float, mgl: float, theta: float, theta_dot: float, phi_dot: float, psi_dot: float
 ) -> tuple[float, float, float]: ...
+
+# ---- sweeps (sweep.rs) ----
+# dims: [(name, length, offset)]; columns: [(keyword, C-contiguous float64 values, dim or None)];
+# results: flat arrays, one entry a point in row-major order; categories as uint8 codes into
+# sweep_categories(). python/poinsot/sweep/ prepares the grid and labels the results.
+SWEEP_HEAVY_TOP_KEYWORDS: list[str]
+SWEEP_FREE_BODY_KEYWORDS: list[str]
+SWEEP_SIMULATE_KEYWORDS: list[str]
+SWEEP_DROP_KEYWORDS: list[str]
+SWEEP_PROJECTILE_KEYWORDS: list[str]
+
+def sweep_categories() -> dict[str, list[str]]: ...
+def sweep_check_memory(dims: Sequence[tuple[str, int, int]], bytes_each: int) -> None: ...
+def sweep_heavy_top(
+    dims: Sequence[tuple[str, int, int]],
+    columns: Sequence[tuple[str, NDArray[np.float64], int | None]],
+    check_only: bool,
+    progress: Callable[[float], Any] | None = None,
+) -> dict[str, NDArray[Any]] | None: ...
+def sweep_free_body(
+    dims: Sequence[tuple[str, int, int]],
+    columns: Sequence[tuple[str, NDArray[np.float64], int | None]],
+    check_only: bool,
+    progress: Callable[[float], Any] | None = None,
+) -> dict[str, NDArray[Any]] | None: ...
+def sweep_simulate(
+    dims: Sequence[tuple[str, int, int]],
+    columns: Sequence[tuple[str, NDArray[np.float64], int | None]],
+    duration: float,
+    torque_kind: str,
+    torque_vector: NDArray[np.float64],
+    torque_scalar: float,
+    method: str,
+    dt: float | None,
+    max_steps: int,
+    check_only: bool,
+    progress: Callable[[float], Any] | None = None,
+) -> dict[str, NDArray[Any]] | None: ...
+def sweep_drop(
+    dims: Sequence[tuple[str, int, int]],
+    columns: Sequence[tuple[str, NDArray[np.float64], int | None]],
+    rotation_rate: float,
+    radius: float,
+    g: float,
+    gravity: str,
+    rotation: bool,
+    centrifugal: bool,
+    rtol: float,
+    atol: float,
+    max_steps: int,
+    check_only: bool,
+    progress: Callable[[float], Any] | None = None,
+) -> dict[str, NDArray[Any]] | None: ...
+def sweep_projectile(
+    dims: Sequence[tuple[str, int, int]],
+    columns: Sequence[tuple[str, NDArray[np.float64], int | None]],
+    rotation_rate: float,
+    radius: float,
+    g: float,
+    gravity: str,
+    rotation: bool,
+    centrifugal: bool,
+    rtol: float,
+    atol: float,
+    max_steps: int,
+    check_only: bool,
+    progress: Callable[[float], Any] | None = None,
+) -> dict[str, NDArray[Any]] | None: ...

@@ -16,7 +16,8 @@ use poinsot::limits::check_count;
 /// Bytes per sample of a trajectory in the local frame: t and the state (6).
 const SAMPLE_BYTES: usize = poinsot::frames::PARTICLE_BYTES_PER_SAMPLE;
 
-fn earth(rotation_rate: f64, radius: f64, g: f64) -> PyResult<Earth> {
+/// The core's Earth, checked (also for the sweeps).
+pub(crate) fn earth(rotation_rate: f64, radius: f64, g: f64) -> PyResult<Earth> {
     Earth::new(rotation_rate, radius, g).py()
 }
 
@@ -178,7 +179,8 @@ fn earth_deflection<'py>(
     Ok(PyArray1::from_vec(py, out))
 }
 
-fn model(
+/// The fall model of a drop or a projectile from the Python keywords (also for the sweeps).
+pub(crate) fn model(
     gravity_name: &str,
     rotation: bool,
     centrifugal: bool,

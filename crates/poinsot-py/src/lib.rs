@@ -16,6 +16,7 @@ mod heavy_top;
 mod inertia;
 mod rotation;
 mod special;
+mod sweep;
 
 use pyo3::prelude::*;
 
@@ -79,5 +80,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     analytic::register(m)?;
     dynamics::register(m)?;
     heavy_top::register(m)?;
+    sweep::register(m)?;
     Ok(())
 }

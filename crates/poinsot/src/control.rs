@@ -195,6 +195,19 @@ impl Cancel {
     }
 }
 
+/// Marks a parallel computation done and wakes the thread waiting for it, when dropped (at the
+/// end of the work, or while a panic unwinds it).
+#[cfg(not(target_arch = "wasm32"))]
+struct Done<'a>(&'a AtomicBool, std::thread::Thread);
+
+#[cfg(not(target_arch = "wasm32"))]
+impl Drop for Done<'_> {
+    fn drop(&mut self) {
+        self.0.store(true, Ordering::Release);
+        self.1.unpark();
+    }
+}
+
 /// Runs `work` (which may fan out with rayon; it should call [`Cancel::check`] and
 /// [`Cancel::advance`] regularly) so that this thread's monitor keeps being polled: on a helper
 /// thread while this one polls every [`POLL_PERIOD_MS`], when a monitor watches this thread;
@@ -206,16 +219,20 @@ pub fn parallel<R: Send>(
     let cancel = Arc::new(Cancel::new(total));
     #[cfg(not(target_arch = "wasm32"))]
     if is_watched() {
+        // Set (and the caller woken) when the work ends, also by a panic: waiting for
+        // `is_finished` instead left the caller parked for another poll period whenever the
+        // thread had not quite exited when it woke (5–10 ms lost by a short call).
+        let done = AtomicBool::new(false);
         return std::thread::scope(|scope| {
             let caller = std::thread::current();
             let shared = &cancel;
+            let done_ref = &done;
             let worker = scope.spawn(move || {
-                let result = work(shared);
-                caller.unpark();
-                result
+                let _done = Done(done_ref, caller);
+                work(shared)
             });
             let mut stopped: Option<Error> = None;
-            while !worker.is_finished() {
+            while !done.load(Ordering::Acquire) {
                 std::thread::park_timeout(std::time::Duration::from_millis(POLL_PERIOD_MS));
                 if stopped.is_none() {
                     PROGRESS.with(|p| p.set(cancel.progress()));

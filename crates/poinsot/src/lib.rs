@@ -18,6 +18,7 @@
 //! | [`control`] | stopping long computations (Ctrl-C) and reporting their progress | — |
 //! | [`limits`] | the memory budget and step limits checked before work starts | — |
 //! | [`special`] | Jacobi elliptic functions sn, cn, dn, am (parameter m = k²) and elliptic integrals F, E, K, Π | — |
+//! | [`sweep`] | parameter studies: a model at every point of a grid of its keywords, validated first, in parallel | — |
 //!
 //! Conventions (the crate's README lists them; `CONVENTIONS.md` in the project's repository pins
 //! each by a test): SI units, radians, right-handed frames, active rotations (`v_space =
@@ -59,6 +60,7 @@ pub mod integrate;
 pub mod limits;
 pub mod rotation;
 pub mod special;
+pub mod sweep;
 
 pub use error::{Error, ErrorKind, Result};
 

@@ -167,6 +167,43 @@ impl Earth {
         )
     }
 
+    /// Checks the arguments of [`Earth::drop`] before any work: `height` (finite, > 0) and
+    /// `latitude` (in [−π/2, π/2]); the error names the argument.
+    pub fn check_drop(height: f64, latitude: f64) -> Result<()> {
+        check_positive("height", height)?;
+        check_latitude(latitude)
+    }
+
+    /// Checks the arguments of [`Earth::projectile`] before any work: `speed` (finite, > 0),
+    /// `elevation` (in [−π/2, π/2], > 0 from the ground), `azimuth` (finite), `height` (finite,
+    /// ≥ 0) and `latitude` (in [−π/2, π/2]); the error names the argument.
+    pub fn check_projectile(
+        speed: f64,
+        elevation: f64,
+        azimuth: f64,
+        latitude: f64,
+        height: f64,
+    ) -> Result<()> {
+        check_positive("speed", speed)?;
+        check_finite("elevation", &[elevation])?;
+        check_finite("azimuth", &[azimuth])?;
+        check_non_negative("height", height)?;
+        check_latitude(latitude)?;
+        if elevation.abs() > std::f64::consts::FRAC_PI_2 {
+            return Err(Error::invalid(
+                "elevation",
+                format!("must be in [-pi/2, pi/2] rad, got {elevation}"),
+            ));
+        }
+        if height == 0.0 && elevation <= 0.0 {
+            return Err(Error::invalid(
+                "elevation",
+                format!("must be > 0 for a launch from the ground, got {elevation}"),
+            ));
+        }
+        Ok(())
+    }
+
     /// A body dropped from rest at `height` (m, > 0) above the ground at `latitude` (rad),
     /// integrated exactly (to the model's tolerance) in the rotating frame until it lands.
     ///
@@ -174,8 +211,7 @@ impl Earth {
     /// ([`Earth::eastward_deflection`]); at second order it is also displaced towards the
     /// equator ([`Earth::southward_deflection`] for uniform gravity).
     pub fn drop(&self, height: f64, latitude: f64, model: &FallModel) -> Result<Fall> {
-        check_positive("height", height)?;
-        check_latitude(latitude)?;
+        Self::check_drop(height, latitude)?;
         let t0 = self.fall_time(height)?;
         let sol = self.fly(
             latitude,
@@ -212,23 +248,7 @@ impl Earth {
         height: f64,
         model: &FallModel,
     ) -> Result<Flight> {
-        check_positive("speed", speed)?;
-        check_finite("elevation", &[elevation])?;
-        check_finite("azimuth", &[azimuth])?;
-        check_non_negative("height", height)?;
-        check_latitude(latitude)?;
-        if elevation.abs() > std::f64::consts::FRAC_PI_2 {
-            return Err(Error::invalid(
-                "elevation",
-                format!("must be in [-pi/2, pi/2] rad, got {elevation}"),
-            ));
-        }
-        if height == 0.0 && elevation <= 0.0 {
-            return Err(Error::invalid(
-                "elevation",
-                format!("must be > 0 for a launch from the ground, got {elevation}"),
-            ));
-        }
+        Self::check_projectile(speed, elevation, azimuth, latitude, height)?;
         let (sa, ca) = azimuth.sin_cos();
         let (se, ce) = elevation.sin_cos();
         let v0 = speed * Vec3::new(ce * sa, ce * ca, se);

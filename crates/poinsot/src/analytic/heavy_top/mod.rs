@@ -39,10 +39,12 @@ pub use state::{
 };
 pub use steady::{min_spin, sleeping_threshold, steady_precession, SteadyPrecession};
 use validate::{
-    check_constants, check_representable, check_spin, check_state, finite_at_t, finite_at_theta,
-    largest_rate, resolve_pole_passage,
+    check_constants, check_representable, finite_at_t, finite_at_theta, largest_rate,
+    resolve_pole_passage,
 };
 pub use validate::{check_theta, check_top};
+// Also for the sweeps (`crate::sweep`): they check every point's start before any work.
+pub(crate) use validate::{check_spin, check_state};
 
 /// The shape of the path of the symmetry axis on the unit sphere (Goldstein §5.7, Fig. 5.9).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

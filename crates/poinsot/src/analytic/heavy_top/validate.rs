@@ -40,7 +40,7 @@ pub fn check_theta(argument: &str, theta: f64) -> Result<()> {
 /// `phi_dot`, `theta_dot`, `psi_dot` (finite). For a `start` (the initial state of
 /// [`super::HeavyTop::new`]) also θ not in (0, [`MIN_POLE_DISTANCE`]) and the angles `phi`,
 /// `psi` (finite). Errors name the argument; the first failing check in that order.
-pub(super) fn check_state(
+pub(crate) fn check_state(
     i1: f64,
     i3: f64,
     mgl: f64,
@@ -72,7 +72,7 @@ pub(super) fn check_state(
 
 /// Checks the arguments of [`super::HeavyTop::with_spin`] that it does not pass on unchanged:
 /// `theta` (as [`check_theta`]), `phi_dot` and `omega3` (finite).
-pub(super) fn check_spin(theta: f64, phi_dot: f64, omega3: f64) -> Result<()> {
+pub(crate) fn check_spin(theta: f64, phi_dot: f64, omega3: f64) -> Result<()> {
     check_theta("theta", theta)?;
     check_finite("phi_dot", &[phi_dot])?;
     check_finite("omega3", &[omega3])?;
