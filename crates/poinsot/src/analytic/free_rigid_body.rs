@@ -186,8 +186,17 @@ pub fn check_moments(moments: &[f64; 3]) -> Result<()> {
             ),
         ));
     }
+    // Sorted ascending (three positive finite values: a comparison network).
     let mut m = *moments;
-    m.sort_by(f64::total_cmp);
+    if m[0] > m[1] {
+        m.swap(0, 1);
+    }
+    if m[1] > m[2] {
+        m.swap(1, 2);
+    }
+    if m[0] > m[1] {
+        m.swap(0, 1);
+    }
     let e = exponent(m[2]);
     let u = m.map(|v| ldexp(v, -e));
     let excess = u[2] - (u[0] + u[1]);
