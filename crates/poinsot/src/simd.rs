@@ -204,6 +204,41 @@ impl<S: Simd> F64s<S> {
         (self + MAGIC) - MAGIC
     }
 
+    /// `self · b + c` with one rounding (a fused multiply-add, as `f64::mul_add`): for the
+    /// kernels that mirror scalar code which fuses. Never used to speed up a plain `a * b + c`,
+    /// whose two roundings the lanes keep.
+    #[inline(always)]
+    pub(crate) fn mul_add(self, b: Self, c: Self) -> Self {
+        let s = self.s;
+        F64s {
+            s,
+            v: each!(|k| s.mul_add_f64s(self.v[k], b.v[k], c.v[k])),
+        }
+    }
+
+    /// Every lane rounded to the nearest integer, ties away from zero (as `f64::round`), for
+    /// |x| < 2⁵¹.
+    #[inline(always)]
+    pub(crate) fn round_away(self) -> Self {
+        let even = self.round_small();
+        let tie = (self - even).abs().eq(self.splat_like(0.5));
+        let half = F64s::select(
+            self.lt(self.splat_like(0.0)),
+            self.splat_like(-0.5),
+            self.splat_like(0.5),
+        );
+        F64s::select(tie, self + half, even)
+    }
+
+    /// The lanes holding an odd integer (for integer-valued lanes below 2⁵¹: as
+    /// `x.rem_euclid(2.0) == 1.0`).
+    #[inline(always)]
+    pub(crate) fn is_odd(self) -> Mask<S> {
+        let half = (self * 0.5).round_small();
+        let floor = F64s::select(self.lt(half * 2.0), half - 1.0, half);
+        (self - floor * 2.0).eq(self.splat_like(1.0))
+    }
+
     /// Lane by lane: `a` where `mask`, else `b`.
     #[inline(always)]
     pub(crate) fn select(mask: Mask<S>, a: Self, b: Self) -> Self {
@@ -260,6 +295,16 @@ impl<S: Simd> F64s<S> {
 }
 
 impl<S: Simd> Mask<S> {
+    /// Lane-wise and.
+    #[inline(always)]
+    pub(crate) fn and(self, other: Self) -> Self {
+        let s = self.s;
+        Mask {
+            s,
+            v: each!(|k| s.and_m64s(self.v[k], other.v[k])),
+        }
+    }
+
     /// Lane-wise or.
     #[inline(always)]
     pub(crate) fn or(self, other: Self) -> Self {
@@ -477,6 +522,15 @@ mod tests {
             assert_eq!(a.min_lane(), 1.0);
             assert_eq!(a.max_lane(), F64s::<S>::LANES as f64);
             assert_eq!(F64s::splat(s, 2.5).round_small().lanes()[0], 2.0);
+            for x in [2.5, -2.5, 3.5, 0.49999999999999994, -7.0, 1e15 + 0.5] {
+                assert_eq!(F64s::splat(s, x).round_away().lanes()[0], x.round(), "{x}");
+            }
+            for j in [-3.0, -2.0, -1.0, 0.0, 1.0, 4.0, 7.0, 1e12 + 1.0] {
+                let odd = F64s::splat(s, j).is_odd().get(0);
+                assert_eq!(odd, f64::rem_euclid(j, 2.0) == 1.0, "{j}");
+            }
+            let fused = F64s::splat(s, 0.1).mul_add(F64s::splat(s, 10.0), F64s::splat(s, -1.0));
+            assert_eq!(fused.lanes()[0], 0.1f64.mul_add(10.0, -1.0));
             assert!(F64s::<S>::LANES >= WIDTH);
         }
     }

@@ -40,7 +40,10 @@ pub use euler_kinematics::{
     angular_velocity, angular_velocity_matrix, body_angular_velocity, euler_rates,
     space_angular_velocity, Frame, RATES_LOCK_TOL,
 };
-pub(crate) use lanes::{normalized_lanes, quaternion_to_matrix_lanes, QuatLanes};
+pub(crate) use lanes::{
+    hamilton_lanes, matrix_to_quaternion_lanes, normalized_lanes, quaternion_to_matrix_lanes,
+    QuatLanes,
+};
 pub use matrix::{
     check_rotation_matrix, check_rotation_matrix_named, compose, elementary_rotation, rot_x, rot_y,
     rot_z, rotate_vectors, ROTATION_MATRIX_TOL,

@@ -27,7 +27,7 @@ use std::f64::consts::PI;
 /// The most Fourier terms the fast path uses; beyond, the incomplete integrals are evaluated.
 pub(crate) const MAX_TERMS: usize = 64;
 /// Terms below this fraction of the series' scale are dropped (below half an ulp).
-const TRUNCATION: f64 = 1e-17;
+pub(crate) const TRUNCATION: f64 = 1e-17;
 
 /// One third-kind integral's Fourier data: `c`, the sign pattern, ρ (see the module docs).
 #[derive(Debug, Clone, Copy)]
@@ -82,7 +82,7 @@ impl ThirdSeries {
     }
 
     /// The coefficient of sin kx (k ≥ 1) given q.
-    fn coefficient(&self, kk: usize, q: f64) -> f64 {
+    pub(crate) fn coefficient(&self, kk: usize, q: f64) -> f64 {
         let kf = kk as f64;
         let q2k = q.powi(2 * kk as i32);
         let r = self.rho.powi(kk as i32) - (q * q / self.rho).powi(kk as i32);
@@ -138,7 +138,7 @@ pub(crate) struct Fourier {
 }
 
 /// The nome q = exp(−πK'/K) and q/m (finite as m → 0, where q ≈ m/16).
-fn nome(m: f64, k: f64, k_prime: f64) -> (f64, f64) {
+pub(crate) fn nome(m: f64, k: f64, k_prime: f64) -> (f64, f64) {
     if m < 1e-4 {
         // q = m/16 + 8(m/16)² + 84(m/16)³ + 992(m/16)⁴ + … (DLMF 19.5.5); the next term is < 1e-23.
         let e = m / 16.0;

@@ -21,7 +21,7 @@
 //! [`HeavyTop`].
 
 mod cubic;
-mod fourier;
+pub(super) mod fourier;
 mod motion;
 mod state;
 mod steady;
