@@ -6,7 +6,7 @@ use super::free_rigid_body::{check_moments, FreeRigidBody, PiSeries};
 use crate::control::{self, Cancel};
 use crate::error::{Error, ErrorKind, Result};
 use crate::limits::check_memory;
-use crate::rotation::{check_quaternion, Quaternion};
+use crate::rotation::{check_quaternion, same_hemisphere, Quaternion};
 use crate::Vec3;
 
 /// The times of [`free_body_states`].
@@ -24,8 +24,8 @@ pub enum StateTimes<'a> {
 pub struct FreeBodyStates {
     /// ω in body components (rad/s).
     pub omega: Vec<[f64; 3]>,
-    /// The attitudes `[w, x, y, z]` (body → space), with the sign [`FreeRigidBody::state`]
-    /// gives them.
+    /// The attitudes `[w, x, y, z]` (body → space), their signs made continuous along each
+    /// body's times (q and −q are the same attitude), as [`FreeRigidBody::sample`] gives them.
     pub attitude: Vec<Quaternion>,
     /// N, the number of bodies.
     pub bodies: usize,
@@ -47,11 +47,12 @@ const SERIES_FROM: usize = 8;
 /// The exact states of N torque-free bodies — principal moments `moments` (kg·m², any order),
 /// body angular velocities `omega0` (rad/s) and attitudes `attitude0` (`[w, x, y, z]` unit
 /// quaternions, body → space; the identity if `None`) at t = 0 — at the times `times`: the
-/// values of [`FreeRigidBody::state`] for each body and time, in parallel over bodies and
-/// times, the elliptic motions (ω circling an extreme axis) on SIMD lanes, a group of times
-/// per vector instruction: ω bit for bit as `state`, the attitude within a few ulp of it
-/// (its integral of the third kind summed as a Fourier series, the lanes' sines and
-/// cosines). A body at rest (ω₀ = 0) keeps its attitude.
+/// values of [`FreeRigidBody::sample`] for each body at its times, in parallel over bodies
+/// and times, the elliptic motions (ω circling an extreme axis) on SIMD lanes, a group of
+/// times per vector instruction: ω bit for bit as [`FreeRigidBody::state`], the attitude
+/// within a few ulp of it (its integral of the third kind summed as a Fourier series, the
+/// lanes' sines and cosines), its sign made continuous from one time to the next. A body at
+/// rest (ω₀ = 0) keeps its attitude.
 ///
 /// Before any state is computed: the rows (each named with its index), the times (finite)
 /// and the output's size against the memory budget ([`crate::limits`]). A body's own limits
@@ -70,7 +71,7 @@ const SERIES_FROM: usize = 8;
 /// let times = [0.0, 0.5, 10.0];
 /// let s = free_body_states(&moments, &omega0, None, StateTimes::Shared(&times))?;
 /// assert_eq!((s.bodies, s.times, s.omega.len()), (2, 3, 6));
-/// // Body 1 at its time 2 is the single body's state at t = 10 s.
+/// // Body 1 at its time 2: the single body's ω at t = 10 s.
 /// let one = FreeRigidBody::new(moments[1], Vec3::from(omega0[1]), None)?;
 /// let (w, _) = one.state(10.0)?;
 /// assert_eq!(s.omega[3 + 2], [w.x, w.y, w.z]);
@@ -209,16 +210,21 @@ pub fn free_body_states(
                 };
                 let ts = times_of(i);
                 if m <= TIMES_PER_TASK {
-                    return states(i, &body, series.as_ref(), ts, w, q, cancel).map_err(|e| (i, e));
+                    states(i, &body, series.as_ref(), ts, w, q, cancel).map_err(|e| (i, e))?;
+                } else {
+                    // Many times: the body's times in parallel too.
+                    w.par_chunks_mut(TIMES_PER_TASK)
+                        .zip(q.par_chunks_mut(TIMES_PER_TASK))
+                        .zip(ts.par_chunks(TIMES_PER_TASK))
+                        .try_for_each(|((w, q), ts)| {
+                            states(i, &body, series.as_ref(), ts, w, q, cancel)
+                        })
+                        .map_err(|e| (i, e))?;
                 }
-                // Many times: the body's times in parallel too.
-                w.par_chunks_mut(TIMES_PER_TASK)
-                    .zip(q.par_chunks_mut(TIMES_PER_TASK))
-                    .zip(ts.par_chunks(TIMES_PER_TASK))
-                    .try_for_each(|((w, q), ts)| {
-                        states(i, &body, series.as_ref(), ts, w, q, cancel)
-                    })
-                    .map_err(|e| (i, e))
+                for k in 1..m {
+                    q[k] = same_hemisphere(q[k], &q[k - 1]);
+                }
+                Ok(())
             })
             .reduce(|| Ok(()), first_error)
             .map_err(|(_, e)| e)
