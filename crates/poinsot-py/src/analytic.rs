@@ -7,7 +7,7 @@ use poinsot::analytic::{
 use pyo3::prelude::*;
 
 use crate::control::run;
-use crate::convert::{opt_quat, rows_in, slice, times, vec3, vector, Rows, Vector};
+use crate::convert::{opt_quat, rows_view, slice, times, vec3, vector, Rows, Vector};
 use crate::errors::IntoPy;
 
 /// `f` at each of the times `t` (N,), each finite → (N, K) rows.
@@ -261,10 +261,10 @@ fn free_body_states<'py>(
     per_body: bool,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<(Bound<'py, PyArray3<f64>>, Bound<'py, PyArray3<f64>>)> {
-    let m = rows_in::<3>("moments", &moments)?;
-    let w = rows_in::<3>("omega0", &omega0)?;
+    let m = rows_view::<3>("moments", &moments)?;
+    let w = rows_view::<3>("omega0", &omega0)?;
     let q = match &attitude0 {
-        Some(a) => Some(rows_in::<4>("attitude0", a)?),
+        Some(a) => Some(rows_view::<4>("attitude0", a)?),
         None => None,
     };
     let ts = slice("t", &t, "must be a C-contiguous float64 array")?;

@@ -380,7 +380,7 @@ fn theta_from_wv_lanes<S: Simd>(w: F64s<S>, v: F64s<S>) -> F64s<S> {
     use std::f64::consts::{FRAC_PI_4, FRAC_PI_8, PI};
     let (a, b) = (w.sqrt(), v.sqrt());
     let swap = b.lt(a);
-    let t = F64s::select(swap, b / a, a / b);
+    let t = F64s::select(swap, b, a) / F64s::select(swap, a, b);
     const T1: f64 = std::f64::consts::SQRT_2 - 1.0;
     let first = t.le(t.splat_like(THETA_FIRST));
     let second = t.le(t.splat_like(THETA_SECOND));
