@@ -536,9 +536,10 @@ def free_body_states(
     cores), the elliptic motions on SIMD lanes.
 
     Body i is ``FreeRigidBody(moments[i], omega0[i], attitude0[i])``; its state at each time is
-    what :meth:`FreeRigidBody.state` returns: ω bit for bit, the attitude within 1e-13 (its
-    elliptic integral of the third kind summed as a Fourier series), the quaternions' signs
-    continuous along each body's times. A body at rest (ω₀ = 0) keeps its attitude.
+    what :meth:`FreeRigidBody.state` returns: ω bit for bit, the attitude within 1e-13 plus
+    8·2⁻⁵² per radian the body has turned (the state's own error model; its elliptic integral
+    of the third kind is summed as a Fourier series), the quaternions' signs continuous along
+    each body's times. A body at rest (ω₀ = 0) keeps its attitude.
 
     Parameters
     ----------
@@ -566,8 +567,8 @@ def free_body_states(
     ------
     PoinsotError
         Naming ``moments``, ``omega0``, ``attitude0`` (wrong shape; a row at fault, "row i:
-        ..."), or ``t`` (not finite, the wrong shape, beyond a body's time limit
-        :attr:`FreeRigidBody.max_time`: "body i: ...", or an output beyond the memory budget).
+        ..."), or ``t`` (not finite, the wrong shape, beyond a body's time limit — 2⁴² rad of
+        turning at its fastest rate: "body i: ..." —, or an output beyond the memory budget).
     """
     m = _rows(moments, "moments", 3)
     w = _rows(omega0, "omega0", 3)

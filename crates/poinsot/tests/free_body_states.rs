@@ -10,15 +10,31 @@ use proptest::prelude::*;
 /// Moments, ω₀ and attitudes of a batch.
 type Bodies = (Vec<[f64; 3]>, Vec<[f64; 3]>, Vec<[f64; 4]>);
 
-/// The largest differences of ω (relative to |ω₀|) and of q (absolute) between the batch and
-/// `FreeRigidBody::sample` (the state at each time, the quaternions' signs continuous) for
-/// every body at its times.
+/// The attitude's tolerance against `FreeRigidBody::state` at time t for a body turning at
+/// most at `rate` (rad/s): 1e-13, plus 8 ε per radian turned — the state's own error model
+/// (its phase is known to a few ε times the angle turned; the batch sums Π by another formula
+/// and takes its sines from the lanes, so the two roundings differ within it).
+fn q_tol(rate: f64, t: f64) -> f64 {
+    1e-13 + 8.0 * f64::EPSILON * rate * t.abs()
+}
+
+/// An upper bound of the rates of a free body's motion (λ and the precession rate):
+/// |ω₀| I_max / I_min.
+fn rate_bound(m: &[f64; 3], w: &[f64; 3]) -> f64 {
+    let norm = w.iter().map(|x| x * x).sum::<f64>().sqrt();
+    norm * m.iter().fold(0.0f64, |a, &b| a.max(b)) / m.iter().fold(f64::INFINITY, |a, &b| a.min(b))
+}
+
+/// The largest difference of ω (relative to |ω₀|), and of q (absolute) in units of
+/// [`q_tol`], between the batch and `FreeRigidBody::sample` (the state at each time, the
+/// quaternions' signs continuous) for every body at its times.
 fn against_state((m, w, q): &Bodies, times: StateTimes<'_>, states: &FreeBodyStates) -> (f64, f64) {
     let (mut dw, mut dq): (f64, f64) = (0.0, 0.0);
     let mm = states.times;
     for i in 0..m.len() {
         let body = FreeRigidBody::new(m[i], Vec3::from(w[i]), Some(q[i])).unwrap();
         let scale = w[i].iter().fold(0.0f64, |a, b| a.max(b.abs()));
+        let rate = rate_bound(&m[i], &w[i]);
         let ts = match times {
             StateTimes::Shared(ts) => ts,
             StateTimes::PerBody(ts) => &ts[i * mm..(i + 1) * mm],
@@ -30,7 +46,7 @@ fn against_state((m, w, q): &Bodies, times: StateTimes<'_>, states: &FreeBodySta
                 dw = dw.max((wo[c] - we[k][c]).abs() / scale);
             }
             for c in 0..4 {
-                dq = dq.max((qo[c] - qe[k][c]).abs());
+                dq = dq.max((qo[c] - qe[k][c]).abs() / q_tol(rate, ts[k]));
             }
         }
     }
@@ -67,8 +83,8 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
     /// Random bodies at shared times: ω bit for bit as `FreeRigidBody::state` (the same
-    /// reduction and duplication on every lane), the attitude within 1e-13 of `sample`'s (its Π
-    /// by the Fourier series, its sines by the lanes'; the signs continuous).
+    /// reduction and duplication on every lane), the attitude within `q_tol` of `sample`'s (its
+    /// Π by the Fourier series, its sines by the lanes'; the signs continuous).
     #[test]
     fn shared_times_equal_the_single_body_states(
         b in bodies(12),
@@ -77,7 +93,7 @@ proptest! {
         let s = free_body_states(&b.0, &b.1, Some(&b.2), StateTimes::Shared(&times)).unwrap();
         let (dw, dq) = against_state(&b, StateTimes::Shared(&times), &s);
         prop_assert_eq!(dw, 0.0);
-        prop_assert!(dq <= 1e-13, "{:e}", dq);
+        prop_assert!(dq <= 1.0, "{:e} of the tolerance", dq);
     }
 
     /// Each body at its own times: the same.
@@ -95,7 +111,7 @@ proptest! {
         prop_assert_eq!((s.bodies, s.times), (n, per));
         let (dw, dq) = against_state(&b, StateTimes::PerBody(&times), &s);
         prop_assert_eq!(dw, 0.0);
-        prop_assert!(dq <= 1e-13, "{:e}", dq);
+        prop_assert!(dq <= 1.0, "{:e} of the tolerance", dq);
     }
 }
 
@@ -158,7 +174,7 @@ fn every_kind_of_motion_and_many_times_per_body() {
     .unwrap();
     let (dw, dq) = against_state(&moving, StateTimes::Shared(&times), &five);
     assert_eq!(dw, 0.0);
-    assert!(dq <= 1e-13, "{dq:e}");
+    assert!(dq <= 1.0, "{dq:e} of the tolerance");
     assert_eq!(&s.omega[..5 * 10_000], &five.omega[..]);
     // At rest: ω = 0 and the attitude kept.
     assert!(s.omega[5 * 10_000..6 * 10_000]
@@ -172,7 +188,7 @@ fn every_kind_of_motion_and_many_times_per_body() {
         free_body_states(&last.0, &last.1, Some(&last.2), StateTimes::Shared(&times)).unwrap();
     let (dw, dq) = against_state(&last, StateTimes::Shared(&times), &one);
     assert_eq!(dw, 0.0);
-    assert!(dq <= 1e-13, "{dq:e}");
+    assert!(dq <= 1.0, "{dq:e} of the tolerance");
 }
 
 #[test]
@@ -220,7 +236,7 @@ fn a_wrong_time_or_body_is_seen_negative_control() {
     let late: Vec<f64> = times.iter().map(|t| t + 1e-9).collect();
     let s = free_body_states(&b.0, &b.1, Some(&b.2), StateTimes::Shared(&late)).unwrap();
     let (dw, dq) = against_state(&b, StateTimes::Shared(&times), &s);
-    assert!(dw > 1e-12 && dq > 1e-12, "{dw:e} {dq:e}");
+    assert!(dw > 1e-12 && dq > 10.0, "{dw:e} {dq:e}");
     let mut other = b.clone();
     other.1[3][1] += 1e-9;
     let s = free_body_states(

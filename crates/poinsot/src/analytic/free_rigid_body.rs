@@ -540,7 +540,8 @@ impl FreeRigidBody {
     /// ω (body, rad/s) and the attitude at each of `times` into `omega` and `attitude` (of the
     /// same length): [`FreeRigidBody::state`] at every time. With `series` (from
     /// [`FreeRigidBody::pi_series`]) the elliptic motion runs on SIMD lanes: ω bit for bit as
-    /// `state`, the attitude to a few ulp (its Π summed as a Fourier series). Errors name `t`
+    /// `state`, the attitude to round-off of the phase (its Π summed as a Fourier series).
+    /// Errors name `t`
     /// (the first time not finite or beyond [`FreeRigidBody::max_time`]), before any state.
     pub(crate) fn states_into(
         &self,

@@ -38,11 +38,11 @@ pub struct BatchResult {
 /// Integrates `moments.len()` bodies (principal moments, body axes principal) from `omega0`
 /// and `attitude0` (identity if `None`) over `duration` under the same `torque` (evaluated with
 /// each body's own inertia), with `opts.method`, the fixed step `opts.dt` (`None`: each body's
-/// [`default_step`]) and DOP853's `opts.rtol`/`opts.atol` (`opts.samples` is not used: only
+/// [`super::default_step`]) and DOP853's `opts.rtol`/`opts.atol` (`opts.samples` is not used: only
 /// the final states are returned), in parallel.
 ///
 /// RK4 and the splittings run on SIMD lanes, a group of bodies per vector instruction (8
-/// with AVX2), the groups in parallel (see [`super::lanes`]): RK4 gives the numbers of
+/// with AVX2), the groups in parallel (`dynamics/lanes.rs`): RK4 gives the numbers of
 /// [`super::simulate()`] for each body bit for bit, the splittings the same to a relative 1e-16
 /// per step (their rotations' sines and cosines are vectorized). The exact flow and DOP853 run
 /// body by body. Every built-in [`Torque`] runs on the lanes; a torque given as a function (a

@@ -11,7 +11,7 @@
 
 use std::f64::consts::PI;
 
-use super::{Elliptic, FreeRigidBody};
+use super::{Elliptic, FreeRigidBody, CANCELLATION};
 use crate::analytic::heavy_top::fourier::{nome, ThirdSeries, MAX_TERMS, TRUNCATION};
 use crate::rotation::{
     hamilton_lanes, matrix_to_quaternion_lanes, normalized_lanes, QuatLanes, Quaternion,
@@ -34,10 +34,12 @@ pub(crate) struct PiSeries {
 
 impl PiSeries {
     /// The series of an elliptic motion, or `None` where it would need more than
-    /// [`MAX_TERMS`] terms (m or |n| near the limits where its ratios approach 1: next to the
-    /// separatrix, or a body nearly symmetric about its pole) or the lanes do not apply.
+    /// [`MAX_TERMS`] terms (m near 1: next to the separatrix), where n < −[`CANCELLATION`] (a
+    /// body nearly symmetric about its pole, for which the scalar path sums Π in a form with
+    /// positive terms only: the series, whose ratio ρ then nears 1, would lose the digits that
+    /// form keeps), or where the lanes do not apply.
     pub(super) fn new(e: &Elliptic) -> Option<Self> {
-        if e.separatrix || !e.jacobi.has_lanes() {
+        if e.separatrix || !e.jacobi.has_lanes() || e.n < -CANCELLATION {
             return None;
         }
         let (m, mc, k) = (
