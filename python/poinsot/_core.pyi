@@ -439,6 +439,17 @@ class FreeBodySolution:
 
 def axis_stability(moments: NDArray[np.float64], spin: float) -> list[tuple[str, float]]: ...
 
+# The states of N free bodies at M times (flat t: M shared values, or N·M with per_body)
+# -> (omega (N, M, 3), attitude (N, M, 4)).
+def free_body_states(
+    moments: NDArray[np.float64],
+    omega0: NDArray[np.float64],
+    attitude0: NDArray[np.float64] | None,
+    t: NDArray[np.float64],
+    per_body: bool,
+    progress: Callable[[float], Any] | None,
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]: ...
+
 # ---- dynamics (dynamics.rs) ----
 # torque_kind: "none", "body", "space", "gravity", "gravity_gradient" or "callback"
 # (torque_fn(t, omega (3,), attitude (4,)) -> 3 floats, body components).

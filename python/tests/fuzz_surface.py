@@ -228,6 +228,11 @@ VALID_FOR: dict[str, dict[str, Any]] = {
         "duration": 1.0,
         "dt": 1e-3,
     },
+    "free_body_states": {
+        "moments": [[1.0, 2.0, 3.0], [2.0, 2.0, 3.0]],
+        "omega0": [[1.0, 0.1, 1.0], [0.0, 0.5, 1.0]],
+        "t": [0.0, 1.0],
+    },
     "FreeSymmetricTop.__init__": {"I1": 1.0, "I3": 2.0, "omega0": [0.3, 0.0, 1.0]},
     "FreeSymmetricTop.omega3_squared_from": {
         "I1": 1.0,

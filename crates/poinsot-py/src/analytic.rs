@@ -1,9 +1,15 @@
 //! Bindings of `poinsot::analytic` (the torque-free solutions; conversion only).
-use numpy::PyReadonlyArray1;
-use poinsot::analytic::{axis_stability as core_axis_stability, FreeRigidBody, FreeSymmetricTop};
+use numpy::{PyArray1, PyArray3, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2};
+use poinsot::analytic::{
+    axis_stability as core_axis_stability, free_body_states as core_free_body_states,
+    FreeRigidBody, FreeSymmetricTop, StateTimes,
+};
 use pyo3::prelude::*;
 
-use crate::convert::{opt_quat, plain_triple, times, triple, vec3, Numbers, Rows, Vector};
+use crate::control::run;
+use crate::convert::{
+    opt_quat, plain_triple, rows_view, slice, times, triple, vec3, Numbers, Rows, Vector,
+};
 use crate::errors::IntoPy;
 
 /// `f` at each of the times `t` (N,), each finite → (N, K) rows.
@@ -281,9 +287,47 @@ fn axis_stability(
 }
 
 /// Registers this file's classes and functions on the module.
+/// The exact states of N free bodies at M times each (see `poinsot.free_body_states`):
+/// principal moments (N, 3), ω₀ (N, 3), attitudes (N, 4) or None, and the times `t` flat: M
+/// values for every body, or (`per_body`) N·M values row-major → (ω (N, M, 3), attitude
+/// (N, M, 4)).
+#[pyfunction]
+#[pyo3(signature = (moments, omega0, attitude0, t, per_body, progress))]
+#[allow(clippy::type_complexity)]
+fn free_body_states<'py>(
+    py: Python<'py>,
+    moments: PyReadonlyArray2<'py, f64>,
+    omega0: PyReadonlyArray2<'py, f64>,
+    attitude0: Option<PyReadonlyArray2<'py, f64>>,
+    t: PyReadonlyArray1<'py, f64>,
+    per_body: bool,
+    progress: Option<Bound<'py, PyAny>>,
+) -> PyResult<(Bound<'py, PyArray3<f64>>, Bound<'py, PyArray3<f64>>)> {
+    let m = rows_view::<3>("moments", &moments)?;
+    let w = rows_view::<3>("omega0", &omega0)?;
+    let q = match &attitude0 {
+        Some(a) => Some(rows_view::<4>("attitude0", a)?),
+        None => None,
+    };
+    let ts = slice("t", &t, "must be a C-contiguous float64 array")?;
+    let times = if per_body {
+        StateTimes::PerBody(ts)
+    } else {
+        StateTimes::Shared(ts)
+    };
+    let out = run(py, progress.as_ref(), || {
+        core_free_body_states(&m, &w, q.as_deref(), times)
+    })?;
+    let (n, k) = (out.bodies, out.times);
+    let omega = PyArray1::from_vec(py, out.omega.into_flattened()).reshape([n, k, 3])?;
+    let attitude = PyArray1::from_vec(py, out.attitude.into_flattened()).reshape([n, k, 4])?;
+    Ok((omega, attitude))
+}
+
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PySymmetricTop>()?;
     m.add_class::<PyFreeBody>()?;
     m.add_function(wrap_pyfunction!(axis_stability, m)?)?;
+    m.add_function(wrap_pyfunction!(free_body_states, m)?)?;
     Ok(())
 }

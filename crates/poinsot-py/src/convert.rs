@@ -190,11 +190,54 @@ pub fn rows_in<const K: usize>(
             format!("must have shape (N, {K}), got {shape:?}"),
         ));
     }
+    if let Ok(flat) = a.as_slice() {
+        // C-contiguous (the public API passes such arrays): row by row from the flat data.
+        return Ok(flat
+            .chunks_exact(K)
+            .map(|r| std::array::from_fn(|i| r[i]))
+            .collect());
+    }
     Ok(a.as_array()
         .rows()
         .into_iter()
         .map(|r| std::array::from_fn(|i| r[i]))
         .collect())
+}
+
+/// An (N, K) float array → its rows as `[f64; K]`: borrowed from the array without a copy when
+/// it is C-contiguous (the public API passes such arrays), copied otherwise; the error names
+/// `argument`.
+pub fn rows_view<'a, const K: usize>(
+    argument: &str,
+    a: &'a PyReadonlyArray2<'_, f64>,
+) -> PyResult<std::borrow::Cow<'a, [[f64; K]]>>
+where
+    [f64; K]: bytemuck::Pod,
+{
+    let shape = a.shape();
+    if shape.len() != 2 || shape[1] != K {
+        return Err(invalid(
+            argument,
+            format!("must have shape (N, {K}), got {shape:?}"),
+        ));
+    }
+    match a.as_slice() {
+        Ok(flat) => bytemuck::try_cast_slice(flat)
+            .map(std::borrow::Cow::Borrowed)
+            .or_else(|_| rows_in::<K>(argument, a).map(std::borrow::Cow::Owned)),
+        Err(_) => rows_in::<K>(argument, a).map(std::borrow::Cow::Owned),
+    }
+}
+
+/// Rows of K floats, owned → a new (N, K) numpy array that takes the memory (no copy).
+pub fn rows_into<const K: usize>(
+    py: Python<'_>,
+    rows: Vec<[f64; K]>,
+) -> PyResult<Bound<'_, PyArray2<f64>>> {
+    let n = rows.len();
+    Ok(Array2::from_shape_vec((n, K), rows.into_flattened())
+        .map_err(|e| invalid("rows", e.to_string()))?
+        .into_pyarray(py))
 }
 
 /// An (N, 3) float array → a vector of `[f64; 3]` rows.
@@ -297,7 +340,10 @@ pub fn rows_out<'py, const K: usize>(
     py: Python<'py>,
     rows: &[[f64; K]],
 ) -> Bound<'py, PyArray2<f64>> {
-    Array2::from_shape_fn((rows.len(), K), |(i, j)| rows[i][j]).into_pyarray(py)
+    match Array2::from_shape_vec((rows.len(), K), rows.as_flattened().to_vec()) {
+        Ok(a) => a.into_pyarray(py),
+        Err(_) => Array2::from_shape_fn((rows.len(), K), |(i, j)| rows[i][j]).into_pyarray(py),
+    }
 }
 
 /// A flat row-major vector of `9·N` values → a new numpy array of shape (N, 3, 3).

@@ -15,7 +15,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::control::{run, run_attached};
-use crate::convert::{matrix, opt_quat, parse, rows_in, rows_out, vector};
+use crate::convert::{matrix, opt_quat, parse, rows_into, rows_out, rows_view, vector};
 use crate::errors::{invalid, IntoPy};
 
 /// A torque model calling Python; the first Python error is kept and NaN returned (which stops
@@ -165,10 +165,10 @@ fn dynamics_simulate_batch<'py>(
     Bound<'py, numpy::PyArray2<f64>>,
     usize,
 )> {
-    let m = rows_in::<3>("moments", &moments)?;
-    let w = rows_in::<3>("omega0", &omega0)?;
+    let m = rows_view::<3>("moments", &moments)?;
+    let w = rows_view::<3>("omega0", &omega0)?;
     let q = match &attitude0 {
-        Some(a) => Some(rows_in::<4>("attitude0", a)?),
+        Some(a) => Some(rows_view::<4>("attitude0", a)?),
         None => None,
     };
     let torque_vector = vector("torque", &torque_vector)?;
@@ -186,8 +186,8 @@ fn dynamics_simulate_batch<'py>(
         dyn_core::simulate_batch(&m, &w, q.as_deref(), duration, &torque, &opts)
     })?;
     Ok((
-        rows_out(py, &out.omega),
-        rows_out(py, &out.attitude),
+        rows_into(py, out.omega)?,
+        rows_into(py, out.attitude)?,
         out.steps,
     ))
 }

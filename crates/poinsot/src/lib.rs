@@ -17,6 +17,7 @@
 //! | [`analytic`] | closed forms: the free symmetric top, the free asymmetric top (Jacobi functions, Π), Poinsot's construction, axis stability; the heavy symmetric top (Lagrangian, effective potential, turning points, steady precession, exact motion) | 2.77–2.121 |
 //! | [`control`] | stopping long computations (Ctrl-C) and reporting their progress | — |
 //! | [`limits`] | the memory budget and step limits checked before work starts | — |
+//! | `simd` (private) | lanes of doubles for the batch kernels, run with the widest vector instructions of the CPU | — |
 //! | [`special`] | Jacobi elliptic functions sn, cn, dn, am (parameter m = k²) and elliptic integrals F, E, K, Π | — |
 //! | [`sweep`] | parameter studies: a model at every point of a grid of its keywords, validated first, in parallel | — |
 //!
@@ -59,6 +60,7 @@ pub mod inertia;
 pub mod integrate;
 pub mod limits;
 pub mod rotation;
+pub(crate) mod simd;
 pub mod special;
 pub mod sweep;
 

@@ -46,6 +46,10 @@
 //! A rotation within 2⁻⁹⁰⁰ (relative) of a *stable* principal axis is the steady rotation to
 //! that accuracy forever; within that of the intermediate axis it is solved exactly (it flips).
 
+mod lanes;
+
+pub(crate) use lanes::PiSeries;
+
 use super::free_scale::{check_omega_range, representable, Scale};
 use super::free_symmetric_top::{check_omega, SymmetricMotion};
 use crate::error::{check_finite, Error, Result};
@@ -186,8 +190,17 @@ pub fn check_moments(moments: &[f64; 3]) -> Result<()> {
             ),
         ));
     }
+    // Sorted ascending (three positive finite values: a comparison network).
     let mut m = *moments;
-    m.sort_by(f64::total_cmp);
+    if m[0] > m[1] {
+        m.swap(0, 1);
+    }
+    if m[1] > m[2] {
+        m.swap(1, 2);
+    }
+    if m[0] > m[1] {
+        m.swap(0, 1);
+    }
     let e = exponent(m[2]);
     let u = m.map(|v| ldexp(v, -e));
     let excess = u[2] - (u[0] + u[1]);
@@ -521,6 +534,50 @@ impl FreeRigidBody {
                 s.big_omega.abs(),
             ),
             _ => (f64::INFINITY, 0.0),
+        }
+    }
+
+    /// ω (body, rad/s) and the attitude at each of `times` into `omega` and `attitude` (of the
+    /// same length): [`FreeRigidBody::state`] at every time. With `series` (from
+    /// [`FreeRigidBody::pi_series`]) the elliptic motion runs on SIMD lanes: ω bit for bit as
+    /// `state`, the attitude to round-off of the phase (its Π summed as a Fourier series).
+    /// Errors name `t`
+    /// (the first time not finite or beyond [`FreeRigidBody::max_time`]), before any state.
+    pub(crate) fn states_into(
+        &self,
+        times: &[f64],
+        omega: &mut [[f64; 3]],
+        attitude: &mut [Quaternion],
+        series: Option<&PiSeries>,
+    ) -> Result<()> {
+        for &t in times {
+            self.scale.time(t)?;
+        }
+        if let (Motion::Elliptic(e), Some(series)) = (&self.motion, series) {
+            crate::simd::dispatch(lanes::EllipticStates {
+                body: self,
+                e,
+                series,
+                times,
+                omega,
+                attitude,
+            });
+            return Ok(());
+        }
+        for ((&t, w), q) in times.iter().zip(omega).zip(attitude) {
+            let (ws, qs) = self.state(t)?;
+            *w = [ws.x, ws.y, ws.z];
+            *q = qs;
+        }
+        Ok(())
+    }
+
+    /// The Fourier series of Π of an elliptic motion, for [`FreeRigidBody::states_into`]:
+    /// `None` for the other motions, or where the series would converge slowly.
+    pub(crate) fn pi_series(&self) -> Option<PiSeries> {
+        match &self.motion {
+            Motion::Elliptic(e) => PiSeries::new(e),
+            _ => None,
         }
     }
 

@@ -1,16 +1,19 @@
 //! Closed-form solutions: the free symmetric top (the unit's 2.77–2.97), the free asymmetric
 //! top (Jacobi elliptic functions and the integral of the third kind), Poinsot's construction
 //! and the stability of rotation about the principal axes, and the heavy symmetric top (the
-//! unit's eqs. 2.98–2.121), exactly, by elliptic functions.
+//! unit's eqs. 2.98–2.121), exactly, by elliptic functions; and the free body's exact states
+//! for many bodies and times at once ([`free_body_states`], on SIMD lanes).
 
 mod free_rigid_body;
 mod free_scale;
+mod free_states;
 mod free_symmetric_top;
 mod heavy_top;
 mod poinsot_construction;
 
 pub use free_rigid_body::{check_moments, FreeRegime, FreeRigidBody};
 pub use free_scale::PHASE_LIMIT;
+pub use free_states::{free_body_states, FreeBodyStates, StateTimes};
 pub use free_symmetric_top::{FreeSymmetricTop, TopShape};
 pub use heavy_top::{
     check_theta, check_top, constants_of_state, lagrangian, min_spin, sleeping_threshold,

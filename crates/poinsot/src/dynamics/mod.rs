@@ -4,6 +4,7 @@
 
 mod batch;
 mod equations;
+mod lanes;
 mod model;
 mod simulate;
 mod splitting;

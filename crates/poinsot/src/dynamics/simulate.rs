@@ -152,9 +152,26 @@ pub fn default_step(
     torque_magnitude: f64,
     extra_rate: f64,
 ) -> Option<f64> {
-    let rate = omega0.norm() * inertia.max_moment() / inertia.min_moment()
-        + (torque_magnitude / inertia.min_moment()).sqrt()
-        + extra_rate;
+    default_step_of(
+        inertia.max_moment(),
+        inertia.min_moment(),
+        omega0.norm(),
+        torque_magnitude,
+        extra_rate,
+    )
+}
+
+/// [`default_step`] from the largest and smallest principal moments and |ω₀|.
+#[inline]
+pub(crate) fn default_step_of(
+    max_moment: f64,
+    min_moment: f64,
+    omega_norm: f64,
+    torque_magnitude: f64,
+    extra_rate: f64,
+) -> Option<f64> {
+    let rate =
+        omega_norm * max_moment / min_moment + (torque_magnitude / min_moment).sqrt() + extra_rate;
     (rate > 0.0 && rate.is_finite()).then(|| 2.0 * std::f64::consts::PI / (1000.0 * rate))
 }
 

@@ -13,13 +13,14 @@
 //!
 //! Facets, one file each: `matrix` (validation, elementary rotations, composition),
 //! `quaternion`, `euler` (the 24 conventions and the conversions), `axis_angle` (Euler's
-//! theorem), `screw` (Chasles' theorem), `euler_kinematics` (2.98–2.99) and `batch` (kernels
-//! over slices, parallel with rayon).
+//! theorem), `screw` (Chasles' theorem), `euler_kinematics` (2.98–2.99), `batch` (kernels
+//! over slices, parallel with rayon) and `lanes` (quaternion algebra on SIMD lanes).
 
 mod axis_angle;
 mod batch;
 mod euler;
 mod euler_kinematics;
+mod lanes;
 mod matrix;
 mod quaternion;
 mod screw;
@@ -38,6 +39,10 @@ pub use euler::{
 pub use euler_kinematics::{
     angular_velocity, angular_velocity_matrix, body_angular_velocity, euler_rates,
     space_angular_velocity, Frame, RATES_LOCK_TOL,
+};
+pub(crate) use lanes::{
+    hamilton_lanes, matrix_to_quaternion_lanes, normalized_lanes, quaternion_to_matrix_lanes,
+    QuatLanes,
 };
 pub use matrix::{
     check_rotation_matrix, check_rotation_matrix_named, compose, elementary_rotation, rot_x, rot_y,

@@ -29,6 +29,7 @@
 
 use super::dd::{Dd, PI};
 use crate::error::{Error, Result};
+use crate::simd::{F64s, Simd};
 
 /// Below this argument the Maclaurin series (to u⁷ for `sn`, u⁸ for `1 − cn`, `1 − dn`) are
 /// exact to round-off: the first neglected term is < 0.03 u⁸ ≈ 2e-19 relative.
@@ -297,6 +298,132 @@ impl Jacobi {
     }
 }
 
+impl Jacobi {
+    /// Whether [`Jacobi::reduce_lanes`] and [`Jacobi::eval_reduced_lanes`] apply: 0 < m < 1 with
+    /// a finite period (the limits m = 0 and m = 1 have their own closed forms).
+    pub(crate) fn has_lanes(&self) -> bool {
+        self.m > 0.0 && self.kc > 0.0 && self.two_k.hi.is_finite()
+    }
+
+    /// [`Jacobi::reduce`] of every lane (for [`Jacobi::has_lanes`], |u| < 2⁵⁰ K): `(j, r)` with
+    /// `u = 2K·j + r`, bit for bit as the scalar function.
+    #[inline(always)]
+    pub(crate) fn reduce_lanes<S: Simd>(&self, u: F64s<S>) -> (F64s<S>, F64s<S>) {
+        let j = (u / self.two_k.hi).round_away();
+        let zero = j.eq(u.splat_like(0.0));
+        let r = (-j).mul_add(u.splat_like(self.two_k.hi), u) - j * self.two_k.lo;
+        (
+            F64s::select(zero, u.splat_like(0.0), j),
+            F64s::select(zero, u, r),
+        )
+    }
+
+    /// sn, cn and dn of every lane of reduced arguments |r| ≤ K (for [`Jacobi::has_lanes`]):
+    /// [`Jacobi::eval_reduced`] without the amplitude, bit for bit.
+    #[inline(always)]
+    pub(crate) fn eval_reduced_lanes<S: Simd>(&self, r: F64s<S>) -> (F64s<S>, F64s<S>, F64s<S>) {
+        let x = r.abs();
+        let k_hi = 0.5 * self.two_k.hi;
+        let k_lo = 0.5 * self.two_k.lo;
+        let near = x.le(x.splat_like(0.5 * k_hi));
+        // x = K − v with 0 ≤ v < K/2 where x > K/2.
+        let v = (k_hi - x) + k_lo;
+        let v = F64s::select(v.lt(x.splat_like(0.0)), x.splat_like(0.0), v);
+        let (s, c, d, cd) = duplicate_lanes(F64s::select(near, x, v), self.m, self.mc);
+        let sn = F64s::select(near, s, cd);
+        let cn = F64s::select(near, c, self.kc * s / d);
+        let dn = F64s::select(near, d, self.kc / d);
+        let sn = F64s::select(r.lt(r.splat_like(0.0)), -sn, sn);
+        (sn, cn, dn)
+    }
+}
+
+/// [`duplicate`] on lanes, each lane with its own number of halvings and its own switch from
+/// the complements to `cn` and ρ, bit for bit.
+#[inline(always)]
+fn duplicate_lanes<S: Simd>(x: F64s<S>, m: f64, mc: f64) -> (F64s<S>, F64s<S>, F64s<S>, F64s<S>) {
+    let one = x.splat_like(1.0);
+    let series_max = x.splat_like(SERIES_MAX);
+    let complement_max = x.splat_like(COMPLEMENT_MAX);
+    let mut u = x;
+    let mut n = x.splat_like(0.0);
+    loop {
+        let big = series_max.lt(u);
+        if !big.any() {
+            break;
+        }
+        u = F64s::select(big, u * 0.5, u);
+        n = F64s::select(big, n + 1.0, n);
+    }
+    let u2 = u * u;
+    let m2 = m * m;
+    let m3 = m2 * m;
+    let mut s = u
+        * (1.0
+            - u2 * ((1.0 + m) / 6.0
+                - u2 * ((1.0 + 14.0 * m + m2) / 120.0
+                    - u2 * (1.0 + 135.0 * m + 135.0 * m2 + m3) / 5040.0)));
+    let mut c = 0.5
+        * u2
+        * (1.0
+            - u2 * ((1.0 + 4.0 * m) / 12.0
+                - u2 * ((1.0 + 44.0 * m + 16.0 * m2) / 360.0
+                    - u2 * (1.0 + 408.0 * m + 912.0 * m2 + 64.0 * m3) / 20160.0)));
+    let mut d = 0.5
+        * m
+        * u2
+        * (1.0
+            - u2 * ((4.0 + m) / 12.0
+                - u2 * ((16.0 + 44.0 * m + m2) / 360.0
+                    - u2 * (64.0 + 912.0 * m + 408.0 * m2 + m3) / 20160.0)));
+    // Phase 1 (the complements) while cn is near 1, then phase 2 (sn, cn, ρ): a lane enters
+    // phase 2 at the first of its duplications where c > 1/4.
+    let mut cn = one - c;
+    let mut in2 = x.lt(x.splat_like(0.0));
+    let steps = n.max_lane() as usize;
+    for i in 0..steps {
+        let active = x.splat_like(i as f64).lt(n);
+        let small = c.le(complement_max);
+        let enter = active.and(in2.not()).and(small.not());
+        cn = F64s::select(enter, one - c, cn);
+        in2 = in2.or(enter);
+        let p1 = active.and(in2.not());
+        let p2 = active.and(in2);
+        // Phase 1.
+        let s2 = s * s;
+        let cn1 = one - c;
+        let dn1 = one - d;
+        let den = 1.0 - m * s2 * s2;
+        let s_1 = 2.0 * s * cn1 * dn1 / den;
+        let c_1 = 2.0 * s2 * dn1 * dn1 / den;
+        let d_1 = 2.0 * m * s2 * cn1 * cn1 / den;
+        // Phase 2.
+        let t = s / cn;
+        let t2 = t * t;
+        let rho = (1.0 + mc * t2).sqrt();
+        let den2 = 1.0 + s2 + mc * s2 * t2;
+        let s_2 = 2.0 * s * rho / den2;
+        let cn_2 = cn * cn * (1.0 - mc * t2 * t2) / den2;
+        s = F64s::select(p1, s_1, F64s::select(p2, s_2, s));
+        c = F64s::select(p1, c_1, c);
+        d = F64s::select(p1, d_1, d);
+        cn = F64s::select(p2, cn_2, cn);
+    }
+    // Lanes that ended in phase 1 with cn near 1; the others (in phase 2, or with c > 1/4 after
+    // their last duplication) finish from cn and ρ.
+    let phase1 = in2.not().and(c.le(complement_max));
+    let cn = F64s::select(in2, cn, one - c);
+    let t = s / cn;
+    let rho = (1.0 + mc * t * t).sqrt();
+    let (cn1, dn1) = (one - c, one - d);
+    (
+        s,
+        F64s::select(phase1, cn1, cn),
+        F64s::select(phase1, dn1, cn * rho),
+        F64s::select(phase1, cn1 / dn1, 1.0 / rho),
+    )
+}
+
 /// The arithmetic–geometric mean of `a` and `b` (both > 0) in double-double.
 fn agm_dd(mut a: Dd, mut b: Dd) -> Dd {
     for _ in 0..64 {
@@ -432,6 +559,75 @@ pub fn jacobi_all(u: f64, m: f64) -> Result<JacobiValues> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::simd::{dispatch, WithSimd, MAX_LANES};
+
+    /// The lanes against the scalar functions, bit for bit, on instruction set `s`.
+    fn lanes_on<S: Simd>(s: S) {
+        let lanes = F64s::<S>::LANES;
+        for j in [
+            Jacobi::new(1e-300).unwrap(),
+            Jacobi::new(1e-9).unwrap(),
+            Jacobi::new(0.3).unwrap(),
+            Jacobi::new(0.5).unwrap(),
+            Jacobi::new(0.97).unwrap(),
+            Jacobi::with_complement(1.0 - 1e-12, 1e-12).unwrap(),
+            Jacobi::with_complementary_modulus(1e-100).unwrap(),
+        ] {
+            assert!(j.has_lanes());
+            let k = j.quarter_period();
+            let mut us: Vec<f64> = (0..2000)
+                .map(|i| -9.0 * k + 18.0 * k * i as f64 / 1999.0)
+                .collect();
+            us.extend([
+                0.0,
+                -0.0,
+                1e-300,
+                k,
+                -k,
+                0.5 * k,
+                2.0 * k,
+                1e-5,
+                k * (1.0 - 1e-15),
+                7.3e4,
+            ]);
+            for chunk in us.chunks(lanes) {
+                let mut buf = [0.0; MAX_LANES];
+                buf[..chunk.len()].copy_from_slice(chunk);
+                let (jj, r) = j.reduce_lanes(F64s::load(s, &buf));
+                let (sn, cn, dn) = j.eval_reduced_lanes(r);
+                for (i, &u) in chunk.iter().enumerate() {
+                    let (j0, r0) = j.reduce(u);
+                    assert_eq!(
+                        (jj.lanes()[i], r.lanes()[i]),
+                        (j0, r0),
+                        "m = {} u = {u}",
+                        j.m()
+                    );
+                    let v = j.eval_reduced(r0);
+                    let got = (sn.lanes()[i], cn.lanes()[i], dn.lanes()[i]);
+                    assert_eq!(got, (v.sn, v.cn, v.dn), "m = {} u = {u}", j.m());
+                }
+            }
+        }
+    }
+
+    struct Lanes;
+    impl WithSimd for Lanes {
+        type Output = ();
+        #[inline(always)]
+        fn with_simd<S: Simd>(self, s: S) {
+            lanes_on(s)
+        }
+    }
+
+    /// sn, cn, dn on lanes equal the scalar functions bit for bit (each lane its own number of
+    /// duplications and its own switch from the complements), on this CPU's instructions and
+    /// in scalar code.
+    #[test]
+    fn lanes_equal_the_scalar_functions() {
+        dispatch(Lanes);
+        lanes_on(pulp::Scalar);
+    }
 
     #[test]
     fn identities_hold_over_the_whole_parameter_range() {

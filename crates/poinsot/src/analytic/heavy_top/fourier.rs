@@ -21,13 +21,14 @@
 //! ratio is too close to 1 (the axis passing very near a pole, or m → 1) more than
 //! [`MAX_TERMS`] terms would be needed, and the solution is evaluated by Carlson's R_J instead.
 
+use crate::simd::{F64s, Simd, WithSimd};
 use crate::special::ellip_carlson::{rd, rf};
 use std::f64::consts::PI;
 
 /// The most Fourier terms the fast path uses; beyond, the incomplete integrals are evaluated.
 pub(crate) const MAX_TERMS: usize = 64;
 /// Terms below this fraction of the series' scale are dropped (below half an ulp).
-const TRUNCATION: f64 = 1e-17;
+pub(crate) const TRUNCATION: f64 = 1e-17;
 
 /// One third-kind integral's Fourier data: `c`, the sign pattern, ρ (see the module docs).
 #[derive(Debug, Clone, Copy)]
@@ -82,7 +83,7 @@ impl ThirdSeries {
     }
 
     /// The coefficient of sin kx (k ≥ 1) given q.
-    fn coefficient(&self, kk: usize, q: f64) -> f64 {
+    pub(crate) fn coefficient(&self, kk: usize, q: f64) -> f64 {
         let kf = kk as f64;
         let q2k = q.powi(2 * kk as i32);
         let r = self.rho.powi(kk as i32) - (q * q / self.rho).powi(kk as i32);
@@ -138,7 +139,7 @@ pub(crate) struct Fourier {
 }
 
 /// The nome q = exp(−πK'/K) and q/m (finite as m → 0, where q ≈ m/16).
-fn nome(m: f64, k: f64, k_prime: f64) -> (f64, f64) {
+pub(crate) fn nome(m: f64, k: f64, k_prime: f64) -> (f64, f64) {
     if m < 1e-4 {
         // q = m/16 + 8(m/16)² + 84(m/16)³ + 992(m/16)⁴ + … (DLMF 19.5.5); the next term is < 1e-23.
         let e = m / 16.0;
@@ -254,45 +255,14 @@ impl Fourier {
     }
 
     /// [`Fourier::angles`] at many times into `out` (flat, 3 per time): the same arithmetic,
-    /// eight times at once so that the sum over the terms runs across the lanes (and
-    /// vectorizes).
+    /// bit for bit, on SIMD lanes (a group of times per vector instruction, the widest the CPU
+    /// has: [`crate::simd`]), so that the sum over the terms runs across the lanes.
     pub(crate) fn angles_into(&self, ts: &[f64], out: &mut [f64]) {
-        const L: usize = 8;
-        let mut t_chunks = ts.chunks_exact(L);
-        let mut o_chunks = out.chunks_exact_mut(3 * L);
-        for (tc, oc) in (&mut t_chunks).zip(&mut o_chunks) {
-            let (mut c1, mut s1) = ([0.0; L], [0.0; L]);
-            for i in 0..L {
-                (s1[i], c1[i]) = sin_cos_reduced(reduce_angle(self.x0 + self.nu * tc[i]));
-            }
-            let (mut ck, mut sk) = (c1, s1);
-            let (mut sw, mut sp, mut ss) = ([0.0; L], [0.0; L], [0.0; L]);
-            for k in 0..self.a.len() {
-                let (a, bp, bs) = (self.a[k], self.b_phi[k], self.b_psi[k]);
-                for i in 0..L {
-                    sw[i] += a * ck[i];
-                    sp[i] += bp * sk[i];
-                    ss[i] += bs * sk[i];
-                    let c_next = ck[i] * c1[i] - sk[i] * s1[i];
-                    sk[i] = sk[i] * c1[i] + ck[i] * s1[i];
-                    ck[i] = c_next;
-                }
-            }
-            for i in 0..L {
-                let w = (self.w_mean + sw[i]).max(0.0);
-                let v = (self.v_mean - sw[i]).max(0.0);
-                oc[3 * i] = self.phi_base + self.phi_rate * tc[i] + sp[i];
-                oc[3 * i + 1] = theta_from_wv_fast(w, v);
-                oc[3 * i + 2] = self.psi_base + self.psi_rate * tc[i] + ss[i];
-            }
-        }
-        for (&t, o) in t_chunks
-            .remainder()
-            .iter()
-            .zip(o_chunks.into_remainder().chunks_exact_mut(3))
-        {
-            o.copy_from_slice(&self.angles(t));
-        }
+        crate::simd::dispatch(AnglesLanes {
+            series: self,
+            ts,
+            out,
+        });
     }
 
     /// Carries the series from a time unit 1/σ to seconds (see `Nutation::rescale_time`).
@@ -308,6 +278,132 @@ impl Fourier {
     }
 }
 
+/// [`Fourier::angles`] on lanes, bit for bit: every operation of [`reduce_angle`],
+/// [`sin_cos_reduced`] and [`theta_from_wv_fast`] lane by lane (`f64::round` as
+/// [`F64s::round_away`], the branches as selections).
+struct AnglesLanes<'a> {
+    series: &'a Fourier,
+    ts: &'a [f64],
+    out: &'a mut [f64],
+}
+
+impl WithSimd for AnglesLanes<'_> {
+    type Output = ();
+
+    #[inline(always)]
+    fn with_simd<S: Simd>(self, s: S) {
+        let lanes = F64s::<S>::LANES;
+        let f = self.series;
+        let mut t_chunks = self.ts.chunks_exact(lanes);
+        let mut o_chunks = self.out.chunks_exact_mut(3 * lanes);
+        for (tc, oc) in (&mut t_chunks).zip(&mut o_chunks) {
+            let t = F64s::load(s, tc);
+            let x = f.x0 + f.nu * t;
+            let (s1, c1) = sin_cos_reduced_lanes(reduce_angle_lanes(x));
+            let (mut ck, mut sk) = (c1, s1);
+            let zero = F64s::splat(s, 0.0);
+            let (mut sw, mut sp, mut ss) = (zero, zero, zero);
+            for ((&a, &bp), &bs) in f.a.iter().zip(&f.b_phi).zip(&f.b_psi) {
+                sw += a * ck;
+                sp += bp * sk;
+                ss += bs * sk;
+                let c_next = ck * c1 - sk * s1;
+                sk = sk * c1 + ck * s1;
+                ck = c_next;
+            }
+            let w = f.w_mean + sw;
+            let v = f.v_mean - sw;
+            let w = F64s::select(w.lt(zero), zero, w);
+            let v = F64s::select(v.lt(zero), zero, v);
+            let phi = f.phi_base + f.phi_rate * t + sp;
+            let theta = theta_from_wv_lanes(w, v);
+            let psi = f.psi_base + f.psi_rate * t + ss;
+            for i in 0..lanes {
+                oc[3 * i] = phi.lanes()[i];
+                oc[3 * i + 1] = theta.lanes()[i];
+                oc[3 * i + 2] = psi.lanes()[i];
+            }
+        }
+        for (&t, o) in t_chunks
+            .remainder()
+            .iter()
+            .zip(o_chunks.into_remainder().chunks_exact_mut(3))
+        {
+            o.copy_from_slice(&f.angles(t));
+        }
+    }
+}
+
+/// [`reduce_angle`] on lanes.
+#[inline(always)]
+fn reduce_angle_lanes<S: Simd>(x: F64s<S>) -> F64s<S> {
+    const TWO_PI_HI: f64 = std::f64::consts::TAU;
+    const TWO_PI_LO: f64 = 2.449_293_598_294_706_4e-16;
+    let j = (x / TWO_PI_HI).round_away();
+    let reduced = (x - j * TWO_PI_HI) - j * TWO_PI_LO;
+    F64s::select(j.eq(x.splat_like(0.0)), x, reduced)
+}
+
+/// [`sin_cos_reduced`] on lanes.
+#[inline(always)]
+fn sin_cos_reduced_lanes<S: Simd>(r: F64s<S>) -> (F64s<S>, F64s<S>) {
+    const PIO2_HI: f64 = std::f64::consts::FRAC_PI_2;
+    const PIO2_LO: f64 = 6.123_233_995_736_766e-17;
+    let q = (r * std::f64::consts::FRAC_2_PI).round_away();
+    let y = (r - q * PIO2_HI) - q * PIO2_LO;
+    let z = y * y;
+    let mut ps = r.splat_like(SIN_TAYLOR[8]);
+    for &c in SIN_TAYLOR[..8].iter().rev() {
+        ps = ps * z + c;
+    }
+    let mut pc = r.splat_like(COS_TAYLOR[9]);
+    for &c in COS_TAYLOR[..9].iter().rev() {
+        pc = pc * z + c;
+    }
+    let (sy, cy) = (y * ps, pc);
+    // The quadrant q mod 4 (q ∈ {−2, …, 2}), as `(q as i64) & 3`.
+    let quarter = (q * 0.25).round_small();
+    let quarter = F64s::select(q.lt(quarter * 4.0), quarter - 1.0, quarter);
+    let quadrant = q - quarter * 4.0;
+    let (one, two, three) = (r.splat_like(1.0), r.splat_like(2.0), r.splat_like(3.0));
+    let odd = quadrant.eq(one).or(quadrant.eq(three));
+    let s = F64s::select(odd, cy, sy);
+    let s = F64s::select(two.le(quadrant), -s, s);
+    let c = F64s::select(odd, sy, cy);
+    let c = F64s::select(quadrant.eq(one).or(quadrant.eq(two)), -c, c);
+    (s, c)
+}
+
+/// [`theta_from_wv_fast`] on lanes.
+#[inline(always)]
+fn theta_from_wv_lanes<S: Simd>(w: F64s<S>, v: F64s<S>) -> F64s<S> {
+    use std::f64::consts::{FRAC_PI_4, FRAC_PI_8, PI};
+    let (a, b) = (w.sqrt(), v.sqrt());
+    let swap = b.lt(a);
+    let t = F64s::select(swap, b, a) / F64s::select(swap, a, b);
+    const T1: f64 = std::f64::consts::SQRT_2 - 1.0;
+    let first = t.le(t.splat_like(THETA_FIRST));
+    let second = t.le(t.splat_like(THETA_SECOND));
+    let k = F64s::select(
+        first,
+        t.splat_like(0.0),
+        F64s::select(second, t.splat_like(FRAC_PI_8), t.splat_like(FRAC_PI_4)),
+    );
+    let tk = F64s::select(
+        first,
+        t.splat_like(0.0),
+        F64s::select(second, t.splat_like(T1), t.splat_like(1.0)),
+    );
+    let x = (t - tk) / (t * tk + 1.0);
+    let z = x * x;
+    let mut p = t.splat_like(ATAN_TAYLOR[10]);
+    for &c in ATAN_TAYLOR[..10].iter().rev() {
+        p = p * z + c;
+    }
+    let half = x * p + k;
+    F64s::select(swap, PI - 2.0 * half, 2.0 * half)
+}
+
 /// x − 2πj in [−π, π] (2π split in two parts so that the reduction adds one rounding).
 #[inline]
 fn reduce_angle(x: f64) -> f64 {
@@ -320,10 +416,37 @@ fn reduce_angle(x: f64) -> f64 {
     (x - j * TWO_PI_HI) - j * TWO_PI_LO
 }
 
+/// The Taylor coefficients of sin y / y in z = y² (to y¹⁷).
+const SIN_TAYLOR: [f64; 9] = [
+    1.0,
+    -1.0 / 6.0,
+    1.0 / 120.0,
+    -1.0 / 5_040.0,
+    1.0 / 362_880.0,
+    -1.0 / 39_916_800.0,
+    1.0 / 6_227_020_800.0,
+    -1.0 / 1_307_674_368_000.0,
+    1.0 / 355_687_428_096_000.0,
+];
+
+/// The Taylor coefficients of cos y in z = y² (to y¹⁸).
+const COS_TAYLOR: [f64; 10] = [
+    1.0,
+    -0.5,
+    1.0 / 24.0,
+    -1.0 / 720.0,
+    1.0 / 40_320.0,
+    -1.0 / 3_628_800.0,
+    1.0 / 479_001_600.0,
+    -1.0 / 87_178_291_200.0,
+    1.0 / 20_922_789_888_000.0,
+    -1.0 / 6_402_373_705_728_000.0,
+];
+
 /// sin and cos of r ∈ [−π, π] (after [`reduce_angle`]) within 2 ulp: quadrant reduction by π/2
 /// (in two parts) and the Taylor series of sin and cos on [−π/4, π/4] to x¹⁷ and x¹⁸ (the next
-/// terms are below 1e-19). Straight-line code, so that the eight lanes of
-/// [`Fourier::angles_into`] vectorize.
+/// terms are below 1e-19). Straight-line code, mirrored lane by lane by
+/// [`Fourier::angles_into`] (`sin_cos_reduced_lanes`).
 #[inline(always)]
 fn sin_cos_reduced(r: f64) -> (f64, f64) {
     const PIO2_HI: f64 = std::f64::consts::FRAC_PI_2;
@@ -334,35 +457,12 @@ fn sin_cos_reduced(r: f64) -> (f64, f64) {
     let y = (r - q * PIO2_HI) - q * PIO2_LO;
     let z = y * y;
     // sin y = y (1 − z/3! + z²/5! − …), cos y = 1 − z/2! + z²/4! − … (Horner in z).
-    const S: [f64; 9] = [
-        1.0,
-        -1.0 / 6.0,
-        1.0 / 120.0,
-        -1.0 / 5_040.0,
-        1.0 / 362_880.0,
-        -1.0 / 39_916_800.0,
-        1.0 / 6_227_020_800.0,
-        -1.0 / 1_307_674_368_000.0,
-        1.0 / 355_687_428_096_000.0,
-    ];
-    const C: [f64; 10] = [
-        1.0,
-        -0.5,
-        1.0 / 24.0,
-        -1.0 / 720.0,
-        1.0 / 40_320.0,
-        -1.0 / 3_628_800.0,
-        1.0 / 479_001_600.0,
-        -1.0 / 87_178_291_200.0,
-        1.0 / 20_922_789_888_000.0,
-        -1.0 / 6_402_373_705_728_000.0,
-    ];
-    let mut ps = S[8];
-    for &c in S[..8].iter().rev() {
+    let mut ps = SIN_TAYLOR[8];
+    for &c in SIN_TAYLOR[..8].iter().rev() {
         ps = ps * z + c;
     }
-    let mut pc = C[9];
-    for &c in C[..9].iter().rev() {
+    let mut pc = COS_TAYLOR[9];
+    for &c in COS_TAYLOR[..9].iter().rev() {
         pc = pc * z + c;
     }
     let (sy, cy) = (y * ps, pc);
@@ -373,6 +473,26 @@ fn sin_cos_reduced(r: f64) -> (f64, f64) {
     let c = if qi == 1 || qi == 2 { -c } else { c };
     (s, c)
 }
+
+/// Where [`theta_from_wv_fast`] switches from atan t to π/8 + atan(…) (tan(π/16)), and from
+/// that to π/4 + atan(…) (tan(3π/16)).
+const THETA_FIRST: f64 = 0.198_912_367_379_658;
+const THETA_SECOND: f64 = 0.668_178_637_919_298_9;
+
+/// The Taylor coefficients of atan x / x in z = x² (to x²¹).
+const ATAN_TAYLOR: [f64; 11] = [
+    1.0,
+    -1.0 / 3.0,
+    1.0 / 5.0,
+    -1.0 / 7.0,
+    1.0 / 9.0,
+    -1.0 / 11.0,
+    1.0 / 13.0,
+    -1.0 / 15.0,
+    1.0 / 17.0,
+    -1.0 / 19.0,
+    1.0 / 21.0,
+];
 
 /// θ = 2 atan(√(w/v)) ∈ [0, π] for w, v ≥ 0 (not both 0), within a few ulp: the ratio t of the
 /// smaller to the larger root lies in [0, 1]; `atan t = kπ/8 + atan((t − tan kπ/8)/(1 + t tan kπ/8))`
@@ -386,30 +506,17 @@ fn theta_from_wv_fast(w: f64, v: f64) -> f64 {
     let t = if swap { b / a } else { a / b };
     // tan(π/8) = √2 − 1 (the subtraction is exact).
     const T1: f64 = std::f64::consts::SQRT_2 - 1.0;
-    let (k, tk) = if t <= 0.198_912_367_379_658 {
+    let (k, tk) = if t <= THETA_FIRST {
         (0.0, 0.0)
-    } else if t <= 0.668_178_637_919_298_9 {
+    } else if t <= THETA_SECOND {
         (FRAC_PI_8, T1)
     } else {
         (FRAC_PI_4, 1.0)
     };
     let x = (t - tk) / (t * tk + 1.0);
     let z = x * x;
-    const A: [f64; 11] = [
-        1.0,
-        -1.0 / 3.0,
-        1.0 / 5.0,
-        -1.0 / 7.0,
-        1.0 / 9.0,
-        -1.0 / 11.0,
-        1.0 / 13.0,
-        -1.0 / 15.0,
-        1.0 / 17.0,
-        -1.0 / 19.0,
-        1.0 / 21.0,
-    ];
-    let mut p = A[10];
-    for &c in A[..10].iter().rev() {
+    let mut p = ATAN_TAYLOR[10];
+    for &c in ATAN_TAYLOR[..10].iter().rev() {
         p = p * z + c;
     }
     let half = x * p + k;
@@ -422,7 +529,71 @@ fn theta_from_wv_fast(w: f64, v: f64) -> f64 {
 
 #[cfg(test)]
 mod tests {
+    use super::super::{EulerState, HeavyTop, Motion};
     use super::*;
+
+    /// The series of a few nutating tops (waves, loops, near the upper pole, a fast top).
+    fn series() -> Vec<Fourier> {
+        let states = [
+            (0.5, 1.0, 0.8, 0.3, 0.6, 6.0),
+            (0.5, 2.0, 1.2, -0.7, -1.5, 2.0),
+            (1.5, 0.3, 0.05, 0.2, 0.1, 30.0),
+            (0.8, 1.0, 2.5, 1.0, 0.4, -9.0),
+        ];
+        let all: Vec<Fourier> = states
+            .iter()
+            .filter_map(|&(i3, mgl, theta, theta_dot, phi_dot, psi_dot)| {
+                let st = EulerState {
+                    theta,
+                    theta_dot,
+                    phi_dot,
+                    psi_dot,
+                    phi: 0.3,
+                    psi: -1.1,
+                };
+                let top = HeavyTop::new(1.0, i3, mgl, st).unwrap();
+                let Motion::Nutating(n) = &top.motion else {
+                    panic!("not nutating")
+                };
+                n.fourier().cloned()
+            })
+            .collect();
+        assert!(all.len() >= 3);
+        all
+    }
+
+    struct Check<'a>(&'a Fourier, &'a [f64]);
+    impl WithSimd for Check<'_> {
+        type Output = Vec<f64>;
+        #[inline(always)]
+        fn with_simd<S: Simd>(self, s: S) -> Vec<f64> {
+            let mut out = vec![0.0; 3 * self.1.len()];
+            AnglesLanes {
+                series: self.0,
+                ts: self.1,
+                out: &mut out,
+            }
+            .with_simd(s);
+            out
+        }
+    }
+
+    /// The lanes give `Fourier::angles` bit for bit, with this CPU's instructions and with
+    /// scalar code, at times of both signs, large and small, and a count that fills no group.
+    #[test]
+    fn lanes_equal_the_scalar_path_bit_for_bit() {
+        let times: Vec<f64> = (0..1001)
+            .map(|k| {
+                let x = k as f64 * 0.7548776662466927;
+                (x.fract() - 0.5) * 10f64.powi(k % 7 - 2)
+            })
+            .collect();
+        for f in series() {
+            let want: Vec<f64> = times.iter().flat_map(|&t| f.angles(t)).collect();
+            assert_eq!(crate::simd::dispatch(Check(&f, &times)), want);
+            assert_eq!(Check(&f, &times).with_simd(pulp::Scalar), want);
+        }
+    }
 
     /// The vectorizable kernels against the standard library: sin and cos to 2 ulp of 1, θ to 4
     /// ulp relative (tiny angles included).

@@ -333,6 +333,12 @@ impl Nutation {
         })
     }
 
+    /// The Fourier form of the motion, if it has one (for the tests of its lanes).
+    #[cfg(test)]
+    pub(crate) fn fourier(&self) -> Option<&Fourier> {
+        self.fourier.as_ref()
+    }
+
     /// The number of Fourier terms of the fast path (0 when the motion is evaluated by R_J).
     pub(crate) fn fourier_terms(&self) -> usize {
         self.fourier.as_ref().map_or(0, Fourier::terms)
