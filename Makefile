@@ -11,7 +11,7 @@ PY := $(VENV)/bin/python
 export PYO3_PYTHON := $(abspath $(PY))
 export MPLBACKEND := Agg
 
-.PHONY: docs errata-page docs-setup test-docs setup demo test test-rust lint doc publish-check test-python examples bench stubtest clean lab lab-build test-web web-setup fuzz fuzz-python fuzz-web wheel test-wheel
+.PHONY: docs errata-page docs-setup test-docs setup demo test test-rust lint doc publish-check test-python examples bench stubtest clean lab lab-build test-web web-setup fuzz fuzz-python fuzz-web wheel test-wheel msrv
 
 $(PY):
 	$(PYTHON) -m venv $(VENV)
@@ -24,7 +24,7 @@ setup: $(PY)
 demo: setup
 	$(VENV)/bin/poinsot tour
 
-test: setup test-rust lint test-python examples test-web test-docs test-wheel
+test: setup test-rust lint msrv test-python examples test-web test-docs test-wheel
 
 test-rust:
 	cargo test -p poinsot --release
@@ -38,6 +38,13 @@ lint: $(PY)
 	$(PY) -m ruff check python examples docs/conf.py docs/_ext
 	$(PY) -m ruff format --check python examples docs/conf.py docs/_ext
 	$(PY) -m mypy python/poinsot
+
+# The workspace builds with the oldest Rust it declares (Cargo.toml's rust-version: nalgebra 0.35
+# and its `wide` need 1.89), checked with that toolchain (installed by rustup when missing).
+MSRV := $(shell sed -n 's/^rust-version = "\(.*\)"/\1/p' Cargo.toml)
+msrv:
+	rustup toolchain install $(MSRV) --profile minimal >/dev/null
+	CARGO_TARGET_DIR=target/msrv cargo +$(MSRV) check --workspace --all-targets --quiet
 
 # The core crate's API documentation (target/doc/poinsot), warnings as errors (also in `lint`).
 doc:
