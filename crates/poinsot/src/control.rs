@@ -99,7 +99,7 @@ pub fn tick() -> Result<()> {
         t.set(n);
         n
     });
-    if n % TICKS_PER_POLL == 0 {
+    if n.is_multiple_of(TICKS_PER_POLL) {
         poll()
     } else {
         Ok(())

@@ -364,19 +364,7 @@ pub(crate) fn sin_cos<S: Simd>(x: F64s<S>) -> (F64s<S>, F64s<S>) {
     let n = (x * std::f64::consts::FRAC_2_PI).round_small();
     let y = ((x - n * P1) - n * P2) - n * P3;
     let (sy, cy) = sin_cos_kernel(y);
-    // The quadrant n mod 4 ∈ {0, 1, 2, 3} (exact in doubles for |n| < 2⁵¹).
-    let quarter = (n * 0.25).round_small();
-    let quarter = F64s::select(n.lt(quarter * 4.0), quarter - 1.0, quarter);
-    let quadrant = n - quarter * 4.0;
-    let one = x.splat_like(1.0);
-    let two = x.splat_like(2.0);
-    let three = x.splat_like(3.0);
-    let odd = quadrant.eq(one).or(quadrant.eq(three));
-    let (s, c) = (F64s::select(odd, cy, sy), F64s::select(odd, sy, cy));
-    let flip_s = two.le(quadrant);
-    let flip_c = quadrant.eq(one).or(quadrant.eq(two));
-    let mut s = F64s::select(flip_s, -s, s);
-    let mut c = F64s::select(flip_c, -c, c);
+    let (mut s, mut c) = rotate_by_quadrant(n, sy, cy);
     let big = x.abs().le(x.splat_like(SIN_COS_VECTOR_MAX)).not();
     if big.any() {
         for i in 0..F64s::<S>::LANES {
@@ -388,39 +376,65 @@ pub(crate) fn sin_cos<S: Simd>(x: F64s<S>) -> (F64s<S>, F64s<S>) {
     (s, c)
 }
 
+/// (sin, cos) of y + n π/2 from sin y and cos y, n a whole number (in doubles, exact for
+/// |n| < 2⁵¹): the quadrant n mod 4 ∈ {0, 1, 2, 3} swaps and negates them.
+#[inline(always)]
+pub(crate) fn rotate_by_quadrant<S: Simd>(
+    n: F64s<S>,
+    sy: F64s<S>,
+    cy: F64s<S>,
+) -> (F64s<S>, F64s<S>) {
+    let quarter = (n * 0.25).round_small();
+    let quarter = F64s::select(n.lt(quarter * 4.0), quarter - 1.0, quarter);
+    let quadrant = n - quarter * 4.0;
+    let one = n.splat_like(1.0);
+    let two = n.splat_like(2.0);
+    let three = n.splat_like(3.0);
+    let odd = quadrant.eq(one).or(quadrant.eq(three));
+    let (s, c) = (F64s::select(odd, cy, sy), F64s::select(odd, sy, cy));
+    let flip_s = two.le(quadrant);
+    let flip_c = quadrant.eq(one).or(quadrant.eq(two));
+    (F64s::select(flip_s, -s, s), F64s::select(flip_c, -c, c))
+}
+
+/// The Taylor coefficients of sin y / y in z = y² (to y¹⁷), for [`sin_cos_kernel`] and the
+/// scalar code it mirrors.
+pub(crate) const SIN_TAYLOR: [f64; 9] = [
+    1.0,
+    -1.0 / 6.0,
+    1.0 / 120.0,
+    -1.0 / 5_040.0,
+    1.0 / 362_880.0,
+    -1.0 / 39_916_800.0,
+    1.0 / 6_227_020_800.0,
+    -1.0 / 1_307_674_368_000.0,
+    1.0 / 355_687_428_096_000.0,
+];
+
+/// The Taylor coefficients of cos y in z = y² (to y¹⁸).
+pub(crate) const COS_TAYLOR: [f64; 10] = [
+    1.0,
+    -0.5,
+    1.0 / 24.0,
+    -1.0 / 720.0,
+    1.0 / 40_320.0,
+    -1.0 / 3_628_800.0,
+    1.0 / 479_001_600.0,
+    -1.0 / 87_178_291_200.0,
+    1.0 / 20_922_789_888_000.0,
+    -1.0 / 6_402_373_705_728_000.0,
+];
+
 /// sin y and cos y for |y| ≤ π/4 (a hair beyond is harmless): Taylor series in z = y², Horner.
 #[inline(always)]
-fn sin_cos_kernel<S: Simd>(y: F64s<S>) -> (F64s<S>, F64s<S>) {
-    const S: [f64; 9] = [
-        1.0,
-        -1.0 / 6.0,
-        1.0 / 120.0,
-        -1.0 / 5_040.0,
-        1.0 / 362_880.0,
-        -1.0 / 39_916_800.0,
-        1.0 / 6_227_020_800.0,
-        -1.0 / 1_307_674_368_000.0,
-        1.0 / 355_687_428_096_000.0,
-    ];
-    const C: [f64; 10] = [
-        1.0,
-        -0.5,
-        1.0 / 24.0,
-        -1.0 / 720.0,
-        1.0 / 40_320.0,
-        -1.0 / 3_628_800.0,
-        1.0 / 479_001_600.0,
-        -1.0 / 87_178_291_200.0,
-        1.0 / 20_922_789_888_000.0,
-        -1.0 / 6_402_373_705_728_000.0,
-    ];
+pub(crate) fn sin_cos_kernel<S: Simd>(y: F64s<S>) -> (F64s<S>, F64s<S>) {
     let z = y * y;
-    let mut ps = y.splat_like(S[8]);
-    for &c in S[..8].iter().rev() {
+    let mut ps = y.splat_like(SIN_TAYLOR[8]);
+    for &c in SIN_TAYLOR[..8].iter().rev() {
         ps = ps * z + c;
     }
-    let mut pc = y.splat_like(C[9]);
-    for &c in C[..9].iter().rev() {
+    let mut pc = y.splat_like(COS_TAYLOR[9]);
+    for &c in COS_TAYLOR[..9].iter().rev() {
         pc = pc * z + c;
     }
     (y * ps, pc)

@@ -2,6 +2,8 @@
 //! body), the exact flow, and itself (a body's result whatever its place in the batch, the
 //! batch's size or the number of threads); its errors, limits and cancellation.
 
+mod common;
+use common::{sample_bodies, Bodies};
 use poinsot::analytic::FreeRigidBody;
 use poinsot::control::{self, Monitor};
 use poinsot::dynamics::{
@@ -55,9 +57,6 @@ fn against_single_runs(
 }
 
 /// Moments obeying the triangle inequality, ω₀ of size ~1–3 rad/s, unit attitudes.
-/// Moments, ω₀ and attitudes of a batch.
-type Bodies = (Vec<[f64; 3]>, Vec<[f64; 3]>, Vec<[f64; 4]>);
-
 fn bodies() -> impl Strategy<Value = Bodies> {
     (1usize..30).prop_flat_map(|n| {
         (
@@ -126,29 +125,6 @@ proptest! {
         let d = against_single_runs(&m, &w, &q, 0.02, torque, &opts);
         prop_assert!(d <= 1e-13, "{d:e}");
     }
-}
-
-fn sample_bodies(n: usize) -> Bodies {
-    let moments = (0..n)
-        .map(|i| [1.0, 1.5 + 0.4 * ((i as f64) * 0.37).sin().abs(), 2.2])
-        .collect();
-    let omega = (0..n)
-        .map(|i| {
-            let a = i as f64;
-            [
-                (a * 0.7).cos(),
-                0.1 + (a * 1.3).sin(),
-                1.0 + 0.3 * (a * 0.11).cos(),
-            ]
-        })
-        .collect();
-    let attitude = (0..n)
-        .map(|i| {
-            let h = 0.5 * (i as f64 * 0.21);
-            [h.cos(), 0.0, h.sin(), 0.0]
-        })
-        .collect();
-    (moments, omega, attitude)
 }
 
 #[test]

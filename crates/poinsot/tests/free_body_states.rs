@@ -2,13 +2,12 @@
 //! `FreeRigidBody::state` body by body and time by time, against itself (shared and per-body
 //! times, a body alone, one thread or two), and its errors, limits and cancellation.
 
+mod common;
+use common::{sample_bodies, Bodies};
 use poinsot::analytic::{free_body_states, FreeBodyStates, FreeRigidBody, StateTimes};
 use poinsot::control::{self, Monitor};
 use poinsot::{ErrorKind, Result, Vec3};
 use proptest::prelude::*;
-
-/// Moments, ω₀ and attitudes of a batch.
-type Bodies = (Vec<[f64; 3]>, Vec<[f64; 3]>, Vec<[f64; 4]>);
 
 /// The attitude's tolerance against `FreeRigidBody::state` at time t for a body turning at
 /// most at `rate` (rad/s): 1e-13, plus 8 ε per radian turned — the state's own error model
@@ -113,29 +112,6 @@ proptest! {
         prop_assert_eq!(dw, 0.0);
         prop_assert!(dq <= 1.0, "{:e} of the tolerance", dq);
     }
-}
-
-fn sample_bodies(n: usize) -> Bodies {
-    let moments = (0..n)
-        .map(|i| [1.0, 1.5 + 0.4 * ((i as f64) * 0.37).sin().abs(), 2.2])
-        .collect();
-    let omega = (0..n)
-        .map(|i| {
-            let a = i as f64;
-            [
-                (a * 0.7).cos(),
-                0.1 + (a * 1.3).sin(),
-                1.0 + 0.3 * (a * 0.11).cos(),
-            ]
-        })
-        .collect();
-    let attitude = (0..n)
-        .map(|i| {
-            let h = 0.5 * (i as f64 * 0.21);
-            [h.cos(), 0.0, h.sin(), 0.0]
-        })
-        .collect();
-    (moments, omega, attitude)
 }
 
 #[test]

@@ -2,11 +2,12 @@
 
 use rayon::prelude::*;
 
-use super::free_rigid_body::{check_moments, FreeRigidBody, PiSeries};
+use super::free_rigid_body::{FreeRigidBody, PiSeries};
 use crate::control::{self, Cancel};
+use crate::dynamics::{check_every_row, check_row, check_row_counts};
 use crate::error::{Error, ErrorKind, Result};
 use crate::limits::check_memory;
-use crate::rotation::{check_quaternion, same_hemisphere, Quaternion};
+use crate::rotation::{same_hemisphere, Quaternion};
 use crate::Vec3;
 
 /// The times of [`free_body_states`].
@@ -86,23 +87,7 @@ pub fn free_body_states(
     times: StateTimes<'_>,
 ) -> Result<FreeBodyStates> {
     let n = moments.len();
-    if omega0.len() != n {
-        return Err(Error::invalid(
-            "omega0",
-            format!(
-                "must have as many rows as moments ({n}), got {}",
-                omega0.len()
-            ),
-        ));
-    }
-    if let Some(a) = attitude0 {
-        if a.len() != n {
-            return Err(Error::invalid(
-                "attitude0",
-                format!("must have as many rows as moments ({n}), got {}", a.len()),
-            ));
-        }
-    }
+    check_row_counts(n, omega0.len(), attitude0.map(<[Quaternion]>::len))?;
     let (all_times, m, shared) = match times {
         StateTimes::Shared(t) => (t, t.len(), true),
         StateTimes::PerBody(t) => {
@@ -126,28 +111,7 @@ pub fn free_body_states(
         ));
     }
     // Every row, in parallel; the first at fault is reported.
-    let check_row = |i: usize| -> Result<Quaternion> {
-        check_moments(&moments[i])
-            .map_err(|e| Error::new(e.kind, "moments", format!("row {i}: {}", e.message)))?;
-        if !omega0[i].iter().all(|v| v.is_finite()) {
-            return Err(Error::invalid(
-                "omega0",
-                format!("must be finite, got {:?} at row {i}", omega0[i]),
-            ));
-        }
-        match attitude0 {
-            Some(a) => check_quaternion("attitude0", &a[i], false)
-                .map_err(|e| Error::new(e.kind, "attitude0", format!("row {i}: {}", e.message))),
-            None => Ok([1.0, 0.0, 0.0, 0.0]),
-        }
-    };
-    if let Some(i) = (0..n)
-        .into_par_iter()
-        .with_min_len(256)
-        .find_first(|&i| check_row(i).is_err())
-    {
-        return Err(check_row(i).expect_err("failed above"));
-    }
+    check_every_row(moments, omega0, attitude0)?;
     let mut out = FreeBodyStates {
         omega: vec![[0.0; 3]; n * m],
         attitude: vec![[0.0; 4]; n * m],
@@ -169,7 +133,7 @@ pub fn free_body_states(
         if w0.iter().all(|&c| c == 0.0) {
             return Ok(None);
         }
-        let q0 = check_row(i)?;
+        let q0 = check_row(moments, omega0, attitude0, i)?;
         FreeRigidBody::new(moments[i], w0, Some(q0))
             .map(Some)
             .map_err(|e| Error::new(e.kind, e.argument, format!("row {i}: {}", e.message)))
@@ -189,7 +153,7 @@ pub fn free_body_states(
                 .states_into(ts, w, q, series)
                 .map_err(|e| Error::new(e.kind, e.argument, format!("body {i}: {}", e.message)))?,
             None => {
-                let rest = check_row(i)?;
+                let rest = check_row(moments, omega0, attitude0, i)?;
                 w.fill(omega0[i]);
                 q.fill(rest);
             }

@@ -75,23 +75,7 @@ pub fn simulate_batch(
         ..
     } = *opts;
     let n = moments.len();
-    if omega0.len() != n {
-        return Err(Error::invalid(
-            "omega0",
-            format!(
-                "must have as many rows as moments ({n}), got {}",
-                omega0.len()
-            ),
-        ));
-    }
-    if let Some(a) = attitude0 {
-        if a.len() != n {
-            return Err(Error::invalid(
-                "attitude0",
-                format!("must have as many rows as moments ({n}), got {}", a.len()),
-            ));
-        }
-    }
+    check_row_counts(n, omega0.len(), attitude0.map(<[Quaternion]>::len))?;
     if !(duration.is_finite() && duration > 0.0) {
         return Err(Error::invalid(
             "duration",
@@ -138,33 +122,12 @@ pub fn simulate_batch(
     };
     // Validate every row first (in parallel), naming the first row at fault; then the unit
     // attitudes.
-    let check_row = |i: usize| -> Result<Quaternion> {
-        check_moments(&moments[i])
-            .map_err(|e| Error::new(e.kind, "moments", format!("row {i}: {}", e.message)))?;
-        if !omega0[i].iter().all(|v| v.is_finite()) {
-            return Err(Error::invalid(
-                "omega0",
-                format!("must be finite, got {:?} at row {i}", omega0[i]),
-            ));
-        }
-        match attitude0 {
-            Some(a) => check_quaternion("attitude0", &a[i], false)
-                .map_err(|e| Error::new(e.kind, "attitude0", format!("row {i}: {}", e.message))),
-            None => Ok([1.0, 0.0, 0.0, 0.0]),
-        }
-    };
-    let first_bad = (0..n)
-        .into_par_iter()
-        .with_min_len(BLOCK)
-        .find_first(|&i| check_row(i).is_err());
-    if let Some(i) = first_bad {
-        return Err(check_row(i).expect_err("failed above"));
-    }
+    check_every_row(moments, omega0, attitude0)?;
     let q0: Option<Vec<Quaternion>> = attitude0.map(|_| {
         (0..n)
             .into_par_iter()
             .with_min_len(BLOCK)
-            .map(|i| check_row(i).unwrap_or(IDENTITY))
+            .map(|i| check_row(moments, omega0, attitude0, i).unwrap_or(IDENTITY))
             .collect()
     });
     let q0 = Attitudes(q0.as_deref());
@@ -225,6 +188,62 @@ impl Attitudes<'_> {
             None => IDENTITY,
         }
     }
+}
+
+/// A batch's rows agree: as many `omega0` rows (and `attitude0` rows, when given) as `moments`
+/// rows (`n`); else an error naming the argument that differs.
+pub(crate) fn check_row_counts(n: usize, omega0: usize, attitude0: Option<usize>) -> Result<()> {
+    let differs = |argument: &str, got: usize| {
+        Error::invalid(
+            argument,
+            format!("must have as many rows as moments ({n}), got {got}"),
+        )
+    };
+    if omega0 != n {
+        return Err(differs("omega0", omega0));
+    }
+    match attitude0 {
+        Some(a) if a != n => Err(differs("attitude0", a)),
+        _ => Ok(()),
+    }
+}
+
+/// Row `i` of a batch: the moments of a body ([`check_moments`]), a finite ω₀ and an attitude
+/// quaternion (the identity when none is given), returned unit; errors name the argument and
+/// the row.
+pub(crate) fn check_row(
+    moments: &[[f64; 3]],
+    omega0: &[[f64; 3]],
+    attitude0: Option<&[Quaternion]>,
+    i: usize,
+) -> Result<Quaternion> {
+    check_moments(&moments[i])
+        .map_err(|e| Error::new(e.kind, "moments", format!("row {i}: {}", e.message)))?;
+    if !omega0[i].iter().all(|v| v.is_finite()) {
+        return Err(Error::invalid(
+            "omega0",
+            format!("must be finite, got {:?} at row {i}", omega0[i]),
+        ));
+    }
+    match attitude0 {
+        Some(a) => check_quaternion("attitude0", &a[i], false)
+            .map_err(|e| Error::new(e.kind, "attitude0", format!("row {i}: {}", e.message))),
+        None => Ok(IDENTITY),
+    }
+}
+
+/// Every row of a batch ([`check_row`]), in parallel: the error of the first row at fault
+/// (the lowest index, whatever the threads).
+pub(crate) fn check_every_row(
+    moments: &[[f64; 3]],
+    omega0: &[[f64; 3]],
+    attitude0: Option<&[Quaternion]>,
+) -> Result<()> {
+    (0..moments.len())
+        .into_par_iter()
+        .with_min_len(BLOCK)
+        .find_map_first(|i| check_row(moments, omega0, attitude0, i).err())
+        .map_or(Ok(()), Err)
 }
 
 /// `e` with "body {i}: " before its message.
@@ -323,6 +342,7 @@ fn lanes_batch(
     // Each body's step and number of steps, before any work.
     let mut step = vec![0.0; n];
     let mut count = vec![0.0; n];
+    // The first body refused (the lowest index: the same error whatever the threads).
     let first_bad = step
         .par_chunks_mut(BLOCK)
         .zip(count.par_chunks_mut(BLOCK))
@@ -340,23 +360,13 @@ fn lanes_batch(
                     max_steps,
                 ) {
                     Ok((hi, ki)) => (*h, *k) = (hi, ki as f64),
-                    Err(_) => return Some(i),
+                    Err(e) => return Some((i, e)),
                 }
             }
             None
         })
-        .min();
-    if let Some(i) = first_bad {
-        let e = fixed_steps(
-            &moments[i],
-            &omega0[i],
-            &q0.get(i),
-            duration,
-            torque,
-            dt,
-            max_steps,
-        )
-        .expect_err("failed above");
+        .min_by_key(|(i, _)| *i);
+    if let Some((i, e)) = first_bad {
         return Err(in_body(i, e));
     }
     let steps = count.iter().fold(0.0f64, |a, &b| a.max(b)) as usize;

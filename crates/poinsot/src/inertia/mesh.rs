@@ -112,13 +112,13 @@ pub fn mesh_mass_properties_rows(
 
 /// Shapes, index ranges and finiteness; returns the faces as `u32` rows.
 fn checked_arrays<I: FaceIndex>(vertices: &[f64], faces: &[I]) -> Result<Vec<[u32; 3]>> {
-    if vertices.len() % 3 != 0 {
+    if !vertices.len().is_multiple_of(3) {
         return Err(Error::mesh(
             "vertices",
             format!("must have shape (N, 3), got {} values", vertices.len()),
         ));
     }
-    if faces.len() % 3 != 0 {
+    if !faces.len().is_multiple_of(3) {
         return Err(Error::mesh(
             "faces",
             format!("must have shape (M, 3), got {} values", faces.len()),

@@ -37,7 +37,7 @@ fn at_index(e: Error, k: usize) -> Error {
 
 /// Number of records of width `w` in `data` named `argument`.
 fn records(argument: &str, data: &[f64], w: usize) -> Result<usize> {
-    if data.len() % w != 0 {
+    if !data.len().is_multiple_of(w) {
         return Err(Error::invalid(
             argument,
             format!(

@@ -1,5 +1,5 @@
-//! Helpers shared by the heavy-top integration tests (each test file includes this module and
-//! uses what it needs).
+//! Helpers shared by the integration tests (each test file includes this module and uses what
+//! it needs): heavy tops and their references, batches of free bodies.
 #![allow(dead_code)]
 
 use poinsot::analytic::{EulerState, HeavyTop};
@@ -65,4 +65,32 @@ pub fn load_reference(file: &str, generator: &str) -> BTreeMap<String, Vec<Row>>
         });
     }
     cases
+}
+
+/// A batch: moments (kg m²), initial angular velocities (rad/s), attitudes (scalar first).
+pub type Bodies = (Vec<[f64; 3]>, Vec<[f64; 3]>, Vec<[f64; 4]>);
+
+/// `n` free bodies for the batch kernels: moments, ω₀ (rad/s) and attitudes, none of the lanes
+/// alike.
+pub fn sample_bodies(n: usize) -> Bodies {
+    let moments = (0..n)
+        .map(|i| [1.0, 1.5 + 0.4 * ((i as f64) * 0.37).sin().abs(), 2.2])
+        .collect();
+    let omega = (0..n)
+        .map(|i| {
+            let a = i as f64;
+            [
+                (a * 0.7).cos(),
+                0.1 + (a * 1.3).sin(),
+                1.0 + 0.3 * (a * 0.11).cos(),
+            ]
+        })
+        .collect();
+    let attitude = (0..n)
+        .map(|i| {
+            let h = 0.5 * (i as f64 * 0.21);
+            [h.cos(), 0.0, h.sin(), 0.0]
+        })
+        .collect();
+    (moments, omega, attitude)
 }

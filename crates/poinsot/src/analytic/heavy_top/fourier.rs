@@ -21,7 +21,9 @@
 //! ratio is too close to 1 (the axis passing very near a pole, or m → 1) more than
 //! [`MAX_TERMS`] terms would be needed, and the solution is evaluated by Carlson's R_J instead.
 
-use crate::simd::{F64s, Simd, WithSimd};
+use crate::simd::{
+    rotate_by_quadrant, sin_cos_kernel, F64s, Simd, WithSimd, COS_TAYLOR, SIN_TAYLOR,
+};
 use crate::special::ellip_carlson::{rd, rf};
 use std::f64::consts::PI;
 
@@ -351,27 +353,9 @@ fn sin_cos_reduced_lanes<S: Simd>(r: F64s<S>) -> (F64s<S>, F64s<S>) {
     const PIO2_LO: f64 = 6.123_233_995_736_766e-17;
     let q = (r * std::f64::consts::FRAC_2_PI).round_away();
     let y = (r - q * PIO2_HI) - q * PIO2_LO;
-    let z = y * y;
-    let mut ps = r.splat_like(SIN_TAYLOR[8]);
-    for &c in SIN_TAYLOR[..8].iter().rev() {
-        ps = ps * z + c;
-    }
-    let mut pc = r.splat_like(COS_TAYLOR[9]);
-    for &c in COS_TAYLOR[..9].iter().rev() {
-        pc = pc * z + c;
-    }
-    let (sy, cy) = (y * ps, pc);
+    let (sy, cy) = sin_cos_kernel(y);
     // The quadrant q mod 4 (q ∈ {−2, …, 2}), as `(q as i64) & 3`.
-    let quarter = (q * 0.25).round_small();
-    let quarter = F64s::select(q.lt(quarter * 4.0), quarter - 1.0, quarter);
-    let quadrant = q - quarter * 4.0;
-    let (one, two, three) = (r.splat_like(1.0), r.splat_like(2.0), r.splat_like(3.0));
-    let odd = quadrant.eq(one).or(quadrant.eq(three));
-    let s = F64s::select(odd, cy, sy);
-    let s = F64s::select(two.le(quadrant), -s, s);
-    let c = F64s::select(odd, sy, cy);
-    let c = F64s::select(quadrant.eq(one).or(quadrant.eq(two)), -c, c);
-    (s, c)
+    rotate_by_quadrant(q, sy, cy)
 }
 
 /// [`theta_from_wv_fast`] on lanes.
@@ -415,33 +399,6 @@ fn reduce_angle(x: f64) -> f64 {
     }
     (x - j * TWO_PI_HI) - j * TWO_PI_LO
 }
-
-/// The Taylor coefficients of sin y / y in z = y² (to y¹⁷).
-const SIN_TAYLOR: [f64; 9] = [
-    1.0,
-    -1.0 / 6.0,
-    1.0 / 120.0,
-    -1.0 / 5_040.0,
-    1.0 / 362_880.0,
-    -1.0 / 39_916_800.0,
-    1.0 / 6_227_020_800.0,
-    -1.0 / 1_307_674_368_000.0,
-    1.0 / 355_687_428_096_000.0,
-];
-
-/// The Taylor coefficients of cos y in z = y² (to y¹⁸).
-const COS_TAYLOR: [f64; 10] = [
-    1.0,
-    -0.5,
-    1.0 / 24.0,
-    -1.0 / 720.0,
-    1.0 / 40_320.0,
-    -1.0 / 3_628_800.0,
-    1.0 / 479_001_600.0,
-    -1.0 / 87_178_291_200.0,
-    1.0 / 20_922_789_888_000.0,
-    -1.0 / 6_402_373_705_728_000.0,
-];
 
 /// sin and cos of r ∈ [−π, π] (after [`reduce_angle`]) within 2 ulp: quadrant reduction by π/2
 /// (in two parts) and the Taylor series of sin and cos on [−π/4, π/4] to x¹⁷ and x¹⁸ (the next
