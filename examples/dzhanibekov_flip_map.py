@@ -3,13 +3,13 @@
 
 How long does a body spun near its intermediate axis wait before it flips? The answer depends on
 the direction of ω₀ in the body, and steeply so near the separatrix. This example maps it: one
-call of :func:`poinsot.sweep.free_body` solves 130,321 bodies (moments 1, 2, 3 kg m²,
-|ω₀| = 1 rad/s, the direction of ω₀ over 361 × 361 polar angles from axis 3 and azimuths from
+call of :func:`poinsot.sweep.free_body` solves 130,321 bodies (moments 1, 2, 3 kg m², ω₀ of
+size 1 rad/s, the direction of ω₀ over 361 × 361 polar angles from axis 3 and azimuths from
 axis 1), exactly (Jacobi elliptic functions), and colours the direction by the flip interval — the
 time between reversals of the intermediate component ω₂, half the period of ω.
 
 Drawn on the map in closed form: the separatrix, the directions with 2 T I₂ = L², i.e.
-I₁ (I₂ − I₁) ω₁² = I₃ (I₃ − I₂) ω₃² — here tan θ |cos φ| = √3 — where the flip interval grows
+I₁ (I₂ − I₁) ω₁² = I₃ (I₃ − I₂) ω₃² — here tan²θ cos²φ = 3 — where the flip interval grows
 without bound; it divides the directions whose ω circles the largest axis from those that circle
 the smallest, and crosses itself at the intermediate axis.
 
