@@ -179,10 +179,13 @@ def as_angle(value: Any, name: str, degrees: Any = False) -> float:
     return float(np.radians(x)) if as_flag(degrees, "degrees") else x
 
 
-def as_flat(value: Any, name: str, degrees: Any = False) -> tuple[FloatArray, tuple[int, ...]]:
+def as_flat(
+    value: Any, name: str, degrees: Any = False, *, finite: bool = True
+) -> tuple[FloatArray, tuple[int, ...]]:
     """``value`` of any shape as a C-contiguous 1-D float64 array plus its shape (for
-    :func:`shaped`), converted from degrees to radians when ``degrees`` is true."""
-    arr = as_float_array(value, name)
+    :func:`shaped`), converted from degrees to radians when ``degrees`` is true. With
+    ``finite=False`` NaN and infinity pass, for a core function that refuses them itself."""
+    arr = as_float_array(value, name, finite=finite)
     if as_flag(degrees, "degrees"):
         arr = np.radians(arr)
     return np.ascontiguousarray(arr.reshape(-1), dtype=np.float64), arr.shape

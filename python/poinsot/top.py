@@ -391,7 +391,9 @@ class HeavyTop(show.Displayed):
         x = plain_float(t)
         if x is not None:  # one plain number: the same kernel without the arrays
             return _degrees(self._core.euler_angles_at(x), degrees)
-        flat, shape = as_flat(t, "t")
+        flat, shape = as_flat(
+            t, "t", finite=False
+        )  # the core names a non-finite time and its index
         out = self._core.euler_angles(flat)
         if as_flag(degrees, "degrees"):
             out = np.degrees(out)
@@ -403,7 +405,7 @@ class HeavyTop(show.Displayed):
         x = plain_float(t)
         if x is not None:
             return _degrees(self._core.euler_rates_at(x), degrees)
-        flat, shape = as_flat(t, "t")
+        flat, shape = as_flat(t, "t", finite=False)
         out = self._core.euler_rates(flat)
         if as_flag(degrees, "degrees"):
             out = np.degrees(out)

@@ -74,6 +74,21 @@ def test_degrees_flag() -> None:
     )
 
 
+@pytest.mark.parametrize("method", ["euler_angles", "euler_rates"])
+@pytest.mark.parametrize("bad", [math.nan, math.inf, -math.inf])
+def test_a_non_finite_time_is_refused_by_the_core_naming_its_index(method, bad) -> None:
+    """The core checks the times (Python passes them on unchecked): the error names ``t``, the
+    value and its index, in any shape; a finite array beside it is accepted (control)."""
+    top = HeavyTop(1.0, 0.5, 1.0, 0.8, psi_dot=6.0)
+    t = np.array([[0.0, 1.0], [2.0, bad]])
+    with pytest.raises(
+        ps.PoinsotError, match=r"^t: must be finite, got (NaN|inf|-inf) at index 3$"
+    ):
+        getattr(top, method)(t)
+    values = getattr(top, method)(np.nan_to_num(t, nan=3.0, posinf=3.0, neginf=3.0))
+    assert all(v.shape == (2, 2) and np.all(np.isfinite(v)) for v in values)
+
+
 def test_symmetry_axis_is_the_third_column_of_the_zxz_attitude() -> None:
     """Convention pin: body axis 3 in space = (sin θ sin φ, −sin θ cos φ, cos θ) for R = Rz(φ)Rx(θ)Rz(ψ)."""
     top = HeavyTop(1.0, 0.5, 1.0, 0.8, phi=0.3, psi=1.1, phi_dot=-0.5, psi_dot=6.0)
