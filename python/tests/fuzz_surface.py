@@ -182,6 +182,45 @@ VALID: dict[str, Any] = {
 }
 
 VALID_FOR: dict[str, dict[str, Any]] = {
+    # The sweeps: the model's own keywords (passed as **keywords) and small grids.
+    "sweep.heavy_top": {
+        "samples": None,
+        "I1": 1.0,
+        "I3": 0.5,
+        "mgl": 1.0,
+        "theta": [0.3, 0.6],
+        "psi_dot": [4.0, 8.0],
+    },
+    "sweep.free_body": {
+        "samples": None,
+        "moments": [1.0, 2.0, 3.0],
+        "omega_magnitude": 1.0,
+        "omega_polar": [0.5, 1.5],
+        "omega_azimuth": [0.2, 1.2],
+    },
+    "sweep.simulate": {
+        "samples": None,
+        "moments": [1.0, 2.0, 3.0],
+        "omega0": [[1.0, 0.1, 1.0], [0.0, 0.5, 1.0]],
+        "duration": 0.5,
+        "dt": 1e-2,
+    },
+    "sweep.drop": {
+        "height": [10.0, 100.0],
+        "latitude": [0.3, 0.8],
+        "samples": None,
+        "rotation": True,
+    },
+    "sweep.projectile": {
+        "samples": None,
+        "rotation": True,
+        "speed": [50.0, 100.0],
+        "elevation": 0.5,
+        "azimuth": 0.3,
+        "latitude": 0.7,
+    },
+    "sweep.uniform": {"low": 0.5, "high": 2.0},
+    "sweep.log_uniform": {"low": 0.5, "high": 2.0},
     "screw_axis": {"t": [1.0, 2.0, 3.0]},
     "RigidBody.rotated": {"rotation": R0},
     "RigidBody.load_mesh": {"path": "__CUBE_STL__"},
@@ -311,7 +350,16 @@ DOCUMENTED_INF = {
     ("HeavyTop", "nutation_period"),  # steady precession and the sleeping top
     ("HeavyTop", "cubic_roots"),  # u3 = inf for m g l = 0: the cubic has no third root
     ("axis_stability", "rate"),
+    ("sweep.heavy_top", "nutation_period"),  # as HeavyTop's
+    ("sweep.free_body", "period"),  # as FreeRigidBody's
+    ("sweep.free_body", "flip_interval"),
+    ("sweep.free_body", "axis_rate"),  # as axis_stability's rate
 }
+
+
+#: Parameters the fuzzer leaves at their defaults, by name: a sweep's ``client`` (a Dask
+#: cluster: test_sweep_cluster.py) and ``to_zarr`` (a path it would write to: test_sweep.py).
+NOT_FUZZED = {"client", "to_zarr"}
 
 
 def qualname(owner: str | None, name: str) -> str:
@@ -363,11 +411,20 @@ def _site(owner: str | None, name: str, func: Callable[..., Any], tmp: Any) -> S
     params = [
         p
         for p in sig.parameters.values()
-        if p.name not in ("self", "cls") and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)
+        if p.name not in ("self", "cls")
+        and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)
+        and p.name not in NOT_FUZZED
     ]
     valid: dict[str, Any] = {}
     missing: list[str] = []
     override = VALID_FOR.get(q, {})
+    if any(p.kind == p.VAR_KEYWORD for p in sig.parameters.values()):
+        # A function taking **keywords (a sweep: the model's own keywords) gets those of its
+        # valid example as keyword parameters of their own, fuzzed like the others.
+        named = {p.name for p in params}
+        params += [
+            inspect.Parameter(k, inspect.Parameter.KEYWORD_ONLY) for k in override if k not in named
+        ]
     for p in params:
         if p.name in override:
             valid[p.name] = _resolve(override[p.name], tmp)
@@ -381,9 +438,11 @@ def _site(owner: str | None, name: str, func: Callable[..., Any], tmp: Any) -> S
 
 
 def public_names() -> list[tuple[str, Any, str]]:
-    """(name, object, module label) for every public name of poinsot and poinsot.special."""
+    """(name, object, module label) for every public name of poinsot, poinsot.special and
+    poinsot.sweep."""
     out = [(n, getattr(ps, n), "poinsot") for n in ps.__all__]
     out += [(n, getattr(special, n), "poinsot.special") for n in special.__all__]
+    out += [(n, getattr(ps.sweep, n), "poinsot.sweep") for n in ps.sweep.__all__]
     return out
 
 
@@ -406,7 +465,8 @@ def sites(tmp: Any) -> list[Site]:
                 elif inspect.isfunction(raw) and instance is not None:
                     out.append(_site(name, attr, getattr(instance, attr), tmp))
         elif callable(obj):
-            out.append(_site(None, name, obj, tmp))
+            owner = "sweep" if _module == "poinsot.sweep" else None
+            out.append(_site(owner, name, obj, tmp))
     return out
 
 
@@ -530,6 +590,11 @@ def _numbers(value: Any, path: str, depth: int = 0) -> Iterator[tuple[str, float
             bad = ~np.isfinite(value)
             if bad.any():
                 yield path, float(value[bad].ravel()[0].real)
+        return
+    variables = getattr(value, "variables", None)
+    if type(value).__name__ == "Dataset" and variables is not None:  # a sweep's xarray result
+        for k, v in variables.items():
+            yield from _numbers(np.asarray(v.values), str(k), depth + 1)
         return
     if isinstance(value, dict):
         for k, v in value.items():

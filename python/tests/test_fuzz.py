@@ -1,7 +1,7 @@
 """Fuzzing the whole public Python surface against poinsot's failure contract (issue 10).
 
-Every public function, constructor and method (discovered from ``poinsot.__all__`` and
-``poinsot.special.__all__``: see ``fuzz_surface.py``) is called with adversarial values — NaN,
+Every public function, constructor and method (discovered from ``poinsot.__all__``,
+``poinsot.special.__all__`` and ``poinsot.sweep.__all__``: see ``fuzz_surface.py``) is called with adversarial values — NaN,
 ±inf, ±1e308, subnormals, 0, negatives, wrong shapes and dtypes, ragged lists, complex numbers,
 non-boolean flags, huge sizes, callbacks that fail — and must either raise a
 :class:`poinsot.PoinsotError` (``TypeError`` for a wrong type) naming one of its own arguments,
@@ -68,6 +68,22 @@ def test_valid_calls_keep_the_contract(sites: list[fz.Site]) -> None:
     for site in sites:
         problems += list(fz.run_call(site, dict(site.valid)))
     assert not problems, "\n".join(problems)
+
+
+def test_the_sweeps_valid_examples_compute(sites: list[fz.Site]) -> None:
+    """The sweeps are fuzzed around calls that work: each valid example returns a Dataset over
+    the grid of its array keywords (a refusal would also keep the contract, and the grid would
+    then fuzz nothing but the error path)."""
+    sweeps = {s.qualname: s for s in sites if s.qualname.startswith("sweep.")}
+    models = {"heavy_top", "free_body", "simulate", "drop", "projectile"}
+    assert {f"sweep.{m}" for m in models} <= set(sweeps)
+    for m in models:
+        site = sweeps[f"sweep.{m}"]
+        ds = site.call(dict(site.valid))
+        arrays = [k for k in site.valid if k in ds.dims and np.ndim(site.valid[k]) == 1]
+        assert type(ds).__name__ == "Dataset" and ds.data_vars, m
+        assert all(ds.sizes[k] == len(site.valid[k]) for k in arrays), (m, dict(ds.sizes))
+        assert not fz.check_result(site.qualname, ds), m
 
 
 def test_the_harness_catches_broken_contracts() -> None:

@@ -375,6 +375,41 @@ def test_malformed_calls_are_refused_by_name() -> None:
         sweep.simulate(moments=[1, 2, 3], omega0=[1.0, 0.0, 0.0], duration=-1.0)
 
 
+@pytest.mark.parametrize("bad", [1.5, {"motion_class": 1}, [1, 2], [["motion_class"]], object()])
+def test_quantities_of_the_wrong_type_are_refused_by_name(bad) -> None:
+    """``quantities`` is a name or a list of names; anything else is refused naming it (found by
+    the fuzz suite: a float gave Python's own "'float' object is not iterable")."""
+    with pytest.raises(ps.ArgumentTypeError, match=r"^quantities: must"):
+        sweep.heavy_top(I1=1.0, I3=0.5, mgl=1.0, theta=0.5, quantities=bad)
+    ok = sweep.heavy_top(I1=1.0, I3=0.5, mgl=1.0, theta=0.5, quantities=("motion_class",))
+    assert list(ok.data_vars) == ["motion_class"]
+
+
+def test_a_failed_integration_names_the_users_argument_and_the_point() -> None:
+    """The integrators name their own variables (t, y0); a sweep names the user's argument, as
+    the scalar API does — height for a drop, speed for a projectile, duration for simulate —
+    and the point (found by the fuzz suite)."""
+    with pytest.raises(ps.IntegrationError, match=r"^height: .*\(at height\[1\]\)$"):
+        sweep.drop(height=[100.0, 1e308], latitude=0.5)
+    with pytest.raises(ps.IntegrationError, match=r"^height: "):
+        ps.Earth().drop(1e308, 0.5)  # the scalar API says the same
+    with pytest.raises(ps.IntegrationError, match=r"^speed: .*\(at speed\[1\]\)$"):
+        sweep.projectile(speed=[50.0, 1e308], elevation=0.5, azimuth=0.3, latitude=0.7)
+    torque = ps.BodyTorque([1e308, 0.0, 0.0])
+    with pytest.raises(ps.IntegrationError, match=r"^duration: .*\(at omega0_index\[0\]\)$"):
+        sweep.simulate(
+            moments=[1.0, 2.0, 3.0],
+            omega0=[[1.0, 0.1, 1.0], [0.0, 0.5, 1.0]],
+            duration=0.5,
+            dt=1e-2,
+            torque=torque,
+        )
+    with pytest.raises(ps.IntegrationError, match=r"^duration: "):
+        ps.simulate_batch([[1.0, 2.0, 3.0]], [[1.0, 0.1, 1.0]], 0.5, torque=torque, dt=1e-2)
+    # Control: the same sweeps at sane values compute.
+    assert np.isfinite(sweep.drop(height=[100.0, 200.0], latitude=0.5).east).all()
+
+
 def test_the_memory_budget_is_checked_before_work() -> None:
     previous = ps.set_memory_budget(1 << 20)
     try:

@@ -583,6 +583,43 @@ fn drops_and_projectiles_equal_each_run_alone() {
 }
 
 #[test]
+fn a_failed_integration_names_the_users_argument_at_its_point() {
+    // The integrator names its own variables (t, y0); the sweep names what the user gave, as
+    // the scalar API does: the height of a drop, the speed of a projectile.
+    let earth = Earth::default();
+    let model = FallModel::default();
+    let height = [100.0, 1e308];
+    let lat = [0.5];
+    let grid = Grid::new(
+        vec![dim("height", 2)],
+        vec![col("height", &height, Some(0)), col("latitude", &lat, None)],
+    )
+    .unwrap();
+    let e = sweep::drop(&earth, &grid, &model).unwrap_err();
+    assert_eq!((e.kind, e.argument.as_str()), (ErrorKind::Diverged, "height"));
+    assert!(e.message.ends_with("(at height[1])"), "{e}");
+    // The run alone names its integrator's time: the sweep's renaming is what names height.
+    assert_eq!(earth.drop(1e308, 0.5, &model).unwrap_err().argument, "t");
+    let speed = [50.0, 1e308];
+    let one = [0.5];
+    let h0 = [0.0];
+    let grid = Grid::new(
+        vec![dim("speed", 2)],
+        vec![
+            col("speed", &speed, Some(0)),
+            col("elevation", &one, None),
+            col("azimuth", &one, None),
+            col("latitude", &one, None),
+            col("height", &h0, None),
+        ],
+    )
+    .unwrap();
+    let e = sweep::projectile(&earth, &grid, &model).unwrap_err();
+    assert_eq!(e.argument, "speed");
+    assert!(e.message.ends_with("(at speed[1])"), "{e}");
+}
+
+#[test]
 fn a_stopped_sweep_returns_the_interrupt() {
     use poinsot::control::{interrupted, watched, Monitor};
     struct StopNow;

@@ -387,9 +387,18 @@ def _quantities(model: Model, quantities: Any, given: set[str]) -> list[Output]:
         return available
     if isinstance(quantities, str):
         quantities = [quantities]
+    if isinstance(quantities, Mapping) or not isinstance(quantities, (Sequence, np.ndarray)):
+        raise ArgumentTypeError(
+            "quantities: must be a result's name or a list of names, got "
+            f"{type(quantities).__name__}"
+        )
     names = {o.name: o for o in available}
     out = []
     for q in quantities:
+        if not isinstance(q, str):
+            raise ArgumentTypeError(
+                f"quantities: must hold the results' names (text), got {type(q).__name__} {q!r}"
+            )
         if q not in names:
             raise PoinsotError(
                 f"quantities: {q!r} is not a result of poinsot.sweep.{model.name} "

@@ -88,7 +88,10 @@ pub fn drop(earth: &Earth, grid: &Grid<'_>, model: &FallModel) -> Result<Vec<Dro
     model.options.dense = false;
     grid.compute(|p| {
         let (h, lat) = inputs.at(p)?;
-        let fall = earth.drop(h, lat, &model)?;
+        // The integrator's errors name its time and start: the user gave the height.
+        let fall = earth
+            .drop(h, lat, &model)
+            .map_err(|e| e.renamed("t", "height").renamed("y0", "height"))?;
         Ok(DropPoint {
             time: fall.time,
             east: fall.east,
@@ -155,7 +158,10 @@ pub fn projectile(
     model.options.dense = false;
     grid.compute(|p| {
         let [speed, elevation, azimuth, latitude, height] = inputs.at(p)?;
-        let f = earth.projectile(speed, elevation, azimuth, latitude, height, &model)?;
+        // As the scalar API: the integrator's errors are the speed's (the time of flight).
+        let f = earth
+            .projectile(speed, elevation, azimuth, latitude, height, &model)
+            .map_err(|e| e.renamed("t", "speed").renamed("y0", "speed"))?;
         Ok(ProjectilePoint {
             time: f.time,
             east: f.east,

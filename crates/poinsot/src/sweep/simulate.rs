@@ -84,7 +84,7 @@ pub fn simulate(
     let omega0: Vec<[f64; 3]> = (0..n).map(|p| inputs.omega0.vec3(p)).collect();
     let attitude0: Vec<Quaternion> = (0..n).map(|p| inputs.attitude0.vec4(p)).collect();
     let out = simulate_batch(&moments, &omega0, Some(&attitude0), duration, torque, opts)
-        .map_err(|e| locate_body(grid, e))?;
+        .map_err(|e| locate_body(grid, e.renamed("t", "duration")))?;
     Ok(out
         .omega
         .into_iter()
