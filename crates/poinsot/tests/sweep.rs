@@ -596,7 +596,10 @@ fn a_failed_integration_names_the_users_argument_at_its_point() {
     )
     .unwrap();
     let e = sweep::drop(&earth, &grid, &model).unwrap_err();
-    assert_eq!((e.kind, e.argument.as_str()), (ErrorKind::Diverged, "height"));
+    assert_eq!(
+        (e.kind, e.argument.as_str()),
+        (ErrorKind::Diverged, "height")
+    );
     assert!(e.message.ends_with("(at height[1])"), "{e}");
     // The run alone names its integrator's time: the sweep's renaming is what names height.
     assert_eq!(earth.drop(1e308, 0.5, &model).unwrap_err().argument, "t");
