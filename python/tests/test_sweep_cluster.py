@@ -56,8 +56,9 @@ def _assert_same(a, b) -> None:
         assert np.array_equal(np.asarray(a[name].values), np.asarray(b[name].values)), name
 
 
-def _tasks_on_scheduler(client) -> int:
-    return client.run_on_scheduler(lambda dask_scheduler: len(dask_scheduler.tasks))
+def _tasks_on_scheduler(client) -> set[str]:
+    """The keys of the tasks the scheduler holds (an earlier test's may still be leaving)."""
+    return client.run_on_scheduler(lambda dask_scheduler: {str(k) for k in dask_scheduler.tasks})
 
 
 def test_the_cluster_returns_the_local_numbers_bit_for_bit(client, tmp_path) -> None:
@@ -175,18 +176,31 @@ def test_a_worker_killed_mid_sweep_is_recovered_without_losing_or_doubling_a_chu
 
 
 def test_bad_input_is_refused_before_any_chunk_is_sent(client) -> None:
-    before = _tasks_on_scheduler(client)
+    from distributed import get_task_stream
+
     theta = np.linspace(0.1, 1.5, 40)
-    theta[27] = -0.2
-    with pytest.raises(
-        ps.PoinsotError, match=r"^theta: .*got -0.2 \(at theta\[27\], psi_dot\[0\]\)$"
-    ):
+    # The scheduler's task stream records every task run while it is open (an earlier test's
+    # tasks may still be leaving the scheduler: counting them would race with that).
+    with get_task_stream(client) as stream:
+        before = _tasks_on_scheduler(client)
+        bad = theta.copy()
+        bad[27] = -0.2
+        with pytest.raises(
+            ps.PoinsotError, match=r"^theta: .*got -0.2 \(at theta\[27\], psi_dot\[0\]\)$"
+        ):
+            sweep.heavy_top(
+                I1=1.0, I3=0.5, mgl=1.0, theta=bad, psi_dot=[1.0, 2.0], client=client, chunks=5
+            )
+        with pytest.raises(ps.ArgumentTypeError, match="^spin: is not a keyword"):
+            sweep.heavy_top(I1=1.0, I3=0.5, mgl=1.0, theta=0.3, spin=1.0, client=client)
+        assert _tasks_on_scheduler(client) <= before  # no new task on the scheduler
+    assert stream.data == []  # and none ran
+    # Negative control: the same sweep with good input runs its chunks on the workers.
+    with get_task_stream(client) as stream:
         sweep.heavy_top(
             I1=1.0, I3=0.5, mgl=1.0, theta=theta, psi_dot=[1.0, 2.0], client=client, chunks=5
         )
-    with pytest.raises(ps.ArgumentTypeError, match="^spin: is not a keyword"):
-        sweep.heavy_top(I1=1.0, I3=0.5, mgl=1.0, theta=0.3, spin=1.0, client=client)
-    assert _tasks_on_scheduler(client) == before  # nothing was submitted
+    assert len(stream.data) >= 8
 
 
 def test_an_error_on_a_worker_names_the_point_of_the_whole_sweep(client) -> None:
