@@ -36,12 +36,7 @@ fn batch<'py>(
         let mut rw = arr.readwrite();
         let out = rw.as_slice_mut().map_err(|e| invalid("t", e.to_string()))?;
         py.detach(|| f(ts, out))
-            .map_err(|mut e| {
-                if e.argument == "times" {
-                    e.argument = "t".into();
-                }
-                e
-            })
+            .map_err(|e| e.renamed("times", "t"))
             .py()?;
     }
     Ok(arr)
@@ -52,12 +47,7 @@ fn batch<'py>(
 fn one(t: f64, f: impl Fn(&[f64], &mut [f64]) -> poinsot::Result<()>) -> PyResult<(f64, f64, f64)> {
     let mut out = [0.0; 3];
     f(&[t], &mut out)
-        .map_err(|mut e| {
-            if e.argument == "times" {
-                e.argument = "t".into();
-            }
-            e
-        })
+        .map_err(|e| e.renamed("times", "t"))
         .py()?;
     Ok((out[0], out[1], out[2]))
 }

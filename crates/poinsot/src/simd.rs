@@ -17,8 +17,8 @@
 //! does not leave the floating-point units idle.
 //!
 //! Each lane performs exactly the operations of the scalar code it mirrors, in the same order,
-//! with no fused multiply-add (pulp's `mul_add` is never used): a body's result does not depend
-//! on its lane, on the batch it is in, on the number of threads or on the instruction set.
+//! with no fused multiply-add (`F64s::mul_add` only where the scalar code it mirrors fuses,
+//! `f64::mul_add`): a body's result does not depend on its lane, on the batch it is in, on the number of threads or on the instruction set.
 
 use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 

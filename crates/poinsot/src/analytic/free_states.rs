@@ -4,7 +4,7 @@ use rayon::prelude::*;
 
 use super::free_rigid_body::{FreeRigidBody, PiSeries};
 use crate::control::{self, Cancel};
-use crate::dynamics::{check_every_row, check_row, check_row_counts};
+use crate::dynamics::{check_every_row, check_row, check_row_counts, in_body, in_row};
 use crate::error::{Error, ErrorKind, Result};
 use crate::limits::check_memory;
 use crate::rotation::{same_hemisphere, Quaternion};
@@ -136,7 +136,7 @@ pub fn free_body_states(
         let q0 = check_row(moments, omega0, attitude0, i)?;
         FreeRigidBody::new(moments[i], w0, Some(q0))
             .map(Some)
-            .map_err(|e| Error::new(e.kind, e.argument, format!("row {i}: {}", e.message)))
+            .map_err(|e| in_row(i, e))
     };
     // One body's states at `ts` (its times from `from`) into `w`, `q`.
     let states = |i: usize,
@@ -149,9 +149,7 @@ pub fn free_body_states(
      -> Result<()> {
         cancel.check()?;
         match body {
-            Some(b) => b
-                .states_into(ts, w, q, series)
-                .map_err(|e| Error::new(e.kind, e.argument, format!("body {i}: {}", e.message)))?,
+            Some(b) => b.states_into(ts, w, q, series).map_err(|e| in_body(i, e))?,
             None => {
                 let rest = check_row(moments, omega0, attitude0, i)?;
                 w.fill(omega0[i]);

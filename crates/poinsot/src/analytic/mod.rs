@@ -24,4 +24,4 @@ pub use poinsot_construction::{axis_stability, AxisStability, Stability};
 // The checks the constructors make, for the sweeps' validation before work ([`crate::sweep`]).
 pub(crate) use free_scale::check_omega_range;
 pub(crate) use free_symmetric_top::check_omega;
-pub(crate) use heavy_top::{check_spin, check_state};
+pub(crate) use heavy_top::{check_state, spin_state};

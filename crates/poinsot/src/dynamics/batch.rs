@@ -217,8 +217,7 @@ pub(crate) fn check_row(
     attitude0: Option<&[Quaternion]>,
     i: usize,
 ) -> Result<Quaternion> {
-    check_moments(&moments[i])
-        .map_err(|e| Error::new(e.kind, "moments", format!("row {i}: {}", e.message)))?;
+    check_moments(&moments[i]).map_err(|e| in_row(i, e))?;
     if !omega0[i].iter().all(|v| v.is_finite()) {
         return Err(Error::invalid(
             "omega0",
@@ -226,8 +225,7 @@ pub(crate) fn check_row(
         ));
     }
     match attitude0 {
-        Some(a) => check_quaternion("attitude0", &a[i], false)
-            .map_err(|e| Error::new(e.kind, "attitude0", format!("row {i}: {}", e.message))),
+        Some(a) => check_quaternion("attitude0", &a[i], false).map_err(|e| in_row(i, e)),
         None => Ok(IDENTITY),
     }
 }
@@ -247,8 +245,13 @@ pub(crate) fn check_every_row(
 }
 
 /// `e` with "body {i}: " before its message.
-fn in_body(i: usize, e: Error) -> Error {
+pub(crate) fn in_body(i: usize, e: Error) -> Error {
     Error::new(e.kind, e.argument, format!("body {i}: {}", e.message))
+}
+
+/// `e` with "row {i}: " before its message.
+pub(crate) fn in_row(i: usize, e: Error) -> Error {
+    Error::new(e.kind, e.argument, format!("row {i}: {}", e.message))
 }
 
 /// The torque on a body (principal moments `moments`) at time t, ω and attitude q (not

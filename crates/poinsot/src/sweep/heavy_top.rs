@@ -3,7 +3,7 @@
 //! the constants of the motion at every point.
 
 use super::grid::{Grid, Param};
-use crate::analytic::{check_spin, check_state, EulerState, HeavyTop, MotionClass};
+use crate::analytic::{check_state, spin_state, EulerState, HeavyTop, MotionClass};
 use crate::error::{Error, Result};
 
 /// The keywords of [`heavy_top`]: those of [`HeavyTop::new`] (`I1`, `I3`, `mgl`, the angles
@@ -127,21 +127,20 @@ impl<'a> Inputs<'a> {
     /// The top's parameters and its start at `p`, checked as the constructors check them.
     fn start(&self, p: usize) -> Result<(f64, f64, f64, EulerState)> {
         let (i1, i3, mgl) = (self.i1.scalar(p), self.i3.scalar(p), self.mgl.scalar(p));
-        let (theta, phi_dot) = (self.theta.scalar(p), self.phi_dot.scalar(p));
+        let (phi, theta, psi) = (self.phi.scalar(p), self.theta.scalar(p), self.psi.scalar(p));
+        let (phi_dot, theta_dot) = (self.phi_dot.scalar(p), self.theta_dot.scalar(p));
         let spin = self.spin.scalar(p);
-        let psi_dot = if self.with_spin {
-            check_spin(theta, phi_dot, spin)?;
-            spin - phi_dot * theta.cos() // 2.99, as HeavyTop::with_spin
+        let state = if self.with_spin {
+            spin_state(phi, theta, psi, phi_dot, theta_dot, spin)? // as HeavyTop::with_spin
         } else {
-            spin
-        };
-        let state = EulerState {
-            phi: self.phi.scalar(p),
-            theta,
-            psi: self.psi.scalar(p),
-            phi_dot,
-            theta_dot: self.theta_dot.scalar(p),
-            psi_dot,
+            EulerState {
+                phi,
+                theta,
+                psi,
+                phi_dot,
+                theta_dot,
+                psi_dot: spin,
+            }
         };
         check_state(i1, i3, mgl, &state, true).map_err(|e| self.renamed(e))?;
         Ok((i1, i3, mgl, state))
@@ -157,22 +156,7 @@ impl<'a> Inputs<'a> {
 
     fn top(&self, p: usize) -> Result<HeavyTop> {
         let (i1, i3, mgl, s) = self.start(p)?;
-        let top = if self.with_spin {
-            HeavyTop::with_spin(
-                i1,
-                i3,
-                mgl,
-                s.phi,
-                s.theta,
-                s.psi,
-                s.phi_dot,
-                s.theta_dot,
-                self.spin.scalar(p),
-            )
-        } else {
-            HeavyTop::new(i1, i3, mgl, s)
-        };
-        top.map_err(|e| self.renamed(e))
+        HeavyTop::new(i1, i3, mgl, s).map_err(|e| self.renamed(e))
     }
 }
 

@@ -140,6 +140,28 @@ struct Assembly {
     from_state: bool,
 }
 
+/// The state of a top started with the spin ω₃ (rad/s) instead of ψ̇: ψ̇ = ω₃ − φ̇ cos θ (2.99),
+/// so that p_ψ = I₃ω₃ (2.103) whatever φ̇; `omega3` checked finite ([`check_spin`]). Used by
+/// [`HeavyTop::with_spin`] and the sweeps.
+pub(crate) fn spin_state(
+    phi: f64,
+    theta: f64,
+    psi: f64,
+    phi_dot: f64,
+    theta_dot: f64,
+    omega3: f64,
+) -> Result<EulerState> {
+    check_spin(theta, phi_dot, omega3)?;
+    Ok(EulerState {
+        phi,
+        theta,
+        psi,
+        phi_dot,
+        theta_dot,
+        psi_dot: omega3 - phi_dot * theta.cos(), // 2.99
+    })
+}
+
 impl HeavyTop {
     /// The top with moments I₁ (about a transverse axis through the pivot, kg·m²), I₃ (about the
     /// symmetry axis), `mgl` = m g l (N·m: weight times pivot-to-centre-of-mass distance), started
@@ -253,15 +275,7 @@ impl HeavyTop {
         theta_dot: f64,
         omega3: f64,
     ) -> Result<Self> {
-        check_spin(theta, phi_dot, omega3)?;
-        let state = EulerState {
-            phi,
-            theta,
-            psi,
-            phi_dot,
-            theta_dot,
-            psi_dot: omega3 - phi_dot * theta.cos(), // 2.99
-        };
+        let state = spin_state(phi, theta, psi, phi_dot, theta_dot, omega3)?;
         Self::new(i1, i3, mgl, state).map_err(|e| e.renamed("psi_dot", "omega3"))
     }
 
