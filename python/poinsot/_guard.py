@@ -73,15 +73,18 @@ def _forwarder(func: Callable[..., Any], on_error: Callable[[BaseException], Non
     args = positional + ([f"*{varargs}"] if varargs else [])
     args += [f"{k}={k}" for k in kwonly] + ([f"**{varkw}"] if varkw else [])
 
+    # The inner function's name shows in errors for a wrong call on Python < 3.11 (co_name);
+    # a callable whose name is not an identifier (a lambda) gets a neutral one.
+    inner = func.__name__ if func.__name__.isidentifier() else "_poinsot_call"
     source = (
         f"def _make(_poinsot_func, _poinsot_on_error):\n"
-        f"    def {func.__name__}({', '.join(params)}):\n"
+        f"    def {inner}({', '.join(params)}):\n"
         f"        try:\n"
         f"            return _poinsot_func({', '.join(args)})\n"
         f"        except BaseException as _poinsot_exc:\n"
         f"            _poinsot_on_error(_poinsot_exc)\n"
         f"            raise\n"
-        f"    return {func.__name__}\n"
+        f"    return {inner}\n"
     )
     namespace: dict[str, Any] = {}
     exec(source, namespace)

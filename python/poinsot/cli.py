@@ -27,6 +27,7 @@ from typing import Any, NoReturn
 import click
 import numpy as np
 
+from ._progress import SHOW_PROGRESS_AFTER_S, delayed_bar, stderr_interactive
 from .errors import PoinsotError
 from .plots._mpl import STYLES
 
@@ -328,16 +329,8 @@ def _interactive() -> bool:
         return False
 
 
-def _stderr_interactive() -> bool:
-    """Whether stderr is a terminal: the render progress bars are drawn there, and only there."""
-    try:
-        return sys.stderr.isatty()
-    except (AttributeError, ValueError):
-        return False
-
-
-#: A render shows its progress bar once it has run this long (s): shorter ones stay silent.
-SHOW_PROGRESS_AFTER_S = 1.0
+#: Whether stderr is a terminal (render progress bars are drawn there, and only there).
+_stderr_interactive = stderr_interactive
 
 
 @contextlib.contextmanager
@@ -346,31 +339,10 @@ def render_progress(description: str) -> Iterator[Callable[[int, int], None]]:
     a set) that draws a rich progress bar on stderr once the render has taken longer than
     :data:`SHOW_PROGRESS_AFTER_S`, and only when stderr is a terminal (piped or captured output
     stays clean, as with the CLI's other progress bars); the bar is removed when done."""
-    start = time.perf_counter()
-    show = _stderr_interactive()
-    bar: Any = None
-    task: Any = None
-
-    def update(done: int, total: int) -> None:
-        nonlocal bar, task
-        if not show:
-            return
-        if bar is None:
-            if time.perf_counter() - start < SHOW_PROGRESS_AFTER_S:
-                return
-            from rich.console import Console
-            from rich.progress import Progress
-
-            bar = Progress(console=Console(stderr=True), transient=True)
-            bar.start()
-            task = bar.add_task(description, total=total)
-        bar.update(task, completed=done, total=total)
-
-    try:
+    with delayed_bar(
+        description, show=_stderr_interactive(), delay=SHOW_PROGRESS_AFTER_S
+    ) as update:
         yield update
-    finally:
-        if bar is not None:
-            bar.stop()
 
 
 def _picture_options(

@@ -383,6 +383,27 @@ def simulate(
     return Trajectory(d)
 
 
+def _batch_settings(
+    torque: Any, duration: Any, method: Any, dt: Any, max_steps: Any, refusal: str
+) -> tuple[float, str, FloatArray, float, str, float | None, int]:
+    """The settings of a batch of bodies (:func:`simulate_batch`, ``sweep.simulate``) as the
+    core takes them: the duration (s), the torque's kind, vector and scalar, the method, the
+    step (s, None: each body's default) and the step limit. ``refusal`` is the caller's reason
+    for refusing a callable torque, the message after ``"torque: "``."""
+    if torque is not None and not hasattr(torque, "_spec"):
+        raise ArgumentTypeError(f"torque: {refusal}")
+    kind, vec, scalar, _ = _torque_spec(torque, None)
+    return (
+        as_scalar(duration, "duration"),
+        kind,
+        vec,
+        scalar,
+        _method(method),
+        _optional_step(dt),
+        as_count(max_steps, "max_steps", 1),
+    )
+
+
 def _method(method: Any) -> str:
     if not isinstance(method, str):
         raise ArgumentTypeError(
@@ -455,23 +476,20 @@ def simulate_batch(
         )
         if q.ndim != 2 or q.shape[1] != 4:
             raise PoinsotError(f"attitude0: must have shape (N, 4), got {q.shape}")
-    if torque is not None and not hasattr(torque, "_spec"):
-        raise ArgumentTypeError(
-            "torque: simulate_batch takes the built-in torques only (no callables)"
-        )
-    kind, vec, scalar, _ = _torque_spec(torque, None)
+    settings = _batch_settings(
+        torque,
+        duration,
+        method,
+        dt,
+        max_steps,
+        "simulate_batch takes the built-in torques only (no callables)",
+    )
     with public_names(t="duration"):
         w_out, q_out, _steps = _core.dynamics_simulate_batch(
             m,
             w,
             q,
-            as_scalar(duration, "duration"),
-            kind,
-            vec,
-            scalar,
-            _method(method),
-            _optional_step(dt),
-            as_count(max_steps, "max_steps", 1),
+            *settings,
             as_callable(progress, "progress"),
         )
     return np.asarray(w_out), np.asarray(q_out)

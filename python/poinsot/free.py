@@ -30,6 +30,7 @@ from ._validate import (
     as_callable,
     as_choice,
     as_count,
+    as_flat,
     as_float_array,
     as_scalar,
     as_triple,
@@ -552,7 +553,7 @@ def axis_stability(
     return a, b, c
 
 
-def _rows(value: Any, name: str, size: int) -> FloatArray:
+def _row_array(value: Any, name: str, size: int) -> FloatArray:
     """An (N, size) float64 array, or a single row (size,) as (1, size)."""
     arr = as_float_array(value, name, finite=False)
     if arr.ndim == 1 and arr.shape[0] == size:
@@ -608,9 +609,9 @@ def free_body_states(
         ..."), or ``t`` (not finite, the wrong shape, beyond a body's time limit — 2⁴² rad of
         turning at its fastest rate: "body i: ..." —, or an output beyond the memory budget).
     """
-    m = _rows(moments, "moments", 3)
-    w = _rows(omega0, "omega0", 3)
-    q = None if attitude0 is None else _rows(attitude0, "attitude0", 4)
+    m = _row_array(moments, "moments", 3)
+    w = _row_array(omega0, "omega0", 3)
+    q = None if attitude0 is None else _row_array(attitude0, "attitude0", 4)
     n = max(len(m), len(w), 1 if q is None else len(q))
 
     def rows_for_all(arr: FloatArray, name: str) -> FloatArray:
@@ -620,21 +621,16 @@ def free_body_states(
 
     m, w = rows_for_all(m, "moments"), rows_for_all(w, "omega0")
     q = None if q is None else rows_for_all(q, "attitude0")
-    times = as_float_array(t, "t", finite=False)
-    if times.ndim > 2:
-        raise PoinsotError(f"t: must be a number, (M,) or (N, M), got shape {times.shape}")
-    per_body = times.ndim == 2
-    if per_body and times.shape[0] != n:
-        raise PoinsotError(f"t: a 2-D t must have N = {n} rows (one per body), got {times.shape}")
+    times, shape = as_flat(t, "t", finite=False)  # the core names a non-finite time
+    if len(shape) > 2:
+        raise PoinsotError(f"t: must be a number, (M,) or (N, M), got shape {shape}")
+    per_body = len(shape) == 2
+    if per_body and shape[0] != n:
+        raise PoinsotError(f"t: a 2-D t must have N = {n} rows (one per body), got {shape}")
     omega, attitude = _core.free_body_states(
-        m,
-        w,
-        q,
-        np.ascontiguousarray(times.reshape(-1), dtype=np.float64),
-        per_body,
-        as_callable(progress, "progress"),
+        m, w, q, times, per_body, as_callable(progress, "progress")
     )
     omega, attitude = np.asarray(omega), np.asarray(attitude)
-    if times.ndim == 0:
+    if not shape:
         return omega[:, 0, :], attitude[:, 0, :]
     return omega, attitude

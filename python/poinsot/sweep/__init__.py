@@ -51,7 +51,7 @@ from typing import Any, Callable, Optional, Union
 
 from .. import _core
 from .._validate import as_choice, as_count, as_flag, as_scalar
-from ..dynamics import DEFAULT_MAX_STEPS, TorqueLike, _method, _optional_step, _torque_spec
+from ..dynamics import DEFAULT_MAX_STEPS, TorqueLike, _batch_settings
 from ..earth import _DROP, _GRAVITY, Earth
 from ..errors import ArgumentTypeError
 from ._run import run
@@ -63,14 +63,18 @@ ProgressLike = Union[None, bool, Callable[[float], Any]]
 
 
 def uniform(low: Any, high: Any) -> Range:
-    """A keyword drawn uniformly in [``low``, ``high``] in a random sample (``samples=N``);
-    for a vector keyword ``low`` and ``high`` may be vectors (each component drawn on its own)."""
+    """A keyword drawn uniformly in [``low``, ``high``] in a random sample (``samples=N``).
+
+    ``low`` and ``high`` are in the keyword's own units (degrees or deg/s for an angle or a
+    rate with ``degrees=True``): numbers, shape (), or for a vector keyword vectors of its
+    length, (3,), each component drawn on its own. Raises :class:`PoinsotError` naming ``low``
+    or ``high`` (not finite, ``high < low``, shapes that differ)."""
     return Range(low, high)
 
 
 def log_uniform(low: Any, high: Any) -> Range:
     """A keyword drawn log-uniformly in [``low``, ``high``] (``low`` > 0): uniform in the
-    logarithm, for a quantity spanning decades."""
+    logarithm, for a quantity spanning decades. Units and shapes as :func:`uniform`."""
     return Range(low, high, log=True)
 
 
@@ -441,15 +445,15 @@ def simulate(
     The results: ``omega`` (rad/s, along ``axis``) and ``attitude`` (along ``quaternion``) at
     ``duration``: at each point those of ``simulate_batch`` of that body, bit for bit.
     """
-    kind, vec, scalar, _ = _torque_spec(torque, None)
-    if torque is not None and not hasattr(torque, "_spec"):
-        raise ArgumentTypeError(
-            "torque: a sweep takes the built-in torques only (no callables), as simulate_batch"
-        )
-    dur = as_scalar(duration, "duration")
-    step = _optional_step(dt)
-    steps = as_count(max_steps, "max_steps", 1)
-    m = _method(method)
+    settings = _batch_settings(
+        torque,
+        duration,
+        method,
+        dt,
+        max_steps,
+        "a sweep takes the built-in torques only (no callables), as simulate_batch",
+    )
+    dur, _, _, _, m, step, steps = settings
     p = plan(
         _SIMULATE,
         keywords,
@@ -458,7 +462,7 @@ def simulate(
         seed=seed,
         paired=paired,
         quantities=quantities,
-        settings=(dur, kind, vec, scalar, m, step, steps),
+        settings=settings,
         attrs={
             "duration": dur,
             "torque": repr(torque),
@@ -485,11 +489,8 @@ def _earth_settings(
         raise ArgumentTypeError(
             f"earth: must be a poinsot.Earth or None, got {type(earth).__name__}"
         )
-    rate, radius, g = earth.rotation_rate, earth.radius, earth.g
     settings = (
-        rate,
-        radius,
-        g,
+        *earth._p,  # rotation_rate, radius, g: the Earth's parameters as the core takes them
         as_choice(gravity, "gravity", _GRAVITY),
         as_flag(rotation, "rotation"),
         as_flag(centrifugal, "centrifugal"),
@@ -497,9 +498,9 @@ def _earth_settings(
         as_scalar(atol, "atol"),
         as_count(max_steps, "max_steps", 1),
     )
-    names = ("rotation_rate", "radius", "g", "gravity", "rotation", "centrifugal", "rtol", "atol")
+    names: tuple[str, ...] = ("rotation_rate", "radius", "g", "gravity", "rotation")
+    names += ("centrifugal", "rtol", "atol", "max_steps")
     attrs = {n: (int(v) if isinstance(v, bool) else v) for n, v in zip(names, settings)}
-    attrs["max_steps"] = settings[-1]
     return settings, attrs
 
 

@@ -12,8 +12,6 @@ from __future__ import annotations
 import importlib
 import itertools
 import math
-import sys
-import time
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any, Callable, Optional
@@ -21,15 +19,13 @@ from typing import Any, Callable, Optional
 import numpy as np
 
 from .. import _core
+from .._progress import delayed_bar, stderr_interactive
 from .._validate import as_callable, as_count, public_names
 from ..errors import ArgumentTypeError, PoinsotError
 from ._spec import Output, Plan, bytes_per_point, component_dim, component_labels
 
 #: The optional extra that brings xarray, dask, distributed and zarr.
 EXTRA = "parallel"
-
-#: A progress bar appears once a sweep has run this long (s): shorter ones stay silent.
-SHOW_PROGRESS_AFTER_S = 1.0
 
 _CATEGORIES: dict[str, list[str]] = _core.sweep_categories()
 
@@ -54,40 +50,19 @@ def progress_reporter(
 ) -> Iterator[Optional[Callable[[float], Any]]]:
     """A ``report(fraction)`` callable for ``progress``: the user's callable; None for
     ``progress=False``; for ``progress=None`` a rich bar on stderr, shown once the sweep has run
-    :data:`SHOW_PROGRESS_AFTER_S` and only when stderr is a terminal (else None)."""
+    :data:`poinsot._progress.SHOW_PROGRESS_AFTER_S` and only when stderr is a terminal (else
+    None; ``progress=True`` shows it in any case)."""
     if progress is False:
         yield None
         return
     if progress is not None and progress is not True:
         yield as_callable(progress, "progress")
         return
-    stderr = sys.stderr
-    interactive = bool(getattr(stderr, "isatty", lambda: False)())
-    if not interactive and progress is None:
+    if progress is None and not stderr_interactive():
         yield None
         return
-    start = time.perf_counter()
-    bar: Any = None
-    task: Any = None
-
-    def report(fraction: float) -> None:
-        nonlocal bar, task
-        if bar is None:
-            if time.perf_counter() - start < SHOW_PROGRESS_AFTER_S:
-                return
-            from rich.console import Console
-            from rich.progress import Progress
-
-            bar = Progress(console=Console(stderr=True), transient=True)
-            bar.start()
-            task = bar.add_task(description, total=1.0)
-        bar.update(task, completed=fraction)
-
-    try:
-        yield report
-    finally:
-        if bar is not None:
-            bar.stop()
+    with delayed_bar(description, show=True) as update:
+        yield lambda fraction: update(fraction, 1.0)
 
 
 # ---- one block, anywhere -------------------------------------------------------------------

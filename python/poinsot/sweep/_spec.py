@@ -103,7 +103,8 @@ class Range:
             raise PoinsotError(
                 f"high: must be >= low, got low = {lo.tolist()}, high = {hi.tolist()}"
             )
-        if as_flag(log, "log") and not np.all(lo > 0):
+        log = as_flag(log, "log")
+        if log and not np.all(lo > 0):
             raise PoinsotError(f"low: must be > 0 for a log-uniform range, got {lo.tolist()}")
         self.low = lo
         self.high = hi
