@@ -5,11 +5,17 @@ latency of many parallel clients (issue 10, item 16). Not a test: it prints figu
     python bench/lab_server_load.py --page python/poinsot/lab --clients 200 --requests 15
     git show <rev>:python/poinsot/_labserver.py > /tmp/old_labserver.py
     python bench/lab_server_load.py --server-module /tmp/old_labserver.py   # another version
+    python bench/lab_server_load.py --tricklers 40 --trickle-seconds 30   # issue 21, item 7
 
 A page load is what a browser fetches: index.html and every file under assets/ (vite's output:
 the script, the style sheet, the WebAssembly module), with a browser's Accept-Encoding; the
 bytes counted are everything the server sends (status line, headers, body). A reload sends the
 ETags back (If-None-Match), as a browser does for `Cache-Control: no-cache`.
+
+With --tricklers N, N connections each send a 64 KiB request head without its blank line, then
+one byte every 4 s (each read of the server well inside its 10 s timeout), for
+--trickle-seconds; meanwhile one normal client fetches index.html every 0.5 s, and the figures
+are its latencies and how long the server kept the tricklers open.
 """
 
 from __future__ import annotations
@@ -36,6 +42,7 @@ def load_server_module(path: str | None) -> ModuleType:
     spec = importlib.util.spec_from_file_location("labserver_under_test", path)
     assert spec is not None and spec.loader is not None
     mod = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = mod  # dataclasses look their module up there
     spec.loader.exec_module(mod)
     return mod
 
@@ -111,12 +118,66 @@ def parallel(port: int, files: list[str], clients: int, requests: int) -> tuple[
     return latencies, failures[0], time.perf_counter() - t0
 
 
+def trickled(port: int, tricklers: int, seconds: float, period: float = 4.0) -> None:
+    """`tricklers` slow-head connections against one normal client, for `seconds` s."""
+    pad = "".join(f"X-Pad-{i:02d}: {'a' * 1020}\r\n" for i in range(64))
+    head = f"GET / HTTP/1.0\r\nHost: 127.0.0.1:{port}\r\n{pad}X-Slow: ".encode()
+    stop = threading.Event()
+    held: list[float] = []
+    lock = threading.Lock()
+
+    def trickle() -> None:
+        t0 = time.perf_counter()
+        with socket.create_connection(("127.0.0.1", port), timeout=30) as s:
+            s.sendall(head)
+            s.settimeout(period)
+            while not stop.is_set():
+                try:
+                    if s.recv(1024) == b"":
+                        break
+                except (TimeoutError, socket.timeout):
+                    pass
+                except OSError:
+                    break
+                try:
+                    s.sendall(b"a")
+                except OSError:
+                    break
+        with lock:
+            held.append(time.perf_counter() - t0)
+
+    threads = [threading.Thread(target=trickle, daemon=True) for _ in range(tricklers)]
+    for t in threads:
+        t.start()
+    time.sleep(1.0)
+    latencies, failed = [], 0
+    t_end = time.perf_counter() + seconds
+    while time.perf_counter() < t_end:
+        t0 = time.perf_counter()
+        try:
+            ok = fetch(port, "/", timeout=max(1.0, t_end - t0))[0] == 200
+        except OSError:
+            ok = False
+        latencies.append(time.perf_counter() - t0)
+        failed += not ok
+        time.sleep(0.5)
+    stop.set()
+    for t in threads:
+        t.join(period + 5)
+    print(f"{tricklers} tricklers (64 KiB head, then 1 byte / {period:g} s) for {seconds:g} s: "
+          f"normal client {len(latencies)} requests, {failed} failed, max latency {max(latencies):.2f} s, "
+          f"median {statistics.median(latencies) * 1e3:.1f} ms; tricklers held open: "
+          f"max {max(held):.1f} s (closed by the server: {sum(h < seconds for h in held)})")
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--page", type=Path, default=None, help="built page directory (default: the package's)")
     ap.add_argument("--server-module", default=None, help="a _labserver.py to load instead of poinsot's")
     ap.add_argument("--clients", type=int, default=200)
     ap.add_argument("--requests", type=int, default=15, help="requests per client")
+    ap.add_argument("--tricklers", type=int, default=0, help="slow-head connections (0: skip)")
+    ap.add_argument("--trickle-seconds", type=float, default=30.0)
     args = ap.parse_args()
 
     mod = load_server_module(args.server_module)
@@ -135,6 +196,9 @@ def main() -> int:
         print(f"page: {len(files)} files, {size} bytes on disk")
         print(f"page load, bytes over the wire: first {first}, reload {reload} "
               f"({'ETags' if etags else 'no ETags'})")
+        if args.tricklers:
+            trickled(port, args.tricklers, args.trickle_seconds)
+            return 0
         lat, failed, wall = parallel(port, files, args.clients, args.requests)
         lat.sort()
         n = len(lat)

@@ -23,6 +23,11 @@ Limits (docs/lab.md, "The server's limits"), so that no client can exhaust it:
   deep (the standard library's 5 made parallel clients wait seconds for a retried connect);
 * a complete request is answered by a worker thread, at most :data:`MAX_WORKERS` at once,
   whose every read and write times out after :data:`CONNECTION_TIMEOUT_S`;
+* the whole request head has one deadline, :data:`CONNECTION_TIMEOUT_S` after the connection
+  was accepted, counted across all its reads, in the selector and in the worker alike: a head
+  handed to a worker unfinished (:data:`MAX_REQUEST_HEAD` bytes without the blank line) and
+  then trickled a byte at a time (each read well inside its own timeout) is dropped at the
+  deadline, so tricklers cannot hold the workers (issue 21, item 7);
 * compressible files (HTML, JavaScript, CSS, JSON, SVG, WebAssembly, text) are sent
   gzip-compressed to clients that accept it (``Accept-Encoding``; ``Vary: Accept-Encoding``),
   compressed once and kept in memory until the file changes; every response has an exact
@@ -34,6 +39,7 @@ from __future__ import annotations
 import gzip
 import hashlib
 import http.server
+import io
 import os
 import selectors
 import shutil
@@ -207,6 +213,15 @@ class LabHandler(http.server.BaseHTTPRequestHandler):
     def setup(self) -> None:
         super().setup()
         self.connection.settimeout(self.server.connection_timeout)  # every read and write
+        # Every read of this connection is a read of the request head (HTTP/1.0: one request
+        # per connection, and GET/HEAD have no body): all of them share one deadline.
+        deadline = getattr(self.server._worker_local, "head_deadline", None)
+        if deadline is None:  # not handed over by the gatekeeper: the deadline starts now
+            deadline = time.monotonic() + self.server.connection_timeout
+        self.rfile.close()  # the standard library's reader (it holds a reference to the socket)
+        self.rfile = io.BufferedReader(
+            _HeadReader(self.connection, deadline, self.server.connection_timeout)
+        )
 
     def finish(self) -> None:
         try:
@@ -318,13 +333,42 @@ class LabHandler(http.server.BaseHTTPRequestHandler):
             super().log_message(format, *args)
 
 
+class _HeadReader(io.RawIOBase):
+    """The reads of a request head under one deadline (``time.monotonic()`` seconds): before
+    it, a read waits at most until the deadline (and at most ``timeout`` s); at or past it, a
+    read takes only what has arrived already and raises :class:`TimeoutError` when nothing has
+    (a head that arrived in time but waited for a free worker is still read whole). The
+    standard library's handler answers a :class:`TimeoutError` by closing the connection."""
+
+    def __init__(self, sock: socket.socket, deadline: float, timeout: float) -> None:
+        super().__init__()
+        self._sock = sock
+        self._deadline = deadline
+        self._timeout = timeout
+
+    def readable(self) -> bool:
+        return True
+
+    def readinto(self, buffer: Any) -> int:
+        left = self._deadline - time.monotonic()
+        self._sock.settimeout(min(max(left, 0.0), self._timeout))  # 0: do not wait at all
+        try:
+            return self._sock.recv_into(buffer)
+        except (BlockingIOError, TimeoutError):
+            raise TimeoutError("the request head did not arrive within its deadline") from None
+        finally:
+            self._sock.settimeout(self._timeout)  # the response's writes: per write
+
+
 class LabServer(http.server.HTTPServer):
     """An HTTP server bound to the loopback interface, serving ``root``.
 
     A connection costs no thread until its request has arrived: accepted connections wait in a
     selector (at most ``max_pending`` of them, ``connection_timeout`` seconds each); a complete
     request goes to a worker thread, at most ``max_workers`` at once, whose reads and writes
-    each time out after ``connection_timeout`` seconds (see the module's limits)."""
+    each time out after ``connection_timeout`` seconds; the whole request head must arrive
+    within ``connection_timeout`` seconds of the connection's acceptance, one deadline across
+    the selector's wait and the worker's reads (see the module's limits)."""
 
     allow_reuse_address = True
     request_queue_size = REQUEST_QUEUE_SIZE
@@ -361,6 +405,7 @@ class LabServer(http.server.HTTPServer):
         self._lock = threading.Lock()
         self._assets: dict[Path, tuple[int, int, Asset]] = {}
         self._incoming: list[tuple[socket.socket, Any, float]] = []
+        self._worker_local = threading.local()  # .head_deadline of the worker's connection
         self._closing = threading.Event()
         super().__init__((host, int(port)), LabHandler)
         self._wake_r, self._wake_w = socket.socketpair()
@@ -456,10 +501,10 @@ class LabServer(http.server.HTTPServer):
                     if not head:  # the client closed (or reset) before sending a request
                         drop(conn)
                     elif b"\r\n\r\n" in head or b"\n\n" in head or len(head) >= MAX_REQUEST_HEAD:
-                        address = pending[conn][0]
+                        address, since = pending[conn]
                         sel.unregister(conn)
                         del pending[conn]
-                        self._start_worker(conn, address)
+                        self._start_worker(conn, address, since + self.connection_timeout)
                 now = time.monotonic()
                 for sock in [
                     s for s, (_, since) in pending.items() if now - since > self.connection_timeout
@@ -470,7 +515,7 @@ class LabServer(http.server.HTTPServer):
                 drop(sock)
             sel.close()
 
-    def _start_worker(self, sock: socket.socket, address: Any) -> None:
+    def _start_worker(self, sock: socket.socket, address: Any, head_deadline: float) -> None:
         # A free worker slot (workers never wait for a request, only on slow writes, which
         # time out): wait for one, unless the server is closing.
         while not self._slots.acquire(timeout=0.05):
@@ -480,14 +525,18 @@ class LabServer(http.server.HTTPServer):
         sock.setblocking(True)
         try:
             threading.Thread(
-                target=self._work, args=(sock, address), name="poinsot-lab-worker", daemon=True
+                target=self._work,
+                args=(sock, address, head_deadline),
+                name="poinsot-lab-worker",
+                daemon=True,
             ).start()
         except BaseException:
             self._slots.release()
             self.shutdown_request(sock)
             raise
 
-    def _work(self, request: Any, client_address: Any) -> None:
+    def _work(self, request: Any, client_address: Any, head_deadline: float) -> None:
+        self._worker_local.head_deadline = head_deadline
         try:
             self.finish_request(request, client_address)
         except Exception:

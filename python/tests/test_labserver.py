@@ -10,6 +10,7 @@ import gzip
 import http.client
 import os
 import socket
+import socketserver
 import struct
 import threading
 import time
@@ -333,6 +334,88 @@ def test_many_half_sent_connections_neither_pile_up_threads_nor_block_a_client(s
     finally:
         for s in socks:
             s.close()
+        srv.shutdown()
+        srv.server_close()
+
+
+# A request head of MAX_REQUEST_HEAD bytes (64 header lines of about 1 KiB: each line and the
+# header count within the standard library's limits) without the blank line, then one more
+# header trickled a byte at a time: the gatekeeper hands it to a worker (it is "full"), whose
+# per-read timeout never fires. Issue 21, item 7: 40 of them held all 32 workers for as long
+# as they trickled.
+_PAD = "".join(f"X-Pad-{i:02d}: {'a' * 1020}\r\n" for i in range(64))
+TRICKLE_HEAD = (f"GET / HTTP/1.0\r\nHost: 127.0.0.1\r\n{_PAD}X-Slow: ").encode()
+assert len(TRICKLE_HEAD) >= _labserver.MAX_REQUEST_HEAD
+
+
+def _trickle(srv: LabServer, n: int, period: float, stop: threading.Event) -> list[float | None]:
+    """`n` connections that send TRICKLE_HEAD, then one byte every `period` s until the server
+    closes them or `stop` is set; returns at once a list that each connection's thread fills
+    with the seconds from its connect to the server's close (None while still open)."""
+    closed_after: list[float | None] = [None] * n
+
+    def one(k: int) -> None:
+        with socket.create_connection(("127.0.0.1", srv.server_address[1]), timeout=5) as s:
+            t0 = time.monotonic()
+            s.sendall(TRICKLE_HEAD)
+            s.settimeout(period)
+            while not stop.is_set():
+                if _closed_by_server(s):  # waits `period` for the server's close
+                    closed_after[k] = time.monotonic() - t0
+                    return
+                try:
+                    s.sendall(b"a")
+                except OSError:
+                    closed_after[k] = time.monotonic() - t0
+                    return
+
+    for k in range(n):
+        threading.Thread(target=one, args=(k,), daemon=True).start()
+    return closed_after
+
+
+class _PerReadTimeoutOnly(_labserver.LabHandler):
+    """The handler before item 7: a timeout on each read, no deadline on the head."""
+
+    def setup(self) -> None:
+        socketserver.StreamRequestHandler.setup(self)
+        self.connection.settimeout(self.server.connection_timeout)
+
+
+@pytest.mark.parametrize("negative_control", [False, True])
+def test_a_trickled_request_head_is_cut_at_one_deadline(site: Path, negative_control: bool) -> None:
+    # Three tricklers against two workers, a byte every 0.25 s against a 1.5 s timeout: the
+    # whole head has one deadline, 1.5 s after the connection was accepted, so each trickler is
+    # closed at 1.5 s (not before; 2 s of scheduling slack) and a normal client sent meanwhile
+    # is served once they are. Negative control: with the per-read timeout only, the tricklers
+    # hold both workers for as long as they trickle and the normal client is not served.
+    timeout, period = 1.5, 0.25
+    srv = start_in_thread(site, connection_timeout=timeout, max_workers=2)
+    if negative_control:
+        srv.RequestHandlerClass = _PerReadTimeoutOnly
+    stop = threading.Event()
+    try:
+        closed_after = _trickle(srv, 3, period, stop)
+        time.sleep(0.3)  # the tricklers hold the workers
+        if negative_control:
+            with pytest.raises(TimeoutError):
+                conn = http.client.HTTPConnection("127.0.0.1", srv.server_address[1], timeout=4)
+                conn.request("GET", "/")
+                conn.getresponse()
+            assert closed_after == [None, None, None]  # 4.3 s on, all still trickling
+        else:
+            conn = http.client.HTTPConnection("127.0.0.1", srv.server_address[1], timeout=10)
+            conn.request("GET", "/")
+            resp = conn.getresponse()
+            assert resp.status == 200 and resp.read().startswith(b"<!doctype html>")
+            deadline = time.monotonic() + 5.0
+            while None in closed_after and time.monotonic() < deadline:
+                time.sleep(0.05)
+            for t in closed_after:
+                assert t is not None and timeout <= t <= timeout + 2.0, closed_after
+        conn.close()
+    finally:
+        stop.set()
         srv.shutdown()
         srv.server_close()
 
