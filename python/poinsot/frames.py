@@ -598,6 +598,9 @@ class SpringParticle:
             _fast_scalar(mass, "mass"), _fast_scalar(stiffness, "stiffness")
         )
 
+    def __reduce__(self) -> tuple[Any, ...]:  # pickling and copying: the constructor again
+        return (SpringParticle, (self.mass, self.stiffness))
+
     @property
     def mass(self) -> float:
         """m (kg)."""

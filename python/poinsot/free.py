@@ -116,6 +116,10 @@ class FreeSymmetricTop(show.Displayed):
         self.I1 = i1
         self.I3 = i3
         self._omega0 = w
+        self._attitude0 = q
+
+    def __reduce__(self) -> tuple[Any, ...]:  # pickling and copying: the constructor again
+        return (FreeSymmetricTop, (self.I1, self.I3, self._omega0, self._attitude0))
 
     @property
     def omega0(self) -> FloatArray:
@@ -381,6 +385,11 @@ class FreeRigidBody(show.Displayed):
             q = None if attitude0 is None else _quat(attitude0, "attitude0")
             core = _core.FreeBodySolution(m, w, q)
         self._core = core
+        self._attitude0 = None if attitude0 is None else q
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        # pickling and copying: the constructor again, on the floats the core was given
+        return (FreeRigidBody, (self.moments, self.omega0, self._attitude0))
 
     @property
     def moments(self) -> FloatArray:

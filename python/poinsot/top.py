@@ -124,7 +124,17 @@ class HeavyTop(show.Displayed):
     >>> phi, theta, psi = top.euler_angles([0.0, 1.0, 2.0])
     """
 
-    __slots__ = ("_core",)
+    __slots__ = ("_core", "_made")
+
+    def _build(self, constructor: str, *args: float) -> None:
+        """Makes the core's top with its ``constructor`` (``from_state``, ``from_spin``,
+        ``from_constants``) and remembers how, for pickling and copying: the copy is the same
+        constructor on the same floats, so it computes the same numbers bit for bit."""
+        self._core = getattr(_core.HeavyTopCore, constructor)(*args)
+        self._made = (constructor, args)
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return (_rebuild_heavy_top, self._made)
 
     def __init__(
         self,
@@ -140,7 +150,8 @@ class HeavyTop(show.Displayed):
         psi: float = 0.0,
         degrees: bool = False,
     ) -> None:
-        self._core = _core.HeavyTopCore.from_state(
+        self._build(
+            "from_state",
             as_scalar(I1, "I1"),
             as_scalar(I3, "I3"),
             as_scalar(mgl, "mgl"),
@@ -172,7 +183,8 @@ class HeavyTop(show.Displayed):
         whatever ``phi_dot`` (the rates as in :class:`HeavyTop`; ``omega3`` in deg/s with
         ``degrees=True``). Raises as :class:`HeavyTop`, and naming ``omega3`` if not finite."""
         top = cls.__new__(cls)
-        top._core = _core.HeavyTopCore.from_spin(
+        top._build(
+            "from_spin",
             as_scalar(I1, "I1"),
             as_scalar(I3, "I3"),
             as_scalar(mgl, "mgl"),
@@ -202,7 +214,8 @@ class HeavyTop(show.Displayed):
         Raises :class:`PoinsotError` naming ``energy`` when ``E' = E - p_psi**2/(2 I3)`` lies below
         the minimum of the effective potential (no motion has these constants)."""
         top = cls.__new__(cls)
-        top._core = _core.HeavyTopCore.from_constants(
+        top._build(
+            "from_constants",
             as_scalar(I1, "I1"),
             as_scalar(I3, "I3"),
             as_scalar(mgl, "mgl"),
@@ -546,3 +559,10 @@ class HeavyTop(show.Displayed):
             as_angle(psi_dot, "psi_dot", degrees),
         )
         return {"p_phi": p_phi, "p_psi": p_psi, "energy": energy}
+
+
+def _rebuild_heavy_top(constructor: str, args: tuple[float, ...]) -> HeavyTop:
+    """A :class:`HeavyTop` unpickled or copied: the core's ``constructor`` on ``args`` again."""
+    top = HeavyTop.__new__(HeavyTop)
+    top._build(constructor, *args)
+    return top
