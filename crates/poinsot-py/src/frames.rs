@@ -370,8 +370,7 @@ fn frame_steady_at<'py>(
     t: f64,
 ) -> PyResult<(Vec<Bound<'py, PyArray1<f64>>>, Bound<'py, PyArray2<f64>>)> {
     let motion = SteadyMotion::new(frame_arg(&frame, &attitude)?).py()?;
-    poinsot::error::check_finite("t", &[t]).py()?;
-    let f = motion.at(t);
+    let f = motion.state_at(t).py()?;
     let vecs = [
         f.origin,
         f.velocity,

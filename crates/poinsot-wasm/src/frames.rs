@@ -248,7 +248,7 @@ impl MovingFrame {
     ) -> Out<MovingFrame> {
         let t = crate::free::time(&t)?;
         let motion = fr::SteadyMotion::new(self.inner)?;
-        let inner = fr::FrameMotion::at(&motion, t);
+        let inner = motion.state_at(t)?;
         // Every number the getters of the frame at t return (origin, ω, ω̇, attitude).
         let mut values = mat_out(&inner.attitude);
         for v in [

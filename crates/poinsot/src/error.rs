@@ -85,12 +85,14 @@ pub struct Error {
 pub type Result<T> = std::result::Result<T, Error>;
 
 impl Error {
-    /// A new error of `kind` about `argument`.
+    /// A new error of `kind` about `argument`. Numbers that `message` spells out in full
+    /// beyond [1e-4, 1e16) (`{}` of an f64) are put in exponent form ([`tidy_numbers`]).
     pub fn new(kind: ErrorKind, argument: impl Into<String>, message: impl Into<String>) -> Self {
+        let message = message.into();
         Self {
             kind,
             argument: argument.into(),
-            message: message.into(),
+            message: tidy_numbers(&message).unwrap_or(message),
         }
     }
     /// An argument out of its domain.
@@ -129,7 +131,11 @@ impl Error {
 
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: {}", self.argument, self.message)
+        // A message changed after construction (a prefix, an index) is tidied here too.
+        match tidy_numbers(&self.message) {
+            Some(tidy) => write!(f, "{}: {}", self.argument, tidy),
+            None => write!(f, "{}: {}", self.argument, self.message),
+        }
     }
 }
 
@@ -144,6 +150,94 @@ pub fn num(x: f64) -> String {
     } else {
         format!("{x:e}")
     }
+}
+
+/// The decimal number `digits` (integer part `int`, fraction `frac`, no sign) in the form of
+/// [`num`] if it is spelled out in full beyond [1e-4, 1e16): `Some("1.25e-310")` for the
+/// 312 characters of `0.000…125`; `None` when it is in range, zero, or has more than 17
+/// significant digits (an exact whole number such as a `u64`, which is not an f64's `{}`).
+fn exponent_form(int: &str, frac: &str) -> Option<String> {
+    let large = int.len() > 16 && !int.starts_with('0');
+    let small = int.bytes().all(|b| b == b'0') && frac.starts_with("0000");
+    if !(large || small) {
+        return None;
+    }
+    let all: Vec<u8> = int.bytes().chain(frac.bytes()).collect();
+    let first = all.iter().position(|&b| b != b'0')?;
+    let last = all.iter().rposition(|&b| b != b'0')?;
+    let sig = &all[first..=last];
+    if sig.len() > 17 {
+        return None;
+    }
+    let exp = int.len() as i64 - 1 - first as i64;
+    let mut out = String::with_capacity(sig.len() + 8);
+    out.push(sig[0] as char);
+    if sig.len() > 1 {
+        out.push('.');
+        out.extend(sig[1..].iter().map(|&b| b as char));
+    }
+    out.push('e');
+    out.push_str(&exp.to_string());
+    Some(out)
+}
+
+/// `message` with every number spelled out in full beyond [1e-4, 1e16) — what Rust's `{}`
+/// prints for an f64 such as 1e-308 (310 characters) or 1e300 (301 digits) — rewritten in
+/// the exponent form of [`num`] (the same digits, so the same value: `2e-308`, `1e300`);
+/// `None` if there is none. Applied to every [`Error`]'s message, so that the documented
+/// form (docs/limits.md: "exponent form beyond [1e-4, 1e16)") holds for every message of the
+/// core, also where a message interpolates an f64 with `{}` instead of [`num`]. Digits that
+/// are part of a word, an exponent or a longer exact whole number are left alone.
+pub fn tidy_numbers(message: &str) -> Option<String> {
+    let bytes = message.as_bytes();
+    let word = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
+    let mut out: Option<String> = None;
+    let mut copied = 0;
+    let mut i = 0;
+    while i < bytes.len() {
+        if !bytes[i].is_ascii_digit() || (i > 0 && (word(bytes[i - 1]) || bytes[i - 1] == b'.')) {
+            i += 1;
+            continue;
+        }
+        // An exponent's digits after `e-` / `e+` belong to a number already in exponent form.
+        let after_exponent =
+            i >= 2 && matches!(bytes[i - 1], b'-' | b'+') && matches!(bytes[i - 2], b'e' | b'E');
+        let start = i;
+        while i < bytes.len() && bytes[i].is_ascii_digit() {
+            i += 1;
+        }
+        let int_end = i;
+        let mut frac_end = i;
+        if i + 1 < bytes.len() && bytes[i] == b'.' && bytes[i + 1].is_ascii_digit() {
+            i += 1;
+            while i < bytes.len() && bytes[i].is_ascii_digit() {
+                i += 1;
+            }
+            frac_end = i;
+        }
+        if after_exponent || (i < bytes.len() && (word(bytes[i]) || bytes[i] == b'.')) {
+            // Part of a longer token (1e308, x1, 1.2.3): skip it whole.
+            while i < bytes.len() && (word(bytes[i]) || bytes[i] == b'.') {
+                i += 1;
+            }
+            continue;
+        }
+        let frac = if frac_end > int_end {
+            &message[int_end + 1..frac_end]
+        } else {
+            ""
+        };
+        if let Some(short) = exponent_form(&message[start..int_end], frac) {
+            let buf = out.get_or_insert_with(|| String::with_capacity(message.len()));
+            buf.push_str(&message[copied..start]);
+            buf.push_str(&short);
+            copied = frac_end;
+        }
+    }
+    out.map(|mut buf| {
+        buf.push_str(&message[copied..]);
+        buf
+    })
 }
 
 /// A computed `value` if it is finite; otherwise an error naming the user's `argument` that
@@ -255,6 +349,34 @@ mod tests {
         assert_eq!(num(-2.5), "-2.5");
         assert_eq!(num(5e-324), "5e-324");
         assert!(check_positive("dt", 1e-308).is_ok());
+        // Numbers spelled out by `{}` become exponent form, same digits.
+        assert_eq!(
+            Error::invalid("I3", format!("must be <= 2*I1 = {}", 2e-308)).message,
+            "must be <= 2*I1 = 2e-308"
+        );
+        assert_eq!(
+            tidy_numbers(&format!("got {} and {} and {}", 1e300, -1.25e-310, 0.1)).unwrap(),
+            "got 1e300 and -1.25e-310 and 0.1"
+        );
+        assert_eq!(
+            tidy_numbers(&format!("{}", 1.2345678901234567e200)).unwrap(),
+            "1.2345678901234567e200"
+        );
+        assert_eq!(tidy_numbers(&format!("{}", 1e16)).unwrap(), "1e16");
+        assert_eq!(tidy_numbers(&format!("{}", 0.00001)).unwrap(), "1e-5");
+        // In range, already in exponent form, words, exact whole numbers: unchanged.
+        for kept in [
+            "got 0.0001 and 9999999999999998 and 1e-308 and 5e-324 and 1.5e+308",
+            "x100000000000000000000 at index 3, 0.00000 s",
+            "18446744073709551615 bytes",
+            "[1e-4, 1e16)",
+        ] {
+            assert_eq!(tidy_numbers(kept), None, "{kept}");
+        }
+        // Display applies it to a message changed after construction.
+        let mut e = Error::invalid("t", "x");
+        e.message = format!("got {}", 1e200);
+        assert_eq!(e.to_string(), "t: got 1e200");
         assert!(check_positive("dt", -1e300)
             .unwrap_err()
             .message

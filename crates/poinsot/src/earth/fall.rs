@@ -2,7 +2,7 @@
 //! (eqs. 2.30, 2.32–2.42).
 
 use super::planet::{check_latitude, Earth};
-use crate::error::{check_finite, check_non_negative, check_positive, Error, Result};
+use crate::error::{check_finite, check_non_negative, check_positive, num, Error, Result};
 use crate::frames::ParticleState;
 use crate::integrate::{dop853_until, Crossing, Options, Solution};
 use crate::Vec3;
@@ -192,13 +192,16 @@ impl Earth {
         if elevation.abs() > std::f64::consts::FRAC_PI_2 {
             return Err(Error::invalid(
                 "elevation",
-                format!("must be in [-pi/2, pi/2] rad, got {elevation}"),
+                format!("must be in [-pi/2, pi/2] rad, got {}", num(elevation)),
             ));
         }
         if height == 0.0 && elevation <= 0.0 {
             return Err(Error::invalid(
                 "elevation",
-                format!("must be > 0 for a launch from the ground, got {elevation}"),
+                format!(
+                    "must be > 0 for a launch from the ground, got {}",
+                    num(elevation)
+                ),
             ));
         }
         Ok(())
@@ -223,7 +226,7 @@ impl Earth {
         let hit = sol.event.as_ref().ok_or_else(|| {
             Error::diverged(
                 "t",
-                format!("the body did not land within t = {} s", 4.0 * t0 + 1.0),
+                format!("the body did not land within t = {} s", num(4.0 * t0 + 1.0)),
             )
         })?;
         let (time, east, north) = (hit.t, hit.y[0], hit.y[1]);
@@ -258,9 +261,39 @@ impl Earth {
         let root = vz.hypot(std::f64::consts::SQRT_2 * self.g.sqrt() * height.sqrt());
         let t_flat = vz / self.g + root / self.g;
         let t_end = crate::error::finite_result("speed", "the time of flight", 4.0 * t_flat + 1.0)?;
-        let sol = self.fly(latitude, Vec3::new(0.0, 0.0, height), v0, t_end, model)?;
+        let mut model = *model;
+        if height == 0.0 {
+            // A launch from the ground starts on the event surface (height 0): the landing
+            // is the next time the height falls to 0, which the integrator sees only if a
+            // step ends while the body is still above the ground. A toss much shorter than
+            // the first step (0.15 m/s lasts 0.015 s) would otherwise be stepped over whole
+            // and reported as never coming down; steps of at most an eighth of the flat
+            // flight time end above the ground (z(t) > 0 for 0 < t < t_flat).
+            let peak = 0.5 * vz * (vz / self.g);
+            if !(peak >= f64::MIN_POSITIVE) {
+                return Err(Error::invalid(
+                    "elevation",
+                    format!(
+                        "the toss is too low to integrate: its height v² sin² e / 2g = {} m \
+                         is below the smallest normal double (speed {} m/s, elevation {} rad)",
+                        num(peak),
+                        num(speed),
+                        num(elevation)
+                    ),
+                ));
+            }
+            model.options.max_step = model.options.max_step.min(t_flat / 8.0);
+        }
+        let sol = self.fly(latitude, Vec3::new(0.0, 0.0, height), v0, t_end, &model)?;
         let hit = sol.event.as_ref().ok_or_else(|| {
-            Error::invalid("speed", format!("the projectile does not come down within {t_end} s (is {speed} m/s an orbital speed?)"))
+            Error::invalid(
+                "speed",
+                format!(
+                    "the projectile does not come down within {} s (is {} m/s an orbital speed?)",
+                    num(t_end),
+                    num(speed)
+                ),
+            )
         })?;
         let (east, north) = (hit.y[0], hit.y[1]);
         let downrange = east * sa + north * ca;

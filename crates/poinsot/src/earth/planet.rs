@@ -3,8 +3,9 @@
 use std::f64::consts::{FRAC_PI_2, PI, SQRT_2};
 
 use crate::error::{
-    check_finite, check_non_negative, check_positive, finite_result, Error, Result,
+    check_finite, check_non_negative, check_positive, finite_result, num, Error, Result,
 };
+use crate::special::fp::{exponent, ldexp};
 use crate::Vec3;
 
 /// The Earth's sidereal rotation rate, 2π / 86164.0905 s (rad/s): the true rate, the default.
@@ -51,7 +52,7 @@ pub fn check_latitude(latitude: f64) -> Result<()> {
     } else {
         Err(Error::invalid(
             "latitude",
-            format!("must be finite and in [-pi/2, pi/2] rad ([-90, 90] degrees), got {latitude} rad ({} degrees)", latitude.to_degrees()),
+            format!("must be finite and in [-pi/2, pi/2] rad ([-90, 90] degrees), got {} rad ({} degrees)", num(latitude), num(latitude.to_degrees())),
         ))
     }
 }
@@ -103,21 +104,69 @@ impl Earth {
 
     /// The centrifugal acceleration −ω × (ω × r) at the surface (m/s², ENU), r = R ẑ:
     /// ω² R cos λ (0, −sin λ, cos λ), of magnitude ω² R cos λ (ω² R at the equator).
+    ///
+    /// Computed on mantissas with the powers of two applied last, so that ω² does not
+    /// overflow on the way to a representable ω² R cos λ; a component that is not
+    /// representable is refused, naming `rotation_rate`.
     pub fn centrifugal_acceleration(&self, latitude: f64) -> Result<Vec3> {
-        let w = self.omega_enu(latitude)?;
-        let r = Vec3::new(0.0, 0.0, self.radius);
-        Ok(-w.cross(&w.cross(&r)))
+        check_latitude(latitude)?;
+        let c = self.centrifugal_unchecked(latitude);
+        if c.iter().all(|x| x.is_finite()) {
+            Ok(c)
+        } else {
+            Err(self.overflow("the centrifugal acceleration ω² R cos λ", latitude))
+        }
+    }
+
+    /// ω² R cos λ (0, −sin λ, cos λ) on mantissas (±inf where a component overflows).
+    fn centrifugal_unchecked(&self, latitude: f64) -> Vec3 {
+        if self.rotation_rate == 0.0 {
+            return Vec3::zeros();
+        }
+        let (s, c) = latitude.sin_cos();
+        let (ew, er) = (exponent(self.rotation_rate), exponent(self.radius));
+        let mw = ldexp(self.rotation_rate, -ew);
+        let mr = ldexp(self.radius, -er);
+        // m in [1, 8): ω² R = m · 2^k exactly in the exponent.
+        let m = mw * mw * mr;
+        let k = 2 * ew + er;
+        Vec3::new(0.0, -ldexp(m * c * s, k), ldexp(m * c * c, k))
+    }
+
+    /// The error for a quantity of this Earth that overflows at `latitude`: it names
+    /// `rotation_rate`, the argument that makes it large.
+    fn overflow(&self, what: &str, latitude: f64) -> Error {
+        Error::invalid(
+            "rotation_rate",
+            format!(
+                "{what} is not representable as a finite number for rotation_rate = {} rad/s \
+                 and radius = {} m at latitude {} rad (it overflows)",
+                num(self.rotation_rate),
+                num(self.radius),
+                num(latitude)
+            ),
+        )
     }
 
     /// The effective gravity g − ω × (ω × r) at the surface (eqs. 2.30–2.31), with its
     /// magnitude and the deviation of the plumb line.
+    ///
+    /// All three are finite or the call is refused, naming `rotation_rate`: the vector, its
+    /// magnitude (a scaled hypotenuse, finite whenever the vector's length is representable)
+    /// and the deviation (never computed from infinities).
     pub fn effective_gravity(&self, latitude: f64) -> Result<EffectiveGravity> {
         let c = self.centrifugal_acceleration(latitude)?;
         let vector = Vec3::new(0.0, 0.0, -self.g) + c;
+        // |g_e| = hypot(g_y, g_z): finite whenever the length is (the norm of the sum of
+        // squares overflows at 1e154).
+        let magnitude = vector.y.hypot(vector.z);
+        if !magnitude.is_finite() {
+            return Err(self.overflow("the magnitude of the effective gravity", latitude));
+        }
         let deviation = (-vector.y).atan2(-vector.z);
         Ok(EffectiveGravity {
             vector,
-            magnitude: vector.norm(),
+            magnitude,
             deviation,
         })
     }
@@ -127,7 +176,19 @@ impl Earth {
     pub fn coriolis_acceleration(&self, latitude: f64, velocity: &Vec3) -> Result<Vec3> {
         check_finite("velocity", velocity.as_slice())?;
         let w = self.omega_enu(latitude)?;
-        Ok(-2.0 * w.cross(velocity))
+        let a = -2.0 * w.cross(velocity);
+        if a.iter().all(|x| x.is_finite()) {
+            Ok(a)
+        } else {
+            Err(Error::invalid(
+                "velocity",
+                format!(
+                    "the Coriolis acceleration −2 ω × v is not representable as a finite number \
+                     for this velocity and rotation_rate = {} rad/s (it overflows)",
+                    num(self.rotation_rate)
+                ),
+            ))
+        }
     }
 
     /// The Coriolis parameter f = 2 ω sin λ (1/s): horizontal motion turns at −f (clockwise
@@ -135,7 +196,12 @@ impl Earth {
     /// unit's 2ω.
     pub fn coriolis_parameter(&self, latitude: f64) -> Result<f64> {
         check_latitude(latitude)?;
-        Ok(2.0 * self.rotation_rate * latitude.sin())
+        let f = 2.0 * self.rotation_rate * latitude.sin();
+        if f.is_finite() {
+            Ok(f)
+        } else {
+            Err(self.overflow("the Coriolis parameter 2 ω sin λ", latitude))
+        }
     }
 
     /// The unit's first-order eastward deflection (eq. 2.42) of a body dropped from rest
@@ -182,13 +248,31 @@ impl Earth {
         Ok(-self.rotation_rate * latitude.sin())
     }
 
-    /// The period of inertial oscillations, 2π/|f| = π/(ω |sin λ|) (s); infinite at the equator.
+    /// The period of inertial oscillations, 2π/|f| = π/(ω |sin λ|) (s); infinite where f = 0
+    /// (at the equator, or on a planet that does not turn: there is no inertial oscillation).
+    ///
+    /// Where f ≠ 0 but the period is beyond the largest double (|sin λ| below ~1e-300), the
+    /// call is refused naming `latitude`: an infinity would claim there is no oscillation.
     pub fn inertial_period(&self, latitude: f64) -> Result<f64> {
-        let f = self.coriolis_parameter(latitude)?;
-        Ok(if f == 0.0 {
-            f64::INFINITY
+        check_latitude(latitude)?;
+        let w_sin = self.rotation_rate * latitude.sin().abs();
+        if w_sin == 0.0 {
+            return Ok(f64::INFINITY);
+        }
+        let period = PI / w_sin;
+        if period.is_finite() {
+            Ok(period)
         } else {
-            2.0 * PI / f.abs()
-        })
+            Err(Error::invalid(
+                "latitude",
+                format!(
+                    "the inertial period π/(ω |sin λ|) at latitude {} rad with rotation_rate = {} \
+                     rad/s is beyond the largest double (it overflows); it is infinite only \
+                     where ω sin λ = 0",
+                    num(latitude),
+                    num(self.rotation_rate)
+                ),
+            ))
+        }
     }
 }

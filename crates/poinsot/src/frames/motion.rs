@@ -93,6 +93,46 @@ impl SteadyMotion {
     pub fn initial(&self) -> &MovingFrame {
         &self.initial
     }
+
+    /// The state at time `t` (s), checked: `t` must be finite, and every number of the state
+    /// (origin, velocity, ω, attitude) finite; otherwise the error names `t` (the frame
+    /// was valid at t = 0: only the time carried it out of the range of doubles, e.g. the
+    /// origin ½ R̈ t² at t = 1e200).
+    pub fn state_at(&self, t: f64) -> Result<MovingFrame> {
+        crate::error::check_finite("t", &[t])?;
+        let f = FrameMotion::at(self, t);
+        let parts = [
+            f.origin.as_slice(),
+            f.velocity.as_slice(),
+            f.acceleration.as_slice(),
+            f.angular_velocity.as_slice(),
+            f.angular_acceleration.as_slice(),
+            f.attitude.as_slice(),
+        ];
+        for (name, values) in [
+            "origin",
+            "velocity",
+            "acceleration",
+            "angular velocity",
+            "angular acceleration",
+            "attitude",
+        ]
+        .iter()
+        .zip(parts)
+        {
+            if !values.iter().all(|x| x.is_finite()) {
+                return Err(Error::invalid(
+                    "t",
+                    format!(
+                        "the frame's {name} at t = {} s is not representable as finite numbers \
+                         (it overflows)",
+                        crate::error::num(t)
+                    ),
+                ));
+            }
+        }
+        Ok(f)
+    }
 }
 
 /// The rotation by `angle` about the unit `axis` (Rodrigues' formula), active.

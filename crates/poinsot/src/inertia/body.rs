@@ -92,25 +92,26 @@ impl MassProperties {
         }
     }
 
-    /// A body whose inertia about the point `point` (m) is `inertia_about_point` (kg·m²): the
+    /// A body whose inertia about the point `about` (m) is `inertia_about_point` (kg·m²): the
     /// parallel-axis theorem run backwards, `I_cm = I_P − m (|d|² 1 − d dᵀ)`, `d = com − P`.
     /// The physical checks of the result allow for the round-off of that subtraction
-    /// (relative to `|I_P|`, see [`tensor::check_inertia_scaled`]).
+    /// (relative to `|I_P|`, see [`tensor::check_inertia_scaled`]). Errors about the point
+    /// name `about`, the keyword of the front ends (`RigidBody.from_inertia(..., about=P)`).
     pub fn from_inertia_about(
         mass: f64,
         center_of_mass: Vec3,
         inertia_about_point: Mat3,
-        point: Vec3,
+        about: Vec3,
     ) -> Result<Self> {
         check_positive("mass", mass)?;
         check_finite("center_of_mass", center_of_mass.as_slice())?;
-        check_finite("point", point.as_slice())?;
+        check_finite("about", about.as_slice())?;
         check_finite("inertia", inertia_about_point.as_slice())
             .map_err(|e| Error::inertia("inertia", e.message))?;
-        let cm = tensor::shift_to_com(&inertia_about_point, mass, &center_of_mass, &point);
+        let cm = tensor::shift_to_com(&inertia_about_point, mass, &center_of_mass, &about);
         if !cm.iter().all(|x| x.is_finite()) {
             return Err(Error::invalid(
-                "point",
+                "about",
                 "is so far from the centre of mass that the parallel-axis term m (|d|² 1 − d dᵀ) \
                  exceeds the largest finite double (1.8e+308 kg·m²)",
             ));
