@@ -6,25 +6,23 @@ use poinsot::analytic::{
 };
 use pyo3::prelude::*;
 
-use crate::control::run;
+use crate::control::{map_each, run};
 use crate::convert::{
     opt_quat, plain_triple, rows_view, slice, times, triple, vec3, Numbers, Rows, Vector,
 };
 use crate::errors::IntoPy;
 
-/// `f` at each of the times `t` (N,), each finite → (N, K) rows.
-fn at_times<T, const K: usize>(
+/// `f` at each of the times `t` (N,), each finite → (N, K) rows (without the GIL, stoppable by
+/// Ctrl-C).
+fn at_times<T: Send, const K: usize>(
+    py: Python<'_>,
     t: &PyReadonlyArray1<'_, f64>,
-    f: impl Fn(f64) -> poinsot::Result<T>,
+    f: impl Fn(f64) -> poinsot::Result<T> + Send,
 ) -> PyResult<Rows<K>>
 where
     Rows<K>: FromIterator<T>,
 {
-    times(t)?
-        .into_iter()
-        .map(f)
-        .collect::<poinsot::Result<_>>()
-        .py()
+    Ok(map_each(py, &times(t)?, move |&t| f(t))?.into_iter().collect())
 }
 
 /// The closed-form free symmetric top (private; use `poinsot.FreeSymmetricTop`).
@@ -102,16 +100,16 @@ impl PySymmetricTop {
         self.inner.shape().as_str()
     }
     /// ω at times t (N,) → (N, 3).
-    fn omega(&self, t: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<3>> {
-        at_times(&t, |t| self.inner.omega(t))
+    fn omega(&self, py: Python<'_>, t: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<3>> {
+        at_times(py, &t, |t| self.inner.omega(t))
     }
     /// Attitudes at times t (N,) → (N, 4) [w, x, y, z].
-    fn attitude(&self, t: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<4>> {
-        at_times(&t, |t| self.inner.attitude(t))
+    fn attitude(&self, py: Python<'_>, t: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<4>> {
+        at_times(py, &t, |t| self.inner.attitude(t))
     }
     /// The symmetry axis in space at times t (N,) → (N, 3).
-    fn symmetry_axis(&self, t: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<3>> {
-        at_times(&t, |t| self.inner.symmetry_axis(t))
+    fn symmetry_axis(&self, py: Python<'_>, t: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<3>> {
+        at_times(py, &t, |t| self.inner.symmetry_axis(t))
     }
     /// ω at one time t → (3,).
     fn omega_at(&self, t: f64) -> PyResult<Vector> {
@@ -220,12 +218,7 @@ impl PyFreeBody {
     /// (ω (N, 3) body, attitude (N, 4) [w, x, y, z], signs continuous) at times t (N,).
     fn state(&self, py: Python<'_>, t: PyReadonlyArray1<'_, f64>) -> PyResult<(Rows<3>, Rows<4>)> {
         let times = times(&t)?;
-        let (w, q) = if times.len() > 4096 {
-            py.detach(|| self.inner.sample(&times))
-        } else {
-            self.inner.sample(&times)
-        }
-        .py()?;
+        let (w, q) = run(py, None, || self.inner.sample(&times))?;
         Ok((Rows(w), Rows(q)))
     }
     /// (ω (3,) body, attitude (4,) [w, x, y, z]) at one time t: `state` of [t] without the
@@ -235,16 +228,22 @@ impl PyFreeBody {
         Ok((Vector(w), Numbers(q)))
     }
     /// ω in space components at times t (N,) → (N, 3) (the herpolhode).
-    fn omega_space(&self, t: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<3>> {
-        at_times(&t, |t| self.inner.omega_space(t))
+    fn omega_space(&self, py: Python<'_>, t: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<3>> {
+        at_times(py, &t, |t| self.inner.omega_space(t))
     }
     /// L(t) = I·ω(t) in body components at times t (N,) → (N, 3).
-    fn angular_momentum_body(&self, t: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<3>> {
-        at_times(&t, |t| self.inner.angular_momentum_body(t))
+    fn angular_momentum_body(
+        &self,
+        py: Python<'_>,
+        t: PyReadonlyArray1<'_, f64>,
+    ) -> PyResult<Rows<3>> {
+        at_times(py, &t, |t| self.inner.angular_momentum_body(t))
     }
     /// `samples` points of the polhode (N, 3).
-    fn polhode(&self, samples: usize) -> PyResult<Rows<3>> {
-        Ok(self.inner.polhode(samples).py()?.into_iter().collect())
+    fn polhode(&self, py: Python<'_>, samples: usize) -> PyResult<Rows<3>> {
+        Ok(run(py, None, || self.inner.polhode(samples))?
+            .into_iter()
+            .collect())
     }
     /// The invariable plane's unit normal L̂ (3,).
     #[getter]
@@ -252,8 +251,13 @@ impl PyFreeBody {
         Vector(self.inner.invariable_plane_normal())
     }
     /// Poinsot's contact point at times t (N,) → (N, 3), space (`body` false) or body components.
-    fn contact_point(&self, t: PyReadonlyArray1<'_, f64>, body: bool) -> PyResult<Rows<3>> {
-        at_times(&t, |t| {
+    fn contact_point(
+        &self,
+        py: Python<'_>,
+        t: PyReadonlyArray1<'_, f64>,
+        body: bool,
+    ) -> PyResult<Rows<3>> {
+        at_times(py, &t, |t| {
             if body {
                 self.inner.contact_point_body(t)
             } else {
@@ -262,11 +266,8 @@ impl PyFreeBody {
         })
     }
     /// `samples` points of the polhode on the inertia ellipsoid (N, 3).
-    fn contact_polhode(&self, samples: usize) -> PyResult<Rows<3>> {
-        Ok(self
-            .inner
-            .contact_polhode(samples)
-            .py()?
+    fn contact_polhode(&self, py: Python<'_>, samples: usize) -> PyResult<Rows<3>> {
+        Ok(run(py, None, || self.inner.contact_polhode(samples))?
             .into_iter()
             .collect())
     }

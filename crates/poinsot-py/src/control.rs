@@ -82,6 +82,17 @@ pub fn run<T: Send>(
     monitor.finish(py, result)
 }
 
+/// `f` of each of `items` (a user's array), in order, with the GIL released and stoppable by
+/// Ctrl-C (the core's [`poinsot::control::try_map`], polled every chunk of items): [`run`]
+/// for the bindings that evaluate a core function at each element.
+pub fn map_each<T: Sync, R: Send>(
+    py: Python<'_>,
+    items: &[T],
+    f: impl Fn(&T) -> poinsot::Result<R> + Send,
+) -> PyResult<Vec<R>> {
+    run(py, None, || poinsot::control::try_map(items, f))
+}
+
 /// Like [`run`], but keeps the GIL: for work that calls Python (torque callbacks).
 pub fn run_attached<T>(
     py: Python<'_>,

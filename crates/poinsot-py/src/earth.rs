@@ -8,7 +8,7 @@ use poinsot::Vec3;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::control::run;
+use crate::control::{map_each, run};
 use crate::errors::{invalid, IntoPy};
 use crate::frames::{array_in, options, rows_in, rows_out, solution_dict, vec_in};
 use poinsot::limits::check_count;
@@ -29,13 +29,9 @@ fn gravity(name: &str) -> PyResult<Gravity> {
 fn per_latitude<'py>(
     py: Python<'py>,
     latitude: &PyReadonlyArray1<'py, f64>,
-    f: impl Fn(f64) -> poinsot::Result<f64>,
+    f: impl Fn(f64) -> poinsot::Result<f64> + Send,
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-    let out: Vec<f64> = vec_in(latitude)
-        .into_iter()
-        .map(f)
-        .collect::<poinsot::Result<_>>()
-        .py()?;
+    let out = map_each(py, &vec_in(latitude), move |&l| f(l))?;
     Ok(PyArray1::from_vec(py, out))
 }
 
@@ -49,11 +45,9 @@ fn earth_omega_enu<'py>(
     latitude: PyReadonlyArray1<'py, f64>,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let e = earth(rotation_rate, radius, g)?;
-    let rows: Vec<[f64; 3]> = vec_in(&latitude)
-        .into_iter()
-        .map(|l| e.omega_enu(l).map(|w| [w.x, w.y, w.z]))
-        .collect::<poinsot::Result<_>>()
-        .py()?;
+    let rows = map_each(py, &vec_in(&latitude), |&l| {
+        e.omega_enu(l).map(|w| [w.x, w.y, w.z])
+    })?;
     Ok(rows_out(py, &rows))
 }
 
@@ -73,11 +67,17 @@ fn earth_effective_gravity<'py>(
     Bound<'py, PyArray2<f64>>,
 )> {
     let e = earth(rotation_rate, radius, g)?;
-    let (mut vecs, mut mags, mut devs, mut cents) =
-        (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-    for l in vec_in(&latitude) {
-        let eg = e.effective_gravity(l).py()?;
-        let c = e.centrifugal_acceleration(l).py()?;
+    let each = map_each(py, &vec_in(&latitude), |&l| {
+        Ok((e.effective_gravity(l)?, e.centrifugal_acceleration(l)?))
+    })?;
+    let n = each.len();
+    let (mut vecs, mut mags, mut devs, mut cents) = (
+        Vec::with_capacity(n),
+        Vec::with_capacity(n),
+        Vec::with_capacity(n),
+        Vec::with_capacity(n),
+    );
+    for (eg, c) in each {
         vecs.push([eg.vector.x, eg.vector.y, eg.vector.z]);
         mags.push(eg.magnitude);
         devs.push(eg.deviation);
@@ -107,8 +107,8 @@ fn earth_coriolis_acceleration<'py>(
     if lats.len() != vels.len() {
         return Err(invalid("velocity_enu", "must have one row per latitude"));
     }
-    let mut rows = Vec::with_capacity(lats.len());
-    for (l, v) in lats.iter().zip(&vels) {
+    let pairs: Vec<(f64, [f64; 3])> = lats.into_iter().zip(vels).collect();
+    let rows = map_each(py, &pairs, |(l, v)| {
         let a = e
             .coriolis_acceleration(*l, &Vec3::new(v[0], v[1], v[2]))
             .map_err(|mut err| {
@@ -116,10 +116,9 @@ fn earth_coriolis_acceleration<'py>(
                     err.argument = "velocity_enu".into();
                 }
                 err
-            });
-        let a = a.py()?;
-        rows.push([a.x, a.y, a.z]);
-    }
+            })?;
+        Ok([a.x, a.y, a.z])
+    })?;
     Ok(rows_out(py, &rows))
 }
 
@@ -167,15 +166,15 @@ fn earth_deflection<'py>(
     if hs.len() != ls.len() {
         return Err(invalid("height", "must have one value per latitude"));
     }
-    let out: Vec<f64> = hs
-        .iter()
-        .zip(&ls)
-        .map(|(&h, &l)| match direction {
-            "east" => e.eastward_deflection(h, l),
-            _ => e.southward_deflection(h, l),
-        })
-        .collect::<poinsot::Result<_>>()
-        .py()?;
+    let east = direction == "east";
+    let pairs: Vec<(f64, f64)> = hs.into_iter().zip(ls).collect();
+    let out = map_each(py, &pairs, |&(h, l)| {
+        if east {
+            e.eastward_deflection(h, l)
+        } else {
+            e.southward_deflection(h, l)
+        }
+    })?;
     Ok(PyArray1::from_vec(py, out))
 }
 

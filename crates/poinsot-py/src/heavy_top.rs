@@ -7,6 +7,7 @@ use poinsot::analytic::{self, EulerState, HeavyTop};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+use crate::control::run;
 use crate::convert::{self, Rows, Values};
 use crate::errors::{invalid, IntoPy};
 
@@ -21,7 +22,7 @@ fn slice<'a>(argument: &str, a: &'a PyReadonlyArray1<'_, f64>) -> PyResult<&'a [
     convert::slice(argument, a, "must be a C-contiguous float64 array")
 }
 
-/// Evaluates `f` over `times` into a new (N, 3) array, without the GIL.
+/// Evaluates `f` over `times` into a new (N, 3) array, without the GIL, stoppable by Ctrl-C.
 fn batch<'py>(
     py: Python<'py>,
     times: &PyReadonlyArray1<'py, f64>,
@@ -35,9 +36,7 @@ fn batch<'py>(
     {
         let mut rw = arr.readwrite();
         let out = rw.as_slice_mut().map_err(|e| invalid("t", e.to_string()))?;
-        py.detach(|| f(ts, out))
-            .map_err(|e| e.renamed("times", "t"))
-            .py()?;
+        run(py, None, || f(ts, out).map_err(|e| e.renamed("times", "t")))?;
     }
     Ok(arr)
 }

@@ -130,17 +130,27 @@ impl PyMassProperties {
     }
 
     /// Closed triangle mesh: vertices (m, (N, 3) float64), faces ((M, 3) int64), density
-    /// (kg/m³). Runs without the GIL.
+    /// (kg/m³); `merge`: first merge vertices within the core's tolerance
+    /// (`mesh_mass_properties_merging`). Runs without the GIL; Ctrl-C stops it.
     #[staticmethod]
+    #[pyo3(signature = (vertices, faces, density, merge = false))]
     fn from_mesh(
         py: Python<'_>,
         vertices: PyReadonlyArray2<'_, f64>,
         faces: PyReadonlyArray2<'_, i64>,
         density: f64,
+        merge: bool,
     ) -> PyResult<Self> {
         let v = rows3_slice("vertices", &vertices)?;
         let f = rows3_slice("faces", &faces)?;
-        wrap(py.detach(|| inertia::mesh_mass_properties(v, f, density)))
+        let inner = crate::control::run(py, None, || {
+            if merge {
+                inertia::mesh_mass_properties_merging(v, f, density)
+            } else {
+                inertia::mesh_mass_properties(v, f, density)
+            }
+        })?;
+        Ok(Self { inner })
     }
 
     /// Density (a callable (N, 3) float64 → (N,) float64, kg/m³) over bounds ((3, 2), m).
@@ -341,10 +351,18 @@ fn check_inertia(inertia: PyReadonlyArray2<'_, f64>) -> PyResult<Matrix> {
         .py()
 }
 
+/// Checks that reading a mesh file of `triangles` triangles fits in the memory budget; the
+/// error names `path`.
+#[pyfunction]
+fn check_mesh_file(triangles: f64) -> PyResult<()> {
+    inertia::check_mesh_file(triangles).py()
+}
+
 /// Registers this file's functions and classes on the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyMassProperties>()?;
     m.add_function(wrap_pyfunction!(classify, m)?)?;
     m.add_function(wrap_pyfunction!(check_inertia, m)?)?;
+    m.add_function(wrap_pyfunction!(check_mesh_file, m)?)?;
     Ok(())
 }

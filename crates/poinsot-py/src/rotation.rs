@@ -2,12 +2,14 @@
 //!
 //! Every function takes C-contiguous float64 batches `(N, ...)` prepared by
 //! `python/poinsot/rotation.py` (which broadcasts leading dimensions, handles degrees and scipy
-//! rotations) and returns new arrays; the GIL is released while the core computes.
+//! rotations) and returns new arrays; the GIL is released while the core computes, and Ctrl-C
+//! stops it ([`run`]).
 use numpy::{PyArray1, PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn};
 use poinsot::rotation::{self as rot, EulerSequence, Frame};
 use poinsot::Vec3;
 use pyo3::prelude::*;
 
+use crate::control::run;
 use crate::convert::{matrix, parse, records, rows3, vector, zeros, Matrix, Vector};
 use crate::errors::{invalid, IntoPy};
 
@@ -25,7 +27,7 @@ fn batch<'py>(
         let slice = rw
             .as_slice_mut()
             .map_err(|_| invalid("out", "not contiguous"))?;
-        py.detach(|| kernel(slice)).py()?;
+        run(py, None, || kernel(slice))?;
     }
     Ok(out)
 }
@@ -63,8 +65,9 @@ fn matrix_to_euler<'py>(
         let slice = rw
             .as_slice_mut()
             .map_err(|_| invalid("out", "not contiguous"))?;
-        py.detach(|| rot::matrix_to_euler_batch(seq, m, slice, &mut locked))
-            .py()?;
+        run(py, None, || {
+            rot::matrix_to_euler_batch(seq, m, slice, &mut locked)
+        })?;
     }
     Ok((out, PyArray1::from_vec(py, locked)))
 }
@@ -145,7 +148,7 @@ fn rotate_vectors<'py>(
 #[allow(non_snake_case)]
 fn check_rotation_matrix(py: Python<'_>, R: PyReadonlyArrayDyn<'_, f64>, tol: f64) -> PyResult<()> {
     let (m, _) = records("R", &R, &[3, 3])?;
-    py.detach(|| rot::check_rotation_matrix_batch(m, tol)).py()
+    run(py, None, || rot::check_rotation_matrix_batch(m, tol))
 }
 
 /// Angular velocities `(N, 3)` (rad/s, in `frame`) from angles and rates `(N, 3)`.
@@ -199,32 +202,30 @@ fn screw_axis(
     Ok((Vector(s.axis), Vector(s.point), s.angle, s.slide, s.pitch))
 }
 
-/// The screw `(axis, point, angle, slide)` as a core `Screw` (checked: unit axis, finite).
+/// The screw `(axis, point, angle, slide)` as a core `Screw` (checked by `Screw::new`).
 fn screw_from_parts(
     axis: &numpy::PyReadonlyArray1<'_, f64>,
     point: &numpy::PyReadonlyArray1<'_, f64>,
     angle: f64,
     slide: f64,
 ) -> PyResult<rot::Screw> {
-    let axis = vector("axis", axis)?;
-    let point = vector("point", point)?;
-    poinsot::error::check_finite("angle", &[angle]).py()?;
-    poinsot::error::check_finite("slide", &[slide]).py()?;
-    let n = axis.norm();
-    if !(n.is_finite() && (n - 1.0).abs() <= 1e-9) {
-        return Err(invalid(
-            "axis",
-            format!("must be a unit vector, got norm {n}"),
-        ));
-    }
-    // `pitch` is not used by `displacement` or `apply`.
-    Ok(rot::Screw {
-        axis,
-        point,
-        angle,
-        slide,
-        pitch: 0.0,
-    })
+    rot::Screw::new(vector("axis", axis)?, vector("point", point)?, angle, slide, None).py()
+}
+
+/// A screw from its parts, checked by the core: `(axis, point, angle, slide, pitch)` with the
+/// axis normalised and the pitch derived (a `pitch` given must agree).
+#[pyfunction]
+#[pyo3(signature = (axis, point, angle, slide, pitch=None))]
+fn screw_new(
+    axis: numpy::PyReadonlyArray1<'_, f64>,
+    point: numpy::PyReadonlyArray1<'_, f64>,
+    angle: f64,
+    slide: f64,
+    pitch: Option<f64>,
+) -> PyResult<(Vector, Vector, f64, f64, f64)> {
+    let s = rot::Screw::new(vector("axis", &axis)?, vector("point", &point)?, angle, slide, pitch)
+        .py()?;
+    Ok((Vector(s.axis), Vector(s.point), s.angle, s.slide, s.pitch))
 }
 
 /// The displacement `(R (3, 3), t (3,))` of a screw.
@@ -288,6 +289,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(angular_velocity, m)?)?;
     m.add_function(wrap_pyfunction!(euler_rates, m)?)?;
     m.add_function(wrap_pyfunction!(screw_axis, m)?)?;
+    m.add_function(wrap_pyfunction!(screw_new, m)?)?;
     m.add_function(wrap_pyfunction!(screw_displacement, m)?)?;
     m.add_function(wrap_pyfunction!(screw_displacement_at, m)?)?;
     m.add_function(wrap_pyfunction!(screw_apply, m)?)?;

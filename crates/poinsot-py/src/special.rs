@@ -3,6 +3,7 @@ use numpy::{PyArray2, PyReadonlyArray1};
 use poinsot::special::{self, Jacobi};
 use pyo3::prelude::*;
 
+use crate::control::map_each;
 use crate::errors::{invalid, IntoPy};
 use crate::frames::{rows_out, vec_in};
 
@@ -15,11 +16,9 @@ fn special_jacobi<'py>(
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let u = vec_in(&u);
     let j = Jacobi::new(m).py()?;
-    let rows = u
-        .iter()
-        .map(|&x| j.eval_checked(x).map(|v| [v.sn, v.cn, v.dn, v.am]))
-        .collect::<poinsot::Result<Vec<[f64; 4]>>>()
-        .py()?;
+    let rows = map_each(py, &u, |&x| {
+        j.eval_checked(x).map(|v| [v.sn, v.cn, v.dn, v.am])
+    })?;
     Ok(rows_out(py, &rows))
 }
 

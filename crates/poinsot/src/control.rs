@@ -255,6 +255,95 @@ pub fn parallel<R: Send>(
     work(&cancel)
 }
 
+/// Items per chunk of the array loops ([`try_map`], [`try_map_n`], [`fill_chunks`]): the
+/// monitor (or, in parallel, the stop flag) is asked between two chunks, so that Ctrl-C stops
+/// an evaluation over a user's array within a poll period whatever its length.
+pub const CHUNK: usize = 1024;
+
+/// Parallel loops of fewer chunks than this run without the watching thread of [`parallel`]
+/// (starting it costs more than such a loop takes).
+const WATCHED_CHUNKS: usize = 16;
+
+/// `f(i)` for `i` in `0..n`, in order, on this thread, the monitor polled every [`CHUNK`]
+/// items; the first error stops the loop.
+pub fn try_map_n<R>(n: usize, mut f: impl FnMut(usize) -> Result<R>) -> Result<Vec<R>> {
+    let mut out = Vec::with_capacity(n);
+    let mut start = 0;
+    while start < n {
+        let end = (start + CHUNK).min(n);
+        tick_by(CHUNK as u32)?;
+        for i in start..end {
+            out.push(f(i)?);
+        }
+        start = end;
+    }
+    Ok(out)
+}
+
+/// `f` of each of `items`, in order, on this thread, the monitor polled every [`CHUNK`] items:
+/// the loop of an evaluation over an array. The first error stops the loop.
+pub fn try_map<T, R>(items: &[T], mut f: impl FnMut(&T) -> Result<R>) -> Result<Vec<R>> {
+    try_map_n(items.len(), |i| f(&items[i]))
+}
+
+/// Fills `out` chunk by chunk: `f(start, chunk)` for consecutive chunks of `chunk` elements
+/// (the last one shorter), `start` the index in `out` of the chunk's first element. With
+/// `parallel` the chunks run on rayon's threads under [`parallel`] (each one first checks the
+/// stop flag, so Ctrl-C stops the loop within a chunk's time); otherwise in order on this
+/// thread, the monitor polled before each chunk. Returns the error of a failing chunk: the
+/// first on this thread, any one in parallel (a caller that must name the first failing
+/// element looks for it again, unless the error is [`ErrorKind::Interrupted`]).
+pub fn fill_chunks<T: Send>(
+    out: &mut [T],
+    chunk: usize,
+    parallel: bool,
+    f: impl Fn(usize, &mut [T]) -> Result<()> + Sync + Send,
+) -> Result<()> {
+    use rayon::prelude::*;
+    let chunk = chunk.max(1);
+    if !parallel {
+        let ticks = u32::try_from(chunk).unwrap_or(u32::MAX);
+        for (c, ys) in out.chunks_mut(chunk).enumerate() {
+            tick_by(ticks)?;
+            f(c * chunk, ys)?;
+        }
+        return Ok(());
+    }
+    let chunks = out.len().div_ceil(chunk);
+    if chunks < WATCHED_CHUNKS {
+        return out
+            .par_chunks_mut(chunk)
+            .enumerate()
+            .try_for_each(|(c, ys)| f(c * chunk, ys));
+    }
+    self::parallel(out.len() as u64, |cancel| {
+        out.par_chunks_mut(chunk)
+            .enumerate()
+            .try_for_each(|(c, ys)| {
+                cancel.check()?;
+                f(c * chunk, ys)?;
+                cancel.advance(ys.len() as u64);
+                Ok(())
+            })
+    })
+}
+
+/// `f(range)` for consecutive ranges of `chunk` indices covering `0..n`, as [`fill_chunks`]
+/// (in parallel or on this thread, stoppable between two ranges): a loop that writes nothing
+/// or writes into several buffers.
+pub fn for_ranges(
+    n: usize,
+    chunk: usize,
+    parallel: bool,
+    f: impl Fn(std::ops::Range<usize>) -> Result<()> + Sync + Send,
+) -> Result<()> {
+    // Zero-sized elements: the vector allocates nothing.
+    let mut units = vec![(); n];
+    fill_chunks(&mut units, chunk, parallel, |start, c| {
+        f(start..start + c.len())
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -472,7 +472,10 @@ impl FreeRigidBody {
     pub fn sample(&self, times: &[f64]) -> Result<(Vec<[f64; 3]>, Vec<Quaternion>)> {
         let mut omega = Vec::with_capacity(times.len());
         let mut attitude: Vec<Quaternion> = Vec::with_capacity(times.len());
-        for &t in times {
+        for (i, &t) in times.iter().enumerate() {
+            if i % crate::control::CHUNK == 0 {
+                crate::control::tick_by(crate::control::CHUNK as u32)?; // Ctrl-C
+            }
             let (w, q) = self.state(t)?;
             let q = match attitude.last() {
                 Some(prev) => same_hemisphere(q, prev),

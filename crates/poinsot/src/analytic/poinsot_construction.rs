@@ -89,15 +89,11 @@ impl FreeRigidBody {
     /// matter. Errors name `samples` (must be ≥ 2).
     pub fn polhode(&self, samples: usize) -> Result<Vec<Vec3>> {
         let scale = *self.scale();
-        Ok(self
-            .polhode_hat(samples)?
-            .into_iter()
-            .map(|w| scale.omega(&w))
-            .collect())
+        self.polhode_hat(samples, |w| scale.omega(&w))
     }
 
-    /// The polhode at unit scale (ω̂ over one unit-scale period).
-    fn polhode_hat(&self, samples: usize) -> Result<Vec<Vec3>> {
+    /// The polhode at unit scale (ω̂ over one unit-scale period), each point mapped by `f`.
+    fn polhode_hat(&self, samples: usize, f: impl Fn(Vec3) -> Vec3) -> Result<Vec<Vec3>> {
         if samples < 2 {
             return Err(Error::invalid(
                 "samples",
@@ -113,15 +109,11 @@ impl FreeRigidBody {
             (0.0, 0.0)
         };
         crate::limits::check_count("samples", samples, 2, 24)?;
-        let mut out = Vec::with_capacity(samples);
-        for i in 0..samples {
-            if i % 4096 == 0 {
-                crate::control::tick()?; // Ctrl-C and progress on a huge request
-            }
+        // Polled every chunk of samples: Ctrl-C on a huge request.
+        crate::control::try_map_n(samples, |i| {
             let th = t0 + span * i as f64 / (samples - 1) as f64;
-            out.push(self.state_at_hat(th).0);
-        }
-        Ok(out)
+            Ok(f(self.state_at_hat(th).0))
+        })
     }
 
     /// The factor that takes ω̂ to the contact point: ω/(2T)^½ = ω̂ 2^e_w / ((2T̂)^½ 2^(e_i/2)
@@ -188,10 +180,6 @@ impl FreeRigidBody {
     /// `samples` (must be ≥ 2).
     pub fn contact_polhode(&self, samples: usize) -> Result<Vec<Vec3>> {
         let f = self.contact_factor();
-        Ok(self
-            .polhode_hat(samples)?
-            .into_iter()
-            .map(|w| w * f)
-            .collect())
+        self.polhode_hat(samples, |w| w * f)
     }
 }

@@ -93,12 +93,147 @@ pub fn mesh_mass_properties<I: FaceIndex>(
     density: f64,
 ) -> Result<MassProperties> {
     check_positive("density", density)?;
-    let tris = checked_arrays(vertices, faces)?;
-    let (comp, ncomp) = check_topology(vertices.len() / 3, &tris)?;
-    let parts = integrate_parts(vertices, &tris, &comp, ncomp);
-    let whole = assemble(&parts, tris.len())?;
-    check_embedding(vertices, &tris, &comp, &parts)?;
+    // On a helper thread while this one polls the monitor: Ctrl-C stops it between phases.
+    crate::control::parallel((faces.len() / 3) as u64, |cancel| {
+        let tris = checked_arrays(vertices, faces)?;
+        cancel.check()?;
+        solid(vertices, &tris, density, None, cancel)
+    })
+}
+
+/// [`mesh_mass_properties`] after merging the vertices that lie within [`MERGE_RTOL`] of the
+/// largest coordinate magnitude of each other ([`merge_close_vertices`]): for triangle soups
+/// (STL files store each triangle with its own three corners) and CAD exports, whose shared
+/// corners may differ in the last bits (SolidWorks' STL files: by ~1e-18 m near zero). When
+/// the merged mesh is still open, the error says within which distance vertices were merged.
+pub fn mesh_mass_properties_merging<I: FaceIndex>(
+    vertices: &[f64],
+    faces: &[I],
+    density: f64,
+) -> Result<MassProperties> {
+    check_positive("density", density)?;
+    crate::control::parallel((faces.len() / 3) as u64, |cancel| {
+        let mut tris = checked_arrays(vertices, faces)?;
+        let tolerance = merge_close_vertices(vertices, &mut tris);
+        cancel.check()?;
+        solid(vertices, &tris, density, Some(tolerance), cancel)
+    })
+}
+
+/// The checks and integrals of a mesh whose arrays are checked; `merged`: the distance within
+/// which vertices were merged (for the messages), if they were.
+fn solid(
+    vertices: &[f64],
+    tris: &[[u32; 3]],
+    density: f64,
+    merged: Option<f64>,
+    cancel: &crate::control::Cancel,
+) -> Result<MassProperties> {
+    let (comp, ncomp) = check_topology(vertices.len() / 3, tris, merged)?;
+    cancel.check()?;
+    let parts = integrate_parts(vertices, tris, &comp, ncomp);
+    cancel.check()?;
+    let whole = match assemble(&parts, tris.len()) {
+        Ok(whole) => whole,
+        Err(err) => {
+            // Several shells of zero or negative total volume: a shell of the wrong winding
+            // (a cavity outside any solid, say) is the cause the nesting check names.
+            if parts.len() > 1 {
+                check_embedding(vertices, tris, &comp, &parts)?;
+            }
+            return Err(err);
+        }
+    };
+    check_embedding(vertices, tris, &comp, &parts)?;
+    cancel.check()?;
     finish(&whole, density)
+}
+
+/// Vertices within this fraction of the largest coordinate magnitude of a mesh are one vertex
+/// when merging ([`mesh_mass_properties_merging`]): `2^-22`, two units in the last place of
+/// single precision, the precision of binary STL files (so corners that an exporter computed
+/// twice and rounded apart still meet), far below any feature of a mesh stored at that
+/// precision.
+pub const MERGE_RTOL: f64 = 2.384_185_791_015_625e-7; // 2^-22
+
+/// Merges the vertices used by `tris` that lie within `MERGE_RTOL · max |coordinate|` (the
+/// largest coordinate magnitude of the used vertices), in the max norm, of each other, and
+/// chains of such vertices: each face corner is replaced by the lowest index of its group
+/// (whose coordinates are kept; the others become unused and play no part). Returns the
+/// distance used (m). The vertices are filed in a grid of cells of that size and each is
+/// compared with those of the 27 cells around it; exactly equal coordinates (−0.0 and 0.0
+/// included) are always merged.
+pub fn merge_close_vertices(vertices: &[f64], tris: &mut [[u32; 3]]) -> f64 {
+    let nv = vertices.len() / 3;
+    let mut used = vec![false; nv];
+    for t in tris.iter() {
+        for &v in t {
+            used[v as usize] = true;
+        }
+    }
+    let scale = (0..nv)
+        .filter(|&i| used[i])
+        .flat_map(|i| vertices[3 * i..3 * i + 3].iter())
+        .fold(0.0f64, |m, x| m.max(x.abs()));
+    let tolerance = MERGE_RTOL * scale;
+    let cell = |x: f64| {
+        if tolerance > 0.0 {
+            (x / tolerance).floor() as i64
+        } else {
+            0
+        }
+    };
+    let key = |i: usize| [0, 1, 2].map(|k| cell(vertices[3 * i + k]));
+    let mut sorted: Vec<([i64; 3], u32)> = (0..nv)
+        .into_par_iter()
+        .filter(|&i| used[i])
+        .map(|i| (key(i), i as u32))
+        .collect();
+    sorted.par_sort_unstable();
+    let groups = UnionFind::new(nv);
+    sorted.par_iter().with_min_len(CHUNK).for_each(|&(k, i)| {
+        let p = &vertices[3 * i as usize..3 * i as usize + 3];
+        for dx in -1..=1 {
+            for dy in -1..=1 {
+                for dz in -1..=1 {
+                    let c = [k[0] + dx, k[1] + dy, k[2] + dz];
+                    let from = sorted.partition_point(|e| e.0 < c);
+                    for &(kj, j) in &sorted[from..] {
+                        if kj != c {
+                            break;
+                        }
+                        if j != i {
+                            let q = &vertices[3 * j as usize..3 * j as usize + 3];
+                            if (0..3).all(|m| (p[m] - q[m]).abs() <= tolerance) {
+                                groups.union(i, j);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    });
+    tris.par_iter_mut().with_min_len(CHUNK).for_each(|t| {
+        for v in t.iter_mut() {
+            *v = groups.find(*v);
+        }
+    });
+    tolerance
+}
+
+/// Peak memory (bytes) per triangle of `RigidBody.load_mesh` reading a binary STL file with
+/// trimesh and checking it: measured 2026-11-28 with trimesh 5.2 on 10⁵–10⁶-triangle files
+/// (the peak resident size grew by ~360 bytes per triangle), rounded up.
+pub const MESH_FILE_BYTES_PER_TRIANGLE: usize = 400;
+
+/// Checks that reading and checking a mesh file of `triangles` triangles fits in the memory
+/// budget ([`MESH_FILE_BYTES_PER_TRIANGLE`] each); the error names `path` and the budget.
+pub fn check_mesh_file(triangles: f64) -> Result<()> {
+    crate::limits::check_bytes(
+        "path",
+        &format!("a mesh file of {} triangles", crate::error::num(triangles)),
+        triangles * MESH_FILE_BYTES_PER_TRIANGLE as f64,
+    )
 }
 
 /// [`mesh_mass_properties`] for vertices as `[x, y, z]` rows and faces as `[i, j, k]` rows.
@@ -262,7 +397,7 @@ impl EdgeDefects {
 /// non-manifold edge, two uses in the same direction an inconsistent orientation.
 /// On success, returns each face's component (faces connected across shared edges; `UNUSED`
 /// for faces with a repeated index) and the number of components.
-fn check_topology(nv: usize, tris: &[[u32; 3]]) -> Result<(Vec<u32>, usize)> {
+fn check_topology(nv: usize, tris: &[[u32; 3]], merged: Option<f64>) -> Result<(Vec<u32>, usize)> {
     let tasks = rayon::current_num_threads().clamp(1, 64);
     let span = nv.div_ceil(tasks).max(1);
     // Per-vertex counts, each task filling its own range.
@@ -379,9 +514,15 @@ fn check_topology(nv: usize, tris: &[[u32; 3]]) -> Result<(Vec<u32>, usize)> {
     if let Some((a, b)) = defects.first_boundary {
         problems.push(format!(
             "the mesh is open: {} boundary edge(s) are used by only one face (e.g. edge ({a}, {b}){}); \
-             a mesh must be closed (watertight) to bound a solid",
+             a mesh must be closed (watertight) to bound a solid{}",
             defects.boundary,
-            face_of(a, b)
+            face_of(a, b),
+            merged.map_or(String::new(), |tol| format!(
+                " (vertices were merged within {} m, {} of the largest coordinate magnitude; \
+                 its gaps are wider)",
+                crate::error::num(tol),
+                crate::error::num(MERGE_RTOL)
+            ))
         ));
     }
     if let Some((a, b, uses)) = defects.first_non_manifold {
@@ -712,8 +853,13 @@ fn check_embedding(
     parts: &[Part],
 ) -> Result<()> {
     let pts = Points::new(vertices);
+    let t0 = std::time::Instant::now(); // ZZTIMING
     let index = Index::new(pts, tris, |f| comp[f] == UNUSED);
+    let t1 = t0.elapsed(); // ZZTIMING
     let (count, first) = index.intersections();
+    if std::env::var_os("ZZTIMING").is_some() {
+        eprintln!("ZZTIMING index {:?} join {:?}", t1, t0.elapsed() - t1);
+    } // ZZTIMING
     if let Some((i, j)) = first {
         return Err(Error::mesh(
             "faces",

@@ -8,15 +8,16 @@
 //! Errors are those of the single-item functions, with `(at flat index k)` appended to the
 //! message; `k` is the first failing record (deterministic even when run in parallel).
 
-use rayon::prelude::*;
-
-use crate::error::{check_finite, Error, Result};
+use crate::control;
+use crate::error::{check_finite, Error, ErrorKind, Result};
 use crate::rotation::axis_angle::rotation_axis_unchecked;
 use crate::rotation::euler::{euler_to_matrix_unchecked, matrix_to_euler_unchecked, EulerSequence};
 use crate::rotation::euler_kinematics::{
     angular_velocity_unchecked, euler_rates_checked_input, Frame,
 };
-use crate::rotation::matrix::{rotation_defects, rotation_verdict, row_major, ROTATION_MATRIX_TOL};
+use crate::rotation::matrix::{
+    rotation_defects, rotation_to_convert, rotation_verdict, row_major, ROTATION_MATRIX_TOL,
+};
 use crate::rotation::quaternion::{
     check_quaternion, hamilton, matrix_to_quaternion_unchecked, quaternion_to_matrix_unchecked,
 };
@@ -76,16 +77,24 @@ where
     if n < PARALLEL_MIN {
         return out.chunks_exact_mut(O).enumerate().try_for_each(run);
     }
-    let result = out
-        .par_chunks_exact_mut(O)
-        .enumerate()
-        .with_min_len(TASK_MIN)
-        .try_for_each(run);
-    if result.is_err() {
-        // Which record failed first is not deterministic in parallel: find it in order.
-        out.chunks_exact_mut(O).enumerate().try_for_each(run)?;
+    // In tasks of TASK_MIN records, each stoppable by Ctrl-C before it starts.
+    let result = control::fill_chunks(out, O * TASK_MIN, true, |start, ys| {
+        ys.chunks_exact_mut(O)
+            .enumerate()
+            .try_for_each(|(k, y)| run((start / O + k, y)))
+    });
+    first_error(result, || {
+        out.chunks_exact_mut(O).enumerate().try_for_each(run)
+    })
+}
+
+/// The error of a parallel loop, made deterministic: which record failed first is not known
+/// in parallel, so `serial` finds it in order (an interruption is returned as it is).
+fn first_error(result: Result<()>, serial: impl FnOnce() -> Result<()>) -> Result<()> {
+    match result {
+        Err(e) if e.kind != ErrorKind::Interrupted => serial().and(Err(e)),
+        other => other,
     }
-    result
 }
 
 #[inline]
@@ -130,7 +139,9 @@ pub fn euler_to_matrix_batch(seq: EulerSequence, angles: &[f64], out: &mut [f64]
 /// Rotation matrices (`matrices`: N×9, row-major) → Euler angles (`out`: N×3, rad) in the
 /// canonical ranges, as [`crate::rotation::matrix_to_euler`]; `locked[k]` is set to the
 /// gimbal-lock flag of record `k`. Returns the number of records at gimbal lock. Each matrix is
-/// checked with [`ROTATION_MATRIX_TOL`]; errors name `"R"`.
+/// checked with [`ROTATION_MATRIX_TOL`] and, off orthonormal by more than
+/// [`crate::rotation::NEAREST_ROTATION_DEFECT`], replaced by the nearest rotation; errors name
+/// `"R"`.
 pub fn matrix_to_euler_batch(
     seq: EulerSequence,
     matrices: &[f64],
@@ -146,9 +157,8 @@ pub fn matrix_to_euler_batch(
         ));
     }
     let run = |(k, (y, flag)): (usize, (&mut [f64], &mut bool))| -> Result<()> {
-        let m = rec::<9>(matrices, k);
-        check_matrix("R", m, ROTATION_MATRIX_TOL).map_err(|e| at_index(e, k))?;
-        let e = matrix_to_euler_unchecked(m, seq);
+        let m = rotation_to_convert("R", rec::<9>(matrices, k)).map_err(|e| at_index(e, k))?;
+        let e = matrix_to_euler_unchecked(&m, seq);
         y.copy_from_slice(&e.angles);
         *flag = e.gimbal_lock;
         Ok(())
@@ -159,32 +169,37 @@ pub fn matrix_to_euler_batch(
             .enumerate()
             .try_for_each(run)?;
     } else {
-        let result = out
-            .par_chunks_exact_mut(3)
-            .zip(locked.par_iter_mut())
-            .enumerate()
-            .with_min_len(TASK_MIN)
-            .try_for_each(run);
-        if result.is_err() {
+        // Tasks of TASK_MIN records (their angles and flags), each stoppable by Ctrl-C.
+        let mut tasks: Vec<(&mut [f64], &mut [bool])> = out
+            .chunks_mut(3 * TASK_MIN)
+            .zip(locked.chunks_mut(TASK_MIN))
+            .collect();
+        let result = control::fill_chunks(&mut tasks, 1, true, |task, parts| {
+            let (ys, flags) = &mut parts[0];
+            ys.chunks_exact_mut(3)
+                .zip(flags.iter_mut())
+                .enumerate()
+                .try_for_each(|(k, yf)| run((task * TASK_MIN + k, yf)))
+        });
+        drop(tasks);
+        first_error(result, || {
             out.chunks_exact_mut(3)
                 .zip(locked.iter_mut())
                 .enumerate()
-                .try_for_each(run)?;
-            return result.map(|_| 0);
-        }
+                .try_for_each(run)
+        })?;
     }
     Ok(locked.iter().filter(|l| **l).count())
 }
 
 /// Rotation matrices (N×9, row-major) → unit quaternions (`out`: N×4, `[w, x, y, z]`, `w >= 0`),
-/// as [`crate::rotation::matrix_to_quaternion`]. Errors name `"R"`.
+/// as [`crate::rotation::matrix_to_quaternion`] (of the nearest rotation for a matrix off
+/// orthonormal by more than [`crate::rotation::NEAREST_ROTATION_DEFECT`]). Errors name `"R"`.
 pub fn matrix_to_quaternion_batch(matrices: &[f64], out: &mut [f64]) -> Result<()> {
     let n = records("R", matrices, 9)?;
     check_out(out.len(), n, 4)?;
     drive::<4, _>(n, out, |k, y| {
-        let m = rec::<9>(matrices, k);
-        check_matrix("R", m, ROTATION_MATRIX_TOL)?;
-        *y = matrix_to_quaternion_unchecked(m);
+        *y = matrix_to_quaternion_unchecked(&rotation_to_convert("R", rec::<9>(matrices, k))?);
         Ok(())
     })
 }
@@ -232,9 +247,7 @@ pub fn rotation_axis_batch(matrices: &[f64], out: &mut [f64]) -> Result<()> {
     let n = records("R", matrices, 9)?;
     check_out(out.len(), n, 4)?;
     drive::<4, _>(n, out, |k, y| {
-        let m = rec::<9>(matrices, k);
-        check_matrix("R", m, ROTATION_MATRIX_TOL)?;
-        let (a, theta) = rotation_axis_unchecked(m);
+        let (a, theta) = rotation_axis_unchecked(&rotation_to_convert("R", rec::<9>(matrices, k))?);
         *y = [a[0], a[1], a[2], theta];
         Ok(())
     })
@@ -297,14 +310,10 @@ pub fn check_rotation_matrix_batch(matrices: &[f64], tol: f64) -> Result<()> {
     if n < PARALLEL_MIN {
         return (0..n).try_for_each(check);
     }
-    let result = (0..n)
-        .into_par_iter()
-        .with_min_len(TASK_MIN)
-        .try_for_each(check);
-    if result.is_err() {
-        (0..n).try_for_each(check)?;
-    }
-    result
+    let result = control::for_ranges(n, TASK_MIN, true, |range| {
+        range.into_iter().try_for_each(check)
+    });
+    first_error(result, || (0..n).try_for_each(check))
 }
 
 /// Angular velocities (`out`: N×3, rad/s, in `frame`) from Euler angles and rates (N×3 each,

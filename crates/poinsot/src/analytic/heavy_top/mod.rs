@@ -380,7 +380,9 @@ impl HeavyTop {
             ..
         } = a;
         let class = classify(r, turning);
-        let motion = if turning.w_lo == turning.w_hi {
+        // Steady where the turning points coincide in the pole distance that is exact here (w
+        // near the upright, v near the hanging pole: there the w's round to 2 alike).
+        let motion = if turning.spread() == 0.0 {
             let theta = theta_from_wv(turning.w_lo, turning.v_lo);
             let (phi_rate, psi_rate) = uniform_rates(i1, i3, r, ts, turning, start, from_state);
             Motion::Uniform {
@@ -734,28 +736,35 @@ impl HeavyTop {
         // Per chunk, in parallel: the times checked, evaluated, and the results checked finite
         // (the last line of defence of "finite or an error", see `finite_at_t`); the first
         // failing index is reported.
-        let first_bad = out
-            .par_chunks_mut(3 * CHUNK)
-            .zip(times.par_chunks(CHUNK))
-            .enumerate()
-            .filter_map(|(c, (o, ts))| {
-                // `check_time`'s condition, inline (the error is made below, once).
-                let max_time = self.max_time;
-                if let Some(i) = ts
-                    .iter()
-                    .position(|&t| !(t.abs() <= max_time && t.is_finite()))
-                {
-                    return Some(c * CHUNK + i);
-                }
-                f(ts, o);
-                if all_finite(o) {
-                    return None;
-                }
-                o.iter()
-                    .position(|v| !v.is_finite())
-                    .map(|i| c * CHUNK + i / 3)
-            })
-            .min();
+        // Under `control::parallel`: Ctrl-C stops the loop between two chunks.
+        let first_bad = crate::control::parallel(times.len() as u64, |cancel| {
+            Ok(out
+                .par_chunks_mut(3 * CHUNK)
+                .zip(times.par_chunks(CHUNK))
+                .enumerate()
+                .filter_map(|(c, (o, ts))| {
+                    if cancel.check().is_err() {
+                        return None;
+                    }
+                    cancel.advance(ts.len() as u64);
+                    // `check_time`'s condition, inline (the error is made below, once).
+                    let max_time = self.max_time;
+                    if let Some(i) = ts
+                        .iter()
+                        .position(|&t| !(t.abs() <= max_time && t.is_finite()))
+                    {
+                        return Some(c * CHUNK + i);
+                    }
+                    f(ts, o);
+                    if all_finite(o) {
+                        return None;
+                    }
+                    o.iter()
+                        .position(|v| !v.is_finite())
+                        .map(|i| c * CHUNK + i / 3)
+                })
+                .min())
+        })?;
         match first_bad {
             None => Ok(()),
             Some(i) => {
@@ -928,8 +937,16 @@ fn effective_potential_derivative_reduced(
 fn classify(r: &Reduced, t: &Turning) -> MotionClass {
     let (theta1, theta2) = t.thetas();
     let pi = std::f64::consts::PI;
-    let scale = theta2.min(pi - theta1).min(1.0);
-    if t.w_lo == t.w_hi || theta2 - theta1 <= STEADY_NUTATION_TOLERANCE * scale {
+    // The nutation and the distance from the nearer pole; near the hanging pole both from the
+    // distances π − θᵢ themselves (θ₂ − θ₁ of the doubles θᵢ ≈ π is a multiple of an ulp of π,
+    // which a steady precession at π − 1e-12 exceeds a millionfold).
+    let (nutation, scale) = if t.nearer_lower_pole() {
+        let (chi1, chi2) = t.hanging_distances();
+        (chi1 - chi2, chi1.min(1.0))
+    } else {
+        (theta2 - theta1, theta2.min(pi - theta1).min(1.0))
+    };
+    if t.spread() == 0.0 || nutation <= STEADY_NUTATION_TOLERANCE * scale {
         // At a pole itself (θ = π is the double nearest π: the bottom as the API spells it).
         return if theta2 == 0.0 {
             MotionClass::Sleeping
