@@ -385,6 +385,69 @@ def test_quantities_of_the_wrong_type_are_refused_by_name(bad) -> None:
     assert list(ok.data_vars) == ["motion_class"]
 
 
+def test_quantities_as_a_numpy_array_of_names() -> None:
+    """A 0-d numpy array of a name is that name, a 1-D one a list of names (issue 21, item 10:
+    ``np.array('motion_class')`` raised Python's "iteration over a 0-d array", found by the
+    fuzz suite at 20,000 examples); a 2-D one is refused naming ``quantities``."""
+    one = sweep.heavy_top(I1=1.0, I3=0.5, mgl=1.0, theta=0.5, quantities=np.array("motion_class"))
+    want = sweep.heavy_top(I1=1.0, I3=0.5, mgl=1.0, theta=0.5, quantities="motion_class")
+    _assert_same(one, want)
+    two = sweep.heavy_top(
+        I1=1.0, I3=0.5, mgl=1.0, theta=0.5, quantities=np.array(["motion_class", "omega3"])
+    )
+    assert list(two.data_vars) == ["motion_class", "omega3"]
+    for bad in (np.array([["motion_class"]]), np.array(3.0), np.array([1, 2])):
+        with pytest.raises(ps.ArgumentTypeError, match=r"^quantities: must"):
+            sweep.heavy_top(I1=1.0, I3=0.5, mgl=1.0, theta=0.5, quantities=bad)
+
+
+def test_a_client_that_is_not_a_running_dask_client_is_refused_by_name() -> None:
+    """A ThreadPoolExecutor has ``submit`` but no ``gather``: it passed the old check and failed
+    with a bare AttributeError; a closed Client raised distributed's ClosedClientError from
+    inside the run (issue 21, item 10). Both are refused first, naming ``client``."""
+    import concurrent.futures
+
+    distributed = pytest.importorskip("distributed")
+    with (
+        concurrent.futures.ThreadPoolExecutor(1) as pool,
+        pytest.raises(ps.ArgumentTypeError, match=r"^client: must be a dask.distributed"),
+    ):
+        _top_sweep(client=pool)
+    client = distributed.Client(
+        processes=False, n_workers=1, threads_per_worker=1, dashboard_address=None
+    )
+    try:  # negative control: the running client computes the sweep
+        _assert_same(_top_sweep(client=client), _top_sweep())
+    finally:
+        client.close()
+    with pytest.raises(ps.PoinsotError, match=r"^client: is closed"):
+        _top_sweep(client=client)
+
+
+def test_to_zarr_must_be_a_writable_path(tmp_path, monkeypatch) -> None:
+    """``to_zarr=42`` wrote the store ``./42``; an unwritable path failed with the file
+    system's bare error once the run had started (issue 21, item 10). Now: a str or
+    os.PathLike only, and the directory is tried before any work, naming ``to_zarr``."""
+    from poinsot.sweep import _run
+
+    monkeypatch.chdir(tmp_path)
+    written = []
+    monkeypatch.setattr(_run, "block_to_zarr", lambda *a: written.append(a) or 0)
+    for bad in (42, 4.2, b"x.zarr", ["x.zarr"], ""):
+        with pytest.raises(ps.ArgumentTypeError, match=r"^to_zarr: must be"):
+            _top_sweep(to_zarr=bad)
+    assert list(tmp_path.iterdir()) == []  # no ./42
+    for bad in ("/proc/x.zarr", tmp_path / "missing" / "x.zarr", tmp_path / "f" / "x.zarr"):
+        if str(bad).startswith(str(tmp_path / "f")):
+            (tmp_path / "f").write_text("a file, not a directory")
+        if str(bad).startswith("/proc") and not os.path.isdir("/proc"):
+            continue
+        with pytest.raises(ps.PoinsotError, match=r"^to_zarr: cannot write"):
+            _top_sweep(to_zarr=bad)
+    assert written == []  # refused before any block was computed
+    assert not (tmp_path / "missing").exists()
+
+
 def test_a_failed_integration_names_the_users_argument_and_the_point() -> None:
     """The integrators name their own variables (t, y0); a sweep names the user's argument, as
     the scalar API does — height for a drop, speed for a projectile, duration for simulate —

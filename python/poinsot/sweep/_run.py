@@ -12,6 +12,7 @@ from __future__ import annotations
 import importlib
 import itertools
 import math
+import os
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any, Callable, Optional
@@ -203,10 +204,10 @@ def _run(plan: Plan, *, client: Any, chunks: Any, to_zarr: Any, progress: Any) -
     names = [o.name for o in plan.outputs]
     model = plan.model
     distributed = client is not None or plan.lazy or to_zarr is not None or chunks is not None
-    if client is not None and not hasattr(client, "submit"):
-        raise ArgumentTypeError(
-            f"client: must be a dask.distributed.Client or None, got {type(client).__name__}"
-        )
+    if client is not None:
+        _check_client(client)
+    if to_zarr is not None:
+        to_zarr = _check_zarr_path(to_zarr)
     if not distributed:
         # Locally: one call of the core over the whole sweep (it checks every point first).
         dims, cols = plan.core_columns()
@@ -251,6 +252,46 @@ def _run(plan: Plan, *, client: Any, chunks: Any, to_zarr: Any, progress: Any) -
             raise RuntimeError(f"wrote {written} points of {plan.points}")
         return open_zarr(path)
     return dataset(xr, plan, _assemble(plan, sizes, results, names))
+
+
+def _check_client(client: Any) -> None:
+    """A running ``dask.distributed.Client``, or an error naming ``client``."""
+    distributed = require("distributed")
+    if not isinstance(client, distributed.Client):
+        raise ArgumentTypeError(
+            f"client: must be a dask.distributed.Client or None, got {type(client).__name__}"
+        )
+    status = getattr(client, "status", None)
+    if status in ("closing", "closed"):
+        raise PoinsotError(f"client: is {status}; give a running dask.distributed.Client")
+
+
+def _check_zarr_path(path: Any) -> str:
+    """``to_zarr`` as a path whose directory exists and is writable, checked before any
+    work; an error naming ``to_zarr`` otherwise."""
+    if not isinstance(path, (str, os.PathLike)) or isinstance(path, bytes):
+        raise ArgumentTypeError(
+            f"to_zarr: must be a path (str or os.PathLike), got {type(path).__name__}"
+        )
+    text = os.fspath(path)
+    if not isinstance(text, str) or not text.strip():
+        raise ArgumentTypeError(f"to_zarr: must be a non-empty path, got {text!r}")
+    if os.path.lexists(text):
+        raise PoinsotError(f"to_zarr: {text!r} exists already; give a new path")
+    parent = os.path.dirname(os.path.abspath(text))
+    try:  # the store is a directory: made and removed again here, before any work
+        os.mkdir(text)
+        os.rmdir(text)
+    except FileNotFoundError:
+        raise PoinsotError(
+            f"to_zarr: cannot write {text!r}: its directory {parent!r} does not exist or "
+            "refuses new entries"
+        ) from None
+    except OSError as exc:
+        raise PoinsotError(
+            f"to_zarr: cannot write {text!r} ({type(exc).__name__}: {exc.strerror or exc})"
+        ) from None
+    return text
 
 
 def _on_cluster(
@@ -356,6 +397,10 @@ def _zarr_template(xr: Any, plan: Plan, sizes: list[tuple[int, ...]], path: Any)
         template.to_zarr(path, compute=False, mode="w-", encoding=encoding, consolidated=False)
     except FileExistsError:
         raise PoinsotError(f"to_zarr: {path!r} exists already; give a new path") from None
+    except OSError as exc:  # a directory that refuses it (read-only, /proc, ...)
+        raise PoinsotError(
+            f"to_zarr: cannot write {path!r} ({type(exc).__name__}: {exc.strerror or exc})"
+        ) from None
     return path
 
 

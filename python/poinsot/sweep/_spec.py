@@ -386,6 +386,13 @@ def _quantities(model: Model, quantities: Any, given: set[str]) -> list[Output]:
     available = [o for o in model.outputs if o.name not in given]
     if quantities is None:
         return available
+    if isinstance(quantities, np.ndarray):  # numpy's names: a 0-d array is one name
+        if quantities.ndim > 1:
+            raise ArgumentTypeError(
+                "quantities: must be a result's name or a 1-D list of names, got an array of "
+                f"shape {quantities.shape}"
+            )
+        quantities = quantities.tolist()
     if isinstance(quantities, str):
         quantities = [quantities]
     if isinstance(quantities, Mapping) or not isinstance(quantities, (Sequence, np.ndarray)):
