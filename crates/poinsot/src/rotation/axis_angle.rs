@@ -5,7 +5,7 @@
 //! matrix back (Rodrigues' formula).
 
 use crate::error::{check_finite, Error, Result};
-use crate::rotation::matrix::{check_rotation_matrix, row_major, ROTATION_MATRIX_TOL};
+use crate::rotation::matrix::{rotation_to_convert, row_major};
 use crate::rotation::quaternion::matrix_to_quaternion_unchecked;
 use crate::{Mat3, Vec3};
 
@@ -21,10 +21,11 @@ pub const IDENTITY_AXIS: [f64; 3] = [0.0, 0.0, 1.0];
 /// component positive). The identity gives angle 0 and the conventional axis
 /// [`IDENTITY_AXIS`] (`+z`).
 ///
-/// `r` is checked with [`ROTATION_MATRIX_TOL`]; errors name `"R"`.
+/// `r` is checked with [`crate::rotation::ROTATION_MATRIX_TOL`]; errors name `"R"`. A matrix off
+/// orthonormal by more than [`crate::rotation::NEAREST_ROTATION_DEFECT`] gives the axis and
+/// angle of the nearest rotation.
 pub fn rotation_axis(r: &Mat3) -> Result<(Vec3, f64)> {
-    check_rotation_matrix(r, ROTATION_MATRIX_TOL)?;
-    let (n, angle) = rotation_axis_unchecked(&row_major(r));
+    let (n, angle) = rotation_axis_unchecked(&rotation_to_convert("R", &row_major(r))?);
     Ok((Vec3::from(n), angle))
 }
 

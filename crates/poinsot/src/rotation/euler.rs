@@ -17,17 +17,19 @@
 //! `[0, π]` for proper Euler sequences (`a == c`) and in `[−π/2, π/2]` for Tait–Bryan sequences.
 //!
 //! Extraction is accurate to round-off everywhere, near gimbal lock included: the second angle
-//! comes from an `atan2` of a sine and a cosine (never `acos`/`asin` of one element), and the
-//! third angle from the sum `α + γ` (or difference `α − γ`) of the first and third angles, which
-//! the matrix determines well at the lock that is near, so that the triple reconstructs the
-//! matrix to round-off even where the split between `α` and `γ` is ill-conditioned.
+//! comes from an `atan2` of a sine and a cosine (never `acos`/`asin` of one element). Of the
+//! first and third angles, the one smaller in magnitude comes from an `atan2` of its own matrix
+//! entries (a row and a column of `R`, each entry a product with its sine or cosine), so a small
+//! angle keeps its relative accuracy (no `α + γ − α` cancellation); the other comes from the sum
+//! `α + γ` (or difference `α − γ`), which the matrix determines well at the lock that is near,
+//! so that the triple reconstructs the matrix to round-off even where the split between `α` and
+//! `γ` is ill-conditioned. A sequence whose axes are an odd permutation is extracted in the
+//! user's signs directly (no `π − α` shift, which would cost a small angle its digits).
 
 use std::f64::consts::{PI, TAU};
 
 use crate::error::{check_finite, Error, Result};
-use crate::rotation::matrix::{
-    check_rotation_matrix, elementary_rotation, row_major, ROTATION_MATRIX_TOL,
-};
+use crate::rotation::matrix::{elementary_rotation, rotation_to_convert, row_major};
 use crate::Mat3;
 
 /// Gimbal lock in [`matrix_to_euler`]: the middle angle's `|sin β|` (proper Euler) or `|cos β|`
@@ -254,12 +256,15 @@ pub(crate) fn euler_to_matrix_unchecked(angles: [f64; 3], seq: EulerSequence) ->
 /// The Euler angles of rotation matrix `r` in convention `seq` (the inverse of
 /// [`euler_to_matrix`]), in the canonical ranges, with the gimbal-lock flag.
 ///
-/// `r` is checked with [`crate::rotation::ROTATION_MATRIX_TOL`]. Errors: non-finite entries
-/// ([`Error::invalid`]) or a matrix that is not a proper rotation ([`Error::rotation`]),
-/// naming `"R"`.
+/// `r` is checked with [`crate::rotation::ROTATION_MATRIX_TOL`]; one off orthonormal by more
+/// than [`crate::rotation::NEAREST_ROTATION_DEFECT`] gives the angles of the nearest rotation.
+/// Errors: non-finite entries ([`Error::invalid`]) or a matrix that is not a proper rotation
+/// ([`Error::rotation`]), naming `"R"`.
 pub fn matrix_to_euler(r: &Mat3, seq: EulerSequence) -> Result<EulerAngles> {
-    check_rotation_matrix(r, ROTATION_MATRIX_TOL)?;
-    Ok(matrix_to_euler_unchecked(&row_major(r), seq))
+    Ok(matrix_to_euler_unchecked(
+        &rotation_to_convert("R", &row_major(r))?,
+        seq,
+    ))
 }
 
 /// Parity of a permutation `(a, b, c)` of `(0, 1, 2)`: +1 if cyclic, −1 otherwise.
@@ -298,55 +303,51 @@ pub(crate) fn matrix_to_euler_unchecked(m: &[f64; 9], seq: EulerSequence) -> Eul
     let sigma = [i, j, l];
     let eps = parity(i, j);
     let at = |a: usize, b: usize| m[3 * sigma[a] + sigma[b]];
-    let (mut e, lock) = if proper {
-        canonical_xyx(&at, zero_first)
+    let (e, lock) = if proper {
+        // Proper: extracted in the user's signs (ε enters the formulas), so that no angle is
+        // computed as π − x, which would lose a small angle's relative accuracy.
+        canonical_xyx(&at, eps, zero_first)
     } else {
-        canonical_xyz(&at, zero_first)
-    };
-    if eps < 0.0 {
-        e = if !proper || lock {
-            // Tait–Bryan: (−α, −β, −γ) is in range. Proper at lock: one of α, γ is 0 and
-            // sin β ≈ 0, so R_j(−β) equals R_j(β) to round-off and β is kept.
-            [
-                wrap(-e[0]),
-                if proper { e[1] } else { -e[1] + 0.0 },
-                wrap(-e[2]),
-            ]
+        // Tait–Bryan: (−α, −β, −γ) is in range, and negation is exact.
+        let (e, lock) = canonical_xyz(&at, zero_first);
+        if eps < 0.0 {
+            ([wrap(-e[0]), -e[1] + 0.0, wrap(-e[2])], lock)
         } else {
-            // Proper: (−α, −β, −γ) ≡ (π − α, β, π − γ), which keeps β in [0, π].
-            [wrap(PI - e[0]), e[1], wrap(PI - e[2])]
-        };
-    }
+            (e, lock)
+        }
+    };
     EulerAngles {
         angles: seq.in_intrinsic_order(e),
         gimbal_lock: lock,
     }
 }
 
-/// Angles of `M = R_x(α) R_y(β) R_x(γ)`, β in [0, π].
+/// Angles of `M = R_x(εα) R_y(εβ) R_x(εγ)` with sign `ε = ±1` (the parity of the relabelling),
+/// returned as `(α, β, γ)`, β in [0, π] (for `ε = −1` that is the triple `(α, β, γ)` with
+/// `R_x(−α) R_y(−β) R_x(−γ) = M`, the equivalent of `(π − α', β', π − γ')` of the `ε = +1`
+/// extraction, without its cancellation).
 ///
-/// `M[:,0] = (cβ, sβ sα, −sβ cα)`, `M[0,:] = (cβ, sβ sγ, sβ cγ)`, and on the (y, z) block
-/// `M11 + M22 = (1 + cβ) cos(α + γ)`, `M21 − M12 = (1 + cβ) sin(α + γ)`,
-/// `M11 − M22 = (1 − cβ) cos(α − γ)`, `M21 + M12 = (1 − cβ) sin(α − γ)`.
+/// `M[:,0] = (cβ, sβ sα, −ε sβ cα)`, `M[0,:] = (cβ, sβ sγ, ε sβ cγ)`, and on the (y, z) block
+/// `M11 + M22 = (1 + cβ) cos(α + γ)`, `ε (M21 − M12) = (1 + cβ) sin(α + γ)`,
+/// `M11 − M22 = (1 − cβ) cos(α − γ)`, `ε (M21 + M12) = (1 − cβ) sin(α − γ)`.
 #[inline]
-fn canonical_xyx(at: &impl Fn(usize, usize) -> f64, zero_first: bool) -> ([f64; 3], bool) {
+fn canonical_xyx(
+    at: &impl Fn(usize, usize) -> f64,
+    eps: f64,
+    zero_first: bool,
+) -> ([f64; 3], bool) {
     let cb = at(0, 0);
     let (m10, m20) = (at(1, 0), at(2, 0));
     let sb = (m10 * m10 + m20 * m20).sqrt();
     let beta = sb.atan2(cb);
-    let sum = || (at(2, 1) - at(1, 2)).atan2(at(1, 1) + at(2, 2));
-    let diff = || (at(2, 1) + at(1, 2)).atan2(at(1, 1) - at(2, 2));
+    let sum = || (eps * (at(2, 1) - at(1, 2))).atan2(at(1, 1) + at(2, 2));
+    let diff = || (eps * (at(2, 1) + at(1, 2))).atan2(at(1, 1) - at(2, 2));
     if sb <= EULER_LOCK_TOL {
         return (lock_angles(cb > 0.0, beta, sum, diff, zero_first), true);
     }
-    let alpha = wrap(m10.atan2(-m20));
-    // γ from the well-conditioned combination (factor 1 + |cβ| ≥ 1), so that α + γ (near
-    // β = 0) or α − γ (near β = π) is exact even where α alone is not.
-    let gamma = if cb >= 0.0 {
-        wrap(sum() - alpha)
-    } else {
-        wrap(alpha - diff())
-    };
+    let alpha = m10.atan2(-eps * m20);
+    let gamma = at(0, 1).atan2(eps * at(0, 2));
+    let (alpha, gamma) = split(alpha, gamma, cb >= 0.0, sum, diff);
     ([alpha, beta, gamma], false)
 }
 
@@ -366,13 +367,44 @@ fn canonical_xyz(at: &impl Fn(usize, usize) -> f64, zero_first: bool) -> ([f64; 
     if cb <= EULER_LOCK_TOL {
         return (lock_angles(sb > 0.0, beta, sum, diff, zero_first), true);
     }
-    let alpha = wrap((-m12).atan2(m22));
-    let gamma = if sb >= 0.0 {
-        wrap(sum() - alpha)
-    } else {
-        wrap(alpha - diff())
-    };
+    let alpha = (-m12).atan2(m22);
+    let gamma = (-at(0, 1)).atan2(at(0, 0));
+    let (alpha, gamma) = split(alpha, gamma, sb >= 0.0, sum, diff);
     ([alpha, beta, gamma], false)
+}
+
+/// The first and third angles from their direct values `alpha` and `gamma` (each an `atan2` of
+/// its own matrix entries: accurate relative to its size, but only to `ε/|sin β|` or
+/// `ε/|cos β|` absolutely, the split being ill-conditioned near the lock) and the
+/// well-conditioned combination: `sum() = α + γ` (`near_sum`, the factor `1 + |cβ|` or
+/// `1 + |sβ|` ≥ 1 in front of it) or `diff() = α − γ`. The smaller of the two angles is kept as
+/// computed, so it has its relative accuracy; the larger is the combination minus (or plus) the
+/// smaller, so that `α ± γ` is exact and the triple rebuilds the matrix to round-off also where
+/// the split is ill-conditioned. Both in `(−π, π]`.
+#[inline]
+fn split(
+    alpha: f64,
+    gamma: f64,
+    near_sum: bool,
+    sum: impl Fn() -> f64,
+    diff: impl Fn() -> f64,
+) -> (f64, f64) {
+    let (alpha, gamma) = (wrap(alpha), wrap(gamma));
+    if gamma.abs() <= alpha.abs() {
+        let alpha = if near_sum {
+            sum() - gamma
+        } else {
+            diff() + gamma
+        };
+        (wrap(alpha), gamma)
+    } else {
+        let gamma = if near_sum {
+            sum() - alpha
+        } else {
+            alpha - diff()
+        };
+        (alpha, wrap(gamma))
+    }
 }
 
 /// At gimbal lock only `α + γ` (lock where the sum is defined) or `α − γ` is defined: put it

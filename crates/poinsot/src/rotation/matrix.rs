@@ -13,6 +13,21 @@ use crate::{Mat3, Vec3};
 /// explicit validator [`check_rotation_matrix`] takes its own tolerance.
 pub const ROTATION_MATRIX_TOL: f64 = 1e-6;
 
+/// Orthonormality defect `max |RᵀR − I|` up to which a function that *converts* a rotation
+/// matrix (to a quaternion, Euler angles, an axis and angle, a screw) uses the matrix's own
+/// entries; above it (and within [`ROTATION_MATRIX_TOL`]) it converts the nearest rotation
+/// instead ([`nearest_rotation`]: the orthogonal factor of the polar decomposition, what
+/// scipy's `Rotation.from_matrix` takes). `16 ε ≈ 3.6e-15`: a matrix built in double precision
+/// from angles or a unit quaternion is off by up to about 12 ε and is converted as it is, bit
+/// for bit as before; one printed to 7 decimals (off by about 1e-7) is projected, which moves
+/// its quaternion by about the defect (2.0e-8 → 1e-16 from the nearest rotation's, for the
+/// example in `docs/rotation.md`).
+pub const NEAREST_ROTATION_DEFECT: f64 = 16.0 * f64::EPSILON;
+
+/// Most iterations of [`nearest_rotation`]: from the largest accepted defect, 1e-6, the error
+/// goes 1e-6 → 4e-13 → round-off, so two suffice; the rest is margin.
+const NEAREST_ROTATION_ITERATIONS: usize = 4;
+
 /// The active rotation by `angle` (rad) about the x axis:
 /// `[[1, 0, 0], [0, cos, −sin], [0, sin, cos]]`.
 pub fn rot_x(angle: f64) -> Mat3 {
@@ -145,6 +160,64 @@ pub(crate) fn rotation_verdict(argument: &str, defect: f64, det: f64, tol: f64) 
         ));
     }
     Ok(())
+}
+
+/// Checks the row-major matrix `m` named `argument` with [`ROTATION_MATRIX_TOL`] (errors as
+/// [`check_rotation_matrix_named`]) and returns the rotation a conversion should use: `m`
+/// itself when its defect is at most [`NEAREST_ROTATION_DEFECT`] (the common, exact case: one
+/// comparison more than the check), else [`nearest_rotation`] of `m`.
+#[inline]
+pub(crate) fn rotation_to_convert(argument: &str, m: &[f64; 9]) -> Result<[f64; 9]> {
+    if !m.iter().all(|v| v.is_finite()) {
+        check_finite(argument, m)?;
+    }
+    let (defect, det) = rotation_defects(m);
+    rotation_verdict(argument, defect, det, ROTATION_MATRIX_TOL)?;
+    Ok(if defect <= NEAREST_ROTATION_DEFECT {
+        *m
+    } else {
+        nearest_rotation(m)
+    })
+}
+
+/// The rotation nearest to the row-major matrix `m` in the Frobenius norm (and every other
+/// unitarily invariant norm): the orthogonal factor `U` of the polar decomposition `m = U H`
+/// (`U = V Wᵀ` of the SVD `m = V Σ Wᵀ`; a rotation since `det m > 0`). Computed by the
+/// Newton–Schulz (Björck–Bowie) iteration `X ← X (3I − XᵀX) / 2`, which converges
+/// quadratically to `U` for `‖XᵀX − I‖ < 1`, until `max |XᵀX − I| <= NEAREST_ROTATION_DEFECT`.
+/// For `m` within [`ROTATION_MATRIX_TOL`] of orthonormal (the caller's check) two iterations
+/// reach round-off.
+pub(crate) fn nearest_rotation(m: &[f64; 9]) -> [f64; 9] {
+    let mut x = *m;
+    for _ in 0..NEAREST_ROTATION_ITERATIONS {
+        // G = XᵀX (symmetric), then H = (3I − G) / 2 and X ← X H.
+        let g = |i: usize, j: usize| x[i] * x[j] + x[3 + i] * x[3 + j] + x[6 + i] * x[6 + j];
+        let (g00, g11, g22) = (g(0, 0), g(1, 1), g(2, 2));
+        let (g01, g02, g12) = (g(0, 1), g(0, 2), g(1, 2));
+        let defect = (g00 - 1.0)
+            .abs()
+            .max((g11 - 1.0).abs())
+            .max((g22 - 1.0).abs())
+            .max(g01.abs())
+            .max(g02.abs())
+            .max(g12.abs());
+        if defect <= NEAREST_ROTATION_DEFECT {
+            break;
+        }
+        let h = [
+            [1.5 - 0.5 * g00, -0.5 * g01, -0.5 * g02],
+            [-0.5 * g01, 1.5 - 0.5 * g11, -0.5 * g12],
+            [-0.5 * g02, -0.5 * g12, 1.5 - 0.5 * g22],
+        ];
+        let mut y = [0.0; 9];
+        for r in 0..3 {
+            for c in 0..3 {
+                y[3 * r + c] = x[3 * r] * h[0][c] + x[3 * r + 1] * h[1][c] + x[3 * r + 2] * h[2][c];
+            }
+        }
+        x = y;
+    }
+    x
 }
 
 /// Row-major copy of a nalgebra (column-major) matrix.

@@ -46,7 +46,7 @@ pub(crate) use lanes::{
 };
 pub use matrix::{
     check_rotation_matrix, check_rotation_matrix_named, compose, elementary_rotation, rot_x, rot_y,
-    rot_z, rotate_vectors, ROTATION_MATRIX_TOL,
+    rot_z, rotate_vectors, NEAREST_ROTATION_DEFECT, ROTATION_MATRIX_TOL,
 };
 pub(crate) use quaternion::{
     axis_angle_quaternion, conj, coordinate_quaternion, hamilton, matrix_to_quaternion_any_sign,
@@ -56,4 +56,4 @@ pub use quaternion::{
     check_quaternion, matrix_to_quaternion, quaternion_multiply, quaternion_normalize,
     quaternion_rotate, quaternion_to_matrix, Quaternion, QUATERNION_UNIT_TOL,
 };
-pub use screw::{screw_axis, Screw, TRANSLATION_ANGLE_TOL};
+pub use screw::{screw_axis, Screw, SCREW_PITCH_RTOL, TRANSLATION_ANGLE_TOL};

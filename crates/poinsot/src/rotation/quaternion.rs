@@ -3,9 +3,7 @@
 //! same rotation. The Hamilton product composes like matrices: `R(p ⊗ q) = R(p) R(q)`.
 
 use crate::error::{check_finite, Error, Result};
-use crate::rotation::matrix::{
-    check_rotation_matrix, from_row_major, row_major, ROTATION_MATRIX_TOL,
-};
+use crate::rotation::matrix::{from_row_major, rotation_to_convert, row_major};
 use crate::{Mat3, Vec3};
 
 /// A quaternion, scalar first: `[w, x, y, z]`.
@@ -24,7 +22,7 @@ use crate::{Mat3, Vec3};
 pub type Quaternion = [f64; 4];
 
 /// Largest `|‖q‖ − 1|` accepted for a unit quaternion when the caller did not ask for
-/// normalisation (`1e-6`, as [`ROTATION_MATRIX_TOL`] for matrices).
+/// normalisation (`1e-6`, as [`crate::rotation::ROTATION_MATRIX_TOL`] for matrices).
 pub const QUATERNION_UNIT_TOL: f64 = 1e-6;
 
 /// Checks quaternion `q` (`[w, x, y, z]`) named `argument` and returns it as a unit quaternion.
@@ -74,10 +72,15 @@ fn norm4(q: &Quaternion) -> f64 {
 ///
 /// Robust for every angle (Shepperd's method, as refined by Markley 2008): the quaternion is
 /// built from the largest of `1 + tr R` and `1 + 2 R_ii − tr R`, then normalised. `r` is
-/// checked with [`ROTATION_MATRIX_TOL`]; errors name `"R"`.
+/// checked with [`crate::rotation::ROTATION_MATRIX_TOL`]; errors name `"R"`. A matrix off
+/// orthonormal by more than [`crate::rotation::NEAREST_ROTATION_DEFECT`] (e.g. printed to 7
+/// decimals) gives the quaternion of the nearest rotation, as scipy's `Rotation.from_matrix`
+/// does, not that of its raw entries.
 pub fn matrix_to_quaternion(r: &Mat3) -> Result<Quaternion> {
-    check_rotation_matrix(r, ROTATION_MATRIX_TOL)?;
-    Ok(matrix_to_quaternion_unchecked(&row_major(r)))
+    Ok(matrix_to_quaternion_unchecked(&rotation_to_convert(
+        "R",
+        &row_major(r),
+    )?))
 }
 
 /// Shepperd/Markley on a row-major matrix (assumed a rotation).

@@ -2,15 +2,19 @@
 //! an angle about an axis plus a translation (the slide) along that same axis (the unit's
 //! remark after Euler's theorem).
 
-use crate::error::{check_finite, Result};
+use crate::error::{check_finite, num, Result};
 use crate::rotation::axis_angle::{rodrigues, rotation_axis_unchecked, IDENTITY_AXIS};
-use crate::rotation::matrix::{check_rotation_matrix, row_major, ROTATION_MATRIX_TOL};
+use crate::rotation::matrix::{rotation_to_convert, row_major};
 use crate::{Mat3, Vec3};
 
 /// Angles (rad) at or below this are treated as no rotation in [`screw_axis`]: `4 ε ≈ 8.9e-16`,
 /// the round-off of a rotation matrix, below which the axis direction is noise (the displacement
 /// is then a pure translation, reproduced to round-off).
 pub const TRANSLATION_ANGLE_TOL: f64 = 4.0 * f64::EPSILON;
+
+/// Relative tolerance of a `pitch` given to [`Screw::new`] against `slide / angle` (a pitch
+/// printed to 10 significant digits agrees; a different pitch does not).
+pub const SCREW_PITCH_RTOL: f64 = 1e-9;
 
 /// The screw of a rigid displacement `x ↦ R x + t` (Chasles' theorem).
 ///
@@ -46,6 +50,78 @@ pub struct Screw {
 }
 
 impl Screw {
+    /// A screw from its parts, checked: the rotation by `angle` (rad, in `[0, π]`) about the
+    /// line through `point` (m, finite: any point of the line) along `axis` (finite, non-zero;
+    /// normalised unless its length is 1 to within `4 ε`, as a [`screw_axis`] result's is), with
+    /// the slide `slide` (m, finite) along it. The pitch is derived, `slide / angle` (m/rad;
+    /// `±∞` for a pure translation, `angle = 0` with `slide ≠ 0`, and 0 for the identity); a
+    /// `pitch` given must agree with it to [`SCREW_PITCH_RTOL`] (infinite: exactly).
+    ///
+    /// Errors name the part: `"axis"` (not finite, or zero), `"point"`, `"slide"` (not
+    /// finite), `"angle"` (not finite or outside `[0, π]`: a screw turning the other way has
+    /// the opposite axis), `"pitch"` (not `slide / angle`).
+    pub fn new(axis: Vec3, point: Vec3, angle: f64, slide: f64, pitch: Option<f64>) -> Result<Self> {
+        check_finite("axis", axis.as_slice())?;
+        check_finite("point", point.as_slice())?;
+        check_finite("angle", &[angle])?;
+        check_finite("slide", &[slide])?;
+        let len = axis.norm();
+        if !(len > 0.0 && len.is_finite()) {
+            return Err(crate::Error::invalid(
+                "axis",
+                format!("must be a non-zero vector, got length {}", num(len)),
+            ));
+        }
+        let axis = if (len - 1.0).abs() <= 4.0 * f64::EPSILON {
+            axis
+        } else {
+            axis / len
+        };
+        if !(0.0..=std::f64::consts::PI).contains(&angle) {
+            return Err(crate::Error::invalid(
+                "angle",
+                format!(
+                    "must be in [0, pi] rad (a screw turning the other way has the opposite \
+                     axis), got {}",
+                    num(angle)
+                ),
+            ));
+        }
+        let derived = if angle == 0.0 {
+            if slide == 0.0 {
+                0.0
+            } else {
+                f64::INFINITY.copysign(slide)
+            }
+        } else {
+            slide / angle
+        };
+        if let Some(given) = pitch {
+            let agrees = if derived.is_finite() {
+                (given - derived).abs() <= SCREW_PITCH_RTOL * derived.abs()
+            } else {
+                given == derived
+            };
+            if !agrees {
+                return Err(crate::Error::invalid(
+                    "pitch",
+                    format!(
+                        "must be slide / angle = {} m/rad (or left out: it is derived), got {}",
+                        num(derived),
+                        num(given)
+                    ),
+                ));
+            }
+        }
+        Ok(Self {
+            axis,
+            point,
+            angle,
+            slide,
+            pitch: derived,
+        })
+    }
+
     /// The displacement `(R, t)` of this screw: `R = R_axis(angle)` (Rodrigues) and
     /// `t = point − R point + slide · axis`.
     pub fn displacement(&self) -> (Mat3, Vec3) {
@@ -105,12 +181,15 @@ impl Screw {
 /// too) gives axis `+z`, point 0, angle 0, slide 0, pitch 0. A pure rotation (`n · t = 0`) has
 /// pitch 0.
 ///
-/// Errors: `R` not a rotation within [`ROTATION_MATRIX_TOL`] (naming `"R"`), non-finite `t` (naming
-/// `"t"`).
+/// An `R` off orthonormal by more than [`crate::rotation::NEAREST_ROTATION_DEFECT`] is replaced by
+/// the nearest rotation (as in [`crate::rotation::rotation_axis`]).
+///
+/// Errors: `R` not a rotation within [`crate::rotation::ROTATION_MATRIX_TOL`] (naming `"R"`),
+/// non-finite `t` (naming `"t"`).
 pub fn screw_axis(r: &Mat3, t: &Vec3) -> Result<Screw> {
-    check_rotation_matrix(r, ROTATION_MATRIX_TOL)?;
+    let m = rotation_to_convert("R", &row_major(r))?;
     check_finite("t", t.as_slice())?;
-    let (n, angle) = rotation_axis_unchecked(&row_major(r));
+    let (n, angle) = rotation_axis_unchecked(&m);
     let n = Vec3::from(n);
     if angle <= TRANSLATION_ANGLE_TOL {
         let len = t.norm();
