@@ -27,6 +27,9 @@ _CHILD = """
 import os, signal, threading, time
 import numpy as np
 import poinsot as ps
+# Python raises KeyboardInterrupt on SIGINT only if SIGINT was not ignored when it started (a
+# background job of a non-interactive shell inherits SIG_IGN): install the handler explicitly.
+signal.signal(signal.SIGINT, signal.default_int_handler)
 {setup}
 sent = []
 def fire():

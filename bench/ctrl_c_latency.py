@@ -1,0 +1,64 @@
+"""Ctrl-C latency of the evaluators over a user's array (issue 21, item 4).
+
+Each call runs in a child process that sends itself SIGINT 0.5 s into the call; the time from
+the signal to ``KeyboardInterrupt`` is measured, median over ``--tries`` runs. The calls and
+their sizes are python/tests/_array_calls.py's (the same as test_interrupt_arrays.py), plus the
+rotation conversions (too fast per record to keep busy for seconds: their latency is bounded by
+the call's own time) and ``RigidBody.from_mesh`` on a sphere of ~5 M faces.
+
+    .venv/bin/python bench/ctrl_c_latency.py [--tries 3]
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "python" / "tests"))
+from _array_calls import ARRAY_CALLS, ROTATION_CALLS
+from test_interrupt_arrays import child
+
+MESH = (
+    "import trimesh\n"
+    "m = trimesh.creation.icosphere(subdivisions=9)\n"
+    "v, f = np.asarray(m.vertices), np.asarray(m.faces)",
+    "ps.RigidBody.from_mesh(v, f, density=1.0)",
+)
+
+
+def latency(setup: str, call: str) -> tuple[str, float]:
+    proc = subprocess.run(
+        [sys.executable, "-c", child(setup, call)], capture_output=True, text=True, timeout=600
+    )
+    if proc.returncode != 0:
+        raise RuntimeError(proc.stderr[-2000:])
+    word, seconds = proc.stdout.split()
+    return word, float(seconds)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--tries", type=int, default=3)
+    args = parser.parse_args()
+    calls = {**ARRAY_CALLS, **ROTATION_CALLS}
+    try:
+        import trimesh  # noqa: F401
+
+        calls["RigidBody.from_mesh (5.2 M faces)"] = MESH
+    except ImportError:
+        pass
+    print("| call | Ctrl-C latency, median (ms) | runs interrupted |")
+    print("|---|---|---|")
+    for name, (setup, call) in calls.items():
+        runs = [latency(textwrap.dedent(setup), call) for _ in range(args.tries)]
+        hit = [s for w, s in runs if w == "INTERRUPTED"]
+        med = f"{1e3 * statistics.median(hit):.0f}" if hit else "—"
+        print(f"| {name}: `{call}` | {med} | {len(hit)}/{len(runs)} |", flush=True)
+
+
+if __name__ == "__main__":
+    main()
