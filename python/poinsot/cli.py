@@ -1189,7 +1189,9 @@ def free(
         "flip_interval": exact.flip_interval,
         "energy": exact.energy,
         "angular_momentum": exact.angular_momentum,
-        "angular_momentum_magnitude": float(np.linalg.norm(exact.angular_momentum)),
+        "angular_momentum_magnitude": float(
+            np.hypot(np.hypot(*exact.angular_momentum[:2]), exact.angular_momentum[2])
+        ),
         "max_energy_error": float(tr.energy_error().max()),
         "max_momentum_error": float(tr.momentum_error().max()),
         "omega_final": tr.omega[-1],

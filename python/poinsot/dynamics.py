@@ -218,8 +218,11 @@ class Trajectory(show.Displayed):
         return np.abs(e - e[0]) / (abs(e[0]) if e[0] != 0 else 1.0)
 
     def momentum_error(self) -> FloatArray:
-        """||L(t)| / |L(0)| − 1| (relative), (N,): round-off for the splitting without torque."""
-        n = np.linalg.norm(self.angular_momentum, axis=1)
+        """||L(t)| / |L(0)| − 1| (relative), (N,): round-off for the splitting without torque.
+
+        |L| is a scaled hypotenuse, finite whenever the length is (L of 1e308 kg·m²/s: the
+        sum of squares would overflow)."""
+        n = _lengths(self.angular_momentum)
         return np.abs(n - n[0]) / (n[0] if n[0] != 0 else 1.0)
 
     def rotation(self) -> Any:
@@ -228,6 +231,12 @@ class Trajectory(show.Displayed):
 
         q = self.attitude
         return Rotation.from_quat(np.column_stack([q[:, 1], q[:, 2], q[:, 3], q[:, 0]]))
+
+
+def _lengths(rows: FloatArray) -> FloatArray:
+    """The length of each row of ``rows`` (N, 3) without overflowing on the squares:
+    hypot(hypot(x, y), z), finite whenever the length itself is a double."""
+    return np.asarray(np.hypot(np.hypot(rows[:, 0], rows[:, 1]), rows[:, 2]))
 
 
 def _inertia_of(body: Any, torque: TorqueLike) -> FloatArray:

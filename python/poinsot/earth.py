@@ -454,7 +454,9 @@ class Earth:
         return shaped(_core.earth_latitude_scalar(*self._p, "foucault_rate", lat), shape)
 
     def inertial_period(self, latitude: Any, degrees: bool = False) -> Any:
-        """The period of inertial oscillations π/(ω |sin λ|) (s; inf at the equator)."""
+        """The period of inertial oscillations π/(ω |sin λ|) (s; inf where ω sin λ = 0, at the
+        equator; refused naming ``latitude`` where it is finite but beyond the largest double,
+        |λ| ≲ 1e-304 on the Earth)."""
         lat, shape = as_flat(latitude, "latitude", degrees)
         return shaped(_core.earth_latitude_scalar(*self._p, "inertial_period", lat), shape)
 

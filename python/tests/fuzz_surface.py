@@ -21,6 +21,7 @@ from __future__ import annotations
 import dataclasses
 import inspect
 import math
+import re
 import signal
 import sys
 from collections.abc import Callable, Iterator
@@ -653,7 +654,28 @@ def check_exception(qual: str, exc: BaseException, names: set[str]) -> list[str]
             f"{qual} raised {type(exc).__name__} naming {head!r}, not one of its arguments "
             f"{sorted(names)}: {msg[:200]}"
         ]
+    long = spelled_out_number(msg)
+    if long is not None:
+        return [f"{qual}: a number spelled out in full, {long[:40]}…, in {msg[:200]}"]
     return []
+
+
+_DIGITS = re.compile(r"(?<![\w.])\d+(?:\.\d+)?(?![\w.])")
+
+
+def spelled_out_number(msg: str) -> str | None:
+    """A number of ``msg`` beyond [1e-4, 1e16) written out in full (what Rust's ``{}`` prints
+    for 1e-308: 310 characters) instead of the documented exponent form, or None. Runs of
+    more than 17 significant digits (an exact whole number) are not floats and pass."""
+    for m in _DIGITS.finditer(msg):
+        token = m.group()
+        int_part, _, frac = token.partition(".")
+        digits = (int_part + frac).strip("0")
+        large = len(int_part) > 16 and not int_part.startswith("0")
+        small = int_part.strip("0") == "" and frac.startswith("0000") and digits != ""
+        if (large or small) and len(digits) <= 17:
+            return token
+    return None
 
 
 def run_call(site: Site, args: dict[str, Any], read_properties: bool = True) -> list[str]:

@@ -18,6 +18,7 @@ or return only finite numbers; never NaN, never a panic, never a hang.
 
 from __future__ import annotations
 
+import inspect
 import json
 import math
 import os
@@ -120,6 +121,19 @@ def test_the_harness_catches_broken_contracts() -> None:
             pytest.fail("the deadline did not fire")
     assert fz.run_call(make(lambda: (1.0, {"x": math.inf})), {})
     assert not fz.run_call(make(lambda: (1.0, {"x": 2.0})), {})
+
+    # A number spelled out in full beyond [1e-4, 1e16) (issue 21 item 13: Rust's `{}` of
+    # 2e-308, 310 characters) is reported; the exponent form and exact whole numbers are not.
+    def spelled(text: str):  # type: ignore[no-untyped-def]
+        def raise_it(I3=None):  # type: ignore[no-untyped-def]
+            raise ps.PoinsotError(text)
+
+        i3 = inspect.Parameter("I3", inspect.Parameter.POSITIONAL_OR_KEYWORD)
+        return fz.Site("fake", raise_it, [i3], {}, [])
+
+    assert fz.run_call(spelled(f"I3: must be <= 2*I1 = {'0.' + '0' * 307 + '2'}"), {})
+    for fine in ("I3: must be <= 2*I1 = 2e-308", "I3: 18446744073709551615 bytes, 0.0001"):
+        assert not fz.run_call(spelled(fine), {}), fine
 
 
 def _grid_cases(sites: list[fz.Site]) -> list[tuple[fz.Site, str, object]]:

@@ -139,7 +139,7 @@ test("errors name the JavaScript argument, not the core's internal one", () => {
   assert.equal(earth().foucault(0.8, 10, 1, 0, 1.5, 2).regime, "too_short");
   // A result too large for double precision names the call's arguments.
   // (ω̇ t²/2 of a frame at t = 1e300 s overflows: its attitude cannot be represented.)
-  refuses(() => frame.at(1e300), "PoinsotError", "t: the result (state of the frame) is not a finite number for these values");
+  refuses(() => frame.at(1e300), "PoinsotError", "t: the frame's attitude at t = 1e300 s is not representable as finite numbers");
   refuses(() => raw.RigidBody.solidSphere(1e308, 1e154), "PoinsotError", "mass: the largest moment of inertia (kg·m²) would be about");
   const spring = new raw.SpringParticle(1, 1e308);
   refuses(() => spring.acceleration([10, 0, 0]), "PoinsotError", "position: the result (acceleration) is not a finite number");
