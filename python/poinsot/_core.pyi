@@ -56,6 +56,13 @@ def euler_rates(
 def screw_axis(
     R: NDArray[np.float64], t: NDArray[np.float64]
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], float, float, float]: ...
+def screw_new(
+    axis: NDArray[np.float64],
+    point: NDArray[np.float64],
+    angle: float,
+    slide: float,
+    pitch: float | None = None,
+) -> tuple[NDArray[np.float64], NDArray[np.float64], float, float, float]: ...
 def screw_displacement(
     axis: NDArray[np.float64], point: NDArray[np.float64], angle: float, slide: float
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]: ...
@@ -111,7 +118,10 @@ class MassProperties:
     def thin_ring(mass: float, radius: float) -> MassProperties: ...
     @staticmethod
     def from_mesh(
-        vertices: NDArray[np.float64], faces: NDArray[np.int64], density: float
+        vertices: NDArray[np.float64],
+        faces: NDArray[np.int64],
+        density: float,
+        merge: bool = False,
     ) -> MassProperties: ...
     @staticmethod
     def from_density(
@@ -149,6 +159,7 @@ class MassProperties:
 
 def classify(moments: NDArray[np.float64], rtol: float) -> str: ...
 def check_inertia(inertia: NDArray[np.float64]) -> NDArray[np.float64]: ...
+def check_mesh_file(triangles: float) -> None: ...
 
 # ---- frames (frames.rs) ----
 
