@@ -29,6 +29,7 @@ class IntegrationError(PoinsotError): ...
 # Batches are C-contiguous float64 arrays (N, ...); python/poinsot/rotation.py prepares them.
 # Quaternions are scalar-first [w, x, y, z]; matrices row-major (N, 3, 3); angles in rad.
 ROTATION_MATRIX_TOL: float
+NEAREST_ROTATION_DEFECT: float
 EULER_LOCK_TOL: float
 RATES_LOCK_TOL: float
 

@@ -51,6 +51,12 @@ EULER_SEQUENCES: tuple[str, ...] = (
 #: Tolerance on ``max|R^T R - I|`` and ``|det R - 1|`` with which every function that takes a
 #: rotation matrix accepts it (:func:`check_rotation_matrix` has its own ``tol``).
 ROTATION_MATRIX_TOL: float = _core.ROTATION_MATRIX_TOL
+#: Orthonormality defect ``max|R^T R - I|`` (16 eps = 3.6e-15) above which the conversions
+#: (:func:`matrix_to_quaternion`, :func:`matrix_to_euler`, :func:`rotation_axis`,
+#: :func:`screw_axis`) convert an accepted matrix (e.g. one printed to 7 decimals) as its
+#: nearest rotation, the polar factor, as scipy's ``Rotation.from_matrix`` does; up to it (any
+#: rotation built in double precision) a matrix is converted from its own entries.
+NEAREST_ROTATION_DEFECT: float = _core.NEAREST_ROTATION_DEFECT
 #: The former name of :data:`ROTATION_MATRIX_TOL` (the same value), kept for existing code.
 ROTATION_TOL: float = ROTATION_MATRIX_TOL
 
@@ -201,7 +207,8 @@ def matrix_to_euler(
     ``R = R_z(phi) @ R_x(theta) @ R_z(psi)`` and the result is ``(phi, theta, psi)``.
 
     Accurate to round-off everywhere, near gimbal lock included (``atan2`` forms only; the
-    matrix rebuilt from the angles equals ``R`` to round-off). At gimbal lock
+    matrix rebuilt from the angles equals ``R`` to round-off), and a small first or third angle
+    (``1e-12``) to a few ulps relative. At gimbal lock
     (``|sin beta| <= EULER_LOCK_TOL`` for proper sequences, ``|cos beta| <= EULER_LOCK_TOL``
     for Tait-Bryan) only ``alpha + gamma`` or ``alpha - gamma`` is defined: the third angle is
     set to 0, the returned triple still rebuilds ``R``, and a
@@ -210,7 +217,8 @@ def matrix_to_euler(
     Parameters
     ----------
     R : array_like, shape (..., 3, 3), or scipy Rotation
-        Rotation matrices (orthonormal with det +1 within :data:`ROTATION_MATRIX_TOL`).
+        Rotation matrices (orthonormal with det +1 within :data:`ROTATION_MATRIX_TOL`; one
+        off by more than :data:`NEAREST_ROTATION_DEFECT` gives its nearest rotation's angles).
     seq, intrinsic, degrees
         As in :func:`euler_to_matrix`.
 
@@ -259,7 +267,8 @@ def rotation_axis(R: Any) -> tuple[FloatArray, Union[float, FloatArray]]:
     Parameters
     ----------
     R : array_like, shape (3, 3) or (..., 3, 3), or scipy Rotation
-        Rotation matrices.
+        Rotation matrices (one off orthonormal by more than :data:`NEAREST_ROTATION_DEFECT`:
+        its nearest rotation's axis and angle).
 
     Returns
     -------
@@ -556,7 +565,10 @@ def matrix_to_quaternion(R: Any) -> FloatArray:
 
     ``q = [cos(a/2), sin(a/2) n]`` for the rotation by ``a`` about unit axis ``n``; robust for
     every angle (Shepperd/Markley). At ``w = 0`` (half turns) the first non-zero of ``x, y, z``
-    is positive.
+    is positive. A matrix off orthonormal by more than :data:`NEAREST_ROTATION_DEFECT` (and
+    within :data:`ROTATION_MATRIX_TOL`; e.g. printed to 7 decimals) gives the quaternion of its
+    nearest rotation (the polar factor, as scipy's ``Rotation.from_matrix``), not of its raw
+    entries.
 
     Parameters
     ----------

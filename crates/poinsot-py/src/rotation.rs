@@ -296,5 +296,6 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("EULER_LOCK_TOL", rot::EULER_LOCK_TOL)?;
     m.add("RATES_LOCK_TOL", rot::RATES_LOCK_TOL)?;
     m.add("ROTATION_MATRIX_TOL", rot::ROTATION_MATRIX_TOL)?;
+    m.add("NEAREST_ROTATION_DEFECT", rot::NEAREST_ROTATION_DEFECT)?;
     Ok(())
 }
