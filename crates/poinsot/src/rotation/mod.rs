@@ -56,4 +56,4 @@ pub use quaternion::{
     check_quaternion, matrix_to_quaternion, quaternion_multiply, quaternion_normalize,
     quaternion_rotate, quaternion_to_matrix, Quaternion, QUATERNION_UNIT_TOL,
 };
-pub use screw::{screw_axis, Screw, SCREW_PITCH_RTOL, TRANSLATION_ANGLE_TOL};
+pub use screw::{screw_axis, Screw, POINT_ALONG_TOL, SCREW_PITCH_RTOL, TRANSLATION_ANGLE_TOL};

@@ -16,6 +16,12 @@ pub const TRANSLATION_ANGLE_TOL: f64 = 4.0 * f64::EPSILON;
 /// printed to 10 significant digits agrees; a different pitch does not).
 pub const SCREW_PITCH_RTOL: f64 = 1e-9;
 
+/// Relative size of `point · axis` (to `|point| + |slide|`, the scale of the displacement's
+/// round-off) below which [`Screw::new`] takes `point` as already the point of the axis nearest
+/// the origin: `16 ε ≈ 3.6e-15`, above the round-off of a [`screw_axis`] result (whose
+/// `t⊥ = t − slide · axis` carries `ε |slide|`), so that one is kept bit for bit.
+pub const POINT_ALONG_TOL: f64 = 16.0 * f64::EPSILON;
+
 /// The screw of a rigid displacement `x ↦ R x + t` (Chasles' theorem).
 ///
 /// The displacement equals: rotate by `angle` about the line through `point` with direction
@@ -51,7 +57,9 @@ pub struct Screw {
 
 impl Screw {
     /// A screw from its parts, checked: the rotation by `angle` (rad, in `[0, π]`) about the
-    /// line through `point` (m, finite: any point of the line) along `axis` (finite, non-zero;
+    /// line through `point` (m, finite: any point of the line, kept as the line's point nearest
+    /// the origin, `point − (axis · point) axis`, unless `|axis · point|` is within
+    /// [`POINT_ALONG_TOL`] of `|point| + |slide|`) along `axis` (finite, non-zero;
     /// normalised unless its length is 1 to within `4 ε`, as a [`screw_axis`] result's is), with
     /// the slide `slide` (m, finite) along it. The pitch is derived, `slide / angle` (m/rad;
     /// `±∞` for a pure translation, `angle = 0` with `slide ≠ 0`, and 0 for the identity); a
@@ -60,7 +68,13 @@ impl Screw {
     /// Errors name the part: `"axis"` (not finite, or zero), `"point"`, `"slide"` (not
     /// finite), `"angle"` (not finite or outside `[0, π]`: a screw turning the other way has
     /// the opposite axis), `"pitch"` (not `slide / angle`).
-    pub fn new(axis: Vec3, point: Vec3, angle: f64, slide: f64, pitch: Option<f64>) -> Result<Self> {
+    pub fn new(
+        axis: Vec3,
+        point: Vec3,
+        angle: f64,
+        slide: f64,
+        pitch: Option<f64>,
+    ) -> Result<Self> {
         check_finite("axis", axis.as_slice())?;
         check_finite("point", point.as_slice())?;
         check_finite("angle", &[angle])?;
@@ -76,6 +90,15 @@ impl Screw {
             axis
         } else {
             axis / len
+        };
+        // The point kept is the point of the line nearest the origin (`point · axis = 0`, the
+        // public contract of `Screw::point`): any other point of the line is moved along the
+        // axis to it; one already perpendicular to round-off (a `screw_axis` result) is kept.
+        let along = axis.dot(&point);
+        let point = if along.abs() <= POINT_ALONG_TOL * (point.norm() + slide.abs()) {
+            point
+        } else {
+            point - along * axis
         };
         if !(0.0..=std::f64::consts::PI).contains(&angle) {
             return Err(crate::Error::invalid(
