@@ -37,7 +37,7 @@ from numpy.typing import NDArray
 
 from . import _core
 from . import _display as show
-from ._validate import _is_scipy_rotation, as_float_array, as_scalar
+from ._validate import _is_scipy_rotation, as_float_array, as_scalar, as_triple
 from .errors import GimbalLockWarning, PoinsotError
 
 FloatArray = NDArray[np.float64]
@@ -337,13 +337,37 @@ class Screw(show.Displayed):
     pitch : float
         ``slide / angle``, m/rad: ``inf`` for a pure translation, 0 for a pure rotation and for
         the identity displacement (never NaN).
+
+    A screw is usually :func:`screw_axis`'s result, but may be built from its parts,
+    ``Screw(axis, point, angle, slide)``, checked by the core: ``axis`` (3,) finite and
+    non-zero (normalised), ``point`` (3,) any finite point of the axis, m (kept as the point of
+    the axis nearest the origin), ``angle`` in [0, pi] rad (a screw turning the other way has
+    the opposite axis), ``slide`` finite, m. The pitch is derived, ``slide / angle`` (``-inf``
+    for a pure translation with a negative slide); a ``pitch`` given must equal it to 1e-9
+    relative. A :func:`screw_axis` result rebuilt from its five parts is the same screw, bit
+    for bit. Errors name the part (:class:`PoinsotError`; :class:`ArgumentTypeError` for text
+    and the like).
     """
 
     axis: FloatArray = field(repr=False)
     point: FloatArray = field(repr=False)
     angle: float
     slide: float
-    pitch: float
+    # None when built: derived by the core, a float on every Screw (the attribute's type).
+    pitch: float = None  # type: ignore[assignment]
+
+    def __post_init__(self) -> None:
+        parts = _core.screw_new(
+            np.array(as_triple(self.axis, "axis", finite=False)),
+            np.array(as_triple(self.point, "point", finite=False)),
+            _real(self.angle, "angle"),
+            _real(self.slide, "slide"),
+            None if self.pitch is None else _real(self.pitch, "pitch"),
+        )
+        for name, value in zip(("axis", "point", "angle", "slide", "pitch"), parts):
+            if isinstance(value, np.ndarray):
+                value.flags.writeable = False
+            object.__setattr__(self, name, value)
 
     def _rows(self) -> list[show.Row]:
         return [
@@ -425,9 +449,15 @@ def screw_axis(R: Any, t: Any) -> Screw:
     if tt.shape != (3,):
         raise PoinsotError(f"t: must have shape (3,), got {tt.shape}")
     axis, point, angle, slide, pitch = _core.screw_axis(flat[0], np.ascontiguousarray(tt))
-    axis.flags.writeable = False
-    point.flags.writeable = False
     return Screw(axis=axis, point=point, angle=angle, slide=slide, pitch=pitch)
+
+
+def _real(value: Any, name: str) -> float:
+    """A real scalar (finite or not: the core judges) for the screw's parts."""
+    arr = as_float_array(value, name, finite=False)
+    if arr.ndim != 0:
+        raise PoinsotError(f"{name}: must be a scalar, got shape {arr.shape}")
+    return float(arr)
 
 
 # ---- kinematics of Euler angles (2.98-2.99) --------------------------------------------------

@@ -223,6 +223,7 @@ VALID_FOR: dict[str, dict[str, Any]] = {
     "sweep.uniform": {"low": 0.5, "high": 2.0},
     "sweep.log_uniform": {"low": 0.5, "high": 2.0},
     "screw_axis": {"t": [1.0, 2.0, 3.0]},
+    "Screw.__init__": {"slide": 0.1},
     "RigidBody.rotated": {"rotation": R0},
     "RigidBody.load_mesh": {"path": "__CUBE_STL__"},
     "RigidBody.from_density": {"density": 1000.0},
@@ -306,7 +307,6 @@ VALID_FOR: dict[str, dict[str, Any]] = {
 #: Result types that poinsot constructs and users only read: their constructors are not part
 #: of the input surface (their methods and fields are fuzzed through ``INSTANCES``).
 RESULT_TYPES = {
-    "Screw",
     "IntegrationErrorEstimate",
     "FrameTransform",
     "ParticleTrajectory",

@@ -150,7 +150,12 @@ CASES: dict[str, list[tuple[Callable[[], Any], Callable[[Any], Any]]]] = {
         (
             lambda: ps.screw_axis(ps.axis_angle_to_matrix([0, 0, 1], 0.5), [1.0, 2, 3]),
             lambda s: s.apply([[1.0, 2.0, 3.0]]),
-        )
+        ),
+        # built from its parts (issue 21, item 9): list input, the point moved along the axis
+        (
+            lambda: ps.Screw([0.0, 0.0, 2.0], [0.5, -1.0, 7.0], 0.5, 0.1),
+            lambda s: (s.point, s.pitch, s.apply([1.0, 2.0, 3.0])),
+        ),
     ],
     "MovingFrame": [
         (
