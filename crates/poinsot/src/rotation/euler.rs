@@ -345,9 +345,13 @@ fn canonical_xyx(
     if sb <= EULER_LOCK_TOL {
         return (lock_angles(cb > 0.0, beta, sum, diff, zero_first), true);
     }
-    let alpha = m10.atan2(-eps * m20);
-    let gamma = at(0, 1).atan2(eps * at(0, 2));
-    let (alpha, gamma) = split(alpha, gamma, cb >= 0.0, sum, diff);
+    let (alpha, gamma) = split(
+        [m10, -eps * m20],
+        [at(0, 1), eps * at(0, 2)],
+        cb >= 0.0,
+        sum,
+        diff,
+    );
     ([alpha, beta, gamma], false)
 }
 
@@ -367,43 +371,44 @@ fn canonical_xyz(at: &impl Fn(usize, usize) -> f64, zero_first: bool) -> ([f64; 
     if cb <= EULER_LOCK_TOL {
         return (lock_angles(sb > 0.0, beta, sum, diff, zero_first), true);
     }
-    let alpha = (-m12).atan2(m22);
-    let gamma = (-at(0, 1)).atan2(at(0, 0));
-    let (alpha, gamma) = split(alpha, gamma, sb >= 0.0, sum, diff);
+    let (alpha, gamma) = split([-m12, m22], [-at(0, 1), at(0, 0)], sb >= 0.0, sum, diff);
     ([alpha, beta, gamma], false)
 }
 
-/// The first and third angles from their direct values `alpha` and `gamma` (each an `atan2` of
-/// its own matrix entries: accurate relative to its size, but only to `ε/|sin β|` or
-/// `ε/|cos β|` absolutely, the split being ill-conditioned near the lock) and the
-/// well-conditioned combination: `sum() = α + γ` (`near_sum`, the factor `1 + |cβ|` or
-/// `1 + |sβ|` ≥ 1 in front of it) or `diff() = α − γ`. The smaller of the two angles is kept as
-/// computed, so it has its relative accuracy; the larger is the combination minus (or plus) the
-/// smaller, so that `α ± γ` is exact and the triple rebuilds the matrix to round-off also where
-/// the split is ill-conditioned. Both in `(−π, π]`.
+/// The first and third angles from their own entries `a = (y, x)` and `g = (y, x)` (each
+/// `s (sin, cos)` of its angle with the same factor `s = |sin β|` or `|cos β| > 0`, so an
+/// `atan2` of them is accurate relative to the angle's size, but only to `ε/s` absolutely, the
+/// split being ill-conditioned near the lock) and the well-conditioned combination:
+/// `sum() = α + γ` (`near_sum`, the factor `1 + |cβ|` or `1 + |sβ|` ≥ 1 in front of it) or
+/// `diff() = α − γ`. The angle smaller in magnitude (the larger cosine, `x`: no `atan2` needed
+/// to choose) is the `atan2` of its entries, so it keeps its relative accuracy; the larger is
+/// the combination minus (or plus) the smaller, so that `α ± γ` is exact and the triple
+/// rebuilds the matrix to round-off also where the split is ill-conditioned. Three `atan2` in
+/// all with β's, as before; both angles in `(−π, π]`.
 #[inline]
 fn split(
-    alpha: f64,
-    gamma: f64,
+    a: [f64; 2],
+    g: [f64; 2],
     near_sum: bool,
     sum: impl Fn() -> f64,
     diff: impl Fn() -> f64,
 ) -> (f64, f64) {
-    let (alpha, gamma) = (wrap(alpha), wrap(gamma));
-    if gamma.abs() <= alpha.abs() {
-        let alpha = if near_sum {
-            sum() - gamma
-        } else {
-            diff() + gamma
-        };
-        (wrap(alpha), gamma)
-    } else {
+    if a[1] >= g[1] {
+        let alpha = wrap(a[0].atan2(a[1]));
         let gamma = if near_sum {
             sum() - alpha
         } else {
             alpha - diff()
         };
         (alpha, wrap(gamma))
+    } else {
+        let gamma = wrap(g[0].atan2(g[1]));
+        let alpha = if near_sum {
+            sum() - gamma
+        } else {
+            diff() + gamma
+        };
+        (wrap(alpha), gamma)
     }
 }
 
