@@ -639,8 +639,12 @@ def check_result(qual: str, value: Any) -> list[str]:
     return problems
 
 
-def check_exception(qual: str, exc: BaseException, names: set[str]) -> list[str]:
-    """Problems with a raised exception: its type, and the argument its message names."""
+def check_exception(
+    qual: str, exc: BaseException, names: set[str], given: frozenset[str] = frozenset()
+) -> list[str]:
+    """Problems with a raised exception: its type, the argument its message names, and a
+    float spelled out in full (``given``: the digits of the exact integers the call was given,
+    which a message may echo as they are)."""
     if isinstance(exc, Deadline):
         return [f"{qual}: {exc}"]
     if isinstance(exc, PASS_THROUGH):
@@ -654,7 +658,7 @@ def check_exception(qual: str, exc: BaseException, names: set[str]) -> list[str]
             f"{qual} raised {type(exc).__name__} naming {head!r}, not one of its arguments "
             f"{sorted(names)}: {msg[:200]}"
         ]
-    long = spelled_out_number(msg)
+    long = spelled_out_number(msg, given)
     if long is not None:
         return [f"{qual}: a number spelled out in full, {long[:40]}…, in {msg[:200]}"]
     return []
@@ -663,12 +667,14 @@ def check_exception(qual: str, exc: BaseException, names: set[str]) -> list[str]
 _DIGITS = re.compile(r"(?<![\w.])\d+(?:\.\d+)?(?![\w.])")
 
 
-def spelled_out_number(msg: str) -> str | None:
+def spelled_out_number(msg: str, given: frozenset[str] = frozenset()) -> str | None:
     """A number of ``msg`` beyond [1e-4, 1e16) written out in full (what Rust's ``{}`` prints
     for 1e-308: 310 characters) instead of the documented exponent form, or None. Runs of
     more than 17 significant digits (an exact whole number) are not floats and pass."""
     for m in _DIGITS.finditer(msg):
         token = m.group()
+        if token in given:
+            continue
         int_part, _, frac = token.partition(".")
         digits = (int_part + frac).strip("0")
         large = len(int_part) > 16 and not int_part.startswith("0")
@@ -699,7 +705,7 @@ def _run_call(site: Site, args: dict[str, Any], read_properties: bool) -> list[s
         except BaseException as exc:
             if isinstance(exc, KeyboardInterrupt) and not isinstance(exc, Deadline):
                 raise
-            return check_exception(site.qualname, exc, site.names)
+            return check_exception(site.qualname, exc, site.names, _integers(args))
         problems = check_result(site.qualname, result)
         cls = type(result).__name__
         if read_properties and hasattr(ps, cls) and inspect.isclass(getattr(ps, cls)):
@@ -719,6 +725,16 @@ def _run_call(site: Site, args: dict[str, Any], read_properties: bool) -> list[s
                     continue
                 problems += check_result(f"{cls}", {prop: value})
         return problems
+
+
+def _integers(args: dict[str, Any]) -> frozenset[str]:
+    """The decimal digits of every integer among ``args`` (and in their lists, one level)."""
+    values: list[Any] = []
+    for v in args.values():
+        values.extend(v if isinstance(v, list | tuple) else [v])
+    return frozenset(
+        str(abs(v)) for v in values if isinstance(v, int | np.integer) and not isinstance(v, bool)
+    )
 
 
 def describe(value: Any) -> str:
