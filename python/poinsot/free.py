@@ -259,6 +259,14 @@ class FreeSymmetricTop(show.Displayed):
         return float(self._core.space_precession_rate)
 
     @property
+    def max_time(self) -> float:
+        """The largest ``|t|`` at which :meth:`omega` and the attitude are computed, s: the
+        time in which the top turns through 2⁴² ≈ 4.4e12 rad at its fastest rate (the phase is
+        then good to ~1e-3 rad); a later ``t`` is refused naming ``t``; ``inf`` when the top
+        never turns that far within the double range (docs/dynamics.md)."""
+        return float(self._core.max_time)
+
+    @property
     def shape(self) -> str:
         """ "prolate" (I₃ < I₁), "oblate" (I₃ > I₁) or "spherical"."""
         return str(self._core.shape)
@@ -442,6 +450,15 @@ class FreeRigidBody(show.Displayed):
     def period(self) -> float:
         """The period of ω(t) (s); inf when ω is constant or on the separatrix."""
         return float(self._core.period)
+
+    @property
+    def max_time(self) -> float:
+        """The largest ``|t|`` at which the state is computed, s: the time in which the motion
+        turns through 2⁴² ≈ 4.4e12 rad at its fastest rate (λ or the precession rate; the
+        phase is then good to ~1e-3 rad). A later ``t`` is refused naming ``t`` (``duration``
+        in :func:`simulate`); ``inf`` when the body never turns that far within the double
+        range (docs/dynamics.md)."""
+        return float(self._core.max_time)
 
     @property
     def regime(self) -> str:

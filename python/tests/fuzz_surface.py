@@ -342,12 +342,10 @@ DOCUMENTED_INF = {
     ("Screw", "pitch"),
     ("Earth.inertial_period", ""),  # no inertial oscillation at the equator
     ("Earth.inertial_oscillation", "period"),
-    ("ellipk", ""),  # K(1) = inf
-    ("ellipf", ""),
-    ("ellippi", ""),
-    ("ellippiinc", ""),  # F, Π at their poles
     ("FreeRigidBody", "period"),  # on the separatrix the motion is asymptotic
     ("FreeRigidBody", "flip_interval"),
+    ("FreeRigidBody", "max_time"),  # never 2^42 rad within the doubles (omega0 ~ 1e-300)
+    ("FreeSymmetricTop", "max_time"),
     ("HeavyTop", "nutation_period"),  # steady precession and the sleeping top
     ("HeavyTop", "cubic_roots"),  # u3 = inf for m g l = 0: the cubic has no third root
     ("axis_stability", "rate"),

@@ -22,7 +22,9 @@ fn at_times<T: Send, const K: usize>(
 where
     Rows<K>: FromIterator<T>,
 {
-    Ok(map_each(py, &times(t)?, move |&t| f(t))?.into_iter().collect())
+    Ok(map_each(py, &times(t)?, move |&t| f(t))?
+        .into_iter()
+        .collect())
 }
 
 /// The closed-form free symmetric top (private; use `poinsot.FreeSymmetricTop`).
@@ -94,6 +96,11 @@ impl PySymmetricTop {
     #[getter]
     fn space_precession_rate(&self) -> f64 {
         self.inner.space_precession_rate()
+    }
+    /// The largest |t| (s) at which ω(t) and the attitude are computed (phase 2⁴² rad).
+    #[getter]
+    fn max_time(&self) -> f64 {
+        self.inner.max_time()
     }
     #[getter]
     fn shape(&self) -> &'static str {
@@ -214,6 +221,12 @@ impl PyFreeBody {
     #[getter]
     fn invariable_plane_distance(&self) -> f64 {
         self.inner.invariable_plane_distance()
+    }
+    /// The largest |t| (s) at which the state is computed (phase 2⁴² rad; `inf` when the
+    /// body never turns that far within the double range).
+    #[getter]
+    fn max_time(&self) -> f64 {
+        self.inner.max_time()
     }
     /// (ω (N, 3) body, attitude (N, 4) [w, x, y, z], signs continuous) at times t (N,).
     fn state(&self, py: Python<'_>, t: PyReadonlyArray1<'_, f64>) -> PyResult<(Rows<3>, Rows<4>)> {
