@@ -270,7 +270,7 @@ impl Earth {
             // and reported as never coming down; steps of at most an eighth of the flat
             // flight time end above the ground (z(t) > 0 for 0 < t < t_flat).
             let peak = 0.5 * vz * (vz / self.g);
-            if !(peak >= f64::MIN_POSITIVE) {
+            if peak < f64::MIN_POSITIVE {
                 return Err(Error::invalid(
                     "elevation",
                     format!(
