@@ -16,12 +16,12 @@ pub const ROTATION_MATRIX_TOL: f64 = 1e-6;
 /// Orthonormality defect `max |RᵀR − I|` up to which a function that *converts* a rotation
 /// matrix (to a quaternion, Euler angles, an axis and angle, a screw) uses the matrix's own
 /// entries; above it (and within [`ROTATION_MATRIX_TOL`]) it converts the nearest rotation
-/// instead ([`nearest_rotation`]: the orthogonal factor of the polar decomposition, what
+/// instead (the orthogonal factor of the polar decomposition, `nearest_rotation`, what
 /// scipy's `Rotation.from_matrix` takes). `16 ε ≈ 3.6e-15`: a matrix built in double precision
 /// from angles or a unit quaternion is off by up to about 12 ε and is converted as it is, bit
 /// for bit as before; one printed to 7 decimals (off by about 1e-7) is projected, which moves
-/// its quaternion by about the defect (2.0e-8 → 1e-16 from the nearest rotation's, for the
-/// example in `docs/rotation.md`).
+/// its quaternion by about the defect (for the example in `docs/rotation.md`, from 3.2e-8 to
+/// 3.6e-9 off the quaternion of the rotation before rounding).
 pub const NEAREST_ROTATION_DEFECT: f64 = 16.0 * f64::EPSILON;
 
 /// Most iterations of [`nearest_rotation`]: from the largest accepted defect, 1e-6, the error
