@@ -71,6 +71,12 @@ impl FreeSymmetricTop {
     pub fn space_precession_rate(&self) -> f64 {
         self.inner.space_precession_rate()
     }
+    /// The largest |t| (s) at which ω(t) and the attitude are computed: the time in which the
+    /// top turns through 2⁴² rad at its fastest rate (a later `t` is refused naming `t`).
+    #[wasm_bindgen(getter, js_name = maxTime)]
+    pub fn max_time(&self) -> f64 {
+        self.inner.max_time()
+    }
     /// Kinetic energy (J), conserved.
     #[wasm_bindgen(getter)]
     pub fn energy(&self) -> Out<f64> {
@@ -180,6 +186,13 @@ impl FreeRigidBody {
     #[wasm_bindgen(getter)]
     pub fn period(&self) -> Out<f64> {
         Ok(self.inner.period()?)
+    }
+    /// The largest |t| (s) at which the state is computed: the time in which the motion turns
+    /// through 2⁴² rad at its fastest rate (a later `t` is refused naming `t`); `Infinity` when
+    /// the body never turns that far within the double range.
+    #[wasm_bindgen(getter, js_name = maxTime)]
+    pub fn max_time(&self) -> f64 {
+        self.inner.max_time()
     }
     /// The regime of the motion (the core's name for it).
     #[wasm_bindgen(getter)]
