@@ -88,6 +88,24 @@ impl Turning {
             v_lo: lower.1,
         }
     }
+    /// Whether the motion lies nearer the lower (hanging) pole than the upper: w₁ + w₂ > 2, i.e.
+    /// v₁ + v₂ < 2. There the v's are the small, exact pole distances and the w's ≈ 2 have lost
+    /// theirs (1 − cos θ rounds to 2 within ~1.5e-8 rad of θ = π).
+    pub fn nearer_lower_pole(&self) -> bool {
+        self.w_lo + self.w_hi > 2.0
+    }
+    /// The nutation's extent w₂ − w₁ = v₂ − v₁ = u₂ − u₁ (≥ 0), as the difference of the pole
+    /// distances about the nearer pole, each exact where small: w₂ − w₁ near the upright (as
+    /// before), v₂ − v₁ near the hanging pole, where w₂ − w₁ would be a difference of two numbers
+    /// that both round to ~2 (0 for a nutation between π − 1e-8 and π − 7.6e-9). Zero for steady
+    /// motion.
+    pub fn spread(&self) -> f64 {
+        if self.nearer_lower_pole() {
+            self.v_hi - self.v_lo
+        } else {
+            self.w_hi - self.w_lo
+        }
+    }
     /// θ₁ (upper) and θ₂ (lower), in [0, π].
     pub fn thetas(&self) -> (f64, f64) {
         (
@@ -95,12 +113,34 @@ impl Turning {
             theta_from_wv(self.w_hi, self.v_lo),
         )
     }
+    /// The distances π − θ₁ ≥ π − θ₂ from the hanging pole, to full relative precision however
+    /// small (from v = 1 + cos θ: `tan((π − θ)/2) = √(v/w)`); π − θ of the double θ would round
+    /// them to an ulp of π (4.4e-16).
+    pub fn hanging_distances(&self) -> (f64, f64) {
+        (
+            theta_from_wv(self.v_hi, self.w_lo),
+            theta_from_wv(self.v_lo, self.w_hi),
+        )
+    }
 }
 
-/// w = 1 − cos θ and v = 1 + cos θ without cancellation: `2 sin²(θ/2)`, `2 cos²(θ/2)`.
+/// w = 1 − cos θ and v = 1 + cos θ without cancellation: `2 sin²(θ/2)`, `2 cos²(θ/2)`. θ = π
+/// (the double nearest π, the bottom as the API spells it) is the hanging pole itself, v = 0, as
+/// θ = 0 is the upright one (else v = 7.5e-33: a top "at π" would nutate 1.2e-16 rad from it).
 pub(crate) fn w_v(theta: f64) -> (f64, f64) {
+    if theta == std::f64::consts::PI {
+        return (2.0, 0.0);
+    }
     let (sh, ch) = (0.5 * theta).sin_cos();
     (2.0 * sh * sh, 2.0 * ch * ch)
+}
+
+/// sin θ and cos θ, with θ = π the hanging pole itself (sin θ = 0, as [`w_v`] has v = 0 there).
+pub(crate) fn sin_cos(theta: f64) -> (f64, f64) {
+    if theta == std::f64::consts::PI {
+        return (0.0, -1.0);
+    }
+    theta.sin_cos()
 }
 
 /// θ from w = 1 − cos θ and v = 1 + cos θ: `tan(θ/2) = √(w/v)`, accurate at both poles.

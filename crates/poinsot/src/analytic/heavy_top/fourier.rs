@@ -106,8 +106,9 @@ pub(crate) struct SeriesInput {
     pub mc: f64,
     pub kappa: f64,
     pub tau0: f64,
-    pub w_lo: f64,
     pub w_hi: f64,
+    /// w₂ − w₁ = v₂ − v₁, about the nearer pole (`Turning::spread`).
+    pub spread: f64,
     pub v_lo: f64,
     pub v_hi: f64,
     /// Series of ∫dτ/w with its factor (φ gets `half_d · factor`), if present.
@@ -167,7 +168,9 @@ impl Fourier {
         }
         let d = d / 3.0;
         let mean_sn2 = d / s.k;
-        let dw = s.w_hi - s.w_lo;
+        // The amplitude w₂ − w₁ = v₂ − v₁ from the pole distances that are exact here (near the
+        // hanging pole w₂ − w₁ of the w's ≈ 2 is lost: the θ of the series would not move).
+        let dw = s.spread;
         let dv = s.v_hi - s.v_lo;
         let w_mean = s.w_hi - dw * mean_sn2;
         let v_mean = s.v_lo + dv * mean_sn2;
@@ -489,13 +492,16 @@ mod tests {
     use super::super::{EulerState, HeavyTop, Motion};
     use super::*;
 
-    /// The series of a few nutating tops (waves, loops, near the upper pole, a fast top).
+    /// The series of a few nutating tops (waves, loops, near the upper pole, a fast top, next to
+    /// the hanging pole).
     fn series() -> Vec<Fourier> {
         let states = [
             (0.5, 1.0, 0.8, 0.3, 0.6, 6.0),
             (0.5, 2.0, 1.2, -0.7, -1.5, 2.0),
             (1.5, 0.3, 0.05, 0.2, 0.1, 30.0),
             (0.8, 1.0, 2.5, 1.0, 0.4, -9.0),
+            // Next to the hanging pole (the amplitude from v = 1 + cos θ: issue 21).
+            (0.5, 1.0, PI - 1e-8, 0.0, 0.3, 1.3),
         ];
         let all: Vec<Fourier> = states
             .iter()

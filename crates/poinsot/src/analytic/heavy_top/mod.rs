@@ -191,7 +191,7 @@ impl HeavyTop {
             };
         }
         let (w0, v0) = w_v(st.theta);
-        let (s, c) = st.theta.sin_cos();
+        let (s, c) = cubic::sin_cos(st.theta);
         let s2 = s * s;
         // The rates in the top's own time unit 1/σ (σ = 2ᵏ ≈ its fastest rate, see
         // `TimeScale`): exact, and the squares and products below then neither overflow nor
@@ -797,7 +797,7 @@ fn all_finite(values: &[f64]) -> bool {
 /// Errors name `I1`, `I3`, `mgl`, `theta` and the rates.
 pub fn lagrangian(i1: f64, i3: f64, mgl: f64, state: &EulerState) -> Result<f64> {
     check_state(i1, i3, mgl, state, false)?;
-    let (s, c) = state.theta.sin_cos();
+    let (s, c) = cubic::sin_cos(state.theta);
     // In the unit of the state's fastest rate (exact; see `TimeScale`), so that no square
     // overflows where the Lagrangian itself is representable.
     let ts = TimeScale::of(&[state.theta_dot, state.phi_dot, state.psi_dot]);
@@ -840,7 +840,7 @@ pub fn constants_of_state(
     state: &EulerState,
 ) -> Result<StateConstants> {
     check_state(i1, i3, mgl, state, false)?;
-    let (s, c) = state.theta.sin_cos();
+    let (s, c) = cubic::sin_cos(state.theta);
     // The arithmetic of `HeavyTop::new`, in the unit of the fastest rate (exact).
     let ts = TimeScale::of(&[state.theta_dot, state.phi_dot, state.psi_dot]);
     let (thd, phd, psd) = (

@@ -162,7 +162,8 @@ impl Nutation {
         }
         // m = β(w₂ − w₁)/P and 1 − m = β(u₃ − u₂)/P, each from its own accurate form, made
         // consistent by taking the larger as the complement of the smaller.
-        let m_raw = r.beta * (t.w_hi - t.w_lo) / p;
+        // (w₂ − w₁ about the nearer pole: `Turning::spread`.)
+        let m_raw = r.beta * t.spread() / p;
         let (m, mc) = if m_raw <= 0.5 {
             (m_raw, 1.0 - m_raw)
         } else {
@@ -221,7 +222,7 @@ impl Nutation {
             Some(v0) => (Some(0.0), -v0),
         };
         let w_third = (r.d != 0.0 && t.w_lo > 0.0)
-            .then(|| Third::new((t.w_hi - t.w_lo) / t.w_hi, t.w_lo / t.w_hi, k, mc));
+            .then(|| Third::new(t.spread() / t.w_hi, t.w_lo / t.w_hi, k, mc));
         let v_form = (r.e != 0.0 && t.v_lo > 0.0).then(|| {
             let dv = t.v_hi - t.v_lo;
             if t.v_lo >= 0.5 * t.v_hi || mc == 0.0 {
@@ -282,7 +283,7 @@ impl Nutation {
         } else {
             f64::INFINITY
         };
-        let dw = t.w_hi - t.w_lo;
+        let dw = t.spread();
         let w_series = match self.w_third {
             None => None,
             Some(th) => {
@@ -318,8 +319,8 @@ impl Nutation {
             mc,
             kappa: self.kappa,
             tau0: self.tau0,
-            w_lo: t.w_lo,
             w_hi: t.w_hi,
+            spread: t.spread(),
             v_lo: t.v_lo,
             v_hi: t.v_hi,
             w_series,
@@ -610,7 +611,8 @@ impl Nutation {
             0.0
         };
         // θ̇ = ẇ/sin θ, ẇ = 2κ(w₁ − w₂) sn cn dn, sin θ = √(w v); at a pole passage the ratios
-        // cn/√w, sn/√v are taken in their limits.
+        // cn/√w, sn/√v are taken in their limits. (w₂ − w₁ about the nearer pole: near the
+        // hanging pole the w's both round to ~2.)
         let a = if self.t.w_lo == 0.0 {
             jv.cn.signum() / self.t.w_hi.sqrt()
         } else {
@@ -621,7 +623,7 @@ impl Nutation {
         } else {
             jv.sn / v.sqrt()
         };
-        let theta_dot = 2.0 * self.kappa * (self.t.w_lo - self.t.w_hi) * jv.dn * a * b;
+        let theta_dot = -2.0 * self.kappa * self.t.spread() * jv.dn * a * b;
         [fw + fv, theta_dot, self.c_psi - fw + fv]
     }
 }
