@@ -14,6 +14,14 @@ _HEAVY = "h = ps.HeavyTop(1.0, 0.5, 1.0, 0.8, phi_dot=0.5, psi_dot=6.0)"
 _T = "t = np.linspace(0.0, 100.0, {n})"
 _ANG = "a = np.random.default_rng(0).uniform(-3, 3, ({n}, 3))"
 _MATS = _ANG + "\nR = ps.euler_to_matrix(a)"
+#: (n, 3) points (m) or vectors, made without a random generator (fast to set up).
+_PTS = "x = np.linspace(-1.0, 1.0, 3 * {n}).reshape({n}, 3)"
+_SCREW = "s = ps.screw_axis(ps.axis_angle_to_matrix([0.0, 0.0, 1.0], 0.5), [0.0, 0.0, 1.0])"
+_FRAME = (
+    "f = ps.MovingFrame(angular_velocity=[0.0, 0.0, 1.0], angular_acceleration=[0.1, 0.0, 0.0])"
+)
+_SPRING = "sp = ps.SpringParticle(1.0, 2.0)"
+_CUBOID = "c = ps.RigidBody.cuboid(1.0, (3.0, 1.0, 2.0))"
 
 ARRAY_CALLS: dict[str, tuple[str, str]] = {
     "FreeRigidBody.polhode": (_BODY, "b.polhode(10**8)"),
@@ -32,6 +40,67 @@ ARRAY_CALLS: dict[str, tuple[str, str]] = {
         "e = ps.Earth()\n" + _T.format(n=5 * 10**7),
         "e.coriolis_parameter(t)",
     ),
+    "Earth.jacobi_integral": (
+        "e = ps.Earth()\n" + _PTS.format(n=2 * 10**7),
+        "e.jacobi_integral(0.7, x, x)",
+    ),
+    "Screw.apply": (_SCREW + "\n" + _PTS.format(n=3 * 10**7), "s.apply(x)"),
+    "MovingFrame.to_fixed": (_FRAME + "\n" + _PTS.format(n=10**7), "f.to_fixed(x, x, x)"),
+    "MovingFrame.to_moving": (_FRAME + "\n" + _PTS.format(n=10**7), "f.to_moving(x, x, x)"),
+    "MovingFrame.fictitious_forces": (
+        _FRAME + "\n" + _PTS.format(n=2 * 10**7),
+        "f.fictitious_forces(1.0, x, x)",
+    ),
+    "SpringParticle.jacobi_integral": (
+        _FRAME + "\n" + _SPRING + "\n" + _PTS.format(n=2 * 10**7),
+        "sp.jacobi_integral(f, x, x)",
+    ),
+    "RigidBody.from_point_masses": (
+        _PTS.format(n=3 * 10**7) + "\nm = np.ones(len(x))",
+        "ps.RigidBody.from_point_masses(m, x)",
+    ),
+    "RigidBody.inertia_about": (_CUBOID + "\n" + _PTS.format(n=2 * 10**7), "c.inertia_about(x)"),
+    "RigidBody.angular_momentum": (
+        _CUBOID + "\n" + _PTS.format(n=2 * 10**7),
+        "c.angular_momentum(x)",
+    ),
+    "free_body_states": (
+        _PTS.format(n=10**6) + "\nI = np.ones((len(x), 3)) * [1.0, 2.0, 3.0]",
+        "ps.free_body_states(I, x + [0.1, 0.2, 0.3], np.linspace(0.0, 1.0, 2))",
+    ),
+}
+
+#: Evaluators over a user's array that are fast per element (tens to a few hundred ns): an
+#: array that fits in memory keeps them busy for a second or less, so they are measured by the
+#: bench only (the same helpers as the calls above stop them).
+FAST_CALLS: dict[str, tuple[str, str]] = {
+    "SpringParticle.force": (_SPRING + "\n" + _PTS.format(n=2 * 10**7), "sp.force(x)"),
+    "SpringParticle.acceleration": (
+        _SPRING + "\n" + _PTS.format(n=2 * 10**7),
+        "sp.acceleration(x)",
+    ),
+    "SpringParticle.potential": (_SPRING + "\n" + _PTS.format(n=2 * 10**7), "sp.potential(x)"),
+    "SpringParticle.energy": (_SPRING + "\n" + _PTS.format(n=2 * 10**7), "sp.energy(x, x)"),
+    "RigidBody.kinetic_energy": (
+        _CUBOID + "\n" + _PTS.format(n=2 * 10**7),
+        "c.kinetic_energy(x)",
+    ),
+    "RigidBody.holding_torque": (
+        _CUBOID + "\n" + _PTS.format(n=2 * 10**7),
+        "c.holding_torque(x)",
+    ),
+    "RigidBody.momentum_angle": (
+        _CUBOID + "\n" + _PTS.format(n=2 * 10**7),
+        "c.momentum_angle(x)",
+    ),
+    "HeavyTop.effective_potential": (
+        _HEAVY + "\nth = np.linspace(0.1, 3.0, 5 * 10**7)",
+        "h.effective_potential(th)",
+    ),
+    "HeavyTop.effective_potential_derivative": (
+        _HEAVY + "\nth = np.linspace(0.1, 3.0, 5 * 10**7)",
+        "h.effective_potential_derivative(th)",
+    ),
 }
 
 #: Rotation conversions: fast per record (a few ns), so no array that fits in memory keeps
@@ -40,4 +109,13 @@ ROTATION_CALLS: dict[str, tuple[str, str]] = {
     "euler_to_matrix": (_ANG.format(n=10**7), "ps.euler_to_matrix(a)"),
     "rotate_vectors": (_MATS.format(n=10**7), "ps.rotate_vectors(R, a)"),
     "matrix_to_euler": (_MATS.format(n=10**7), "ps.matrix_to_euler(R)"),
+    "body_angular_velocity": (_ANG.format(n=10**7), "ps.body_angular_velocity(a, a)"),
+    "euler_rates": (
+        _ANG.format(n=10**7),
+        "ps.euler_rates(a * [1.0, 0.3, 1.0] + [0.0, 1.2, 0.0], a)",
+    ),
+    "quaternion_multiply": (
+        _ANG.format(n=10**7) + "\nq = ps.matrix_to_quaternion(ps.euler_to_matrix(a))",
+        "ps.quaternion_multiply(q, q)",
+    ),
 }

@@ -240,11 +240,6 @@ pub fn rows_into<const K: usize>(
         .into_pyarray(py))
 }
 
-/// An (N, 3) float array → a vector of `[f64; 3]` rows.
-pub fn rows3(argument: &str, a: &PyReadonlyArray2<'_, f64>) -> PyResult<Vec<[f64; 3]>> {
-    rows_in::<3>(argument, a)
-}
-
 /// An (N, 3) C-contiguous array of any element type → its flat row-major slice of `3·N` values.
 pub fn rows3_slice<'a, T: numpy::Element>(
     argument: &str,

@@ -9,6 +9,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::control::{map_each, run};
+use crate::convert::rows_view;
 use crate::errors::{invalid, IntoPy};
 use crate::frames::{array_in, options, rows_in, rows_out, solution_dict, vec_in};
 use poinsot::limits::check_count;
@@ -286,12 +287,8 @@ fn earth_jacobi_integral<'py>(
     states: PyReadonlyArray2<'py, f64>,
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
     let e = earth(rotation_rate, radius, g)?;
-    let states = rows_in::<6>("states", &states)?;
-    let out: Vec<f64> = states
-        .iter()
-        .map(|s| e.jacobi_integral(latitude, s))
-        .collect::<poinsot::Result<_>>()
-        .py()?;
+    let states = rows_view::<6>("states", &states)?;
+    let out = map_each(py, &states, |s| e.jacobi_integral(latitude, s))?;
     Ok(PyArray1::from_vec(py, out))
 }
 

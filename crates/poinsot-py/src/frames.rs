@@ -3,6 +3,7 @@
 //! A frame state travels as a flat array of 15 floats — origin, velocity, acceleration,
 //! angular velocity, angular acceleration (3 each, fixed components) — and an attitude
 //! (3, 3) array. Particles travel as (N, 3) arrays.
+use std::borrow::Cow;
 use std::cell::RefCell;
 
 use numpy::{PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
@@ -15,8 +16,8 @@ use poinsot::{Mat3, Vec3};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::control::{run, run_attached};
-use crate::convert::{a3, mat3, mat3_out, rows3, v3, vec3, vec3_out};
+use crate::control::{map_each, run, run_attached};
+use crate::convert::{a3, mat3, mat3_out, rows_view, v3, vec3, vec3_out};
 use crate::errors::{invalid, IntoPy};
 
 pub(crate) use crate::convert::{array_in, options, rows_in, rows_out, vec_in};
@@ -45,18 +46,19 @@ fn frame_arg(
 }
 
 /// Applies `transform` to each row of (N, 3) positions, velocities and accelerations and returns
-/// its eight (N, 3) outputs (the transformed state and the named acceleration terms).
+/// its eight (N, 3) outputs (the transformed state and the named acceleration terms); the GIL
+/// released and Ctrl-C polled every chunk of rows ([`run`], [`poinsot::control::try_map_n`]).
 fn transform_rows<'py>(
     py: Python<'py>,
     position: &PyReadonlyArray2<'py, f64>,
     velocity: &PyReadonlyArray2<'py, f64>,
     acceleration: &PyReadonlyArray2<'py, f64>,
-    transform: impl Fn(&Vec3, &Vec3, &Vec3) -> poinsot::Result<[Vec3; 8]>,
+    transform: impl Fn(&Vec3, &Vec3, &Vec3) -> poinsot::Result<[Vec3; 8]> + Sync,
 ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
     let (r, v, a) = (
-        rows3("position", position)?,
-        rows3("velocity", velocity)?,
-        rows3("acceleration", acceleration)?,
+        rows_view::<3>("position", position)?,
+        rows_view::<3>("velocity", velocity)?,
+        rows_view::<3>("acceleration", acceleration)?,
     );
     let n = r.len();
     if v.len() != n || a.len() != n {
@@ -65,17 +67,23 @@ fn transform_rows<'py>(
             "position, velocity and acceleration must have the same number of rows",
         ));
     }
-    let mut out: Vec<Vec<[f64; 3]>> = (0..8).map(|_| Vec::with_capacity(n)).collect();
-    for i in 0..n {
-        for (k, x) in transform(&v3(&r[i]), &v3(&v[i]), &v3(&a[i]))
-            .py()?
-            .iter()
-            .enumerate()
-        {
-            out[k].push(a3(x));
-        }
-    }
-    Ok(out.iter().map(|rows| rows_out(py, rows)).collect())
+    let each = run(py, None, || {
+        poinsot::control::try_map_n(n, |i| transform(&v3(&r[i]), &v3(&v[i]), &v3(&a[i])))
+    })?;
+    Ok(columns(py, &each))
+}
+
+/// The K outputs of each row as K (N, 3) arrays.
+fn columns<'py, const K: usize>(
+    py: Python<'py>,
+    each: &[[Vec3; K]],
+) -> Vec<Bound<'py, PyArray2<f64>>> {
+    (0..K)
+        .map(|k| {
+            let rows: Vec<[f64; 3]> = each.iter().map(|x| a3(&x[k])).collect();
+            rows_out(py, &rows)
+        })
+        .collect()
 }
 
 /// Transforms (N, 3) moving-frame positions, velocities and accelerations to the fixed frame:
@@ -151,7 +159,10 @@ fn frame_fictitious_forces<'py>(
 ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
     let f = frame_arg(&frame, &attitude)?;
     let m = vec_in(&mass);
-    let (r, v) = (rows3("position", &position)?, rows3("velocity", &velocity)?);
+    let (r, v) = (
+        rows_view::<3>("position", &position)?,
+        rows_view::<3>("velocity", &velocity)?,
+    );
     let n = r.len();
     if v.len() != n || m.len() != n {
         return Err(invalid(
@@ -159,17 +170,13 @@ fn frame_fictitious_forces<'py>(
             "mass, position and velocity must have the same number of rows",
         ));
     }
-    let mut out: Vec<Vec<[f64; 3]>> = (0..4).map(|_| Vec::with_capacity(n)).collect();
-    for i in 0..n {
-        let ff = f.fictitious_forces(m[i], &v3(&r[i]), &v3(&v[i])).py()?;
-        for (k, x) in [ff.translational, ff.coriolis, ff.centrifugal, ff.euler]
-            .iter()
-            .enumerate()
-        {
-            out[k].push(a3(x));
-        }
-    }
-    Ok(out.iter().map(|rows| rows_out(py, rows)).collect())
+    let each = run(py, None, || {
+        poinsot::control::try_map_n(n, |i| {
+            let ff = f.fictitious_forces(m[i], &v3(&r[i]), &v3(&v[i]))?;
+            Ok([ff.translational, ff.coriolis, ff.centrifugal, ff.euler])
+        })
+    })?;
+    Ok(columns(py, &each))
 }
 
 /// The solution's samples at `times` (or every step if `times` is empty) as a dict
@@ -430,8 +437,10 @@ impl SpringParticleCore {
         position: PyReadonlyArray2<'py, f64>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
         let r = finite_rows("position", &position)?;
-        let out = map_rows(&r, |x| a3(&self.inner.force(&v3(x))));
-        Ok(rows_out(py, &finite_out("position", "force", out)?))
+        let out = map_each(py, &r, |x| {
+            finite_row("position", "force", a3(&self.inner.force(&v3(x))))
+        })?;
+        Ok(rows_out(py, &out))
     }
     /// (N, 3) accelerations −(k/m) r (m/s²) at (N, 3) positions (m).
     fn acceleration<'py>(
@@ -440,35 +449,42 @@ impl SpringParticleCore {
         position: PyReadonlyArray2<'py, f64>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
         let r = finite_rows("position", &position)?;
-        let out = map_rows(&r, |x| a3(&self.inner.acceleration(&v3(x))));
-        Ok(rows_out(py, &finite_out("position", "acceleration", out)?))
+        let out = map_each(py, &r, |x| {
+            finite_row(
+                "position",
+                "acceleration",
+                a3(&self.inner.acceleration(&v3(x))),
+            )
+        })?;
+        Ok(rows_out(py, &out))
     }
     /// (N,) potentials ½ k |r|² (J) at (N, 3) positions (m).
-    fn potential(&self, position: PyReadonlyArray2<'_, f64>) -> PyResult<Vec<f64>> {
+    fn potential(&self, py: Python<'_>, position: PyReadonlyArray2<'_, f64>) -> PyResult<Vec<f64>> {
         let r = finite_rows("position", &position)?;
-        r.iter()
-            .map(|x| finite_value("position", "potential", self.inner.potential(&v3(x))))
-            .collect()
+        map_each(py, &r, |x| {
+            finite_value("position", "potential", self.inner.potential(&v3(x)))
+        })
     }
     /// (N,) fixed-frame energies (J) of (N, 3) positions (m) and velocities (m/s).
     fn energy(
         &self,
+        py: Python<'_>,
         position: PyReadonlyArray2<'_, f64>,
         velocity: PyReadonlyArray2<'_, f64>,
     ) -> PyResult<Vec<f64>> {
         let (r, v) = finite_pairs(&position, &velocity)?;
-        r.iter()
-            .zip(&v)
-            .map(|(a, b)| {
-                let e = self.inner.energy(&v3(a), &v3(b));
-                finite_value(self.culprit(a, b), "energy", e)
+        run(py, None, || {
+            poinsot::control::try_map_n(r.len(), |i| {
+                let e = self.inner.energy(&v3(&r[i]), &v3(&v[i]));
+                finite_value(self.culprit(&r[i], &v[i]), "energy", e)
             })
-            .collect()
+        })
     }
     /// (N,) Jacobi integrals (J) in the frame (15 floats, attitude) of (N, 3) relative positions
     /// (m) and velocities (m/s) in moving components.
     fn jacobi_integral(
         &self,
+        py: Python<'_>,
         frame: PyReadonlyArray1<'_, f64>,
         attitude: PyReadonlyArray2<'_, f64>,
         position: PyReadonlyArray2<'_, f64>,
@@ -476,13 +492,12 @@ impl SpringParticleCore {
     ) -> PyResult<Vec<f64>> {
         let f = frame_arg(&frame, &attitude)?;
         let (r, v) = finite_pairs(&position, &velocity)?;
-        r.iter()
-            .zip(&v)
-            .map(|(a, b)| {
-                let j = self.inner.jacobi_integral(&f, &v3(a), &v3(b));
-                finite_value(self.culprit(a, b), "Jacobi integral", j)
+        run(py, None, || {
+            poinsot::control::try_map_n(r.len(), |i| {
+                let j = self.inner.jacobi_integral(&f, &v3(&r[i]), &v3(&v[i]));
+                finite_value(self.culprit(&r[i], &v[i]), "Jacobi integral", j)
             })
-            .collect()
+        })
     }
 }
 
@@ -501,34 +516,38 @@ impl SpringParticleCore {
     }
 }
 
-/// `rows` if every number is finite, else an error naming `argument` ("`what` overflows").
-fn finite_out(argument: &str, what: &str, rows: Vec<[f64; 3]>) -> PyResult<Vec<[f64; 3]>> {
-    if rows.iter().flatten().all(|x| x.is_finite()) {
-        Ok(rows)
+/// `row` if every number is finite, else an error naming `argument` ("`what` overflows").
+fn finite_row(argument: &str, what: &str, row: [f64; 3]) -> poinsot::Result<[f64; 3]> {
+    if row.iter().all(|x| x.is_finite()) {
+        Ok(row)
     } else {
-        Err(invalid(
-            argument,
-            format!("the {what} is beyond the range of double precision"),
-        ))
+        Err(overflow(argument, what))
     }
 }
 
 /// `x` if finite, else an error naming `argument`.
-fn finite_value(argument: &str, what: &str, x: f64) -> PyResult<f64> {
+fn finite_value(argument: &str, what: &str, x: f64) -> poinsot::Result<f64> {
     if x.is_finite() {
         Ok(x)
     } else {
-        Err(invalid(
-            argument,
-            format!("the {what} is beyond the range of double precision"),
-        ))
+        Err(overflow(argument, what))
     }
 }
 
-/// (N, 3) rows, each finite (the error names `argument`).
-fn finite_rows(argument: &str, a: &PyReadonlyArray2<'_, f64>) -> PyResult<Vec<[f64; 3]>> {
-    let rows = rows3(argument, a)?;
-    for r in &rows {
+fn overflow(argument: &str, what: &str) -> poinsot::Error {
+    poinsot::Error::invalid(
+        argument,
+        format!("the {what} is beyond the range of double precision"),
+    )
+}
+
+/// (N, 3) rows, each finite (the error names `argument`), borrowed from a C-contiguous array.
+fn finite_rows<'a>(
+    argument: &str,
+    a: &'a PyReadonlyArray2<'_, f64>,
+) -> PyResult<Cow<'a, [[f64; 3]]>> {
+    let rows = rows_view::<3>(argument, a)?;
+    for r in rows.iter() {
         poinsot::error::check_finite(argument, r).py()?;
     }
     Ok(rows)
@@ -536,10 +555,10 @@ fn finite_rows(argument: &str, a: &PyReadonlyArray2<'_, f64>) -> PyResult<Vec<[f
 
 /// Positions and velocities of the same length, each finite.
 #[allow(clippy::type_complexity)]
-fn finite_pairs(
-    position: &PyReadonlyArray2<'_, f64>,
-    velocity: &PyReadonlyArray2<'_, f64>,
-) -> PyResult<(Vec<[f64; 3]>, Vec<[f64; 3]>)> {
+fn finite_pairs<'a>(
+    position: &'a PyReadonlyArray2<'_, f64>,
+    velocity: &'a PyReadonlyArray2<'_, f64>,
+) -> PyResult<(Cow<'a, [[f64; 3]]>, Cow<'a, [[f64; 3]]>)> {
     let (r, v) = (
         finite_rows("position", position)?,
         finite_rows("velocity", velocity)?,
@@ -555,10 +574,6 @@ fn finite_pairs(
         ));
     }
     Ok((r, v))
-}
-
-fn map_rows(rows: &[[f64; 3]], f: impl Fn(&[f64; 3]) -> [f64; 3]) -> Vec<[f64; 3]> {
-    rows.iter().map(f).collect()
 }
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {

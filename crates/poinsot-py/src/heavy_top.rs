@@ -7,7 +7,7 @@ use poinsot::analytic::{self, EulerState, HeavyTop};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::control::run;
+use crate::control::{map_each, run};
 use crate::convert::{self, Rows, Values};
 use crate::errors::{invalid, IntoPy};
 
@@ -183,21 +183,27 @@ impl PyHeavyTop {
     }
 
     /// V(θ) (J) at (N,) angles θ (rad).
-    fn effective_potential(&self, theta: PyReadonlyArray1<'_, f64>) -> PyResult<Values> {
-        slice("theta", &theta)?
-            .iter()
-            .map(|&th| self.inner.effective_potential(th))
-            .collect::<poinsot::Result<_>>()
-            .py()
+    fn effective_potential(
+        &self,
+        py: Python<'_>,
+        theta: PyReadonlyArray1<'_, f64>,
+    ) -> PyResult<Values> {
+        let v = map_each(py, slice("theta", &theta)?, |&th| {
+            self.inner.effective_potential(th)
+        })?;
+        Ok(v.into_iter().collect())
     }
 
     /// dV/dθ (N·m) at (N,) angles θ (rad).
-    fn effective_potential_derivative(&self, theta: PyReadonlyArray1<'_, f64>) -> PyResult<Values> {
-        slice("theta", &theta)?
-            .iter()
-            .map(|&th| self.inner.effective_potential_derivative(th))
-            .collect::<poinsot::Result<_>>()
-            .py()
+    fn effective_potential_derivative(
+        &self,
+        py: Python<'_>,
+        theta: PyReadonlyArray1<'_, f64>,
+    ) -> PyResult<Values> {
+        let v = map_each(py, slice("theta", &theta)?, |&th| {
+            self.inner.effective_potential_derivative(th)
+        })?;
+        Ok(v.into_iter().collect())
     }
 
     /// (N, 3) Euler angles [φ, θ, ψ] (rad) at (N,) times (s).
@@ -230,13 +236,15 @@ impl PyHeavyTop {
     }
 
     /// (N, 3) Euler angles by the incomplete elliptic integrals (sn, R_J) at every time.
-    fn euler_angles_carlson(&self, t: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<3>> {
+    fn euler_angles_carlson(
+        &self,
+        py: Python<'_>,
+        t: PyReadonlyArray1<'_, f64>,
+    ) -> PyResult<Rows<3>> {
         let ts = slice("t", &t)?;
         poinsot::error::check_finite("t", ts).py()?;
-        ts.iter()
-            .map(|&x| self.inner.euler_angles_carlson(x))
-            .collect::<poinsot::Result<_>>()
-            .py()
+        let rows = map_each(py, ts, |&x| self.inner.euler_angles_carlson(x))?;
+        Ok(rows.into_iter().collect())
     }
 }
 

@@ -8,7 +8,7 @@ use poinsot::{Error, Vec3};
 use pyo3::prelude::*;
 
 use crate::convert::{
-    from_mat, matrix, mats3_out, opt_vector, rows3, rows3_slice, vec3, vector, Matrix, Rows,
+    from_mat, matrix, mats3_out, opt_vector, rows3_slice, rows_view, vec3, vector, Matrix, Rows,
     Values, Vector,
 };
 use crate::errors::{invalid, IntoPy};
@@ -57,14 +57,16 @@ impl PyMassProperties {
     /// Point masses (kg, (N,)) at positions (m, (N, 3)).
     #[staticmethod]
     fn from_point_masses(
+        py: Python<'_>,
         masses: PyReadonlyArray1<'_, f64>,
         positions: PyReadonlyArray2<'_, f64>,
     ) -> PyResult<Self> {
         let m = masses
             .as_slice()
             .map_err(|_| invalid("masses", "must be a contiguous array"))?;
-        let p = rows3("positions", &positions)?;
-        wrap(MassProperties::from_point_masses(m, &p))
+        let p = rows_view::<3>("positions", &positions)?;
+        let inner = crate::control::run(py, None, || MassProperties::from_point_masses(m, &p))?;
+        Ok(Self { inner })
     }
 
     /// Solid sphere.
@@ -258,12 +260,10 @@ impl PyMassProperties {
         py: Python<'py>,
         points: PyReadonlyArray2<'_, f64>,
     ) -> PyResult<Bound<'py, PyArray3<f64>>> {
-        let mut out = Vec::new();
-        for p in rows3("point", &points)? {
-            let m = self.inner.inertia_about(&Vec3::from(p)).py()?;
-            out.extend(from_mat(&m).as_flattened());
-        }
-        mats3_out(py, out)
+        let mats = crate::control::map_each(py, &rows_view::<3>("point", &points)?, |p| {
+            Ok(from_mat(&self.inner.inertia_about(&Vec3::from(*p))?))
+        })?;
+        mats3_out(py, mats.into_flattened().into_flattened())
     }
 
     /// The body moved by `offset` (m, (3,)).
@@ -290,26 +290,46 @@ impl PyMassProperties {
     /// L = I·ω (kg·m²/s) for each ω of `omega` (rad/s, (N, 3)), about `about` (m) or the
     /// centre of mass → (N, 3).
     #[pyo3(signature = (omega, about=None))]
-    fn angular_momentum(&self, omega: Omegas<'_>, about: About<'_>) -> PyResult<Rows<3>> {
-        self.per_omega(&omega, &about, MassProperties::angular_momentum)
+    fn angular_momentum(
+        &self,
+        py: Python<'_>,
+        omega: Omegas<'_>,
+        about: About<'_>,
+    ) -> PyResult<Rows<3>> {
+        self.per_omega(py, &omega, &about, MassProperties::angular_momentum)
     }
 
     /// T = ½ ω·I·ω (J) for each ω of `omega` (rad/s, (N, 3)) → (N,).
     #[pyo3(signature = (omega, about=None))]
-    fn kinetic_energy(&self, omega: Omegas<'_>, about: About<'_>) -> PyResult<Values> {
-        self.per_omega(&omega, &about, MassProperties::kinetic_energy)
+    fn kinetic_energy(
+        &self,
+        py: Python<'_>,
+        omega: Omegas<'_>,
+        about: About<'_>,
+    ) -> PyResult<Values> {
+        self.per_omega(py, &omega, &about, MassProperties::kinetic_energy)
     }
 
     /// N = ω × L (N·m) for each ω of `omega` (rad/s, (N, 3)) → (N, 3).
     #[pyo3(signature = (omega, about=None))]
-    fn holding_torque(&self, omega: Omegas<'_>, about: About<'_>) -> PyResult<Rows<3>> {
-        self.per_omega(&omega, &about, MassProperties::holding_torque)
+    fn holding_torque(
+        &self,
+        py: Python<'_>,
+        omega: Omegas<'_>,
+        about: About<'_>,
+    ) -> PyResult<Rows<3>> {
+        self.per_omega(py, &omega, &about, MassProperties::holding_torque)
     }
 
     /// Angle between L and ω (rad) for each ω of `omega` (rad/s, (N, 3)) → (N,).
     #[pyo3(signature = (omega, about=None))]
-    fn momentum_angle(&self, omega: Omegas<'_>, about: About<'_>) -> PyResult<Values> {
-        self.per_omega(&omega, &about, MassProperties::momentum_angle)
+    fn momentum_angle(
+        &self,
+        py: Python<'_>,
+        omega: Omegas<'_>,
+        about: About<'_>,
+    ) -> PyResult<Values> {
+        self.per_omega(py, &omega, &about, MassProperties::momentum_angle)
     }
 }
 
@@ -319,19 +339,20 @@ type Omegas<'py> = PyReadonlyArray2<'py, f64>;
 type About<'py> = Option<PyReadonlyArray1<'py, f64>>;
 
 impl PyMassProperties {
-    /// `f(body, ω, about)` for each row ω of `omega`, mapping core errors.
-    fn per_omega<T, O: FromIterator<T>>(
+    /// `f(body, ω, about)` for each row ω of `omega`, mapping core errors (the GIL released,
+    /// Ctrl-C polled every chunk of rows: [`crate::control::map_each`]).
+    fn per_omega<T: Send, O: FromIterator<T>>(
         &self,
+        py: Python<'_>,
         omega: &Omegas<'_>,
         about: &About<'_>,
-        f: impl Fn(&MassProperties, &Vec3, Option<&Vec3>) -> poinsot::Result<T>,
+        f: impl Fn(&MassProperties, &Vec3, Option<&Vec3>) -> poinsot::Result<T> + Send + Sync,
     ) -> PyResult<O> {
         let about = opt_vector("about", about)?;
-        rows3("omega", omega)?
-            .into_iter()
-            .map(|w| f(&self.inner, &Vec3::from(w), about.as_ref()))
-            .collect::<poinsot::Result<O>>()
-            .py()
+        let each = crate::control::map_each(py, &rows_view::<3>("omega", omega)?, |w| {
+            f(&self.inner, &Vec3::from(*w), about.as_ref())
+        })?;
+        Ok(each.into_iter().collect())
     }
 }
 

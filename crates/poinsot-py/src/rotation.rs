@@ -10,7 +10,7 @@ use poinsot::Vec3;
 use pyo3::prelude::*;
 
 use crate::control::run;
-use crate::convert::{matrix, parse, records, rows3, vector, zeros, Matrix, Vector};
+use crate::convert::{matrix, parse, records, rows_view, vector, zeros, Matrix, Vector};
 use crate::errors::{invalid, IntoPy};
 
 type Out<'py> = Bound<'py, PyArrayDyn<f64>>;
@@ -209,7 +209,14 @@ fn screw_from_parts(
     angle: f64,
     slide: f64,
 ) -> PyResult<rot::Screw> {
-    rot::Screw::new(vector("axis", axis)?, vector("point", point)?, angle, slide, None).py()
+    rot::Screw::new(
+        vector("axis", axis)?,
+        vector("point", point)?,
+        angle,
+        slide,
+        None,
+    )
+    .py()
 }
 
 /// A screw from its parts, checked by the core: `(axis, point, angle, slide, pitch)` with the
@@ -223,8 +230,14 @@ fn screw_new(
     slide: f64,
     pitch: Option<f64>,
 ) -> PyResult<(Vector, Vector, f64, f64, f64)> {
-    let s = rot::Screw::new(vector("axis", &axis)?, vector("point", &point)?, angle, slide, pitch)
-        .py()?;
+    let s = rot::Screw::new(
+        vector("axis", &axis)?,
+        vector("point", &point)?,
+        angle,
+        slide,
+        pitch,
+    )
+    .py()?;
     Ok((Vector(s.axis), Vector(s.point), s.angle, s.slide, s.pitch))
 }
 
@@ -266,12 +279,15 @@ fn screw_apply<'py>(
     x: numpy::PyReadonlyArray2<'py, f64>,
 ) -> PyResult<Out<'py>> {
     let screw = screw_from_parts(&axis, &point, angle, slide)?;
-    let points = rows3("x", &x)?;
+    let points = rows_view::<3>("x", &x)?;
+    // In chunks of points, Ctrl-C polled between two (on this thread: `run`'s monitor).
     batch(py, &[points.len(), 3], |out| {
-        for (p, y) in points.iter().zip(out.chunks_exact_mut(3)) {
-            y.copy_from_slice(screw.apply(&Vec3::from(*p))?.as_slice());
-        }
-        Ok(())
+        poinsot::control::fill_chunks(out, 3 * poinsot::control::CHUNK, false, |start, ys| {
+            for (p, y) in points[start / 3..].iter().zip(ys.chunks_exact_mut(3)) {
+                y.copy_from_slice(screw.apply(&Vec3::from(*p))?.as_slice());
+            }
+            Ok(())
+        })
     })
 }
 

@@ -11,6 +11,7 @@
 //! its precision); angular momenta, energies and torques that small are returned as IEEE
 //! subnormals (the correctly rounded value).
 
+use crate::control;
 use crate::error::{check_finite, check_positive, Error, Result};
 use crate::inertia::scaling::{
     check_overflow, check_range, exponent_of_max, ldexp, ldexp_mat, ldexp_vec, split,
@@ -159,24 +160,19 @@ impl MassProperties {
         // m r nor |d|² leaves the range when the results do not.
         let em = exponent_of_max(masses);
         let er = exponent_of_max(positions.as_flattened());
-        let ms: Vec<f64> = masses.iter().map(|m| ldexp(*m, -em)).collect();
-        let rs: Vec<Vec3> = positions
-            .iter()
-            .map(|r| ldexp_vec(&Vec3::from(*r), -er))
-            .collect();
-        let mass: f64 = ms.iter().sum();
+        // Each pass over the masses polls for Ctrl-C every chunk of them.
+        let ms: Vec<f64> = control::try_map(masses, |m| Ok(ldexp(*m, -em)))?;
+        let rs: Vec<Vec3> = control::try_map(positions, |r| Ok(ldexp_vec(&Vec3::from(*r), -er)))?;
+        let n = ms.len();
+        let mass: f64 = polled_sum(n, 0.0, |i| ms[i])?;
         check_range("masses", "the total mass (kg)", mass, em, HINT)?;
-        let first: Vec3 = ms.iter().zip(&rs).map(|(m, r)| r * *m).sum();
+        let first: Vec3 = polled_sum(n, Vec3::zeros(), |i| rs[i] * ms[i])?;
         let com = first / mass;
         // Second pass about the centre of mass: no cancellation of large parallel-axis terms.
-        let inertia: Mat3 = ms
-            .iter()
-            .zip(&rs)
-            .map(|(m, r)| {
-                let d = r - com;
-                (Mat3::identity() * d.norm_squared() - d * d.transpose()) * *m
-            })
-            .sum();
+        let inertia: Mat3 = polled_sum(n, Mat3::zeros(), |i| {
+            let d = rs[i] - com;
+            (Mat3::identity() * d.norm_squared() - d * d.transpose()) * ms[i]
+        })?;
         let k = em + 2 * er;
         let blame = if (2 * er).abs() >= em.abs() {
             "positions"
@@ -469,6 +465,22 @@ fn check_rotation(argument: &str, r: &Mat3) -> Result<()> {
         ));
     }
     Ok(())
+}
+
+/// `f(0) + f(1) + … + f(n − 1)` added in order from `zero` (the numbers of `Iterator::sum`),
+/// polling for Ctrl-C every [`control::CHUNK`] terms.
+fn polled_sum<S: std::ops::AddAssign>(n: usize, zero: S, f: impl Fn(usize) -> S) -> Result<S> {
+    let mut acc = zero;
+    let mut start = 0;
+    while start < n {
+        let end = (start + control::CHUNK).min(n);
+        control::tick_by(control::CHUNK as u32)?;
+        for i in start..end {
+            acc += f(i);
+        }
+        start = end;
+    }
+    Ok(acc)
 }
 
 #[cfg(test)]
