@@ -130,6 +130,9 @@ _CHILD = """
 import os, signal, sys, threading, time
 import numpy as np
 import poinsot as ps
+# Python raises KeyboardInterrupt on SIGINT only if SIGINT was not ignored when it started (a
+# background job of a non-interactive shell inherits SIG_IGN): install the handler explicitly.
+signal.signal(signal.SIGINT, signal.default_int_handler)
 sent = []
 def fire():
     time.sleep(0.5)
