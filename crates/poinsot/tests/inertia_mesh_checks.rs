@@ -473,3 +473,73 @@ fn meshes_at_extreme_scales() {
     let e = e.unwrap_err();
     assert_eq!(e.argument, "density", "{e}");
 }
+
+/// Issue 21, item 16: a box beside an inside-out box of the same volume (total volume zero)
+/// was refused as "encloses zero volume … flat or collapsed"; it is a cavity outside any
+/// solid, as the nesting check says. Negative control: the same boxes both outward give mass 2.
+#[test]
+fn an_inverted_shell_of_equal_volume_is_named_a_cavity() {
+    let a = unit_cube();
+    let b = unit_cube().moved([3.0, 0.0, 0.0]);
+    let e = refused(&a.with(&b.inward()), &["cavity", "not inside any solid"]);
+    assert!(!e.message.contains("zero volume"), "{e}");
+    let both = a.with(&b).body(1.0).unwrap();
+    assert!((both.mass() - 2.0).abs() <= EXACT);
+}
+
+/// The unit cube as a triangle soup (each face with its own three corners), each corner's
+/// zero coordinates replaced by `noise(k)` (SolidWorks' STL exports: shared corners differ by
+/// ~1e-18 near zero) and vertex 0 of the soup moved by `gap`.
+fn cube_soup(noise: impl Fn(usize) -> f64, gap: f64) -> (Vec<f64>, Vec<u32>) {
+    let c = unit_cube();
+    let mut v = Vec::new();
+    let mut f = Vec::new();
+    for t in &c.f {
+        for &i in t {
+            let k = v.len() / 3;
+            v.extend(c.v[i as usize].map(|x| if x == 0.0 { noise(k) } else { x }));
+            f.push(k as u32);
+        }
+    }
+    v[0] += gap;
+    (v, f)
+}
+
+/// Issue 21, item 15: corners that differ by ~1e-18 are merged (within MERGE_RTOL of the
+/// largest coordinate magnitude): the soup is the unit cube (mass 1, centre 1/2, I = 1/6 1).
+/// Exact merging left it open; a real gap wider than the tolerance is still refused and the
+/// message names the tolerance.
+#[test]
+fn close_corners_are_merged_within_a_tolerance_scaled_to_the_mesh() {
+    let noise = |k: usize| [0.0, -0.0, 1e-18, -3e-19, 4e-33][k % 5];
+    let (v, f) = cube_soup(noise, 0.0);
+    let e = inertia::mesh_mass_properties(&v, &f, 1.0).unwrap_err();
+    assert!(e.message.contains("open"), "{e}");
+    let b = inertia::mesh_mass_properties_merging(&v, &f, 1.0).unwrap();
+    assert!((b.mass() - 1.0).abs() <= EXACT, "{}", b.mass());
+    assert!((b.center_of_mass() - Vec3::repeat(0.5)).amax() <= EXACT);
+    assert!((b.inertia() - Mat3::identity() / 6.0).amax() <= EXACT);
+    // A corner 1e-6 away (4 × the tolerance of 2.4e-7 for coordinates of magnitude 1).
+    let (v, f) = cube_soup(noise, 1e-6);
+    let e = inertia::mesh_mass_properties_merging(&v, &f, 1.0).unwrap_err();
+    assert_eq!(e.kind, ErrorKind::InvalidMesh, "{e}");
+    assert!(
+        e.message.contains("open") && e.message.contains("merged within 2.384185791015625e-7 m"),
+        "{e}"
+    );
+    // Within the tolerance (1e-7): merged, and the mass moves by less than 1e-6.
+    let (v, f) = cube_soup(noise, 1e-7);
+    let b = inertia::mesh_mass_properties_merging(&v, &f, 1.0).unwrap();
+    assert!((b.mass() - 1.0).abs() <= 1e-6, "{}", b.mass());
+    assert_eq!(inertia::MERGE_RTOL, 2f64.powi(-22));
+}
+
+/// Issue 21, item 6: the memory a mesh file will need is checked from its triangle count,
+/// naming `path` and the budget.
+#[test]
+fn a_mesh_file_too_large_for_the_budget_is_refused_by_its_triangle_count() {
+    inertia::check_mesh_file(1e6).unwrap();
+    let e = inertia::check_mesh_file(1e12).unwrap_err();
+    assert_eq!(e.argument, "path", "{e}");
+    assert!(e.message.contains("memory budget"), "{e}");
+}

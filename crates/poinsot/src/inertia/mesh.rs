@@ -38,6 +38,11 @@
 //! out of the edge checks; faces of zero area with three distinct indices take part in them as
 //! usual. The last two checks, with their limits, are in `mesh_embedding.rs`.
 //!
+//! **Merging** ([`mesh_mass_properties_merging`], for triangle soups and CAD exports): vertices
+//! within [`MERGE_RTOL`] (2^-22) of the largest coordinate magnitude of each other, in every
+//! coordinate, and chains of them, become the lowest-numbered vertex of their group, before
+//! the checks; an open mesh is then refused with the distance used.
+//!
 //! **Edge check without hashing.** Each use of an undirected edge `{a, b}` (`a < b`) by a face
 //! is filed under its low vertex `a`, with `b`, a direction bit and the face, by a counting
 //! sort into a compressed (CSR) list; each vertex's short list is then sorted and its runs
@@ -222,9 +227,9 @@ pub fn merge_close_vertices(vertices: &[f64], tris: &mut [[u32; 3]]) -> f64 {
 }
 
 /// Peak memory (bytes) per triangle of `RigidBody.load_mesh` reading a binary STL file with
-/// trimesh and checking it: measured 2026-11-28 with trimesh 5.2 on 10⁵–10⁶-triangle files
-/// (the peak resident size grew by ~360 bytes per triangle), rounded up.
-pub const MESH_FILE_BYTES_PER_TRIANGLE: usize = 400;
+/// trimesh and checking it: measured 2026-11-28 with trimesh 5.2 (the peak resident size grew
+/// by 716 bytes per triangle for 81,920 triangles, 676 for 327,680), rounded up.
+pub const MESH_FILE_BYTES_PER_TRIANGLE: usize = 768;
 
 /// Checks that reading and checking a mesh file of `triangles` triangles fits in the memory
 /// budget ([`MESH_FILE_BYTES_PER_TRIANGLE`] each); the error names `path` and the budget.
@@ -853,13 +858,8 @@ fn check_embedding(
     parts: &[Part],
 ) -> Result<()> {
     let pts = Points::new(vertices);
-    let t0 = std::time::Instant::now(); // ZZTIMING
     let index = Index::new(pts, tris, |f| comp[f] == UNUSED);
-    let t1 = t0.elapsed(); // ZZTIMING
     let (count, first) = index.intersections();
-    if std::env::var_os("ZZTIMING").is_some() {
-        eprintln!("ZZTIMING index {:?} join {:?}", t1, t0.elapsed() - t1);
-    } // ZZTIMING
     if let Some((i, j)) = first {
         return Err(Error::mesh(
             "faces",

@@ -6,7 +6,16 @@
 //!    in leaves of [`LEAF`] consecutive faces under a complete binary hierarchy of `f32` boxes
 //!    (a linear bounding-volume hierarchy, built bottom-up in parallel); a parallel self-join
 //!    of the hierarchy yields the pairs of leaves whose boxes overlap, and within them the
-//!    pairs of faces whose boxes overlap.
+//!    pairs of faces whose boxes overlap (within two leaves, only the faces that meet the
+//!    common part of the leaves' boxes).
+//!    Most pairs whose boxes meet are neighbours sharing a vertex (12 M pairs for a
+//!    1.3 M-face sphere). They are skipped topologically when the **star** of a shared vertex
+//!    (the faces around it) is proved embedded, exactly ([`star_embedded`]): along one axis
+//!    every face of the star projects with the same orientation and the fan of their wedges
+//!    winds once around the vertex, so two faces of the star meet only in the vertex or in
+//!    the edge they share. A star that fails (a fold, a pinch, a fan winding twice, a face of
+//!    zero area) leaves its pairs to the narrow phase, which handles faces sharing a vertex
+//!    or an edge exactly as any others.
 //!    Narrow phase: exact triangle–triangle tests on Shewchuk's adaptive orientation
 //!    predicates (`robust`), so a crossing by one ulp is found and neighbours that only share
 //!    a vertex or an edge are never flagged. Faces of exactly zero area (collinear corners)
@@ -545,27 +554,36 @@ fn spread(x: u64) -> u64 {
 /// The drop axis of a face, or `u8::MAX` when it takes no part (zero area, or left out).
 const NO_AXIS: u8 = u8::MAX;
 
-/// A face that takes part, at its position in Morton order.
+/// A face that takes part, at its position in Morton order (16 bytes: the join reads these
+/// for every pair of boxes that meet, and the corners only for the pairs it must test).
 #[derive(Clone, Copy)]
 struct Face {
-    corners: [P3; 3],
     indices: [u32; 3],
     /// The drop axis for 2-D tests in its plane ([`drop_axis`]).
     axis: u8,
-    /// Every coordinate within [`FAST_COORD_MAX`]: the float filters of [`off_plane`] apply.
-    fast: bool,
+    /// Bit `i` set: the star of corner `i` is proved embedded ([`star_embedded`]).
+    proved: u8,
+}
+
+/// Every coordinate within [`FAST_COORD_MAX`]: the float filters of [`off_plane`] apply.
+#[inline]
+fn fast(t: &[P3; 3]) -> bool {
+    t.iter()
+        .all(|c| c.iter().all(|x| x.abs() <= FAST_COORD_MAX))
 }
 
 /// The faces that take part, in Morton order, with their boxes, and a bounding-volume
 /// hierarchy over them: leaves of [`LEAF`] consecutive faces, and above them a complete binary
 /// tree in Morton order (implicit: node `i` of level `l` has the children `2i` and `2i + 1`
 /// of level `l − 1`), so that building it is one sort and a few linear passes.
-pub(crate) struct Index {
+pub(crate) struct Index<'a> {
+    /// The vertices.
+    pts: Points<'a>,
     /// Face indices in Morton order (faces that take part only).
     order: Vec<u32>,
     /// The box of `order[k]`.
     boxes: Vec<Box3>,
-    /// Corners, indices and drop axis of `order[k]`.
+    /// Vertex indices and drop axis of `order[k]`.
     faces: Vec<Face>,
     /// Whether face `f` takes part (non-degenerate), by face index.
     used: Vec<bool>,
@@ -638,10 +656,10 @@ fn face_axis(p: &[P3; 3]) -> u8 {
     drop_axis(p).unwrap_or(NO_AXIS)
 }
 
-impl Index {
+impl<'a> Index<'a> {
     /// Builds the index of the faces `tris` (`skip[f]`: left out, e.g. a repeated index).
     pub(crate) fn new(
-        pts: Points<'_>,
+        pts: Points<'a>,
         tris: &[[u32; 3]],
         skip: impl Fn(usize) -> bool + Sync,
     ) -> Self {
@@ -692,28 +710,25 @@ impl Index {
         let low = (1u64 << face_bits) - 1;
         let order: Vec<u32> = keys.par_iter().map(|k| (k & low) as u32).collect();
         drop(keys);
+        let used: Vec<bool> = per_face.par_iter().map(|(a, _)| *a != NO_AXIS).collect();
+        let star = stars(pts, tris, &used);
         let (boxes, faces): (Vec<Box3>, Vec<Face>) = order
             .par_iter()
             .with_min_len(1024)
             .map(|&f| {
                 let (axis, b) = per_face[f as usize];
-                let t = tris[f as usize];
-                let corners = pts.tri(&t);
-                let fast = corners
-                    .iter()
-                    .all(|c| c.iter().all(|x| x.abs() <= FAST_COORD_MAX));
+                let indices = tris[f as usize];
+                let proved = (0..3).fold(0u8, |m, i| m | u8::from(star[indices[i] as usize]) << i);
                 (
                     b,
                     Face {
-                        corners,
-                        indices: t,
+                        indices,
                         axis,
-                        fast,
+                        proved,
                     },
                 )
             })
             .unzip();
-        let used = per_face.par_iter().map(|(a, _)| *a != NO_AXIS).collect();
         let merge_all = |c: &[Box3]| c.iter().fold(Box3::EMPTY, |e, x| e.merged(x));
         let mut levels = vec![boxes.par_chunks(LEAF).map(merge_all).collect::<Vec<_>>()];
         while levels[levels.len() - 1].len() > 1 {
@@ -725,6 +740,7 @@ impl Index {
             levels.push(next);
         }
         Self {
+            pts,
             order,
             boxes,
             faces,
@@ -830,16 +846,33 @@ impl Index {
         f
     }
 
+    /// The pairs between two leaves whose boxes meet: only faces that meet the common part
+    /// of the two leaves' boxes can meet a face of the other leaf.
     fn leaf_pair(&self, i: usize, j: usize) -> Found {
         let mut f = Found::default();
         let (ri, rj) = (self.leaf(i), self.leaf(j));
-        let bj = self.levels[0][j];
+        let (bi, bj) = (self.levels[0][i], self.levels[0][j]);
+        let common = Box3 {
+            lo: [0, 1, 2].map(|k| bi.lo[k].max(bj.lo[k])),
+            hi: [0, 1, 2].map(|k| bi.hi[k].min(bj.hi[k])),
+        };
+        let mut near = [0usize; LEAF];
+        let mut n = 0;
+        for b in rj {
+            if self.boxes[b].meets(&common) {
+                near[n] = b;
+                n += 1;
+            }
+        }
+        if n == 0 {
+            return f;
+        }
         for a in ri {
             let ba = self.boxes[a];
-            if !ba.meets(&bj) {
+            if !ba.meets(&common) {
                 continue;
             }
-            for b in rj.clone() {
+            for &b in &near[..n] {
                 if ba.meets(&self.boxes[b]) {
                     self.narrow(a, b, &mut f);
                 }
@@ -854,20 +887,23 @@ impl Index {
     /// they share), then the exact tests.
     #[inline]
     fn narrow(&self, a: usize, b: usize, found: &mut Found) {
-        let (p, q) = (&self.faces[a], &self.faces[b]);
+        let (fp, fq) = (&self.faces[a], &self.faces[b]);
+        let (pi, qi) = (&fp.indices, &fq.indices);
         let (mut sp, mut sq) = (0u8, 0u8);
-        for i in 0..3 {
-            for j in 0..3 {
-                if p.indices[i] == q.indices[j] {
+        for (i, a) in pi.iter().enumerate() {
+            for (j, b) in qi.iter().enumerate() {
+                if a == b {
                     sp |= 1 << i;
                     sq |= 1 << j;
                 }
             }
         }
-        if p.fast
-            && q.fast
-            && (off_plane(&p.corners, &q.corners, sq) || off_plane(&q.corners, &p.corners, sp))
-        {
+        // Both faces are in the star of a shared vertex that is proved embedded.
+        if sp & fp.proved != 0 {
+            return;
+        }
+        let (p, q) = (self.pts.tri(pi), self.pts.tri(qi));
+        if fast(&p) && fast(&q) && (off_plane(&p, &q, sq) || off_plane(&q, &p, sp)) {
             return;
         }
         self.exact(a, b, found);
@@ -878,7 +914,7 @@ impl Index {
     #[inline(never)]
     fn exact(&self, a: usize, b: usize, found: &mut Found) {
         let (fp, fq) = (&self.faces[a], &self.faces[b]);
-        let (mut p, mut q) = (fp.corners, fq.corners);
+        let (mut p, mut q) = (self.pts.tri(&fp.indices), self.pts.tri(&fq.indices));
         let both = self.boxes[a].merged(&self.boxes[b]);
         let extent = (0..3).fold(0.0f64, |m, k| {
             m.max(f64::from(both.hi[k]) - f64::from(both.lo[k]))
@@ -921,7 +957,7 @@ impl Index {
                 if !keep(self.order[k] as usize) {
                     continue;
                 }
-                match crossing(&self.faces[k].corners, p) {
+                match crossing(&self.pts.tri(&self.faces[k].indices), p) {
                     Some(c) => w += i64::from(c),
                     None => return None,
                 }
@@ -1012,6 +1048,158 @@ fn crossing(t: &[P3; 3], p: P3) -> Option<i8> {
 }
 
 // ---------------------------------------------------------------------------------------------
+// Stars: the faces around a vertex.
+
+/// For each vertex `v`, whether the faces around it are proved to meet each other only in `v`
+/// and the edges they share ([`star_embedded`]). Faces are filed under their vertices by a
+/// counting sort into a compressed list, each rayon task owning a range of vertices (as the
+/// edge check does); then each vertex is tested on its own.
+fn stars(pts: Points<'_>, tris: &[[u32; 3]], used: &[bool]) -> Vec<bool> {
+    let nv = pts.v.len() / 3;
+    let tasks = rayon::current_num_threads().clamp(1, 64);
+    let span = nv.div_ceil(tasks).max(1);
+    let mut count = vec![0u32; nv];
+    count.par_chunks_mut(span).enumerate().for_each(|(k, own)| {
+        let (lo, hi) = (k * span, k * span + own.len());
+        for t in tris {
+            for &v in t {
+                let v = v as usize;
+                if v >= lo && v < hi {
+                    own[v - lo] += 1;
+                }
+            }
+        }
+    });
+    let mut start = Vec::with_capacity(nv + 1);
+    let mut acc = 0usize;
+    for c in &count {
+        start.push(acc);
+        acc += *c as usize;
+    }
+    start.push(acc);
+    drop(count);
+    let mut list = vec![0u32; acc];
+    let mut pieces = Vec::with_capacity(tasks);
+    let mut rest = list.as_mut_slice();
+    for k in 0..nv.div_ceil(span) {
+        let (v0, v1) = (k * span, ((k + 1) * span).min(nv));
+        let (piece, tail) = rest.split_at_mut(start[v1] - start[v0]);
+        pieces.push((v0, v1, piece));
+        rest = tail;
+    }
+    pieces.par_iter_mut().for_each(|(v0, v1, piece)| {
+        let base = start[*v0];
+        let mut cursor: Vec<usize> = start[*v0..*v1].iter().map(|s| s - base).collect();
+        for (f, t) in tris.iter().enumerate() {
+            for &v in t {
+                let v = v as usize;
+                if v >= *v0 && v < *v1 {
+                    let c = &mut cursor[v - *v0];
+                    piece[*c] = f as u32;
+                    *c += 1;
+                }
+            }
+        }
+    });
+    drop(pieces);
+    (0..nv)
+        .into_par_iter()
+        .with_min_len(1024)
+        .map(|v| star_embedded(pts, tris, used, v as u32, &list[start[v]..start[v + 1]]))
+        .collect()
+}
+
+/// The faces `star` around the vertex `v` meet each other only in `v` and the edges they
+/// share, proved exactly: along one coordinate axis `k` every face projects with the same
+/// orientation `s ≠ 0`, and their wedges at `v` wind around `v` exactly once. Then every
+/// face projects one to one, the projected wedges (each under π) tile the plane around `v`
+/// once, two wedges meet only in `v` or in the ray of the edge they share, and so two faces
+/// meet only in `v` or in that edge. The winding is counted without ordering the fan: in a
+/// closed, consistently oriented mesh the faces around `v` form closed fans (each edge at `v`
+/// is left by one face and entered by the next), each winding at least once, and the number
+/// of wedges `[a, b)` (half-open) that hold the ray from `v` through a fixed corner `r` is
+/// their total winding. `false` (the pairs are then tested one by one) for a vertex with a
+/// face that takes no part (zero area, repeated index), whose neighbourhood is badly scaled
+/// for the predicates, or whose fan is folded, pinched or winds twice.
+fn star_embedded(pts: Points<'_>, tris: &[[u32; 3]], used: &[bool], v: u32, star: &[u32]) -> bool {
+    if star.len() < 3 || star.iter().any(|&f| !used[f as usize]) {
+        return false;
+    }
+    let c = pts.p(v);
+    let wedge = |f: u32| {
+        let t = &tris[f as usize];
+        let i = if t[0] == v {
+            0
+        } else if t[1] == v {
+            1
+        } else {
+            2
+        };
+        (pts.p(t[(i + 1) % 3]), pts.p(t[(i + 2) % 3]))
+    };
+    let (mut lo, mut hi) = (c, c);
+    for &f in star {
+        let (a, b) = wedge(f);
+        for p in [a, b] {
+            for k in 0..3 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+    }
+    if !well_scaled((0..3).fold(0.0f64, |m, k| m.max(hi[k] - lo[k]))) {
+        return false;
+    }
+    // The reference corner and the axes to try, the largest normal component of the first
+    // face's first.
+    let f0 = star.iter().copied().min().unwrap_or(0);
+    let (r, b0) = wedge(f0);
+    let u = [r[0] - c[0], r[1] - c[1], r[2] - c[2]];
+    let w = [b0[0] - c[0], b0[1] - c[1], b0[2] - c[2]];
+    let n = [
+        (u[1] * w[2] - u[2] * w[1]).abs(),
+        (u[2] * w[0] - u[0] * w[2]).abs(),
+        (u[0] * w[1] - u[1] * w[0]).abs(),
+    ];
+    let first = if n[0] >= n[1] && n[0] >= n[2] {
+        0
+    } else if n[1] >= n[2] {
+        1
+    } else {
+        2
+    };
+    for k in [first, (first + 1) % 3, (first + 2) % 3] {
+        let s = o2(c, r, b0, k);
+        if s == 0 {
+            continue;
+        }
+        let mut winding = 0u32;
+        let mut same = true;
+        for &f in star {
+            let (a, b) = wedge(f);
+            if o2(c, a, b, k) != s {
+                same = false;
+                break;
+            }
+            let oa = o2(c, a, r, k);
+            let holds = if oa == 0 {
+                // r on the line of a: on its ray iff each projected coordinate of r − c has
+                // the sign of a − c's (float differences have exact signs).
+                let (pa, pr, pc) = (proj(a, k), proj(r, k), proj(c, k));
+                sign(pa.x - pc.x) == sign(pr.x - pc.x) && sign(pa.y - pc.y) == sign(pr.y - pc.y)
+            } else {
+                oa == s && o2(c, r, b, k) == s
+            };
+            winding += u32::from(holds);
+        }
+        if same {
+            return winding == 1;
+        }
+    }
+    false
+}
+
+// ---------------------------------------------------------------------------------------------
 // Connected components.
 
 /// A lock-free union-find over `0..n` (links the larger root under the smaller, so parents
@@ -1086,7 +1274,7 @@ pub(crate) const SHARED: u32 = u32::MAX - 1;
 /// For each component, the lowest face index with a vertex that belongs to it alone and that
 /// takes part in the index (non-degenerate), and that vertex; `None` if it has none.
 pub(crate) fn probe_vertices(
-    index: &Index,
+    index: &Index<'_>,
     tris: &[[u32; 3]],
     comp: &[u32],
     owner: &[u32],
@@ -1240,6 +1428,81 @@ mod tests {
         for d in ds {
             assert_eq!(o3_plane(&t, [d])[0], o3(t[0], t[1], t[2], d), "{d:?}");
         }
+    }
+
+    /// A closed, consistently oriented UV sphere (`n` rings, `m` vertices each, and two
+    /// poles) whose vertices are moved by up to `amp` in each coordinate (a fixed pseudo-random
+    /// sequence from `seed`): for large `amp` fans fold, pinch and wind twice.
+    fn bumpy_sphere(n: usize, m: usize, seed: u64, amp: f64) -> (Vec<f64>, Vec<[u32; 3]>) {
+        let mut state = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        let mut rnd = || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((state >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
+        };
+        let mut v = vec![0.0, 0.0, 1.0];
+        for k in 1..=n {
+            let th = std::f64::consts::PI * k as f64 / (n + 1) as f64;
+            for j in 0..m {
+                let ph = 2.0 * std::f64::consts::PI * j as f64 / m as f64;
+                v.extend([th.sin() * ph.cos(), th.sin() * ph.sin(), th.cos()]);
+            }
+        }
+        v.extend([0.0, 0.0, -1.0]);
+        for x in v.iter_mut() {
+            *x += amp * rnd();
+        }
+        let ring = |k: usize, j: usize| (1 + (k - 1) * m + j % m) as u32;
+        let south = (1 + n * m) as u32;
+        let mut f = Vec::new();
+        for j in 0..m {
+            f.push([0, ring(1, j + 1), ring(1, j)]);
+            for k in 1..n {
+                let (a, b) = (ring(k, j), ring(k, j + 1));
+                let (c, d) = (ring(k + 1, j + 1), ring(k + 1, j));
+                f.push([a, b, c]);
+                f.push([a, c, d]);
+            }
+            f.push([south, ring(n, j), ring(n, j + 1)]);
+        }
+        (v, f)
+    }
+
+    /// Issue 21, item 17: the join skips the pairs of faces around a vertex whose star is
+    /// proved embedded; on bumpy spheres (smooth to folded) it finds exactly the pairs that
+    /// testing every pair of faces finds, the first pair included.
+    #[test]
+    fn star_shortcut_agrees_with_testing_every_pair() {
+        let mut skipped_some = false;
+        let mut found_some = false;
+        for seed in 0..60u64 {
+            let amp = [0.0, 0.02, 0.08, 0.2, 0.5][seed as usize % 5];
+            let (v, f) = bumpy_sphere(6, 9, seed, amp);
+            let pts = Points::new(&v);
+            let index = Index::new(pts, &f, |_| false);
+            skipped_some |= index.faces.iter().any(|f| f.proved != 0);
+            let got = index.intersections();
+            let mut count = 0u64;
+            let mut first = None;
+            for i in 0..f.len() {
+                for j in i + 1..f.len() {
+                    let (p, q) = (pts.tri(&f[i]), pts.tri(&f[j]));
+                    let (Some(kp), Some(kq)) = (drop_axis(&p), drop_axis(&q)) else {
+                        continue;
+                    };
+                    if faces_cross(&p, &q, &f[i], &f[j], kp, kq) {
+                        count += 1;
+                        first.get_or_insert((i as u32, j as u32));
+                    }
+                }
+            }
+            found_some |= count > 0;
+            assert_eq!(got, (count, first), "seed {seed}, amplitude {amp}");
+        }
+        assert!(skipped_some && found_some);
     }
 
     #[test]

@@ -22,7 +22,10 @@ pub use body::{MassProperties, BODY_ROTATION_TOL};
 pub use density::{
     density_mass_properties, CubatureOptions, DensityIntegral, MAX_BATCH, POINTS_PER_REGION,
 };
-pub use mesh::{mesh_mass_properties, mesh_mass_properties_rows, FaceIndex, MAX_VERTICES};
+pub use mesh::{
+    check_mesh_file, merge_close_vertices, mesh_mass_properties, mesh_mass_properties_merging,
+    mesh_mass_properties_rows, FaceIndex, MAX_VERTICES, MERGE_RTOL, MESH_FILE_BYTES_PER_TRIANGLE,
+};
 pub use shapes::{
     cuboid, cuboid_sides, ellipsoid, solid_cone, solid_cylinder, solid_sphere, spherical_shell,
     thin_disk, thin_ring, thin_rod,
