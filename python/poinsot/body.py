@@ -474,8 +474,13 @@ class RigidBody(show.Displayed):
         density
             uniform density (kg/m³), > 0.
         merge_vertices
-            first merge vertices with exactly equal coordinates (needed for
-            meshes that repeat vertices per face, such as STL "triangle soups").
+            first merge vertices that lie within ``2**-22`` (``MERGE_RTOL`` of the core)
+            of the largest coordinate magnitude of each other, in each coordinate: two
+            units in the last place of single precision, the precision of binary STL
+            files. Needed for meshes that repeat vertices per face, such as STL
+            "triangle soups", and for CAD exports whose shared corners differ in their
+            last bits. Each corner becomes the lowest-numbered vertex of its group; when
+            the merged mesh is still open, the message gives the distance used.
 
         Notes
         -----
@@ -515,14 +520,14 @@ class RigidBody(show.Displayed):
             raise InvalidMeshError(
                 f"faces: index {int(f.max())} is out of range for {len(v)} vertices"
             )
-        if as_flag(merge_vertices, "merge_vertices"):
-            v, f = _merge_vertices(v, f)
+        merge = as_flag(merge_vertices, "merge_vertices")
         rho = _scalar(density, "density")
         return cls._wrap(
             _core.MassProperties.from_mesh(
                 np.ascontiguousarray(v, dtype=np.float64),
                 np.ascontiguousarray(f, dtype=np.int64),
                 rho,
+                merge,
             )
         )
 
@@ -542,23 +547,36 @@ class RigidBody(show.Displayed):
         return cls.from_mesh(mesh.vertices, mesh.faces, density, merge_vertices=merge_vertices)
 
     @classmethod
-    def load_mesh(cls, path: str | os.PathLike[str], density: float = 1.0) -> RigidBody:
+    def load_mesh(
+        cls, path: str | bytes | os.PathLike[str] | os.PathLike[bytes], density: float = 1.0
+    ) -> RigidBody:
         """The solid bounded by the triangle mesh in the file ``path`` (.stl, .obj, .ply, ...;
         coordinates in m), of uniform ``density`` (kg/m³), read with trimesh (the optional
         extra ``poinsot[mesh]``).
 
         The file is read with ``process=False`` (trimesh repairs nothing, so the checks see the
-        real topology), then vertices with exactly equal coordinates are merged: STL files store
-        every triangle with its own three vertices, and without merging every STL would look
+        real topology), then vertices within ``2**-22`` of the largest coordinate magnitude of
+        each other are merged (:meth:`from_mesh` with ``merge_vertices=True``): STL files store
+        every triangle with its own three vertices, and CAD exports (SolidWorks) give a shared
+        corner coordinates that differ in their last bits; without merging every STL would look
         open. See :meth:`from_mesh` for the checks.
+
+        Memory: a binary STL file's triangle count (in its header) is checked against the
+        memory budget (``poinsot.memory_budget()``) before the file is read, at the peak bytes
+        per triangle of reading and checking it (``MESH_FILE_BYTES_PER_TRIANGLE`` of the core,
+        768); other formats are refused when the file alone is larger than the budget, and
+        running out of memory while reading is reported as that, not as an invalid mesh. A
+        file name may hold any bytes but NUL (names that are not UTF-8 included: pass them as
+        ``bytes`` or as Python decodes them, with surrogate escapes).
 
         Raises
         ------
         ImportError
             trimesh is not installed.
         PoinsotError
-            ``path`` does not exist, is not a regular file (a directory, a device
-            such as ``/dev/zero``) or is larger than the memory budget.
+            ``path`` does not exist, holds a NUL byte, is not a regular file (a
+            directory, a device such as ``/dev/zero``), is larger than the memory budget,
+            or holds more triangles than the memory budget allows.
         InvalidMeshError
             the file cannot be read as a mesh, holds no triangles, or holds a
             mesh that does not bound a solid.
@@ -570,11 +588,13 @@ class RigidBody(show.Displayed):
                 "RigidBody.load_mesh reads files with trimesh, which is not installed: "
                 "pip install 'poinsot[mesh]' (or pip install trimesh)"
             ) from None
-        if not isinstance(path, (str, os.PathLike)):
+        if not isinstance(path, (str, bytes, os.PathLike)):
             raise ArgumentTypeError(
-                f"path: must be a file name (str or os.PathLike), got {type(path).__name__}"
+                f"path: must be a file name (str, bytes or os.PathLike), got {type(path).__name__}"
             )
-        name = os.fspath(path)
+        name = os.fsdecode(os.fspath(path))
+        if "\x00" in name:
+            raise PoinsotError(f"path: {name!r} holds a NUL byte, which no file name can hold")
         try:
             info = os.stat(name)
         except OSError as exc:
@@ -588,8 +608,29 @@ class RigidBody(show.Displayed):
                 f"path: {name!r} has {info.st_size} bytes, more than the memory budget "
                 f"of {memory_budget()} bytes (see poinsot.set_memory_budget)"
             )
+        kind = os.path.splitext(name)[1].lstrip(".").lower()
         try:
-            loaded = trimesh.load(name, process=False, force="mesh")
+            with open(name, "rb") as handle:
+                if kind == "stl":
+                    _check_stl_size(handle, info.st_size)
+                # The open file, not its name: trimesh encodes names as UTF-8, which a name
+                # that is not UTF-8 (decoded with surrogate escapes) cannot be.
+                loaded = trimesh.load(
+                    handle,
+                    file_type=kind,
+                    process=False,
+                    force="mesh",
+                    resolver=trimesh.resolvers.FilePathResolver(name),
+                )
+        except PoinsotError:
+            raise
+        except MemoryError:
+            raise PoinsotError(
+                f"path: reading {name!r} ran out of memory (the memory budget is "
+                f"{memory_budget()} bytes; see poinsot.set_memory_budget)"
+            ) from None
+        except OSError as exc:
+            raise PoinsotError(f"path: cannot read {name!r}: {exc.strerror or exc}") from None
         except ImportError as exc:  # a decoder trimesh needs for this file is missing
             raise ImportError(
                 f"path: reading {name!r} needs the Python package {exc.name!r}, which is not "
@@ -865,12 +906,14 @@ def _inertia_array(inertia: Any) -> FloatArray:
     return np.ascontiguousarray(arr)
 
 
-def _merge_vertices(vertices: FloatArray, faces: Any) -> tuple[FloatArray, Any]:
-    """Merges vertices with exactly equal coordinates (−0.0 counts as 0.0); re-indexes faces."""
-    v = np.ascontiguousarray(vertices, dtype=np.float64) + 0.0
-    f = np.asarray(faces, dtype=np.int64)
-    if f.size and (f.min() < 0 or f.max() >= len(v)):
-        # Leave out-of-range indices to the core's check, which reports them.
-        return v, f
-    unique, inverse = np.unique(v, axis=0, return_inverse=True)
-    return unique, inverse.reshape(-1)[f]
+def _check_stl_size(handle: Any, size: int) -> None:
+    """For a binary STL file (84 header bytes, then 50 bytes per triangle, the count in bytes
+    80–84), checks its triangle count against the memory budget before it is read
+    (``_core.check_mesh_file``: the error names ``path`` and the budget); ASCII STL files
+    pass (the file size was checked)."""
+    head = handle.read(84)
+    handle.seek(0)
+    if len(head) == 84:
+        count = int.from_bytes(head[80:84], "little")
+        if size == 84 + 50 * count:
+            _core.check_mesh_file(float(count))
