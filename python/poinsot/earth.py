@@ -481,12 +481,12 @@ class Earth:
             raise PoinsotError(
                 f"velocity: shape {vel.shape} does not broadcast with position {pos.shape}"
             ) from None
-        states = np.concatenate(
-            [np.broadcast_to(pos, lead + (3,)), np.broadcast_to(vel, lead + (3,))], axis=-1
+        # Two (N, 3) arrays, not one (N, 6): joining them took longer than the evaluation, and
+        # could not be interrupted.
+        r, v = (
+            np.ascontiguousarray(np.broadcast_to(a, lead + (3,)).reshape(-1, 3)) for a in (pos, vel)
         )
-        out = _core.earth_jacobi_integral(
-            *self._p, lat, np.ascontiguousarray(states.reshape(-1, 6))
-        )
+        out = _core.earth_jacobi_integral(*self._p, lat, r, v)
         return shaped(out, lead)
 
     def eastward_deflection(self, height: Any, latitude: Any, degrees: bool = False) -> Any:

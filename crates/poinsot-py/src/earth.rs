@@ -276,7 +276,7 @@ fn earth_projectile<'py>(
     Ok(d)
 }
 
-/// Jacobi's integral (N,) of (N, 6) ENU states at `latitude` (rad).
+/// Jacobi's integral (N,) of (N, 3) ENU positions (m) and velocities (m/s) at `latitude` (rad).
 #[pyfunction]
 fn earth_jacobi_integral<'py>(
     py: Python<'py>,
@@ -284,11 +284,21 @@ fn earth_jacobi_integral<'py>(
     radius: f64,
     g: f64,
     latitude: f64,
-    states: PyReadonlyArray2<'py, f64>,
+    position: PyReadonlyArray2<'py, f64>,
+    velocity: PyReadonlyArray2<'py, f64>,
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
     let e = earth(rotation_rate, radius, g)?;
-    let states = rows_view::<6>("states", &states)?;
-    let out = map_each(py, &states, |s| e.jacobi_integral(latitude, s))?;
+    let r = rows_view::<3>("position", &position)?;
+    let v = rows_view::<3>("velocity", &velocity)?;
+    if r.len() != v.len() {
+        return Err(invalid("velocity", "must have one row per position"));
+    }
+    let out = run(py, None, || {
+        poinsot::control::try_map_n(r.len(), |i| {
+            let (p, w) = (r[i], v[i]);
+            e.jacobi_integral(latitude, &[p[0], p[1], p[2], w[0], w[1], w[2]])
+        })
+    })?;
     Ok(PyArray1::from_vec(py, out))
 }
 

@@ -17,7 +17,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::control::{map_each, run, run_attached};
-use crate::convert::{a3, mat3, mat3_out, rows_view, v3, vec3, vec3_out};
+use crate::convert::{a3, mat3, mat3_out, rows_view, v3, vec3, vec3_out, Values};
 use crate::errors::{invalid, IntoPy};
 
 pub(crate) use crate::convert::{array_in, options, rows_in, rows_out, vec_in};
@@ -459,11 +459,12 @@ impl SpringParticleCore {
         Ok(rows_out(py, &out))
     }
     /// (N,) potentials ½ k |r|² (J) at (N, 3) positions (m).
-    fn potential(&self, py: Python<'_>, position: PyReadonlyArray2<'_, f64>) -> PyResult<Vec<f64>> {
+    fn potential(&self, py: Python<'_>, position: PyReadonlyArray2<'_, f64>) -> PyResult<Values> {
         let r = finite_rows("position", &position)?;
         map_each(py, &r, |x| {
             finite_value("position", "potential", self.inner.potential(&v3(x)))
         })
+        .map(Values)
     }
     /// (N,) fixed-frame energies (J) of (N, 3) positions (m) and velocities (m/s).
     fn energy(
@@ -471,7 +472,7 @@ impl SpringParticleCore {
         py: Python<'_>,
         position: PyReadonlyArray2<'_, f64>,
         velocity: PyReadonlyArray2<'_, f64>,
-    ) -> PyResult<Vec<f64>> {
+    ) -> PyResult<Values> {
         let (r, v) = finite_pairs(&position, &velocity)?;
         run(py, None, || {
             poinsot::control::try_map_n(r.len(), |i| {
@@ -479,6 +480,7 @@ impl SpringParticleCore {
                 finite_value(self.culprit(&r[i], &v[i]), "energy", e)
             })
         })
+        .map(Values)
     }
     /// (N,) Jacobi integrals (J) in the frame (15 floats, attitude) of (N, 3) relative positions
     /// (m) and velocities (m/s) in moving components.
@@ -489,7 +491,7 @@ impl SpringParticleCore {
         attitude: PyReadonlyArray2<'_, f64>,
         position: PyReadonlyArray2<'_, f64>,
         velocity: PyReadonlyArray2<'_, f64>,
-    ) -> PyResult<Vec<f64>> {
+    ) -> PyResult<Values> {
         let f = frame_arg(&frame, &attitude)?;
         let (r, v) = finite_pairs(&position, &velocity)?;
         run(py, None, || {
@@ -498,6 +500,7 @@ impl SpringParticleCore {
                 finite_value(self.culprit(&r[i], &v[i]), "Jacobi integral", j)
             })
         })
+        .map(Values)
     }
 }
 
