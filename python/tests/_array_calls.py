@@ -111,8 +111,8 @@ ROTATION_CALLS: dict[str, tuple[str, str]] = {
     "matrix_to_euler": (_MATS.format(n=10**7), "ps.matrix_to_euler(R)"),
     "body_angular_velocity": (_ANG.format(n=10**7), "ps.body_angular_velocity(a, a)"),
     "euler_rates": (
-        _ANG.format(n=10**7),
-        "ps.euler_rates(a * [1.0, 0.3, 1.0] + [0.0, 1.2, 0.0], a)",
+        _ANG.format(n=10**7) + "\nb = a * [1.0, 0.3, 1.0] + [0.0, 1.2, 0.0]",
+        "ps.euler_rates(b, a)",
     ),
     "quaternion_multiply": (
         _ANG.format(n=10**7) + "\nq = ps.matrix_to_quaternion(ps.euler_to_matrix(a))",
