@@ -563,6 +563,10 @@ def adversarial(name: str, valid: Any) -> list[Any]:
         ]
     if name in ("force", "density", "progress", "frame"):
         vals += [_raising, _wrong_shape, lambda *a: math.nan, lambda *a: "x"]
+    if name == "path":
+        # File names: a NUL byte, names that are not UTF-8 (bytes, and str with surrogate
+        # escapes), a directory (issue 21, item 11).
+        vals += ["mesh\x00.stl", b"no\xffsuch.stl", "no\udcffsuch.stl", "/"]
     return vals
 
 
