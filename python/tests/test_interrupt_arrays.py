@@ -107,6 +107,16 @@ GIL_CALLS = {
         "top = ps.FreeSymmetricTop(1.0, 0.5, [0.1, 0.0, 2.0])\nt = np.linspace(0, 100, 2 * 10**6)",
         "top.attitude(t)",
     ),
+    "MovingFrame.to_fixed": (
+        "f = ps.MovingFrame(angular_velocity=[0.0, 0.0, 1.0])\n"
+        "x = np.linspace(-1.0, 1.0, 6 * 10**6).reshape(-1, 3)",
+        "f.to_fixed(x, x, x)",
+    ),
+    "RigidBody.inertia_about": (
+        "c = ps.RigidBody.cuboid(1.0, (3.0, 1.0, 2.0))\n"
+        "x = np.linspace(-1.0, 1.0, 18 * 10**6).reshape(-1, 3)",
+        "c.inertia_about(x)",
+    ),
 }
 
 
