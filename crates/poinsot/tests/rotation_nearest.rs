@@ -59,7 +59,11 @@ fn angle_diff(a: f64, b: f64) -> f64 {
 }
 
 fn row_major(m: &Mat3) -> [f64; 9] {
-    [0, 1, 2].map(|i| [0, 1, 2].map(|j| m[(i, j)])).concat().try_into().unwrap()
+    [0, 1, 2]
+        .map(|i| [0, 1, 2].map(|j| m[(i, j)]))
+        .concat()
+        .try_into()
+        .unwrap()
 }
 
 /// A deterministic sequence in [−1, 1) (no RNG crate needed).
@@ -72,7 +76,11 @@ fn lcg(state: &mut u64) -> f64 {
 
 /// `(Q, X = Q (I + S))` with `|S_ij| <= size`, `S` symmetric, `Q` a generic rotation.
 fn near_rotation(state: &mut u64, size: f64) -> (Mat3, Mat3) {
-    let angles = [PI * lcg(state), 0.2 + 2.7 * lcg(state).abs(), PI * lcg(state)];
+    let angles = [
+        PI * lcg(state),
+        0.2 + 2.7 * lcg(state).abs(),
+        PI * lcg(state),
+    ];
     let q = euler_to_matrix(angles, EulerSequence::UNIT).unwrap();
     let mut s = Mat3::zeros();
     for i in 0..3 {
@@ -159,10 +167,19 @@ fn batch_conversions_project_as_the_single_ones() {
 fn an_exact_rotation_is_converted_from_its_own_entries() {
     let mut state = 3;
     for _ in 0..2000 {
-        let angles = [PI * lcg(&mut state), PI * lcg(&mut state), PI * lcg(&mut state)];
+        let angles = [
+            PI * lcg(&mut state),
+            PI * lcg(&mut state),
+            PI * lcg(&mut state),
+        ];
         let r = euler_to_matrix(angles, EulerSequence::new("xyz", true).unwrap()).unwrap();
         assert_eq!(matrix_to_quaternion(&r).unwrap(), raw_quaternion(&r));
-        let q = [lcg(&mut state), lcg(&mut state), lcg(&mut state), lcg(&mut state)];
+        let q = [
+            lcg(&mut state),
+            lcg(&mut state),
+            lcg(&mut state),
+            lcg(&mut state),
+        ];
         let r = quaternion_to_matrix(&q, true).unwrap();
         assert_eq!(matrix_to_quaternion(&r).unwrap(), raw_quaternion(&r));
     }
@@ -191,7 +208,10 @@ fn small_first_and_third_euler_angles_have_relative_accuracy() {
                     let got = matrix_to_euler(&r, seq).unwrap().angles;
                     let rel = (got[pos] - small).abs() / small.abs();
                     worst = worst.max(rel);
-                    assert!(rel <= 4.0 * f64::EPSILON, "{seq} {angles:?} -> {got:?}: {rel:e}");
+                    assert!(
+                        rel <= 4.0 * f64::EPSILON,
+                        "{seq} {angles:?} -> {got:?}: {rel:e}"
+                    );
                     // The others are still accurate, and the triple rebuilds R.
                     for k in 0..3 {
                         assert!(angle_diff(got[k], angles[k]) < 1e-14, "{seq} {angles:?}");
