@@ -14,14 +14,13 @@ from __future__ import annotations
 
 import argparse
 import statistics
-import subprocess
 import sys
 import textwrap
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "python" / "tests"))
 from _array_calls import ARRAY_CALLS, FAST_CALLS, ROTATION_CALLS
-from test_interrupt_arrays import child
+from _interrupt import interrupt
 
 MESH = (
     "import trimesh\n"
@@ -32,13 +31,7 @@ MESH = (
 
 
 def latency(setup: str, call: str) -> tuple[str, float]:
-    proc = subprocess.run(
-        [sys.executable, "-c", child(setup, call)], capture_output=True, text=True, timeout=600
-    )
-    if proc.returncode != 0:
-        raise RuntimeError(proc.stderr[-2000:])
-    word, seconds = proc.stdout.split()
-    return word, float(seconds)
+    return interrupt(setup, call, timeout=600)
 
 
 def main() -> None:

@@ -19,48 +19,18 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from _array_calls import ARRAY_CALLS
+from _interrupt import interrupt
 
 #: Generous bound (s) from SIGINT to KeyboardInterrupt (the calls take ≫ 10 s uninterrupted).
 LATENCY_BOUND = 2.0
-
-_CHILD = """
-import os, signal, threading, time
-import numpy as np
-import poinsot as ps
-# Python raises KeyboardInterrupt on SIGINT only if SIGINT was not ignored when it started (a
-# background job of a non-interactive shell inherits SIG_IGN): install the handler explicitly.
-signal.signal(signal.SIGINT, signal.default_int_handler)
-{setup}
-sent = []
-def fire():
-    time.sleep(0.5)
-    sent.append(time.perf_counter())
-    os.kill(os.getpid(), signal.SIGINT)
-start = time.perf_counter()
-threading.Thread(target=fire, daemon=True).start()
-try:
-    {call}
-except KeyboardInterrupt:
-    print("INTERRUPTED", time.perf_counter() - sent[0])
-else:
-    print("FINISHED", time.perf_counter() - start)
-"""
-
-
-def child(setup: str, call: str) -> str:
-    return textwrap.dedent(_CHILD).replace("{setup}", setup).replace("{call}", call)
 
 
 @pytest.mark.parametrize("name", sorted(ARRAY_CALLS))
 def test_ctrl_c_stops_array_evaluators(name: str) -> None:
     setup, call = ARRAY_CALLS[name]
-    proc = subprocess.run(
-        [sys.executable, "-c", child(setup, call)], capture_output=True, text=True, timeout=300
-    )
-    assert proc.returncode == 0, proc.stderr[-2000:]
-    word, seconds = proc.stdout.split()
+    word, seconds = interrupt(setup, call, timeout=300)
     assert word == "INTERRUPTED", f"{name} ran to the end in {seconds} s without seeing Ctrl-C"
-    assert float(seconds) < LATENCY_BOUND, f"{name}: KeyboardInterrupt {seconds} s after SIGINT"
+    assert seconds < LATENCY_BOUND, f"{name}: KeyboardInterrupt {seconds} s after SIGINT"
 
 
 _GIL = """

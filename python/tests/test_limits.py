@@ -8,14 +8,16 @@ call would run for minutes otherwise, so finishing without the interrupt fails t
 
 from __future__ import annotations
 
-import subprocess
 import sys
-import textwrap
 import time
+from pathlib import Path
 
 import numpy as np
 import poinsot as ps
 import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from _interrupt import interrupt
 
 #: The issue's bound on the time from SIGINT to KeyboardInterrupt (s).
 INTERRUPT_LATENCY = 0.2
@@ -126,28 +128,6 @@ def test_an_exception_in_progress_stops_the_run() -> None:
         )
 
 
-_CHILD = """
-import os, signal, sys, threading, time
-import numpy as np
-import poinsot as ps
-# Python raises KeyboardInterrupt on SIGINT only if SIGINT was not ignored when it started (a
-# background job of a non-interactive shell inherits SIG_IGN): install the handler explicitly.
-signal.signal(signal.SIGINT, signal.default_int_handler)
-sent = []
-def fire():
-    time.sleep(0.5)
-    sent.append(time.perf_counter())
-    os.kill(os.getpid(), signal.SIGINT)
-threading.Thread(target=fire, daemon=True).start()
-start = time.perf_counter()
-try:
-    {call}
-except KeyboardInterrupt:
-    print("INTERRUPTED", time.perf_counter() - sent[0])
-else:
-    print("FINISHED", time.perf_counter() - start)
-"""
-
 LONG_CALLS = {
     "simulate rk4": "ps.simulate([1, 2, 3], [0.1, 0.5, 1], 1e7, method='rk4', dt=1e-4, samples=11, max_steps=10**12)",
     "simulate splitting4": "ps.simulate([1, 2, 3], [0.1, 0.5, 1], 1e7, method='splitting4', dt=1e-4, samples=2, max_steps=10**12)",
@@ -161,14 +141,9 @@ LONG_CALLS = {
 
 @pytest.mark.parametrize("name", sorted(LONG_CALLS))
 def test_ctrl_c_stops_long_runs(name: str) -> None:
-    code = textwrap.dedent(_CHILD).replace("{call}", LONG_CALLS[name])
-    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
-    assert proc.returncode == 0, proc.stderr[-2000:]
-    word, seconds = proc.stdout.split()
+    word, seconds = interrupt("", LONG_CALLS[name], timeout=120)
     assert word == "INTERRUPTED", f"{name} ran to the end in {seconds} s without seeing Ctrl-C"
-    assert float(seconds) < INTERRUPT_LATENCY, (
-        f"{name}: KeyboardInterrupt came {seconds} s after SIGINT"
-    )
+    assert seconds < INTERRUPT_LATENCY, f"{name}: KeyboardInterrupt came {seconds} s after SIGINT"
 
 
 def test_a_panic_never_reaches_the_user(monkeypatch: pytest.MonkeyPatch) -> None:
