@@ -483,9 +483,18 @@ impl Box3 {
 
     #[inline]
     fn merged(&self, o: &Self) -> Self {
+        let (a, b) = (self, o);
         Self {
-            lo: [0, 1, 2].map(|k| self.lo[k].min(o.lo[k])),
-            hi: [0, 1, 2].map(|k| self.hi[k].max(o.hi[k])),
+            lo: [
+                a.lo[0].min(b.lo[0]),
+                a.lo[1].min(b.lo[1]),
+                a.lo[2].min(b.lo[2]),
+            ],
+            hi: [
+                a.hi[0].max(b.hi[0]),
+                a.hi[1].max(b.hi[1]),
+                a.hi[2].max(b.hi[2]),
+            ],
         }
     }
 
@@ -501,14 +510,19 @@ impl Box3 {
     }
 }
 
-/// A box rounded outward to `f32` (conservative: it contains the exact box).
+/// A box rounded outward to `f32` (conservative: it contains the exact box). Written out per
+/// axis: the array `map` here was not inlined (a profile showed it as its own function).
+#[inline]
 fn box32(t: &[P3; 3]) -> Box3 {
+    let lo = |k: usize| down32(t[0][k].min(t[1][k]).min(t[2][k]));
+    let hi = |k: usize| up32(t[0][k].max(t[1][k]).max(t[2][k]));
     Box3 {
-        lo: [0, 1, 2].map(|k| down32(t[0][k].min(t[1][k]).min(t[2][k]))),
-        hi: [0, 1, 2].map(|k| up32(t[0][k].max(t[1][k]).max(t[2][k]))),
+        lo: [lo(0), lo(1), lo(2)],
+        hi: [hi(0), hi(1), hi(2)],
     }
 }
 
+#[inline]
 fn down32(x: f64) -> f32 {
     let y = x as f32;
     if f64::from(y) > x {
@@ -518,6 +532,7 @@ fn down32(x: f64) -> f32 {
     }
 }
 
+#[inline]
 fn up32(x: f64) -> f32 {
     let y = x as f32;
     if f64::from(y) < x {
@@ -528,6 +543,7 @@ fn up32(x: f64) -> f32 {
 }
 
 /// The next `f32` above `y` (`f32::next_up`, which needs Rust 1.86).
+#[inline]
 fn step_up(y: f32) -> f32 {
     if y.is_nan() || y == f32::INFINITY {
         y
@@ -592,8 +608,11 @@ pub(crate) struct Index<'a> {
     levels: Vec<Vec<Box3>>,
 }
 
-/// Faces per leaf of the tree (consecutive in Morton order).
-const LEAF: usize = 8;
+/// Faces per leaf of the tree (consecutive in Morton order). 32 rather than 8: a quarter of
+/// the nodes to traverse (1.7 M pairs of nodes visited instead of 6.7 M on a 1.3 M-face
+/// sphere) for the same 7.9 M pairs of faces whose boxes meet; the join took 300 ms instead of
+/// 390 ms on one thread (16: 330 ms, 64: 310 ms; bench/README.md).
+const LEAF: usize = 32;
 
 /// Subtrees from this level up (`2^PAR_LEVEL` leaves and more) are joined in parallel.
 const PAR_LEVEL: usize = 5;
