@@ -12,6 +12,8 @@ _BODY = "b = ps.FreeRigidBody([1.0, 2.0, 3.0], [1.0, 0.1, 1.0])"
 _TOP = "top = ps.FreeSymmetricTop(1.0, 0.5, [0.1, 0.0, 2.0])"
 _HEAVY = "h = ps.HeavyTop(1.0, 0.5, 1.0, 0.8, phi_dot=0.5, psi_dot=6.0)"
 _T = "t = np.linspace(0.0, 100.0, {n})"
+#: Latitudes (rad), all inside [-pi/2, pi/2]: a latitude past the pole is refused, by name.
+_LAT = "lat = np.linspace(-1.5, 1.5, {n})"
 _ANG = "a = np.random.default_rng(0).uniform(-3, 3, ({n}, 3))"
 _MATS = _ANG + "\nR = ps.euler_to_matrix(a)"
 #: (n, 3) points (m) or vectors, made without a random generator (fast to set up).
@@ -33,12 +35,12 @@ ARRAY_CALLS: dict[str, tuple[str, str]] = {
     "HeavyTop.euler_angles": (_HEAVY + "\n" + _T.format(n=10**8), "h.euler_angles(t)"),
     "special.jacobi": (_T.format(n=3 * 10**7), "ps.special.jacobi(t, 0.7)"),
     "Earth.effective_gravity": (
-        "e = ps.Earth()\n" + _T.format(n=5 * 10**7),
-        "e.effective_gravity(t)",
+        "e = ps.Earth()\n" + _LAT.format(n=5 * 10**7),
+        "e.effective_gravity(lat)",
     ),
     "Earth.coriolis_parameter": (
-        "e = ps.Earth()\n" + _T.format(n=5 * 10**7),
-        "e.coriolis_parameter(t)",
+        "e = ps.Earth()\n" + _LAT.format(n=5 * 10**7),
+        "e.coriolis_parameter(lat)",
     ),
     "Earth.jacobi_integral": (
         "e = ps.Earth()\n" + _PTS.format(n=2 * 10**7),
