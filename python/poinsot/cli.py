@@ -812,7 +812,7 @@ def fall(
     """
     _check_pictures(plot_path)
     earth = _earth(solar_day)
-    res = earth.drop(height, latitude, degrees)
+    res = earth.drop(height, latitude, degrees, gravity=gravity)
     data = {
         "height": height,
         "latitude": latitude,
@@ -826,9 +826,6 @@ def fall(
         "first_order_east": res.first_order_east,
         "second_order_south": res.second_order_south,
     }
-    if gravity != "uniform":
-        res = earth.drop(height, latitude, degrees, gravity=gravity)
-        data.update(time=res.time, east=res.east, north=res.north)
     require_finite(data)
     if plot_path is not None:
         from .plots.earth import plot_trajectory
@@ -1083,10 +1080,6 @@ def foucault(
     console.print(table)
     console.print(run.regime_note)
     _echo_saved(data)
-
-
-def _floats3(ctx: click.Context, param: click.Parameter, value: Any) -> Any:
-    return None if value is None else tuple(float(v) for v in value)
 
 
 @main.command()

@@ -364,15 +364,13 @@ def _euler_rates(con: Console) -> None:
 def _heavy_top(con: Console) -> None:
     i1, i3, mgl = 1.0, 0.5, 1.0
     table = Table(
-        title=f"I₁ = {i1} kg·m², I₃ = {i3} kg·m², m g l = {mgl} N·m, θ₀ = 0.8 rad, ω₃ ≈ 6 rad/s, "
+        title=f"I₁ = {i1} kg·m², I₃ = {i3} kg·m², m g l = {mgl} N·m, θ₀ = 0.8 rad, ω₃ = 6 rad/s, "
         "released with θ̇₀ = 0"
     )
     table.add_column("quantity")
     tops = []
     for phi_dot in (0.5, 0.0, -0.5):
-        tops.append(
-            ps.HeavyTop(i1, i3, mgl, 0.8, phi_dot=phi_dot, psi_dot=6.0 - phi_dot * np.cos(0.8))
-        )
+        tops.append(ps.HeavyTop.from_spin(i1, i3, mgl, 0.8, 6.0, phi_dot=phi_dot))
         table.add_column(f"φ̇₀ = {phi_dot:+.1f} rad/s", justify="right")
     rows: list[tuple[str, Callable[[ps.HeavyTop], str]]] = [
         ("p_φ (kg·m²/s)", lambda top: f"{top.p_phi:.6f}"),

@@ -38,6 +38,27 @@ def test_fall_table_and_errors() -> None:
     assert bad.exit_code == 1 and "--latitude" in bad.output
 
 
+def test_fall_inverse_square_is_one_integration(monkeypatch) -> None:
+    """`--gravity inverse-square` reports that model's drop, integrated once (it integrated the
+    uniform drop first and then the inverse-square one)."""
+    calls: list[object] = []
+    drop = ps.Earth.drop
+
+    def counted(self, *args, **kwargs):  # type: ignore[no-untyped-def]
+        calls.append(kwargs.get("gravity"))
+        return drop(self, *args, **kwargs)
+
+    monkeypatch.setattr(ps.Earth, "drop", counted)
+    args = ["fall", "--height", "1000", "--latitude", "0.7", "--json"]
+    data = _json([*args, "--gravity", "inverse-square"])
+    assert calls == ["inverse-square"]
+    ref = drop(ps.Earth(), 1000.0, 0.7, gravity="inverse-square")
+    assert (data["time"], data["east"], data["north"]) == (ref.time, ref.east, ref.north)
+    # Negative control: the uniform model falls faster (g does not weaken with height).
+    uniform = _json(args)
+    assert uniform["time"] < data["time"]
+
+
 def test_projectile_json_drifts_right_in_the_north() -> None:
     n = _json(
         [

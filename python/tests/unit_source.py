@@ -17,7 +17,6 @@ UNIT_NAME = "seed/unit-2-moving-frames-and-rigid-bodies.md"
 def shared_file(name: str) -> Path | None:
     """``shared/<name>`` beside the repository (or under ``POINSOT_SHARED``), None if absent."""
     bases = [os.environ.get("POINSOT_SHARED", ""), ROOT.parent / "shared", ROOT.parent]
-    bases.append("/work/shared")
     if name == UNIT_NAME and os.environ.get("POINSOT_UNIT"):
         unit = Path(os.environ["POINSOT_UNIT"])
         if unit.is_file():

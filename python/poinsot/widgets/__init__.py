@@ -145,13 +145,6 @@ def _check_params(scene: str, given: Any, name: str) -> dict[str, Any]:
     return out
 
 
-def _defaults(scene: str) -> dict[str, Any]:
-    return {
-        k: s.value if isinstance(s, Choice) else float(s.value)
-        for k, s in SCENE_PARAMS[scene].items()
-    }
-
-
 def _close(a: float, b: float, scale: float = 1.0) -> bool:
     return abs(a - b) <= _RTOL * max(abs(a), abs(b), scale)
 
