@@ -392,17 +392,17 @@ impl EdgeDefects {
     }
 }
 
-/// Closed, manifold and consistently oriented, or an [`Error::mesh`] naming `faces`.
-///
-/// Each use of an undirected edge `{a, b}` (a < b) by a face is filed under `a` with `b` and
-/// the direction bit ([`half_edges`]): a counting sort by low vertex into a compressed (CSR)
-/// list, built in parallel without atomics by giving each rayon task its own range of low
-/// vertices (each task scans all faces and files only its own edges). Then each vertex's short
-/// list is sorted and its runs classified: one use is a boundary edge, more than two a
-/// non-manifold edge, two uses in the same direction an inconsistent orientation.
-/// On success, returns each face's component (faces connected across shared edges; `UNUSED`
-/// for faces with a repeated index) and the number of components.
-fn check_topology(nv: usize, tris: &[[u32; 3]], merged: Option<f64>) -> Result<(Vec<u32>, usize)> {
+/// Entries filed by vertex, as a compressed (CSR) list: `file(f, t)` gives the face `f`'s up
+/// to three `(vertex, entry)` pairs (the first `n` of the array it returns); the entries of
+/// vertex `v` are `list[start[v]..start[v + 1]]`, in face order. A counting sort built in
+/// parallel without atomics: each rayon task owns a range of vertices and scans every face,
+/// filing only its own (the edge check files half-edges by their low vertex, the star proofs
+/// faces by their corners).
+pub(super) fn file_by_vertex<T, F>(nv: usize, tris: &[[u32; 3]], file: F) -> (Vec<usize>, Vec<T>)
+where
+    T: Copy + Default + Send + Sync,
+    F: Fn(usize, &[u32; 3]) -> ([(u32, T); 3], usize) + Sync,
+{
     let tasks = rayon::current_num_threads().clamp(1, 64);
     let span = nv.div_ceil(tasks).max(1);
     // Per-vertex counts, each task filling its own range.
@@ -410,13 +410,11 @@ fn check_topology(nv: usize, tris: &[[u32; 3]], merged: Option<f64>) -> Result<(
     count.par_chunks_mut(span).enumerate().for_each(|(k, own)| {
         let lo = (k * span) as u32;
         let hi = lo + own.len() as u32;
-        for t in tris {
-            if index_degenerate(t) {
-                continue;
-            }
-            for (a, _) in half_edges(t) {
-                if a >= lo && a < hi {
-                    own[(a - lo) as usize] += 1;
+        for (f, t) in tris.iter().enumerate() {
+            let (entries, n) = file(f, t);
+            for &(v, _) in &entries[..n] {
+                if v >= lo && v < hi {
+                    own[(v - lo) as usize] += 1;
                 }
             }
         }
@@ -431,8 +429,7 @@ fn check_topology(nv: usize, tris: &[[u32; 3]], merged: Option<f64>) -> Result<(
     start.push(acc);
     drop(count);
     // Fill: the ranges of vertices map to disjoint ranges of the list.
-    // Entries: (high vertex << 1 | direction) << 32 | face.
-    let mut list = vec![0u64; acc];
+    let mut list = vec![T::default(); acc];
     let mut pieces = Vec::with_capacity(tasks);
     let mut rest = list.as_mut_slice();
     for k in 0..nv.div_ceil(span) {
@@ -446,19 +443,40 @@ fn check_topology(nv: usize, tris: &[[u32; 3]], merged: Option<f64>) -> Result<(
         let mut cursor: Vec<usize> = start[*v0..*v1].iter().map(|s| s - base).collect();
         let (lo, hi) = (*v0 as u32, *v1 as u32);
         for (f, t) in tris.iter().enumerate() {
-            if index_degenerate(t) {
-                continue;
-            }
-            for (a, entry) in half_edges(t) {
-                if a >= lo && a < hi {
-                    let c = &mut cursor[(a - lo) as usize];
-                    piece[*c] = u64::from(entry) << 32 | f as u64;
+            let (entries, n) = file(f, t);
+            for &(v, entry) in &entries[..n] {
+                if v >= lo && v < hi {
+                    let c = &mut cursor[(v - lo) as usize];
+                    piece[*c] = entry;
                     *c += 1;
                 }
             }
         }
     });
     drop(pieces);
+    (start, list)
+}
+
+/// Closed, manifold and consistently oriented, or an [`Error::mesh`] naming `faces`.
+///
+/// Each use of an undirected edge `{a, b}` (a < b) by a face is filed under `a` with `b` and
+/// the direction bit ([`half_edges`]): a counting sort by low vertex into a compressed (CSR)
+/// list, built in parallel without atomics by giving each rayon task its own range of low
+/// vertices (each task scans all faces and files only its own edges). Then each vertex's short
+/// list is sorted and its runs classified: one use is a boundary edge, more than two a
+/// non-manifold edge, two uses in the same direction an inconsistent orientation.
+/// On success, returns each face's component (faces connected across shared edges; `UNUSED`
+/// for faces with a repeated index) and the number of components.
+fn check_topology(nv: usize, tris: &[[u32; 3]], merged: Option<f64>) -> Result<(Vec<u32>, usize)> {
+    // Entries: (high vertex << 1 | direction) << 32 | face.
+    let (start, mut list) = file_by_vertex(nv, tris, |f, t| {
+        if index_degenerate(t) {
+            return ([(0, 0); 3], 0);
+        }
+        let e = half_edges(t);
+        let entry = |(a, d): (u32, u32)| (a, u64::from(d) << 32 | f as u64);
+        ([entry(e[0]), entry(e[1]), entry(e[2])], 3)
+    });
     // Classify, vertex by vertex, in parallel blocks of vertices.
     let mut blocks = Vec::new();
     let mut rest = list.as_mut_slice();

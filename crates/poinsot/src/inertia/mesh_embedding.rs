@@ -1081,57 +1081,15 @@ fn crossing(t: &[P3; 3], p: P3) -> Option<i8> {
 // Stars: the faces around a vertex.
 
 /// For each vertex `v`, whether the faces around it are proved to meet each other only in `v`
-/// and the edges they share ([`star_embedded`]). Faces are filed under their vertices by a
-/// counting sort into a compressed list, each rayon task owning a range of vertices (as the
-/// edge check does); then each vertex is tested on its own.
+/// and the edges they share ([`star_embedded`]). Faces are filed under their vertices by the
+/// edge check's counting sort ([`super::mesh::file_by_vertex`]); then each vertex is tested
+/// on its own.
 fn stars(pts: Points<'_>, tris: &[[u32; 3]], used: &[bool]) -> Vec<bool> {
     let nv = pts.v.len() / 3;
-    let tasks = rayon::current_num_threads().clamp(1, 64);
-    let span = nv.div_ceil(tasks).max(1);
-    let mut count = vec![0u32; nv];
-    count.par_chunks_mut(span).enumerate().for_each(|(k, own)| {
-        let (lo, hi) = (k * span, k * span + own.len());
-        for t in tris {
-            for &v in t {
-                let v = v as usize;
-                if v >= lo && v < hi {
-                    own[v - lo] += 1;
-                }
-            }
-        }
+    let (start, list) = super::mesh::file_by_vertex(nv, tris, |f, t| {
+        let f = f as u32;
+        ([(t[0], f), (t[1], f), (t[2], f)], 3)
     });
-    let mut start = Vec::with_capacity(nv + 1);
-    let mut acc = 0usize;
-    for c in &count {
-        start.push(acc);
-        acc += *c as usize;
-    }
-    start.push(acc);
-    drop(count);
-    let mut list = vec![0u32; acc];
-    let mut pieces = Vec::with_capacity(tasks);
-    let mut rest = list.as_mut_slice();
-    for k in 0..nv.div_ceil(span) {
-        let (v0, v1) = (k * span, ((k + 1) * span).min(nv));
-        let (piece, tail) = rest.split_at_mut(start[v1] - start[v0]);
-        pieces.push((v0, v1, piece));
-        rest = tail;
-    }
-    pieces.par_iter_mut().for_each(|(v0, v1, piece)| {
-        let base = start[*v0];
-        let mut cursor: Vec<usize> = start[*v0..*v1].iter().map(|s| s - base).collect();
-        for (f, t) in tris.iter().enumerate() {
-            for &v in t {
-                let v = v as usize;
-                if v >= *v0 && v < *v1 {
-                    let c = &mut cursor[v - *v0];
-                    piece[*c] = f as u32;
-                    *c += 1;
-                }
-            }
-        }
-    });
-    drop(pieces);
     (0..nv)
         .into_par_iter()
         .with_min_len(1024)
