@@ -323,6 +323,16 @@ class Screw(show.Displayed):
     plus a translation ``slide`` along ``axis``:
     ``R @ x + t == point + R @ (x - point) + slide * axis`` for every ``x``.
 
+    A screw is usually :func:`screw_axis`'s result, but may be built from its parts,
+    ``Screw(axis, point, angle, slide)``, checked by the core: ``axis`` (3,) finite and
+    non-zero (normalised), ``point`` (3,) any finite point of the axis, m (kept as the point of
+    the axis nearest the origin), ``angle`` in [0, pi] rad (a screw turning the other way has
+    the opposite axis), ``slide`` finite, m. The pitch is derived, ``slide / angle`` (``-inf``
+    for a pure translation with a negative slide); a ``pitch`` given must equal it to 1e-9
+    relative. A :func:`screw_axis` result rebuilt from its five parts is the same screw, bit
+    for bit. Errors name the part (:class:`PoinsotError`; :class:`ArgumentTypeError` for text
+    and the like).
+
     Attributes
     ----------
     axis : ndarray, shape (3,)
@@ -337,16 +347,6 @@ class Screw(show.Displayed):
     pitch : float
         ``slide / angle``, m/rad: ``inf`` for a pure translation, 0 for a pure rotation and for
         the identity displacement (never NaN).
-
-    A screw is usually :func:`screw_axis`'s result, but may be built from its parts,
-    ``Screw(axis, point, angle, slide)``, checked by the core: ``axis`` (3,) finite and
-    non-zero (normalised), ``point`` (3,) any finite point of the axis, m (kept as the point of
-    the axis nearest the origin), ``angle`` in [0, pi] rad (a screw turning the other way has
-    the opposite axis), ``slide`` finite, m. The pitch is derived, ``slide / angle`` (``-inf``
-    for a pure translation with a negative slide); a ``pitch`` given must equal it to 1e-9
-    relative. A :func:`screw_axis` result rebuilt from its five parts is the same screw, bit
-    for bit. Errors name the part (:class:`PoinsotError`; :class:`ArgumentTypeError` for text
-    and the like).
     """
 
     axis: FloatArray = field(repr=False)
