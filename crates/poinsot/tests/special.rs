@@ -16,9 +16,9 @@ const JACOBI_TOL_EPS: f64 = 6.0;
 /// Where a function is well conditioned (`|u f'(u)| ≤ |f(u)|/2`) its error must also be this
 /// many ε *relative* to the value itself: the "~1e-15 relative" promise.
 const JACOBI_REL_EPS: f64 = 4.0;
-/// Error bound of the elliptic integrals from `ellip`, relative to the conditioning
-/// `|f| + |φ ∂f/∂φ|` (near φ = π/2 with m → 1 a one-ulp change of φ moves F by 1e-12; `ellip`
-/// reduces φ by the double π/2). Measured worst: ~70 ulp, for Π with n = −50 and m near 1.
+/// Error bound of the elliptic integrals, relative to the conditioning `|f| + |φ ∂f/∂φ|` (near
+/// φ = π/2 with m → 1 a one-ulp change of φ moves F by 1e-12). Measured worst: ~70 ulp, for Π
+/// with n = −50 and m near 1.
 const INTEGRAL_RTOL: f64 = 4e-14;
 
 fn parse(line: &str) -> Vec<f64> {

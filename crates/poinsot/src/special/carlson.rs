@@ -1,6 +1,8 @@
 //! Carlson's symmetric elliptic integrals R_C, R_F, R_D and R_J of real arguments, by the
 //! duplication theorem (Carlson 1995, "Numerical computation of real or complex elliptic
-//! integrals", Numer. Algorithms 10; DLMF §19.36(i)), over the whole double range.
+//! integrals", Numer. Algorithms 10; DLMF §19.36(i)), over the whole double range: the crate's
+//! one implementation of them (Legendre's integrals in [`super::integrals`], the free body's
+//! attitude, its SIMD lanes' nome and the heavy top's motion and Fourier series all call these).
 //!
 //! Two things differ from the usual implementations (Boost, the `ellip` crate), which fail or
 //! lose accuracy at the edges of the double range:

@@ -8,7 +8,6 @@
 
 pub(crate) mod carlson;
 mod dd;
-pub(crate) mod ellip_carlson;
 pub(crate) mod fp;
 pub(crate) mod integrals;
 mod jacobi;

@@ -17,7 +17,7 @@ use crate::rotation::{
     hamilton_lanes, matrix_to_quaternion_lanes, normalized_lanes, QuatLanes, Quaternion,
 };
 use crate::simd::{sin_cos, F64s, Simd, WithSimd, MAX_LANES};
-use crate::special::ellip_carlson::rf;
+use crate::special::carlson::rf;
 
 /// Π(n; am r | m) for |r| ≤ K (n < 0: the free body's characteristic) as its Fourier series
 /// `(Π(n|m)/K) r + Σ b_k sin(kπr/K)` (see `heavy_top::fourier`, whose hyperbolic case this

@@ -24,7 +24,7 @@
 use crate::simd::{
     rotate_by_quadrant, sin_cos_kernel, F64s, Simd, WithSimd, COS_TAYLOR, SIN_TAYLOR,
 };
-use crate::special::ellip_carlson::{rd, rf};
+use crate::special::carlson::{rd, rf};
 use std::f64::consts::PI;
 
 /// The most Fourier terms the fast path uses; beyond, the incomplete integrals are evaluated.

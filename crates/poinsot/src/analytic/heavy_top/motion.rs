@@ -31,7 +31,7 @@ use super::cubic::{w_v, Reduced, Turning};
 use super::fourier::{Fourier, SeriesInput, ThirdSeries};
 use super::state::EulerState;
 use crate::error::{Error, Result};
-use crate::special::ellip_carlson::{rf, rj};
+use crate::special::carlson::{rf, rj};
 use crate::special::{Jacobi, JacobiValues};
 use std::f64::consts::PI;
 
