@@ -4,8 +4,8 @@ Each call runs in a child process that sends itself SIGINT 0.5 s into the call; 
 the signal to ``KeyboardInterrupt`` is measured, median over ``--tries`` runs. The calls and
 their sizes are python/tests/_array_calls.py's (the same as test_interrupt_arrays.py), plus the
 evaluators too fast per element to keep busy for seconds (``FAST_CALLS`` and the rotation
-conversions: their latency is bounded by the call's own time) and ``RigidBody.from_mesh`` on a
-sphere of ~5 M faces.
+conversions: their latency is bounded by the call's own time). ``RigidBody.from_mesh`` is one of
+the array calls (a UV sphere of 5.2 M faces).
 
     .venv/bin/python bench/ctrl_c_latency.py [--tries 3] [--only NAME ...]
 """
@@ -22,14 +22,6 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "python" / "tests")
 from _array_calls import ARRAY_CALLS, FAST_CALLS, ROTATION_CALLS
 from _interrupt import interrupt
 
-MESH = (
-    "import trimesh\n"
-    "m = trimesh.creation.icosphere(subdivisions=9)\n"
-    "v, f = np.asarray(m.vertices), np.asarray(m.faces)",
-    "ps.RigidBody.from_mesh(v, f, density=1.0)",
-)
-
-
 def latency(setup: str, call: str) -> tuple[str, float]:
     return interrupt(setup, call, timeout=600)
 
@@ -42,12 +34,6 @@ def main() -> None:
     )
     args = parser.parse_args()
     calls = {**ARRAY_CALLS, **FAST_CALLS, **ROTATION_CALLS}
-    try:
-        import trimesh  # noqa: F401
-
-        calls["RigidBody.from_mesh (5.2 M faces)"] = MESH
-    except ImportError:
-        pass
     print("| call | Ctrl-C latency, median (ms) | runs interrupted |")
     print("|---|---|---|")
     for name, (setup, call) in calls.items():

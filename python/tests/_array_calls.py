@@ -24,6 +24,26 @@ _FRAME = (
 )
 _SPRING = "sp = ps.SpringParticle(1.0, 2.0)"
 _CUBOID = "c = ps.RigidBody.cuboid(1.0, (3.0, 1.0, 2.0))"
+#: A closed UV sphere of radius 1 m: n − 1 rings of m vertices and two poles, 2 m (n − 1) faces
+#: (5.2 M for n = 1000, m = 2600), built by numpy in about a second.
+_SPHERE = """\
+n, m = {n}, {m}
+th = np.pi * np.arange(1, n) / n
+ph = 2 * np.pi * np.arange(m) / m
+ring = np.stack([np.outer(np.sin(th), np.cos(ph)), np.outer(np.sin(th), np.sin(ph)),
+                 np.repeat(np.cos(th)[:, None], m, axis=1)], axis=-1).reshape(-1, 3)
+v = np.vstack([[0.0, 0.0, 1.0], ring, [0.0, 0.0, -1.0]])
+k = np.arange(n - 2)[:, None]
+j = np.arange(m)[None, :]
+a = 1 + k * m + j
+b = 1 + k * m + (j + 1) % m
+c, d = b + m, a + m
+south = 1 + (n - 1) * m
+jj = np.arange(m)
+f = np.vstack([np.stack([np.zeros(m, int), 1 + jj, 1 + (jj + 1) % m], axis=1),
+               np.stack([a, d, c], axis=-1).reshape(-1, 3),
+               np.stack([a, c, b], axis=-1).reshape(-1, 3),
+               np.stack([np.full(m, south), south - m + (jj + 1) % m, south - m + jj], axis=1)])"""
 
 ARRAY_CALLS: dict[str, tuple[str, str]] = {
     "FreeRigidBody.polhode": (_BODY, "b.polhode(10**8)"),
@@ -65,6 +85,10 @@ ARRAY_CALLS: dict[str, tuple[str, str]] = {
     "RigidBody.angular_momentum": (
         _CUBOID + "\n" + _PTS.format(n=2 * 10**7),
         "c.angular_momentum(x)",
+    ),
+    "RigidBody.from_mesh": (
+        _SPHERE.format(n=1000, m=2600),
+        "ps.RigidBody.from_mesh(v, f, density=1.0)",
     ),
     "free_body_states": (
         _PTS.format(n=10**6) + "\nI = np.ones((len(x), 3)) * [1.0, 2.0, 3.0]",

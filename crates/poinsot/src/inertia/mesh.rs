@@ -53,6 +53,7 @@
 
 use rayon::prelude::*;
 
+use crate::control::Cancel;
 use crate::error::{check_positive, Error, Result};
 use crate::inertia::body::MassProperties;
 use crate::inertia::mesh_embedding::{
@@ -132,11 +133,11 @@ fn solid(
     tris: &[[u32; 3]],
     density: f64,
     merged: Option<f64>,
-    cancel: &crate::control::Cancel,
+    cancel: &Cancel,
 ) -> Result<MassProperties> {
-    let (comp, ncomp) = check_topology(vertices.len() / 3, tris, merged)?;
+    let (comp, ncomp) = check_topology(vertices.len() / 3, tris, merged, cancel)?;
     cancel.check()?;
-    let parts = integrate_parts(vertices, tris, &comp, ncomp);
+    let parts = integrate_parts(vertices, tris, &comp, ncomp, cancel)?;
     cancel.check()?;
     let whole = match assemble(&parts, tris.len()) {
         Ok(whole) => whole,
@@ -144,12 +145,12 @@ fn solid(
             // Several shells of zero or negative total volume: a shell of the wrong winding
             // (a cavity outside any solid, say) is the cause the nesting check names.
             if parts.len() > 1 {
-                check_embedding(vertices, tris, &comp, &parts)?;
+                check_embedding(vertices, tris, &comp, &parts, cancel)?;
             }
             return Err(err);
         }
     };
-    check_embedding(vertices, tris, &comp, &parts)?;
+    check_embedding(vertices, tris, &comp, &parts, cancel)?;
     cancel.check()?;
     finish(&whole, density)
 }
@@ -398,7 +399,12 @@ impl EdgeDefects {
 /// parallel without atomics: each rayon task owns a range of vertices and scans every face,
 /// filing only its own (the edge check files half-edges by their low vertex, the star proofs
 /// faces by their corners).
-pub(super) fn file_by_vertex<T, F>(nv: usize, tris: &[[u32; 3]], file: F) -> (Vec<usize>, Vec<T>)
+pub(super) fn file_by_vertex<T, F>(
+    nv: usize,
+    tris: &[[u32; 3]],
+    cancel: &Cancel,
+    file: F,
+) -> Result<(Vec<usize>, Vec<T>)>
 where
     T: Copy + Default + Send + Sync,
     F: Fn(usize, &[u32; 3]) -> ([(u32, T); 3], usize) + Sync,
@@ -411,6 +417,9 @@ where
         let lo = (k * span) as u32;
         let hi = lo + own.len() as u32;
         for (f, t) in tris.iter().enumerate() {
+            if f % POLL_FACES == 0 && cancel.check().is_err() {
+                return;
+            }
             let (entries, n) = file(f, t);
             for &(v, _) in &entries[..n] {
                 if v >= lo && v < hi {
@@ -419,6 +428,7 @@ where
             }
         }
     });
+    cancel.check()?;
     // Offsets (exclusive prefix sums).
     let mut start = Vec::with_capacity(nv + 1);
     let mut acc = 0usize;
@@ -443,6 +453,9 @@ where
         let mut cursor: Vec<usize> = start[*v0..*v1].iter().map(|s| s - base).collect();
         let (lo, hi) = (*v0 as u32, *v1 as u32);
         for (f, t) in tris.iter().enumerate() {
+            if f % POLL_FACES == 0 && cancel.check().is_err() {
+                return;
+            }
             let (entries, n) = file(f, t);
             for &(v, entry) in &entries[..n] {
                 if v >= lo && v < hi {
@@ -454,8 +467,12 @@ where
         }
     });
     drop(pieces);
-    (start, list)
+    cancel.check()?;
+    Ok((start, list))
 }
+
+/// Faces scanned between two checks of the stop flag in the loops over every face.
+const POLL_FACES: usize = 1 << 16;
 
 /// Closed, manifold and consistently oriented, or an [`Error::mesh`] naming `faces`.
 ///
@@ -467,16 +484,21 @@ where
 /// non-manifold edge, two uses in the same direction an inconsistent orientation.
 /// On success, returns each face's component (faces connected across shared edges; `UNUSED`
 /// for faces with a repeated index) and the number of components.
-fn check_topology(nv: usize, tris: &[[u32; 3]], merged: Option<f64>) -> Result<(Vec<u32>, usize)> {
+fn check_topology(
+    nv: usize,
+    tris: &[[u32; 3]],
+    merged: Option<f64>,
+    cancel: &Cancel,
+) -> Result<(Vec<u32>, usize)> {
     // Entries: (high vertex << 1 | direction) << 32 | face.
-    let (start, mut list) = file_by_vertex(nv, tris, |f, t| {
+    let (start, mut list) = file_by_vertex(nv, tris, cancel, |f, t| {
         if index_degenerate(t) {
             return ([(0, 0); 3], 0);
         }
         let e = half_edges(t);
         let entry = |(a, d): (u32, u32)| (a, u64::from(d) << 32 | f as u64);
         ([entry(e[0]), entry(e[1]), entry(e[2])], 3)
-    });
+    })?;
     // Classify, vertex by vertex, in parallel blocks of vertices.
     let mut blocks = Vec::new();
     let mut rest = list.as_mut_slice();
@@ -492,6 +514,9 @@ fn check_topology(nv: usize, tris: &[[u32; 3]], merged: Option<f64>) -> Result<(
         .into_par_iter()
         .map(|(v0, v1, piece)| {
             let mut d = EdgeDefects::default();
+            if cancel.check().is_err() {
+                return d;
+            }
             let base = start[v0];
             for a in v0..v1 {
                 let edges = &mut piece[start[a] - base..start[a + 1] - base];
@@ -527,6 +552,7 @@ fn check_topology(nv: usize, tris: &[[u32; 3]], merged: Option<f64>) -> Result<(
             d
         })
         .reduce(EdgeDefects::default, EdgeDefects::merge);
+    cancel.check()?;
     // The first face using an edge (for the message; only on failure).
     let face_of = |a: u32, b: u32| {
         tris.par_iter()
@@ -614,7 +640,13 @@ struct Part {
 }
 
 /// Integrates each component about a point of its own (module docs).
-fn integrate_parts(vertices: &[f64], tris: &[[u32; 3]], comp: &[u32], ncomp: usize) -> Vec<Part> {
+fn integrate_parts(
+    vertices: &[f64],
+    tris: &[[u32; 3]],
+    comp: &[u32],
+    ncomp: usize,
+    cancel: &Cancel,
+) -> Result<Vec<Part>> {
     // Faces grouped by component (a counting sort).
     let mut start = vec![0usize; ncomp + 1];
     for &c in comp {
@@ -637,7 +669,7 @@ fn integrate_parts(vertices: &[f64], tris: &[[u32; 3]], comp: &[u32], ncomp: usi
         let k = 3 * i as usize;
         [vertices[k], vertices[k + 1], vertices[k + 2]]
     };
-    (0..ncomp)
+    let parts = (0..ncomp)
         .into_par_iter()
         .map(|k| {
             let faces = &members[start[k]..start[k + 1]];
@@ -672,66 +704,69 @@ fn integrate_parts(vertices: &[f64], tris: &[[u32; 3]], comp: &[u32], ncomp: usi
             let half = (0..3).fold(0.0f64, |m, j| m.max(0.5 * hi[j] - 0.5 * lo[j]));
             let e = exponent(half);
             let ps = p.map(|x| ldexp(x, -e));
-            let (s, degenerate) = faces
-                .par_iter()
-                .with_min_len(CHUNK)
-                .fold(
-                    || ([0.0; 12], 0u64),
-                    |(mut m, mut degenerate), &f| {
-                        let q = |i: u32| {
-                            let v = vertex(i);
-                            [0, 1, 2].map(|j| ldexp(v[j], -e) - ps[j])
-                        };
-                        let t = &tris[f as usize];
-                        let (a, b, c) = (q(t[0]), q(t[1]), q(t[2]));
-                        // Zero area: (b − a) × (c − a) = 0.
-                        let (u, w) = (
-                            [b[0] - a[0], b[1] - a[1], b[2] - a[2]],
-                            [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
-                        );
-                        let n = [
-                            u[1] * w[2] - u[2] * w[1],
-                            u[2] * w[0] - u[0] * w[2],
-                            u[0] * w[1] - u[1] * w[0],
-                        ];
-                        if n == [0.0; 3] {
-                            degenerate += 1;
-                            return (m, degenerate);
-                        }
-                        let bc = [
-                            b[1] * c[2] - b[2] * c[1],
-                            b[2] * c[0] - b[0] * c[2],
-                            b[0] * c[1] - b[1] * c[0],
-                        ];
-                        let d = a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2];
-                        let sv = [a[0] + b[0] + c[0], a[1] + b[1] + c[1], a[2] + b[2] + c[2]];
-                        m[0] += d;
-                        m[1] += d * sv[0];
-                        m[2] += d * sv[1];
-                        m[3] += d * sv[2];
-                        let sq = |i: usize, j: usize| {
-                            a[i] * a[j] + b[i] * b[j] + c[i] * c[j] + sv[i] * sv[j]
-                        };
-                        m[4] += d * sq(0, 0);
-                        m[5] += d * sq(1, 1);
-                        m[6] += d * sq(2, 2);
-                        m[7] += d * sq(0, 1);
-                        m[8] += d * sq(1, 2);
-                        m[9] += d * sq(2, 0);
-                        m[10] += d.abs();
-                        m[11] += d.abs() * (sq(0, 0) + sq(1, 1) + sq(2, 2));
-                        (m, degenerate)
-                    },
-                )
-                .reduce(
-                    || ([0.0; 12], 0u64),
-                    |(mut x, d1), (y, d2)| {
-                        for (a, b) in x.iter_mut().zip(y) {
-                            *a += b;
-                        }
-                        (x, d1 + d2)
-                    },
-                );
+            // Fixed chunks summed in order: the same sums (bit for bit) on any number of
+            // threads (a rayon fold's pieces depend on which thread steals what).
+            let sums: Vec<([f64; 12], u64)> = faces
+                .par_chunks(CHUNK)
+                .map(|chunk| {
+                    if cancel.check().is_err() {
+                        return ([0.0; 12], 0);
+                    }
+                    chunk
+                        .iter()
+                        .fold(([0.0; 12], 0u64), |(mut m, mut degenerate), &f| {
+                            let q = |i: u32| {
+                                let v = vertex(i);
+                                [0, 1, 2].map(|j| ldexp(v[j], -e) - ps[j])
+                            };
+                            let t = &tris[f as usize];
+                            let (a, b, c) = (q(t[0]), q(t[1]), q(t[2]));
+                            // Zero area: (b − a) × (c − a) = 0.
+                            let (u, w) = (
+                                [b[0] - a[0], b[1] - a[1], b[2] - a[2]],
+                                [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
+                            );
+                            let n = [
+                                u[1] * w[2] - u[2] * w[1],
+                                u[2] * w[0] - u[0] * w[2],
+                                u[0] * w[1] - u[1] * w[0],
+                            ];
+                            if n == [0.0; 3] {
+                                degenerate += 1;
+                                return (m, degenerate);
+                            }
+                            let bc = [
+                                b[1] * c[2] - b[2] * c[1],
+                                b[2] * c[0] - b[0] * c[2],
+                                b[0] * c[1] - b[1] * c[0],
+                            ];
+                            let d = a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2];
+                            let sv = [a[0] + b[0] + c[0], a[1] + b[1] + c[1], a[2] + b[2] + c[2]];
+                            m[0] += d;
+                            m[1] += d * sv[0];
+                            m[2] += d * sv[1];
+                            m[3] += d * sv[2];
+                            let sq = |i: usize, j: usize| {
+                                a[i] * a[j] + b[i] * b[j] + c[i] * c[j] + sv[i] * sv[j]
+                            };
+                            m[4] += d * sq(0, 0);
+                            m[5] += d * sq(1, 1);
+                            m[6] += d * sq(2, 2);
+                            m[7] += d * sq(0, 1);
+                            m[8] += d * sq(1, 2);
+                            m[9] += d * sq(2, 0);
+                            m[10] += d.abs();
+                            m[11] += d.abs() * (sq(0, 0) + sq(1, 1) + sq(2, 2));
+                            (m, degenerate)
+                        })
+                })
+                .collect();
+            let (s, degenerate) = sums.iter().fold(([0.0; 12], 0u64), |(mut x, d1), (y, d2)| {
+                for (a, b) in x.iter_mut().zip(y) {
+                    *a += b;
+                }
+                (x, d1 + d2)
+            });
             Part {
                 p,
                 e,
@@ -739,7 +774,9 @@ fn integrate_parts(vertices: &[f64], tris: &[[u32; 3]], comp: &[u32], ncomp: usi
                 degenerate,
             }
         })
-        .collect()
+        .collect();
+    cancel.check()?;
+    Ok(parts)
 }
 
 /// The signed volume of a part relative to the tetrahedra it was summed from: `+1`, `−1`, or
@@ -874,10 +911,11 @@ fn check_embedding(
     tris: &[[u32; 3]],
     comp: &[u32],
     parts: &[Part],
+    cancel: &Cancel,
 ) -> Result<()> {
     let pts = Points::new(vertices);
-    let index = Index::new(pts, tris, |f| comp[f] == UNUSED);
-    let (count, first) = index.intersections();
+    let index = Index::new(pts, tris, |f| comp[f] == UNUSED, cancel)?;
+    let (count, first) = index.intersections(cancel)?;
     if let Some((i, j)) = first {
         return Err(Error::mesh(
             "faces",
@@ -1009,6 +1047,56 @@ mod tests {
             [3, 7, 5], // x = 1
         ];
         (v, f)
+    }
+
+    /// The sums are taken in fixed chunks and added in order: the same mass properties, bit
+    /// for bit, on 1, 2 and 3 threads (a rayon fold's pieces depend on which thread steals
+    /// what; the 1.3 M-face icosphere's mass differed in its last digits between two calls).
+    #[test]
+    fn same_bits_on_any_number_of_threads() {
+        // A UV sphere of 100 × 200 quads split in two: 39,800 faces, ten chunks.
+        let (n, m) = (100usize, 200usize);
+        let mut v = vec![[0.0, 0.0, 1.0]];
+        for k in 1..n {
+            let th = std::f64::consts::PI * k as f64 / n as f64;
+            for j in 0..m {
+                let ph = 2.0 * std::f64::consts::PI * j as f64 / m as f64;
+                v.push([th.sin() * ph.cos(), th.sin() * ph.sin(), th.cos()]);
+            }
+        }
+        v.push([0.0, 0.0, -1.0]);
+        let ring = |k: usize, j: usize| (1 + (k - 1) * m + j % m) as u32;
+        let south = (1 + (n - 1) * m) as u32;
+        let mut f = Vec::new();
+        for j in 0..m {
+            f.push([0, ring(1, j), ring(1, j + 1)]);
+            for k in 1..n - 1 {
+                let (a, b) = (ring(k, j), ring(k, j + 1));
+                let (c, d) = (ring(k + 1, j + 1), ring(k + 1, j));
+                f.push([a, d, c]);
+                f.push([a, c, b]);
+            }
+            f.push([south, ring(n - 1, j + 1), ring(n - 1, j)]);
+        }
+        assert!(f.len() > 8 * CHUNK);
+        let on = |threads: usize| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap()
+                .install(|| mesh_mass_properties_rows(&v, &f, 1.0).unwrap())
+        };
+        let one = on(1);
+        // A sphere's volume, as a check that the mesh is the intended one.
+        assert!((one.mass() - 4.0 / 3.0 * std::f64::consts::PI).abs() < 2e-3);
+        for threads in [2, 3] {
+            for _ in 0..5 {
+                let other = on(threads);
+                assert_eq!(other.mass().to_bits(), one.mass().to_bits());
+                assert_eq!(other.center_of_mass(), one.center_of_mass());
+                assert_eq!(other.inertia(), one.inertia());
+            }
+        }
     }
 
     #[test]

@@ -2,14 +2,17 @@
 //! that the edge topology cannot make (see [`crate::inertia::mesh`]):
 //!
 //! 1. **No self-intersection.** No two faces meet except in the vertex or edge they share
-//!    by index. Broad phase: the non-degenerate faces, sorted along a Morton curve, are grouped
-//!    in leaves of [`LEAF`] consecutive faces under a complete binary hierarchy of `f32` boxes
-//!    (a linear bounding-volume hierarchy, built bottom-up in parallel); a parallel self-join
-//!    of the hierarchy yields the pairs of leaves whose boxes overlap, and within them the
-//!    pairs of faces whose boxes overlap (within two leaves, only the faces that meet the
-//!    common part of the leaves' boxes).
-//!    Most pairs whose boxes meet are neighbours sharing a vertex (12 M pairs for a
-//!    1.3 M-face sphere). They are skipped topologically when the **star** of a shared vertex
+//!    by index. Broad phase: the non-degenerate faces, sorted along a Morton curve (one
+//!    linear pass for boxes and keys, a three-pass radix sort), are grouped in leaves of
+//!    [`LEAF`] consecutive faces under a complete binary hierarchy of `f32` boxes (a linear
+//!    bounding-volume hierarchy, built bottom-up in parallel); a parallel self-join of the
+//!    hierarchy yields the pairs of leaves whose boxes overlap, and within them the pairs of
+//!    faces whose boxes overlap (within two leaves, only the faces that meet the common part
+//!    of the leaves' boxes). A leaf stores its boxes coordinate by coordinate, so that one box
+//!    is compared with all 32 of a leaf in a few vector instructions (AVX2 where the CPU has
+//!    it, by [`crate::simd::dispatch`]), giving a bit mask of the candidates.
+//!    Most pairs whose boxes meet are neighbours sharing a vertex (7.9 M pairs for a
+//!    1.3 M-face sphere, against 49,680 that share none). They are skipped topologically when the **star** of a shared vertex
 //!    (the faces around it) is proved embedded, exactly ([`star_embedded`]): along one axis
 //!    every face of the star projects with the same orientation and the fan of their wedges
 //!    winds once around the vertex, so two faces of the star meet only in the vertex or in
@@ -30,6 +33,10 @@
 //!    in `+x` with the same predicates, the ray symbolically perturbed (Simulation of
 //!    Simplicity) so that it never grazes an edge or a vertex.
 //!
+//! Every phase checks the stop flag it is given ([`crate::control::Cancel`]) every few
+//! thousand faces or vertices, and the join at every subtree of `2^PAR_LEVEL` leaves, so that
+//! Ctrl-C stops a call on millions of faces within milliseconds.
+//!
 //! The predicates are exact as long as their products neither overflow nor underflow: the
 //! points of each test are scaled by a power of two (exact) when their extent is outside
 //! `[2^-60, 2^60]`, which keeps them exact for features down to about `1e-90` of the size of
@@ -39,6 +46,9 @@ use std::sync::atomic::{AtomicU32, AtomicU64, Ordering};
 
 use rayon::prelude::*;
 use robust::{Coord, Coord3D};
+
+use crate::control::Cancel;
+use crate::error::Result;
 
 /// A point.
 type P3 = [f64; 3];
@@ -599,6 +609,57 @@ fn fast(t: &[P3; 3]) -> bool {
         .all(|c| c.iter().all(|x| x.abs() <= FAST_COORD_MAX))
 }
 
+/// The boxes of the faces of one leaf, coordinate by coordinate (`lo[k][i]`, `hi[k][i]`: face
+/// `i` of the leaf), so that one box is compared with all of a leaf's in a few vector
+/// instructions ([`LeafBoxes::meeting`]). The lanes past the end of the last leaf hold empty
+/// boxes and are masked out by [`Index::lanes`].
+#[derive(Clone, Copy)]
+struct LeafBoxes {
+    lo: [[f32; LEAF]; 3],
+    hi: [[f32; LEAF]; 3],
+}
+
+impl LeafBoxes {
+    /// Box `i` of the leaf.
+    #[inline(always)]
+    fn get(&self, i: usize) -> Box3 {
+        Box3 {
+            lo: [self.lo[0][i], self.lo[1][i], self.lo[2][i]],
+            hi: [self.hi[0][i], self.hi[1][i], self.hi[2][i]],
+        }
+    }
+
+    /// Bit `i` set: box `i` of the leaf meets `b` ([`Box3::meets`], lane by lane; a loop the
+    /// compiler turns into vector comparisons, of the width [`LeafWork`] dispatches to).
+    #[inline(always)]
+    fn meeting(&self, b: &Box3) -> u32 {
+        let mut hit = [false; LEAF];
+        for (i, h) in hit.iter_mut().enumerate() {
+            *h = (self.lo[0][i] <= b.hi[0])
+                & (b.lo[0] <= self.hi[0][i])
+                & (self.lo[1][i] <= b.hi[1])
+                & (b.lo[1] <= self.hi[1][i])
+                & (self.lo[2][i] <= b.hi[2])
+                & (b.lo[2] <= self.hi[2][i]);
+        }
+        hit.iter()
+            .enumerate()
+            .fold(0u32, |m, (i, &h)| m | u32::from(h) << i)
+    }
+}
+
+/// The set bits of `m`, lowest first.
+#[inline(always)]
+fn bits(mut m: u32) -> impl Iterator<Item = usize> {
+    std::iter::from_fn(move || {
+        (m != 0).then(|| {
+            let i = m.trailing_zeros() as usize;
+            m &= m - 1;
+            i
+        })
+    })
+}
+
 /// The faces that take part, in Morton order, with their boxes, and a bounding-volume
 /// hierarchy over them: leaves of [`LEAF`] consecutive faces, and above them a complete binary
 /// tree in Morton order (implicit: node `i` of level `l` has the children `2i` and `2i + 1`
@@ -608,8 +669,9 @@ pub(crate) struct Index<'a> {
     pts: Points<'a>,
     /// Face indices in Morton order (faces that take part only).
     order: Vec<u32>,
-    /// The box of `order[k]`.
-    boxes: Vec<Box3>,
+    /// The boxes of the faces in Morton order, by leaf: position `k` is lane `k % LEAF` of
+    /// `leaves[k / LEAF]`.
+    leaves: Vec<LeafBoxes>,
     /// Vertex indices and drop axis of `order[k]`.
     faces: Vec<Face>,
     /// Whether face `f` takes part (non-degenerate), by face index.
@@ -619,14 +681,41 @@ pub(crate) struct Index<'a> {
     levels: Vec<Vec<Box3>>,
 }
 
-/// Faces per leaf of the tree (consecutive in Morton order). 32 rather than 8: a quarter of
-/// the nodes to traverse (1.7 M pairs of nodes visited instead of 6.7 M on a 1.3 M-face
-/// sphere) for the same 7.9 M pairs of faces whose boxes meet; the join took 300 ms instead of
-/// 390 ms on one thread (16: 330 ms, 64: 310 ms; bench/README.md).
+/// Faces per leaf of the tree (consecutive in Morton order), one bit each in a `u32` mask.
+/// 32 rather than 8: a quarter of the nodes to traverse (1.7 M pairs of nodes visited instead
+/// of 6.7 M on a 1.3 M-face sphere) for the same 7.9 M pairs of faces whose boxes meet.
 const LEAF: usize = 32;
 
-/// Subtrees from this level up (`2^PAR_LEVEL` leaves and more) are joined in parallel.
+/// Subtrees from this level up (`2^PAR_LEVEL` leaves and more) are joined in parallel, and
+/// check the stop flag.
 const PAR_LEVEL: usize = 5;
+
+/// Morton bits per axis of the sort keys (a grid of `2^30` cells over the vertices' box;
+/// faces in one cell keep their index order).
+const MORTON_BITS: u32 = 10;
+
+/// Faces per parallel task of the face pass (and per check of the stop flag).
+const FACE_CHUNK: usize = 4096;
+
+/// The pairs within one leaf `(i, None)` or between two `(i, Some(j))`, run by
+/// [`crate::simd::dispatch`] so that the box comparisons of [`LeafBoxes::meeting`] use the
+/// widest vector instructions the CPU has (8 lanes of AVX2 instead of SSE2's 4).
+struct LeafWork<'i, 'a> {
+    index: &'i Index<'a>,
+    leaves: (usize, Option<usize>),
+}
+
+impl crate::simd::WithSimd for LeafWork<'_, '_> {
+    type Output = Found;
+
+    #[inline(always)]
+    fn with_simd<S: crate::simd::Simd>(self, _s: S) -> Found {
+        match self.leaves {
+            (i, None) => self.index.leaf_self(i),
+            (i, Some(j)) => self.index.leaf_pair(i, j),
+        }
+    }
+}
 
 /// Intersecting pairs found: how many, and the first `(i, j)` (`i < j`) in index order.
 #[derive(Clone, Copy, Default)]
@@ -686,81 +775,153 @@ fn face_axis(p: &[P3; 3]) -> u8 {
     drop_axis(p).unwrap_or(NO_AXIS)
 }
 
+/// Sorts `keys` by their bits 32–62 (stable: keys equal there keep their order), by three
+/// passes of a least-significant-digit radix sort of 11 bits; linear, on this thread.
+fn radix_sort_high(keys: &mut Vec<u64>, cancel: &Cancel) -> Result<()> {
+    const DIGIT: u32 = 11;
+    const BUCKETS: usize = 1 << DIGIT;
+    let mut count = vec![[0usize; BUCKETS]; 3];
+    for k in keys.iter() {
+        for (d, c) in count.iter_mut().enumerate() {
+            c[((k >> (32 + DIGIT * d as u32)) as usize) & (BUCKETS - 1)] += 1;
+        }
+    }
+    let mut tmp = vec![0u64; keys.len()];
+    for (d, c) in count.iter_mut().enumerate() {
+        cancel.check()?;
+        let mut acc = 0;
+        for x in c.iter_mut() {
+            let n = *x;
+            *x = acc;
+            acc += n;
+        }
+        let shift = 32 + DIGIT * d as u32;
+        for &k in keys.iter() {
+            let b = ((k >> shift) as usize) & (BUCKETS - 1);
+            tmp[c[b]] = k;
+            c[b] += 1;
+        }
+        std::mem::swap(keys, &mut tmp);
+    }
+    Ok(())
+}
+
 impl<'a> Index<'a> {
-    /// Builds the index of the faces `tris` (`skip[f]`: left out, e.g. a repeated index).
+    /// Builds the index of the faces `tris` (`skip[f]`: left out, e.g. a repeated index);
+    /// stops with [`crate::control::interrupted`] once `cancel` is set.
     pub(crate) fn new(
         pts: Points<'a>,
         tris: &[[u32; 3]],
         skip: impl Fn(usize) -> bool + Sync,
-    ) -> Self {
-        // One pass: drop axis (exact degeneracy) and box.
-        let per_face: Vec<(u8, Box3)> = tris
-            .par_iter()
-            .enumerate()
-            .with_min_len(1024)
-            .map(|(f, t)| {
-                if skip(f) {
-                    return (NO_AXIS, Box3::EMPTY);
-                }
-                let p = pts.tri(t);
-                (face_axis(&p), box32(&p))
-            })
-            .collect();
-        let all = per_face
-            .par_iter()
-            .with_min_len(1024)
-            .filter(|(a, _)| *a != NO_AXIS)
-            .map(|(_, b)| *b)
-            .reduce(|| Box3::EMPTY, |a, b| a.merged(&b));
-        // Morton keys of the box centres, the face index in the low bits (unique keys: the
-        // order is deterministic).
-        let face_bits = u64::BITS - (tris.len().max(2) as u64 - 1).leading_zeros();
-        let shift = 63 - (u64::BITS - face_bits).min(63);
-        let span = [0, 1, 2].map(|k| f64::from(all.hi[k]) - f64::from(all.lo[k]));
-        let mut keys: Vec<u64> = per_face
-            .par_iter()
-            .enumerate()
-            .with_min_len(1024)
-            .filter(|(_, (a, _))| *a != NO_AXIS)
-            .map(|(f, (_, b))| {
-                let q = |k: usize| {
-                    let c = 0.5 * (f64::from(b.lo[k]) + f64::from(b.hi[k]));
-                    let x = if span[k] > 0.0 && span[k].is_finite() {
-                        (c - f64::from(all.lo[k])) / span[k]
-                    } else {
-                        0.0
-                    };
-                    (x.clamp(0.0, 1.0) * 2_097_151.0) as u64
-                };
-                let morton = spread(q(0)) | spread(q(1)) << 1 | spread(q(2)) << 2;
-                (morton >> shift) << face_bits | f as u64
-            })
-            .collect();
-        keys.par_sort_unstable();
-        let low = (1u64 << face_bits) - 1;
-        let order: Vec<u32> = keys.par_iter().map(|k| (k & low) as u32).collect();
-        drop(keys);
-        let used: Vec<bool> = per_face.par_iter().map(|(a, _)| *a != NO_AXIS).collect();
-        let star = stars(pts, tris, &used);
-        let (boxes, faces): (Vec<Box3>, Vec<Face>) = order
-            .par_iter()
-            .with_min_len(1024)
-            .map(|&f| {
-                let (axis, b) = per_face[f as usize];
-                let indices = tris[f as usize];
-                let proved = (0..3).fold(0u8, |m, i| m | u8::from(star[indices[i] as usize]) << i);
-                (
-                    b,
-                    Face {
-                        indices,
-                        axis,
-                        proved,
+        cancel: &Cancel,
+    ) -> Result<Self> {
+        // The box of the vertices, for the Morton keys (a far vertex that no face uses only
+        // coarsens the order: the speed of the join, not its result).
+        let (lo, hi) = pts
+            .v
+            .par_chunks(3 * FACE_CHUNK)
+            .map(|c| {
+                c.chunks_exact(3).fold(
+                    ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
+                    |(mut lo, mut hi), p| {
+                        for k in 0..3 {
+                            lo[k] = lo[k].min(p[k]);
+                            hi[k] = hi[k].max(p[k]);
+                        }
+                        (lo, hi)
                     },
                 )
             })
+            .reduce(
+                || ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
+                |(a, b), (c, d)| {
+                    (
+                        [0, 1, 2].map(|k| a[k].min(c[k])),
+                        [0, 1, 2].map(|k| b[k].max(d[k])),
+                    )
+                },
+            );
+        let cells = f64::from(1u32 << MORTON_BITS);
+        let scale = [0, 1, 2].map(|k| {
+            let span = hi[k] - lo[k];
+            if span > 0.0 && (cells / span).is_finite() {
+                cells / span
+            } else {
+                0.0
+            }
+        });
+        // One pass: drop axis (exact degeneracy), box and sort key (Morton code of the first
+        // corner, bit 62 set for a face that takes no part, the face in the low 32 bits).
+        let mut per_face = vec![(NO_AXIS, Box3::EMPTY); tris.len()];
+        let mut keys = vec![0u64; tris.len()];
+        per_face
+            .par_chunks_mut(FACE_CHUNK)
+            .zip(keys.par_chunks_mut(FACE_CHUNK))
+            .enumerate()
+            .for_each(|(c, (out, key))| {
+                if cancel.check().is_err() {
+                    return;
+                }
+                let f0 = c * FACE_CHUNK;
+                for (i, (o, k)) in out.iter_mut().zip(key.iter_mut()).enumerate() {
+                    let f = f0 + i;
+                    let t = &tris[f];
+                    if skip(f) {
+                        *k = 1 << 62 | f as u64;
+                        continue;
+                    }
+                    let p = pts.tri(t);
+                    let axis = face_axis(&p);
+                    *o = (axis, box32(&p));
+                    let q = |k: usize| {
+                        // Saturating: NaN (no span) and overflow map into the grid.
+                        ((p[0][k] - lo[k]) * scale[k]).clamp(0.0, cells - 1.0) as u64
+                    };
+                    let morton = spread(q(0)) | spread(q(1)) << 1 | spread(q(2)) << 2;
+                    *k = u64::from(axis == NO_AXIS) << 62 | morton << 32 | f as u64;
+                }
+            });
+        cancel.check()?;
+        radix_sort_high(&mut keys, cancel)?;
+        let taking_part = keys.partition_point(|k| k >> 62 == 0);
+        let order: Vec<u32> = keys[..taking_part].par_iter().map(|&k| k as u32).collect();
+        drop(keys);
+        let used: Vec<bool> = per_face.par_iter().map(|(a, _)| *a != NO_AXIS).collect();
+        let star = stars(pts, tris, &used, cancel)?;
+        let faces: Vec<Face> = order
+            .par_iter()
+            .with_min_len(FACE_CHUNK)
+            .map(|&f| {
+                let indices = tris[f as usize];
+                let proved = (0..3).fold(0u8, |m, i| m | u8::from(star[indices[i] as usize]) << i);
+                Face {
+                    indices,
+                    axis: per_face[f as usize].0,
+                    proved,
+                }
+            })
+            .collect();
+        let (leaves, leaf_boxes): (Vec<LeafBoxes>, Vec<Box3>) = order
+            .par_chunks(LEAF)
+            .map(|c| {
+                let mut l = LeafBoxes {
+                    lo: [[f32::INFINITY; LEAF]; 3],
+                    hi: [[f32::NEG_INFINITY; LEAF]; 3],
+                };
+                let mut all = Box3::EMPTY;
+                for (i, &f) in c.iter().enumerate() {
+                    let b = per_face[f as usize].1;
+                    for k in 0..3 {
+                        l.lo[k][i] = b.lo[k];
+                        l.hi[k][i] = b.hi[k];
+                    }
+                    all = all.merged(&b);
+                }
+                (l, all)
+            })
             .unzip();
         let merge_all = |c: &[Box3]| c.iter().fold(Box3::EMPTY, |e, x| e.merged(x));
-        let mut levels = vec![boxes.par_chunks(LEAF).map(merge_all).collect::<Vec<_>>()];
+        let mut levels = vec![leaf_boxes];
         while levels[levels.len() - 1].len() > 1 {
             let next = levels[levels.len() - 1]
                 .par_chunks(2)
@@ -769,30 +930,49 @@ impl<'a> Index<'a> {
                 .collect();
             levels.push(next);
         }
-        Self {
+        cancel.check()?;
+        Ok(Self {
             pts,
             order,
-            boxes,
+            leaves,
             faces,
             used,
             levels,
-        }
+        })
     }
 
     /// Pairs of faces that meet anywhere but in what they share by index: how many, and the
-    /// first pair `(i, j)`, `i < j`.
-    pub(crate) fn intersections(&self) -> (u64, Option<(u32, u32)>) {
+    /// first pair `(i, j)`, `i < j`; stops once `cancel` is set.
+    pub(crate) fn intersections(&self, cancel: &Cancel) -> Result<(u64, Option<(u32, u32)>)> {
         if self.faces.is_empty() {
-            return (0, None);
+            return Ok((0, None));
         }
-        let f = self.self_join(self.levels.len() - 1, 0);
-        (f.count, f.first)
+        let f = self.self_join(self.levels.len() - 1, 0, cancel);
+        cancel.check()?;
+        Ok((f.count, f.first))
     }
 
     /// The faces of leaf `i` (positions in Morton order).
-    #[inline]
+    #[inline(always)]
     fn leaf(&self, i: usize) -> std::ops::Range<usize> {
         LEAF * i..(LEAF * (i + 1)).min(self.faces.len())
+    }
+
+    /// The lanes of leaf `i` that hold faces.
+    #[inline(always)]
+    fn lanes(&self, i: usize) -> u32 {
+        let n = self.leaf(i).len();
+        if n >= LEAF {
+            u32::MAX
+        } else {
+            (1u32 << n) - 1
+        }
+    }
+
+    /// The box of the face at Morton position `k`.
+    #[inline]
+    fn face_box(&self, k: usize) -> Box3 {
+        self.leaves[k / LEAF].get(k % LEAF)
     }
 
     /// The children of node `i` of level `l > 0`: node `2i` of level `l − 1`, and `2i + 1`
@@ -803,31 +983,38 @@ impl<'a> Index<'a> {
         (a, (a + 1 < self.levels[l - 1].len()).then_some(a + 1))
     }
 
-    /// The pairs within the subtree of node `i` of level `l`.
-    fn self_join(&self, l: usize, i: usize) -> Found {
+    /// The pairs within the subtree of node `i` of level `l` (nothing once `cancel` is set:
+    /// the caller checks it).
+    fn self_join(&self, l: usize, i: usize, cancel: &Cancel) -> Found {
         if l == 0 {
-            return self.leaf_self(i);
+            return crate::simd::dispatch(LeafWork {
+                index: self,
+                leaves: (i, None),
+            });
         }
         let (a, b) = self.children(l, i);
         let Some(b) = b else {
-            return self.self_join(l - 1, a);
+            return self.self_join(l - 1, a, cancel);
         };
         let (x, (y, z)) = if l >= PAR_LEVEL {
+            if cancel.check().is_err() {
+                return Found::default();
+            }
             rayon::join(
-                || self.self_join(l - 1, a),
+                || self.self_join(l - 1, a, cancel),
                 || {
                     rayon::join(
-                        || self.self_join(l - 1, b),
-                        || self.pair_join((l - 1, a), (l - 1, b)),
+                        || self.self_join(l - 1, b, cancel),
+                        || self.pair_join((l - 1, a), (l - 1, b), cancel),
                     )
                 },
             )
         } else {
             (
-                self.self_join(l - 1, a),
+                self.self_join(l - 1, a, cancel),
                 (
-                    self.self_join(l - 1, b),
-                    self.pair_join((l - 1, a), (l - 1, b)),
+                    self.self_join(l - 1, b, cancel),
+                    self.pair_join((l - 1, a), (l - 1, b), cancel),
                 ),
             )
         };
@@ -835,26 +1022,37 @@ impl<'a> Index<'a> {
     }
 
     /// The pairs between the subtrees of two distinct nodes `(level, index)`.
-    fn pair_join(&self, (la, ia): (usize, usize), (lb, ib): (usize, usize)) -> Found {
+    fn pair_join(
+        &self,
+        (la, ia): (usize, usize),
+        (lb, ib): (usize, usize),
+        cancel: &Cancel,
+    ) -> Found {
         if !self.levels[la][ia].meets(&self.levels[lb][ib]) {
             return Found::default();
         }
         if la == 0 && lb == 0 {
-            return self.leaf_pair(ia, ib);
+            return crate::simd::dispatch(LeafWork {
+                index: self,
+                leaves: (ia, Some(ib)),
+            });
         }
         // Open the higher node; its children against the other.
         let (split_a, l) = if la >= lb { (true, la) } else { (false, lb) };
         let (c0, c1) = self.children(l, if split_a { ia } else { ib });
         let with = |c: usize| {
             if split_a {
-                self.pair_join((l - 1, c), (lb, ib))
+                self.pair_join((l - 1, c), (lb, ib), cancel)
             } else {
-                self.pair_join((la, ia), (l - 1, c))
+                self.pair_join((la, ia), (l - 1, c), cancel)
             }
         };
         match c1 {
             None => with(c0),
             Some(c1) if l >= PAR_LEVEL => {
+                if cancel.check().is_err() {
+                    return Found::default();
+                }
                 let (x, y) = rayon::join(|| with(c0), || with(c1));
                 x.merge(y)
             }
@@ -862,15 +1060,15 @@ impl<'a> Index<'a> {
         }
     }
 
+    /// The pairs within leaf `i`: each face's box against the boxes after it, a leaf at once.
+    #[inline(always)]
     fn leaf_self(&self, i: usize) -> Found {
         let mut f = Found::default();
-        let r = self.leaf(i);
-        for a in r.clone() {
-            let ba = self.boxes[a];
-            for b in a + 1..r.end {
-                if ba.meets(&self.boxes[b]) {
-                    self.narrow(a, b, &mut f);
-                }
+        let (base, boxes, lanes) = (LEAF * i, &self.leaves[i], self.lanes(i));
+        for a in bits(lanes) {
+            let later = lanes & u32::MAX.checked_shl(a as u32 + 1).unwrap_or(0);
+            for b in bits(boxes.meeting(&boxes.get(a)) & later) {
+                self.narrow(base + a, base + b, &mut f);
             }
         }
         f
@@ -878,34 +1076,23 @@ impl<'a> Index<'a> {
 
     /// The pairs between two leaves whose boxes meet: only faces that meet the common part
     /// of the two leaves' boxes can meet a face of the other leaf.
+    #[inline(always)]
     fn leaf_pair(&self, i: usize, j: usize) -> Found {
         let mut f = Found::default();
-        let (ri, rj) = (self.leaf(i), self.leaf(j));
         let (bi, bj) = (self.levels[0][i], self.levels[0][j]);
         let common = Box3 {
             lo: [0, 1, 2].map(|k| bi.lo[k].max(bj.lo[k])),
             hi: [0, 1, 2].map(|k| bi.hi[k].min(bj.hi[k])),
         };
-        let mut near = [0usize; LEAF];
-        let mut n = 0;
-        for b in rj {
-            if self.boxes[b].meets(&common) {
-                near[n] = b;
-                n += 1;
-            }
-        }
-        if n == 0 {
+        let (li, lj) = (&self.leaves[i], &self.leaves[j]);
+        let near_j = lj.meeting(&common) & self.lanes(j);
+        if near_j == 0 {
             return f;
         }
-        for a in ri {
-            let ba = self.boxes[a];
-            if !ba.meets(&common) {
-                continue;
-            }
-            for &b in &near[..n] {
-                if ba.meets(&self.boxes[b]) {
-                    self.narrow(a, b, &mut f);
-                }
+        let near_i = li.meeting(&common) & self.lanes(i);
+        for a in bits(near_i) {
+            for b in bits(lj.meeting(&li.get(a)) & near_j) {
+                self.narrow(LEAF * i + a, LEAF * j + b, &mut f);
             }
         }
         f
@@ -945,7 +1132,7 @@ impl<'a> Index<'a> {
     fn exact(&self, a: usize, b: usize, found: &mut Found) {
         let (fp, fq) = (&self.faces[a], &self.faces[b]);
         let (mut p, mut q) = (self.pts.tri(&fp.indices), self.pts.tri(&fq.indices));
-        let both = self.boxes[a].merged(&self.boxes[b]);
+        let both = self.face_box(a).merged(&self.face_box(b));
         let extent = (0..3).fold(0.0f64, |m, k| {
             m.max(f64::from(both.hi[k]) - f64::from(both.lo[k]))
         });
@@ -1083,18 +1270,59 @@ fn crossing(t: &[P3; 3], p: P3) -> Option<i8> {
 /// For each vertex `v`, whether the faces around it are proved to meet each other only in `v`
 /// and the edges they share ([`star_embedded`]). Faces are filed under their vertices by the
 /// edge check's counting sort ([`super::mesh::file_by_vertex`]); then each vertex is tested
-/// on its own.
-fn stars(pts: Points<'_>, tris: &[[u32; 3]], used: &[bool]) -> Vec<bool> {
+/// on its own. Stops once `cancel` is set.
+fn stars(pts: Points<'_>, tris: &[[u32; 3]], used: &[bool], cancel: &Cancel) -> Result<Vec<bool>> {
     let nv = pts.v.len() / 3;
-    let (start, list) = super::mesh::file_by_vertex(nv, tris, |f, t| {
-        let f = f as u32;
-        ([(t[0], f), (t[1], f), (t[2], f)], 3)
-    });
-    (0..nv)
-        .into_par_iter()
-        .with_min_len(1024)
-        .map(|v| star_embedded(pts, tris, used, v as u32, &list[start[v]..start[v + 1]]))
-        .collect()
+    // Each face's wedge (the next two corners, in its orientation) under each of its corners;
+    // a face that takes no part files `NOT_USED`.
+    let (start, list) = super::mesh::file_by_vertex(nv, tris, cancel, |f, t| {
+        let w = |i: usize| {
+            if used[f] {
+                [t[(i + 1) % 3], t[(i + 2) % 3]]
+            } else {
+                [NOT_USED; 2]
+            }
+        };
+        ([(t[0], w(0)), (t[1], w(1)), (t[2], w(2))], 3)
+    })?;
+    cancel.check()?;
+    let mut proved = vec![false; nv];
+    proved
+        .par_chunks_mut(FACE_CHUNK)
+        .enumerate()
+        .for_each(|(c, out)| {
+            if cancel.check().is_err() {
+                return;
+            }
+            for (i, o) in out.iter_mut().enumerate() {
+                let v = c * FACE_CHUNK + i;
+                *o = star_embedded(pts, v as u32, &list[start[v]..start[v + 1]]);
+            }
+        });
+    cancel.check()?;
+    Ok(proved)
+}
+
+/// The wedge filed by a face that takes no part ([`stars`]).
+const NOT_USED: u32 = u32::MAX;
+
+/// The most faces around a vertex that [`star_embedded`] tries to prove (more are left to the
+/// pairwise tests).
+const STAR_MAX: usize = 32;
+
+/// The sign of the 2-D orientation `o2(c, a, b, k)`, from the differences `da = a − c`,
+/// `db = b − c` already projected along `k` (`[x, y]`): the float determinant when its sign is
+/// certain beyond Shewchuk's bound ([`O2_FILTER`], which covers the rounding of the
+/// differences, plus [`FILTER_SLACK`] for underflow), else the exact predicate.
+#[inline]
+fn o2_diff(da: [f64; 2], db: [f64; 2], exact: impl FnOnce() -> i8) -> i8 {
+    let (l, r) = (da[0] * db[1], da[1] * db[0]);
+    let det = l - r;
+    if det.abs() > O2_FILTER * (l.abs() + r.abs()) + FILTER_SLACK {
+        sign(det)
+    } else {
+        exact()
+    }
 }
 
 /// The faces `star` around the vertex `v` meet each other only in `v` and the edges they
@@ -1107,28 +1335,22 @@ fn stars(pts: Points<'_>, tris: &[[u32; 3]], used: &[bool]) -> Vec<bool> {
 /// is left by one face and entered by the next), each winding at least once, and the number
 /// of wedges `[a, b)` (half-open) that hold the ray from `v` through a fixed corner `r` is
 /// their total winding. `false` (the pairs are then tested one by one) for a vertex with a
-/// face that takes no part (zero area, repeated index), whose neighbourhood is badly scaled
-/// for the predicates, or whose fan is folded, pinched or winds twice.
-fn star_embedded(pts: Points<'_>, tris: &[[u32; 3]], used: &[bool], v: u32, star: &[u32]) -> bool {
-    if star.len() < 3 || star.iter().any(|&f| !used[f as usize]) {
+/// face that takes no part (zero area, repeated index), with more than [`STAR_MAX`] faces,
+/// whose neighbourhood is badly scaled for the predicates, or whose fan is folded, pinched or
+/// winds twice. The orientations are float-filtered ([`o2_diff`]) on the corners' differences
+/// from `v`, computed once.
+fn star_embedded(pts: Points<'_>, v: u32, star: &[[u32; 2]]) -> bool {
+    if star.len() < 3 || star.len() > STAR_MAX || star.iter().any(|w| w[0] == NOT_USED) {
         return false;
     }
     let c = pts.p(v);
-    let wedge = |f: u32| {
-        let t = &tris[f as usize];
-        let i = if t[0] == v {
-            0
-        } else if t[1] == v {
-            1
-        } else {
-            2
-        };
-        (pts.p(t[(i + 1) % 3]), pts.p(t[(i + 2) % 3]))
-    };
+    // The wedges (a, b) of the faces, in face order (the lowest face index first).
+    let mut wedges = [([0.0; 3], [0.0; 3]); STAR_MAX];
+    let n = star.len();
     let (mut lo, mut hi) = (c, c);
-    for &f in star {
-        let (a, b) = wedge(f);
-        for p in [a, b] {
+    for (w, &[a, b]) in wedges.iter_mut().zip(star) {
+        *w = (pts.p(a), pts.p(b));
+        for p in [w.0, w.1] {
             for k in 0..3 {
                 lo[k] = lo[k].min(p[k]);
                 hi[k] = hi[k].max(p[k]);
@@ -1138,45 +1360,56 @@ fn star_embedded(pts: Points<'_>, tris: &[[u32; 3]], used: &[bool], v: u32, star
     if !well_scaled((0..3).fold(0.0f64, |m, k| m.max(hi[k] - lo[k]))) {
         return false;
     }
-    // The reference corner and the axes to try, the largest normal component of the first
-    // face's first.
-    let f0 = star.iter().copied().min().unwrap_or(0);
-    let (r, b0) = wedge(f0);
-    let u = [r[0] - c[0], r[1] - c[1], r[2] - c[2]];
-    let w = [b0[0] - c[0], b0[1] - c[1], b0[2] - c[2]];
-    let n = [
+    // Differences from v (float; the filter accounts for their rounding).
+    let diff = |p: P3| [p[0] - c[0], p[1] - c[1], p[2] - c[2]];
+    let mut d = [([0.0; 3], [0.0; 3]); STAR_MAX];
+    for (dw, w) in d.iter_mut().zip(&wedges[..n]) {
+        *dw = (diff(w.0), diff(w.1));
+    }
+    let (wedges, d) = (&wedges[..n], &d[..n]);
+    // The reference corner r (the first face's a) and the axes to try, the largest normal
+    // component of the first face's first.
+    let (r, b0) = wedges[0];
+    let (u, w) = d[0];
+    let nrm = [
         (u[1] * w[2] - u[2] * w[1]).abs(),
         (u[2] * w[0] - u[0] * w[2]).abs(),
         (u[0] * w[1] - u[1] * w[0]).abs(),
     ];
-    let first = if n[0] >= n[1] && n[0] >= n[2] {
+    let first = if nrm[0] >= nrm[1] && nrm[0] >= nrm[2] {
         0
-    } else if n[1] >= n[2] {
+    } else if nrm[1] >= nrm[2] {
         1
     } else {
         2
     };
+    // The projection dropping axis k, as [`proj`].
+    let pj = |p: [f64; 3], k: u8| match k {
+        0 => [p[1], p[2]],
+        1 => [p[2], p[0]],
+        _ => [p[0], p[1]],
+    };
     for k in [first, (first + 1) % 3, (first + 2) % 3] {
-        let s = o2(c, r, b0, k);
+        let dr = pj(u, k);
+        let s = o2_diff(dr, pj(w, k), || o2(c, r, b0, k));
         if s == 0 {
             continue;
         }
         let mut winding = 0u32;
         let mut same = true;
-        for &f in star {
-            let (a, b) = wedge(f);
-            if o2(c, a, b, k) != s {
+        for (&(a, b), &(da, db)) in wedges.iter().zip(d) {
+            let (da, db) = (pj(da, k), pj(db, k));
+            if o2_diff(da, db, || o2(c, a, b, k)) != s {
                 same = false;
                 break;
             }
-            let oa = o2(c, a, r, k);
+            let oa = o2_diff(da, dr, || o2(c, a, r, k));
             let holds = if oa == 0 {
                 // r on the line of a: on its ray iff each projected coordinate of r − c has
                 // the sign of a − c's (float differences have exact signs).
-                let (pa, pr, pc) = (proj(a, k), proj(r, k), proj(c, k));
-                sign(pa.x - pc.x) == sign(pr.x - pc.x) && sign(pa.y - pc.y) == sign(pr.y - pc.y)
+                sign(da[0]) == sign(dr[0]) && sign(da[1]) == sign(dr[1])
             } else {
-                oa == s && o2(c, r, b, k) == s
+                oa == s && o2_diff(dr, db, || o2(c, r, b, k)) == s
             };
             winding += u32::from(holds);
         }
@@ -1470,9 +1703,10 @@ mod tests {
             let amp = [0.0, 0.02, 0.08, 0.2, 0.5][seed as usize % 5];
             let (v, f) = bumpy_sphere(6, 9, seed, amp);
             let pts = Points::new(&v);
-            let index = Index::new(pts, &f, |_| false);
+            let cancel = Cancel::new(0);
+            let index = Index::new(pts, &f, |_| false, &cancel).unwrap();
             skipped_some |= index.faces.iter().any(|f| f.proved != 0);
-            let got = index.intersections();
+            let got = index.intersections(&cancel).unwrap();
             let mut count = 0u64;
             let mut first = None;
             for i in 0..f.len() {
