@@ -1090,9 +1090,18 @@ impl<'a> Index<'a> {
             return f;
         }
         let near_i = li.meeting(&common) & self.lanes(i);
-        for a in bits(near_i) {
-            for b in bits(lj.meeting(&li.get(a)) & near_j) {
-                self.narrow(LEAF * i + a, LEAF * j + b, &mut f);
+        // One leaf's near boxes against the other's, from the side with fewer.
+        if near_i.count_ones() <= near_j.count_ones() {
+            for a in bits(near_i) {
+                for b in bits(lj.meeting(&li.get(a)) & near_j) {
+                    self.narrow(LEAF * i + a, LEAF * j + b, &mut f);
+                }
+            }
+        } else {
+            for b in bits(near_j) {
+                for a in bits(li.meeting(&lj.get(b)) & near_i) {
+                    self.narrow(LEAF * i + a, LEAF * j + b, &mut f);
+                }
             }
         }
         f
