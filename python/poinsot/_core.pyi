@@ -232,122 +232,225 @@ def frame_steady_at(
 ) -> tuple[list[NDArray[np.float64]], NDArray[np.float64]]: ...
 
 # ---- earth (earth.rs) ----
-def earth_omega_enu(
-    rotation_rate: float, radius: float, g: float, latitude: NDArray[np.float64]
-) -> NDArray[np.float64]: ...
-def earth_effective_gravity(
-    rotation_rate: float,
-    radius: float,
-    g: float,
-    latitude: NDArray[np.float64],
-) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]: ...
-def earth_coriolis_acceleration(
-    rotation_rate: float,
-    radius: float,
-    g: float,
-    latitude: NDArray[np.float64],
-    velocity: NDArray[np.float64],
-) -> NDArray[np.float64]: ...
-def earth_latitude_scalar(
-    rotation_rate: float,
-    radius: float,
-    g: float,
-    quantity: str,
-    latitude: NDArray[np.float64],
-) -> NDArray[np.float64]: ...
-def earth_fall_time(rotation_rate: float, radius: float, g: float, height: float) -> float: ...
-def earth_deflection(
-    rotation_rate: float,
-    radius: float,
-    g: float,
-    direction: str,
-    height: NDArray[np.float64],
-    latitude: NDArray[np.float64],
-) -> NDArray[np.float64]: ...
-def earth_drop(
-    rotation_rate: float,
-    radius: float,
-    g: float,
-    height: float,
-    latitude: float,
-    gravity: str,
-    rotation: bool,
-    centrifugal: bool,
-    rtol: float,
-    atol: float,
-    max_steps: int,
-    samples: int,
-) -> dict[str, Any]: ...
-def earth_projectile(
-    rotation_rate: float,
-    radius: float,
-    g: float,
-    speed: float,
-    elevation: float,
-    azimuth: float,
-    latitude: float,
-    height: float,
-    gravity: str,
-    rotation: bool,
-    centrifugal: bool,
-    rtol: float,
-    atol: float,
-    max_steps: int,
-    samples: int,
-) -> dict[str, Any]: ...
-def earth_fit_precession_rate(
-    turn_times: NDArray[np.float64], turn_angles: NDArray[np.float64]
-) -> float: ...
-def earth_jacobi_integral(
-    rotation_rate: float,
-    radius: float,
-    g: float,
-    latitude: float,
-    position: NDArray[np.float64],
-    velocity: NDArray[np.float64],
-) -> NDArray[np.float64]: ...
-def earth_foucault_swing(
-    rotation_rate: float,
-    radius: float,
-    g: float,
-    latitude: float,
-    length: float,
-    amplitude: float,
-    azimuth: float,
-    duration: float,
-    samples: int,
-    rtol: float,
-    atol: float,
-    max_steps: int,
-    progress: Callable[[float], Any] | None = None,
-) -> dict[str, Any]: ...
-def earth_inertial_swing(
-    rotation_rate: float,
-    radius: float,
-    g: float,
-    latitude: float,
-    velocity: NDArray[np.float64],
-    duration: float | None,
-    samples: int,
-    rtol: float,
-    atol: float,
-    max_steps: int,
-) -> dict[str, Any]: ...
-def earth_low_flow(
-    rotation_rate: float,
-    radius: float,
-    g: float,
-    latitude: float,
-    ring_radius: float,
-    parcels: int,
-    pull: float,
-    friction: float,
-    duration: float,
-    samples: int,
-    rtol: float,
-    atol: float,
-    max_steps: int,
-) -> dict[str, Any]: ...
+# The core's Earth and its runs; python/poinsot/earth.py checks the arguments' types and wraps the
+# results in its public dataclasses. Latitudes in rad, arrays C-contiguous float64 (N,) or (N, 3).
+
+@final
+class EarthCore:
+    def __new__(cls, rotation_rate: float, radius: float, g: float) -> EarthCore: ...
+    def __reduce__(self) -> tuple[type[EarthCore], tuple[float, float, float]]: ...
+    @property
+    def rotation_rate(self) -> float: ...
+    @property
+    def radius(self) -> float: ...
+    @property
+    def g(self) -> float: ...
+    def omega_enu(self, latitude: NDArray[np.float64]) -> NDArray[np.float64]: ...
+    def effective_gravity(
+        self, latitude: NDArray[np.float64]
+    ) -> tuple[
+        NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]
+    ]: ...
+    def coriolis_acceleration(
+        self, latitude: NDArray[np.float64], velocity_enu: NDArray[np.float64]
+    ) -> NDArray[np.float64]: ...
+    def coriolis_parameter(self, latitude: NDArray[np.float64]) -> NDArray[np.float64]: ...
+    def foucault_rate(self, latitude: NDArray[np.float64]) -> NDArray[np.float64]: ...
+    def inertial_period(self, latitude: NDArray[np.float64]) -> NDArray[np.float64]: ...
+    def fall_time(self, height: float) -> float: ...
+    def eastward_deflection(
+        self, height: NDArray[np.float64], latitude: NDArray[np.float64]
+    ) -> NDArray[np.float64]: ...
+    def southward_deflection(
+        self, height: NDArray[np.float64], latitude: NDArray[np.float64]
+    ) -> NDArray[np.float64]: ...
+    def jacobi_integral(
+        self, latitude: float, position: NDArray[np.float64], velocity: NDArray[np.float64]
+    ) -> NDArray[np.float64]: ...
+    def drop(self, height: float, latitude: float, model: FallModel, samples: int) -> FallCore: ...
+    def projectile(
+        self,
+        speed: float,
+        elevation: float,
+        azimuth: float,
+        latitude: float,
+        height: float,
+        model: FallModel,
+        samples: int,
+    ) -> FlightCore: ...
+    def foucault_swing(
+        self,
+        latitude: float,
+        length: float,
+        amplitude: float,
+        azimuth: float,
+        duration: float,
+        samples: int,
+        rtol: float,
+        atol: float,
+        max_steps: int,
+        progress: Callable[[float], Any] | None = None,
+    ) -> FoucaultRunCore: ...
+    def inertial_swing(
+        self,
+        latitude: float,
+        velocity: NDArray[np.float64],
+        duration: float | None,
+        samples: int,
+        rtol: float,
+        atol: float,
+        max_steps: int,
+    ) -> InertialRunCore: ...
+    def low_flow(
+        self,
+        latitude: float,
+        radius: float,
+        parcels: int,
+        pull: float,
+        friction: float,
+        duration: float,
+        samples: int,
+        rtol: float,
+        atol: float,
+        max_steps: int,
+    ) -> LowFlowCore: ...
+
+@final
+class FallModel:
+    def __new__(
+        cls,
+        gravity: str,
+        rotation: bool,
+        centrifugal: bool,
+        rtol: float,
+        atol: float,
+        max_steps: int,
+    ) -> FallModel: ...
+    def __reduce__(
+        self,
+    ) -> tuple[type[FallModel], tuple[str, bool, bool, float, float, int]]: ...
+    @property
+    def gravity(self) -> str: ...
+    @property
+    def rotation(self) -> bool: ...
+    @property
+    def centrifugal(self) -> bool: ...
+    @property
+    def rtol(self) -> float: ...
+    @property
+    def atol(self) -> float: ...
+    @property
+    def max_steps(self) -> int: ...
+
+@final
+class FallCore:
+    @property
+    def time(self) -> float: ...
+    @property
+    def east(self) -> float: ...
+    @property
+    def north(self) -> float: ...
+    @property
+    def first_order_east(self) -> float: ...
+    @property
+    def second_order_south(self) -> float: ...
+    @property
+    def t(self) -> NDArray[np.float64]: ...
+    @property
+    def position(self) -> NDArray[np.float64]: ...
+    @property
+    def velocity(self) -> NDArray[np.float64]: ...
+
+@final
+class FlightCore:
+    @property
+    def time(self) -> float: ...
+    @property
+    def east(self) -> float: ...
+    @property
+    def north(self) -> float: ...
+    @property
+    def range(self) -> float: ...
+    @property
+    def downrange(self) -> float: ...
+    @property
+    def drift(self) -> float: ...
+    @property
+    def t(self) -> NDArray[np.float64]: ...
+    @property
+    def position(self) -> NDArray[np.float64]: ...
+    @property
+    def velocity(self) -> NDArray[np.float64]: ...
+
+@final
+class FoucaultRunCore:
+    @property
+    def t(self) -> NDArray[np.float64]: ...
+    @property
+    def position(self) -> NDArray[np.float64]: ...
+    @property
+    def velocity(self) -> NDArray[np.float64]: ...
+    @property
+    def turn_times(self) -> NDArray[np.float64]: ...
+    @property
+    def turn_angles(self) -> NDArray[np.float64]: ...
+    @property
+    def precession_rate(self) -> float | None: ...
+    @property
+    def expected_rate(self) -> float: ...
+    @property
+    def sense(self) -> str: ...
+    @property
+    def regime(self) -> str: ...
+    @property
+    def regime_note(self) -> str: ...
+    @property
+    def theory_rate(self) -> float | None: ...
+    @property
+    def unit_rate_holds(self) -> bool: ...
+    @property
+    def unit_rate_note(self) -> str: ...
+    @property
+    def spin_ratio(self) -> float: ...
+    @property
+    def amplitude_ratio(self) -> float: ...
+    @property
+    def spin_departure(self) -> float | None: ...
+    @property
+    def amplitude_departure(self) -> float | None: ...
+
+@final
+class InertialRunCore:
+    @property
+    def t(self) -> NDArray[np.float64]: ...
+    @property
+    def position(self) -> NDArray[np.float64]: ...
+    @property
+    def velocity(self) -> NDArray[np.float64]: ...
+    @property
+    def turning_rate(self) -> float: ...
+    @property
+    def period(self) -> float: ...
+    @property
+    def sense(self) -> str: ...
+
+@final
+class LowFlowCore:
+    @property
+    def t(self) -> NDArray[np.float64]: ...
+    @property
+    def position(self) -> NDArray[np.float64]: ...
+    @property
+    def velocity(self) -> NDArray[np.float64]: ...
+    @property
+    def circulation(self) -> float: ...
+    @property
+    def sense(self) -> str: ...
+    @property
+    def energy(self) -> NDArray[np.float64]: ...
+    @property
+    def dissipated(self) -> NDArray[np.float64]: ...
+
 def sample_times(t0: float, t_end: float, samples: int) -> NDArray[np.float64]: ...
 def earth_defaults() -> dict[str, dict[str, Any]]: ...
 
@@ -625,30 +728,16 @@ def sweep_simulate(
 def sweep_drop(
     dims: Sequence[tuple[str, int, int]],
     columns: Sequence[tuple[str, NDArray[np.float64], int | None]],
-    rotation_rate: float,
-    radius: float,
-    g: float,
-    gravity: str,
-    rotation: bool,
-    centrifugal: bool,
-    rtol: float,
-    atol: float,
-    max_steps: int,
+    earth: EarthCore,
+    model: FallModel,
     check_only: bool,
     progress: Callable[[float], Any] | None = None,
 ) -> dict[str, NDArray[Any]] | None: ...
 def sweep_projectile(
     dims: Sequence[tuple[str, int, int]],
     columns: Sequence[tuple[str, NDArray[np.float64], int | None]],
-    rotation_rate: float,
-    radius: float,
-    g: float,
-    gravity: str,
-    rotation: bool,
-    centrifugal: bool,
-    rtol: float,
-    atol: float,
-    max_steps: int,
+    earth: EarthCore,
+    model: FallModel,
     check_only: bool,
     progress: Callable[[float], Any] | None = None,
 ) -> dict[str, NDArray[Any]] | None: ...

@@ -8,8 +8,9 @@ default, the unit's solar-day rate 2π/86400 with :meth:`Earth.solar_day` or
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import Any
+from collections.abc import Callable
+from dataclasses import dataclass, field, fields
+from typing import Any, TypeVar
 
 import numpy as np
 
@@ -24,7 +25,6 @@ from ._validate import (
     as_flat,
     as_float_array,
     as_scalar,
-    public_names,
     shaped,
 )
 from .errors import PoinsotError
@@ -316,6 +316,31 @@ class LowFlow:
     dissipated: FloatArray = field(default_factory=lambda: np.zeros((0, 0)), repr=False)
 
 
+_R = TypeVar("_R", Fall, Flight, FoucaultRun, InertialOscillation, LowFlow)
+#: The fields of each run's dataclass, in order: the attributes of the core's result.
+_FIELDS = {c: tuple(f.name for f in fields(c)) for c in _R.__constraints__}
+
+
+def _result(cls: type[_R], core: Any) -> _R:
+    """The public dataclass ``cls`` of a run holding the core's result ``core``, whose
+    attributes have the dataclass's field names."""
+    return cls(*[getattr(core, name) for name in _FIELDS[cls]])
+
+
+def _fall_model(
+    gravity: Any, rotation: Any, centrifugal: Any, rtol: Any, atol: Any, max_steps: Any
+) -> _core.FallModel:
+    """The core's model of a drop or a projectile (also one sweep's), from the keywords."""
+    return _core.FallModel(
+        as_choice(gravity, "gravity", _GRAVITY),
+        as_flag(rotation, "rotation"),
+        as_flag(centrifugal, "centrifugal"),
+        as_scalar(rtol, "rtol"),
+        as_scalar(atol, "atol"),
+        as_count(max_steps, "max_steps", 1),
+    )
+
+
 class Earth:
     """The rotating Earth: a sphere of ``radius`` turning at ``rotation_rate`` with gravity ``g``.
 
@@ -338,7 +363,7 @@ class Earth:
     0.01552
     """
 
-    __slots__ = ("_rate", "_radius", "_g")
+    __slots__ = ("_core",)
 
     def __init__(
         self,
@@ -353,10 +378,12 @@ class Earth:
                     f"rotation_rate: must be a number, 'sidereal' or 'solar', got {rotation_rate!r}"
                 )
             rotation_rate = names[rotation_rate]
-        self._rate = as_scalar(rotation_rate, "rotation_rate")
-        self._radius = as_scalar(radius, "radius")
-        self._g = as_scalar(g, "g")
-        _core.earth_omega_enu(self._rate, self._radius, self._g, np.zeros(1))  # checks the three
+        # The core's Earth, checked when made (the errors name the three); every method asks it.
+        self._core = _core.EarthCore(
+            as_scalar(rotation_rate, "rotation_rate"),
+            as_scalar(radius, "radius"),
+            as_scalar(g, "g"),
+        )
 
     @classmethod
     def solar_day(cls, radius: float = _MEAN_RADIUS, g: float = _STANDARD_GRAVITY) -> Earth:
@@ -366,56 +393,53 @@ class Earth:
     @property
     def rotation_rate(self) -> float:
         """ω (rad/s)."""
-        return self._rate
+        return self._core.rotation_rate
 
     @property
     def radius(self) -> float:
         """R (m)."""
-        return self._radius
+        return self._core.radius
 
     @property
     def g(self) -> float:
         """g (m/s²)."""
-        return self._g
+        return self._core.g
 
     def __repr__(self) -> str:
-        return f"Earth(rotation_rate={self._rate!r}, radius={self._radius!r}, g={self._g!r})"
-
-    @property
-    def _p(self) -> tuple[float, float, float]:
-        return self._rate, self._radius, self._g
+        c = self._core
+        return f"Earth(rotation_rate={c.rotation_rate!r}, radius={c.radius!r}, g={c.g!r})"
 
     # -- local quantities -----------------------------------------------------------------
     def omega_enu(self, latitude: Any, degrees: bool = False) -> FloatArray:
         """ω in ENU components, ω (0, cos λ, sin λ) (eq. 2.33), shape ``latitude.shape + (3,)``."""
         lat, shape = as_flat(latitude, "latitude", degrees)
-        return _core.earth_omega_enu(*self._p, lat).reshape(shape + (3,))
+        return self._core.omega_enu(lat).reshape(shape + (3,))
 
     def effective_gravity(self, latitude: Any, degrees: bool = False) -> FloatArray:
         """The effective gravity g_e = g − ω × (ω × r) at the surface (eq. 2.31) as an ENU
         vector (m/s²), shape ``latitude.shape + (3,)``; g = −g ẑ (radial), r = R ẑ. See also
         :meth:`effective_gravity_magnitude` and :meth:`plumb_line_deviation`."""
         lat, shape = as_flat(latitude, "latitude", degrees)
-        return _core.earth_effective_gravity(*self._p, lat)[0].reshape(shape + (3,))
+        return self._core.effective_gravity(lat)[0].reshape(shape + (3,))
 
     def effective_gravity_magnitude(self, latitude: Any, degrees: bool = False) -> Any:
         """|g_e| (m/s²): g − ω²R at the equator, g at the poles."""
         lat, shape = as_flat(latitude, "latitude", degrees)
-        return shaped(_core.earth_effective_gravity(*self._p, lat)[1], shape)
+        return shaped(self._core.effective_gravity(lat)[1], shape)
 
     def plumb_line_deviation(self, latitude: Any, degrees: bool = False) -> Any:
         """Angle between the plumb line (along g_e) and the radial direction (rad, or degrees
         with ``degrees=True``), positive when it leans south (north of the equator): the plumb
         line leans towards the equator, by at most about 0.1° near 45°."""
         lat, shape = as_flat(latitude, "latitude", degrees)
-        dev = _core.earth_effective_gravity(*self._p, lat)[2]
+        dev = self._core.effective_gravity(lat)[2]
         return shaped(np.degrees(dev) if as_flag(degrees, "degrees") else dev, shape)
 
     def centrifugal_acceleration(self, latitude: Any, degrees: bool = False) -> FloatArray:
         """−ω × (ω × r) at the surface (m/s², ENU), of magnitude ω²R cos λ (ω²R at the
         equator: the unit's 3.4e-2 m/s²)."""
         lat, shape = as_flat(latitude, "latitude", degrees)
-        return _core.earth_effective_gravity(*self._p, lat)[3].reshape(shape + (3,))
+        return self._core.effective_gravity(lat)[3].reshape(shape + (3,))
 
     def coriolis_acceleration(
         self, latitude: Any, velocity_enu: Any, degrees: bool = False
@@ -437,28 +461,26 @@ class Earth:
             np.radians(lat) if as_flag(degrees, "degrees") else lat, lead
         ).reshape(-1)
         vel = np.broadcast_to(vel, lead + (3,)).reshape(-1, 3)
-        out = _core.earth_coriolis_acceleration(
-            *self._p, np.ascontiguousarray(lat), np.ascontiguousarray(vel)
-        )
+        out = self._core.coriolis_acceleration(np.ascontiguousarray(lat), np.ascontiguousarray(vel))
         return out.reshape(lead + (3,))
 
     def coriolis_parameter(self, latitude: Any, degrees: bool = False) -> Any:
         """f = 2ω sin λ (1/s); at the poles the unit's 2ω = 1.458e-4 s⁻¹ (sidereal)."""
         lat, shape = as_flat(latitude, "latitude", degrees)
-        return shaped(_core.earth_latitude_scalar(*self._p, "coriolis_parameter", lat), shape)
+        return shaped(self._core.coriolis_parameter(lat), shape)
 
     def foucault_rate(self, latitude: Any, degrees: bool = False) -> Any:
         """The Foucault pendulum's precession rate −ω sin λ (rad/s, counterclockwise seen from
         above positive: clockwise in the north)."""
         lat, shape = as_flat(latitude, "latitude", degrees)
-        return shaped(_core.earth_latitude_scalar(*self._p, "foucault_rate", lat), shape)
+        return shaped(self._core.foucault_rate(lat), shape)
 
     def inertial_period(self, latitude: Any, degrees: bool = False) -> Any:
         """The period of inertial oscillations π/(ω |sin λ|) (s; inf where ω sin λ = 0, at the
         equator; refused naming ``latitude`` where it is finite but beyond the largest double,
         |λ| ≲ 1e-304 on the Earth)."""
         lat, shape = as_flat(latitude, "latitude", degrees)
-        return shaped(_core.earth_latitude_scalar(*self._p, "inertial_period", lat), shape)
+        return shaped(self._core.inertial_period(lat), shape)
 
     def jacobi_integral(
         self, latitude: float, position: Any, velocity: Any, degrees: bool = False
@@ -486,26 +508,32 @@ class Earth:
         r, v = (
             np.ascontiguousarray(np.broadcast_to(a, lead + (3,)).reshape(-1, 3)) for a in (pos, vel)
         )
-        out = _core.earth_jacobi_integral(*self._p, lat, r, v)
+        out = self._core.jacobi_integral(lat, r, v)
         return shaped(out, lead)
 
     def eastward_deflection(self, height: Any, latitude: Any, degrees: bool = False) -> Any:
         """The unit's first-order eastward deflection (eq. 2.42) of a body dropped from rest
         from ``height`` (m, ≥ 0): x = ⅓ ω cos λ √(8h³/g) (m). Broadcasts."""
-        return self._deflection("east", height, latitude, degrees)
+        return self._deflection(self._core.eastward_deflection, height, latitude, degrees)
 
     def fall_time(self, height: float) -> float:
         """The unit's time of fall from rest from ``height`` (m, ≥ 0) without rotation,
         t = √(2h/g) (s, eq. 2.41)."""
-        return _core.earth_fall_time(*self._p, as_scalar(height, "height"))
+        return self._core.fall_time(as_scalar(height, "height"))
 
     def southward_deflection(self, height: Any, latitude: Any, degrees: bool = False) -> Any:
         """The second-order equatorward deflection ¾ ω² sin 2λ h²/g (m, positive south) of a
         body dropped from ``height`` in uniform gravity (⅓ from Coriolis, 5/12 from the
         change of the centrifugal force with height). Broadcasts."""
-        return self._deflection("south", height, latitude, degrees)
+        return self._deflection(self._core.southward_deflection, height, latitude, degrees)
 
-    def _deflection(self, direction: str, height: Any, latitude: Any, degrees: bool) -> Any:
+    @staticmethod
+    def _deflection(
+        core: Callable[[FloatArray, FloatArray], FloatArray],
+        height: Any,
+        latitude: Any,
+        degrees: bool,
+    ) -> Any:
         h = as_float_array(height, "height")
         lat = as_float_array(latitude, "latitude")
         try:
@@ -517,7 +545,7 @@ class Earth:
         lat = np.radians(lat) if as_flag(degrees, "degrees") else lat
         hh = np.ascontiguousarray(np.broadcast_to(h, shape).reshape(-1))
         ll = np.ascontiguousarray(np.broadcast_to(lat, shape).reshape(-1))
-        return shaped(_core.earth_deflection(*self._p, direction, hh, ll), shape)
+        return shaped(core(hh, ll), shape)
 
     # -- motions --------------------------------------------------------------------------
     def drop(
@@ -552,30 +580,8 @@ class Earth:
         """
         h = as_scalar(height, "height")
         lat = as_angle(latitude, "latitude", degrees)
-        with public_names(t="height", y0="height"):
-            out = _core.earth_drop(
-                *self._p,
-                h,
-                lat,
-                as_choice(gravity, "gravity", _GRAVITY),
-                as_flag(rotation, "rotation"),
-                as_flag(centrifugal, "centrifugal"),
-                as_scalar(rtol, "rtol"),
-                as_scalar(atol, "atol"),
-                as_count(max_steps, "max_steps", 1),
-                as_count(samples, "samples", 2),
-            )
-        states = out["states"]
-        return Fall(
-            out["time"],
-            out["east"],
-            out["north"],
-            out["t"],
-            states[:, :3].copy(),
-            states[:, 3:].copy(),
-            self.eastward_deflection(h, lat),
-            self.southward_deflection(h, lat),
-        )
+        model = _fall_model(gravity, rotation, centrifugal, rtol, atol, max_steps)
+        return _result(Fall, self._core.drop(h, lat, model, as_count(samples, "samples", 2)))
 
     def projectile(
         self,
@@ -605,34 +611,15 @@ class Earth:
             ``time``, ``east``, ``north``, ``range``, ``downrange``, ``drift`` (to the right
             > 0: the north's deflection) and the trajectory.
         """
-        with public_names(t="speed", y0="speed"):
-            out = _core.earth_projectile(
-                *self._p,
-                as_scalar(speed, "speed"),
-                as_angle(elevation, "elevation", degrees),
-                as_angle(azimuth, "azimuth", degrees),
-                as_angle(latitude, "latitude", degrees),
-                as_scalar(height, "height"),
-                as_choice(gravity, "gravity", _GRAVITY),
-                as_flag(rotation, "rotation"),
-                as_flag(centrifugal, "centrifugal"),
-                as_scalar(rtol, "rtol"),
-                as_scalar(atol, "atol"),
-                as_count(max_steps, "max_steps", 1),
-                as_count(samples, "samples", 2),
-            )
-        states = out["states"]
-        return Flight(
-            out["time"],
-            out["east"],
-            out["north"],
-            out["range"],
-            out["downrange"],
-            out["drift"],
-            out["t"],
-            states[:, :3].copy(),
-            states[:, 3:].copy(),
+        args = (
+            as_scalar(speed, "speed"),
+            as_angle(elevation, "elevation", degrees),
+            as_angle(azimuth, "azimuth", degrees),
+            as_angle(latitude, "latitude", degrees),
+            as_scalar(height, "height"),
         )
+        model = _fall_model(gravity, rotation, centrifugal, rtol, atol, max_steps)
+        return _result(Flight, self._core.projectile(*args, model, as_count(samples, "samples", 2)))
 
     def foucault(
         self,
@@ -693,33 +680,11 @@ class Earth:
                 bar.update(task, completed=fraction)
 
         try:
-            with public_names(t="duration", y0="amplitude", state0="amplitude"):
-                out = _core.earth_foucault_swing(
-                    *self._p, lat, length, amp, az, dur, n, *tols, steps, report
-                )
+            r = self._core.foucault_swing(lat, length, amp, az, dur, n, *tols, steps, report)
         finally:
             if bar is not None:
                 bar.stop()
-        states = out["states"]
-        return FoucaultRun(
-            out["t"],
-            states[:, :3].copy(),
-            states[:, 3:].copy(),
-            out["turn_times"],
-            out["turn_angles"],
-            out["precession_rate"],
-            out["expected_rate"],
-            out["sense"],
-            out["regime"],
-            out["note"],
-            out["theory_rate"],
-            out["unit_rate_holds"],
-            out["unit_rate_note"],
-            out["spin_ratio"],
-            out["amplitude_ratio"],
-            out["spin_departure"],
-            out["amplitude_departure"],
-        )
+        return _result(FoucaultRun, r)
 
     def inertial_oscillation(
         self,
@@ -749,26 +714,16 @@ class Earth:
         if v.shape != (2,):
             raise PoinsotError(f"velocity: must have shape (2,) [v_east, v_north], got {v.shape}")
         dur = None if duration is None else as_scalar(duration, "duration")
-        with public_names(t="duration", y0="velocity"):
-            out = _core.earth_inertial_swing(
-                *self._p,
-                lat,
-                np.ascontiguousarray(v),
-                dur,
-                as_count(samples, "samples", 2),
-                as_scalar(rtol, "rtol"),
-                as_scalar(atol, "atol"),
-                as_count(max_steps, "max_steps", 1),
-            )
-        s = out["states"]
-        return InertialOscillation(
-            out["t"],
-            s[:, :2].copy(),
-            s[:, 2:].copy(),
-            out["turning_rate"],
-            out["period"],
-            out["sense"],
+        r = self._core.inertial_swing(
+            lat,
+            np.ascontiguousarray(v),
+            dur,
+            as_count(samples, "samples", 2),
+            as_scalar(rtol, "rtol"),
+            as_scalar(atol, "atol"),
+            as_count(max_steps, "max_steps", 1),
         )
+        return _result(InertialOscillation, r)
 
     def flow_into_low(
         self,
@@ -799,27 +754,16 @@ class Earth:
         """
         lat = as_angle(latitude, "latitude", degrees)
         # The ring, the pull → strength set-up, the sample grid and the sense are the core's.
-        with public_names(t="duration", y0="pull"):
-            out = _core.earth_low_flow(
-                *self._p,
-                lat,
-                as_scalar(radius, "radius"),
-                as_count(parcels, "parcels", 1),
-                as_scalar(pull, "pull"),
-                as_scalar(friction, "friction"),
-                as_scalar(duration, "duration"),
-                as_count(samples, "samples", 2),
-                as_scalar(rtol, "rtol"),
-                as_scalar(atol, "atol"),
-                as_count(max_steps, "max_steps", 1),
-            )
-        tracks = np.stack(out["parcels"])
-        return LowFlow(
-            out["t"],
-            tracks[:, :, :2].copy(),
-            tracks[:, :, 2:].copy(),
-            out["circulation"],
-            out["sense"],
-            np.stack(out["energy"]),
-            np.stack(out["dissipated"]),
+        r = self._core.low_flow(
+            lat,
+            as_scalar(radius, "radius"),
+            as_count(parcels, "parcels", 1),
+            as_scalar(pull, "pull"),
+            as_scalar(friction, "friction"),
+            as_scalar(duration, "duration"),
+            as_count(samples, "samples", 2),
+            as_scalar(rtol, "rtol"),
+            as_scalar(atol, "atol"),
+            as_count(max_steps, "max_steps", 1),
         )
+        return _result(LowFlow, r)

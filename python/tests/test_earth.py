@@ -241,3 +241,56 @@ def test_fall_time_is_the_units_2_41() -> None:
     )
     with pytest.raises(ps.PoinsotError, match="^height:"):
         earth.fall_time(-1.0)
+
+
+class _Counting:
+    """A stand-in for an Earth's core object that records which of its methods are called."""
+
+    def __init__(self, inner: object) -> None:
+        self.inner, self.calls = inner, []
+
+    def __getattr__(self, name: str) -> object:
+        self.calls.append(name)
+        return getattr(self.inner, name)
+
+
+def test_drop_is_one_call_into_the_core_with_its_closed_forms() -> None:
+    """Issue 22: ``Earth.drop`` asks the core once (it made three calls, the drop and the two
+    closed forms), and the closed forms it brings are the core's 2.42 and second order."""
+    e = ps.Earth()
+    e._core = _Counting(e._core)  # type: ignore[assignment]
+    fall = e.drop(100.0, 0.7, samples=5)
+    assert e._core.calls == ["drop"]  # type: ignore[attr-defined]
+    assert fall.first_order_east == ps.Earth().eastward_deflection(100.0, 0.7)
+    assert fall.second_order_south == ps.Earth().southward_deflection(100.0, 0.7)
+    assert fall.position.shape == fall.velocity.shape == (5, 3)
+    assert fall.t[-1] == fall.time and np.array_equal(
+        fall.position[-1, :2], [fall.east, fall.north]
+    )
+
+
+def test_the_earth_is_the_cores_object_and_pickles_through_it() -> None:
+    """``poinsot.Earth`` holds the core's checked Earth (no re-validation by a discarded call);
+    the core's object and the fall model pickle by their arguments (a sweep sends them to
+    workers)."""
+    import pickle
+
+    from poinsot import _core
+
+    e = ps.Earth.solar_day(radius=6.0e6)
+    assert isinstance(e._core, _core.EarthCore)
+    c = pickle.loads(pickle.dumps(e._core))
+    assert (c.rotation_rate, c.radius, c.g) == (ps.SOLAR_DAY_RATE, 6.0e6, 9.80665)
+    m = _core.FallModel("inverse-square", True, False, 1e-10, 1e-11, 1000)
+    m2 = pickle.loads(pickle.dumps(m))
+    got = (m2.gravity, m2.rotation, m2.centrifugal, m2.rtol, m2.atol, m2.max_steps)
+    assert got == ("inverse-square", True, False, 1e-10, 1e-11, 1000)
+    with pytest.raises(ps.PoinsotError, match="^radius"):
+        _core.EarthCore(1e-5, -1.0, 9.8)
+
+
+def test_a_fall_time_beyond_doubles_is_refused_naming_the_height() -> None:
+    """The core returns finite numbers or refuses: √(2h/g) for h = 1e300 m and g = 1e-300 m/s²
+    overflows (it was returned as inf)."""
+    with pytest.raises(ps.PoinsotError, match="^height"):
+        ps.Earth(g=1e-300).fall_time(1e300)

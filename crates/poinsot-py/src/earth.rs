@@ -1,314 +1,158 @@
-//! Bindings of `poinsot::earth` (conversion and error mapping only). Every function takes
-//! the Earth as (rotation_rate, radius, g) and checks it in the core. The physical constants and
-//! the runs' defaults are the core's ([`register`] adds them to the module).
-use numpy::{PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
-use poinsot::earth::{self as ea, fit_precession_rate, Earth, FallModel, Gravity, LowSetup};
+//! Bindings of `poinsot::earth` (conversion only): the core's types as Python classes, as in
+//! the WebAssembly binding. `EarthCore` holds a checked `poinsot::earth::Earth` (the public
+//! `poinsot.Earth`, python/poinsot/earth.py, holds one), `FallModel` the core's fall model; the
+//! runs return `FallCore`, `FlightCore`, `FoucaultRunCore`, `InertialRunCore` and `LowFlowCore`,
+//! whose attributes are the core's results (numpy arrays for the samples). The core checks every
+//! argument and names it as the caller knows it, so no error is renamed here. The physical
+//! constants and the runs' defaults are the core's ([`register`] adds them to the module).
+use numpy::ndarray::{Array2, Array3};
+use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3, PyReadonlyArray1, PyReadonlyArray2};
+use poinsot::earth::{self as ea, Earth, FallModel, Gravity, LowSetup};
+use poinsot::frames::ParticleState;
 use poinsot::integrate::{sample_times, Tolerances};
+use poinsot::limits::check_count;
 use poinsot::Vec3;
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
+use pyo3::types::{PyDict, PyType};
 
 use crate::control::{map_each, run};
-use crate::convert::rows_view;
+use crate::convert::{array_in, options, parse, rows_in, rows_view, vec_in, Rows, Values};
 use crate::errors::{invalid, IntoPy};
-use crate::frames::{array_in, options, rows_in, rows_out, solution_dict, vec_in};
-use poinsot::limits::check_count;
 
 /// Bytes per sample of a trajectory in the local frame: t and the state (6).
 const SAMPLE_BYTES: usize = poinsot::frames::PARTICLE_BYTES_PER_SAMPLE;
 
-/// The core's Earth, checked (also for the sweeps).
-pub(crate) fn earth(rotation_rate: f64, radius: f64, g: f64) -> PyResult<Earth> {
-    Earth::new(rotation_rate, radius, g).py()
+/// The rotating Earth (private; use `poinsot.Earth`): the core's `Earth`, checked when made.
+#[pyclass(module = "poinsot._core", name = "EarthCore", frozen)]
+pub struct PyEarth {
+    pub(crate) inner: Earth,
 }
 
-fn gravity(name: &str) -> PyResult<Gravity> {
-    crate::convert::parse(name)
+/// The model of a near-surface motion (the core's `FallModel`): gravity "uniform" or
+/// "inverse-square", the rotation's terms, and the integrator's tolerances.
+#[pyclass(module = "poinsot._core", name = "FallModel", frozen)]
+pub struct PyFallModel {
+    pub(crate) inner: FallModel,
 }
 
-/// A per-latitude scalar quantity over an array of latitudes.
-fn per_latitude<'py>(
-    py: Python<'py>,
-    latitude: &PyReadonlyArray1<'py, f64>,
-    f: impl Fn(f64) -> poinsot::Result<f64> + Send,
-) -> PyResult<Bound<'py, PyArray1<f64>>> {
-    let out = map_each(py, &vec_in(latitude), move |&l| f(l))?;
-    Ok(PyArray1::from_vec(py, out))
+/// A body dropped from rest (the core's `Fall`), sampled: landing time (s), point (m, ENU), the
+/// closed forms 2.42 and second order (m), and the samples t (N,), position and velocity (N, 3).
+#[pyclass(module = "poinsot._core", name = "FallCore", frozen, get_all)]
+pub struct PyFall {
+    time: f64,
+    east: f64,
+    north: f64,
+    first_order_east: f64,
+    second_order_south: f64,
+    t: Py<PyArray1<f64>>,
+    position: Py<PyArray2<f64>>,
+    velocity: Py<PyArray2<f64>>,
 }
 
-/// ω in ENU components, (N, 3), at (N,) latitudes (rad).
-#[pyfunction]
-fn earth_omega_enu<'py>(
-    py: Python<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    latitude: PyReadonlyArray1<'py, f64>,
-) -> PyResult<Bound<'py, PyArray2<f64>>> {
-    let e = earth(rotation_rate, radius, g)?;
-    let rows = map_each(py, &vec_in(&latitude), |&l| {
-        e.omega_enu(l).map(|w| [w.x, w.y, w.z])
-    })?;
-    Ok(rows_out(py, &rows))
+/// A projectile's flight (the core's `Flight`), sampled as [`PyFall`].
+#[pyclass(module = "poinsot._core", name = "FlightCore", frozen, get_all)]
+pub struct PyFlight {
+    time: f64,
+    east: f64,
+    north: f64,
+    range: f64,
+    downrange: f64,
+    drift: f64,
+    t: Py<PyArray1<f64>>,
+    position: Py<PyArray2<f64>>,
+    velocity: Py<PyArray2<f64>>,
 }
 
-/// (vector (N, 3), magnitude (N,), deviation (N,), centrifugal (N, 3)) at (N,) latitudes.
-#[pyfunction]
-#[allow(clippy::type_complexity)]
-fn earth_effective_gravity<'py>(
-    py: Python<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    latitude: PyReadonlyArray1<'py, f64>,
-) -> PyResult<(
-    Bound<'py, PyArray2<f64>>,
-    Bound<'py, PyArray1<f64>>,
-    Bound<'py, PyArray1<f64>>,
-    Bound<'py, PyArray2<f64>>,
-)> {
-    let e = earth(rotation_rate, radius, g)?;
-    let each = map_each(py, &vec_in(&latitude), |&l| {
-        Ok((e.effective_gravity(l)?, e.centrifugal_acceleration(l)?))
-    })?;
-    let n = each.len();
-    let (mut vecs, mut mags, mut devs, mut cents) = (
-        Vec::with_capacity(n),
-        Vec::with_capacity(n),
-        Vec::with_capacity(n),
-        Vec::with_capacity(n),
-    );
-    for (eg, c) in each {
-        vecs.push([eg.vector.x, eg.vector.y, eg.vector.z]);
-        mags.push(eg.magnitude);
-        devs.push(eg.deviation);
-        cents.push([c.x, c.y, c.z]);
-    }
+/// A Foucault run (the core's `FoucaultSwing`): samples, turning points, the measurement of the
+/// swing plane and whether the unit's −ω sin λ describes it (`FoucaultSwing::unit_rate`).
+#[pyclass(module = "poinsot._core", name = "FoucaultRunCore", frozen, get_all)]
+pub struct PyFoucaultRun {
+    t: Py<PyArray1<f64>>,
+    position: Py<PyArray2<f64>>,
+    velocity: Py<PyArray2<f64>>,
+    turn_times: Py<PyArray1<f64>>,
+    turn_angles: Py<PyArray1<f64>>,
+    precession_rate: Option<f64>,
+    expected_rate: f64,
+    sense: &'static str,
+    regime: &'static str,
+    regime_note: String,
+    theory_rate: Option<f64>,
+    unit_rate_holds: bool,
+    unit_rate_note: String,
+    spin_ratio: f64,
+    amplitude_ratio: f64,
+    spin_departure: Option<f64>,
+    amplitude_departure: Option<f64>,
+}
+
+/// An inertial oscillation (the core's `InertialSwing`): t (N,), position and velocity (N, 2),
+/// the measured turning rate (rad/s), the period (s) and the sense.
+#[pyclass(module = "poinsot._core", name = "InertialRunCore", frozen, get_all)]
+pub struct PyInertialRun {
+    t: Py<PyArray1<f64>>,
+    position: Py<PyArray2<f64>>,
+    velocity: Py<PyArray2<f64>>,
+    turning_rate: f64,
+    period: f64,
+    sense: &'static str,
+}
+
+/// The flow into a low (the core's `LowFlow`): t (N,), position and velocity (P, N, 2), the
+/// circulation (m²/s) and its sense, energy and dissipated work (P, N) (J/kg).
+#[pyclass(module = "poinsot._core", name = "LowFlowCore", frozen, get_all)]
+pub struct PyLowFlow {
+    t: Py<PyArray1<f64>>,
+    position: Py<PyArray3<f64>>,
+    velocity: Py<PyArray3<f64>>,
+    circulation: f64,
+    sense: &'static str,
+    energy: Py<PyArray2<f64>>,
+    dissipated: Py<PyArray2<f64>>,
+}
+
+/// A new (N,) array, held by a result.
+fn values(py: Python<'_>, v: Vec<f64>) -> Py<PyArray1<f64>> {
+    PyArray1::from_vec(py, v).unbind()
+}
+
+/// The `K` columns from `from` of each state as a new (N, K) array, held by a result.
+fn columns<const S: usize, const K: usize>(
+    py: Python<'_>,
+    states: &[[f64; S]],
+    from: usize,
+) -> PyResult<Py<PyArray2<f64>>> {
+    let rows: Vec<[f64; K]> = states
+        .iter()
+        .map(|s| std::array::from_fn(|k| s[from + k]))
+        .collect();
+    Ok(Rows(rows).into_pyobject(py)?.unbind())
+}
+
+/// Sampled states `[x, y, z, vx, vy, vz]` as (position, velocity), each (N, 3).
+type Split = (Py<PyArray2<f64>>, Py<PyArray2<f64>>);
+
+fn split(py: Python<'_>, states: &[ParticleState]) -> PyResult<Split> {
     Ok((
-        rows_out(py, &vecs),
-        PyArray1::from_vec(py, mags),
-        PyArray1::from_vec(py, devs),
-        rows_out(py, &cents),
+        columns::<6, 3>(py, states, 0)?,
+        columns::<6, 3>(py, states, 3)?,
     ))
 }
 
-/// −2 ω × v (N, 3) for (N,) latitudes and (N, 3) ENU velocities.
-#[pyfunction]
-fn earth_coriolis_acceleration<'py>(
-    py: Python<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    latitude: PyReadonlyArray1<'py, f64>,
-    velocity: PyReadonlyArray2<'py, f64>,
-) -> PyResult<Bound<'py, PyArray2<f64>>> {
-    let e = earth(rotation_rate, radius, g)?;
-    let lats = vec_in(&latitude);
-    let vels = rows_in::<3>("velocity_enu", &velocity)?;
-    if lats.len() != vels.len() {
-        return Err(invalid("velocity_enu", "must have one row per latitude"));
-    }
-    let pairs: Vec<(f64, [f64; 3])> = lats.into_iter().zip(vels).collect();
-    let rows = map_each(py, &pairs, |(l, v)| {
-        let a = e
-            .coriolis_acceleration(*l, &Vec3::new(v[0], v[1], v[2]))
-            .map_err(|mut err| {
-                if err.argument == "velocity" {
-                    err.argument = "velocity_enu".into();
-                }
-                err
-            })?;
-        Ok([a.x, a.y, a.z])
-    })?;
-    Ok(rows_out(py, &rows))
+/// Rows of equal length (P rows of N) as a new (P, N) array.
+fn table(py: Python<'_>, rows: Vec<Vec<f64>>) -> Py<PyArray2<f64>> {
+    let n = rows.first().map_or(0, Vec::len);
+    Array2::from_shape_fn((rows.len(), n), |(p, i)| rows[p][i])
+        .into_pyarray(py)
+        .unbind()
 }
 
-/// A scalar per latitude: "coriolis_parameter", "foucault_rate" or "inertial_period".
-#[pyfunction]
-fn earth_latitude_scalar<'py>(
-    py: Python<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    quantity: &str,
-    latitude: PyReadonlyArray1<'py, f64>,
-) -> PyResult<Bound<'py, PyArray1<f64>>> {
-    let e = earth(rotation_rate, radius, g)?;
-    match quantity {
-        "coriolis_parameter" => per_latitude(py, &latitude, |l| e.coriolis_parameter(l)),
-        "foucault_rate" => per_latitude(py, &latitude, |l| e.foucault_rate(l)),
-        "inertial_period" => per_latitude(py, &latitude, |l| e.inertial_period(l)),
-        _ => Err(invalid(
-            "quantity",
-            format!("unknown quantity {quantity:?}"),
-        )),
-    }
-}
-
-/// The time of fall (s) from `height` (m) without rotation, √(2h/g) (2.41).
-#[pyfunction]
-fn earth_fall_time(rotation_rate: f64, radius: f64, g: f64, height: f64) -> PyResult<f64> {
-    earth(rotation_rate, radius, g)?.fall_time(height).py()
-}
-
-/// First-order east (2.42) or second-order south deflection (m) for (N,) heights and latitudes.
-#[pyfunction]
-fn earth_deflection<'py>(
-    py: Python<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    direction: &str,
-    height: PyReadonlyArray1<'py, f64>,
-    latitude: PyReadonlyArray1<'py, f64>,
-) -> PyResult<Bound<'py, PyArray1<f64>>> {
-    let e = earth(rotation_rate, radius, g)?;
-    let (hs, ls) = (vec_in(&height), vec_in(&latitude));
-    if hs.len() != ls.len() {
-        return Err(invalid("height", "must have one value per latitude"));
-    }
-    let east = direction == "east";
-    let pairs: Vec<(f64, f64)> = hs.into_iter().zip(ls).collect();
-    let out = map_each(py, &pairs, |&(h, l)| {
-        if east {
-            e.eastward_deflection(h, l)
-        } else {
-            e.southward_deflection(h, l)
-        }
-    })?;
-    Ok(PyArray1::from_vec(py, out))
-}
-
-/// The fall model of a drop or a projectile from the Python keywords (also for the sweeps).
-pub(crate) fn model(
-    gravity_name: &str,
-    rotation: bool,
-    centrifugal: bool,
-    rtol: f64,
-    atol: f64,
-    max_steps: usize,
-) -> PyResult<FallModel> {
-    Ok(FallModel {
-        gravity: gravity(gravity_name)?,
-        rotation,
-        centrifugal,
-        options: options(rtol, atol, max_steps, true),
-    })
-}
-
-/// The exact drop: {"time", "east", "north", "t", "states", ...}.
-#[pyfunction]
-#[pyo3(signature = (rotation_rate, radius, g, height, latitude, gravity, rotation, centrifugal, rtol, atol, max_steps, samples))]
-#[allow(clippy::too_many_arguments)]
-fn earth_drop<'py>(
-    py: Python<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    height: f64,
-    latitude: f64,
-    gravity: &str,
-    rotation: bool,
-    centrifugal: bool,
-    rtol: f64,
-    atol: f64,
-    max_steps: usize,
-    samples: usize,
-) -> PyResult<Bound<'py, PyDict>> {
-    let e = earth(rotation_rate, radius, g)?;
-    let m = model(gravity, rotation, centrifugal, rtol, atol, max_steps)?;
-    check_count("samples", samples, 2, SAMPLE_BYTES).py()?;
-    let fall = run(py, None, || e.drop(height, latitude, &m))?;
-    let d = solution_dict(
-        py,
-        &fall.solution,
-        &sample_times(0.0, fall.time, samples, SAMPLE_BYTES).py()?,
-    )?;
-    d.set_item("time", fall.time)?;
-    d.set_item("east", fall.east)?;
-    d.set_item("north", fall.north)?;
-    Ok(d)
-}
-
-/// A projectile's flight: {"time", "east", "north", "range", "downrange", "drift", "t", "states", ...}.
-#[pyfunction]
-#[pyo3(signature = (rotation_rate, radius, g, speed, elevation, azimuth, latitude, height, gravity, rotation, centrifugal, rtol, atol, max_steps, samples))]
-#[allow(clippy::too_many_arguments)]
-fn earth_projectile<'py>(
-    py: Python<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    speed: f64,
-    elevation: f64,
-    azimuth: f64,
-    latitude: f64,
-    height: f64,
-    gravity: &str,
-    rotation: bool,
-    centrifugal: bool,
-    rtol: f64,
-    atol: f64,
-    max_steps: usize,
-    samples: usize,
-) -> PyResult<Bound<'py, PyDict>> {
-    let e = earth(rotation_rate, radius, g)?;
-    let m = model(gravity, rotation, centrifugal, rtol, atol, max_steps)?;
-    check_count("samples", samples, 2, SAMPLE_BYTES).py()?;
-    let fl = run(py, None, || {
-        e.projectile(speed, elevation, azimuth, latitude, height, &m)
-    })?;
-    let d = solution_dict(
-        py,
-        &fl.solution,
-        &sample_times(0.0, fl.time, samples, SAMPLE_BYTES).py()?,
-    )?;
-    for (k, v) in [
-        ("time", fl.time),
-        ("east", fl.east),
-        ("north", fl.north),
-        ("range", fl.range),
-        ("downrange", fl.downrange),
-        ("drift", fl.drift),
-    ] {
-        d.set_item(k, v)?;
-    }
-    Ok(d)
-}
-
-/// Jacobi's integral (N,) of (N, 3) ENU positions (m) and velocities (m/s) at `latitude` (rad).
-#[pyfunction]
-fn earth_jacobi_integral<'py>(
-    py: Python<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    latitude: f64,
-    position: PyReadonlyArray2<'py, f64>,
-    velocity: PyReadonlyArray2<'py, f64>,
-) -> PyResult<Bound<'py, PyArray1<f64>>> {
-    let e = earth(rotation_rate, radius, g)?;
-    let r = rows_view::<3>("position", &position)?;
-    let v = rows_view::<3>("velocity", &velocity)?;
-    if r.len() != v.len() {
-        return Err(invalid("velocity", "must have one row per position"));
-    }
-    let out = run(py, None, || {
-        poinsot::control::try_map_n(r.len(), |i| {
-            let (p, w) = (r[i], v[i]);
-            e.jacobi_integral(latitude, &[p[0], p[1], p[2], w[0], w[1], w[2]])
-        })
-    })?;
-    Ok(PyArray1::from_vec(py, out))
-}
-
-/// Least-squares rate (rad/s) of the swing-plane angle through the turning points.
-#[pyfunction]
-fn earth_fit_precession_rate(
-    turn_times: PyReadonlyArray1<'_, f64>,
-    turn_angles: PyReadonlyArray1<'_, f64>,
-) -> PyResult<f64> {
-    fit_precession_rate(&vec_in(&turn_times), &vec_in(&turn_angles)).py()
+/// The `k`-th and `k + 1`-th components of every parcel's states, (P, N, 2).
+fn tracks(py: Python<'_>, parcels: &[Vec<[f64; 4]>], k: usize) -> Py<PyArray3<f64>> {
+    let n = parcels.first().map_or(0, Vec::len);
+    Array3::from_shape_fn((parcels.len(), n, 2), |(p, i, c)| parcels[p][i][k + c])
+        .into_pyarray(py)
+        .unbind()
 }
 
 /// The tolerances of a run from the Python keywords.
@@ -320,163 +164,456 @@ fn tolerances(rtol: f64, atol: f64, max_steps: usize) -> Tolerances {
     }
 }
 
-/// A Foucault run as the core makes it (`Earth::foucault_swing`, in stretches reporting to
-/// `progress(fraction)` when given: `Earth::foucault_swing_in`): {"t", "states", "turn_times",
-/// "turn_angles", "state0", "evaluations", and the measurement's "regime", "note",
-/// "precession_rate", "sense", "theory_rate", "expected_rate", "theory_fit_rate",
-/// "turning_points"; and whether the unit's −ω sin λ describes it (`FoucaultSwing::unit_rate`):
-/// "unit_rate_holds", "unit_rate_note", "spin_ratio", "amplitude_ratio", "spin_departure",
-/// "amplitude_departure"}.
-#[pyfunction]
-#[pyo3(signature = (rotation_rate, radius, g, latitude, length, amplitude, azimuth, duration, samples, rtol, atol, max_steps, progress=None))]
-#[allow(clippy::too_many_arguments)]
-fn earth_foucault_swing<'py>(
-    py: Python<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    latitude: f64,
-    length: f64,
-    amplitude: f64,
-    azimuth: f64,
-    duration: f64,
-    samples: usize,
-    rtol: f64,
-    atol: f64,
-    max_steps: usize,
-    progress: Option<Bound<'py, PyAny>>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let e = earth(rotation_rate, radius, g)?;
-    let tol = tolerances(rtol, atol, max_steps);
-    // With a `progress(fraction)` callable: the core's run in stretches, reporting after each.
-    let stretches = match progress {
-        Some(_) => ea::foucault_stretches(duration),
-        None => 1,
-    };
-    let swing = run(py, progress.as_ref(), || {
-        e.foucault_swing_in(
-            latitude, length, amplitude, azimuth, duration, samples, &tol, stretches,
-        )
-    })?;
-    let check = swing.unit_rate().py()?;
-    let (r, m) = (swing.run, swing.measurement);
-    let d = PyDict::new(py);
-    d.set_item("t", PyArray1::from_vec(py, r.t))?;
-    d.set_item("states", rows_out(py, &r.states))?;
-    d.set_item("turn_times", PyArray1::from_vec(py, r.turn_times))?;
-    d.set_item("turn_angles", PyArray1::from_vec(py, r.turn_angles))?;
-    d.set_item("state0", PyArray1::from_vec(py, swing.state0.to_vec()))?;
-    d.set_item("evaluations", r.stats.evaluations)?;
-    d.set_item("regime", m.regime.name())?;
-    d.set_item("note", &m.note)?;
-    d.set_item("precession_rate", m.precession_rate)?;
-    d.set_item("sense", m.sense_name())?;
-    d.set_item("theory_rate", m.theory_rate)?;
-    d.set_item("expected_rate", m.expected_rate)?;
-    d.set_item("theory_fit_rate", m.theory_fit_rate)?;
-    d.set_item("turning_points", m.turning_points)?;
-    d.set_item("unit_rate_holds", check.holds)?;
-    d.set_item("unit_rate_note", &check.note)?;
-    d.set_item("spin_ratio", check.spin_ratio)?;
-    d.set_item("amplitude_ratio", check.amplitude_ratio)?;
-    d.set_item("spin_departure", check.spin_departure)?;
-    d.set_item("amplitude_departure", check.amplitude_departure)?;
-    Ok(d)
+/// `samples` even times over a trajectory of `duration` (s), checked (naming `samples`).
+fn grid(duration: f64, samples: usize) -> poinsot::Result<Vec<f64>> {
+    check_count("samples", samples, 2, SAMPLE_BYTES)?;
+    sample_times(0.0, duration, samples, SAMPLE_BYTES)
 }
 
-/// An inertial oscillation as the core makes it (`Earth::inertial_swing`; `duration` None: the
-/// core's default): {"t", "states" (N, 4), "turning_rate", "period", "sense"}.
-#[pyfunction]
-#[pyo3(signature = (rotation_rate, radius, g, latitude, velocity, duration, samples, rtol, atol, max_steps))]
-#[allow(clippy::too_many_arguments)]
-fn earth_inertial_swing<'py>(
-    py: Python<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    latitude: f64,
-    velocity: PyReadonlyArray1<'py, f64>,
-    duration: Option<f64>,
-    samples: usize,
-    rtol: f64,
-    atol: f64,
-    max_steps: usize,
-) -> PyResult<Bound<'py, PyDict>> {
-    let e = earth(rotation_rate, radius, g)?;
-    let v = array_in::<2>("velocity", &velocity)?;
-    let tol = tolerances(rtol, atol, max_steps);
-    let swing = run(py, None, || {
-        e.inertial_swing(latitude, v, duration, samples, &tol)
-    })?;
-    let d = PyDict::new(py);
-    d.set_item("t", PyArray1::from_vec(py, swing.run.t))?;
-    d.set_item("states", rows_out(py, &swing.run.states))?;
-    d.set_item("turning_rate", swing.run.turning_rate)?;
-    d.set_item("period", swing.period)?;
-    d.set_item("sense", swing.sense.name())?;
-    Ok(d)
+/// A per-latitude quantity over an array of latitudes (rad).
+fn per_latitude<R: Send>(
+    py: Python<'_>,
+    latitude: &PyReadonlyArray1<'_, f64>,
+    f: impl Fn(f64) -> poinsot::Result<R> + Send,
+) -> PyResult<Vec<R>> {
+    map_each(py, &vec_in(latitude), move |&l| f(l))
 }
 
-/// Parcels on a ring flowing into a low as the core sets them up (`Earth::low_flow`):
-/// {"t", "parcels" (P arrays (N, 4)), "circulation", "sense", "energy", "dissipated"}.
-/// `ring_radius` is the ring's radius (the Python argument `radius`).
-#[pyfunction]
-#[pyo3(signature = (rotation_rate, radius, g, latitude, ring_radius, parcels, pull, friction, duration, samples, rtol, atol, max_steps))]
-#[allow(clippy::too_many_arguments)]
-fn earth_low_flow<'py>(
+/// Pairs of (N,) heights (m) and latitudes (rad).
+fn per_height<'py>(
     py: Python<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    latitude: f64,
-    ring_radius: f64,
-    parcels: usize,
-    pull: f64,
-    friction: f64,
-    duration: f64,
-    samples: usize,
-    rtol: f64,
-    atol: f64,
-    max_steps: usize,
-) -> PyResult<Bound<'py, PyDict>> {
-    let e = earth(rotation_rate, radius, g)?;
-    let setup = LowSetup {
-        radius: ring_radius,
-        parcels,
-        pull,
-        friction,
-    };
-    let tol = tolerances(rtol, atol, max_steps);
-    let flow = run(py, None, || {
-        e.low_flow(latitude, &setup, duration, samples, &tol)
-    })?;
-    let d = PyDict::new(py);
-    d.set_item("t", PyArray1::from_vec(py, flow.run.t))?;
-    let parcels: Vec<Bound<'py, PyArray2<f64>>> =
-        flow.run.parcels.iter().map(|p| rows_out(py, p)).collect();
-    d.set_item("parcels", parcels)?;
-    d.set_item("circulation", flow.run.circulation)?;
-    d.set_item("sense", flow.sense.name())?;
-    let rows = |v: Vec<Vec<f64>>| -> Vec<Bound<'py, PyArray1<f64>>> {
-        v.into_iter().map(|r| PyArray1::from_vec(py, r)).collect()
-    };
-    d.set_item("energy", rows(flow.run.energy))?;
-    d.set_item("dissipated", rows(flow.run.dissipated))?;
-    Ok(d)
+    height: &PyReadonlyArray1<'py, f64>,
+    latitude: &PyReadonlyArray1<'py, f64>,
+    f: impl Fn(f64, f64) -> poinsot::Result<f64> + Send,
+) -> PyResult<Values> {
+    let (hs, ls) = (vec_in(height), vec_in(latitude));
+    if hs.len() != ls.len() {
+        return Err(invalid("height", "must have one value per latitude"));
+    }
+    let pairs: Vec<(f64, f64)> = hs.into_iter().zip(ls).collect();
+    Ok(Values(map_each(py, &pairs, move |&(h, l)| f(h, l))?))
+}
+
+#[pymethods]
+impl PyFallModel {
+    #[new]
+    fn new(
+        gravity: &str,
+        rotation: bool,
+        centrifugal: bool,
+        rtol: f64,
+        atol: f64,
+        max_steps: usize,
+    ) -> PyResult<Self> {
+        Ok(Self {
+            inner: FallModel {
+                gravity: parse(gravity)?,
+                rotation,
+                centrifugal,
+                options: options(rtol, atol, max_steps, true),
+            },
+        })
+    }
+
+    /// The model made again from its arguments (pickling, for the workers of a sweep).
+    #[allow(clippy::type_complexity)]
+    fn __reduce__<'py>(
+        slf: &Bound<'py, Self>,
+    ) -> (
+        Bound<'py, PyType>,
+        (&'static str, bool, bool, f64, f64, usize),
+    ) {
+        let m = slf.get();
+        let args = (
+            m.gravity(),
+            m.rotation(),
+            m.centrifugal(),
+            m.rtol(),
+            m.atol(),
+            m.max_steps(),
+        );
+        (slf.get_type(), args)
+    }
+
+    #[getter]
+    fn gravity(&self) -> &'static str {
+        match self.inner.gravity {
+            Gravity::Uniform => "uniform",
+            Gravity::InverseSquare => "inverse-square",
+        }
+    }
+    #[getter]
+    fn rotation(&self) -> bool {
+        self.inner.rotation
+    }
+    #[getter]
+    fn centrifugal(&self) -> bool {
+        self.inner.centrifugal
+    }
+    #[getter]
+    fn rtol(&self) -> f64 {
+        self.inner.options.rtol
+    }
+    #[getter]
+    fn atol(&self) -> f64 {
+        self.inner.options.atol
+    }
+    #[getter]
+    fn max_steps(&self) -> usize {
+        self.inner.options.max_steps
+    }
+}
+
+#[pymethods]
+impl PyEarth {
+    /// The Earth of rate (rad/s, ≥ 0), radius (m, > 0) and gravity (m/s², > 0); errors name them.
+    #[new]
+    fn new(rotation_rate: f64, radius: f64, g: f64) -> PyResult<Self> {
+        Ok(Self {
+            inner: Earth::new(rotation_rate, radius, g).py()?,
+        })
+    }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> (Bound<'py, PyType>, (f64, f64, f64)) {
+        let e = slf.get().inner;
+        (slf.get_type(), (e.rotation_rate, e.radius, e.g))
+    }
+
+    #[getter]
+    fn rotation_rate(&self) -> f64 {
+        self.inner.rotation_rate
+    }
+    #[getter]
+    fn radius(&self) -> f64 {
+        self.inner.radius
+    }
+    #[getter]
+    fn g(&self) -> f64 {
+        self.inner.g
+    }
+
+    /// ω in ENU components, (N, 3), at (N,) latitudes.
+    fn omega_enu(&self, py: Python<'_>, latitude: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<3>> {
+        Ok(Rows(per_latitude(py, &latitude, |l| {
+            self.inner.omega_enu(l).map(|w| [w.x, w.y, w.z])
+        })?))
+    }
+
+    /// (vector (N, 3), magnitude (N,), deviation (N,), centrifugal (N, 3)) at (N,) latitudes.
+    fn effective_gravity(
+        &self,
+        py: Python<'_>,
+        latitude: PyReadonlyArray1<'_, f64>,
+    ) -> PyResult<(Rows<3>, Values, Values, Rows<3>)> {
+        let each = per_latitude(py, &latitude, |l| {
+            Ok((
+                self.inner.effective_gravity(l)?,
+                self.inner.centrifugal_acceleration(l)?,
+            ))
+        })?;
+        Ok((
+            each.iter().map(|(g, _)| g.vector).collect(),
+            each.iter().map(|(g, _)| g.magnitude).collect(),
+            each.iter().map(|(g, _)| g.deviation).collect(),
+            each.iter().map(|(_, c)| *c).collect(),
+        ))
+    }
+
+    /// −2 ω × v (N, 3) for (N,) latitudes and (N, 3) ENU velocities.
+    fn coriolis_acceleration(
+        &self,
+        py: Python<'_>,
+        latitude: PyReadonlyArray1<'_, f64>,
+        velocity_enu: PyReadonlyArray2<'_, f64>,
+    ) -> PyResult<Rows<3>> {
+        let lats = vec_in(&latitude);
+        let vels = rows_in::<3>("velocity_enu", &velocity_enu)?;
+        if lats.len() != vels.len() {
+            return Err(invalid("velocity_enu", "must have one row per latitude"));
+        }
+        let pairs: Vec<(f64, [f64; 3])> = lats.into_iter().zip(vels).collect();
+        let rows = map_each(py, &pairs, |(l, v)| {
+            self.inner
+                .coriolis_acceleration(*l, &Vec3::new(v[0], v[1], v[2]))
+        })?;
+        Ok(rows.into_iter().collect())
+    }
+
+    /// f = 2 ω sin λ (1/s) at (N,) latitudes.
+    fn coriolis_parameter(
+        &self,
+        py: Python<'_>,
+        latitude: PyReadonlyArray1<'_, f64>,
+    ) -> PyResult<Values> {
+        per_latitude(py, &latitude, |l| self.inner.coriolis_parameter(l)).map(Values)
+    }
+
+    /// −ω sin λ (rad/s) at (N,) latitudes.
+    fn foucault_rate(
+        &self,
+        py: Python<'_>,
+        latitude: PyReadonlyArray1<'_, f64>,
+    ) -> PyResult<Values> {
+        per_latitude(py, &latitude, |l| self.inner.foucault_rate(l)).map(Values)
+    }
+
+    /// π/(ω |sin λ|) (s; inf where ω sin λ = 0) at (N,) latitudes.
+    fn inertial_period(
+        &self,
+        py: Python<'_>,
+        latitude: PyReadonlyArray1<'_, f64>,
+    ) -> PyResult<Values> {
+        per_latitude(py, &latitude, |l| self.inner.inertial_period(l)).map(Values)
+    }
+
+    /// The time of fall (s) from `height` (m) without rotation, √(2h/g) (2.41).
+    fn fall_time(&self, height: f64) -> PyResult<f64> {
+        self.inner.fall_time(height).py()
+    }
+
+    /// The first-order eastward deflection 2.42 (m) for (N,) heights and latitudes.
+    fn eastward_deflection<'py>(
+        &self,
+        py: Python<'py>,
+        height: PyReadonlyArray1<'py, f64>,
+        latitude: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Values> {
+        per_height(py, &height, &latitude, move |h, l| {
+            self.inner.eastward_deflection(h, l)
+        })
+    }
+
+    /// The second-order southward deflection (m) for (N,) heights and latitudes.
+    fn southward_deflection<'py>(
+        &self,
+        py: Python<'py>,
+        height: PyReadonlyArray1<'py, f64>,
+        latitude: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Values> {
+        per_height(py, &height, &latitude, move |h, l| {
+            self.inner.southward_deflection(h, l)
+        })
+    }
+
+    /// Jacobi's integral (N,) of (N, 3) ENU positions (m) and velocities (m/s) at `latitude`.
+    fn jacobi_integral(
+        &self,
+        py: Python<'_>,
+        latitude: f64,
+        position: PyReadonlyArray2<'_, f64>,
+        velocity: PyReadonlyArray2<'_, f64>,
+    ) -> PyResult<Values> {
+        let r = rows_view::<3>("position", &position)?;
+        let v = rows_view::<3>("velocity", &velocity)?;
+        if r.len() != v.len() {
+            return Err(invalid("velocity", "must have one row per position"));
+        }
+        Ok(Values(run(py, None, || {
+            poinsot::control::try_map_n(r.len(), |i| {
+                let (p, w) = (r[i], v[i]);
+                self.inner
+                    .jacobi_integral(latitude, &[p[0], p[1], p[2], w[0], w[1], w[2]])
+            })
+        })?))
+    }
+
+    /// The exact drop (`Earth::drop`), sampled at `samples` even times from release to landing.
+    fn drop(
+        &self,
+        py: Python<'_>,
+        height: f64,
+        latitude: f64,
+        model: PyRef<'_, PyFallModel>,
+        samples: usize,
+    ) -> PyResult<PyFall> {
+        let m = model.inner;
+        let (f, t, states) = run(py, None, || {
+            let f = self.inner.drop(height, latitude, &m)?;
+            let t = grid(f.time, samples)?;
+            let states = f.solution.sample(&t)?;
+            Ok((f, t, states))
+        })?;
+        let (position, velocity) = split(py, &states)?;
+        Ok(PyFall {
+            time: f.time,
+            east: f.east,
+            north: f.north,
+            first_order_east: f.first_order_east,
+            second_order_south: f.second_order_south,
+            t: values(py, t),
+            position,
+            velocity,
+        })
+    }
+
+    /// A projectile's flight (`Earth::projectile`), sampled as [`PyEarth::drop`].
+    #[allow(clippy::too_many_arguments)]
+    fn projectile(
+        &self,
+        py: Python<'_>,
+        speed: f64,
+        elevation: f64,
+        azimuth: f64,
+        latitude: f64,
+        height: f64,
+        model: PyRef<'_, PyFallModel>,
+        samples: usize,
+    ) -> PyResult<PyFlight> {
+        let m = model.inner;
+        let (f, t, states) = run(py, None, || {
+            let f = self
+                .inner
+                .projectile(speed, elevation, azimuth, latitude, height, &m)?;
+            let t = grid(f.time, samples)?;
+            let states = f.solution.sample(&t)?;
+            Ok((f, t, states))
+        })?;
+        let (position, velocity) = split(py, &states)?;
+        Ok(PyFlight {
+            time: f.time,
+            east: f.east,
+            north: f.north,
+            range: f.range,
+            downrange: f.downrange,
+            drift: f.drift,
+            t: values(py, t),
+            position,
+            velocity,
+        })
+    }
+
+    /// A Foucault run as the core makes it (`Earth::foucault_swing`; in stretches reporting to
+    /// `progress(fraction)` when given: `Earth::foucault_swing_in`), measured.
+    #[pyo3(signature = (latitude, length, amplitude, azimuth, duration, samples, rtol, atol, max_steps, progress=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn foucault_swing(
+        &self,
+        py: Python<'_>,
+        latitude: f64,
+        length: f64,
+        amplitude: f64,
+        azimuth: f64,
+        duration: f64,
+        samples: usize,
+        rtol: f64,
+        atol: f64,
+        max_steps: usize,
+        progress: Option<Bound<'_, PyAny>>,
+    ) -> PyResult<PyFoucaultRun> {
+        let tol = tolerances(rtol, atol, max_steps);
+        // With a `progress(fraction)` callable: the core's run in stretches, reporting after each.
+        let stretches = match progress {
+            Some(_) => ea::foucault_stretches(duration),
+            None => 1,
+        };
+        let (swing, check) = run(py, progress.as_ref(), || {
+            let swing = self.inner.foucault_swing_in(
+                latitude, length, amplitude, azimuth, duration, samples, &tol, stretches,
+            )?;
+            let check = swing.unit_rate()?;
+            Ok((swing, check))
+        })?;
+        let (r, m) = (swing.run, swing.measurement);
+        let (position, velocity) = split(py, &r.states)?;
+        Ok(PyFoucaultRun {
+            t: values(py, r.t),
+            position,
+            velocity,
+            turn_times: values(py, r.turn_times),
+            turn_angles: values(py, r.turn_angles),
+            precession_rate: m.precession_rate,
+            expected_rate: m.expected_rate,
+            sense: m.sense_name(),
+            regime: m.regime.name(),
+            regime_note: m.note,
+            theory_rate: m.theory_rate,
+            unit_rate_holds: check.holds,
+            unit_rate_note: check.note,
+            spin_ratio: check.spin_ratio,
+            amplitude_ratio: check.amplitude_ratio,
+            spin_departure: check.spin_departure,
+            amplitude_departure: check.amplitude_departure,
+        })
+    }
+
+    /// An inertial oscillation as the core makes it (`Earth::inertial_swing`; `duration` None:
+    /// the core's default).
+    #[pyo3(signature = (latitude, velocity, duration, samples, rtol, atol, max_steps))]
+    #[allow(clippy::too_many_arguments)]
+    fn inertial_swing(
+        &self,
+        py: Python<'_>,
+        latitude: f64,
+        velocity: PyReadonlyArray1<'_, f64>,
+        duration: Option<f64>,
+        samples: usize,
+        rtol: f64,
+        atol: f64,
+        max_steps: usize,
+    ) -> PyResult<PyInertialRun> {
+        let v = array_in::<2>("velocity", &velocity)?;
+        let tol = tolerances(rtol, atol, max_steps);
+        let swing = run(py, None, || {
+            self.inner
+                .inertial_swing(latitude, v, duration, samples, &tol)
+        })?;
+        Ok(PyInertialRun {
+            position: columns::<4, 2>(py, &swing.run.states, 0)?,
+            velocity: columns::<4, 2>(py, &swing.run.states, 2)?,
+            t: values(py, swing.run.t),
+            turning_rate: swing.run.turning_rate,
+            period: swing.period,
+            sense: swing.sense.name(),
+        })
+    }
+
+    /// Parcels on a ring of `radius` (m) flowing into a low as the core sets them up
+    /// (`Earth::low_flow`).
+    #[allow(clippy::too_many_arguments)]
+    fn low_flow(
+        &self,
+        py: Python<'_>,
+        latitude: f64,
+        radius: f64,
+        parcels: usize,
+        pull: f64,
+        friction: f64,
+        duration: f64,
+        samples: usize,
+        rtol: f64,
+        atol: f64,
+        max_steps: usize,
+    ) -> PyResult<PyLowFlow> {
+        let setup = LowSetup {
+            radius,
+            parcels,
+            pull,
+            friction,
+        };
+        let tol = tolerances(rtol, atol, max_steps);
+        let flow = run(py, None, || {
+            self.inner
+                .low_flow(latitude, &setup, duration, samples, &tol)
+        })?;
+        let r = flow.run;
+        Ok(PyLowFlow {
+            position: tracks(py, &r.parcels, 0),
+            velocity: tracks(py, &r.parcels, 2),
+            t: values(py, r.t),
+            circulation: r.circulation,
+            sense: flow.sense.name(),
+            energy: table(py, r.energy),
+            dissipated: table(py, r.dissipated),
+        })
+    }
 }
 
 /// `samples` evenly spaced times from `t0` to `t_end`, the core's grid (`sample_times`: the
 /// count checked, ≥ 2 and within the memory budget, naming `samples`).
 #[pyfunction]
 #[pyo3(name = "sample_times")]
-fn py_sample_times<'py>(
-    py: Python<'py>,
-    t0: f64,
-    t_end: f64,
-    samples: usize,
-) -> PyResult<Bound<'py, PyArray1<f64>>> {
-    Ok(PyArray1::from_vec(
-        py,
+fn py_sample_times(t0: f64, t_end: f64, samples: usize) -> PyResult<Values> {
+    Ok(Values(
         sample_times(t0, t_end, samples, ea::FOUCAULT_BYTES_PER_SAMPLE).py()?,
     ))
 }
@@ -521,21 +658,15 @@ fn earth_defaults(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
     Ok(d)
 }
 
-/// Registers this file's functions on the module.
+/// Registers this file's classes and functions on the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(earth_omega_enu, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_effective_gravity, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_coriolis_acceleration, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_latitude_scalar, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_deflection, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_fall_time, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_drop, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_projectile, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_fit_precession_rate, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_jacobi_integral, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_foucault_swing, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_inertial_swing, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_low_flow, m)?)?;
+    m.add_class::<PyEarth>()?;
+    m.add_class::<PyFallModel>()?;
+    m.add_class::<PyFall>()?;
+    m.add_class::<PyFlight>()?;
+    m.add_class::<PyFoucaultRun>()?;
+    m.add_class::<PyInertialRun>()?;
+    m.add_class::<PyLowFlow>()?;
     m.add_function(wrap_pyfunction!(py_sample_times, m)?)?;
     m.add_function(wrap_pyfunction!(earth_defaults, m)?)?;
     // The physical constants (the defaults of `poinsot.Earth`).

@@ -14,7 +14,7 @@ use pyo3::types::PyDict;
 
 use crate::control::run;
 use crate::convert::{parse, rows_out, slice, vector};
-use crate::earth::{earth, model};
+use crate::earth::{PyEarth, PyFallModel};
 use crate::errors::IntoPy;
 
 /// The dimensions as they come from Python: `(name, length, offset)`.
@@ -223,31 +223,21 @@ fn sweep_simulate<'py>(
     Ok(Some(d))
 }
 
-/// Drops on the Earth (rotation_rate, radius, g) under the fall model (gravity, rotation,
-/// centrifugal, rtol, atol, max_steps): `{"time", "east", "north", "first_order_east",
-/// "second_order_south"}`; None with `check_only`.
+/// Drops on the Earth (`EarthCore`) under the fall model (`FallModel`): `{"time", "east",
+/// "north", "first_order_east", "second_order_south"}`; None with `check_only`.
 #[pyfunction]
-#[pyo3(signature = (dims, columns, rotation_rate, radius, g, gravity, rotation, centrifugal, rtol, atol, max_steps, check_only, progress=None))]
-#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (dims, columns, earth, model, check_only, progress=None))]
 fn sweep_drop<'py>(
     py: Python<'py>,
     dims: Dims,
     columns: Columns<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    gravity: &str,
-    rotation: bool,
-    centrifugal: bool,
-    rtol: f64,
-    atol: f64,
-    max_steps: usize,
+    earth: PyRef<'py, PyEarth>,
+    model: PyRef<'py, PyFallModel>,
     check_only: bool,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Option<Bound<'py, PyDict>>> {
     let grid = grid(&dims, &columns)?;
-    let e = earth(rotation_rate, radius, g)?;
-    let m = model(gravity, rotation, centrifugal, rtol, atol, max_steps)?;
+    let (e, m) = (earth.inner, model.inner);
     if check_only {
         run(py, None, || core::check_drop(&grid, &m))?;
         return Ok(None);
@@ -268,27 +258,18 @@ fn sweep_drop<'py>(
 /// Projectiles on the Earth, as [`sweep_drop`]: `{"time", "east", "north", "range",
 /// "downrange", "drift"}`; None with `check_only`.
 #[pyfunction]
-#[pyo3(signature = (dims, columns, rotation_rate, radius, g, gravity, rotation, centrifugal, rtol, atol, max_steps, check_only, progress=None))]
-#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (dims, columns, earth, model, check_only, progress=None))]
 fn sweep_projectile<'py>(
     py: Python<'py>,
     dims: Dims,
     columns: Columns<'py>,
-    rotation_rate: f64,
-    radius: f64,
-    g: f64,
-    gravity: &str,
-    rotation: bool,
-    centrifugal: bool,
-    rtol: f64,
-    atol: f64,
-    max_steps: usize,
+    earth: PyRef<'py, PyEarth>,
+    model: PyRef<'py, PyFallModel>,
     check_only: bool,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Option<Bound<'py, PyDict>>> {
     let grid = grid(&dims, &columns)?;
-    let e = earth(rotation_rate, radius, g)?;
-    let m = model(gravity, rotation, centrifugal, rtol, atol, max_steps)?;
+    let (e, m) = (earth.inner, model.inner);
     if check_only {
         run(py, None, || core::check_projectile(&grid, &m))?;
         return Ok(None);

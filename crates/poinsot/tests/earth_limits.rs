@@ -103,7 +103,7 @@ fn coriolis_overflow_is_refused() {
     let err = e
         .coriolis_acceleration(0.5, &Vec3::new(1e10, 0.0, 0.0))
         .unwrap_err();
-    assert_eq!(err.argument, "velocity", "{err}");
+    assert_eq!(err.argument, "velocity_enu", "{err}");
 }
 
 /// The landing point (east, north) of a toss from the ground on a flat, uniformly pulling,
@@ -232,4 +232,124 @@ fn messages_print_extreme_numbers_in_exponent_form() {
     }
     let top = messages[0].to_string();
     assert!(top.contains("2e-308"), "{top}");
+}
+
+/// Issue 22, item 1: the Earth's runs name the caller's own arguments (the front ends rename
+/// nothing), and return finite numbers or an error.
+mod the_caller_s_names {
+    use poinsot::earth::{
+        Earth, FallModel, LowSetup, FOUCAULT_TOLERANCES, INERTIAL_TOLERANCES, LOW_TOLERANCES,
+    };
+
+    /// Every error of a call names one of `allowed` (the call's arguments and the Earth's).
+    fn names(err: poinsot::Error, allowed: &[&str]) {
+        let ok = allowed.contains(&err.argument.as_str())
+            || ["rotation_rate", "radius", "g"].contains(&err.argument.as_str());
+        assert!(ok, "{err} names none of {allowed:?}");
+    }
+
+    #[test]
+    fn a_drop_whose_integration_fails_names_the_height() {
+        // The integrator's end, start and time were `t_end`, `y0` and `t`.
+        let err = Earth::default()
+            .drop(1e308, 0.5, &FallModel::default())
+            .unwrap_err();
+        assert_eq!(err.argument, "height", "{err}");
+    }
+
+    #[test]
+    fn a_fall_brings_its_closed_forms_and_a_finite_state_at_any_time() {
+        let e = Earth::default();
+        let fall = e.drop(100.0, 0.7, &FallModel::default()).unwrap();
+        assert_eq!(
+            fall.first_order_east,
+            e.eastward_deflection(100.0, 0.7).unwrap()
+        );
+        assert_eq!(
+            fall.second_order_south,
+            e.southward_deflection(100.0, 0.7).unwrap()
+        );
+        let land = fall.state_at(fall.time).unwrap();
+        assert_eq!((land[0], land[1]), (fall.east, fall.north));
+        assert_eq!(fall.state_at(-1.0).unwrap_err().argument, "t");
+        assert_eq!(fall.state_at(f64::NAN).unwrap_err().argument, "t");
+    }
+
+    #[test]
+    fn a_fall_time_beyond_doubles_is_refused_naming_the_height() {
+        let e = Earth::new(7e-5, 6.4e6, 1e-300).unwrap();
+        assert_eq!(e.fall_time(1e300).unwrap_err().argument, "height");
+        assert!(e.fall_time(1.0).unwrap().is_finite());
+    }
+
+    #[test]
+    fn a_release_beyond_doubles_names_the_amplitude() {
+        // |r0| of a 1e300 m string overflows: the release was named `state0` before.
+        let err = Earth::default()
+            .foucault_swing(0.8, 1e300, 1.0, 0.0, 60.0, 11, &FOUCAULT_TOLERANCES)
+            .unwrap_err();
+        assert_eq!(err.argument, "amplitude", "{err}");
+    }
+
+    #[test]
+    fn the_runs_name_only_their_arguments() {
+        let e = Earth::default();
+        let f = |lat, len, amp, az, dur, n| {
+            e.foucault_swing(lat, len, amp, az, dur, n, &FOUCAULT_TOLERANCES)
+        };
+        let foucault = [
+            "latitude",
+            "length",
+            "amplitude",
+            "azimuth",
+            "duration",
+            "samples",
+            "max_steps",
+        ];
+        for args in [
+            (0.8, 1e300, 1.0, 0.0, 60.0, 11),
+            (0.8, 1e-300, 1e-301, 0.0, 60.0, 11),
+            (0.8, 10.0, 1.0, 0.0, 1e300, 11),
+            (0.8, 10.0, 1.0, 1e300, 60.0, 11),
+        ] {
+            let (lat, len, amp, az, dur, n) = args;
+            if let Err(err) = f(lat, len, amp, az, dur, n) {
+                names(err, &foucault);
+            }
+        }
+        let inertial = ["latitude", "velocity", "duration", "samples", "max_steps"];
+        for (v, d) in [
+            ([1e308, 1e308], 1e5),
+            ([1.0, 0.0], 1e300),
+            ([1e-320, 0.0], 1e5),
+        ] {
+            if let Err(err) = e.inertial_swing(0.8, v, Some(d), 11, &INERTIAL_TOLERANCES) {
+                names(err, &inertial);
+            }
+        }
+        let low = [
+            "latitude",
+            "radius",
+            "parcels",
+            "pull",
+            "friction",
+            "duration",
+            "samples",
+            "max_steps",
+        ];
+        for (r, pull, d) in [
+            (1e300, 1e300, 1e5),
+            (5e5, 1e-3, 1e300),
+            (1e-300, 1e-300, 1e5),
+        ] {
+            let setup = LowSetup {
+                radius: r,
+                pull,
+                ..LowSetup::default()
+            };
+            if let Err(err) = e.low_flow(0.8, &setup, d, 11, &LOW_TOLERANCES) {
+                names(err, &low);
+            }
+        }
+    }
 }

@@ -584,8 +584,8 @@ fn drops_and_projectiles_equal_each_run_alone() {
 
 #[test]
 fn a_failed_integration_names_the_users_argument_at_its_point() {
-    // The integrator names its own variables (t, y0); the sweep names what the user gave, as
-    // the scalar API does: the height of a drop, the speed of a projectile.
+    // The integrator names its own variables (t, y0); the run names what the user gave, and so
+    // does the sweep: the height of a drop, the speed of a projectile.
     let earth = Earth::default();
     let model = FallModel::default();
     let height = [100.0, 1e308];
@@ -601,8 +601,12 @@ fn a_failed_integration_names_the_users_argument_at_its_point() {
         (ErrorKind::Diverged, "height")
     );
     assert!(e.message.ends_with("(at height[1])"), "{e}");
-    // The run alone names its integrator's time: the sweep's renaming is what names height.
-    assert_eq!(earth.drop(1e308, 0.5, &model).unwrap_err().argument, "t");
+    // The run alone names the height too (issue 22: the core names the caller's arguments, so
+    // the sweep renames nothing).
+    assert_eq!(
+        earth.drop(1e308, 0.5, &model).unwrap_err().argument,
+        "height"
+    );
     let speed = [50.0, 1e308];
     let one = [0.5];
     let h0 = [0.0];

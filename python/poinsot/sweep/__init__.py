@@ -50,9 +50,8 @@ from __future__ import annotations
 from typing import Any, Callable, Optional, Union
 
 from .. import _core
-from .._validate import as_choice, as_count, as_flag, as_scalar
 from ..dynamics import DEFAULT_MAX_STEPS, TorqueLike, _batch_settings
-from ..earth import _DROP, _GRAVITY, Earth
+from ..earth import _DROP, Earth, _fall_model
 from ..errors import ArgumentTypeError
 from ._run import run
 from ._spec import Key, Model, Output, Range, plan
@@ -483,25 +482,27 @@ def _earth_settings(
     atol: Any,
     max_steps: Any,
 ) -> tuple[tuple[Any, ...], dict[str, Any]]:
+    """The core's Earth and fall model of a sweep (its settings), and the attributes that
+    record them."""
     if earth is None:
         earth = Earth()
     if not isinstance(earth, Earth):
         raise ArgumentTypeError(
             f"earth: must be a poinsot.Earth or None, got {type(earth).__name__}"
         )
-    settings = (
-        *earth._p,  # rotation_rate, radius, g: the Earth's parameters as the core takes them
-        as_choice(gravity, "gravity", _GRAVITY),
-        as_flag(rotation, "rotation"),
-        as_flag(centrifugal, "centrifugal"),
-        as_scalar(rtol, "rtol"),
-        as_scalar(atol, "atol"),
-        as_count(max_steps, "max_steps", 1),
-    )
-    names: tuple[str, ...] = ("rotation_rate", "radius", "g", "gravity", "rotation")
-    names += ("centrifugal", "rtol", "atol", "max_steps")
-    attrs = {n: (int(v) if isinstance(v, bool) else v) for n, v in zip(names, settings)}
-    return settings, attrs
+    model = _fall_model(gravity, rotation, centrifugal, rtol, atol, max_steps)
+    attrs: dict[str, Any] = {
+        "rotation_rate": earth.rotation_rate,
+        "radius": earth.radius,
+        "g": earth.g,
+        "gravity": model.gravity,
+        "rotation": int(model.rotation),
+        "centrifugal": int(model.centrifugal),
+        "rtol": model.rtol,
+        "atol": model.atol,
+        "max_steps": model.max_steps,
+    }
+    return (earth._core, model), attrs
 
 
 def drop(

@@ -72,8 +72,24 @@ pub struct Fall {
     pub east: f64,
     /// Northward displacement at landing (m; negative = south).
     pub north: f64,
+    /// The unit's first-order eastward deflection (eq. 2.42) from the same height and latitude
+    /// ([`Earth::eastward_deflection`], m), to compare with `east`.
+    pub first_order_east: f64,
+    /// The second-order equatorward deflection ([`Earth::southward_deflection`], m; uniform
+    /// gravity), to compare with −`north`.
+    pub second_order_south: f64,
     /// The trajectory `[x, y, z, vx, vy, vz]` (ENU) from release to landing, with dense output.
     pub solution: Solution<ParticleState>,
+}
+
+impl Fall {
+    /// The state `[x, y, z, vx, vy, vz]` (ENU, m and m/s) at time `t` (s, in [0, time]) from
+    /// the dense output (the model's `options.dense`); errors name `t`.
+    pub fn state_at(&self, t: f64) -> Result<ParticleState> {
+        check_finite("t", &[t])?;
+        let s = self.solution.at(t)?;
+        check_finite("t", &s).map(|_| s)
+    }
 }
 
 /// A projectile's flight: where and when it lands.
@@ -212,28 +228,42 @@ impl Earth {
     ///
     /// To first order in ω the landing point is the unit's eq. 2.42 east
     /// ([`Earth::eastward_deflection`]); at second order it is also displaced towards the
-    /// equator ([`Earth::southward_deflection`] for uniform gravity).
+    /// equator ([`Earth::southward_deflection`] for uniform gravity): both come with the fall.
+    ///
+    /// Errors name `height` (also for an integration that fails: the height sets its time
+    /// and scale), `latitude`, and the model's `rtol`, `atol` and `max_steps`.
     pub fn drop(&self, height: f64, latitude: f64, model: &FallModel) -> Result<Fall> {
         Self::check_drop(height, latitude)?;
         let t0 = self.fall_time(height)?;
-        let sol = self.fly(
-            latitude,
-            Vec3::new(0.0, 0.0, height),
-            Vec3::zeros(),
-            4.0 * t0 + 1.0,
-            model,
-        )?;
+        let t_end = 4.0 * t0 + 1.0;
+        // The integrator's end, start and time all come from the height.
+        let sol = self
+            .fly(
+                latitude,
+                Vec3::new(0.0, 0.0, height),
+                Vec3::zeros(),
+                t_end,
+                model,
+            )
+            .map_err(|e| {
+                e.renamed("t", "height")
+                    .renamed("y0", "height")
+                    .renamed("t_end", "height")
+            })?;
         let hit = sol.event.as_ref().ok_or_else(|| {
             Error::diverged(
-                "t",
-                format!("the body did not land within t = {} s", num(4.0 * t0 + 1.0)),
+                "height",
+                format!("the body did not land within t = {} s", num(t_end)),
             )
         })?;
         let (time, east, north) = (hit.t, hit.y[0], hit.y[1]);
+        check_finite("height", &[time, east, north])?;
         Ok(Fall {
             time,
             east,
             north,
+            first_order_east: self.eastward_deflection(height, latitude)?,
+            second_order_south: self.southward_deflection(height, latitude)?,
             solution: sol,
         })
     }
@@ -284,7 +314,10 @@ impl Earth {
             }
             model.options.max_step = model.options.max_step.min(t_flat / 8.0);
         }
-        let sol = self.fly(latitude, Vec3::new(0.0, 0.0, height), v0, t_end, &model)?;
+        // The integrator's time and start come from the speed (the time of flight).
+        let sol = self
+            .fly(latitude, Vec3::new(0.0, 0.0, height), v0, t_end, &model)
+            .map_err(|e| e.renamed("t", "speed").renamed("y0", "speed"))?;
         let hit = sol.event.as_ref().ok_or_else(|| {
             Error::invalid(
                 "speed",
@@ -296,13 +329,17 @@ impl Earth {
             )
         })?;
         let (east, north) = (hit.y[0], hit.y[1]);
-        let downrange = east * sa + north * ca;
-        let drift = east * ca - north * sa;
+        let (range, downrange, drift) = (
+            east.hypot(north),
+            east * sa + north * ca,
+            east * ca - north * sa,
+        );
+        check_finite("speed", &[hit.t, east, north, range, downrange, drift])?;
         Ok(Flight {
             time: hit.t,
             east,
             north,
-            range: east.hypot(north),
+            range,
             downrange,
             drift,
             solution: sol,

@@ -171,17 +171,18 @@ impl Earth {
         })
     }
 
-    /// The Coriolis acceleration −2 ω × v (m/s², ENU) of a particle moving with `velocity`
-    /// (m/s, ENU) relative to the Earth at `latitude` (eq. 2.30).
-    pub fn coriolis_acceleration(&self, latitude: f64, velocity: &Vec3) -> Result<Vec3> {
-        check_finite("velocity", velocity.as_slice())?;
+    /// The Coriolis acceleration −2 ω × v (m/s², ENU) of a particle moving with
+    /// `velocity_enu` (m/s, ENU) relative to the Earth at `latitude` (eq. 2.30). Errors name
+    /// `velocity_enu` and `latitude`.
+    pub fn coriolis_acceleration(&self, latitude: f64, velocity_enu: &Vec3) -> Result<Vec3> {
+        check_finite("velocity_enu", velocity_enu.as_slice())?;
         let w = self.omega_enu(latitude)?;
-        let a = -2.0 * w.cross(velocity);
+        let a = -2.0 * w.cross(velocity_enu);
         if a.iter().all(|x| x.is_finite()) {
             Ok(a)
         } else {
             Err(Error::invalid(
-                "velocity",
+                "velocity_enu",
                 format!(
                     "the Coriolis acceleration −2 ω × v is not representable as a finite number \
                      for this velocity and rotation_rate = {} rad/s (it overflows)",
@@ -234,11 +235,16 @@ impl Earth {
         )
     }
 
-    /// The time of fall from `height` (m) without rotation, √(2h/g) (eq. 2.41).
+    /// The time of fall from `height` (m) without rotation, √(2h/g) (eq. 2.41); refused,
+    /// naming `height`, where it is beyond the largest double (h/g overflows for a tiny g).
     pub fn fall_time(&self, height: f64) -> Result<f64> {
         check_non_negative("height", height)?;
-        // √(2h/g) = √2 · √(h/g): finite for every finite h.
-        Ok(SQRT_2 * (height / self.g).sqrt())
+        // √(2h/g) = √2 · √(h/g): no overflow of 2h on the way.
+        finite_result(
+            "height",
+            "the time of fall",
+            SQRT_2 * (height / self.g).sqrt(),
+        )
     }
 
     /// The rate at which a Foucault pendulum's swing plane turns (rad/s), counterclockwise

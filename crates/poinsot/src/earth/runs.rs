@@ -13,7 +13,7 @@ use super::pendulum::FoucaultRun;
 use super::pendulum_measurement::{FoucaultMeasurement, Sense};
 use super::planet::Earth;
 use super::winds::{InertialRun, LowRun};
-use crate::error::{check_non_negative, check_positive, Error, Result};
+use crate::error::{check_finite, check_non_negative, check_positive, Error, Result};
 use crate::frames::ParticleState;
 use crate::integrate::{sample_before, sample_times, Options, Tolerances};
 use crate::limits::{check_bytes, check_count};
@@ -289,12 +289,18 @@ impl FoucaultSwing {
 
     /// The bob's state `[x, y, z, vx, vy, vz]` (ENU, m and m/s) at time `t` (s, in [0,
     /// duration]): the sample at `t`, or the run continued from the last sample before `t`
-    /// (a step or two) with the run's options. Errors name `t`.
+    /// (a step or two) with the run's options. Errors name `t` (and `max_steps`, the run's).
     pub fn state_at(&self, t: f64) -> Result<ParticleState> {
         let i = sample_before(&self.run.t, t)?;
         if self.run.t[i] == t {
             return Ok(self.run.states[i]);
         }
+        // The continuation's end, start and time are the caller's `t`.
+        let at_t = |e: Error| {
+            e.renamed("t_end", "t")
+                .renamed("y0", "t")
+                .renamed("state0", "t")
+        };
         let rest = self
             .earth
             .foucault(
@@ -306,8 +312,9 @@ impl FoucaultSwing {
                 &[t],
                 &self.options,
             )
-            .map_err(|e| e.renamed("t_end", "t"))?;
-        Ok(rest.states[0])
+            .map_err(at_t)?;
+        let s = rest.states[0];
+        check_finite("t", &s).map(|_| s)
     }
 }
 
@@ -350,7 +357,8 @@ impl LowFlow {
 
     /// Every parcel at time `t` (s, in [0, duration]): `[x, y, vx, vy, energy, dissipated]`
     /// (m, m/s, J/kg, J/kg), from the samples or by continuing the run from the last sample
-    /// before `t`; `energy + dissipated` is each parcel's initial energy. Errors name `t`.
+    /// before `t`; `energy + dissipated` is each parcel's initial energy. Errors name `t` (and
+    /// `max_steps`, the run's).
     pub fn at(&self, t: f64) -> Result<Vec<[f64; 6]>> {
         let i = sample_before(&self.run.t, t)?;
         let n = self.run.parcels.len();
@@ -376,15 +384,20 @@ impl LowFlow {
                 &[t],
                 &self.options,
             )
-            .map_err(|e| e.renamed("t_end", "t"))?;
-        Ok((0..n)
+            .map_err(|e| {
+                e.renamed("t_end", "t")
+                    .renamed("y0", "t")
+                    .renamed("states", "t")
+            })?;
+        let rows: Vec<[f64; 6]> = (0..n)
             .map(|p| {
                 let s = rest.parcels[p][0];
                 // The work against friction before the sample plus the work since.
                 let lost = self.run.dissipated[p][i] + rest.dissipated[p][0];
                 [s[0], s[1], s[2], s[3], rest.energy[p][0], lost]
             })
-            .collect())
+            .collect();
+        check_finite("t", rows.as_flattened()).map(|_| rows)
     }
 }
 
@@ -399,7 +412,9 @@ impl Earth {
     ///
     /// Errors name the arguments: `samples` (≥ 2, within the memory budget), `duration`
     /// (finite, > 0; also a run too long to represent), `latitude`, `length`, `amplitude`,
-    /// `azimuth`, `max_steps`, and `state0` for a release that cannot be represented.
+    /// `azimuth`, `max_steps` (also `rtol`, `atol`), and `amplitude` for a release that cannot be
+    /// represented; `rotation_rate` where the spin overflows the pendulum's theory. Only the
+    /// caller's arguments are named.
     #[allow(clippy::too_many_arguments)]
     pub fn foucault_swing(
         &self,
@@ -442,18 +457,23 @@ impl Earth {
             ));
         }
         check_duration(duration)?;
-        // The core's internal names of the run's arguments. `state0` (a release that cannot be
-        // represented: `length` and `amplitude` beyond double precision) is left to the front
-        // ends, which name it as their users expect.
+        // The inner calls' names for the run's arguments: the integration's end and time, and
+        // the turning points, are the duration's; its start (a release that cannot be
+        // represented: a `length` beyond double precision, which `amplitude` < `length` follows)
+        // is the amplitude's.
         let names = |e: Error| {
             e.renamed("t_end", "duration")
+                .renamed("t", "duration")
                 .renamed("turn_times", "duration")
                 .renamed("turn_angles", "duration")
+                .renamed("state0", "amplitude")
+                .renamed("y0", "amplitude")
         };
         let state0 = self
             .foucault_release(latitude, length, amplitude, azimuth)
             .map_err(names)?;
-        let times = sample_times(0.0, duration, samples, FOUCAULT_BYTES_PER_SAMPLE)?;
+        let times =
+            sample_times(0.0, duration, samples, FOUCAULT_BYTES_PER_SAMPLE).map_err(names)?;
         let options = tolerances.options(false);
         let run = if stretches == 1 {
             self.foucault(latitude, length, state0, 0.0, duration, &times, &options)
@@ -534,8 +554,8 @@ impl Earth {
     /// A parcel moving with `velocity` `[v_east, v_north]` (m/s) on a frictionless level
     /// surface at `latitude` (rad) for `duration` (s; `None`: [`Earth::inertial_duration`]),
     /// sampled at `samples` even times ([`Earth::inertial_oscillation`]), with its period and
-    /// the sense of its measured turning rate. Errors name `samples`, `duration`, `latitude`
-    /// and `velocity`.
+    /// the sense of its measured turning rate. Errors name `samples`, `duration`, `latitude`,
+    /// `velocity` and `max_steps` (only the caller's arguments).
     pub fn inertial_swing(
         &self,
         latitude: f64,
@@ -551,7 +571,14 @@ impl Earth {
             None => self.inertial_duration(latitude)?,
         };
         check_duration(duration)?;
-        let times = sample_times(0.0, duration, samples, INERTIAL_BYTES_PER_SAMPLE)?;
+        // The inner calls' end and time are the duration's, their start the velocity's.
+        let names = |e: Error| {
+            e.renamed("t_end", "duration")
+                .renamed("t", "duration")
+                .renamed("y0", "velocity")
+        };
+        let times =
+            sample_times(0.0, duration, samples, INERTIAL_BYTES_PER_SAMPLE).map_err(names)?;
         let run = self
             .inertial_oscillation(
                 latitude,
@@ -560,7 +587,7 @@ impl Earth {
                 &times,
                 &tolerances.options(false),
             )
-            .map_err(|e| e.renamed("t_end", "duration"))?;
+            .map_err(names)?;
         let sense = Sense::of(run.turning_rate, 2.0 * self.rotation_rate);
         Ok(InertialSwing { run, period, sense })
     }
@@ -570,7 +597,8 @@ impl Earth {
     /// [`LowSetup::strength`]), with the sense of their circulation. The defaults of the front
     /// ends are [`LowSetup::default`], [`LOW_DURATION`], [`LOW_SAMPLES`] and
     /// [`LOW_TOLERANCES`]. Errors name `samples` (≥ 2; parcels × samples within the memory
-    /// budget), `duration`, `latitude` and `max_steps`.
+    /// budget), `duration`, `latitude`, `radius`, `parcels`, `pull`, `friction` and `max_steps`
+    /// (only the caller's arguments).
     pub fn low_flow(
         &self,
         latitude: f64,
@@ -599,7 +627,16 @@ impl Earth {
             np * ns * LOW_BYTES_PER_PARCEL_SAMPLE as f64 + ns * LOW_BYTES_PER_SAMPLE as f64,
         )?;
         check_duration(duration)?;
-        let times = sample_times(0.0, duration, samples, LOW_BYTES_PER_SAMPLE)?;
+        // The inner calls' end and time are the duration's; their start (the parcels at rest on
+        // the ring) and the strength are the pull's.
+        let names = |e: Error| {
+            e.renamed("t_end", "duration")
+                .renamed("t", "duration")
+                .renamed("y0", "pull")
+                .renamed("strength", "pull")
+                .renamed("starts", "radius")
+        };
+        let times = sample_times(0.0, duration, samples, LOW_BYTES_PER_SAMPLE).map_err(names)?;
         let options = tolerances.options(false);
         let run = self
             .flow_into_low(
@@ -611,7 +648,7 @@ impl Earth {
                 &times,
                 &options,
             )
-            .map_err(|e| e.renamed("t_end", "duration"))?;
+            .map_err(names)?;
         let sense = Sense::of(run.circulation, setup.circulation_scale());
         Ok(LowFlow {
             earth: *self,

@@ -88,16 +88,13 @@ pub fn drop(earth: &Earth, grid: &Grid<'_>, model: &FallModel) -> Result<Vec<Dro
     model.options.dense = false;
     grid.compute(|p| {
         let (h, lat) = inputs.at(p)?;
-        // The integrator's errors name its time and start: the user gave the height.
-        let fall = earth
-            .drop(h, lat, &model)
-            .map_err(|e| e.renamed("t", "height").renamed("y0", "height"))?;
+        let fall = earth.drop(h, lat, &model)?;
         Ok(DropPoint {
             time: fall.time,
             east: fall.east,
             north: fall.north,
-            first_order_east: earth.eastward_deflection(h, lat)?,
-            second_order_south: earth.southward_deflection(h, lat)?,
+            first_order_east: fall.first_order_east,
+            second_order_south: fall.second_order_south,
         })
     })
 }
@@ -158,10 +155,7 @@ pub fn projectile(
     model.options.dense = false;
     grid.compute(|p| {
         let [speed, elevation, azimuth, latitude, height] = inputs.at(p)?;
-        // As the scalar API: the integrator's errors are the speed's (the time of flight).
-        let f = earth
-            .projectile(speed, elevation, azimuth, latitude, height, &model)
-            .map_err(|e| e.renamed("t", "speed").renamed("y0", "speed"))?;
+        let f = earth.projectile(speed, elevation, azimuth, latitude, height, &model)?;
         Ok(ProjectilePoint {
             time: f.time,
             east: f.east,
