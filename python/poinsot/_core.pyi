@@ -1,7 +1,7 @@
 # Stubs of the compiled module poinsot._core (checked with `python -m mypy.stubtest`).
 # Sections mirror the binding files in crates/poinsot-py/src/.
 from collections.abc import Callable, Sequence
-from typing import Any, final
+from typing import Any, TypedDict, final
 
 import numpy as np
 from numpy.typing import NDArray
@@ -9,6 +9,164 @@ from numpy.typing import NDArray
 __version__: str
 DEFAULT_MAX_STEPS: int
 DEFAULT_MEMORY_BUDGET: int
+
+# ---- defaults (defaults.rs): every public call's defaults, by call and argument ----
+_Vec3 = tuple[float, float, float]
+
+class _Seq(TypedDict):
+    seq: str
+
+class _EulerRates(TypedDict):
+    seq: str
+    frame: str
+
+class _Tol(TypedDict):
+    tol: float
+
+class _Rtol(TypedDict):
+    rtol: float
+
+class _CenterOfMass(TypedDict):
+    center_of_mass: _Vec3
+
+class _Cubature(TypedDict):
+    rtol: float
+    atol: float
+    max_evals: int
+
+class _Density(TypedDict):
+    density: float
+
+class _MovingFrame(TypedDict):
+    origin: _Vec3
+    velocity: _Vec3
+    acceleration: _Vec3
+    angular_velocity: _Vec3
+    angular_acceleration: _Vec3
+
+class _AtRest(TypedDict):
+    velocity: _Vec3
+    acceleration: _Vec3
+
+class _Run(TypedDict):
+    samples: int
+    rtol: float
+    atol: float
+    max_steps: int
+
+class _Particle(_Run):
+    mass: float
+    stiffness: float
+
+class _Earth(TypedDict):
+    rotation_rate: float
+    radius: float
+    g: float
+
+class _SolarDay(TypedDict):
+    radius: float
+    g: float
+
+class _SweepFall(TypedDict):
+    gravity: str
+    rtol: float
+    atol: float
+    max_steps: int
+
+class _Fall(_SweepFall):
+    samples: int
+
+class _Projectile(_Fall):
+    height: float
+
+class _Foucault(_Run):
+    length: float
+    amplitude: float
+    azimuth: float
+    duration: float
+
+class _Inertial(_Run):
+    velocity: tuple[float, float]
+
+class _Low(_Run):
+    radius: float
+    parcels: int
+    pull: float
+    friction: float
+    duration: float
+
+class _G(TypedDict):
+    g: float
+
+class _Simulate(_Run):
+    method: str
+
+class _Batch(TypedDict):
+    method: str
+    max_steps: int
+
+class _Frame(TypedDict):
+    frame: str
+
+class _Samples(TypedDict):
+    samples: int
+
+class _Spin(TypedDict):
+    spin: float
+
+class _FromSpin(TypedDict):
+    theta_dot: float
+    phi_dot: float
+    phi: float
+    psi: float
+
+class _HeavyTop(_FromSpin):
+    psi_dot: float
+
+_Defaults = TypedDict(
+    "_Defaults",
+    {
+        "check_rotation_matrix": _Tol,
+        "euler_to_matrix": _Seq,
+        "matrix_to_euler": _Seq,
+        "body_angular_velocity": _Seq,
+        "space_angular_velocity": _Seq,
+        "euler_rates": _EulerRates,
+        "classify": _Rtol,
+        "RigidBody.__init__": _CenterOfMass,
+        "RigidBody.from_inertia": _CenterOfMass,
+        "RigidBody.from_density": _Cubature,
+        "RigidBody.from_mesh": _Density,
+        "RigidBody.from_trimesh": _Density,
+        "RigidBody.load_mesh": _Density,
+        "MovingFrame.__init__": _MovingFrame,
+        "MovingFrame.to_fixed": _AtRest,
+        "MovingFrame.to_moving": _AtRest,
+        "SpringParticle.simulate": _Run,
+        "simulate_particle": _Particle,
+        "Earth.__init__": _Earth,
+        "Earth.solar_day": _SolarDay,
+        "Earth.drop": _Fall,
+        "Earth.projectile": _Projectile,
+        "Earth.foucault": _Foucault,
+        "Earth.inertial_oscillation": _Inertial,
+        "Earth.flow_into_low": _Low,
+        "GravityTorque.__init__": _G,
+        "simulate": _Simulate,
+        "simulate_batch": _Batch,
+        "FreeRigidBody.contact_point": _Frame,
+        "FreeRigidBody.contact_polhode": _Samples,
+        "FreeRigidBody.polhode": _Samples,
+        "axis_stability": _Spin,
+        "HeavyTop.__init__": _HeavyTop,
+        "HeavyTop.from_spin": _FromSpin,
+        "sweep.simulate": _Batch,
+        "sweep.drop": _SweepFall,
+        "sweep.projectile": _SweepFall,
+    },
+)
+
+DEFAULTS: _Defaults
 
 def memory_budget() -> int: ...
 def set_memory_budget(bytes: int) -> int: ...
@@ -224,7 +382,6 @@ class SpringParticleCore:
         velocity: NDArray[np.float64],
     ) -> NDArray[np.float64]: ...
 
-def frame_particle_defaults() -> dict[str, Any]: ...
 def frame_steady_at(
     frame: NDArray[np.float64],
     attitude: NDArray[np.float64],

@@ -38,6 +38,7 @@ import numpy as np
 
 from . import _core
 from . import _display as show
+from ._core import DEFAULTS as _DEFAULTS
 from ._validate import (
     FloatArray,
     as_callable,
@@ -62,7 +63,7 @@ __all__ = [
 
 #: Default relative tolerance of :func:`classify` and :attr:`RigidBody.kind` (in units of the
 #: largest principal moment): moments closer than this are "equal", smaller than this "zero".
-DEFAULT_KIND_RTOL = 1e-9
+DEFAULT_KIND_RTOL: float = _DEFAULTS["classify"]["rtol"]
 
 
 class IntegrationWarning(UserWarning):
@@ -180,7 +181,12 @@ class RigidBody(show.Displayed):
 
     __slots__ = ("_core", "_integration_error")
 
-    def __init__(self, mass: float, inertia: Any, center_of_mass: Any = (0.0, 0.0, 0.0)) -> None:
+    def __init__(
+        self,
+        mass: float,
+        inertia: Any,
+        center_of_mass: Any = _DEFAULTS["RigidBody.__init__"]["center_of_mass"],
+    ) -> None:
         """Same as :meth:`from_inertia`."""
         self._core: Any = _core.MassProperties.from_inertia(
             _scalar(mass, "mass"),
@@ -205,7 +211,7 @@ class RigidBody(show.Displayed):
         cls,
         mass: float,
         inertia: Any,
-        center_of_mass: Any = (0.0, 0.0, 0.0),
+        center_of_mass: Any = _DEFAULTS["RigidBody.from_inertia"]["center_of_mass"],
         *,
         about: Any = None,
     ) -> RigidBody:
@@ -371,9 +377,9 @@ class RigidBody(show.Displayed):
         density: Callable[[FloatArray], Any],
         bounds: Any,
         *,
-        rtol: float = 1e-6,
-        atol: float = 0.0,
-        max_evals: int = 10_000_000,
+        rtol: float = _DEFAULTS["RigidBody.from_density"]["rtol"],
+        atol: float = _DEFAULTS["RigidBody.from_density"]["atol"],
+        max_evals: int = _DEFAULTS["RigidBody.from_density"]["max_evals"],
     ) -> RigidBody:
         """The body of density ``density`` (kg/m³) over the box ``bounds`` (m), by adaptive
         cubature of eqs. 2.61–2.62 (Genz–Malik degree-7/5 rules, subdivision where the density
@@ -459,7 +465,12 @@ class RigidBody(show.Displayed):
 
     @classmethod
     def from_mesh(
-        cls, vertices: Any, faces: Any, density: float = 1.0, *, merge_vertices: bool = False
+        cls,
+        vertices: Any,
+        faces: Any,
+        density: float = _DEFAULTS["RigidBody.from_mesh"]["density"],
+        *,
+        merge_vertices: bool = False,
     ) -> RigidBody:
         """The solid bounded by a closed triangle mesh, of uniform ``density`` (kg/m³), by exact
         polyhedral integrals (eqs. 2.61–2.62 summed over signed tetrahedra).
@@ -533,7 +544,11 @@ class RigidBody(show.Displayed):
 
     @classmethod
     def from_trimesh(
-        cls, mesh: Any, density: float = 1.0, *, merge_vertices: bool = False
+        cls,
+        mesh: Any,
+        density: float = _DEFAULTS["RigidBody.from_trimesh"]["density"],
+        *,
+        merge_vertices: bool = False,
     ) -> RigidBody:
         """The solid bounded by a ``trimesh.Trimesh`` (vertices in m), of uniform ``density``
         (kg/m³): :meth:`from_mesh` of ``mesh.vertices`` and ``mesh.faces`` with the mesh's
@@ -548,7 +563,9 @@ class RigidBody(show.Displayed):
 
     @classmethod
     def load_mesh(
-        cls, path: str | bytes | os.PathLike[str] | os.PathLike[bytes], density: float = 1.0
+        cls,
+        path: str | bytes | os.PathLike[str] | os.PathLike[bytes],
+        density: float = _DEFAULTS["RigidBody.load_mesh"]["density"],
     ) -> RigidBody:
         """The solid bounded by the triangle mesh in the file ``path`` (.stl, .obj, .ply, ...;
         coordinates in m), of uniform ``density`` (kg/m³), read with trimesh (the optional

@@ -27,6 +27,7 @@ import numpy as np
 
 from . import _core
 from . import _display as show
+from ._core import DEFAULTS as _DEFAULTS
 from ._validate import (
     FloatArray,
     as_callable,
@@ -94,7 +95,7 @@ class GravityTorque:
     its axis 3 (then m g l = mass · g · com_z and the inertia is taken about the origin)."""
 
     mgl: float | None = None
-    g: float = 9.80665
+    g: float = _DEFAULTS["GravityTorque.__init__"]["g"]
 
     def __post_init__(self) -> None:
         if self.mgl is not None:
@@ -287,12 +288,12 @@ def simulate(
     *,
     attitude0: Any = None,
     torque: TorqueLike = None,
-    method: str = "auto",
+    method: str = _DEFAULTS["simulate"]["method"],
     dt: float | None = None,
-    samples: int = 1001,
-    rtol: float = 1e-10,
-    atol: float = 1e-12,
-    max_steps: int = DEFAULT_MAX_STEPS,
+    samples: int = _DEFAULTS["simulate"]["samples"],
+    rtol: float = _DEFAULTS["simulate"]["rtol"],
+    atol: float = _DEFAULTS["simulate"]["atol"],
+    max_steps: int = _DEFAULTS["simulate"]["max_steps"],
     progress: Callable[[float], Any] | None = None,
 ) -> Trajectory:
     """Simulates a rigid body turning under a torque (Euler's equations 2.71 with the attitude).
@@ -428,9 +429,9 @@ def simulate_batch(
     *,
     attitude0: Any = None,
     torque: TorqueLike = None,
-    method: str = "rk4",
+    method: str = _DEFAULTS["simulate_batch"]["method"],
     dt: float | None = None,
-    max_steps: int = DEFAULT_MAX_STEPS,
+    max_steps: int = _DEFAULTS["simulate_batch"]["max_steps"],
     progress: Callable[[float], Any] | None = None,
 ) -> tuple[FloatArray, FloatArray]:
     """Integrates many bodies at once, in parallel (all cores), and returns their final states.

@@ -42,8 +42,10 @@ __all__ = [
     "simulate_particle",
 ]
 
-# The defaults of simulate_particle are the core's (the browser lab uses the same ones).
-_PARTICLE = _core.frame_particle_defaults()
+# The defaults are the core's (the browser lab's particle uses the same ones).
+_PARTICLE = _core.DEFAULTS["simulate_particle"]
+_SPRING = _core.DEFAULTS["SpringParticle.simulate"]
+_FRAME = _core.DEFAULTS["MovingFrame.__init__"]
 
 
 def _vector(value: Any, name: str) -> FloatArray:
@@ -169,11 +171,11 @@ class MovingFrame:
     def __init__(
         self,
         *,
-        origin: Any = 0,
-        velocity: Any = 0,
-        acceleration: Any = 0,
-        angular_velocity: Any = 0,
-        angular_acceleration: Any = 0,
+        origin: Any = _FRAME["origin"],
+        velocity: Any = _FRAME["velocity"],
+        acceleration: Any = _FRAME["acceleration"],
+        angular_velocity: Any = _FRAME["angular_velocity"],
+        angular_acceleration: Any = _FRAME["angular_acceleration"],
         attitude: Any = None,
     ) -> None:
         parts = [
@@ -239,7 +241,12 @@ class MovingFrame:
         )
 
     # -- transformations ------------------------------------------------------------------
-    def to_fixed(self, position: Any, velocity: Any = 0, acceleration: Any = 0) -> FrameTransform:
+    def to_fixed(
+        self,
+        position: Any,
+        velocity: Any = _core.DEFAULTS["MovingFrame.to_fixed"]["velocity"],
+        acceleration: Any = _core.DEFAULTS["MovingFrame.to_fixed"]["acceleration"],
+    ) -> FrameTransform:
         """The fixed-frame view of a particle given relative to this frame (eqs. 2.19–2.23).
 
         r' = R + r,  ṙ' = Ṙ + ṙ + ω × r,  r̈' = R̈ + r̈ + 2ω × ṙ + ω × (ω × r) + ω̇ × r.
@@ -269,7 +276,12 @@ class MovingFrame:
             {n: x.reshape(shape) for n, x in zip(names, out[3:])},
         )
 
-    def to_moving(self, position: Any, velocity: Any = 0, acceleration: Any = 0) -> FrameTransform:
+    def to_moving(
+        self,
+        position: Any,
+        velocity: Any = _core.DEFAULTS["MovingFrame.to_moving"]["velocity"],
+        acceleration: Any = _core.DEFAULTS["MovingFrame.to_moving"]["acceleration"],
+    ) -> FrameTransform:
         """The moving-frame view of a particle given in the fixed frame (inverse of
         :meth:`to_fixed`).
 
@@ -458,7 +470,7 @@ def simulate_particle(
     rtol: float = _PARTICLE["rtol"],
     atol: float = _PARTICLE["atol"],
     max_steps: int = _PARTICLE["max_steps"],
-    stiffness: float = 0.0,
+    stiffness: float = _PARTICLE["stiffness"],
 ) -> ParticleTrajectory:
     """Integrate a particle relative to a moving frame, with every fictitious force.
 
@@ -653,11 +665,11 @@ class SpringParticle:
         duration: float,
         *,
         force: Any = None,
-        samples: int = _PARTICLE["samples"],
+        samples: int = _SPRING["samples"],
         t_eval: Any = None,
-        rtol: float = _PARTICLE["rtol"],
-        atol: float = _PARTICLE["atol"],
-        max_steps: int = _PARTICLE["max_steps"],
+        rtol: float = _SPRING["rtol"],
+        atol: float = _SPRING["atol"],
+        max_steps: int = _SPRING["max_steps"],
     ) -> ParticleTrajectory:
         """Integrate the particle relative to ``frame`` with every fictitious force and the
         spring force, in the core: :func:`simulate_particle` with this ``mass`` and

@@ -496,7 +496,9 @@ class FreeRigidBody(show.Displayed):
         """L̂ = L / |L|, the unit normal of the invariable plane (space components, (3,))."""
         return np.asarray(self._core.invariable_plane_normal)
 
-    def contact_point(self, t: Any, frame: str = "space") -> FloatArray:
+    def contact_point(
+        self, t: Any, frame: str = _core.DEFAULTS["FreeRigidBody.contact_point"]["frame"]
+    ) -> FloatArray:
         """The point where the inertia ellipsoid ρ·I·ρ = 1 (fixed in the body) touches the
         invariable plane ρ·L̂ = :attr:`invariable_plane_distance` in Poinsot's construction:
         ρ = ω(t) / (2T)^½ (kg^-½·m^-1), shape t.shape + (3,).
@@ -510,7 +512,9 @@ class FreeRigidBody(show.Displayed):
         ts, shape = _times(t)
         return np.asarray(self._core.contact_point(ts, frame == "body")).reshape(shape + (3,))
 
-    def contact_polhode(self, samples: int = 721) -> FloatArray:
+    def contact_polhode(
+        self, samples: int = _core.DEFAULTS["FreeRigidBody.contact_polhode"]["samples"]
+    ) -> FloatArray:
         """The polhode drawn on the inertia ellipsoid ρ·I·ρ = 1: :meth:`polhode` scaled by
         (2T)^-½, body components, shape (samples, 3)."""
         return np.asarray(self._core.contact_polhode(_samples(samples)))
@@ -538,7 +542,9 @@ class FreeRigidBody(show.Displayed):
         ts, shape = _times(t)
         return np.asarray(self._core.angular_momentum_body(ts)).reshape(shape + (3,))
 
-    def polhode(self, samples: int = 721) -> FloatArray:
+    def polhode(
+        self, samples: int = _core.DEFAULTS["FreeRigidBody.polhode"]["samples"]
+    ) -> FloatArray:
         """``samples`` points of the polhode — ω over one period in body components (rad/s),
         shape (samples, 3); on the separatrix the branch from t = −12/λ to 12/λ."""
         return np.asarray(self._core.polhode(_samples(samples)))
@@ -562,7 +568,7 @@ class AxisStability(NamedTuple):
 
 
 def axis_stability(
-    moments: Any, spin: float = 1.0
+    moments: Any, spin: float = _core.DEFAULTS["axis_stability"]["spin"]
 ) -> tuple[AxisStability, AxisStability, AxisStability]:
     """The stability of steady rotation at ``spin`` rad/s about each principal axis of a body
     with principal moments ``moments`` (kg·m², (3,), any order): ε̈ = −spin² (I_i − I_j)(I_i −

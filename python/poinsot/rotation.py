@@ -37,6 +37,7 @@ from numpy.typing import NDArray
 
 from . import _core
 from . import _display as show
+from ._core import DEFAULTS as _DEFAULTS
 from ._validate import _is_scipy_rotation, as_float_array, as_scalar, as_triple
 from .errors import GimbalLockWarning, PoinsotError
 
@@ -158,7 +159,11 @@ def _run(lead: tuple[int, ...], fn: Any, *args: Any) -> Any:
 
 
 def euler_to_matrix(
-    angles: Any, seq: str = "zxz", *, intrinsic: bool = True, degrees: bool = False
+    angles: Any,
+    seq: str = _DEFAULTS["euler_to_matrix"]["seq"],
+    *,
+    intrinsic: bool = True,
+    degrees: bool = False,
 ) -> FloatArray:
     """Rotation matrices of Euler angles.
 
@@ -197,7 +202,11 @@ def euler_to_matrix(
 
 
 def matrix_to_euler(
-    R: Any, seq: str = "zxz", *, intrinsic: bool = True, degrees: bool = False
+    R: Any,
+    seq: str = _DEFAULTS["matrix_to_euler"]["seq"],
+    *,
+    intrinsic: bool = True,
+    degrees: bool = False,
 ) -> FloatArray:
     """Euler angles of rotation matrices: the inverse of :func:`euler_to_matrix`.
 
@@ -474,7 +483,12 @@ def _angular_velocity(
 
 
 def body_angular_velocity(
-    angles: Any, rates: Any, seq: str = "zxz", *, intrinsic: bool = True, degrees: bool = False
+    angles: Any,
+    rates: Any,
+    seq: str = _DEFAULTS["body_angular_velocity"]["seq"],
+    *,
+    intrinsic: bool = True,
+    degrees: bool = False,
 ) -> FloatArray:
     """Body-frame angular velocity from Euler angles and their rates (the unit's eq. 2.99).
 
@@ -513,7 +527,12 @@ def body_angular_velocity(
 
 
 def space_angular_velocity(
-    angles: Any, rates: Any, seq: str = "zxz", *, intrinsic: bool = True, degrees: bool = False
+    angles: Any,
+    rates: Any,
+    seq: str = _DEFAULTS["space_angular_velocity"]["seq"],
+    *,
+    intrinsic: bool = True,
+    degrees: bool = False,
 ) -> FloatArray:
     """Space-frame angular velocity from Euler angles and their rates (eq. 2.98 generalised).
 
@@ -533,10 +552,10 @@ def space_angular_velocity(
 def euler_rates(
     angles: Any,
     omega_body: Any,
-    seq: str = "zxz",
+    seq: str = _DEFAULTS["euler_rates"]["seq"],
     *,
     intrinsic: bool = True,
-    frame: str = "body",
+    frame: str = _DEFAULTS["euler_rates"]["frame"],
     degrees: bool = False,
 ) -> FloatArray:
     """Euler-angle rates from the angular velocity: the inverse of
@@ -672,7 +691,9 @@ def rotate_vectors(R: Any, v: Any) -> FloatArray:
     return _run(lead, _core.rotate_vectors, m, x).reshape(lead + (3,))
 
 
-def check_rotation_matrix(R: Any, *, tol: float = 1e-9) -> FloatArray:
+def check_rotation_matrix(
+    R: Any, *, tol: float = _DEFAULTS["check_rotation_matrix"]["tol"]
+) -> FloatArray:
     """Validates rotation matrices and returns them as a float64 array.
 
     Each matrix must be finite, orthonormal (``max|R^T R - I| <= tol``) and proper

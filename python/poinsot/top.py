@@ -30,6 +30,10 @@ from ._validate import FloatArray, as_angle, as_flag, as_flat, as_scalar, plain_
 
 __all__ = ["HeavyTop", "SteadyPrecession", "MOTION_CLASSES"]
 
+# The start rates and angles left out: the core's (poinsot::defaults::EulerState).
+_TOP = _core.DEFAULTS["HeavyTop.__init__"]
+_FROM_SPIN = _core.DEFAULTS["HeavyTop.from_spin"]
+
 MOTION_CLASSES = (
     "waves",
     "loops",
@@ -143,11 +147,11 @@ class HeavyTop(show.Displayed):
         mgl: float,
         theta: float,
         *,
-        theta_dot: float = 0.0,
-        phi_dot: float = 0.0,
-        psi_dot: float = 0.0,
-        phi: float = 0.0,
-        psi: float = 0.0,
+        theta_dot: float = _TOP["theta_dot"],
+        phi_dot: float = _TOP["phi_dot"],
+        psi_dot: float = _TOP["psi_dot"],
+        phi: float = _TOP["phi"],
+        psi: float = _TOP["psi"],
         degrees: bool = False,
     ) -> None:
         self._build(
@@ -172,10 +176,10 @@ class HeavyTop(show.Displayed):
         theta: float,
         omega3: float,
         *,
-        theta_dot: float = 0.0,
-        phi_dot: float = 0.0,
-        phi: float = 0.0,
-        psi: float = 0.0,
+        theta_dot: float = _FROM_SPIN["theta_dot"],
+        phi_dot: float = _FROM_SPIN["phi_dot"],
+        phi: float = _FROM_SPIN["phi"],
+        psi: float = _FROM_SPIN["psi"],
         degrees: bool = False,
     ) -> HeavyTop:
         """The top started at ``theta`` with the spin ``omega3`` (rad/s) given instead of

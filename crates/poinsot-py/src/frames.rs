@@ -392,20 +392,6 @@ fn frame_steady_at<'py>(
     Ok((vecs, mat3_out(py, att)))
 }
 
-/// The defaults of `simulate_particle`, the core's (`poinsot::frames::PARTICLE_*`):
-/// {"rtol", "atol", "max_steps", "mass", "samples"}.
-#[pyfunction]
-fn frame_particle_defaults(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
-    let t = poinsot::frames::PARTICLE_TOLERANCES;
-    let d = PyDict::new(py);
-    d.set_item("rtol", t.rtol)?;
-    d.set_item("atol", t.atol)?;
-    d.set_item("max_steps", t.max_steps)?;
-    d.set_item("mass", poinsot::frames::PARTICLE_MASS)?;
-    d.set_item("samples", poinsot::frames::PARTICLE_SAMPLES)?;
-    Ok(d)
-}
-
 /// Registers this file's functions on the module.
 /// A particle of `mass` (kg) on an isotropic spring of `stiffness` (N/m) anchored at the common
 /// origin of the fixed and the rotating frame (`poinsot::frames::SpringParticle`).
@@ -581,7 +567,6 @@ fn finite_pairs<'a>(
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<SpringParticleCore>()?;
-    m.add_function(wrap_pyfunction!(frame_particle_defaults, m)?)?;
     m.add_function(wrap_pyfunction!(frame_to_fixed, m)?)?;
     m.add_function(wrap_pyfunction!(frame_to_moving, m)?)?;
     m.add_function(wrap_pyfunction!(frame_fictitious_forces, m)?)?;

@@ -8,6 +8,7 @@
 mod analytic;
 mod control;
 mod convert;
+mod defaults;
 mod dynamics;
 mod earth;
 mod errors;
@@ -71,6 +72,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(check_count, m)?)?;
     m.add_function(wrap_pyfunction!(check_memory, m)?)?;
     m.add_function(wrap_pyfunction!(_test_panic, m)?)?;
+    defaults::register(m)?;
     errors::register(m)?;
     rotation::register(m)?;
     inertia::register(m)?;

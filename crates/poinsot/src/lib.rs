@@ -16,6 +16,7 @@
 //! | [`dynamics`] | Euler's equations with torques, attitude quaternions, `simulate` (exact flow, Lie–Poisson splitting, RK4, DOP853), batches | 2.67–2.76 |
 //! | [`analytic`] | closed forms: the free symmetric top, the free asymmetric top (Jacobi functions, Π), Poinsot's construction, axis stability; the heavy symmetric top (Lagrangian, effective potential, turning points, steady precession, exact motion) | 2.77–2.121 |
 //! | [`control`] | stopping long computations (Ctrl-C) and reporting their progress | — |
+//! | [`defaults`] | the defaults of every public call's options, stated once for every front end | — |
 //! | [`limits`] | the memory budget and step limits checked before work starts | — |
 //! | `simd` (private) | lanes of doubles for the batch kernels, run with the widest vector instructions of the CPU | — |
 //! | [`special`] | Jacobi elliptic functions sn, cn, dn, am (parameter m = k²) and elliptic integrals F, E, K, Π | — |
@@ -52,6 +53,7 @@
 
 pub mod analytic;
 pub mod control;
+pub mod defaults;
 pub mod dynamics;
 pub mod earth;
 pub mod error;

@@ -58,13 +58,18 @@ pub struct CubatureOptions {
     pub max_evals: usize,
 }
 
+impl CubatureOptions {
+    /// The defaults: rtol 1e-6, atol 0, 10⁷ evaluations (`crate::defaults::CUBATURE`).
+    pub const DEFAULT: Self = Self {
+        rtol: 1e-6,
+        atol: 0.0,
+        max_evals: 10_000_000,
+    };
+}
+
 impl Default for CubatureOptions {
     fn default() -> Self {
-        Self {
-            rtol: 1e-6,
-            atol: 0.0,
-            max_evals: 10_000_000,
-        }
+        Self::DEFAULT
     }
 }
 
