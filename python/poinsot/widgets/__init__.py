@@ -18,6 +18,7 @@ Needs the ``notebook`` extra: ``pip install 'poinsot[notebook]'``.
 
 from __future__ import annotations
 
+import json
 import math
 from dataclasses import dataclass
 from pathlib import Path
@@ -67,44 +68,31 @@ class Choice:
     value: str
 
 
-#: The parameters of the scenes the widgets show, as the lab's scenes declare them
-#: (``web/src/scenes/{heavytop,poinsot,frames}.ts``; the browser test checks that the sliders the
-#: widget draws have these ranges).
+#: The lab's parameters of the scenes the widgets show, and their presets: the one data file
+#: that the lab's scenes (``web/src/scenes/params.ts``) import too.
+SCENES_JSON = Path(__file__).with_name("scenes.json")
+_SCENES: dict[str, Any] = json.loads(SCENES_JSON.read_text(encoding="utf-8"))
+
+
+def _param(spec: dict[str, Any]) -> Slider | Choice:
+    """A scene parameter of scenes.json (a slider's or a select's declaration in the lab)."""
+    if spec["kind"] == "choice":
+        return Choice(tuple(spec["options"]), spec["value"])
+    return Slider(spec["min"], spec["max"], spec["step"], spec["value"], spec["unit"])
+
+
+#: The parameters of the scenes the widgets show, as the lab's scenes declare them (read from
+#: ``scenes.json``; the browser test checks that the sliders the widget draws have these ranges).
 SCENE_PARAMS: dict[str, dict[str, Slider | Choice]] = {
-    "heavytop": {
-        "preset": Choice(
-            ("loops", "waves", "cusps", "steady precession", "sleeping", "custom"), "loops"
-        ),
-        "w3": Slider(0, 40, 0.5, 9, "rad/s"),
-        "theta0": Slider(0, 2.97, 0.01, 0.87, "rad"),
-        "phiDot0": Slider(-3, 3, 0.05, 0.5, "rad/s"),
-        "thetaDot0": Slider(-3, 3, 0.05, 0, "rad/s"),
-        "mgl": Slider(0, 5, 0.05, 1.5, "N·m"),
-        "I1": Slider(0.2, 3, 0.05, 1, "kg·m²"),
-        "I3": Slider(0.1, 3, 0.05, 0.5, "kg·m²"),
-    },
-    "poinsot": {
-        "view": Choice(("Poinsot ellipsoid", "tumbling box"), "Poinsot ellipsoid"),
-        "axis": Choice(("intermediate", "smallest", "largest"), "intermediate"),
-        "eps": Slider(0, 1, 0.005, 0.05, "× spin"),
-        "spin": Slider(0.5, 10, 0.1, 4, "rad/s"),
-        "a": Slider(0.02, 0.4, 0.005, 0.24, "m"),
-        "b": Slider(0.02, 0.4, 0.005, 0.16, "m"),
-        "c": Slider(0.02, 0.4, 0.005, 0.04, "m"),
-    },
-    "frames": {
-        "omega": Slider(-2, 2, 0.05, 0.8, "rad/s"),
-        "omegaDot": Slider(-0.5, 0.5, 0.05, 0, "rad/s²"),
-        "stiffness": Slider(0, 4, 0.1, 0, "N/m"),
-        "r0": Slider(0, 1, 0.05, 0.8, "m"),
-        "speed": Slider(0, 2, 0.05, 0.6, "m/s"),
-        "direction": Slider(-3.15, 3.15, 0.05, 2.6, "rad"),
-        "launch": Choice(("fixed frame", "rotating frame"), "fixed frame"),
-    },
+    scene: {spec["key"]: _param(spec) for spec in _SCENES[scene]["params"]}
+    for scene in ("heavytop", "poinsot", "frames")
 }
 
-#: The mass of the Poinsot scene's box (kg): ``BOX_MASS`` of web/src/scenes/poinsot.ts.
-BOX_MASS = 1.0
+#: The mass of the Poinsot scene's box (kg), the lab's.
+BOX_MASS: float = _SCENES["poinsot"]["boxMass"]
+#: The heavy top's presets released at a fraction of the core's slow steady precession at θ₀:
+#: that fraction, by preset (the lab's).
+_PRECESSION_FACTORS: dict[str, float] = _SCENES["heavytop"]["precessionFactors"]
 #: The Poinsot scene's names of the spun axis, by the rank of its moment.
 _RANKS = ("smallest", "intermediate", "largest")
 #: Relative tolerance of the round trip object -> params -> object (a few roundings).
@@ -212,7 +200,8 @@ class HeavyTopWidget(_SceneWidget):
         I1, I3, mgl, w3 = p["I1"], p["I3"], p["mgl"], p["w3"]
         preset, theta0 = p["preset"], p["theta0"]
         # The scene's presets (web/src/scenes/heavytop.ts, initialState): initial conditions, not
-        # physics; loops/waves/steady are released at a fraction of the core's slow rate.
+        # physics; loops/waves/steady are released at a fraction of the core's slow rate
+        # (scenes.json's precessionFactors).
         if preset == "sleeping":
             return HeavyTop.from_spin(I1, I3, mgl, 0.0, w3)
         if preset == "custom":
@@ -222,7 +211,7 @@ class HeavyTopWidget(_SceneWidget):
         if preset == "cusps":
             return HeavyTop.from_spin(I1, I3, mgl, theta0, w3)
         slow = HeavyTop.steady_precession(I1, I3, mgl, theta0, w3).slow
-        factor = {"loops": -0.5, "waves": 0.5, "steady precession": 1.0}[preset]
+        factor = _PRECESSION_FACTORS[preset]
         return HeavyTop.from_spin(I1, I3, mgl, theta0, w3, phi_dot=factor * slow)
 
     @top.setter

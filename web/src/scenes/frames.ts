@@ -9,6 +9,7 @@ import * as THREE from "three";
 import { MovingFrame, SpringParticle, sampleTimes, simulateParticle } from "../core";
 import { fmt, fmtVec, type Params, type Readout, type Rect, type SceneDef } from "../scene";
 import { Arrow, axisLabels, bufferLine, disposeTree, fixedAxes, Labels, matrix4, projectBox, vec } from "../view";
+import { sceneParams } from "./params";
 
 /** Drawn radius of the turntable (m). */
 const TABLE = 1;
@@ -80,15 +81,7 @@ export const framesScene: SceneDef = {
     "The core integrates it in the rotating frame, m a_rel = F − 2m ω×v − m ω×(ω×r) − m ω̇×r (2.26–2.28), and maps it back (2.20–2.21): " +
     "a free particle (k = 0) runs straight on the left and curves on the right. Arrows on the right: the relative acceleration and the forces per mass that make it. " +
     "Primed axes (x′, y′) are fixed, unprimed ones (x, y) turn with the table; the loop restarts when the particle reaches the rim.",
-  params: [
-    { kind: "number", key: "omega", label: "table ω", unit: "rad/s", min: -2, max: 2, step: 0.05, value: 0.8 },
-    { kind: "number", key: "omegaDot", label: "table ω̇", unit: "rad/s²", min: -0.5, max: 0.5, step: 0.05, value: 0 },
-    { kind: "number", key: "stiffness", label: "spring k (m = 1 kg)", unit: "N/m", min: 0, max: 4, step: 0.1, value: 0 },
-    { kind: "number", key: "r0", label: "start radius r₀", unit: "m", min: 0, max: 1, step: 0.05, value: 0.8 },
-    { kind: "number", key: "speed", label: "launch speed v₀", unit: "m/s", min: 0, max: 2, step: 0.05, value: 0.6 },
-    { kind: "number", key: "direction", label: "launch direction", unit: "rad", min: -3.15, max: 3.15, step: 0.05, value: 2.6 },
-    { kind: "choice", key: "launch", label: "v₀ is given in the", options: ["fixed frame", "rotating frame"], value: "fixed frame" },
-  ],
+  params: sceneParams("frames"),
   create(ctx) {
     const root = new THREE.Group();
     ctx.scene.add(root);

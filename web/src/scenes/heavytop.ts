@@ -8,8 +8,9 @@ import * as THREE from "three";
 import { eulerToMatrix, HeavyTop } from "../core";
 import { angles, fmt, type Params, type Readout, type SceneDef } from "../scene";
 import { axisLabels, bufferLine, disposeTree, fixedAxes, matrix4 } from "../view";
+import { choiceOptions, PRECESSION_FACTORS, sceneParams } from "./params";
 
-export const PRESETS = ["loops", "waves", "cusps", "steady precession", "sleeping", "custom"];
+export const PRESETS = choiceOptions("heavytop", "preset");
 
 /** The radius of the sphere the axis' tip moves on (the top's length from pivot to stem tip). */
 const R_TIP = 2;
@@ -37,7 +38,7 @@ function initialState(p: Params): { theta0: number; thetaDot0: number; phiDot0: 
   const s = HeavyTop.steadyPrecession(I1, I3, mgl, theta0, w3);
   const slow = s.slow;
   s.free();
-  const factor = preset === "loops" ? -0.5 : preset === "waves" ? 0.5 : 1;
+  const factor = PRECESSION_FACTORS[preset];
   return { theta0, thetaDot0: 0, phiDot0: factor * slow };
 }
 
@@ -308,16 +309,11 @@ export const heavyTopScene: SceneDef = {
     "loops when φ̇ changes sign, waves when it does not, cusps when released at rest in θ and φ. " +
     "Presets start at θ₀ with θ̇₀ = 0 and φ̇₀ a fraction of the slow steady precession (loops −½, cusps 0, waves ½, steady 1); " +
     "“sleeping” stands the top upright (θ₀ = 0); “custom” uses the φ̇₀, θ̇₀ sliders.",
-  params: [
-    { kind: "choice", key: "preset", label: "Motion", options: PRESETS, value: "loops" },
-    { kind: "number", key: "w3", label: "spin ω₃", unit: "rad/s", min: 0, max: 40, step: 0.5, value: 9 },
-    { kind: "number", key: "theta0", label: "tilt θ₀", unit: "rad", min: 0, max: 2.97, step: 0.01, value: 0.87, when: (p) => p.preset !== "sleeping" },
-    { kind: "number", key: "phiDot0", label: "φ̇₀", unit: "rad/s", min: -3, max: 3, step: 0.05, value: 0.5, when: (p) => p.preset === "custom" },
-    { kind: "number", key: "thetaDot0", label: "θ̇₀", unit: "rad/s", min: -3, max: 3, step: 0.05, value: 0, when: (p) => p.preset === "custom" },
-    { kind: "number", key: "mgl", label: "m g l", unit: "N·m", min: 0, max: 5, step: 0.05, value: 1.5 },
-    { kind: "number", key: "I1", label: "I₁ (pivot)", unit: "kg·m²", min: 0.2, max: 3, step: 0.05, value: 1 },
-    { kind: "number", key: "I3", label: "I₃", unit: "kg·m²", min: 0.1, max: 3, step: 0.05, value: 0.5 },
-  ],
+  params: sceneParams("heavytop", {
+    theta0: (p) => p.preset !== "sleeping",
+    phiDot0: (p) => p.preset === "custom",
+    thetaDot0: (p) => p.preset === "custom",
+  }),
   create(ctx) {
     const root = new THREE.Group();
     ctx.scene.add(root);

@@ -13,11 +13,10 @@ import * as THREE from "three";
 import { axisStability, FreeRigidBody, RigidBody } from "../core";
 import { fmt, fmtVec, type Params, type Readout, type SceneDef } from "../scene";
 import { Arrow, AXIS_COLORS, axisLabels, bufferLine, disposeTree, fixedAxes, quaternion, vec } from "../view";
+import { BOX_MASS, choiceOptions, sceneParams } from "./params";
 
-export const POINSOT_VIEWS = ["Poinsot ellipsoid", "tumbling box"];
-export const SPIN_AXES = ["intermediate", "smallest", "largest"];
-/** The box's mass (kg): it scales T and L only. */
-export const BOX_MASS = 1;
+export const POINSOT_VIEWS = choiceOptions("poinsot", "view");
+export const SPIN_AXES = choiceOptions("poinsot", "axis");
 /** Display radius of the ellipsoid's longest semi-axis and of the box's longest half-side. */
 const R_ELLIPSOID = 1.6;
 const R_BOX = 1.45;
@@ -142,15 +141,7 @@ export const poinsotScene: SceneDef = {
     "rolls without slipping on the invariable plane ⊥ L at distance (2T)^½/|L|, touching it at ρ = ω/(2T)^½; orange: the polhode " +
     "(on the body), white: the herpolhode (on the plane). ω(0) = spin along the chosen axis + ε·spin along each other axis. Tumbling box: spun about the intermediate axis it flips every half period " +
     "(Dzhanibekov); about the smallest or largest axis it only wobbles. White arrow ω, blue arrow L.",
-  params: [
-    { kind: "choice", key: "view", label: "View", options: POINSOT_VIEWS, value: POINSOT_VIEWS[0] },
-    { kind: "choice", key: "axis", label: "Spin about the axis of moment", options: SPIN_AXES, value: "intermediate" },
-    { kind: "number", key: "eps", label: "perturbation ε", unit: "× spin", min: 0, max: 1, step: 0.005, value: 0.05 },
-    { kind: "number", key: "spin", label: "spin ω(0) on the axis", unit: "rad/s", min: 0.5, max: 10, step: 0.1, value: 4 },
-    { kind: "number", key: "a", label: "side a (along x)", unit: "m", min: 0.02, max: 0.4, step: 0.005, value: 0.24 },
-    { kind: "number", key: "b", label: "side b (along y)", unit: "m", min: 0.02, max: 0.4, step: 0.005, value: 0.16 },
-    { kind: "number", key: "c", label: "side c (along z)", unit: "m", min: 0.02, max: 0.4, step: 0.005, value: 0.04 },
-  ],
+  params: sceneParams("poinsot"),
   create(ctx) {
     const root = new THREE.Group();
     ctx.scene.add(root);
