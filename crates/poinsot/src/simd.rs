@@ -425,6 +425,23 @@ pub(crate) const COS_TAYLOR: [f64; 10] = [
     -1.0 / 6_402_373_705_728_000.0,
 ];
 
+/// The Taylor coefficients of atan x / x in z = x² (to x²¹): the heavy top's θ = 2 atan(√(w/v))
+/// (scalar and on lanes, `heavy_top::fourier`) and, as the series of R_C(1, 1 + z) =
+/// atan(√z)/√z, Carlson's R_C next to its pole (`special::carlson`, its first ten).
+pub(crate) const ATAN_TAYLOR: [f64; 11] = [
+    1.0,
+    -1.0 / 3.0,
+    1.0 / 5.0,
+    -1.0 / 7.0,
+    1.0 / 9.0,
+    -1.0 / 11.0,
+    1.0 / 13.0,
+    -1.0 / 15.0,
+    1.0 / 17.0,
+    -1.0 / 19.0,
+    1.0 / 21.0,
+];
+
 /// sin y and cos y for |y| ≤ π/4 (a hair beyond is harmless): Taylor series in z = y², Horner.
 #[inline(always)]
 pub(crate) fn sin_cos_kernel<S: Simd>(y: F64s<S>) -> (F64s<S>, F64s<S>) {

@@ -20,6 +20,7 @@
 //! finite, x, y, z ≥ 0 with at most one of them zero, p ≠ 0 (p < 0: Cauchy principal value).
 
 use super::fp::{exponent, ldexp};
+use crate::simd::ATAN_TAYLOR;
 
 /// Relative spread below which the R_F series is summed: its first neglected terms are of
 /// degree 8 in the spread, 0.003⁸ ≈ 7e-21 (below ε/4 = 5.5e-17 with a wide margin).
@@ -57,23 +58,15 @@ fn quarter_scale(args: &[f64]) -> i32 {
 }
 
 /// R_C(1, 1 + e) for e > −1: `atan(√e)/√e`, `atanh(√−e)/√−e`, or its Maclaurin series
-/// `1 − e/3 + e²/5 − …` for |e| < 0.01 (10 terms: the first neglected, e¹⁰/21, is < 5e-22).
+/// `1 − e/3 + e²/5 − …` (atan x / x in e = x², [`ATAN_TAYLOR`]) for |e| < 0.01 (10 terms: the
+/// first neglected, e¹⁰/21, is < 5e-22).
 #[inline]
 fn rc1p(e: f64) -> f64 {
     if e.abs() < 0.01 {
-        const C: [f64; 10] = [
-            1.0,
-            -1.0 / 3.0,
-            1.0 / 5.0,
-            -1.0 / 7.0,
-            1.0 / 9.0,
-            -1.0 / 11.0,
-            1.0 / 13.0,
-            -1.0 / 15.0,
-            1.0 / 17.0,
-            -1.0 / 19.0,
-        ];
-        C.iter().rev().fold(0.0, |acc, &c| acc * e + c)
+        ATAN_TAYLOR[..10]
+            .iter()
+            .rev()
+            .fold(0.0, |acc, &c| acc * e + c)
     } else if e > 0.0 {
         let r = e.sqrt();
         r.atan() / r

@@ -22,7 +22,7 @@
 //! [`MAX_TERMS`] terms would be needed, and the solution is evaluated by Carlson's R_J instead.
 
 use crate::simd::{
-    rotate_by_quadrant, sin_cos_kernel, F64s, Simd, WithSimd, COS_TAYLOR, SIN_TAYLOR,
+    rotate_by_quadrant, sin_cos_kernel, F64s, Simd, WithSimd, ATAN_TAYLOR, COS_TAYLOR, SIN_TAYLOR,
 };
 use crate::special::carlson::{rd, rf};
 use std::f64::consts::PI;
@@ -438,21 +438,6 @@ fn sin_cos_reduced(r: f64) -> (f64, f64) {
 /// that to π/4 + atan(…) (tan(3π/16)).
 const THETA_FIRST: f64 = 0.198_912_367_379_658;
 const THETA_SECOND: f64 = 0.668_178_637_919_298_9;
-
-/// The Taylor coefficients of atan x / x in z = x² (to x²¹).
-const ATAN_TAYLOR: [f64; 11] = [
-    1.0,
-    -1.0 / 3.0,
-    1.0 / 5.0,
-    -1.0 / 7.0,
-    1.0 / 9.0,
-    -1.0 / 11.0,
-    1.0 / 13.0,
-    -1.0 / 15.0,
-    1.0 / 17.0,
-    -1.0 / 19.0,
-    1.0 / 21.0,
-];
 
 /// θ = 2 atan(√(w/v)) ∈ [0, π] for w, v ≥ 0 (not both 0), within a few ulp: the ratio t of the
 /// smaller to the larger root lies in [0, 1]; `atan t = kπ/8 + atan((t − tan kπ/8)/(1 + t tan kπ/8))`

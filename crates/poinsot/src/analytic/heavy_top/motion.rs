@@ -627,3 +627,29 @@ impl Nutation {
         [fw + fv, theta_dot, self.c_psi - fw + fv]
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::special::integrals::pi_complete_split;
+
+    /// Π(n | m) of the nutation's third-kind integrals next to the separatrix (1 − m down to
+    /// 1e-300: R_J(0, 1 − m, 1, 1 − n) has two arguments hundreds of decades below the others)
+    /// against Legendre's Π of `special` (there by the asymptotic form for n in (0, 1), by the
+    /// positive-term form for n < 0): the one R_J of `special::carlson` at its widest spread.
+    #[test]
+    fn complete_third_kind_integrals_next_to_the_separatrix() {
+        for &mc in &[1e-30, 1e-100, 1e-300] {
+            let m = 1.0 - mc;
+            let k = Jacobi::with_complement(m, mc).unwrap().quarter_period();
+            for &n in &[0.3, -2.0] {
+                let got = Third::new(n, 1.0 - n, k, mc).complete;
+                let want = pi_complete_split(n, m, mc).unwrap();
+                assert!(
+                    (got / want - 1.0).abs() < 1e-14,
+                    "m₁ = {mc:e}, n = {n}: {got} against {want}"
+                );
+            }
+        }
+    }
+}
