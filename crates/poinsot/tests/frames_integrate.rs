@@ -1,7 +1,7 @@
 //! Tests of the ODE integrators (`poinsot::integrate`) against closed-form solutions.
 
 use nalgebra::SVector;
-use poinsot::integrate::{dop853, dop853_scan, dop853_until, rk4, Crossing, Options};
+use poinsot::integrate::{dop853, dop853_scan, dop853_until, Crossing, Options};
 use poinsot::ErrorKind;
 
 /// Harmonic oscillator y'' = −y as a first-order system.
@@ -217,23 +217,6 @@ fn dop853_refuses_bad_options() {
     )
     .unwrap_err();
     assert_eq!(err.argument, "t_end");
-}
-
-#[test]
-fn rk4_converges_at_fourth_order() {
-    let err = |n: usize| {
-        let sol = rk4(oscillator, 0.0, [1.0, 0.0], 5.0, n).unwrap();
-        (sol.y_final()[0] - 5f64.cos()).abs()
-    };
-    let (e1, e2) = (err(100), err(200));
-    let order = (e1 / e2).log2();
-    assert!((order - 4.0).abs() < 0.1, "observed order {order}");
-    assert_eq!(
-        rk4(oscillator, 0.0, [1.0, 0.0], 1.0, 0)
-            .unwrap_err()
-            .argument,
-        "steps"
-    );
 }
 
 #[test]

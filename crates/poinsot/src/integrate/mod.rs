@@ -3,7 +3,6 @@
 //! * [`dop853`] / [`Dop853`]: the adaptive embedded Dormand–Prince 8(5,3) pair with error
 //!   control, 7th-order dense output and terminal events (Hairer, Nørsett & Wanner,
 //!   *Solving Ordinary Differential Equations I*, §II.5–II.6);
-//! * [`rk4`]: the classic fixed-step 4th-order Runge–Kutta method;
 //! * [`compose`]: symmetric composition of a symmetric second-order map to orders 4 and 6
 //!   (triple jump, Kahan–Li), used by the Lie–Poisson splitting of the rigid body
 //!   (`crate::dynamics`).
@@ -17,7 +16,6 @@ mod dop853;
 mod dop853_coefficients;
 mod grid;
 mod options;
-mod rk4;
 mod solution;
 mod state;
 
@@ -27,6 +25,5 @@ pub use composition::{
 pub use dop853::{dop853, dop853_scan, dop853_until, Dop853, Scan};
 pub use grid::{even_times, sample_before, sample_times};
 pub use options::{Crossing, Options, Stats, Tolerances, MIN_RTOL};
-pub use rk4::{rk4, rk4_step};
 pub use solution::{DenseStep, EventHit, Solution};
 pub use state::{OdeState, OdeSystem};
