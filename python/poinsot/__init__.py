@@ -62,9 +62,3 @@ __all__ = [
 
 from . import special as _special
 from . import sweep
-from ._guard import guard as _guard
-
-# No Rust panic reaches a user as PanicException: see _guard.py.
-_guard(globals(), __all__)
-_guard(vars(_special), _special.__all__)
-_guard(vars(sweep), sweep.__all__)

@@ -13,8 +13,8 @@ Every error poinsot raises for bad input is a :class:`PoinsotError`, which is al
         ├── ArgumentTypeError      an argument of the wrong type (also a TypeError)
         └── InternalError          a bug: a panic in the compiled core (please report it)
 
-The types but the last are created by the compiled core (so that Rust errors map to them in
-one place, ``crates/poinsot-py/src/errors.rs``) and re-exported here.
+The types but :class:`ArgumentTypeError` are created by the compiled core (so that Rust errors
+and panics map to them in one place, ``crates/poinsot-py/src/errors.rs``) and re-exported here.
 
 The contract (pinned by the fuzz suite, ``python/tests/test_fuzz.py``): every call either
 returns finite numbers only (but for documented infinities, such as the pitch of a pure
@@ -28,6 +28,7 @@ from __future__ import annotations
 from ._core import (
     GimbalLockError,
     IntegrationError,
+    InternalError,
     InvalidInertiaError,
     InvalidMeshError,
     InvalidRotationError,
@@ -39,12 +40,6 @@ class ArgumentTypeError(PoinsotError, TypeError):
     """An argument of the wrong type: text or complex numbers where real numbers are expected,
     a float where a count is, a non-boolean flag. Both a :class:`PoinsotError` and a
     ``TypeError``, so either ``except`` clause catches it."""
-
-
-class InternalError(PoinsotError):
-    """A bug in poinsot: the compiled core panicked (it validates its input first, so this
-    should never happen). Raised instead of ``pyo3_runtime.PanicException``, which would escape
-    ``except Exception``; the message asks for a report."""
 
 
 class GimbalLockWarning(UserWarning):

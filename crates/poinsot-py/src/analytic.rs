@@ -4,6 +4,7 @@ use poinsot::analytic::{
     axis_stability as core_axis_stability, free_body_states as core_free_body_states,
     FreeRigidBody, FreeSymmetricTop, StateTimes,
 };
+use poinsot_py_macros::export;
 use pyo3::prelude::*;
 
 use crate::control::{map_each, run};
@@ -33,7 +34,7 @@ pub struct PySymmetricTop {
     inner: FreeSymmetricTop,
 }
 
-#[pymethods]
+#[export]
 impl PySymmetricTop {
     #[new]
     #[pyo3(signature = (i1, i3, omega0, attitude0=None))]
@@ -148,7 +149,7 @@ pub struct PyFreeBody {
     inner: FreeRigidBody,
 }
 
-#[pymethods]
+#[export]
 impl PyFreeBody {
     #[new]
     #[pyo3(signature = (moments, omega0, attitude0=None))]
@@ -287,7 +288,7 @@ impl PyFreeBody {
 }
 
 /// The stability of steady rotation about each principal axis: [(kind, rate)] × 3.
-#[pyfunction]
+#[export]
 fn axis_stability(
     moments: PyReadonlyArray1<'_, f64>,
     spin: f64,
@@ -305,7 +306,7 @@ fn axis_stability(
 /// principal moments (N, 3), ω₀ (N, 3), attitudes (N, 4) or None, and the times `t` flat: M
 /// values for every body, or (`per_body`) N·M values row-major → (ω (N, M, 3), attitude
 /// (N, M, 4)).
-#[pyfunction]
+#[export]
 #[pyo3(signature = (moments, omega0, attitude0, t, per_body, progress))]
 #[allow(clippy::type_complexity)]
 fn free_body_states<'py>(

@@ -11,6 +11,7 @@ use poinsot::dynamics::{
     self as dyn_core, BodyInertia, Method, SimulateOptions, TorqueContext, TorqueKind, TorqueModel,
 };
 use poinsot::Vec3;
+use poinsot_py_macros::export;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -71,7 +72,7 @@ impl TorqueModel for PyTorque<'_, '_> {
 /// Simulates one body (see `poinsot.simulate`); returns a dict of numpy arrays ("t", "omega",
 /// "attitude", "angular_momentum", "energy", "potential", "power") and counters ("method",
 /// "step", "steps", "torque_evaluations").
-#[pyfunction]
+#[export]
 #[pyo3(signature = (inertia, omega0, attitude0, duration, torque_kind, torque_vector, torque_scalar, torque_fn, method, dt, samples, rtol, atol, max_steps, progress))]
 #[allow(clippy::too_many_arguments)]
 fn dynamics_simulate<'py>(
@@ -144,7 +145,7 @@ fn dynamics_simulate<'py>(
 
 /// Simulates many bodies in parallel (see `poinsot.simulate_batch`): principal moments (N, 3),
 /// ω₀ (N, 3), optional attitudes (N, 4) → (ω (N, 3), attitude (N, 4), steps per body).
-#[pyfunction]
+#[export]
 #[pyo3(signature = (moments, omega0, attitude0, duration, torque_kind, torque_vector, torque_scalar, method, dt, max_steps, progress))]
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
 fn dynamics_simulate_batch<'py>(

@@ -1,4 +1,4 @@
-//! The one place where core errors become Python exceptions.
+//! The one place where core errors and panics become Python exceptions.
 //!
 //! The exception tree is rooted at `poinsot.PoinsotError`, which is also a `ValueError`:
 //!
@@ -9,9 +9,18 @@
 //!     ├── InvalidRotationError
 //!     ├── InvalidMeshError
 //!     ├── GimbalLockError
-//!     └── IntegrationError
+//!     ├── IntegrationError
+//!     └── InternalError      a panic (a bug), caught by [`guard`]
 //! ```
+//!
+//! Every export goes through [`guard`] (the `#[export]` attribute of `poinsot-py-macros` wraps
+//! each `#[pyfunction]` and each method of a `#[pymethods]` block in it), so no panic reaches
+//! Python as pyo3's `PanicException`.
+use std::any::Any;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
 use poinsot::{Error, ErrorKind};
+use poinsot_py_macros::export;
 use pyo3::create_exception;
 use pyo3::exceptions::{PyKeyboardInterrupt, PyValueError};
 use pyo3::prelude::*;
@@ -43,6 +52,12 @@ create_exception!(
     PoinsotError,
     "A numerical integration diverged or could not reach its tolerance."
 );
+create_exception!(
+    poinsot,
+    InternalError,
+    PoinsotError,
+    "A bug in poinsot: the compiled core panicked (it validates its input first, so this should never happen). Raised instead of ``pyo3_runtime.PanicException``, which would escape ``except Exception``; the message asks for a report."
+);
 
 /// The exception class named `name` (one of the core's [`ErrorKind::class_name`]s): the types
 /// created above, or Python's `KeyboardInterrupt` (a monitor stopped the run without keeping a
@@ -69,7 +84,7 @@ pub fn to_py(e: Error) -> PyErr {
 
 /// The core's table of exception classes: `[(kind, class name)]` for every kind (the same
 /// table the WebAssembly binding's `errorClasses()` returns).
-#[pyfunction]
+#[export]
 fn error_classes() -> Vec<(&'static str, &'static str)> {
     ErrorKind::ALL
         .iter()
@@ -94,6 +109,40 @@ pub fn invalid(argument: &str, message: impl Into<String>) -> PyErr {
     to_py(Error::invalid(argument, message))
 }
 
+/// Runs `f`, the body of the export `class.name` (`class` empty for a module function, `name`
+/// empty for a constructor), turning a panic anywhere below it — in the binding, in the core,
+/// on a thread of the core's pool (rayon hands the panic back to the caller) — into
+/// [`InternalError`]: the one panic guard of the binding, through which every export goes
+/// (`#[export]`). Free when nothing panics (`catch_unwind` costs nothing on the normal path).
+#[inline(always)]
+pub fn guard<T>(
+    class: &'static str,
+    name: &'static str,
+    f: impl FnOnce() -> PyResult<T>,
+) -> PyResult<T> {
+    catch_unwind(AssertUnwindSafe(f)).unwrap_or_else(|payload| Err(panicked(class, name, payload)))
+}
+
+/// The [`InternalError`] of a panic: `"class.name: internal error in poinsot's core (message);
+/// this is a bug, please report it with the call that caused it"`.
+#[cold]
+fn panicked(class: &str, name: &str, payload: Box<dyn Any + Send>) -> PyErr {
+    let what = payload
+        .downcast_ref::<String>()
+        .map(String::as_str)
+        .or_else(|| payload.downcast_ref::<&str>().copied())
+        .unwrap_or("a panic without a message");
+    let sep = if class.is_empty() || name.is_empty() {
+        ""
+    } else {
+        "."
+    };
+    InternalError::new_err(format!(
+        "{class}{sep}{name}: internal error in poinsot's core ({what}); this is a bug, please \
+         report it with the call that caused it"
+    ))
+}
+
 /// Registers the exception types on the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
@@ -103,6 +152,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
             m.add(name, class(py, name))?;
         }
     }
+    m.add("InternalError", py.get_type::<InternalError>())?;
     m.add_function(wrap_pyfunction!(error_classes, m)?)?;
     Ok(())
 }

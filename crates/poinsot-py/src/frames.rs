@@ -13,6 +13,7 @@ use poinsot::frames::{
 };
 use poinsot::integrate::{Scan, Solution};
 use poinsot::{Mat3, Vec3};
+use poinsot_py_macros::export;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -88,7 +89,7 @@ fn columns<'py, const K: usize>(
 
 /// Transforms (N, 3) moving-frame positions, velocities and accelerations to the fixed frame:
 /// (position, velocity, acceleration, relative, origin, coriolis, centripetal, euler).
-#[pyfunction]
+#[export]
 #[allow(clippy::type_complexity)]
 fn frame_to_fixed<'py>(
     py: Python<'py>,
@@ -118,7 +119,7 @@ fn frame_to_fixed<'py>(
 
 /// Transforms (N, 3) fixed-frame positions, velocities and accelerations to the moving frame:
 /// (position, velocity, acceleration, inertial, translational, coriolis, centrifugal, euler).
-#[pyfunction]
+#[export]
 #[allow(clippy::type_complexity)]
 fn frame_to_moving<'py>(
     py: Python<'py>,
@@ -148,7 +149,7 @@ fn frame_to_moving<'py>(
 
 /// Fictitious forces on (N,) masses at (N, 3) positions with (N, 3) velocities in the frame:
 /// (translational, coriolis, centrifugal, euler).
-#[pyfunction]
+#[export]
 fn frame_fictitious_forces<'py>(
     py: Python<'py>,
     frame: PyReadonlyArray1<'py, f64>,
@@ -235,7 +236,7 @@ impl FrameMotion for PyFrame<'_, '_> {
 /// evenly spaced ones from `t0` to `t_end`; the force is a
 /// constant (3,) vector in moving components plus, optionally, a callable
 /// `(t, x, y, z, vx, vy, vz) -> (fx, fy, fz)`.
-#[pyfunction]
+#[export]
 #[pyo3(signature = (frame, frame_fn, mass, position, velocity, t0, t_end, samples, times, force, force_fn, rtol, atol, max_steps, stiffness = 0.0))]
 #[allow(clippy::too_many_arguments)]
 fn frame_simulate_particle<'py>(
@@ -368,7 +369,7 @@ type ScanOut<'py> = (Bound<'py, PyArray2<f64>>, usize);
 
 /// The state of a steady frame at time `t`: (origin, velocity, acceleration, angular velocity,
 /// angular acceleration, attitude).
-#[pyfunction]
+#[export]
 #[allow(clippy::type_complexity)]
 fn frame_steady_at<'py>(
     py: Python<'py>,
@@ -400,7 +401,7 @@ struct SpringParticleCore {
     inner: SpringParticle,
 }
 
-#[pymethods]
+#[export]
 impl SpringParticleCore {
     #[new]
     fn new(mass: f64, stiffness: f64) -> PyResult<Self> {

@@ -4,6 +4,7 @@
 //! `poinsot.HeavyTop` (python/poinsot/top.py), which holds one of these.
 use numpy::{PyArray2, PyArrayMethods, PyReadonlyArray1};
 use poinsot::analytic::{self, EulerState, HeavyTop};
+use poinsot_py_macros::export;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -51,7 +52,7 @@ fn one(t: f64, f: impl Fn(&[f64], &mut [f64]) -> poinsot::Result<()>) -> PyResul
     Ok((out[0], out[1], out[2]))
 }
 
-#[pymethods]
+#[export]
 impl PyHeavyTop {
     /// The top (I₁, I₃, m g l) started at t = 0 from Euler angles and rates (rad, rad/s).
     #[staticmethod]
@@ -250,7 +251,7 @@ impl PyHeavyTop {
 
 /// The steady-precession rates at θ₀ and ω₃ as a dict: slow, fast, slow_approx (2.121),
 /// fast_approx (2.120 corrected), fast_approx_as_printed (2.120 as printed), min_spin (2.119).
-#[pyfunction]
+#[export]
 fn heavy_top_steady_precession<'py>(
     py: Python<'py>,
     i1: f64,
@@ -271,19 +272,19 @@ fn heavy_top_steady_precession<'py>(
 }
 
 /// The minimum spin 2.119 (rad/s) at θ₀.
-#[pyfunction]
+#[export]
 fn heavy_top_min_spin(i1: f64, i3: f64, mgl: f64, theta0: f64) -> PyResult<f64> {
     analytic::min_spin(i1, i3, mgl, theta0).py()
 }
 
 /// The sleeping-top threshold 2√(m g l I₁)/I₃ (rad/s).
-#[pyfunction]
+#[export]
 fn heavy_top_sleeping_threshold(i1: f64, i3: f64, mgl: f64) -> PyResult<f64> {
     analytic::sleeping_threshold(i1, i3, mgl).py()
 }
 
 /// The Lagrangian 2.102 (J) at one state.
-#[pyfunction]
+#[export]
 fn heavy_top_lagrangian(
     i1: f64,
     i3: f64,
@@ -304,7 +305,7 @@ fn heavy_top_lagrangian(
 }
 
 /// (p_φ, p_ψ, E) of one state (2.103–2.105), for the drift of a solution.
-#[pyfunction]
+#[export]
 fn heavy_top_constants_of_state(
     i1: f64,
     i3: f64,

@@ -5,6 +5,7 @@
 use numpy::{PyArray1, PyArray3, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
 use poinsot::inertia::{self, CubatureOptions, MassProperties};
 use poinsot::{Error, Vec3};
+use poinsot_py_macros::export;
 use pyo3::prelude::*;
 
 use crate::convert::{
@@ -23,7 +24,7 @@ fn wrap(r: poinsot::Result<MassProperties>) -> PyResult<PyMassProperties> {
     Ok(PyMassProperties { inner: r.py()? })
 }
 
-#[pymethods]
+#[export]
 impl PyMassProperties {
     /// Mass (kg), centre of mass (m, (3,)) and inertia about it (kg·m², (3, 3)), checked.
     #[staticmethod]
@@ -357,7 +358,7 @@ impl PyMassProperties {
 }
 
 /// Kind of top of principal moments `moments` (kg·m², (3,)) with relative tolerance `rtol`.
-#[pyfunction]
+#[export]
 fn classify(moments: PyReadonlyArray1<'_, f64>, rtol: f64) -> PyResult<&'static str> {
     Ok(inertia::classify(vec3("moments", &moments)?, rtol)
         .py()?
@@ -365,7 +366,7 @@ fn classify(moments: PyReadonlyArray1<'_, f64>, rtol: f64) -> PyResult<&'static 
 }
 
 /// Checks an inertia tensor (kg·m², (3, 3)); returns it symmetrised.
-#[pyfunction]
+#[export]
 fn check_inertia(inertia: PyReadonlyArray2<'_, f64>) -> PyResult<Matrix> {
     inertia::check_inertia("inertia", &matrix("inertia", &inertia)?)
         .map(Matrix)
@@ -374,7 +375,7 @@ fn check_inertia(inertia: PyReadonlyArray2<'_, f64>) -> PyResult<Matrix> {
 
 /// Checks that reading a mesh file of `triangles` triangles fits in the memory budget; the
 /// error names `path`.
-#[pyfunction]
+#[export]
 fn check_mesh_file(triangles: f64) -> PyResult<()> {
     inertia::check_mesh_file(triangles).py()
 }

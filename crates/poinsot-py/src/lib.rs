@@ -19,16 +19,17 @@ mod rotation;
 mod special;
 mod sweep;
 
+use poinsot_py_macros::export;
 use pyo3::prelude::*;
 
 /// The memory budget (bytes) of one call's outputs (see `poinsot.limits`).
-#[pyfunction]
+#[export]
 fn memory_budget() -> u64 {
     poinsot::limits::memory_budget()
 }
 
 /// Sets the memory budget (bytes); returns the previous one.
-#[pyfunction]
+#[export]
 fn set_memory_budget(bytes: u64) -> PyResult<u64> {
     use errors::IntoPy;
     poinsot::limits::set_memory_budget(bytes).py()
@@ -36,7 +37,7 @@ fn set_memory_budget(bytes: u64) -> PyResult<u64> {
 
 /// Checks a user's count (samples, parcels): at least `minimum`, and `count` items of
 /// `bytes_each` bytes within the memory budget; the error names `argument`.
-#[pyfunction]
+#[export]
 fn check_count(argument: &str, count: usize, minimum: usize, bytes_each: usize) -> PyResult<()> {
     use errors::IntoPy;
     poinsot::limits::check_count(argument, count, minimum, bytes_each).py()
@@ -44,18 +45,33 @@ fn check_count(argument: &str, count: usize, minimum: usize, bytes_each: usize) 
 
 /// Checks that `count` items of `bytes_each` bytes fit in the memory budget (`count` a float:
 /// a product of counts); the error names `argument`.
-#[pyfunction]
+#[export]
 fn check_memory(argument: &str, count: f64, bytes_each: usize) -> PyResult<()> {
     use errors::IntoPy;
     poinsot::limits::check_memory(argument, count, bytes_each).py()
 }
 
-/// Panics on purpose: the test hook of the last line of defence at the Python boundary
-/// (`python/poinsot/_guard.py`), which must turn any panic into `poinsot.InternalError`. Never
-/// called by the package.
-#[pyfunction]
-fn _test_panic(message: &str) -> PyResult<()> {
-    panic!("{message}")
+/// Panics on purpose, for the tests only (never called by the package): the panic guard every
+/// export goes through (`errors::guard`, by `#[export]`) must turn it into
+/// `poinsot.InternalError`. `place`: `"here"` (in the binding, the GIL held), `"detached"` (in
+/// the core's monitored run with the GIL released, as a long run) or `"pool"` (on the core's
+/// rayon threads, in parallel chunks).
+#[export]
+#[pyo3(signature = (message, place = "here"))]
+fn _test_panic(py: Python<'_>, message: &str, place: &str) -> PyResult<()> {
+    let message = message.to_owned();
+    match place {
+        "here" => panic!("{message}"),
+        "detached" => control::run(py, None, || -> poinsot::Result<()> { panic!("{message}") }),
+        "pool" => control::run(py, None, || {
+            let mut out = vec![0.0_f64; 32];
+            poinsot::control::fill_chunks(&mut out, 1, true, |_, _| panic!("{message}"))
+        }),
+        _ => Err(errors::invalid(
+            "place",
+            "must be 'here', 'detached' or 'pool'",
+        )),
+    }
 }
 
 /// The compiled core of poinsot (private: use the `poinsot` package).

@@ -7,6 +7,7 @@
 use numpy::{PyArray1, PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn};
 use poinsot::rotation::{self as rot, EulerSequence, Frame};
 use poinsot::Vec3;
+use poinsot_py_macros::export;
 use pyo3::prelude::*;
 
 use crate::control::run;
@@ -33,7 +34,7 @@ fn batch<'py>(
 }
 
 /// Euler angles `(N, 3)` (rad) → rotation matrices `(N, 3, 3)`.
-#[pyfunction]
+#[export]
 fn euler_to_matrix<'py>(
     py: Python<'py>,
     angles: PyReadonlyArrayDyn<'py, f64>,
@@ -48,7 +49,7 @@ fn euler_to_matrix<'py>(
 }
 
 /// Rotation matrices `(N, 3, 3)` → Euler angles `(N, 3)` (rad) and gimbal-lock flags `(N,)`.
-#[pyfunction]
+#[export]
 #[allow(non_snake_case)]
 fn matrix_to_euler<'py>(
     py: Python<'py>,
@@ -73,7 +74,7 @@ fn matrix_to_euler<'py>(
 }
 
 /// Rotation matrices `(N, 3, 3)` → quaternions `(N, 4)`, `[w, x, y, z]`, `w >= 0`.
-#[pyfunction]
+#[export]
 #[allow(non_snake_case)]
 fn matrix_to_quaternion<'py>(
     py: Python<'py>,
@@ -84,7 +85,7 @@ fn matrix_to_quaternion<'py>(
 }
 
 /// Quaternions `(N, 4)` `[w, x, y, z]` → rotation matrices `(N, 3, 3)`.
-#[pyfunction]
+#[export]
 fn quaternion_to_matrix<'py>(
     py: Python<'py>,
     q: PyReadonlyArrayDyn<'py, f64>,
@@ -97,7 +98,7 @@ fn quaternion_to_matrix<'py>(
 }
 
 /// Hamilton products of quaternions `(N, 4)` and `(N, 4)` → `(N, 4)`.
-#[pyfunction]
+#[export]
 fn quaternion_multiply<'py>(
     py: Python<'py>,
     p: PyReadonlyArrayDyn<'py, f64>,
@@ -109,7 +110,7 @@ fn quaternion_multiply<'py>(
 }
 
 /// Rotation matrices `(N, 3, 3)` → `(N, 4)` records `[n_x, n_y, n_z, angle]`.
-#[pyfunction]
+#[export]
 #[allow(non_snake_case)]
 fn rotation_axis<'py>(py: Python<'py>, R: PyReadonlyArrayDyn<'py, f64>) -> PyResult<Out<'py>> {
     let (m, n) = records("R", &R, &[3, 3])?;
@@ -117,7 +118,7 @@ fn rotation_axis<'py>(py: Python<'py>, R: PyReadonlyArrayDyn<'py, f64>) -> PyRes
 }
 
 /// Axes `(N, 3)` and angles `(N,)` (rad) → rotation matrices `(N, 3, 3)`.
-#[pyfunction]
+#[export]
 fn axis_angle_to_matrix<'py>(
     py: Python<'py>,
     axis: PyReadonlyArrayDyn<'py, f64>,
@@ -131,7 +132,7 @@ fn axis_angle_to_matrix<'py>(
 }
 
 /// `R_k v_k` for matrices `(N, 3, 3)` and vectors `(N, 3)` → `(N, 3)`.
-#[pyfunction]
+#[export]
 #[allow(non_snake_case)]
 fn rotate_vectors<'py>(
     py: Python<'py>,
@@ -144,7 +145,7 @@ fn rotate_vectors<'py>(
 }
 
 /// Checks matrices `(N, 3, 3)` are rotations within `tol`; raises `InvalidRotationError`.
-#[pyfunction]
+#[export]
 #[allow(non_snake_case)]
 fn check_rotation_matrix(py: Python<'_>, R: PyReadonlyArrayDyn<'_, f64>, tol: f64) -> PyResult<()> {
     let (m, _) = records("R", &R, &[3, 3])?;
@@ -152,7 +153,7 @@ fn check_rotation_matrix(py: Python<'_>, R: PyReadonlyArrayDyn<'_, f64>, tol: f6
 }
 
 /// Angular velocities `(N, 3)` (rad/s, in `frame`) from angles and rates `(N, 3)`.
-#[pyfunction]
+#[export]
 fn angular_velocity<'py>(
     py: Python<'py>,
     angles: PyReadonlyArrayDyn<'py, f64>,
@@ -171,7 +172,7 @@ fn angular_velocity<'py>(
 }
 
 /// Euler-angle rates `(N, 3)` (rad/s) from angles `(N, 3)` and ω `(N, 3)` (in `frame`).
-#[pyfunction]
+#[export]
 fn euler_rates<'py>(
     py: Python<'py>,
     angles: PyReadonlyArrayDyn<'py, f64>,
@@ -191,7 +192,7 @@ fn euler_rates<'py>(
 
 /// Chasles' screw of `x ↦ R x + t` for one `R` `(3, 3)` and `t` `(3,)`:
 /// `(axis, point, angle, slide, pitch)`.
-#[pyfunction]
+#[export]
 #[allow(non_snake_case)]
 fn screw_axis(
     R: numpy::PyReadonlyArray2<'_, f64>,
@@ -221,7 +222,7 @@ fn screw_from_parts(
 
 /// A screw from its parts, checked by the core: `(axis, point, angle, slide, pitch)` with the
 /// axis normalised and the pitch derived (a `pitch` given must agree).
-#[pyfunction]
+#[export]
 #[pyo3(signature = (axis, point, angle, slide, pitch=None))]
 fn screw_new(
     axis: numpy::PyReadonlyArray1<'_, f64>,
@@ -242,7 +243,7 @@ fn screw_new(
 }
 
 /// The displacement `(R (3, 3), t (3,))` of a screw.
-#[pyfunction]
+#[export]
 fn screw_displacement(
     axis: numpy::PyReadonlyArray1<'_, f64>,
     point: numpy::PyReadonlyArray1<'_, f64>,
@@ -254,7 +255,7 @@ fn screw_displacement(
 }
 
 /// The displacement `(R(s) (3, 3), t(s) (3,))` at fraction `s` of a screw motion.
-#[pyfunction]
+#[export]
 fn screw_displacement_at(
     axis: numpy::PyReadonlyArray1<'_, f64>,
     point: numpy::PyReadonlyArray1<'_, f64>,
@@ -269,7 +270,7 @@ fn screw_displacement_at(
 }
 
 /// Applies a screw motion to points `x` `(N, 3)` → `(N, 3)`.
-#[pyfunction]
+#[export]
 fn screw_apply<'py>(
     py: Python<'py>,
     axis: numpy::PyReadonlyArray1<'py, f64>,

@@ -1,6 +1,7 @@
 //! Bindings of `poinsot::special` (conversion only).
 use numpy::{PyArray2, PyReadonlyArray1};
 use poinsot::special::{self, Jacobi};
+use poinsot_py_macros::export;
 use pyo3::prelude::*;
 
 use crate::control::map_each;
@@ -8,7 +9,7 @@ use crate::errors::{invalid, IntoPy};
 use crate::frames::{rows_out, vec_in};
 
 /// sn, cn, dn, am of u (N,) for parameter m → (N, 4).
-#[pyfunction]
+#[export]
 fn special_jacobi<'py>(
     py: Python<'py>,
     u: PyReadonlyArray1<'py, f64>,
@@ -23,7 +24,7 @@ fn special_jacobi<'py>(
 }
 
 /// Legendre's elliptic integral `kind` ("K", "E", "PI", "F", "EINC", "PIINC") at (phi, n, m).
-#[pyfunction]
+#[export]
 fn special_elliptic(kind: &str, phi: f64, n: f64, m: f64) -> PyResult<f64> {
     match kind {
         "K" => special::ellipk(m),
