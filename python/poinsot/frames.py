@@ -29,7 +29,6 @@ from ._validate import (
     as_matrices,
     as_scalar,
     as_vectors,
-    public_names,
     shaped,
 )
 from .errors import PoinsotError
@@ -557,24 +556,22 @@ def simulate_particle(
     m = mass if type(mass) is float else _fast_scalar(mass, "mass")
     rt = rtol if type(rtol) is float else _fast_scalar(rtol, "rtol")
     at = atol if type(atol) is float else _fast_scalar(atol, "atol")
-    with public_names(t="duration", t_end="duration", y0="force", times="t_eval"):
-        states, evaluations = _core.frame_simulate_particle(
-            packed,
-            frame_fn,
-            m,
-            r0,
-            v0,
-            0.0,
-            dur,
-            n,
-            times,
-            f_const,
-            f_fn,
-            rt,
-            at,
-            steps,
-            stiffness if type(stiffness) is float else _fast_scalar(stiffness, "stiffness"),
-        )
+    states, evaluations = _core.frame_simulate_particle(
+        packed,
+        frame_fn,
+        m,
+        r0,
+        v0,
+        dur,
+        n,
+        times,
+        f_const,
+        f_fn,
+        rt,
+        at,
+        steps,
+        stiffness if type(stiffness) is float else _fast_scalar(stiffness, "stiffness"),
+    )
     return ParticleTrajectory(times if times is not None else (dur, n), states, frame, evaluations)
 
 

@@ -101,8 +101,7 @@ fn frame_to_fixed<'py>(
 ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
     let f = frame_arg(&frame, &attitude)?;
     transform_rows(py, &position, &velocity, &acceleration, |r, v, a| {
-        let m = f.to_fixed(r, v, a);
-        m.check()?;
+        let m = f.to_fixed(r, v, a)?;
         let t = m.terms;
         Ok([
             m.position,
@@ -131,8 +130,7 @@ fn frame_to_moving<'py>(
 ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
     let f = frame_arg(&frame, &attitude)?;
     transform_rows(py, &position, &velocity, &acceleration, |r, v, a| {
-        let m = f.to_moving(r, v, a);
-        m.check()?;
+        let m = f.to_moving(r, v, a)?;
         let t = m.terms;
         Ok([
             m.position,
@@ -232,12 +230,12 @@ impl FrameMotion for PyFrame<'_, '_> {
 
 /// Integrates a particle in a moving frame (see `poinsot.simulate_particle`). The frame is 24
 /// floats — 15 state numbers and the attitude row-major — (a steady frame from t = 0) or a
-/// callable `t -> (15 floats, attitude)`; the output times are `times` or, if None, `samples`
-/// evenly spaced ones from `t0` to `t_end`; the force is a
+/// callable `t -> (15 floats, attitude)`; the output times are `t_eval` or, if None, `samples`
+/// evenly spaced ones from 0 to `duration`; the force is a
 /// constant (3,) vector in moving components plus, optionally, a callable
 /// `(t, x, y, z, vx, vy, vz) -> (fx, fy, fz)`.
 #[export]
-#[pyo3(signature = (frame, frame_fn, mass, position, velocity, t0, t_end, samples, times, force, force_fn, rtol, atol, max_steps, stiffness = 0.0))]
+#[pyo3(signature = (frame, frame_fn, mass, position, velocity, duration, samples, t_eval, force, force_fn, rtol, atol, max_steps, stiffness = 0.0))]
 #[allow(clippy::too_many_arguments)]
 fn frame_simulate_particle<'py>(
     py: Python<'py>,
@@ -246,10 +244,9 @@ fn frame_simulate_particle<'py>(
     mass: f64,
     position: PyReadonlyArray1<'py, f64>,
     velocity: PyReadonlyArray1<'py, f64>,
-    t0: f64,
-    t_end: f64,
+    duration: f64,
     samples: usize,
-    times: Option<PyReadonlyArray1<'py, f64>>,
+    t_eval: Option<PyReadonlyArray1<'py, f64>>,
     force: PyReadonlyArray1<'py, f64>,
     force_fn: Option<Bound<'py, PyAny>>,
     rtol: f64,
@@ -261,8 +258,8 @@ fn frame_simulate_particle<'py>(
     let spring = SpringParticle::new(mass, stiffness).py()?;
     let r0 = v3(&vec3("position", &position)?);
     let v0 = v3(&vec3("velocity", &velocity)?);
+    // A force not finite at the start is refused by the core, naming `force`.
     let f_const = v3(&vec3("force", &force)?);
-    poinsot::error::check_finite("force", f_const.as_slice()).py()?;
     // The frame travels packed: 15 state numbers then the attitude, row-major.
     let packed = vec_in(&frame);
     if packed.len() != 24 {
@@ -276,11 +273,11 @@ fn frame_simulate_particle<'py>(
             std::array::from_fn(|i| std::array::from_fn(|j| packed[15 + 3 * i + j]));
         SteadyMotion::new(frame_from(&packed[..15], att)?).py()
     };
-    let times = match &times {
+    let times = match &t_eval {
         Some(t) => vec_in(t),
         None => poinsot::integrate::sample_times(
-            t0,
-            t_end,
+            0.0,
+            duration,
             samples,
             poinsot::frames::PARTICLE_BYTES_PER_SAMPLE,
         )
@@ -296,10 +293,9 @@ fn frame_simulate_particle<'py>(
                 mass,
                 r0,
                 v0,
-                t0,
-                t_end,
+                duration,
                 &times,
-                |_t, r, _v| f_const + spring.force(r),
+                |_t, r, _v| f_const + spring.force_unchecked(r),
                 &opts,
             )
         };
@@ -316,12 +312,12 @@ fn frame_simulate_particle<'py>(
     } else {
         let force_call = |t: f64, r: &Vec3, v: &Vec3| -> Vec3 {
             match &force_fn {
-                None => f_const + spring.force(r),
+                None => f_const + spring.force_unchecked(r),
                 Some(func) => match func
                     .call1((t, r.x, r.y, r.z, v.x, v.y, v.z))
                     .and_then(|o| o.extract::<(f64, f64, f64)>())
                 {
-                    Ok((a, b, c)) => f_const + spring.force(r) + Vec3::new(a, b, c),
+                    Ok((a, b, c)) => f_const + spring.force_unchecked(r) + Vec3::new(a, b, c),
                     Err(e) => {
                         error.borrow_mut().get_or_insert(e);
                         Vec3::repeat(f64::NAN)
@@ -337,17 +333,13 @@ fn frame_simulate_particle<'py>(
                     error: &error,
                 };
                 run_attached(py, None, || {
-                    simulate_particle_at(
-                        &motion, mass, r0, v0, t0, t_end, &times, force_call, &opts,
-                    )
+                    simulate_particle_at(&motion, mass, r0, v0, duration, &times, force_call, &opts)
                 })
             }
             None => {
                 let motion = steady()?;
                 run_attached(py, None, || {
-                    simulate_particle_at(
-                        &motion, mass, r0, v0, t0, t_end, &times, force_call, &opts,
-                    )
+                    simulate_particle_at(&motion, mass, r0, v0, duration, &times, force_call, &opts)
                 })
             }
         };
@@ -423,10 +415,8 @@ impl SpringParticleCore {
         py: Python<'py>,
         position: PyReadonlyArray2<'py, f64>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let r = finite_rows("position", &position)?;
-        let out = map_each(py, &r, |x| {
-            finite_row("position", "force", a3(&self.inner.force(&v3(x))))
-        })?;
+        let r = rows_view::<3>("position", &position)?;
+        let out = map_each(py, &r, |x| self.inner.force(&v3(x)).map(|f| a3(&f)))?;
         Ok(rows_out(py, &out))
     }
     /// (N, 3) accelerations −(k/m) r (m/s²) at (N, 3) positions (m).
@@ -435,23 +425,14 @@ impl SpringParticleCore {
         py: Python<'py>,
         position: PyReadonlyArray2<'py, f64>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let r = finite_rows("position", &position)?;
-        let out = map_each(py, &r, |x| {
-            finite_row(
-                "position",
-                "acceleration",
-                a3(&self.inner.acceleration(&v3(x))),
-            )
-        })?;
+        let r = rows_view::<3>("position", &position)?;
+        let out = map_each(py, &r, |x| self.inner.acceleration(&v3(x)).map(|a| a3(&a)))?;
         Ok(rows_out(py, &out))
     }
     /// (N,) potentials ½ k |r|² (J) at (N, 3) positions (m).
     fn potential(&self, py: Python<'_>, position: PyReadonlyArray2<'_, f64>) -> PyResult<Values> {
-        let r = finite_rows("position", &position)?;
-        map_each(py, &r, |x| {
-            finite_value("position", "potential", self.inner.potential(&v3(x)))
-        })
-        .map(Values)
+        let r = rows_view::<3>("position", &position)?;
+        map_each(py, &r, |x| self.inner.potential(&v3(x))).map(Values)
     }
     /// (N,) fixed-frame energies (J) of (N, 3) positions (m) and velocities (m/s).
     fn energy(
@@ -460,12 +441,9 @@ impl SpringParticleCore {
         position: PyReadonlyArray2<'_, f64>,
         velocity: PyReadonlyArray2<'_, f64>,
     ) -> PyResult<Values> {
-        let (r, v) = finite_pairs(&position, &velocity)?;
+        let (r, v) = pairs(&position, &velocity)?;
         run(py, None, || {
-            poinsot::control::try_map_n(r.len(), |i| {
-                let e = self.inner.energy(&v3(&r[i]), &v3(&v[i]));
-                finite_value(self.culprit(&r[i], &v[i]), "energy", e)
-            })
+            poinsot::control::try_map_n(r.len(), |i| self.inner.energy(&v3(&r[i]), &v3(&v[i])))
         })
         .map(Values)
     }
@@ -480,78 +458,26 @@ impl SpringParticleCore {
         velocity: PyReadonlyArray2<'_, f64>,
     ) -> PyResult<Values> {
         let f = frame_arg(&frame, &attitude)?;
-        let (r, v) = finite_pairs(&position, &velocity)?;
+        let (r, v) = pairs(&position, &velocity)?;
         run(py, None, || {
             poinsot::control::try_map_n(r.len(), |i| {
-                let j = self.inner.jacobi_integral(&f, &v3(&r[i]), &v3(&v[i]));
-                finite_value(self.culprit(&r[i], &v[i]), "Jacobi integral", j)
+                self.inner.jacobi_integral(&f, &v3(&r[i]), &v3(&v[i]))
             })
         })
         .map(Values)
     }
 }
 
-impl SpringParticleCore {
-    /// The argument to blame for an energy beyond the doubles: `position` if its potential
-    /// overflows, else `velocity` if the kinetic energy does, else `position` (the centrifugal
-    /// potential m|ω × r|²/2).
-    fn culprit(&self, r: &[f64; 3], v: &[f64; 3]) -> &'static str {
-        if !self.inner.potential(&v3(r)).is_finite() {
-            "position"
-        } else if !self.inner.energy(&Vec3::zeros(), &v3(v)).is_finite() {
-            "velocity"
-        } else {
-            "position"
-        }
-    }
-}
-
-/// `row` if every number is finite, else an error naming `argument` ("`what` overflows").
-fn finite_row(argument: &str, what: &str, row: [f64; 3]) -> poinsot::Result<[f64; 3]> {
-    if row.iter().all(|x| x.is_finite()) {
-        Ok(row)
-    } else {
-        Err(overflow(argument, what))
-    }
-}
-
-/// `x` if finite, else an error naming `argument`.
-fn finite_value(argument: &str, what: &str, x: f64) -> poinsot::Result<f64> {
-    if x.is_finite() {
-        Ok(x)
-    } else {
-        Err(overflow(argument, what))
-    }
-}
-
-fn overflow(argument: &str, what: &str) -> poinsot::Error {
-    poinsot::Error::invalid(
-        argument,
-        format!("the {what} is beyond the range of double precision"),
-    )
-}
-
-/// (N, 3) rows, each finite (the error names `argument`), borrowed from a C-contiguous array.
-fn finite_rows<'a>(
-    argument: &str,
-    a: &'a PyReadonlyArray2<'_, f64>,
-) -> PyResult<Cow<'a, [[f64; 3]]>> {
-    let rows = rows_view::<3>(argument, a)?;
-    for r in rows.iter() {
-        poinsot::error::check_finite(argument, r).py()?;
-    }
-    Ok(rows)
-}
-
-/// Positions and velocities of the same length, each finite.
+/// (N, 3) positions and velocities with the same number of rows, borrowed from C-contiguous
+/// arrays (their values are the core's to check).
 #[allow(clippy::type_complexity)]
-fn finite_pairs<'a>(
+fn pairs<'a>(
     position: &'a PyReadonlyArray2<'_, f64>,
     velocity: &'a PyReadonlyArray2<'_, f64>,
 ) -> PyResult<(Cow<'a, [[f64; 3]]>, Cow<'a, [[f64; 3]]>)> {
     let (r, v) = (
-        finite_rows("position", position)?,
-        finite_rows("velocity", velocity)?,
+        rows_view::<3>("position", position)?,
+        rows_view::<3>("velocity", velocity)?,
     );
     if r.len() != v.len() {
         return Err(invalid(

@@ -24,7 +24,6 @@ fn bench(c: &mut Criterion) {
                 1.0,
                 black_box(Vec3::new(0.0, 0.0, 100.0)),
                 Vec3::zeros(),
-                0.0,
                 t_fall,
                 &[t_fall],
                 |_t, _r, _v| g,

@@ -253,6 +253,30 @@ pub fn finite_result(argument: &str, what: &str, value: f64) -> Result<f64> {
     }
 }
 
+/// The error of a computed result that is not a finite number: `quantity` (`"force"`, `"energy"`)
+/// overflows for the caller's `argument` (the input the overflowing term comes from), e.g.
+/// `"position: the result (force) is not a finite number for these values (...)"`.
+pub fn not_finite(argument: &str, quantity: &str) -> Error {
+    Error::invalid(
+        argument,
+        format!(
+            "the result ({quantity}) is not a finite number for these values (too large for \
+             double precision, or outside the range where it can be computed); use smaller values"
+        ),
+    )
+}
+
+/// Checks that every computed value is finite; otherwise the error of [`not_finite`] naming
+/// the caller's `argument` and the `quantity`. What makes "finite or refused" hold for every
+/// number a public function of the core returns.
+pub fn check_result(argument: &str, quantity: &str, values: &[f64]) -> Result<()> {
+    if values.iter().all(|v| v.is_finite()) {
+        Ok(())
+    } else {
+        Err(not_finite(argument, quantity))
+    }
+}
+
 /// Checks that every value is finite; names `argument` otherwise.
 pub fn check_finite(argument: &str, values: &[f64]) -> Result<()> {
     match values.iter().position(|v| !v.is_finite()) {

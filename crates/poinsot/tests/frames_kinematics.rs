@@ -39,9 +39,9 @@ proptest! {
     /// to_moving inverts to_fixed, and the named terms sum to the total in both directions.
     #[test]
     fn to_fixed_and_to_moving_are_inverse(f in frame(), r in vec3(), v in vec3(), a in vec3()) {
-        let fixed = f.to_fixed(&r, &v, &a);
+        let fixed = f.to_fixed(&r, &v, &a).unwrap();
         prop_assert!((fixed.terms.total() - fixed.acceleration).norm() < ROUND_OFF);
-        let back = f.to_moving(&fixed.position, &fixed.velocity, &fixed.acceleration);
+        let back = f.to_moving(&fixed.position, &fixed.velocity, &fixed.acceleration).unwrap();
         prop_assert!((back.position - r).norm() < 1e-11);
         prop_assert!((back.velocity - v).norm() < 1e-11);
         prop_assert!((back.acceleration - a).norm() < 1e-10);
@@ -52,7 +52,7 @@ proptest! {
     #[test]
     fn fictitious_forces_match_the_frame_terms(f in frame(), r in vec3(), v in vec3(), m in 0.1..10.0f64) {
         let ff = f.fictitious_forces(m, &r, &v).unwrap();
-        let t = f.to_fixed(&r, &v, &Vec3::zeros()).terms;
+        let t = f.to_fixed(&r, &v, &Vec3::zeros()).unwrap().terms;
         let at = f.attitude.transpose();
         prop_assert!((ff.translational + m * (at * t.origin)).norm() < 1e-10);
         prop_assert!((ff.coriolis + m * (at * t.coriolis)).norm() < 1e-10);
@@ -77,7 +77,7 @@ fn pure_translation_is_galilean() {
         Vec3::new(0.0, 2.0, 0.0),
         Vec3::new(0.0, 0.0, 3.0),
     );
-    let out = f.to_fixed(&r, &v, &a);
+    let out = f.to_fixed(&r, &v, &a).unwrap();
     assert_eq!(out.position, f.origin + r);
     assert_eq!(out.velocity, f.velocity + v);
     assert_eq!(out.acceleration, f.acceleration + a);
@@ -103,7 +103,7 @@ fn point_at_rest_on_a_turntable() {
     let w = 2.0;
     let f = MovingFrame::rotating(Vec3::new(0.0, 0.0, w)).unwrap();
     let r = Vec3::new(3.0, 0.0, 1.0);
-    let out = f.to_fixed(&r, &Vec3::zeros(), &Vec3::zeros());
+    let out = f.to_fixed(&r, &Vec3::zeros(), &Vec3::zeros()).unwrap();
     assert!((out.velocity - Vec3::new(0.0, w * 3.0, 0.0)).norm() < ROUND_OFF);
     assert!((out.acceleration - Vec3::new(-w * w * 3.0, 0.0, 0.0)).norm() < ROUND_OFF);
     // Its magnitude is ω² r sin θ = v²/(r sin θ) (eq. 2.24).
@@ -172,7 +172,7 @@ fn check_against_fixed_frame<M: FrameMotion>(motion: &M, t_end: f64) -> f64 {
     )
     .unwrap();
     let f0 = motion.at(0.0);
-    let start = f0.to_fixed(&r0, &v0, &Vec3::zeros());
+    let start = f0.to_fixed(&r0, &v0, &Vec3::zeros()).unwrap();
     let fixed = simulate_particle_fixed(
         m,
         start.position,
@@ -188,11 +188,14 @@ fn check_against_fixed_frame<M: FrameMotion>(motion: &M, t_end: f64) -> f64 {
         let t = t_end * i as f64 / 50.0;
         let ym = moving.at(t).unwrap();
         let yf = fixed.at(t).unwrap();
-        let out = motion.at(t).to_fixed(
-            &Vec3::new(ym[0], ym[1], ym[2]),
-            &Vec3::new(ym[3], ym[4], ym[5]),
-            &Vec3::zeros(),
-        );
+        let out = motion
+            .at(t)
+            .to_fixed(
+                &Vec3::new(ym[0], ym[1], ym[2]),
+                &Vec3::new(ym[3], ym[4], ym[5]),
+                &Vec3::zeros(),
+            )
+            .unwrap();
         let scale = Vec3::new(yf[0], yf[1], yf[2]).norm().max(1.0);
         worst = worst.max((out.position - Vec3::new(yf[0], yf[1], yf[2])).norm() / scale);
         let vscale = Vec3::new(yf[3], yf[4], yf[5]).norm().max(1.0);
@@ -284,12 +287,15 @@ fn negative_control_without_coriolis_disagrees() {
         None::<(fn(f64, &ParticleState) -> f64, Crossing)>,
     )
     .unwrap();
-    let start = f.to_fixed(&r0, &v0, &Vec3::zeros());
-    let truth = motion.at(2.0).to_moving(
-        &(start.position + 2.0 * start.velocity),
-        &start.velocity,
-        &Vec3::zeros(),
-    );
+    let start = f.to_fixed(&r0, &v0, &Vec3::zeros()).unwrap();
+    let truth = motion
+        .at(2.0)
+        .to_moving(
+            &(start.position + 2.0 * start.velocity),
+            &start.velocity,
+            &Vec3::zeros(),
+        )
+        .unwrap();
     let (yw, yr) = (wrong.y_final(), right.y_final());
     assert!((Vec3::new(yr[0], yr[1], yr[2]) - truth.position).norm() < 1e-10);
     assert!((Vec3::new(yw[0], yw[1], yw[2]) - truth.position).norm() > 0.1);

@@ -603,7 +603,8 @@ pub fn simulate<T: TorqueModel + ?Sized>(
             let mut pending: Vec<(f64, [f64; 7])> = Vec::new();
             let mut y = y0;
             while !stepper.is_finished() {
-                stepper.step()?;
+                // A step that fails (its size below round-off) names the run's `duration`.
+                stepper.step().map_err(|e| e.renamed("t", "duration"))?;
                 control::report(stepper.t() / duration)?;
                 if next < n && times[next] <= stepper.t() {
                     let dense = stepper.dense_step();
@@ -632,8 +633,10 @@ pub fn simulate<T: TorqueModel + ?Sized>(
     Ok(out)
 }
 
+/// A run whose state stopped being finite at `t`: the error names the run's `duration` (the time
+/// it failed in the message).
 fn diverged(t: f64) -> Error {
-    Error::diverged("t", format!("the state stopped being finite at t = {t} s: the motion diverged (reduce dt, or check the torque)"))
+    Error::diverged("duration", format!("the state stopped being finite at t = {t} s: the motion diverged (reduce dt, or check the torque)"))
 }
 
 fn overflow_at_start(argument: &str, what: &str) -> Error {

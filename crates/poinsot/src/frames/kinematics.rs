@@ -83,6 +83,14 @@ fn check_vectors(items: &[(&Vec3, &str, &str)]) -> Result<()> {
     }
 }
 
+/// A particle's `position`, `velocity` and `acceleration` must be finite (the error names the
+/// first that is not).
+fn check_state(position: &Vec3, velocity: &Vec3, acceleration: &Vec3) -> Result<()> {
+    check_finite("position", position.as_slice())?;
+    check_finite("velocity", velocity.as_slice())?;
+    check_finite("acceleration", acceleration.as_slice())
+}
+
 impl FixedMotion {
     /// Checks that every vector is finite; the error names the argument of
     /// [`MovingFrame::to_fixed`] whose term overflowed.
@@ -280,7 +288,28 @@ impl MovingFrame {
     /// `position`, `velocity`, `acceleration` (eqs. 2.19–2.23; 2.1–2.3 when ω = 0).
     ///
     /// r' = R + r;  ṙ' = Ṙ + ṙ + ω×r;  r̈' = R̈ + r̈ + 2ω×ṙ + ω×(ω×r) + ω̇×r.
-    pub fn to_fixed(&self, position: &Vec3, velocity: &Vec3, acceleration: &Vec3) -> FixedMotion {
+    ///
+    /// Errors name `position`, `velocity` or `acceleration`: not finite, or a term they give
+    /// beyond the doubles ([`FixedMotion::check`]).
+    pub fn to_fixed(
+        &self,
+        position: &Vec3,
+        velocity: &Vec3,
+        acceleration: &Vec3,
+    ) -> Result<FixedMotion> {
+        check_state(position, velocity, acceleration)?;
+        let m = self.to_fixed_unchecked(position, velocity, acceleration);
+        m.check()?;
+        Ok(m)
+    }
+
+    /// [`MovingFrame::to_fixed`] without the checks.
+    fn to_fixed_unchecked(
+        &self,
+        position: &Vec3,
+        velocity: &Vec3,
+        acceleration: &Vec3,
+    ) -> FixedMotion {
         let a = &self.attitude;
         let (r, v, acc) = (a * position, a * velocity, a * acceleration);
         let w = &self.angular_velocity;
@@ -301,8 +330,22 @@ impl MovingFrame {
     }
 
     /// The moving-frame position, velocity and acceleration (moving components) of a particle
-    /// whose fixed-frame ones are given: the inverse of [`MovingFrame::to_fixed`].
+    /// whose fixed-frame ones are given: the inverse of [`MovingFrame::to_fixed`]. Errors name
+    /// `position`, `velocity` or `acceleration` ([`RelativeMotion::check`]).
     pub fn to_moving(
+        &self,
+        position: &Vec3,
+        velocity: &Vec3,
+        acceleration: &Vec3,
+    ) -> Result<RelativeMotion> {
+        check_state(position, velocity, acceleration)?;
+        let m = self.to_moving_unchecked(position, velocity, acceleration);
+        m.check()?;
+        Ok(m)
+    }
+
+    /// [`MovingFrame::to_moving`] without the checks.
+    fn to_moving_unchecked(
         &self,
         position: &Vec3,
         velocity: &Vec3,

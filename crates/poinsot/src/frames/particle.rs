@@ -65,17 +65,23 @@ fn check_start<M: FrameMotion + ?Sized>(
     Ok(())
 }
 
-/// Like [`simulate_particle`], but returns only the states at `times` (monotone, inside
-/// `[t0, t_end]`) without keeping the steps: the fast path when few outputs are wanted.
+/// The particle's run as the front ends offer it (`poinsot.simulate_particle` in Python,
+/// `simulateParticle` in the browser lab): like [`simulate_particle`] from t = 0 to `duration`
+/// (s, finite, ≥ 0), but returns only the states at the times `t_eval` (monotone, inside
+/// `[0, duration]`) without keeping the steps — the fast path when few outputs are wanted.
+///
+/// Errors name the caller's arguments: `mass`, `position`, `velocity`, `frame` (its state not
+/// finite at the start), `duration` (not finite or negative; also an integration that fails
+/// before the end, the time it failed in the message), `t_eval`, `force` (a force not finite
+/// at the start), `rtol`, `atol`, `max_steps`.
 #[allow(clippy::too_many_arguments)]
 pub fn simulate_particle_at<M, F>(
     frame: &M,
     mass: f64,
     position: Vec3,
     velocity: Vec3,
-    t0: f64,
-    t_end: f64,
-    times: &[f64],
+    duration: f64,
+    t_eval: &[f64],
     mut force: F,
     opts: &Options,
 ) -> Result<Scan<ParticleState>>
@@ -83,7 +89,8 @@ where
     M: FrameMotion + ?Sized,
     F: FnMut(f64, &Vec3, &Vec3) -> Vec3,
 {
-    check_start(frame, mass, t0, &position, &velocity)?;
+    check_start(frame, mass, 0.0, &position, &velocity)?;
+    crate::error::check_non_negative("duration", duration)?;
     let y0 = [
         position.x, position.y, position.z, velocity.x, velocity.y, velocity.z,
     ];
@@ -95,14 +102,28 @@ where
     };
     dop853_scan(
         rhs,
-        t0,
+        0.0,
         y0,
-        t_end,
-        times,
+        duration,
+        t_eval,
         opts,
         |_t: f64, _y: &ParticleState| 1.0,
         Crossing::Any,
     )
+    .map_err(public_names)
+}
+
+/// The integrator's names (`times`, `t_end`, `t` of a failing step, `y0` of a right-hand side
+/// not finite at the start) as the arguments of [`simulate_particle_at`] that they come from.
+fn public_names(mut e: Error) -> Error {
+    e.argument = match e.argument.as_str() {
+        "times" => "t_eval",
+        "t_end" | "t" => "duration",
+        "y0" => "force",
+        _ => return e,
+    }
+    .into();
+    e
 }
 
 /// Integrates a particle of `mass` (kg) relative to the moving `frame` from `t0` to `t_end`:

@@ -3,11 +3,12 @@
 //! frame, its Jacobi integral in the rotating frame, and its motion integrated in a moving frame
 //! with every fictitious force (eqs. 2.21, 2.26–2.28).
 
+use super::defaults::PARTICLE_TOLERANCES;
 use super::kinematics::MovingFrame;
 use super::motion::FrameMotion;
 use super::particle::{simulate_particle_at, ParticleState};
-use crate::error::{check_non_negative, check_positive, Result};
-use crate::integrate::{Options, Scan};
+use crate::error::{check_finite, check_non_negative, check_positive, check_result, Result};
+use crate::integrate::Scan;
 use crate::Vec3;
 
 /// A particle of `mass` m (kg) pulled towards the origin by the force F = −k r of an isotropic
@@ -43,27 +44,50 @@ impl SpringParticle {
     }
 
     /// The spring force F = −k r (N) at `position` r (m), in the components of `position`.
+    /// Errors name `position`: not finite, or a force beyond the doubles (k |r| > ~1.8e308).
+    pub fn force(&self, position: &Vec3) -> Result<Vec3> {
+        check_finite("position", position.as_slice())?;
+        let f = self.force_unchecked(position);
+        check_result("position", "force", f.as_slice())?;
+        Ok(f)
+    }
+
+    /// [`SpringParticle::force`] without the checks: the hot path of the integrators (the state
+    /// they pass is checked by the integrator itself).
     #[inline]
-    pub fn force(&self, position: &Vec3) -> Vec3 {
+    pub fn force_unchecked(&self, position: &Vec3) -> Vec3 {
         -self.stiffness * position
     }
 
     /// The acceleration F / m = −(k / m) r (m/s²) at `position` r (m): in the fixed frame, the
-    /// particle's whole acceleration r̈' (eq. 2.25).
-    #[inline]
-    pub fn acceleration(&self, position: &Vec3) -> Vec3 {
-        self.force(position) / self.mass
+    /// particle's whole acceleration r̈' (eq. 2.25). Errors name `position` (as
+    /// [`SpringParticle::force`]).
+    pub fn acceleration(&self, position: &Vec3) -> Result<Vec3> {
+        check_finite("position", position.as_slice())?;
+        let a = self.force_unchecked(position) / self.mass;
+        check_result("position", "acceleration", a.as_slice())?;
+        Ok(a)
     }
 
-    /// The potential energy U = ½ k |r|² (J).
-    pub fn potential(&self, position: &Vec3) -> f64 {
+    /// The potential energy U = ½ k |r|² (J). Errors name `position`: not finite, or U beyond
+    /// the doubles.
+    pub fn potential(&self, position: &Vec3) -> Result<f64> {
+        check_finite("position", position.as_slice())?;
+        let u = self.potential_unchecked(position);
+        check_result("position", "potential", &[u])?;
+        Ok(u)
+    }
+
+    fn potential_unchecked(&self, position: &Vec3) -> f64 {
         0.5 * self.stiffness * position.norm_squared()
     }
 
     /// The energy in the fixed frame, E = ½ m |ṙ'|² + ½ k |r'|² (J), from the fixed-frame
     /// `position` r' (m) and `velocity` ṙ' (m/s). Conserved along any motion (eq. 2.25).
-    pub fn energy(&self, position: &Vec3, velocity: &Vec3) -> f64 {
-        0.5 * self.mass * velocity.norm_squared() + self.potential(position)
+    /// Errors name `position` or `velocity`: not finite, or the term they give (½ k |r|², ½ m
+    /// |v|²) beyond the doubles; a sum beyond them names `position`.
+    pub fn energy(&self, position: &Vec3, velocity: &Vec3) -> Result<f64> {
+        self.energy_with(position, velocity, 0.0, "energy")
     }
 
     /// The Jacobi integral in the rotating `frame`:
@@ -74,38 +98,76 @@ impl SpringParticle {
     /// The last term is the potential of the centrifugal force −m ω × (ω × r) (eq. 2.28); the
     /// Coriolis force does no work in the rotating frame. J is conserved when the frame turns
     /// uniformly (ω̇ = 0) about its fixed origin (R = 0); with ω̇ ≠ 0 the Euler force makes it
-    /// change. With ω = 0 it is [`SpringParticle::energy`].
-    pub fn jacobi_integral(&self, frame: &MovingFrame, position: &Vec3, velocity: &Vec3) -> f64 {
+    /// change. With ω = 0 it is [`SpringParticle::energy`]. Errors as
+    /// [`SpringParticle::energy`] (the centrifugal term's overflow names `position`).
+    pub fn jacobi_integral(
+        &self,
+        frame: &MovingFrame,
+        position: &Vec3,
+        velocity: &Vec3,
+    ) -> Result<f64> {
         let w = frame.angular_velocity_moving();
-        0.5 * self.mass * (velocity.norm_squared() - w.cross(position).norm_squared())
-            + self.potential(position)
+        self.energy_with(
+            position,
+            velocity,
+            w.cross(position).norm_squared(),
+            "Jacobi integral",
+        )
     }
 
-    /// Integrates the particle relative to the moving `frame` from t = 0 to `duration` with every
-    /// fictitious force ([`simulate_particle_at`]), the spring force taken in moving components,
-    /// and returns the states `[r, (dr/dt)_rot]` (moving components) at `times` (monotone, in
-    /// `[0, duration]`). `position` and `velocity` are r and (dr/dt)_rot at t = 0. Errors name
-    /// `position`, `velocity`, `t_end` (a non-finite `duration`), `times` or an option of `opts`.
+    /// ½ m (|v|² − `c2`) + ½ k |r|² (J), checked: the arguments finite, then the potential
+    /// (naming `position`), the kinetic energy (`velocity`), then the whole (`position`: the
+    /// centrifugal term ½ m `c2` or the sum).
+    fn energy_with(&self, position: &Vec3, velocity: &Vec3, c2: f64, what: &str) -> Result<f64> {
+        check_finite("position", position.as_slice())?;
+        check_finite("velocity", velocity.as_slice())?;
+        let u = self.potential_unchecked(position);
+        check_result("position", what, &[u])?;
+        let v2 = velocity.norm_squared();
+        check_result("velocity", what, &[0.5 * self.mass * v2])?;
+        let e = 0.5 * self.mass * (v2 - c2) + u;
+        check_result("position", what, &[e])?;
+        Ok(e)
+    }
+
+    /// Integrates the particle relative to the moving `frame` from t = 0 to `duration` (s) with
+    /// every fictitious force ([`simulate_particle_at`]) and the core's default tolerances
+    /// ([`PARTICLE_TOLERANCES`], as the browser lab runs it), the spring force taken in moving
+    /// components, and returns the states `[r, (dr/dt)_rot]` (moving components) at `t_eval`
+    /// (monotone, in `[0, duration]`). `position` and `velocity` are r and (dr/dt)_rot at t = 0.
+    /// Errors name `position` (also a spring force beyond the doubles), `velocity`, `frame`,
+    /// `duration` (also a run longer than the default step limit, which the caller did not
+    /// choose) or `t_eval`.
     pub fn simulate_at<M: FrameMotion + ?Sized>(
         &self,
         frame: &M,
         position: Vec3,
         velocity: Vec3,
         duration: f64,
-        times: &[f64],
-        opts: &Options,
+        t_eval: &[f64],
     ) -> Result<Scan<ParticleState>> {
+        self.force(&position)?;
+        let opts = PARTICLE_TOLERANCES.options(false);
         simulate_particle_at(
             frame,
             self.mass,
             position,
             velocity,
-            0.0,
             duration,
-            times,
-            |_t, r, _v| self.force(r),
-            opts,
+            t_eval,
+            |_t, r, _v| self.force_unchecked(r),
+            &opts,
         )
+        .map_err(|mut e| {
+            if e.argument == "max_steps" {
+                e.argument = "duration".into();
+                e.message = format!(
+                    "too long for the default step limit ({} steps): {}",
+                    opts.max_steps, e.message
+                );
+            }
+            e
+        })
     }
 }
 
@@ -113,6 +175,7 @@ impl SpringParticle {
 mod tests {
     use super::*;
     use crate::frames::SteadyMotion;
+    use crate::integrate::Options;
 
     /// DOP853 at rtol 1e-12 over a few turns: positions agree with the closed forms to well
     /// below this (measured ~1e-11).
@@ -149,23 +212,24 @@ mod tests {
         v0_fixed: Vec3,
         times: &[f64],
     ) -> Vec<(Vec3, Vec3, Vec3, Vec3)> {
-        let rel0 = m.at(0.0).to_moving(&r0, &v0_fixed, &Vec3::zeros());
-        let scan = p
-            .simulate_at(
-                m,
-                rel0.position,
-                rel0.velocity,
-                *times.last().unwrap(),
-                times,
-                &opts(),
-            )
-            .unwrap();
+        let rel0 = m.at(0.0).to_moving(&r0, &v0_fixed, &Vec3::zeros()).unwrap();
+        let scan = simulate_particle_at(
+            m,
+            p.mass(),
+            rel0.position,
+            rel0.velocity,
+            *times.last().unwrap(),
+            times,
+            |_t, r, _v| p.force_unchecked(r),
+            &opts(),
+        )
+        .unwrap();
         times
             .iter()
             .zip(&scan.y)
             .map(|(&t, y)| {
                 let (r, v) = (Vec3::new(y[0], y[1], y[2]), Vec3::new(y[3], y[4], y[5]));
-                let f = m.at(t).to_fixed(&r, &v, &Vec3::zeros());
+                let f = m.at(t).to_fixed(&r, &v, &Vec3::zeros()).unwrap();
                 (f.position, f.velocity, r, v)
             })
             .collect()
@@ -220,13 +284,18 @@ mod tests {
         let times: Vec<f64> = (1..=50).map(|i| 0.2 * i as f64).collect();
         for (rate_dot, jacobi_conserved) in [(0.0, true), (0.25, false)] {
             let m = table(1.1, rate_dot);
-            let e0 = p.energy(&r0, &v0);
-            let rel0 = m.at(0.0).to_moving(&r0, &v0, &Vec3::zeros());
-            let j0 = p.jacobi_integral(&m.at(0.0), &rel0.position, &rel0.velocity);
+            let e0 = p.energy(&r0, &v0).unwrap();
+            let rel0 = m.at(0.0).to_moving(&r0, &v0, &Vec3::zeros()).unwrap();
+            let j0 = p
+                .jacobi_integral(&m.at(0.0), &rel0.position, &rel0.velocity)
+                .unwrap();
             let mut worst_j: f64 = 0.0;
             for ((x, v, r, rv), &t) in fixed_path(&p, &m, r0, v0, &times).iter().zip(&times) {
-                assert!(((p.energy(x, v) - e0) / e0).abs() < DRIFT_TOL, "t = {t}");
-                worst_j = worst_j.max((p.jacobi_integral(&m.at(t), r, rv) - j0).abs());
+                assert!(
+                    ((p.energy(x, v).unwrap() - e0) / e0).abs() < DRIFT_TOL,
+                    "t = {t}"
+                );
+                worst_j = worst_j.max((p.jacobi_integral(&m.at(t), r, rv).unwrap() - j0).abs());
             }
             if jacobi_conserved {
                 assert!(
@@ -250,9 +319,15 @@ mod tests {
         assert_eq!(p.jacobi_integral(&still, &r, &v), p.energy(&r, &v));
         // ω = 2 ẑ: |ω × r|² = 4 (x² + y²) = 1, so J = E − ½ m · 1.
         let turning = MovingFrame::rotating(Vec3::new(0.0, 0.0, 2.0)).unwrap();
-        assert!((p.jacobi_integral(&turning, &r, &v) - (p.energy(&r, &v) - 1.5)).abs() < 1e-14);
-        assert_eq!(p.force(&r), Vec3::new(-0.15, 0.2, -0.1));
-        assert!((p.acceleration(&r) - Vec3::new(-0.05, 0.2 / 3.0, -0.1 / 3.0)).norm() < 1e-16);
+        assert!(
+            (p.jacobi_integral(&turning, &r, &v).unwrap() - (p.energy(&r, &v).unwrap() - 1.5))
+                .abs()
+                < 1e-14
+        );
+        assert_eq!(p.force(&r), Ok(Vec3::new(-0.15, 0.2, -0.1)));
+        assert!(
+            (p.acceleration(&r).unwrap() - Vec3::new(-0.05, 0.2 / 3.0, -0.1 / 3.0)).norm() < 1e-16
+        );
     }
 
     #[test]
@@ -272,5 +347,74 @@ mod tests {
                 .argument,
             "stiffness"
         );
+    }
+
+    /// Finite or refused: a stiffness or a state so large that a result overflows is an error
+    /// naming the argument it comes from, never ±inf (the bindings guarded this before).
+    #[test]
+    fn results_beyond_the_doubles_name_the_argument() {
+        let stiff = SpringParticle::new(1.0, 1e308).unwrap();
+        let r = Vec3::new(10.0, 0.0, 0.0);
+        for e in [
+            stiff.force(&r).unwrap_err(),
+            stiff.acceleration(&r).unwrap_err(),
+        ] {
+            assert_eq!(e.argument, "position");
+            assert!(e.message.starts_with("the result ("), "{e}");
+        }
+        assert!(stiff
+            .acceleration(&r)
+            .unwrap_err()
+            .to_string()
+            .starts_with("position: the result (acceleration) is not a finite number"));
+        assert_eq!(stiff.potential(&r).unwrap_err().argument, "position");
+        let p = SpringParticle::new(1.0, 1.0).unwrap();
+        let fast = Vec3::new(1e200, 0.0, 0.0);
+        assert_eq!(
+            p.energy(&Vec3::x(), &fast).unwrap_err().argument,
+            "velocity"
+        );
+        assert!(p
+            .energy(&Vec3::new(f64::NAN, 0.0, 0.0), &Vec3::zeros())
+            .unwrap_err()
+            .to_string()
+            .starts_with("position: must be finite, got NaN"));
+        // The centrifugal term alone overflows: blamed on the position.
+        let spinning = MovingFrame::rotating(Vec3::new(0.0, 0.0, 1e160)).unwrap();
+        let e = p
+            .jacobi_integral(&spinning, &Vec3::new(1e160, 0.0, 0.0), &Vec3::zeros())
+            .unwrap_err();
+        assert_eq!(e.argument, "position");
+        // Negative control: ordinary magnitudes give the closed forms.
+        assert!((stiff.force(&Vec3::new(1e-10, 0.0, 0.0)).unwrap().x + 1e298).abs() < 1e284);
+        assert_eq!(p.energy(&Vec3::x(), &Vec3::y()).unwrap(), 1.0);
+    }
+
+    /// The run with the core's defaults (the lab's) names the caller's arguments: `t_eval`
+    /// outside the run, a negative `duration`, and a run longer than the default step limit
+    /// (which the caller did not choose) as `duration`.
+    #[test]
+    fn the_default_run_names_the_callers_arguments() {
+        let p = SpringParticle::new(1.0, 4.0).unwrap();
+        let m = table(1.0, 0.0);
+        let run = |d: f64, t: &[f64]| p.simulate_at(&m, Vec3::x(), Vec3::zeros(), d, t);
+        assert_eq!(run(1.0, &[2.0]).unwrap_err().argument, "t_eval");
+        assert_eq!(run(-1.0, &[0.0]).unwrap_err().argument, "duration");
+        assert_eq!(run(f64::NAN, &[0.0]).unwrap_err().argument, "duration");
+        let e = run(1e9, &[1e9]).unwrap_err();
+        assert_eq!(e.argument, "duration", "{e}");
+        assert!(
+            e.message.starts_with("too long for the default step limit"),
+            "{e}"
+        );
+        let stiff = SpringParticle::new(1.0, 1e308).unwrap();
+        let e = stiff
+            .simulate_at(&m, Vec3::new(10.0, 0.0, 0.0), Vec3::zeros(), 1.0, &[1.0])
+            .unwrap_err();
+        assert_eq!(e.argument, "position");
+        // Negative control: the same run within range; at t = π/2 the spring (ω = 2 rad/s in
+        // the fixed frame) has swung through half a period.
+        let y = run(1.0, &[0.0, 1.0]).unwrap().y;
+        assert_eq!(y[0][0], 1.0);
     }
 }
