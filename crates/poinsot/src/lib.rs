@@ -12,12 +12,13 @@
 //! | [`inertia`] | inertia tensor, principal axes, standard solids, density and mesh integrals, L and T | 2.43–2.66 |
 //! | [`frames`] | moving frames: velocity and acceleration terms, fictitious forces, particles in time-dependent frames | 2.1–2.28 |
 //! | [`earth`] | the rotating Earth: effective gravity, Coriolis, falling bodies, projectiles, Foucault, winds | 2.29–2.42 |
-//! | [`integrate`] | ODE integrators that know no physics: adaptive DOP853 with dense output and events, RK4 | — |
+//! | [`integrate`] | ODE integrators that know no physics: adaptive DOP853 with dense output and events, symmetric composition (the splittings' orders 4 and 6) | — |
 //! | [`dynamics`] | Euler's equations with torques, attitude quaternions, `simulate` (exact flow, Lie–Poisson splitting, RK4, DOP853), batches | 2.67–2.76 |
 //! | [`analytic`] | closed forms: the free symmetric top, the free asymmetric top (Jacobi functions, Π), Poinsot's construction, axis stability; the heavy symmetric top (Lagrangian, effective potential, turning points, steady precession, exact motion) | 2.77–2.121 |
 //! | [`control`] | stopping long computations (Ctrl-C) and reporting their progress | — |
 //! | [`defaults`] | the defaults of every public call's options, stated once for every front end | — |
 //! | [`limits`] | the memory budget and step limits checked before work starts | — |
+//! | `rows` (private) | the checks of a batch's rows of bodies (moments, ω₀, attitude), shared by `dynamics` and `analytic` | — |
 //! | `simd` (private) | lanes of doubles for the batch kernels, run with the widest vector instructions of the CPU | — |
 //! | [`special`] | Jacobi elliptic functions sn, cn, dn, am (parameter m = k²) and elliptic integrals F, E, K, Π | — |
 //! | [`sweep`] | parameter studies: a model at every point of a grid of its keywords, validated first, in parallel | — |
@@ -62,6 +63,7 @@ pub mod inertia;
 pub mod integrate;
 pub mod limits;
 pub mod rotation;
+mod rows;
 pub(crate) mod simd;
 pub mod special;
 pub mod sweep;

@@ -53,9 +53,10 @@ pub(crate) use lanes::PiSeries;
 use super::free_scale::{check_omega_range, representable, Scale};
 use super::free_symmetric_top::{check_omega, SymmetricMotion};
 use crate::error::{check_finite, Error, Result};
+use crate::inertia::check_moments;
 use crate::rotation::{
     axis_angle_quaternion, check_quaternion, conj, coordinate_quaternion, hamilton,
-    matrix_to_quaternion_any_sign, normalized, quaternion_rotate_unchecked as rotate,
+    matrix_to_quaternion_any_sign, normalized, quaternion_rotate_unchecked as rotate, row_major,
     same_hemisphere, Quaternion,
 };
 use crate::special::carlson::{rf_cd, rj_cd};
@@ -170,55 +171,6 @@ pub struct FreeRigidBody {
     l_space_hat: Vec3,
     regime: FreeRegime,
     motion: Motion,
-}
-
-/// Checks principal moments: finite, > 0, and the triangle inequality `I₁ + I₂ ≥ I₃` of the
-/// sorted moments within [`crate::inertia::PHYSICAL_RTOL`] of the largest (the same
-/// rule as [`crate::inertia::check_inertia`], without its eigen-decomposition), tested at unit
-/// scale so that the verdict does not depend on the units; errors name `moments`
-/// ([`crate::ErrorKind::InvalidInertia`]).
-pub fn check_moments(moments: &[f64; 3]) -> Result<()> {
-    if let Err(e) = check_finite("moments", moments) {
-        return Err(Error::inertia("moments", e.message));
-    }
-    if let Some(i) = moments.iter().position(|&v| v <= 0.0) {
-        return Err(Error::inertia(
-            "moments",
-            format!(
-                "principal moments must be > 0 for the body to turn, got {} at index {i}",
-                moments[i]
-            ),
-        ));
-    }
-    // Sorted ascending (three positive finite values: a comparison network).
-    let mut m = *moments;
-    if m[0] > m[1] {
-        m.swap(0, 1);
-    }
-    if m[1] > m[2] {
-        m.swap(1, 2);
-    }
-    if m[0] > m[1] {
-        m.swap(0, 1);
-    }
-    let e = exponent(m[2]);
-    let u = m.map(|v| ldexp(v, -e));
-    let excess = u[2] - (u[0] + u[1]);
-    if excess > crate::inertia::PHYSICAL_RTOL * u[2] {
-        return Err(Error::inertia(
-            "moments",
-            format!(
-                "principal moments {m:?} violate the triangle inequality I1 + I2 >= I3: {} + {} < {} by {:.6e} \
-                 ({:.3e} of the largest moment); no distribution of mass has these moments",
-                m[0],
-                m[1],
-                m[2],
-                m[2] - (m[0] + m[1]),
-                excess / u[2]
-            ),
-        ));
-    }
-    Ok(())
 }
 
 impl FreeRigidBody {
@@ -629,20 +581,6 @@ fn permutation(axes: [usize; 3]) -> Mat3 {
         }
     }
     p
-}
-
-fn row_major(m: &Mat3) -> [f64; 9] {
-    [
-        m[(0, 0)],
-        m[(0, 1)],
-        m[(0, 2)],
-        m[(1, 0)],
-        m[(1, 1)],
-        m[(1, 2)],
-        m[(2, 0)],
-        m[(2, 1)],
-        m[(2, 2)],
-    ]
 }
 
 /// The rotation C with third row `l` (a unit vector), C = R_x(θ) R_z(ψ) with

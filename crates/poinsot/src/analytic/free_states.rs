@@ -4,10 +4,10 @@ use rayon::prelude::*;
 
 use super::free_rigid_body::{FreeRigidBody, PiSeries};
 use crate::control::{self, Cancel};
-use crate::dynamics::{check_every_row, check_row, check_row_counts, in_body, in_row};
 use crate::error::{Error, ErrorKind, Result};
 use crate::limits::check_memory;
 use crate::rotation::{same_hemisphere, Quaternion};
+use crate::rows::{check_every_row, check_row, check_row_counts, in_body, in_row};
 use crate::Vec3;
 
 /// The times of [`free_body_states`].

@@ -11,7 +11,8 @@ mod free_symmetric_top;
 mod heavy_top;
 mod poinsot_construction;
 
-pub use free_rigid_body::{check_moments, FreeRegime, FreeRigidBody};
+pub use crate::inertia::check_moments;
+pub use free_rigid_body::{FreeRegime, FreeRigidBody};
 pub use free_scale::PHASE_LIMIT;
 pub use free_states::{free_body_states, FreeBodyStates, StateTimes};
 pub use free_symmetric_top::{FreeSymmetricTop, TopShape};

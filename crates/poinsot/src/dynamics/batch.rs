@@ -15,12 +15,13 @@ use super::simulate::{default_step_of, Method, SimulateOptions};
 use super::torque::{Torque, TorqueContext, TorqueModel};
 use std::sync::Arc;
 
-use crate::analytic::{check_moments, FreeRigidBody};
+use crate::analytic::FreeRigidBody;
 use crate::control::{self, Cancel};
 use crate::error::{Error, Result};
 use crate::integrate::{composition_coefficients, dop853, Options};
 use crate::limits::check_steps;
-use crate::rotation::{check_quaternion, normalized, quaternion_to_mat3_unchecked, Quaternion};
+use crate::rotation::{normalized, quaternion_to_mat3_unchecked, Quaternion};
+use crate::rows::{check_every_row, check_row, check_row_counts, in_body, IDENTITY};
 use crate::simd::{self, F64s, Simd, WithSimd, MAX_LANES};
 use crate::Vec3;
 
@@ -173,9 +174,6 @@ pub fn simulate_batch(
     Ok(out)
 }
 
-/// The identity attitude.
-const IDENTITY: Quaternion = [1.0, 0.0, 0.0, 0.0];
-
 /// The bodies' unit attitudes at the start, or the identity for all.
 #[derive(Debug, Clone, Copy)]
 struct Attitudes<'a>(Option<&'a [Quaternion]>);
@@ -188,70 +186,6 @@ impl Attitudes<'_> {
             None => IDENTITY,
         }
     }
-}
-
-/// A batch's rows agree: as many `omega0` rows (and `attitude0` rows, when given) as `moments`
-/// rows (`n`); else an error naming the argument that differs.
-pub(crate) fn check_row_counts(n: usize, omega0: usize, attitude0: Option<usize>) -> Result<()> {
-    let differs = |argument: &str, got: usize| {
-        Error::invalid(
-            argument,
-            format!("must have as many rows as moments ({n}), got {got}"),
-        )
-    };
-    if omega0 != n {
-        return Err(differs("omega0", omega0));
-    }
-    match attitude0 {
-        Some(a) if a != n => Err(differs("attitude0", a)),
-        _ => Ok(()),
-    }
-}
-
-/// Row `i` of a batch: the moments of a body ([`check_moments`]), a finite ω₀ and an attitude
-/// quaternion (the identity when none is given), returned unit; errors name the argument and
-/// the row.
-pub(crate) fn check_row(
-    moments: &[[f64; 3]],
-    omega0: &[[f64; 3]],
-    attitude0: Option<&[Quaternion]>,
-    i: usize,
-) -> Result<Quaternion> {
-    check_moments(&moments[i]).map_err(|e| in_row(i, e))?;
-    if !omega0[i].iter().all(|v| v.is_finite()) {
-        return Err(Error::invalid(
-            "omega0",
-            format!("must be finite, got {:?} at row {i}", omega0[i]),
-        ));
-    }
-    match attitude0 {
-        Some(a) => check_quaternion("attitude0", &a[i], false).map_err(|e| in_row(i, e)),
-        None => Ok(IDENTITY),
-    }
-}
-
-/// Every row of a batch ([`check_row`]), in parallel: the error of the first row at fault
-/// (the lowest index, whatever the threads).
-pub(crate) fn check_every_row(
-    moments: &[[f64; 3]],
-    omega0: &[[f64; 3]],
-    attitude0: Option<&[Quaternion]>,
-) -> Result<()> {
-    (0..moments.len())
-        .into_par_iter()
-        .with_min_len(BLOCK)
-        .find_map_first(|i| check_row(moments, omega0, attitude0, i).err())
-        .map_or(Ok(()), Err)
-}
-
-/// `e` with "body {i}: " before its message.
-pub(crate) fn in_body(i: usize, e: Error) -> Error {
-    Error::new(e.kind, e.argument, format!("body {i}: {}", e.message))
-}
-
-/// `e` with "row {i}: " before its message.
-pub(crate) fn in_row(i: usize, e: Error) -> Error {
-    Error::new(e.kind, e.argument, format!("row {i}: {}", e.message))
 }
 
 /// The torque on a body (principal moments `moments`) at time t, ω and attitude q (not

@@ -3,7 +3,6 @@
 //! flow, the Lie–Poisson splitting (orders 2, 4, 6), RK4 and DOP853 — for one body or many.
 
 mod batch;
-pub(crate) use batch::{check_every_row, check_row, check_row_counts, in_body, in_row};
 mod equations;
 mod lanes;
 mod model;

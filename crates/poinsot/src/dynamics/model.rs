@@ -1,10 +1,9 @@
 //! The inertia of a body for the equations of motion: principal moments, or a full tensor
 //! with its principal frame.
 
-use crate::analytic::check_moments;
 use crate::error::{Error, Result};
-use crate::inertia::{check_inertia, principal};
-use crate::rotation::Quaternion;
+use crate::inertia::{check_inertia, check_moments, principal};
+use crate::rotation::{matrix_to_quaternion_any_sign, row_major, Quaternion};
 use crate::{Mat3, Vec3};
 
 /// A body's inertia about its fixed point (or centre of mass), for Euler's equations.
@@ -68,23 +67,11 @@ impl BodyInertia {
         }
         let p = principal(&t, 0.0);
         check_moments(&p.moments).map_err(|e| Error::inertia("inertia", e.message))?;
-        let r = p.axes;
-        let m = [
-            r[(0, 0)],
-            r[(0, 1)],
-            r[(0, 2)],
-            r[(1, 0)],
-            r[(1, 1)],
-            r[(1, 2)],
-            r[(2, 0)],
-            r[(2, 1)],
-            r[(2, 2)],
-        ];
         Ok(Self {
             tensor: t,
             moments: p.moments,
             axes: p.axes,
-            axes_q: crate::rotation::matrix_to_quaternion_any_sign(&m),
+            axes_q: matrix_to_quaternion_any_sign(&row_major(&p.axes)),
             principal: false,
         })
     }

@@ -14,6 +14,7 @@ mod body;
 mod density;
 mod mesh;
 mod mesh_embedding;
+mod moments;
 mod scaling;
 mod shapes;
 mod tensor;
@@ -26,6 +27,7 @@ pub use mesh::{
     check_mesh_file, merge_close_vertices, mesh_mass_properties, mesh_mass_properties_merging,
     mesh_mass_properties_rows, FaceIndex, MAX_VERTICES, MERGE_RTOL, MESH_FILE_BYTES_PER_TRIANGLE,
 };
+pub use moments::check_moments;
 pub use shapes::{
     cuboid, cuboid_sides, ellipsoid, solid_cone, solid_cylinder, solid_sphere, spherical_shell,
     thin_disk, thin_ring, thin_rod,

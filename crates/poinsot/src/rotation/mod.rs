@@ -44,6 +44,7 @@ pub(crate) use lanes::{
     hamilton_lanes, matrix_to_quaternion_lanes, normalized_lanes, quaternion_to_matrix_lanes,
     QuatLanes,
 };
+pub(crate) use matrix::row_major;
 pub use matrix::{
     check_rotation_matrix, check_rotation_matrix_named, compose, elementary_rotation, rot_x, rot_y,
     rot_z, rotate_vectors, NEAREST_ROTATION_DEFECT, ROTATION_MATRIX_TOL,

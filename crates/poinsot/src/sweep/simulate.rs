@@ -3,9 +3,9 @@
 //! 2.71 with the attitude quaternion).
 
 use super::grid::{Grid, Param};
-use crate::analytic::check_moments;
 use crate::dynamics::{simulate_batch, SimulateOptions, Torque};
 use crate::error::{check_finite, Error, Result};
+use crate::inertia::check_moments;
 use crate::rotation::{check_quaternion, Quaternion};
 
 /// The keywords of [`simulate`] that may vary from point to point: `moments` (principal
