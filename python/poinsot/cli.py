@@ -27,6 +27,7 @@ from typing import Any, NoReturn
 import click
 import numpy as np
 
+from ._core import DEFAULTS as _DEFAULTS
 from ._progress import SHOW_PROGRESS_AFTER_S, delayed_bar, stderr_interactive
 from .errors import PoinsotError
 from .plots._mpl import STYLES
@@ -780,7 +781,7 @@ def _angle_unit(degrees: bool) -> str:
 @click.option(
     "--gravity",
     type=click.Choice(["uniform", "inverse-square"]),
-    default="uniform",
+    default=_DEFAULTS["Earth.drop"]["gravity"],
     show_default=True,
     help="Uniform gravity (the unit's model) or g falling off with height.",
 )
@@ -872,7 +873,13 @@ def fall(
     help="Azimuth clockwise from north (0 north, 90° east).",
 )
 @click.option("--latitude", type=FINITE, required=True, help="Latitude, north-positive.")
-@click.option("--height", type=FINITE, default=0.0, show_default=True, help="Launch height in m.")
+@click.option(
+    "--height",
+    type=FINITE,
+    default=_DEFAULTS["Earth.projectile"]["height"],
+    show_default=True,
+    help="Launch height in m.",
+)
 @click.option("--degrees", is_flag=True, help="Read the angles in degrees.")
 @click.option("--solar-day", "solar_day", is_flag=True, help="Use the unit's rate 2π/86400.")
 @_picture_options("Save a picture of the flight (its track in east, north, up) to this file.")
@@ -961,15 +968,23 @@ def projectile(
 @click.option(
     "--length",
     type=FINITE,
-    default=67.0,
+    default=_DEFAULTS["Earth.foucault"]["length"],
     show_default=True,
     help="Pendulum length in m (the Panthéon's 67 m).",
 )
 @click.option(
-    "--amplitude", type=FINITE, default=1.0, show_default=True, help="Release displacement in m."
+    "--amplitude",
+    type=FINITE,
+    default=_DEFAULTS["Earth.foucault"]["amplitude"],
+    show_default=True,
+    help="Release displacement in m.",
 )
 @click.option(
-    "--duration", type=FINITE, default=3600.0, show_default=True, help="Simulated time in s."
+    "--duration",
+    type=FINITE,
+    default=_DEFAULTS["Earth.foucault"]["duration"],
+    show_default=True,
+    help="Simulated time in s.",
 )
 @click.option("--solar-day", "solar_day", is_flag=True, help="Use the unit's rate 2π/86400.")
 @_picture_options(
@@ -1095,7 +1110,7 @@ def foucault(
 @click.option(
     "--method",
     type=click.Choice(["auto", "exact", "rk4", "dop853", "splitting2", "splitting4", "splitting6"]),
-    default="auto",
+    default=_DEFAULTS["simulate"]["method"],
     show_default=True,
     help="Integrator (auto: the exact flow).",
 )
@@ -1277,7 +1292,7 @@ def _free_pictures(
     "--phi-dot",
     "phi_dot",
     type=FINITE,
-    default=0.0,
+    default=_DEFAULTS["HeavyTop.__init__"]["phi_dot"],
     show_default=True,
     help="Initial precession rate φ̇₀ (rad/s).",
 )
@@ -1285,7 +1300,7 @@ def _free_pictures(
     "--psi-dot",
     "psi_dot",
     type=FINITE,
-    default=0.0,
+    default=_DEFAULTS["HeavyTop.__init__"]["psi_dot"],
     show_default=True,
     help="Initial spin rate ψ̇₀ (rad/s).",
 )
@@ -1293,7 +1308,7 @@ def _free_pictures(
     "--theta-dot",
     "theta_dot",
     type=FINITE,
-    default=0.0,
+    default=_DEFAULTS["HeavyTop.__init__"]["theta_dot"],
     show_default=True,
     help="Initial nutation rate θ̇₀ (rad/s).",
 )

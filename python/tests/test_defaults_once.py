@@ -138,3 +138,26 @@ def test_negative_control_a_default_the_core_does_not_state_is_caught():
     assert mismatches("f", f, {"f": {"samples": 5, "rtol": 1.0}}) == [
         "f: the core's default rtol=1.0 is not in the signature"
     ]
+
+
+#: The command-line options that mean an argument of the API: (command, option) -> (call, argument).
+CLI = {
+    ("fall", "gravity"): ("Earth.drop", "gravity"),
+    ("projectile", "height"): ("Earth.projectile", "height"),
+    ("foucault", "length"): ("Earth.foucault", "length"),
+    ("foucault", "amplitude"): ("Earth.foucault", "amplitude"),
+    ("foucault", "duration"): ("Earth.foucault", "duration"),
+    ("free", "method"): ("simulate", "method"),
+    ("top", "theta_dot"): ("HeavyTop.__init__", "theta_dot"),
+    ("top", "phi_dot"): ("HeavyTop.__init__", "phi_dot"),
+    ("top", "psi_dot"): ("HeavyTop.__init__", "psi_dot"),
+}
+
+
+@pytest.mark.parametrize(("command", "option"), sorted(CLI))
+def test_the_command_line_defaults_are_the_cores(command, option):
+    from poinsot.cli import main
+
+    param = next(p for p in main.commands[command].params if p.name == option)
+    call, argument = CLI[command, option]
+    assert _same(param.default, _core.DEFAULTS[call][argument]), (param.default, call, argument)
