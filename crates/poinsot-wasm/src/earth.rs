@@ -10,10 +10,23 @@
 //! that an animation can be evaluated — or seeked — anywhere.
 
 use crate::args::{count, index_in, number, numbers, Count, Number, Numbers};
-use crate::convert::{finite, finite1, renamed_all, vec_out, Failure, Out};
+use crate::convert::{vec_out, Failure, Out};
 use poinsot::earth::{self as ea, FallModel, Gravity, LowSetup};
 use poinsot::frames::ParticleState;
 use wasm_bindgen::prelude::wasm_bindgen;
+
+/// The core's errors name the caller's arguments and its results are finite, so they pass as
+/// they are; but the browser's runs take the core's tolerances with a fixed step limit, not an
+/// argument: a run that needs more steps is refused naming `argument`, what makes it long.
+fn step_limit(argument: &'static str) -> impl Fn(poinsot::Error) -> Failure {
+    move |mut e| {
+        if e.argument == "max_steps" {
+            e.message = format!("too long for the step limit of the browser: {}", e.message);
+            e.argument = argument.into();
+        }
+        Failure::from(e)
+    }
+}
 
 /// The rotating Earth (`poinsot.Earth` in Python).
 #[wasm_bindgen]
@@ -53,8 +66,7 @@ impl Fall {
         #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
     ) -> Out<Vec<f64>> {
         let t = number("t", &t)?;
-        poinsot::error::check_finite("t", &[t])?;
-        finite("t", "state", self.inner.solution.at(t)?.to_vec())
+        Ok(self.inner.state_at(t)?.to_vec())
     }
 }
 
@@ -108,11 +120,7 @@ impl Earth {
     ) -> Out<f64> {
         let height = number("height", &height)?;
         let latitude = number("latitude", &latitude)?;
-        finite1(
-            "height, latitude",
-            "eastward deflection",
-            self.inner.eastward_deflection(height, latitude)?,
-        )
+        Ok(self.inner.eastward_deflection(height, latitude)?)
     }
 
     /// The second-order southward deflection (m) in the northern hemisphere.
@@ -124,11 +132,7 @@ impl Earth {
     ) -> Out<f64> {
         let height = number("height", &height)?;
         let latitude = number("latitude", &latitude)?;
-        finite1(
-            "height, latitude",
-            "southward deflection",
-            self.inner.southward_deflection(height, latitude)?,
-        )
+        Ok(self.inner.southward_deflection(height, latitude)?)
     }
 
     /// The time (s) to fall `height` (m) in uniform gravity without rotation, √(2h/g).
@@ -138,7 +142,7 @@ impl Earth {
         #[wasm_bindgen(unchecked_param_type = "number")] height: Number,
     ) -> Out<f64> {
         let height = number("height", &height)?;
-        finite1("height", "fall time", self.inner.fall_time(height)?)
+        Ok(self.inner.fall_time(height)?)
     }
 
     /// The exact drop from rest at `height` (m) and `latitude` (rad), with the core's defaults
@@ -156,21 +160,10 @@ impl Earth {
             centrifugal: true,
             options: ea::DROP_TOLERANCES.options(true),
         };
-        // The core names the integration's end (`t_end`, from the fall time) and its time `t`:
-        // both come from `height`.
-        let f = self.inner.drop(height, latitude, &model).map_err(
-            renamed_all(&[
-                ("t_end", "height"),
-                ("t", "height"),
-                ("max_steps", "height"),
-            ])
-            .otherwise("height, latitude"),
-        )?;
-        finite(
-            "height, latitude",
-            "landing point",
-            vec![f.time, f.east, f.north],
-        )?;
+        let f = self
+            .inner
+            .drop(height, latitude, &model)
+            .map_err(step_limit("height"))?;
         Ok(Fall { inner: f })
     }
 
@@ -182,11 +175,7 @@ impl Earth {
         #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
     ) -> Out<f64> {
         let latitude = number("latitude", &latitude)?;
-        finite1(
-            "latitude",
-            "Foucault rate",
-            self.inner.foucault_rate(latitude)?,
-        )
+        Ok(self.inner.foucault_rate(latitude)?)
     }
 
     /// The Earth's angular velocity in the local ENU frame, ω (0, cos λ, sin λ) (rad/s).
@@ -196,11 +185,7 @@ impl Earth {
         #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
     ) -> Out<Vec<f64>> {
         let latitude = number("latitude", &latitude)?;
-        finite(
-            "latitude",
-            "omega",
-            vec_out(&self.inner.omega_enu(latitude)?),
-        )
+        Ok(vec_out(&self.inner.omega_enu(latitude)?))
     }
 
     /// The effective gravity vector (ENU, m/s²) at `latitude` (rad).
@@ -210,32 +195,21 @@ impl Earth {
         #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
     ) -> Out<Vec<f64>> {
         let latitude = number("latitude", &latitude)?;
-        finite(
-            "latitude",
-            "effective gravity",
-            vec_out(&self.inner.effective_gravity(latitude)?.vector),
-        )
+        Ok(vec_out(&self.inner.effective_gravity(latitude)?.vector))
     }
 
-    /// The Coriolis acceleration −2 ω × v (ENU, m/s²) of a velocity `velocity` (ENU, m/s).
+    /// The Coriolis acceleration −2 ω × v (ENU, m/s²) of a velocity `velocity_enu` (ENU, m/s)
+    /// (`Earth.coriolis_acceleration`, the same argument's name).
     #[wasm_bindgen(js_name = coriolisAcceleration)]
     pub fn coriolis_acceleration(
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] velocity: Numbers,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] velocity_enu: Numbers,
     ) -> Out<Vec<f64>> {
         let latitude = number("latitude", &latitude)?;
-        let velocity = numbers("velocity", &velocity)?;
-        finite(
-            "latitude, velocity",
-            "Coriolis acceleration",
-            vec_out(
-                &self.inner.coriolis_acceleration(
-                    latitude,
-                    &crate::convert::vec3("velocity", &velocity)?,
-                )?,
-            ),
-        )
+        let v = numbers("velocity_enu", &velocity_enu)?;
+        let v = crate::convert::vec3("velocity_enu", &v)?;
+        Ok(vec_out(&self.inner.coriolis_acceleration(latitude, &v)?))
     }
 }
 
@@ -253,9 +227,7 @@ pub struct FoucaultRun {
 
 impl FoucaultRun {
     fn state_at(&self, t: f64) -> Out<ParticleState> {
-        self.inner
-            .state_at(t)
-            .map_err(renamed_all(&[("max_steps", "t")]).otherwise("t"))
+        self.inner.state_at(t).map_err(step_limit("t"))
     }
 }
 
@@ -376,7 +348,7 @@ impl FoucaultRun {
         #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
     ) -> Out<Vec<f64>> {
         let t = number("t", &t)?;
-        finite("t", "state", self.state_at(t)?.to_vec())
+        Ok(self.state_at(t)?.to_vec())
     }
     /// Jacobi's integral (J/kg) of the state at `t`: constant along the run.
     #[wasm_bindgen(js_name = jacobiIntegral)]
@@ -386,11 +358,7 @@ impl FoucaultRun {
     ) -> Out<f64> {
         let t = number("t", &t)?;
         let s = self.state_at(t)?;
-        finite1(
-            "t",
-            "Jacobi integral",
-            self.inner.earth.jacobi_integral(self.inner.latitude, &s)?,
-        )
+        Ok(self.inner.earth.jacobi_integral(self.inner.latitude, &s)?)
     }
 }
 
@@ -446,11 +414,7 @@ impl LowFlow {
     /// from the last sample before `t`; `energy + dissipated` is each parcel's initial energy.
     pub fn at(&self, #[wasm_bindgen(unchecked_param_type = "number")] t: Number) -> Out<Vec<f64>> {
         let t = number("t", &t)?;
-        let rows = self
-            .inner
-            .at(t)
-            .map_err(renamed_all(&[("max_steps", "t")]).otherwise("t"))?;
-        finite("t", "parcels' states", rows.concat())
+        Ok(self.inner.at(t).map_err(step_limit("t"))?.concat())
     }
 }
 
@@ -516,13 +480,8 @@ impl Earth {
                 samples,
                 &ea::FOUCAULT_TOLERANCES,
             )
-            .map_err(
-                renamed_all(&[("state0", "length, amplitude"), ("max_steps", "duration")])
-                    .otherwise("latitude, length, amplitude, azimuth, duration, samples"),
-            )?;
-        let unit_rate = inner
-            .unit_rate()
-            .map_err(renamed_all(&[]).otherwise("latitude, length"))?;
+            .map_err(step_limit("duration"))?;
+        let unit_rate = inner.unit_rate()?;
         Ok(FoucaultRun { inner, unit_rate })
     }
 
@@ -566,12 +525,10 @@ impl Earth {
             pull,
             friction,
         };
-        let args = "latitude, radius, parcels, pull, friction, duration, samples";
         let inner = self
             .inner
             .low_flow(latitude, &setup, duration, samples, &ea::LOW_TOLERANCES)
-            .map_err(renamed_all(&[("max_steps", "duration")]).otherwise(args))?;
-        finite1(args, "circulation", inner.run.circulation)?;
+            .map_err(step_limit("duration"))?;
         Ok(LowFlow { inner })
     }
 
@@ -603,7 +560,6 @@ impl Earth {
                 ))
             }
         };
-        let args = "latitude, velocity, duration, samples";
         let inner = self
             .inner
             .inertial_swing(
@@ -613,8 +569,7 @@ impl Earth {
                 samples,
                 &ea::INERTIAL_TOLERANCES,
             )
-            .map_err(renamed_all(&[("max_steps", "duration")]).otherwise(args))?;
-        finite1(args, "turning rate", inner.run.turning_rate)?;
+            .map_err(step_limit("duration"))?;
         Ok(InertialOscillation { inner })
     }
 
@@ -636,11 +591,7 @@ impl Earth {
         #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
     ) -> Out<f64> {
         let latitude = number("latitude", &latitude)?;
-        finite1(
-            "latitude",
-            "Coriolis parameter",
-            self.inner.coriolis_parameter(latitude)?,
-        )
+        Ok(self.inner.coriolis_parameter(latitude)?)
     }
 
     /// Jacobi's integral ½ |v|² + g z − ½ |ω × r|² (J/kg) of an ENU `state` `[x, y, z, vx, vy,
@@ -662,11 +613,7 @@ impl Earth {
                 ),
             )
         })?;
-        finite1(
-            "latitude, state",
-            "Jacobi integral",
-            self.inner.jacobi_integral(latitude, &s)?,
-        )
+        Ok(self.inner.jacobi_integral(latitude, &s)?)
     }
 }
 
@@ -714,6 +661,21 @@ mod tests {
             .unwrap_err()
             .message
             .starts_with("height"));
+    }
+
+    #[test]
+    fn errors_are_the_cores_with_pythons_names() {
+        // Issue 22: the core names the caller's arguments as Python does; nothing is renamed here.
+        let e = earth();
+        let fast = Earth::new(1e300, Earth::mean_radius(), Earth::standard_gravity()).unwrap();
+        let err = fast
+            .coriolis_acceleration(0.5, vec![1e10, 0.0, 0.0])
+            .unwrap_err();
+        assert!(err.message.starts_with("velocity_enu: "), "{}", err.message);
+        let err = e.foucault(0.8, 1e300, 1.0, 0.0, 60.0, 11.0).unwrap_err();
+        assert!(err.message.starts_with("amplitude: "), "{}", err.message);
+        let err = e.drop(1e308, 0.5).unwrap_err();
+        assert!(err.message.starts_with("height: "), "{}", err.message);
     }
 
     #[test]
