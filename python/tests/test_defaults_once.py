@@ -14,6 +14,7 @@ import dataclasses
 import inspect
 import types
 from collections.abc import Callable, Iterator
+from pathlib import Path
 from typing import Any
 
 import poinsot
@@ -161,3 +162,33 @@ def test_the_command_line_defaults_are_the_cores(command, option):
     param = next(p for p in main.commands[command].params if p.name == option)
     call, argument = CLI[command, option]
     assert _same(param.default, _core.DEFAULTS[call][argument]), (param.default, call, argument)
+
+
+def _stub_rows() -> dict[str, set[str]]:
+    """The arguments of each call as _core.pyi types DEFAULTS (its TypedDicts)."""
+    import ast
+
+    tree = ast.parse((Path(_core.__file__).parent / "_core.pyi").read_text(encoding="utf-8"))
+    classes: dict[str, ast.ClassDef] = {n.name: n for n in tree.body if isinstance(n, ast.ClassDef)}
+
+    def fields(name: str) -> set[str]:
+        cls = classes[name]
+        own = {s.target.id for s in cls.body if isinstance(s, ast.AnnAssign)}  # type: ignore[union-attr]
+        for base in cls.bases:
+            if isinstance(base, ast.Name) and base.id in classes:
+                own |= fields(base.id)
+        return own
+
+    for node in tree.body:
+        if (
+            isinstance(node, ast.Assign)
+            and isinstance(node.targets[0], ast.Name)
+            and node.targets[0].id == "_Defaults"
+        ):
+            table = node.value.args[1]  # type: ignore[attr-defined]
+            return {k.value: fields(v.id) for k, v in zip(table.keys, table.values)}
+    raise AssertionError("_core.pyi has no _Defaults")
+
+
+def test_the_stub_types_every_row_of_the_table():
+    assert _stub_rows() == {call: set(row) for call, row in _core.DEFAULTS.items()}
