@@ -85,30 +85,28 @@ def calls() -> None:
 def layers() -> None:
     """The pieces of ``FreeRigidBody(lists).state(t)``, each timed alone (the rest of the
     whole is Python's own: calls, frames, attribute stores)."""
-    from poinsot import free
-
     body = ps.FreeRigidBody(MOMENTS, OMEGA0)
     m_arr, w_arr = np.array(MOMENTS), np.array(OMEGA0)
     m_tup, w_tup = tuple(MOMENTS), tuple(OMEGA0)
     ints = [1, 2, 3]
     cls = ps.FreeRigidBody
-    raw_state = getattr(cls.state, "__wrapped__", cls.state)
     steps: list[tuple[str, Callable[[], Any]]] = [
         ("whole: FreeRigidBody(lists).state(t)", lambda: cls(MOMENTS, OMEGA0).state(T)),
         ("FreeRigidBody(lists)", lambda: cls(MOMENTS, OMEGA0)),
         ("body.state(t)", lambda: body.state(T)),
         ("the pieces:", lambda: None),
         ("  object.__new__(FreeRigidBody)", lambda: object.__new__(cls)),
-        ("  FreeBodySolution.from_plain(lists)  (binding reads + core new)",
-         lambda: free._free_body_from_plain(MOMENTS, OMEGA0)),
-        ("  FreeBodySolution.from_plain(arrays)", lambda: free._free_body_from_plain(m_arr, w_arr)),
-        ("  FreeBodySolution(tuples)  (after Python's conversion)",
-         lambda: _core.FreeBodySolution(m_tup, w_tup, None)),
-        ("  FreeRigidBody.state(body, t) without the guard's wrapper", lambda: raw_state(body, T)),
+        ("  FreeBodySolution(lists)  (binding reads + core new)",
+         lambda: _core.FreeBodySolution(MOMENTS, OMEGA0, None)),
+        ("  FreeBodySolution(arrays)", lambda: _core.FreeBodySolution(m_arr, w_arr, None)),
+        ("  FreeBodySolution(tuples)", lambda: _core.FreeBodySolution(m_tup, w_tup, None)),
+        ("  FreeBodySolution(ints)  (read by the binding too)",
+         lambda: _core.FreeBodySolution(ints, w_tup, None)),
         ("  plain_float(t)  (is t a plain finite number)", lambda: _validate.plain_float(T)),
         ("  c.state_at(t)  (binding + core state, two arrays out)", lambda: body._core.state_at(T)),
         ("the general path's pieces, for comparison:", lambda: None),
-        ("  as_triple([1, 2, 3])  (ints: converted in Python)", lambda: _validate.as_triple(ints, "m")),
+        ("  FreeBodySolution(float32 array)  (the package's general conversion)",
+         lambda: _core.FreeBodySolution(m_arr.astype(np.float32), w_tup, None)),
         ("  as_float_array(list)", lambda: _validate.as_float_array(OMEGA0, "omega0")),
         ("  as_float_array(t)", lambda: _validate.as_float_array(T, "t")),
         ("  c.state(np.array([t]))  (the array entry point)", lambda: body._core.state(np.array([T]))),

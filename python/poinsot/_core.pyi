@@ -628,9 +628,11 @@ class SymmetricTopSolution:
         cls,
         i1: float,
         i3: float,
-        omega0: NDArray[np.float64] | tuple[float, float, float],
+        omega0: object,
         attitude0: NDArray[np.float64] | None = None,
     ) -> SymmetricTopSolution: ...
+    @property
+    def omega0(self) -> NDArray[np.float64]: ...
     @property
     def precession_rate(self) -> float: ...
     @property
@@ -674,12 +676,10 @@ class SymmetricTopSolution:
 class FreeBodySolution:
     def __new__(
         cls,
-        moments: NDArray[np.float64] | tuple[float, float, float],
-        omega0: NDArray[np.float64] | tuple[float, float, float],
+        moments: object,
+        omega0: object,
         attitude0: NDArray[np.float64] | None = None,
     ) -> FreeBodySolution: ...
-    @staticmethod
-    def from_plain(moments: object, omega0: object) -> FreeBodySolution | None: ...
     @property
     def moments(self) -> NDArray[np.float64]: ...
     @property

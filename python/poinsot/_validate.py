@@ -98,33 +98,6 @@ def plain_float(value: Any) -> float | None:
     return None
 
 
-def _plain_triple(value: Any) -> tuple[float, float, float] | None:
-    """``value`` as three finite Python floats when it plainly is a 3-vector — a list or
-    tuple of three :func:`plain_float` numbers, or a float64 array of shape (3,) — else None."""
-    kind = type(value)
-    if kind is list or kind is tuple:
-        if len(value) != 3:
-            return None
-        x, y, z = value
-        if type(x) is not float or type(y) is not float or type(z) is not float:
-            x, y, z = plain_float(x), plain_float(y), plain_float(z)
-            if x is None or y is None or z is None:
-                return None
-            return x, y, z
-    elif kind is np.ndarray:
-        if value.dtype is not _F64 or value.shape != (3,):
-            return None
-        x, y, z = value.tolist()
-    else:
-        return None
-    # All three finite when their sum is (a NaN or an infinity makes it NaN or infinite); a
-    # sum that overflows only sends finite numbers to the general path.
-    total = x + y + z
-    if total - total == 0.0:
-        return value if kind is tuple else (x, y, z)
-    return None
-
-
 def as_scalar(value: Any, name: str) -> float:
     """``value`` as a finite Python float; raises :class:`PoinsotError` naming ``name``."""
     x = plain_float(value)
@@ -207,30 +180,15 @@ def as_vectors(value: Any, name: str, size: int = 3) -> tuple[FloatArray, tuple[
     return np.ascontiguousarray(arr.reshape(-1, size)), lead
 
 
-def as_vector3(value: Any, name: str) -> FloatArray:
-    """``value`` as one 3-vector of shape ``(3,)``."""
-    fast = _plain_triple(value)
-    if fast is not None:
-        return value if type(value) is np.ndarray else np.array(fast)
-    arr = as_float_array(value, name)
-    if arr.shape != (3,):
-        raise PoinsotError(f"{name}: must have shape (3,), got {arr.shape}")
-    return arr
-
-
-def as_triple(value: Any, name: str, *, finite: bool = True) -> tuple[float, float, float]:
-    """``value`` as one 3-vector given as three Python floats (what the binding's
-    constructors take without building an array): the checks and errors of
-    :func:`as_vector3` (with ``finite=False``, non-finite entries pass, for the core to judge),
-    and a fast path for a list or tuple of three plain numbers or a float64 array (3,)."""
-    fast = _plain_triple(value)
-    if fast is not None:
-        return fast
+def as_vector3(value: Any, name: str, *, finite: bool = True) -> FloatArray:
+    """``value`` as one 3-vector of shape ``(3,)`` (with ``finite=False`` non-finite entries
+    pass, for the core to judge). The free bodies' vectors are converted by the binding instead
+    (``crates/poinsot-py/src/convert.rs``, ``triple``), which reads plain lists, tuples and
+    float64 arrays itself and hands anything else to :func:`as_float_array`."""
     arr = as_float_array(value, name, finite=finite)
     if arr.shape != (3,):
         raise PoinsotError(f"{name}: must have shape (3,), got {arr.shape}")
-    x, y, z = arr.tolist()
-    return x, y, z
+    return arr
 
 
 def as_matrices(value: Any, name: str) -> tuple[FloatArray, tuple[int, ...]]:

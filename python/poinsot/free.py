@@ -33,7 +33,6 @@ from ._validate import (
     as_flat,
     as_float_array,
     as_scalar,
-    as_triple,
     plain_float,
 )
 from .errors import PoinsotError
@@ -110,21 +109,20 @@ class FreeSymmetricTop(show.Displayed):
     def __init__(self, I1: float, I3: float, omega0: Any, attitude0: Any = None) -> None:
         i1 = as_scalar(I1, "I1")
         i3 = as_scalar(I3, "I3")
-        w = as_triple(omega0, "omega0")
         q = None if attitude0 is None else _quat(attitude0, "attitude0")
-        self._core = _core.SymmetricTopSolution(i1, i3, w, q)
+        # omega0 of any form: converted once, by the binding (its errors name omega0)
+        self._core = _core.SymmetricTopSolution(i1, i3, omega0, q)
         self.I1 = i1
         self.I3 = i3
-        self._omega0 = w
         self._attitude0 = q
 
     def __reduce__(self) -> tuple[Any, ...]:  # pickling and copying: the constructor again
-        return (FreeSymmetricTop, (self.I1, self.I3, self._omega0, self._attitude0))
+        return (FreeSymmetricTop, (self.I1, self.I3, self.omega0, self._attitude0))
 
     @property
     def omega0(self) -> FloatArray:
         """ω at t = 0 in body components, as given (rad/s, shape (3,); a new array)."""
-        return np.array(self._omega0)
+        return np.asarray(self._core.omega0)
 
     def _rows(self) -> list[show.Row]:
         return [
@@ -329,11 +327,6 @@ class FreeSymmetricTop(show.Displayed):
         )
 
 
-#: The binding's constructor for plain input (None when the input is not plain); a name of its
-#: own so that the tests can switch it off and compare with the general path.
-_free_body_from_plain = _core.FreeBodySolution.from_plain
-
-
 def _samples(samples: Any) -> int:
     """A polhode's point count: an int ≥ 2 whose (samples, 3) output fits the memory budget."""
     n = as_count(samples, "samples", 2)
@@ -384,16 +377,10 @@ class FreeRigidBody(show.Displayed):
         plain = kind is list or kind is tuple or kind is np.ndarray
         if not plain and hasattr(moments, "principal_moments"):
             moments = moments.principal_moments
-        # Three plain finite floats each (lists, tuples, float64 arrays): read by the binding
-        # directly. Anything else: converted and checked here, with the API's errors.
-        core = _free_body_from_plain(moments, omega0) if attitude0 is None else None
-        if core is None:
-            m = as_triple(moments, "moments", finite=False)
-            w = as_triple(omega0, "omega0")
-            q = None if attitude0 is None else _quat(attitude0, "attitude0")
-            core = _core.FreeBodySolution(m, w, q)
-        self._core = core
-        self._attitude0 = None if attitude0 is None else q
+        q = None if attitude0 is None else _quat(attitude0, "attitude0")
+        # moments and omega0 of any form: converted once, by the binding (errors name them)
+        self._core = _core.FreeBodySolution(moments, omega0, q)
+        self._attitude0 = q
 
     def __reduce__(self) -> tuple[Any, ...]:
         # pickling and copying: the constructor again, on the floats the core was given

@@ -38,7 +38,7 @@ from numpy.typing import NDArray
 from . import _core
 from . import _display as show
 from ._core import DEFAULTS as _DEFAULTS
-from ._validate import _is_scipy_rotation, as_float_array, as_scalar, as_triple
+from ._validate import _is_scipy_rotation, as_float_array, as_scalar, as_vector3
 from .errors import GimbalLockWarning, PoinsotError
 
 FloatArray = NDArray[np.float64]
@@ -367,8 +367,8 @@ class Screw(show.Displayed):
 
     def __post_init__(self) -> None:
         parts = _core.screw_new(
-            np.array(as_triple(self.axis, "axis", finite=False)),
-            np.array(as_triple(self.point, "point", finite=False)),
+            as_vector3(self.axis, "axis", finite=False),
+            as_vector3(self.point, "point", finite=False),
             _real(self.angle, "angle"),
             _real(self.slide, "slide"),
             None if self.pitch is None else _real(self.pitch, "pitch"),

@@ -8,9 +8,7 @@ use poinsot_py_macros::export;
 use pyo3::prelude::*;
 
 use crate::control::{map_each, run};
-use crate::convert::{
-    opt_quat, plain_triple, rows_view, slice, times, triple, vec3, Numbers, Rows, Vector,
-};
+use crate::convert::{opt_quat, rows_view, slice, times, triple, vec3, Numbers, Rows, Vector};
 use crate::errors::IntoPy;
 
 /// `f` at each of the times `t` (N,), each finite → (N, K) rows (without the GIL, stoppable by
@@ -44,11 +42,16 @@ impl PySymmetricTop {
         omega0: &Bound<'_, PyAny>,
         attitude0: Option<PyReadonlyArray1<'_, f64>>,
     ) -> PyResult<Self> {
-        let w = triple("omega0", omega0)?.into();
+        let w = triple("omega0", omega0, true)?.into();
         let q = opt_quat("attitude0", &attitude0)?;
         Ok(Self {
             inner: FreeSymmetricTop::new(i1, i3, w, q).py()?,
         })
+    }
+    /// ω at t = 0 as given (body, rad/s, (3,)).
+    #[getter]
+    fn omega0(&self) -> Vector {
+        Vector(self.inner.omega0())
     }
     #[getter]
     fn precession_rate(&self) -> f64 {
@@ -158,24 +161,12 @@ impl PyFreeBody {
         omega0: &Bound<'_, PyAny>,
         attitude0: Option<PyReadonlyArray1<'_, f64>>,
     ) -> PyResult<Self> {
-        let m = triple("moments", moments)?;
-        let w = triple("omega0", omega0)?.into();
+        let m = triple("moments", moments, false)?;
+        let w = triple("omega0", omega0, true)?.into();
         let q = opt_quat("attitude0", &attitude0)?;
         Ok(Self {
             inner: FreeRigidBody::new(m, w, q).py()?,
         })
-    }
-    /// The body from `moments` and `omega0` in the identity attitude when both are plainly
-    /// three finite floats ([`plain_triple`]); `None` otherwise (the Python layer then converts
-    /// them, with its errors). The core's own errors are raised as by the constructor.
-    #[staticmethod]
-    fn from_plain(moments: &Bound<'_, PyAny>, omega0: &Bound<'_, PyAny>) -> PyResult<Option<Self>> {
-        let (Some(m), Some(w)) = (plain_triple(moments), plain_triple(omega0)) else {
-            return Ok(None);
-        };
-        Ok(Some(Self {
-            inner: FreeRigidBody::new(m, w.into(), None).py()?,
-        }))
     }
     /// The principal moments as given (kg·m², (3,)).
     #[getter]

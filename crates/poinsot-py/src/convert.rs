@@ -4,7 +4,7 @@
 //!
 //! Arguments come in through functions that take the argument's name, because a shape error must
 //! be a `PoinsotError` naming it (pyo3's own extraction knows no argument name): [`vector`],
-//! [`triple`], [`array_in`], [`matrix`], [`rows_in`], [`times`], [`opt_quat`], [`parse`].
+//! [`triple`] (a user's 3-vector of any form), [`array_in`], [`matrix`], [`rows_in`], [`times`], [`opt_quat`], [`parse`].
 //! Results go out through newtypes that convert themselves to numpy arrays, so that a getter is
 //! one line: [`Vector`] (3,), [`Numbers`] (K,), [`Matrix`] (3, 3), [`Rows`] (N, K), [`Values`]
 //! (N,).
@@ -18,7 +18,8 @@ use numpy::{
 use poinsot::integrate::Options;
 use poinsot::{Mat3, Vec3};
 use pyo3::prelude::*;
-use pyo3::types::{PyFloat, PyList, PyTuple};
+use pyo3::sync::PyOnceLock;
+use pyo3::types::{IntoPyDict, PyFloat, PyInt, PyList, PyTuple};
 
 use crate::errors::{invalid, IntoPy};
 
@@ -62,64 +63,82 @@ pub fn vector(argument: &str, a: &PyReadonlyArray1<'_, f64>) -> PyResult<Vec3> {
     vec3(argument, a).map(Vec3::from)
 }
 
-/// A 3-vector given as a tuple of three floats (what the Python layer's fast path passes: no
-/// array to build, borrow and read) or as a float64 array of shape (3,) → `[f64; 3]`; anything
-/// else is a `PoinsotError` naming `argument`.
-pub fn triple(argument: &str, a: &Bound<'_, PyAny>) -> PyResult<[f64; 3]> {
-    if let Ok(t) = a.cast::<PyTuple>() {
-        if t.len() != 3 {
-            return Err(invalid(
-                argument,
-                format!("must have shape (3,), got ({},)", t.len()),
-            ));
-        }
-        let (x, y, z): (f64, f64, f64) = t
-            .extract()
-            .map_err(|_| invalid(argument, "must be three real numbers"))?;
-        return Ok([x, y, z]);
+/// A user's 3-vector → `[f64; 3]`: the one conversion of the small calls' vector arguments
+/// (the free bodies' `moments` and `omega0`), read here once.
+///
+/// A list or tuple (exactly) of three Python floats (exactly) or of ints within ±2⁵³, or a
+/// float64 ndarray (exactly, native byte order) of shape (3,), is read directly — the numbers
+/// the general conversion gives, exactly. Anything else (other sequences and dtypes, numpy
+/// scalars, subclasses) and, with `finite`, a non-finite entry go through the package's general
+/// conversion, `poinsot._validate.as_float_array`, and a shape check: the errors of every
+/// other array argument (`ArgumentTypeError` for text, `"omega0: must be finite, got nan"`,
+/// `"moments: must have shape (3,), got (2,)"`), each naming `argument`.
+pub fn triple(argument: &str, a: &Bound<'_, PyAny>, finite: bool) -> PyResult<[f64; 3]> {
+    match read3(a) {
+        Some(v) if !finite || v.iter().all(|x| x.is_finite()) => Ok(v),
+        _ => general3(argument, a, finite),
     }
-    let arr: PyReadonlyArray1<'_, f64> = a.extract().map_err(|_| {
-        invalid(
-            argument,
-            "must be a float64 array of shape (3,) or a tuple of three floats",
-        )
-    })?;
-    vec3(argument, &arr)
 }
 
-/// Three finite floats when `a` plainly is a 3-vector — a list or tuple (exactly) of three
-/// Python floats (exactly: no ints, bools or subclasses), or a contiguous float64 ndarray
-/// (exactly) of shape (3,) — else `None`, and the Python layer converts it with its own checks
-/// and errors (`_validate.as_triple`, which takes everything this takes, to the same numbers).
-/// The fast path of small calls: no Python-level conversion at all.
-pub fn plain_triple(a: &Bound<'_, PyAny>) -> Option<[f64; 3]> {
-    let v = if let Ok(l) = a.cast_exact::<PyList>() {
+/// The three numbers of a plain list, tuple or float64 array (see [`triple`]), else `None`.
+fn read3(a: &Bound<'_, PyAny>) -> Option<[f64; 3]> {
+    if let Ok(l) = a.cast_exact::<PyList>() {
         if l.len() != 3 {
             return None;
         }
-        let f = |i| exact_float(&l.get_item(i).ok()?);
-        [f(0)?, f(1)?, f(2)?]
+        let f = |i| number(&l.get_item(i).ok()?);
+        Some([f(0)?, f(1)?, f(2)?])
     } else if let Ok(t) = a.cast_exact::<PyTuple>() {
         if t.len() != 3 {
             return None;
         }
-        let f = |i| exact_float(&t.get_item(i).ok()?);
-        [f(0)?, f(1)?, f(2)?]
+        let f = |i| number(&t.get_item(i).ok()?);
+        Some([f(0)?, f(1)?, f(2)?])
     } else if a.get_type().is(a.py().get_type::<PyUntypedArray>()) {
         let arr = a.cast::<PyArray1<f64>>().ok()?.try_readonly().ok()?;
-        match arr.as_slice().ok()? {
-            [x, y, z] => [*x, *y, *z],
-            _ => return None,
-        }
+        let v = arr.as_array();
+        (v.len() == 3).then(|| [v[0], v[1], v[2]])
     } else {
-        return None;
-    };
-    v.iter().all(|x| x.is_finite()).then_some(v)
+        None
+    }
 }
 
-/// The value of an exact Python float (not an int, a bool or a subclass of float).
-fn exact_float(item: &Bound<'_, PyAny>) -> Option<f64> {
-    item.cast_exact::<PyFloat>().ok().map(|f| f.value())
+/// The value of an exact Python float, or of an exact int within ±2⁵³ (exactly a double; not a
+/// bool), else `None`.
+fn number(item: &Bound<'_, PyAny>) -> Option<f64> {
+    if let Ok(f) = item.cast_exact::<PyFloat>() {
+        return Some(f.value());
+    }
+    const EXACT: i64 = 1 << 53;
+    let i: i64 = item.cast_exact::<PyInt>().ok()?.extract().ok()?;
+    (-EXACT..=EXACT).contains(&i).then_some(i as f64)
+}
+
+/// [`triple`] of anything else: `poinsot._validate.as_float_array(a, argument, finite=finite)`
+/// (the package's general conversion, looked up once) and a shape check.
+#[cold]
+fn general3(argument: &str, a: &Bound<'_, PyAny>, finite: bool) -> PyResult<[f64; 3]> {
+    static CONVERT: PyOnceLock<Py<PyAny>> = PyOnceLock::new();
+    let py = a.py();
+    let convert = CONVERT.get_or_try_init(py, || {
+        py.import("poinsot._validate")?
+            .getattr("as_float_array")
+            .map(Bound::unbind)
+    })?;
+    let kwargs = [("finite", finite)].into_py_dict(py)?;
+    let arr = convert.bind(py).call((a, argument), Some(&kwargs))?;
+    if let Ok(v) = arr.cast::<PyArray1<f64>>() {
+        if let Ok(v) = v.try_readonly() {
+            if let [x, y, z] = v.as_array().to_vec()[..] {
+                return Ok([x, y, z]);
+            }
+        }
+    }
+    let shape = arr.getattr("shape")?.repr()?;
+    Err(invalid(
+        argument,
+        format!("must have shape (3,), got {shape}"),
+    ))
 }
 
 /// An optional length-3 float array → an optional core vector.
