@@ -60,5 +60,4 @@ __all__ = [
     *_limits_all,
 ]
 
-from . import special as _special
-from . import sweep
+from . import special, sweep  # noqa: F401  (the public submodules, imported with the package)

@@ -169,7 +169,9 @@ def test_symmetric_top_at_a_scalar_t_is_the_first_row_of_the_array_path() -> Non
             one = method(t)
             assert one.shape == (size,)
             assert one.tobytes() == method(np.array([float(t)]))[0].tobytes()
-            assert outcome(lambda t=t, m=method: m(t)) == outcome(lambda t=t, m=method: m(np.array(t)))
+            assert outcome(lambda t=t, m=method: m(t)) == outcome(
+                lambda t=t, m=method: m(np.array(t))
+            )
 
 
 @pytest.mark.parametrize("degrees", [False, True])

@@ -9,7 +9,11 @@
 //! `{ crate::errors::guard(class, name, move || body) }`, and a function that returns a plain
 //! value (`-> f64`) returns `PyResult<f64>` instead (`Ok(body)` in the guard). The class and
 //! function names go into the error message. Nothing else changes: pyo3 sees the same
-//! signature, attributes and doc comments.
+//! arguments, attributes and doc comments.
+//!
+//! One consequence for Rust code: a plain-valued export (`fn gravity(&self) -> &'static str`)
+//! now returns `PyResult`, so a method that needs the value calls the core (`self.inner.x()`),
+//! not another export.
 use proc_macro::TokenStream;
 use proc_macro2::TokenStream as Tokens;
 use quote::quote;
@@ -20,9 +24,15 @@ use syn::{parse_macro_input, parse_quote, Block, ImplItem, Item, ReturnType, Sig
 #[proc_macro_attribute]
 pub fn export(attr: TokenStream, item: TokenStream) -> TokenStream {
     if !attr.is_empty() {
-        return syn::Error::new(Tokens::from(attr).into_iter().next().map_or_else(proc_macro2::Span::call_site, |t| t.span()), "#[export] takes no arguments")
-            .to_compile_error()
-            .into();
+        return syn::Error::new(
+            Tokens::from(attr)
+                .into_iter()
+                .next()
+                .map_or_else(proc_macro2::Span::call_site, |t| t.span()),
+            "#[export] takes no arguments",
+        )
+        .to_compile_error()
+        .into();
     }
     match parse_macro_input!(item as Item) {
         Item::Fn(mut f) => {
@@ -39,7 +49,11 @@ pub fn export(attr: TokenStream, item: TokenStream) -> TokenStream {
                     if name == "__traverse__" || name == "__clear__" {
                         continue;
                     }
-                    let shown = if is_constructor(&method.attrs) { String::new() } else { name };
+                    let shown = if is_constructor(&method.attrs) {
+                        String::new()
+                    } else {
+                        name
+                    };
                     guard(
                         &mut method.sig,
                         &mut method.block,
