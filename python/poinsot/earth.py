@@ -48,8 +48,10 @@ _MEAN_RADIUS: float = _core.MEAN_RADIUS
 _STANDARD_GRAVITY: float = _core.STANDARD_GRAVITY
 
 # The defaults of the runs are the core's (the browser lab uses the same ones).
-_DEFAULTS = _core.earth_defaults()
-_DROP, _FOUCAULT, _INERTIAL, _LOW = (_DEFAULTS[k] for k in ("drop", "foucault", "inertial", "low"))
+_DROP = _core.DEFAULTS["Earth.drop"]
+_FOUCAULT = _core.DEFAULTS["Earth.foucault"]
+_INERTIAL = _core.DEFAULTS["Earth.inertial_oscillation"]
+_LOW = _core.DEFAULTS["Earth.flow_into_low"]
 
 _GRAVITY = ("uniform", "inverse-square")
 

@@ -4,7 +4,8 @@
 //! runs return `FallCore`, `FlightCore`, `FoucaultRunCore`, `InertialRunCore` and `LowFlowCore`,
 //! whose attributes are the core's results (numpy arrays for the samples). The core checks every
 //! argument and names it as the caller knows it, so no error is renamed here. The physical
-//! constants and the runs' defaults are the core's ([`register`] adds them to the module).
+//! constants are the core's ([`register`] adds them to the module; the runs' defaults are in
+//! `_core.DEFAULTS`, defaults.rs).
 use numpy::ndarray::{Array2, Array3};
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3, PyReadonlyArray1, PyReadonlyArray2};
 use poinsot::earth::{self as ea, Earth, FallModel, Gravity, LowSetup};
@@ -12,8 +13,9 @@ use poinsot::frames::ParticleState;
 use poinsot::integrate::{sample_times, Tolerances};
 use poinsot::limits::check_count;
 use poinsot::Vec3;
+use poinsot_py_macros::export;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyType};
+use pyo3::types::PyType;
 
 use crate::control::{map_each, run};
 use crate::convert::{array_in, options, parse, rows_in, rows_view, vec_in, Rows, Values};
@@ -155,6 +157,14 @@ fn tracks(py: Python<'_>, parcels: &[Vec<[f64; 4]>], k: usize) -> Py<PyArray3<f6
         .unbind()
 }
 
+/// The Python name of a gravity model (its `FromStr` in the core reads it back).
+fn gravity_name(gravity: Gravity) -> &'static str {
+    match gravity {
+        Gravity::Uniform => "uniform",
+        Gravity::InverseSquare => "inverse-square",
+    }
+}
+
 /// The tolerances of a run from the Python keywords.
 fn tolerances(rtol: f64, atol: f64, max_steps: usize) -> Tolerances {
     Tolerances {
@@ -194,7 +204,7 @@ fn per_height<'py>(
     Ok(Values(map_each(py, &pairs, move |&(h, l)| f(h, l))?))
 }
 
-#[pymethods]
+#[export]
 impl PyFallModel {
     #[new]
     fn new(
@@ -223,24 +233,22 @@ impl PyFallModel {
         Bound<'py, PyType>,
         (&'static str, bool, bool, f64, f64, usize),
     ) {
-        let m = slf.get();
+        let m = slf.get().inner;
+        let o = m.options;
         let args = (
-            m.gravity(),
-            m.rotation(),
-            m.centrifugal(),
-            m.rtol(),
-            m.atol(),
-            m.max_steps(),
+            gravity_name(m.gravity),
+            m.rotation,
+            m.centrifugal,
+            o.rtol,
+            o.atol,
+            o.max_steps,
         );
         (slf.get_type(), args)
     }
 
     #[getter]
     fn gravity(&self) -> &'static str {
-        match self.inner.gravity {
-            Gravity::Uniform => "uniform",
-            Gravity::InverseSquare => "inverse-square",
-        }
+        gravity_name(self.inner.gravity)
     }
     #[getter]
     fn rotation(&self) -> bool {
@@ -264,7 +272,7 @@ impl PyFallModel {
     }
 }
 
-#[pymethods]
+#[export]
 impl PyEarth {
     /// The Earth of rate (rad/s, ≥ 0), radius (m, > 0) and gravity (m/s², > 0); errors name them.
     #[new]
@@ -610,52 +618,12 @@ impl PyEarth {
 
 /// `samples` evenly spaced times from `t0` to `t_end`, the core's grid (`sample_times`: the
 /// count checked, ≥ 2 and within the memory budget, naming `samples`).
-#[pyfunction]
+#[export]
 #[pyo3(name = "sample_times")]
 fn py_sample_times(t0: f64, t_end: f64, samples: usize) -> PyResult<Values> {
     Ok(Values(
         sample_times(t0, t_end, samples, ea::FOUCAULT_BYTES_PER_SAMPLE).py()?,
     ))
-}
-
-/// A tolerances dict {"rtol", "atol", "max_steps"}.
-fn tolerances_dict<'py>(py: Python<'py>, t: &Tolerances) -> PyResult<Bound<'py, PyDict>> {
-    let d = PyDict::new(py);
-    d.set_item("rtol", t.rtol)?;
-    d.set_item("atol", t.atol)?;
-    d.set_item("max_steps", t.max_steps)?;
-    Ok(d)
-}
-
-/// The defaults of the Earth's runs, the core's: {"drop", "foucault", "inertial", "low"}, each a
-/// dict of the Python keywords' defaults (tolerances, samples, and the run's own arguments).
-#[pyfunction]
-fn earth_defaults(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
-    let drop = tolerances_dict(py, &ea::DROP_TOLERANCES)?;
-    drop.set_item("samples", ea::DROP_SAMPLES)?;
-    let foucault = tolerances_dict(py, &ea::FOUCAULT_TOLERANCES)?;
-    foucault.set_item("length", ea::FOUCAULT_LENGTH)?;
-    foucault.set_item("amplitude", ea::FOUCAULT_AMPLITUDE)?;
-    foucault.set_item("azimuth", ea::FOUCAULT_AZIMUTH)?;
-    foucault.set_item("duration", ea::FOUCAULT_DURATION)?;
-    foucault.set_item("samples", ea::FOUCAULT_SAMPLES)?;
-    let inertial = tolerances_dict(py, &ea::INERTIAL_TOLERANCES)?;
-    inertial.set_item("velocity", ea::INERTIAL_VELOCITY.to_vec())?;
-    inertial.set_item("samples", ea::INERTIAL_SAMPLES)?;
-    let low = tolerances_dict(py, &ea::LOW_TOLERANCES)?;
-    let setup = LowSetup::default();
-    low.set_item("radius", setup.radius)?;
-    low.set_item("parcels", setup.parcels)?;
-    low.set_item("pull", setup.pull)?;
-    low.set_item("friction", setup.friction)?;
-    low.set_item("duration", ea::LOW_DURATION)?;
-    low.set_item("samples", ea::LOW_SAMPLES)?;
-    let d = PyDict::new(py);
-    d.set_item("drop", drop)?;
-    d.set_item("foucault", foucault)?;
-    d.set_item("inertial", inertial)?;
-    d.set_item("low", low)?;
-    Ok(d)
 }
 
 /// Registers this file's classes and functions on the module.
@@ -668,7 +636,6 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyInertialRun>()?;
     m.add_class::<PyLowFlow>()?;
     m.add_function(wrap_pyfunction!(py_sample_times, m)?)?;
-    m.add_function(wrap_pyfunction!(earth_defaults, m)?)?;
     // The physical constants (the defaults of `poinsot.Earth`).
     m.add("SIDEREAL_RATE", ea::SIDEREAL_RATE)?;
     m.add("SOLAR_DAY_RATE", ea::SOLAR_DAY_RATE)?;

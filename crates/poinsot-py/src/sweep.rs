@@ -9,6 +9,7 @@
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
 use poinsot::dynamics::{Method, SimulateOptions, TorqueKind};
 use poinsot::sweep::{self as core, Column, Dim, Grid};
+use poinsot_py_macros::export;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -61,7 +62,7 @@ fn codes<'py, T>(py: Python<'py>, points: &[T], f: impl Fn(&T) -> u8) -> Bound<'
 
 /// Checks that `bytes_each` bytes a point of the sweep of `dims` fit in the memory budget (the
 /// results of a sweep gathered from its chunks); the error names the longest dimension.
-#[pyfunction]
+#[export]
 fn sweep_check_memory(dims: Dims, bytes_each: usize) -> PyResult<()> {
     let columns: Columns<'_> = Vec::new();
     grid(&dims, &columns)?.check_memory(bytes_each).py()
@@ -69,7 +70,7 @@ fn sweep_check_memory(dims: Dims, bytes_each: usize) -> PyResult<()> {
 
 /// The names of the categories' codes, from the core's tables: `{"motion_class": [...],
 /// "regime": [...], "stability": [...]}` (a code is an index into its list).
-#[pyfunction]
+#[export]
 fn sweep_categories(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
     let d = PyDict::new(py);
     let motion: Vec<&str> = core::MOTION_CLASSES.iter().map(|c| c.name()).collect();
@@ -84,7 +85,7 @@ fn sweep_categories(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
 /// The heavy top at every point: `{"motion_class" (uint8 codes), "turning_points" (N, 2),
 /// "nutation_period", "mean_precession_rate", "mean_spin_rate", "omega3", "p_phi", "p_psi",
 /// "energy", "reduced_energy", "is_sleeping_stable" (bool)}`; None with `check_only`.
-#[pyfunction]
+#[export]
 #[pyo3(signature = (dims, columns, check_only, progress=None))]
 fn sweep_heavy_top<'py>(
     py: Python<'py>,
@@ -129,7 +130,7 @@ fn sweep_heavy_top<'py>(
 /// "flip_interval", "parameter", "frequency", "pole_axis" (int8, -1 for none), "energy",
 /// "angular_momentum" (N, 3), "axis_stability" (N, 3 codes), "axis_rate" (N, 3)}`; None with
 /// `check_only`.
-#[pyfunction]
+#[export]
 #[pyo3(signature = (dims, columns, check_only, progress=None))]
 fn sweep_free_body<'py>(
     py: Python<'py>,
@@ -179,7 +180,7 @@ fn sweep_free_body<'py>(
 /// Ensembles under a torque (`simulate_batch`'s settings: duration, torque as kind, (3,)
 /// vector and scalar, method, dt, max_steps): `{"omega" (N, 3), "attitude" (N, 4)}`; None with
 /// `check_only`.
-#[pyfunction]
+#[export]
 #[pyo3(signature = (dims, columns, duration, torque_kind, torque_vector, torque_scalar, method, dt, max_steps, check_only, progress=None))]
 #[allow(clippy::too_many_arguments)]
 fn sweep_simulate<'py>(
@@ -225,7 +226,7 @@ fn sweep_simulate<'py>(
 
 /// Drops on the Earth (`EarthCore`) under the fall model (`FallModel`): `{"time", "east",
 /// "north", "first_order_east", "second_order_south"}`; None with `check_only`.
-#[pyfunction]
+#[export]
 #[pyo3(signature = (dims, columns, earth, model, check_only, progress=None))]
 fn sweep_drop<'py>(
     py: Python<'py>,
@@ -257,7 +258,7 @@ fn sweep_drop<'py>(
 
 /// Projectiles on the Earth, as [`sweep_drop`]: `{"time", "east", "north", "range",
 /// "downrange", "drift"}`; None with `check_only`.
-#[pyfunction]
+#[export]
 #[pyo3(signature = (dims, columns, earth, model, check_only, progress=None))]
 fn sweep_projectile<'py>(
     py: Python<'py>,
