@@ -9,184 +9,128 @@ use poinsot::integrate::Tolerances;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
-/// One default value.
+/// One default value: a float, a count, a name or a vector (a tuple of floats in Python).
 enum V {
     F(f64),
     N(usize),
     S(&'static str),
-    /// A vector: a tuple of floats in Python.
     T(Vec<f64>),
 }
 
-/// The integrator arguments of a run with these tolerances.
-fn tolerances(t: Tolerances) -> [(&'static str, V); 3] {
-    [
-        ("rtol", V::F(t.rtol)),
-        ("atol", V::F(t.atol)),
-        ("max_steps", V::N(t.max_steps)),
-    ]
+impl From<f64> for V {
+    fn from(x: f64) -> Self {
+        V::F(x)
+    }
+}
+impl From<usize> for V {
+    fn from(n: usize) -> Self {
+        V::N(n)
+    }
+}
+impl From<&'static str> for V {
+    fn from(s: &'static str) -> Self {
+        V::S(s)
+    }
+}
+impl<const N: usize> From<[f64; N]> for V {
+    fn from(v: [f64; N]) -> Self {
+        V::T(v.to_vec())
+    }
+}
+impl From<poinsot::Vec3> for V {
+    fn from(v: poinsot::Vec3) -> Self {
+        V::T(v.iter().copied().collect())
+    }
+}
+
+type Row = Vec<(&'static str, V)>;
+
+/// A row of the table: `argument => value, ...`.
+macro_rules! row {
+    ($($arg:literal => $value:expr),* $(,)?) => { vec![$(($arg, V::from($value))),*] };
+}
+
+/// `row` followed by the integrator arguments of a run with tolerances `t`.
+fn with(mut row: Row, t: Tolerances) -> Row {
+    row.extend(row! { "rtol" => t.rtol, "atol" => t.atol, "max_steps" => t.max_steps });
+    row
 }
 
 /// Every public call's defaults.
-fn calls() -> Vec<(&'static str, Vec<(&'static str, V)>)> {
-    use V::{F, N, S, T};
-    let seq = || vec![("seq", S(d::EULER_SEQUENCE))];
+#[rustfmt::skip]
+fn calls() -> Vec<(&'static str, Row)> {
     let frame = poinsot::frames::MovingFrame::default();
-    let start = d::EulerState::default();
-    let rest = || T(d::AT_REST.to_vec());
-    let mesh = || vec![("density", F(d::MESH_DENSITY))];
-    let polhode = || vec![("samples", N(d::POLHODE_SAMPLES))];
-    let run = |samples: usize, t: Tolerances| {
-        let mut v = vec![("samples", N(samples))];
-        v.extend(tolerances(t));
-        v
-    };
-    let fall = |samples: Option<usize>| {
-        let mut v = vec![("gravity", S(d::GRAVITY))];
-        v.extend(samples.map(|n| ("samples", N(n))));
-        v.extend(tolerances(d::DROP_TOLERANCES));
-        v
-    };
-    let com = || vec![("center_of_mass", T(d::CENTER_OF_MASS.to_vec()))];
-    let batch = || {
-        vec![
-            ("method", S(d::BATCH_METHOD)),
-            ("max_steps", N(d::DEFAULT_MAX_STEPS)),
-        ]
-    };
-    let vec3 = |v: poinsot::Vec3| T(v.iter().copied().collect());
-    let mut projectile = fall(Some(d::DROP_SAMPLES));
-    projectile.push(("height", F(d::LAUNCH_HEIGHT)));
-    let mut simulate = vec![("method", S(d::SIMULATE_METHOD))];
-    simulate.extend(run(d::SIMULATE_SAMPLES, d::SIMULATE_TOLERANCES));
-    let particle = run(d::PARTICLE_SAMPLES, d::PARTICLE_TOLERANCES);
-    let mut simulate_particle = run(d::PARTICLE_SAMPLES, d::PARTICLE_TOLERANCES);
-    simulate_particle.extend([
-        ("mass", F(d::PARTICLE_MASS)),
-        ("stiffness", F(d::PARTICLE_STIFFNESS)),
-    ]);
-    let mut foucault = run(d::FOUCAULT_SAMPLES, d::FOUCAULT_TOLERANCES);
-    foucault.extend([
-        ("length", F(d::FOUCAULT_LENGTH)),
-        ("amplitude", F(d::FOUCAULT_AMPLITUDE)),
-        ("azimuth", F(d::FOUCAULT_AZIMUTH)),
-        ("duration", F(d::FOUCAULT_DURATION)),
-    ]);
-    let mut inertial = run(d::INERTIAL_SAMPLES, d::INERTIAL_TOLERANCES);
-    inertial.push(("velocity", T(d::INERTIAL_VELOCITY.to_vec())));
-    let mut low = run(d::LOW_SAMPLES, d::LOW_TOLERANCES);
-    low.extend([
-        ("radius", F(d::LOW_RADIUS)),
-        ("parcels", N(d::LOW_PARCELS)),
-        ("pull", F(d::LOW_PULL)),
-        ("friction", F(d::LOW_FRICTION)),
-        ("duration", F(d::LOW_DURATION)),
-    ]);
-    let top = |psi_dot: bool| {
-        let mut v = vec![
-            ("theta_dot", F(start.theta_dot)),
-            ("phi_dot", F(start.phi_dot)),
-            ("phi", F(start.phi)),
-            ("psi", F(start.psi)),
-        ];
-        if psi_dot {
-            v.push(("psi_dot", F(start.psi_dot)));
-        }
-        v
-    };
+    let s = d::EulerState::default();
+    let seq = || row! { "seq" => d::EULER_SEQUENCE };
+    let com = || row! { "center_of_mass" => d::CENTER_OF_MASS };
+    let mesh = || row! { "density" => d::MESH_DENSITY };
+    let rest = || row! { "velocity" => d::AT_REST, "acceleration" => d::AT_REST };
+    let polhode = || row! { "samples" => d::POLHODE_SAMPLES };
+    let batch = || row! { "method" => d::BATCH_METHOD, "max_steps" => d::DEFAULT_MAX_STEPS };
+    let sweep_fall = || with(row! { "gravity" => d::GRAVITY }, d::DROP_TOLERANCES);
+    let drop = || with(row! { "gravity" => d::GRAVITY, "samples" => d::DROP_SAMPLES }, d::DROP_TOLERANCES);
+    let mut projectile = drop();
+    projectile.extend(row! { "height" => d::LAUNCH_HEIGHT });
+    let from_spin = || row! { "theta_dot" => s.theta_dot, "phi_dot" => s.phi_dot, "phi" => s.phi, "psi" => s.psi };
+    let mut start = from_spin();
+    start.extend(row! { "psi_dot" => s.psi_dot });
     vec![
-        // rotation
-        (
-            "check_rotation_matrix",
-            vec![("tol", F(d::CHECK_ROTATION_TOL))],
-        ),
+        ("check_rotation_matrix", row! { "tol" => d::CHECK_ROTATION_TOL }),
         ("euler_to_matrix", seq()),
         ("matrix_to_euler", seq()),
         ("body_angular_velocity", seq()),
         ("space_angular_velocity", seq()),
-        (
-            "euler_rates",
-            vec![
-                ("seq", S(d::EULER_SEQUENCE)),
-                ("frame", S(d::EULER_RATES_FRAME)),
-            ],
-        ),
-        // body
-        ("classify", vec![("rtol", F(d::DEFAULT_KIND_RTOL))]),
+        ("euler_rates", row! { "seq" => d::EULER_SEQUENCE, "frame" => d::EULER_RATES_FRAME }),
+        ("classify", row! { "rtol" => d::DEFAULT_KIND_RTOL }),
         ("RigidBody.__init__", com()),
         ("RigidBody.from_inertia", com()),
-        (
-            "RigidBody.from_density",
-            vec![
-                ("rtol", F(d::CUBATURE.rtol)),
-                ("atol", F(d::CUBATURE.atol)),
-                ("max_evals", N(d::CUBATURE.max_evals)),
-            ],
-        ),
+        ("RigidBody.from_density", row! {
+            "rtol" => d::CUBATURE.rtol, "atol" => d::CUBATURE.atol, "max_evals" => d::CUBATURE.max_evals,
+        }),
         ("RigidBody.from_mesh", mesh()),
         ("RigidBody.from_trimesh", mesh()),
         ("RigidBody.load_mesh", mesh()),
-        // frames
-        (
-            "MovingFrame.__init__",
-            vec![
-                ("origin", vec3(frame.origin)),
-                ("velocity", vec3(frame.velocity)),
-                ("acceleration", vec3(frame.acceleration)),
-                ("angular_velocity", vec3(frame.angular_velocity)),
-                ("angular_acceleration", vec3(frame.angular_acceleration)),
-            ],
-        ),
-        (
-            "MovingFrame.to_fixed",
-            vec![("velocity", rest()), ("acceleration", rest())],
-        ),
-        (
-            "MovingFrame.to_moving",
-            vec![("velocity", rest()), ("acceleration", rest())],
-        ),
-        ("SpringParticle.simulate", particle),
-        ("simulate_particle", simulate_particle),
-        // earth
-        (
-            "Earth.__init__",
-            vec![
-                ("rotation_rate", F(d::SIDEREAL_RATE)),
-                ("radius", F(d::MEAN_RADIUS)),
-                ("g", F(d::STANDARD_GRAVITY)),
-            ],
-        ),
-        (
-            "Earth.solar_day",
-            vec![("radius", F(d::MEAN_RADIUS)), ("g", F(d::STANDARD_GRAVITY))],
-        ),
-        ("Earth.drop", fall(Some(d::DROP_SAMPLES))),
+        ("MovingFrame.__init__", row! {
+            "origin" => frame.origin, "velocity" => frame.velocity, "acceleration" => frame.acceleration,
+            "angular_velocity" => frame.angular_velocity, "angular_acceleration" => frame.angular_acceleration,
+        }),
+        ("MovingFrame.to_fixed", rest()),
+        ("MovingFrame.to_moving", rest()),
+        ("SpringParticle.simulate", with(row! { "samples" => d::PARTICLE_SAMPLES }, d::PARTICLE_TOLERANCES)),
+        ("simulate_particle", with(row! {
+            "samples" => d::PARTICLE_SAMPLES, "mass" => d::PARTICLE_MASS, "stiffness" => d::PARTICLE_STIFFNESS,
+        }, d::PARTICLE_TOLERANCES)),
+        ("Earth.__init__", row! {
+            "rotation_rate" => d::SIDEREAL_RATE, "radius" => d::MEAN_RADIUS, "g" => d::STANDARD_GRAVITY,
+        }),
+        ("Earth.solar_day", row! { "radius" => d::MEAN_RADIUS, "g" => d::STANDARD_GRAVITY }),
+        ("Earth.drop", drop()),
         ("Earth.projectile", projectile),
-        ("Earth.foucault", foucault),
-        ("Earth.inertial_oscillation", inertial),
-        ("Earth.flow_into_low", low),
-        // dynamics
-        (
-            "GravityTorque.__init__",
-            vec![("g", F(d::STANDARD_GRAVITY))],
-        ),
-        ("simulate", simulate),
+        ("Earth.foucault", with(row! {
+            "samples" => d::FOUCAULT_SAMPLES, "length" => d::FOUCAULT_LENGTH, "amplitude" => d::FOUCAULT_AMPLITUDE,
+            "azimuth" => d::FOUCAULT_AZIMUTH, "duration" => d::FOUCAULT_DURATION,
+        }, d::FOUCAULT_TOLERANCES)),
+        ("Earth.inertial_oscillation", with(row! {
+            "samples" => d::INERTIAL_SAMPLES, "velocity" => d::INERTIAL_VELOCITY,
+        }, d::INERTIAL_TOLERANCES)),
+        ("Earth.flow_into_low", with(row! {
+            "samples" => d::LOW_SAMPLES, "radius" => d::LOW_RADIUS, "parcels" => d::LOW_PARCELS,
+            "pull" => d::LOW_PULL, "friction" => d::LOW_FRICTION, "duration" => d::LOW_DURATION,
+        }, d::LOW_TOLERANCES)),
+        ("GravityTorque.__init__", row! { "g" => d::STANDARD_GRAVITY }),
+        ("simulate", with(row! {
+            "method" => d::SIMULATE_METHOD, "samples" => d::SIMULATE_SAMPLES,
+        }, d::SIMULATE_TOLERANCES)),
         ("simulate_batch", batch()),
-        // free bodies
-        (
-            "FreeRigidBody.contact_point",
-            vec![("frame", S(d::CONTACT_POINT_FRAME))],
-        ),
+        ("FreeRigidBody.contact_point", row! { "frame" => d::CONTACT_POINT_FRAME }),
         ("FreeRigidBody.contact_polhode", polhode()),
         ("FreeRigidBody.polhode", polhode()),
-        ("axis_stability", vec![("spin", F(d::AXIS_SPIN))]),
-        // the heavy top
-        ("HeavyTop.__init__", top(true)),
-        ("HeavyTop.from_spin", top(false)),
-        // sweeps
+        ("axis_stability", row! { "spin" => d::AXIS_SPIN }),
+        ("HeavyTop.__init__", start),
+        ("HeavyTop.from_spin", from_spin()),
         ("sweep.simulate", batch()),
-        ("sweep.drop", fall(None)),
-        ("sweep.projectile", fall(None)),
+        ("sweep.drop", sweep_fall()),
+        ("sweep.projectile", sweep_fall()),
     ]
 }
 
