@@ -35,7 +35,6 @@ from ._validate import (
     as_float_array,
     as_scalar,
     as_vector3,
-    public_names,
 )
 from .errors import ArgumentTypeError, PoinsotError
 from .free import _quat
@@ -372,24 +371,23 @@ def simulate(
                 raise PoinsotError(f"torque: the callable must return 3 real numbers, got {out!r}")
             return out.astype(np.float64).reshape(-1).tolist()
 
-    with public_names(inertia="body", t="duration"):
-        d = _core.dynamics_simulate(
-            inertia,
-            w0,
-            q0,
-            dur,
-            kind,
-            vec,
-            scalar,
-            fn_wrapped,
-            method,
-            dt_f,
-            n,
-            as_scalar(rtol, "rtol"),
-            as_scalar(atol, "atol"),
-            steps,
-            progress,
-        )
+    d = _core.dynamics_simulate(
+        inertia,
+        w0,
+        q0,
+        dur,
+        kind,
+        vec,
+        scalar,
+        fn_wrapped,
+        method,
+        dt_f,
+        n,
+        as_scalar(rtol, "rtol"),
+        as_scalar(atol, "atol"),
+        steps,
+        progress,
+    )
     return Trajectory(d)
 
 
@@ -494,12 +492,11 @@ def simulate_batch(
         max_steps,
         "simulate_batch takes the built-in torques only (no callables)",
     )
-    with public_names(t="duration"):
-        w_out, q_out, _steps = _core.dynamics_simulate_batch(
-            m,
-            w,
-            q,
-            *settings,
-            as_callable(progress, "progress"),
-        )
+    w_out, q_out, _steps = _core.dynamics_simulate_batch(
+        m,
+        w,
+        q,
+        *settings,
+        as_callable(progress, "progress"),
+    )
     return np.asarray(w_out), np.asarray(q_out)

@@ -137,3 +137,38 @@ def test_bad_states_are_refused_by_name() -> None:
         p.energy([1.0, 0, 0], [1e200, 0, 0])
     with pytest.raises(ps.PoinsotError, match="^stiffness"):
         ps.simulate_particle(table, [1.0, 0, 0], [0, 0, 0], 1.0, stiffness=-2.0)
+
+
+def test_results_beyond_the_doubles_are_refused_by_the_core_naming_the_argument() -> None:
+    """Issue 22 item 1: the core's SpringParticle is fallible (the bindings guarded its results
+    themselves before); a stiffness or state so large that a result overflows is a
+    PoinsotError naming the argument it comes from, never inf."""
+    stiff = ps.SpringParticle(1.0, 1e308)
+    for call, what in [
+        (lambda: stiff.force([10.0, 0, 0]), "force"),
+        (lambda: stiff.acceleration([10.0, 0, 0]), "acceleration"),
+        (lambda: stiff.potential([1e10, 0, 0]), "potential"),
+        (lambda: stiff.energy([1e10, 0, 0], [0, 0, 0]), "energy"),
+    ]:
+        with pytest.raises(ps.PoinsotError, match=rf"^position: the result \({what}\)"):
+            call()
+    p = ps.SpringParticle(1.0, 1.0)
+    with pytest.raises(ps.PoinsotError, match=r"^velocity: the result \(Jacobi integral\)"):
+        p.jacobi_integral(ps.MovingFrame(), [1.0, 0, 0], [1e200, 0, 0])
+    # Negative control: the same calls within range are finite.
+    assert np.isfinite(stiff.force([1e-10, 0, 0])).all()
+    assert np.isfinite(p.energy([1.0, 0, 0], [1e100, 0, 0]))
+
+
+def test_polhode_samples_are_checked_once_by_the_core() -> None:
+    """Issue 22 item 1: one statement of the polhode's limit (the core's): at least 2 points,
+    within the memory budget; the Python layer only converts the count."""
+    body = ps.FreeRigidBody([1.0, 2.0, 3.0], [0.3, 1.0, 0.2])
+    for method in (body.polhode, body.contact_polhode):
+        with pytest.raises(ps.PoinsotError, match=r"^samples: must be >= 2, got 1$"):
+            method(1)
+        with pytest.raises(ps.PoinsotError, match=r"^samples: 1000000000000 would need"):
+            method(10**12)
+        with pytest.raises(ps.ArgumentTypeError, match="^samples: must be an integer"):
+            method(2.5)
+        assert method(2).shape == (2, 3)

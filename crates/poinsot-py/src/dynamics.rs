@@ -93,7 +93,7 @@ fn dynamics_simulate<'py>(
     max_steps: usize,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let body = BodyInertia::from_tensor(&matrix("inertia", &inertia)?).py()?;
+    let body = BodyInertia::from_tensor(&matrix("body", &inertia)?).py()?;
     let w0 = vector("omega0", &omega0)?;
     let q0 = opt_quat("attitude0", &attitude0)?;
     let method = Method::parse(method).py()?;

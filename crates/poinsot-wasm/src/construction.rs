@@ -116,14 +116,11 @@ impl FreeRigidBody {
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] samples: Count,
     ) -> Out<Vec<f64>> {
-        // The memory budget is checked here until the core's own check (`poinsot::limits`, in
-        // `FreeRigidBody::polhode`) lands; the minimum of 2 samples is the core's.
+        // A JavaScript number as a count (a whole number whose conversion is exact: within the
+        // budget of the flat output); the limit of the polhode (>= 2 points, within the memory
+        // budget) is the core's.
         let samples = count("samples", &samples, BYTES_PER_POLHODE_SAMPLE)?;
-        finite(
-            "samples",
-            "polhode",
-            flat(&self.inner.contact_polhode(samples)?),
-        )
+        Ok(flat(&self.inner.contact_polhode(samples)?))
     }
 }
 

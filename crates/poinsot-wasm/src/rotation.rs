@@ -2,7 +2,7 @@
 //! Chasles' screw and the Euler-angle kinematics (the unit's 2.98–2.99).
 
 use crate::args::{flag, matrix, number, text, triple, vector, Flag, Number, Numbers, Text};
-use crate::convert::{finite, mat_out, renamed, vec_out, Out};
+use crate::convert::{mat_out, renamed, vec_out, Out};
 use poinsot::rotation::{self as rot, EulerSequence, Frame};
 use wasm_bindgen::prelude::wasm_bindgen;
 
@@ -26,7 +26,7 @@ pub fn euler_to_matrix(
 ) -> Out<Vec<f64>> {
     let angles = triple("angles", &angles)?;
     let r = rot::euler_to_matrix(angles, sequence(&seq, &intrinsic)?)?;
-    finite("angles, seq, intrinsic", "rotation matrix", mat_out(&r))
+    Ok(mat_out(&r))
 }
 
 /// Euler angles of a rotation matrix, with the gimbal-lock flag.
@@ -63,7 +63,7 @@ pub fn matrix_to_euler(
     let r = matrix("r", &r)?;
     let e = rot::matrix_to_euler(&r, sequence(&seq, &intrinsic)?).map_err(renamed("R", "r"))?;
     Ok(EulerAngles {
-        angles: finite("r, seq, intrinsic", "angles", e.angles.to_vec())?,
+        angles: e.angles.to_vec(),
         gimbal_lock: e.gimbal_lock,
     })
 }
@@ -75,7 +75,7 @@ pub fn rotation_axis(
     #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] r: Numbers,
 ) -> Out<Vec<f64>> {
     let (axis, angle) = rot::rotation_axis(&matrix("r", &r)?).map_err(renamed("R", "r"))?;
-    finite("r", "axis", vec![axis.x, axis.y, axis.z, angle])
+    Ok(vec![axis.x, axis.y, axis.z, angle])
 }
 
 /// Chasles' screw of a displacement `x ↦ R x + t`.
@@ -124,7 +124,7 @@ impl Screw {
         let (r, t) = self.inner.displacement_at(number("s", &s)?)?;
         let mut out = mat_out(&r);
         out.extend(vec_out(&t));
-        finite("s", "displacement", out)
+        Ok(out)
     }
 }
 
@@ -135,19 +135,6 @@ pub fn screw_axis(
     #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] t: Numbers,
 ) -> Out<Screw> {
     let s = rot::screw_axis(&matrix("r", &r)?, &vector("t", &t)?).map_err(renamed("R", "r"))?;
-    finite(
-        "r, t",
-        "screw",
-        vec![
-            s.axis.x, s.axis.y, s.axis.z, s.point.x, s.point.y, s.point.z, s.angle, s.slide,
-        ],
-    )?;
-    if s.pitch.is_nan() {
-        return Err(crate::Failure {
-            name: "PoinsotError",
-            message: "pitch: the result is not a number".into(),
-        });
-    }
     Ok(Screw { inner: s })
 }
 
@@ -165,7 +152,7 @@ pub fn body_angular_velocity(
         triple("rates", &rates)?,
         sequence(&seq, &intrinsic)?,
     )?;
-    finite("angles, rates, seq, intrinsic", "omega", vec_out(&w))
+    Ok(vec_out(&w))
 }
 
 /// The Euler-angle rates (rad/s) that produce the body angular velocity `omega_body` (rad/s) at
@@ -183,7 +170,7 @@ pub fn euler_rates(
         sequence(&seq, &intrinsic)?,
         Frame::Body,
     )?;
-    finite("angles, omega_body, seq, intrinsic", "rates", r.to_vec())
+    Ok(r.to_vec())
 }
 
 #[cfg(test)]
@@ -255,5 +242,35 @@ mod tests {
         let s = screw_axis(id, vec![0.0, 0.0, 2.0]).unwrap();
         assert!(s.pitch().is_infinite());
         assert!((s.slide() - 2.0).abs() < 1e-15);
+    }
+
+    /// Results beyond the doubles are refused by the core, naming the argument (this binding
+    /// guarded them itself before).
+    #[test]
+    fn overflowing_results_name_the_argument() {
+        let starts = |r: Out<Vec<f64>>, prefix: &str| {
+            let e = r.unwrap_err();
+            assert_eq!(e.name, "PoinsotError");
+            assert!(e.message.starts_with(prefix), "{}", e.message);
+        };
+        let z = || "zxz".to_string();
+        starts(
+            body_angular_velocity(vec![0.1, 0.2, 0.3], vec![1e308; 3], z(), true),
+            "rates: the angular velocity overflows",
+        );
+        starts(
+            euler_rates(vec![0.1, 1e-3, 0.3], vec![1e308, 1e308, 0.0], z(), true),
+            "omega_body: the Euler-angle rates overflow",
+        );
+        let id = mat_out(&poinsot::Mat3::identity());
+        let e = screw_axis(id, vec![1e308; 3]).unwrap_err();
+        assert!(e.message.starts_with("t: "), "{}", e.message);
+        let r = euler_to_matrix(vec![0.1, 0.2, 0.3], z(), true).unwrap();
+        starts(
+            screw_axis(r, vec![1.0, 2.0, 3.0])
+                .unwrap()
+                .displacement_at(1e308),
+            "s: ",
+        );
     }
 }

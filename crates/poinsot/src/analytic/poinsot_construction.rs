@@ -7,7 +7,7 @@
 //! touching it at ω (Poinsot 1834; Goldstein §5.6).
 
 use super::free_rigid_body::FreeRigidBody;
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_finite, Result};
 use crate::special::fp::{exponent, ldexp};
 use crate::Vec3;
 
@@ -86,7 +86,7 @@ impl FreeRigidBody {
     /// from t = 0. On the separatrix (infinite period) the half-branch from t = −12/λ to 12/λ
     /// (within e⁻¹² of the intermediate axis at both ends); a single point, repeated, when ω
     /// is constant. Sampled at unit scale, so a period beyond the double range does not
-    /// matter. Errors name `samples` (must be ≥ 2).
+    /// matter. Errors name `samples` (must be ≥ 2, and the points within the memory budget).
     pub fn polhode(&self, samples: usize) -> Result<Vec<Vec3>> {
         let scale = *self.scale();
         self.polhode_hat(samples, |w| scale.omega(&w))
@@ -94,12 +94,9 @@ impl FreeRigidBody {
 
     /// The polhode at unit scale (ω̂ over one unit-scale period), each point mapped by `f`.
     fn polhode_hat(&self, samples: usize, f: impl Fn(Vec3) -> Vec3) -> Result<Vec<Vec3>> {
-        if samples < 2 {
-            return Err(Error::invalid(
-                "samples",
-                format!("must be >= 2, got {samples}"),
-            ));
-        }
+        // The one statement of the limit: at least 2 points, each (3 numbers) within the memory
+        // budget; the front ends pass the count on.
+        crate::limits::check_count("samples", samples, 2, 24)?;
         let (period, frequency) = self.period_and_frequency_hat();
         let (t0, span) = if period.is_finite() {
             (0.0, period)
@@ -108,7 +105,6 @@ impl FreeRigidBody {
         } else {
             (0.0, 0.0)
         };
-        crate::limits::check_count("samples", samples, 2, 24)?;
         // Polled every chunk of samples: Ctrl-C on a huge request.
         crate::control::try_map_n(samples, |i| {
             let th = t0 + span * i as f64 / (samples - 1) as f64;

@@ -339,7 +339,7 @@ fn lanes_batch(
     if let Some(i) = diverged {
         return Err(in_body(
             i,
-            Error::diverged("t", "the state stopped being finite before the end"),
+            Error::diverged("duration", "the state stopped being finite before the end"),
         ));
     }
     Ok(BatchResult {

@@ -57,16 +57,17 @@ impl BodyInertia {
     }
 
     /// A body with inertia tensor `tensor` (kg·m²) in its body axes (checked as
-    /// [`check_inertia`], and positive definite); errors name `inertia`.
+    /// [`check_inertia`], and positive definite); errors name `body`, the argument of the runs
+    /// ([`super::simulate()`], Python's `simulate(body, ...)`) whose inertia it is.
     pub fn from_tensor(tensor: &Mat3) -> Result<Self> {
-        let t = check_inertia("inertia", tensor)?;
+        let t = check_inertia("body", tensor)?;
         let diagonal = t[(0, 1)] == 0.0 && t[(0, 2)] == 0.0 && t[(1, 2)] == 0.0;
         if diagonal {
             return Self::from_moments([t[(0, 0)], t[(1, 1)], t[(2, 2)]])
-                .map_err(|e| Error::inertia("inertia", e.message));
+                .map_err(|e| Error::inertia("body", e.message));
         }
         let p = principal(&t, 0.0);
-        check_moments(&p.moments).map_err(|e| Error::inertia("inertia", e.message))?;
+        check_moments(&p.moments).map_err(|e| Error::inertia("body", e.message))?;
         Ok(Self {
             tensor: t,
             moments: p.moments,

@@ -13,7 +13,7 @@ use crate::error::{check_finite, Error, ErrorKind, Result};
 use crate::rotation::axis_angle::rotation_axis_unchecked;
 use crate::rotation::euler::{euler_to_matrix_unchecked, matrix_to_euler_unchecked, EulerSequence};
 use crate::rotation::euler_kinematics::{
-    angular_velocity_unchecked, euler_rates_checked_input, Frame,
+    angular_velocity_checked_input, euler_rates_checked_input, Frame,
 };
 use crate::rotation::matrix::{
     rotation_defects, rotation_to_convert, rotation_verdict, row_major, ROTATION_MATRIX_TOL,
@@ -337,13 +337,7 @@ pub fn angular_velocity_batch(
         let (a, r) = (rec::<3>(angles, k), rec::<3>(rates, k));
         check_rec("angles", a)?;
         check_rec("rates", r)?;
-        let w = angular_velocity_unchecked(*a, *r, seq, frame);
-        if !w.iter().all(|c| c.is_finite()) {
-            return Err(Error::invalid(
-                "rates",
-                "the angular velocity overflows for these rates",
-            ));
-        }
+        let w = angular_velocity_checked_input(*a, *r, seq, frame)?;
         *y = [w.x, w.y, w.z];
         Ok(())
     })
@@ -372,12 +366,6 @@ pub fn euler_rates_batch(
         check_rec("angles", a)?;
         check_rec("omega_body", w)?;
         *y = euler_rates_checked_input(*a, &Vec3::from(*w), seq, frame)?;
-        if !y.iter().all(|c| c.is_finite()) {
-            return Err(Error::invalid(
-                "omega_body",
-                "the Euler-angle rates overflow for this angular velocity",
-            ));
-        }
         Ok(())
     })
 }

@@ -92,7 +92,7 @@ pub fn angular_velocity_matrix(angles: [f64; 3], seq: EulerSequence, frame: Fram
 /// The angular velocity (rad/s) in `frame` of a body whose Euler angles `angles` (rad) in
 /// convention `seq` change at `rates` (rad/s, same order as the angles): eqs. 2.98–2.99
 /// generalised (see the module documentation). Errors: non-finite input (naming `"angles"` or
-/// `"rates"`).
+/// `"rates"`), or an angular velocity beyond the doubles (naming `"rates"`).
 pub fn angular_velocity(
     angles: [f64; 3],
     rates: [f64; 3],
@@ -101,7 +101,26 @@ pub fn angular_velocity(
 ) -> Result<Vec3> {
     check_finite("angles", &angles)?;
     check_finite("rates", &rates)?;
-    Ok(angular_velocity_unchecked(angles, rates, seq, frame))
+    angular_velocity_checked_input(angles, rates, seq, frame)
+}
+
+/// [`angular_velocity`] after the finiteness checks: refuses an angular velocity beyond the
+/// doubles (naming `"rates"`).
+#[inline]
+pub(crate) fn angular_velocity_checked_input(
+    angles: [f64; 3],
+    rates: [f64; 3],
+    seq: EulerSequence,
+    frame: Frame,
+) -> Result<Vec3> {
+    let w = angular_velocity_unchecked(angles, rates, seq, frame);
+    if !w.iter().all(|c| c.is_finite()) {
+        return Err(Error::invalid(
+            "rates",
+            "the angular velocity overflows for these rates",
+        ));
+    }
+    Ok(w)
 }
 
 #[inline]
@@ -138,7 +157,8 @@ pub fn space_angular_velocity(
 /// velocity `omega` (rad/s, components in `frame`) at `angles` (rad): the inverse of
 /// [`angular_velocity`].
 ///
-/// Errors: non-finite input (naming `"angles"` or `"omega_body"`); [`Error::gimbal_lock`] naming
+/// Errors: non-finite input, or rates beyond the doubles (naming `"angles"` or
+/// `"omega_body"`); [`Error::gimbal_lock`] naming
 /// `"angles"` where `|sin β|` (proper Euler) or `|cos β|` (Tait–Bryan) is at most
 /// [`RATES_LOCK_TOL`].
 pub fn euler_rates(
@@ -152,7 +172,8 @@ pub fn euler_rates(
     euler_rates_checked_input(angles, omega, seq, frame)
 }
 
-/// [`euler_rates`] after the finiteness checks (the gimbal-lock check is here).
+/// [`euler_rates`] after the finiteness checks (the gimbal-lock check and the check of the
+/// rates are here).
 #[inline]
 pub(crate) fn euler_rates_checked_input(
     angles: [f64; 3],
@@ -198,6 +219,12 @@ pub(crate) fn euler_rates_checked_input(
         c3.cross(&c1).dot(omega) / det,
         c1.cross(&c2).dot(omega) / det,
     ];
+    if !rates.iter().all(|c| c.is_finite()) {
+        return Err(Error::invalid(
+            "omega_body",
+            "the Euler-angle rates overflow for this angular velocity",
+        ));
+    }
     Ok(seq.in_intrinsic_order(rates))
 }
 
@@ -246,5 +273,26 @@ mod tests {
             Frame::Space,
         );
         assert_eq!(e.unwrap_err().kind, ErrorKind::GimbalLock);
+    }
+
+    /// Finite or refused in the scalar functions too (the batch kernels checked this, the
+    /// browser's binding guarded it): rates or an angular velocity beyond the doubles name the
+    /// argument.
+    #[test]
+    fn results_beyond_the_doubles_name_the_argument() {
+        let e =
+            body_angular_velocity([0.1, 0.2, 0.3], [1e308; 3], EulerSequence::UNIT).unwrap_err();
+        assert_eq!(e.argument, "rates");
+        assert!(e.message.contains("overflows"), "{e}");
+        let e = euler_rates(
+            [0.1, 1e-7, 0.3],
+            &Vec3::new(1e308, 1e308, 0.0),
+            EulerSequence::UNIT,
+            Frame::Body,
+        )
+        .unwrap_err();
+        assert_eq!(e.argument, "omega_body", "{e}");
+        // Negative control: large but representable.
+        assert!(body_angular_velocity([0.1, 0.2, 0.3], [1e300; 3], EulerSequence::UNIT).is_ok());
     }
 }

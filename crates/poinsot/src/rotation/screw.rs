@@ -216,6 +216,12 @@ pub fn screw_axis(r: &Mat3, t: &Vec3) -> Result<Screw> {
     let n = Vec3::from(n);
     if angle <= TRANSLATION_ANGLE_TOL {
         let len = t.norm();
+        if !len.is_finite() {
+            return Err(crate::Error::invalid(
+                "t",
+                "the screw's slide |t| overflows for this translation",
+            ));
+        }
         return Ok(if len == 0.0 {
             Screw {
                 axis: Vec3::from(IDENTITY_AXIS),
