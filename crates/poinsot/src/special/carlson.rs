@@ -274,15 +274,21 @@ pub(crate) fn rj_scaled(x: f64, y: f64, z: f64, p: f64, k: i32) -> f64 {
         let lambda = sx * (sy + sz) + sy * sz;
         let (ax, ay, az) = (sp + sx, sp + sy, sp + sz);
         let d = ax * ay * az;
-        // e = δ_m / d_m² = Π(√p − √xᵢ)/Π(√p + √xᵢ) = (1 − ρ)/(1 + ρ) with ρ = √α/√β of
-        // Carlson's older form, a ratio of sums of positive terms in rᵢ = √(xᵢ/p): so 1 + e =
-        // 2/(1 + ρ) keeps its digits where e → −1 (arguments hundreds of decades apart, where
-        // the product of the three factors (√p − √xᵢ)/(√p + √xᵢ) rounds to −1).
-        let rho = carlson_rho(sx / sp, sy / sp, sz / sp);
         if !d.is_finite() {
             return f64::NAN;
         }
-        sum += fac * rc1p_rho(rho) / d;
+        // e = δ_m / d_m² = Π(√p − √xᵢ)/Π(√p + √xᵢ), taken as it is where e ≥ −½ (R_C(1, 1 + e)
+        // needs e to a few ulp absolute there); below, 1 + e would lose its digits as e → −1
+        // (arguments hundreds of decades apart, where the product rounds to −1): there e =
+        // (1 − ρ)/(1 + ρ) with ρ = √α/√β of Carlson's older form, a ratio of sums of positive
+        // terms in rᵢ = √(xᵢ/p), so that 1 + e = 2/(1 + ρ) keeps them.
+        let e = (sp - sx) * (sp - sy) * (sp - sz) / d;
+        let rc = if e >= -0.5 {
+            rc1p(e)
+        } else {
+            rc1p_rho(carlson_rho(sx / sp, sy / sp, sz / sp))
+        };
+        sum += fac * rc / d;
         fac *= 0.25;
         x = 0.25 * (x + lambda);
         y = 0.25 * (y + lambda);
