@@ -436,7 +436,7 @@ def _site(owner: str | None, name: str, func: Callable[..., Any], tmp: Any) -> S
     return Site(q, func, params, valid, missing)
 
 
-def public_names() -> list[tuple[str, Any, str]]:
+def public_api() -> list[tuple[str, Any, str]]:
     """(name, object, module label) for every public name of poinsot, poinsot.special and
     poinsot.sweep."""
     out = [(n, getattr(ps, n), "poinsot") for n in ps.__all__]
@@ -449,7 +449,7 @@ def sites(tmp: Any) -> list[Site]:
     """Every call site: functions, constructors, class/static methods, and the methods of the
     valid instances in :data:`INSTANCES` (bound)."""
     out: list[Site] = []
-    for name, obj, _module in public_names():
+    for name, obj, _module in public_api():
         if inspect.isclass(obj):
             if issubclass(obj, BaseException) or issubclass(obj, Warning):
                 continue

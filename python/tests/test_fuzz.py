@@ -51,7 +51,7 @@ def test_every_public_name_is_fuzzed(sites: list[fz.Site]) -> None:
     assert not missing, f"add valid examples to fuzz_surface.VALID for: {missing}"
     import inspect
 
-    for name, obj, module in fz.public_names():
+    for name, obj, module in fz.public_api():
         if inspect.isclass(obj) and not issubclass(obj, (BaseException, Warning)):
             has_methods = any(
                 inspect.isfunction(v) and not a.startswith("_") for a, v in vars(obj).items()

@@ -287,7 +287,7 @@ def test_check_rotation_matrix_and_scipy_conversion() -> None:
     assert poinsot.as_scipy_rotation(rot) is rot
 
 
-def test_all_lists_the_public_names() -> None:
+def test_all_lists_every_public_name() -> None:
     for name in [
         "euler_to_matrix", "matrix_to_euler", "rotation_axis", "screw_axis", "Screw",
         "body_angular_velocity", "space_angular_velocity", "euler_rates", "axis_angle_to_matrix",

@@ -57,56 +57,11 @@ impl From<Error> for Failure {
     }
 }
 
-/// Maps a core error about `from` (the core's or the Python API's name of an argument) to the
-/// same error about `to` (the binding's name of it), e.g. the core's `"R"` to the binding's `r`.
+/// Maps a core error about `from` (the core's and the Python API's name of an argument, `"R"`) to
+/// the same error about `to` (the binding's lower-case name of it, `r`): JavaScript's names are
+/// lower case where Python keeps the unit's capital.
 pub fn renamed(from: &'static str, to: &'static str) -> impl Fn(Error) -> Failure {
-    renamed_all(&[]).with(from, to)
-}
-
-/// A map of the core's argument names to the binding's, for the errors of one call: see
-/// [`renamed_all`].
-pub struct Names {
-    pairs: Vec<(&'static str, &'static str)>,
-    rest: Option<&'static str>,
-}
-
-impl Names {
-    /// The map with `from` shown as `to` too.
-    pub fn with(mut self, from: &'static str, to: &'static str) -> impl Fn(Error) -> Failure {
-        self.pairs.push((from, to));
-        move |e| self.apply(e)
-    }
-
-    /// The map, and every other name that is not one of `arguments` attributed to them (see
-    /// [`attributed`]).
-    pub fn otherwise(mut self, arguments: &'static str) -> impl Fn(Error) -> Failure {
-        self.rest = Some(arguments);
-        move |e| self.apply(e)
-    }
-
-    fn apply(&self, mut e: Error) -> Failure {
-        if let Some((_, to)) = self.pairs.iter().find(|(from, _)| e.argument == *from) {
-            if e.argument == "max_steps" {
-                // The binding's fixed step limit is not an argument of the JavaScript API.
-                e.message = format!("too long for the step limit of the browser: {}", e.message);
-            }
-            e.argument = (*to).into();
-        } else if let Some(arguments) = self.rest {
-            return attributed(arguments)(e);
-        }
-        Failure::from(e)
-    }
-}
-
-/// Maps the arguments a core error may name to the binding's (`to` may list several, `"mass,
-/// stiffness"`): the core names its own internal quantities (`t_end`, `state0`, `strength`,
-/// `max_steps`) where the JavaScript call has other arguments. A `max_steps` error also says
-/// that the run is too long for the binding's fixed step limit.
-pub fn renamed_all(names: &[(&'static str, &'static str)]) -> Names {
-    Names {
-        pairs: names.to_vec(),
-        rest: None,
-    }
+    move |e| Failure::from(e.renamed(from, to))
 }
 
 /// Attributes a core error to the call's `arguments` (`"i1, i3, mgl, p_phi, p_psi, energy"`)

@@ -528,7 +528,9 @@ fn one_body(
                 max_steps,
                 ..Options::with_tolerances(rtol, atol)
             };
-            let sol = dop853(rhs, 0.0, y0, duration, &opts)?;
+            // A step that fails (its size below round-off) names the run's `duration`.
+            let sol =
+                dop853(rhs, 0.0, y0, duration, &opts).map_err(|e| e.renamed("t", "duration"))?;
             let y = sol.y_final();
             let q = normalized(&[y[3], y[4], y[5], y[6]]);
             Ok(([y[0], y[1], y[2]], q, sol.stats.accepted))

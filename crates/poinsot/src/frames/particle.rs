@@ -110,12 +110,12 @@ where
         |_t: f64, _y: &ParticleState| 1.0,
         Crossing::Any,
     )
-    .map_err(public_names)
+    .map_err(callers_names)
 }
 
 /// The integrator's names (`times`, `t_end`, `t` of a failing step, `y0` of a right-hand side
 /// not finite at the start) as the arguments of [`simulate_particle_at`] that they come from.
-fn public_names(mut e: Error) -> Error {
+fn callers_names(mut e: Error) -> Error {
     e.argument = match e.argument.as_str() {
         "times" => "t_eval",
         "t_end" | "t" => "duration",
