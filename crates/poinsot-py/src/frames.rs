@@ -11,17 +11,16 @@ use poinsot::frames::ParticleState;
 use poinsot::frames::{
     simulate_particle_at, FrameMotion, MovingFrame, SpringParticle, SteadyMotion,
 };
-use poinsot::integrate::{Scan, Solution};
+use poinsot::integrate::Scan;
 use poinsot::{Mat3, Vec3};
 use poinsot_py_macros::export;
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
 
 use crate::control::{map_each, run, run_attached};
 use crate::convert::{a3, mat3, mat3_out, rows_view, v3, vec3, vec3_out, Values};
 use crate::errors::{invalid, IntoPy};
 
-pub(crate) use crate::convert::{array_in, options, rows_in, rows_out, vec_in};
+pub(crate) use crate::convert::{options, rows_out, vec_in};
 
 /// 15 floats and a row-major attitude → a checked core frame.
 fn frame_from(s: &[f64], attitude: [[f64; 3]; 3]) -> PyResult<MovingFrame> {
@@ -176,27 +175,6 @@ fn frame_fictitious_forces<'py>(
         })
     })?;
     Ok(columns(py, &each))
-}
-
-/// The solution's samples at `times` (or every step if `times` is empty) as a dict
-/// {"t", "states", "accepted", "rejected", "evaluations"}.
-pub(crate) fn solution_dict<'py>(
-    py: Python<'py>,
-    sol: &Solution<ParticleState>,
-    times: &[f64],
-) -> PyResult<Bound<'py, PyDict>> {
-    let (t, states): (Vec<f64>, Vec<ParticleState>) = if times.is_empty() {
-        (sol.t.clone(), sol.y.clone())
-    } else {
-        (times.to_vec(), sol.sample(times).py()?)
-    };
-    let d = PyDict::new(py);
-    d.set_item("t", PyArray1::from_vec(py, t))?;
-    d.set_item("states", rows_out(py, &states))?;
-    d.set_item("accepted", sol.stats.accepted)?;
-    d.set_item("rejected", sol.stats.rejected)?;
-    d.set_item("evaluations", sol.stats.evaluations)?;
-    Ok(d)
 }
 
 /// A frame motion that asks a Python callable `t -> (15 floats, 3×3 nested attitude)`; the
