@@ -297,9 +297,12 @@ impl MovingFrame {
         velocity: &Vec3,
         acceleration: &Vec3,
     ) -> Result<FixedMotion> {
-        check_state(position, velocity, acceleration)?;
         let m = self.to_fixed_unchecked(position, velocity, acceleration);
-        m.check()?;
+        if m.check().is_err() {
+            // A non-finite argument makes some output non-finite: name it before the overflow.
+            check_state(position, velocity, acceleration)?;
+            m.check()?;
+        }
         Ok(m)
     }
 
@@ -338,9 +341,12 @@ impl MovingFrame {
         velocity: &Vec3,
         acceleration: &Vec3,
     ) -> Result<RelativeMotion> {
-        check_state(position, velocity, acceleration)?;
         let m = self.to_moving_unchecked(position, velocity, acceleration);
-        m.check()?;
+        if m.check().is_err() {
+            // A non-finite argument makes some output non-finite: name it before the overflow.
+            check_state(position, velocity, acceleration)?;
+            m.check()?;
+        }
         Ok(m)
     }
 

@@ -45,10 +45,14 @@ impl SpringParticle {
 
     /// The spring force F = −k r (N) at `position` r (m), in the components of `position`.
     /// Errors name `position`: not finite, or a force beyond the doubles (k |r| > ~1.8e308).
+    #[inline]
     pub fn force(&self, position: &Vec3) -> Result<Vec3> {
-        check_finite("position", position.as_slice())?;
         let f = self.force_unchecked(position);
-        check_result("position", "force", f.as_slice())?;
+        if !all_finite(f.as_slice()) {
+            // A non-finite position gives a non-finite force: say which.
+            check_finite("position", position.as_slice())?;
+            check_result("position", "force", f.as_slice())?;
+        }
         Ok(f)
     }
 
@@ -62,19 +66,25 @@ impl SpringParticle {
     /// The acceleration F / m = −(k / m) r (m/s²) at `position` r (m): in the fixed frame, the
     /// particle's whole acceleration r̈' (eq. 2.25). Errors name `position` (as
     /// [`SpringParticle::force`]).
+    #[inline]
     pub fn acceleration(&self, position: &Vec3) -> Result<Vec3> {
-        check_finite("position", position.as_slice())?;
         let a = self.force_unchecked(position) / self.mass;
-        check_result("position", "acceleration", a.as_slice())?;
+        if !all_finite(a.as_slice()) {
+            check_finite("position", position.as_slice())?;
+            check_result("position", "acceleration", a.as_slice())?;
+        }
         Ok(a)
     }
 
     /// The potential energy U = ½ k |r|² (J). Errors name `position`: not finite, or U beyond
     /// the doubles.
+    #[inline]
     pub fn potential(&self, position: &Vec3) -> Result<f64> {
-        check_finite("position", position.as_slice())?;
         let u = self.potential_unchecked(position);
-        check_result("position", "potential", &[u])?;
+        if !u.is_finite() {
+            check_finite("position", position.as_slice())?;
+            check_result("position", "potential", &[u])?;
+        }
         Ok(u)
     }
 
@@ -86,6 +96,7 @@ impl SpringParticle {
     /// `position` r' (m) and `velocity` ṙ' (m/s). Conserved along any motion (eq. 2.25).
     /// Errors name `position` or `velocity`: not finite, or the term they give (½ k |r|², ½ m
     /// |v|²) beyond the doubles; a sum beyond them names `position`.
+    #[inline]
     pub fn energy(&self, position: &Vec3, velocity: &Vec3) -> Result<f64> {
         self.energy_with(position, velocity, 0.0, "energy")
     }
@@ -100,6 +111,7 @@ impl SpringParticle {
     /// uniformly (ω̇ = 0) about its fixed origin (R = 0); with ω̇ ≠ 0 the Euler force makes it
     /// change. With ω = 0 it is [`SpringParticle::energy`]. Errors as
     /// [`SpringParticle::energy`] (the centrifugal term's overflow names `position`).
+    #[inline]
     pub fn jacobi_integral(
         &self,
         frame: &MovingFrame,
@@ -115,18 +127,23 @@ impl SpringParticle {
         )
     }
 
-    /// ½ m (|v|² − `c2`) + ½ k |r|² (J), checked: the arguments finite, then the potential
-    /// (naming `position`), the kinetic energy (`velocity`), then the whole (`position`: the
-    /// centrifugal term ½ m `c2` or the sum).
+    /// ½ m (|v|² − `c2`) + ½ k |r|² (J), checked (only when it is not finite: the fast path is
+    /// one test): the arguments finite, then the potential (naming `position`), the kinetic
+    /// energy (`velocity`), then the whole (`position`: the centrifugal term ½ m `c2` or the
+    /// sum).
+    #[inline]
     fn energy_with(&self, position: &Vec3, velocity: &Vec3, c2: f64, what: &str) -> Result<f64> {
-        check_finite("position", position.as_slice())?;
-        check_finite("velocity", velocity.as_slice())?;
         let u = self.potential_unchecked(position);
-        check_result("position", what, &[u])?;
         let v2 = velocity.norm_squared();
-        check_result("velocity", what, &[0.5 * self.mass * v2])?;
         let e = 0.5 * self.mass * (v2 - c2) + u;
-        check_result("position", what, &[e])?;
+        if !e.is_finite() {
+            // A finite E has finite terms and arguments; otherwise blame the first culprit.
+            check_finite("position", position.as_slice())?;
+            check_finite("velocity", velocity.as_slice())?;
+            check_result("position", what, &[u])?;
+            check_result("velocity", what, &[0.5 * self.mass * v2])?;
+            check_result("position", what, &[e])?;
+        }
         Ok(e)
     }
 
@@ -169,6 +186,12 @@ impl SpringParticle {
             e
         })
     }
+}
+
+/// Whether every value is finite.
+#[inline]
+fn all_finite(values: &[f64]) -> bool {
+    values.iter().all(|v| v.is_finite())
 }
 
 #[cfg(test)]
