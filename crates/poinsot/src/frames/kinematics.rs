@@ -297,7 +297,7 @@ impl MovingFrame {
         velocity: &Vec3,
         acceleration: &Vec3,
     ) -> Result<FixedMotion> {
-        let m = self.to_fixed_unchecked(position, velocity, acceleration);
+        let m = self.fixed_motion_unchecked(position, velocity, acceleration);
         if m.check().is_err() {
             // A non-finite argument makes some output non-finite: name it before the overflow.
             check_state(position, velocity, acceleration)?;
@@ -307,7 +307,7 @@ impl MovingFrame {
     }
 
     /// [`MovingFrame::to_fixed`] without the checks.
-    fn to_fixed_unchecked(
+    fn fixed_motion_unchecked(
         &self,
         position: &Vec3,
         velocity: &Vec3,
@@ -341,7 +341,7 @@ impl MovingFrame {
         velocity: &Vec3,
         acceleration: &Vec3,
     ) -> Result<RelativeMotion> {
-        let m = self.to_moving_unchecked(position, velocity, acceleration);
+        let m = self.relative_motion_unchecked(position, velocity, acceleration);
         if m.check().is_err() {
             // A non-finite argument makes some output non-finite: name it before the overflow.
             check_state(position, velocity, acceleration)?;
@@ -351,7 +351,7 @@ impl MovingFrame {
     }
 
     /// [`MovingFrame::to_moving`] without the checks.
-    fn to_moving_unchecked(
+    fn relative_motion_unchecked(
         &self,
         position: &Vec3,
         velocity: &Vec3,
