@@ -489,6 +489,11 @@ def test_keyboard_interrupt_is_one_line_and_status_130(monkeypatch: pytest.Monke
     assert code == EXIT_INTERRUPTED and err == "interrupted\n" and out == ""
 
 
+def _default_sigint() -> None:
+    """In a child before it starts: SIGINT's default action (see the caller)."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 SLOW_TOUR = textwrap.dedent("""
     import sys, time
     import poinsot.tour
@@ -516,6 +521,10 @@ def test_ctrl_c_in_a_long_run_prints_interrupted_and_exits_130(tmp_path: Path) -
         stderr=subprocess.PIPE,
         text=True,
         env=env,
+        # Ctrl-C's default action in the child, as in a terminal: a test run started as a
+        # background job of a non-interactive shell ignores SIGINT, children inherit that,
+        # and Python then installs no KeyboardInterrupt handler (the child slept its 60 s).
+        preexec_fn=_default_sigint,
     )
     assert proc.stdout is not None
     assert proc.stdout.readline().strip() == "ready"

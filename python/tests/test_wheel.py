@@ -167,6 +167,10 @@ def test_lab_serves_the_page_and_the_webassembly(installed: tuple[Path, dict[str
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
+        # SIGINT's default action in the server, as in a terminal (a test run started as a
+        # background job of a non-interactive shell would pass on SIG_IGN, and the server
+        # would not stop on the SIGINT below).
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),
     )
     try:
         assert proc.stdout is not None
