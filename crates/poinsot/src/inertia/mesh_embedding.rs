@@ -1339,8 +1339,8 @@ fn stars(pts: Points<'_>, tris: &[[u32; 3]], used: &[bool], cancel: &Cancel) -> 
 /// The wedge filed by a face that takes no part ([`stars`]).
 const NOT_USED: u32 = u32::MAX;
 
-/// The most faces around a vertex that [`star_embedded`] tries to prove (more are left to the
-/// pairwise tests).
+/// The most faces around a vertex that [`star_embedded`] keeps on the stack (a larger fan is
+/// copied to the heap).
 const STAR_MAX: usize = 32;
 
 /// The sign of the 2-D orientation `o2(c, a, b, k)`, from the differences `da = a − c`,
@@ -1368,18 +1368,29 @@ fn o2_diff(da: [f64; 2], db: [f64; 2], exact: impl FnOnce() -> i8) -> i8 {
 /// is left by one face and entered by the next), each winding at least once, and the number
 /// of wedges `[a, b)` (half-open) that hold the ray from `v` through a fixed corner `r` is
 /// their total winding. `false` (the pairs are then tested one by one) for a vertex with a
-/// face that takes no part (zero area, repeated index), with more than [`STAR_MAX`] faces,
+/// face that takes no part (zero area, repeated index),
 /// whose neighbourhood is badly scaled for the predicates, or whose fan is folded, pinched or
 /// winds twice. The orientations are float-filtered ([`o2_diff`]) on the corners' differences
 /// from `v`, computed once.
 fn star_embedded(pts: Points<'_>, v: u32, star: &[[u32; 2]]) -> bool {
-    if star.len() < 3 || star.len() > STAR_MAX || star.iter().any(|w| w[0] == NOT_USED) {
+    if star.len() < 3 || star.iter().any(|w| w[0] == NOT_USED) {
         return false;
     }
     let c = pts.p(v);
-    // The wedges (a, b) of the faces, in face order (the lowest face index first).
-    let mut wedges = [([0.0; 3], [0.0; 3]); STAR_MAX];
     let n = star.len();
+    // The wedges (a, b) of the faces, in face order (the lowest face index first), and their
+    // differences from v: on the stack up to STAR_MAX faces, on the heap for a larger fan
+    // (the pole of a UV sphere, a cone's apex).
+    let mut stack = [[([0.0; 3], [0.0; 3]); STAR_MAX]; 2];
+    let mut heap;
+    let [wedges, d] = if n <= STAR_MAX {
+        let [w, d] = &mut stack;
+        [&mut w[..n], &mut d[..n]]
+    } else {
+        heap = [vec![([0.0; 3], [0.0; 3]); n], vec![([0.0; 3], [0.0; 3]); n]];
+        let [w, d] = &mut heap;
+        [&mut w[..], &mut d[..]]
+    };
     let (mut lo, mut hi) = (c, c);
     for (w, &[a, b]) in wedges.iter_mut().zip(star) {
         *w = (pts.p(a), pts.p(b));
@@ -1395,11 +1406,10 @@ fn star_embedded(pts: Points<'_>, v: u32, star: &[[u32; 2]]) -> bool {
     }
     // Differences from v (float; the filter accounts for their rounding).
     let diff = |p: P3| [p[0] - c[0], p[1] - c[1], p[2] - c[2]];
-    let mut d = [([0.0; 3], [0.0; 3]); STAR_MAX];
-    for (dw, w) in d.iter_mut().zip(&wedges[..n]) {
+    for (dw, w) in d.iter_mut().zip(wedges.iter()) {
         *dw = (diff(w.0), diff(w.1));
     }
-    let (wedges, d) = (&wedges[..n], &d[..n]);
+    let (wedges, d) = (&*wedges, &*d);
     // The reference corner r (the first face's a) and the axes to try, the largest normal
     // component of the first face's first.
     let (r, b0) = wedges[0];
@@ -1758,6 +1768,29 @@ mod tests {
             assert_eq!(got, (count, first), "seed {seed}, amplitude {amp}");
         }
         assert!(skipped_some && found_some);
+    }
+
+    /// A fan of more faces than [`STAR_MAX`] (the poles of a UV sphere of 100 meridians) is
+    /// proved too (it was left to the pairwise tests when the proof held only stack buffers).
+    #[test]
+    fn large_fans_are_proved() {
+        let (v, f) = bumpy_sphere(6, 100, 1, 0.0);
+        let cancel = Cancel::new(0);
+        let index = Index::new(Points::new(&v), &f, |_| false, &cancel).unwrap();
+        let south = (1 + 6 * 100) as u32;
+        for pole in [0u32, south] {
+            let around: Vec<&Face> = index
+                .faces
+                .iter()
+                .filter(|g| g.indices.contains(&pole))
+                .collect();
+            assert_eq!(around.len(), 100);
+            for g in around {
+                let i = g.indices.iter().position(|&x| x == pole).unwrap();
+                assert!(g.proved & (1 << i) != 0, "pole {pole}");
+            }
+        }
+        assert_eq!(index.intersections(&cancel).unwrap(), (0, None));
     }
 
     #[test]
