@@ -52,3 +52,21 @@ test("item 14: the free bodies' maxTime is a finite time past which t is refused
   const b = new raw.FreeRigidBody([1, 2, 3], [1, 0.1, 1], []);
   assert.ok(Number.isFinite(b.maxTime) && b.maxTime > 1e9, `${b.maxTime}`);
 });
+
+test("item 15: fromMesh merges CAD corners that differ in the last bits when asked (mergeVertices)", () => {
+  // A unit cube as a triangle soup (each face with its own corners), the copies of each corner a
+  // few ulps apart as SolidWorks writes them.
+  const corner = (i) => [i & 1, (i >> 1) & 1, (i >> 2) & 1];
+  const faces = [0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5];
+  const jitter = [0, 1e-16, -2e-16, 3e-16];
+  const soup = faces.flatMap((i) => corner(i)).map((x, k) => x + jitter[k % 4]);
+  const index = soup.map((_, k) => k).slice(0, 36);
+  // Negative control: as given (and with false, the default) the soup is open.
+  for (const merge of [undefined, false]) {
+    assert.throws(() => raw.RigidBody.fromMesh(soup, index, 2, merge), (e) => e.name === "InvalidMeshError" && /open/.test(e.message));
+  }
+  const b = raw.RigidBody.fromMesh(soup, index, 2, true);
+  assert.ok(Math.abs(b.mass - 2) < 1e-15, `${b.mass}`);
+  const I = Array.from(b.inertia);
+  I.forEach((x, k) => assert.ok(Math.abs(x - (k % 4 === 0 ? 2 / 6 : 0)) < 1e-15, `inertia[${k}] = ${x}`));
+});

@@ -163,21 +163,27 @@ impl RigidBody {
     /// here; a negative or too large one by the core, which names it). The core refuses, with an
     /// `InvalidMeshError` naming `faces` or `vertices`, a mesh that does not bound a solid (open,
     /// non-manifold, inconsistently oriented, inside out, zero volume). Vertices are used as
-    /// given: merge the per-face copies of a triangle soup (an STL file) first.
+    /// given, unless `mergeVertices` is true: then the core first merges the vertices within
+    /// `2^-22` of the largest coordinate magnitude of each other (its `MERGE_RTOL`; Python's
+    /// `merge_vertices=True`), so that a triangle soup or a CAD export whose shared corners
+    /// differ in the last bits (SolidWorks' STL files) is read as the closed mesh it is.
     #[wasm_bindgen(js_name = fromMesh)]
     pub fn from_mesh(
         #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] vertices: Numbers,
         #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] faces: Numbers,
         #[wasm_bindgen(unchecked_param_type = "number")] density: Number,
+        merge_vertices: Option<bool>,
     ) -> Out<RigidBody> {
         let vertices = numbers("vertices", &vertices)?;
         let faces = numbers("faces", &faces)?;
         let density = number("density", &density)?;
         let indices = face_indices(&faces)?;
-        wrap(
-            "vertices, faces, density",
-            inr::mesh_mass_properties(&vertices, &indices, density),
-        )
+        let body = if merge_vertices.unwrap_or(false) {
+            inr::mesh_mass_properties_merging(&vertices, &indices, density)
+        } else {
+            inr::mesh_mass_properties(&vertices, &indices, density)
+        };
+        wrap("vertices, faces, density", body)
     }
 
     /// Mass (kg).
@@ -347,7 +353,7 @@ mod tests {
     #[test]
     fn mesh_cube_is_the_cuboid() {
         let (v, f) = cube();
-        let b = RigidBody::from_mesh(v.clone(), f.clone(), 3.0).unwrap();
+        let b = RigidBody::from_mesh(v.clone(), f.clone(), 3.0, None).unwrap();
         let c = RigidBody::cuboid(3.0, vec![1.0, 1.0, 1.0]).unwrap();
         assert!((b.mass() - 3.0).abs() < 1e-15);
         assert!(b.center_of_mass().iter().all(|x| (x - 0.5).abs() < 1e-15));
@@ -361,14 +367,14 @@ mod tests {
     fn mesh_shape_and_index_errors_name_the_argument() {
         let (v, f) = cube();
         // Shapes: a coordinate or an index too many.
-        let e = RigidBody::from_mesh(v[..23].to_vec(), f.clone(), 1.0).unwrap_err();
+        let e = RigidBody::from_mesh(v[..23].to_vec(), f.clone(), 1.0, None).unwrap_err();
         assert_eq!(e.name, "InvalidMeshError");
         assert!(
             e.message.starts_with("vertices: must have shape (N, 3)"),
             "{}",
             e.message
         );
-        let e = RigidBody::from_mesh(v.clone(), f[..35].to_vec(), 1.0).unwrap_err();
+        let e = RigidBody::from_mesh(v.clone(), f[..35].to_vec(), 1.0, None).unwrap_err();
         assert!(
             e.message.starts_with("faces: must have shape (M, 3)"),
             "{}",
@@ -377,7 +383,7 @@ mod tests {
         // Index range: too large and negative, reported by the core with the index.
         let mut big = f.clone();
         big[7] = 8.0;
-        let e = RigidBody::from_mesh(v.clone(), big.clone(), 1.0).unwrap_err();
+        let e = RigidBody::from_mesh(v.clone(), big.clone(), 1.0, None).unwrap_err();
         assert_eq!(e.name, "InvalidMeshError");
         assert!(
             e.message
@@ -387,13 +393,13 @@ mod tests {
         );
         let mut neg = f.clone();
         neg[0] = -1.0;
-        let e = RigidBody::from_mesh(v.clone(), neg.clone(), 1.0).unwrap_err();
+        let e = RigidBody::from_mesh(v.clone(), neg.clone(), 1.0, None).unwrap_err();
         assert!(e.message.contains("index -1 at face 0"), "{}", e.message);
         // Not integers.
         for bad in [0.5, f64::NAN, f64::INFINITY, 1e300] {
             let mut g = f.clone();
             g[4] = bad;
-            let e = RigidBody::from_mesh(v.clone(), g.clone(), 1.0).unwrap_err();
+            let e = RigidBody::from_mesh(v.clone(), g.clone(), 1.0, None).unwrap_err();
             assert_eq!(e.name, "InvalidMeshError");
             assert!(
                 e.message
@@ -404,7 +410,7 @@ mod tests {
             );
         }
         // Density is the core's argument check.
-        let e = RigidBody::from_mesh(v.clone(), f.clone(), -1.0).unwrap_err();
+        let e = RigidBody::from_mesh(v.clone(), f.clone(), -1.0, None).unwrap_err();
         assert_eq!(e.name, "PoinsotError");
         assert!(e.message.starts_with("density"), "{}", e.message);
     }
@@ -412,7 +418,7 @@ mod tests {
     #[test]
     fn open_mesh_is_refused_as_invalid_mesh() {
         let (v, f) = cube();
-        let e = RigidBody::from_mesh(v.clone(), f[..33].to_vec(), 1.0).unwrap_err();
+        let e = RigidBody::from_mesh(v.clone(), f[..33].to_vec(), 1.0, None).unwrap_err();
         assert_eq!(e.name, "InvalidMeshError");
         assert!(e.message.contains("the mesh is open"), "{}", e.message);
         // A triangle soup (every face with its own vertices) looks open until merged.
@@ -421,8 +427,25 @@ mod tests {
             .flat_map(|&i| v[3 * i as usize..3 * i as usize + 3].to_vec())
             .collect();
         let idx: Vec<f64> = (0..36).map(f64::from).collect();
-        let e = RigidBody::from_mesh(soup, idx, 1.0).unwrap_err();
+        let e = RigidBody::from_mesh(soup.clone(), idx.clone(), 1.0, None).unwrap_err();
         assert!(e.message.contains("open"), "{}", e.message);
+        // Merged by the core (mergeVertices): the cube, also with its copies of each corner a
+        // few ulps apart as CAD exports write them; Some(false) is the default.
+        let jittered: Vec<f64> = soup
+            .iter()
+            .enumerate()
+            .map(|(k, &x)| x + [0.0, 1e-16, -2e-16, 3e-16][k % 4])
+            .collect();
+        let c = RigidBody::cuboid(1.0, vec![1.0, 1.0, 1.0]).unwrap();
+        for s in [soup.clone(), jittered] {
+            let b = RigidBody::from_mesh(s.clone(), idx.clone(), 1.0, Some(true)).unwrap();
+            assert!((b.mass() - 1.0).abs() < 1e-15);
+            for (x, y) in b.inertia().iter().zip(c.inertia()) {
+                assert!((x - y).abs() < 1e-15, "{x} vs {y}");
+            }
+            let e = RigidBody::from_mesh(s, idx.clone(), 1.0, Some(false)).unwrap_err();
+            assert!(e.message.contains("open"), "{}", e.message);
+        }
     }
 
     #[test]

@@ -271,7 +271,9 @@ export const inertiaScene: SceneDef = {
             throw e;
           }
           const scale = UNITS[String(p.unit)] ?? 1;
-          return RigidBody.fromMesh(stl.vertices.map((x) => x * scale), stl.faces, Number(p.density));
+          // The core merges corners that differ in the last bits (CAD exports), as Python's
+          // merge_vertices=True does.
+          return RigidBody.fromMesh(stl.vertices.map((x) => x * scale), stl.faces, Number(p.density), true);
         }
         default: return RigidBody.cuboid(m, [a, b, c]);
       }
