@@ -203,6 +203,9 @@ function worker({ seed, calls, deadlineMs }) {
       return { obj: pick([{}, null, undefined, 5, "frame"]), names: new Set() };
     }
     function value(type, names) {
+      // An optional parameter (`T | null` in the declarations, e.g. fromMesh's mergeVertices):
+      // left out or null now and then, otherwise a value as for T.
+      if (type.endsWith(" | null")) return chance(0.2) ? pick([null, undefined]) : value(type.slice(0, -" | null".length), names);
       if (type === "number") return number();
       if (type === "ArrayLike<number>") return array();
       if (type === "string") return string();
