@@ -6,8 +6,8 @@
 //! attitude maps them.
 
 use crate::args::{count, number, numbers_each, triple, Count, Number, Numbers};
-use crate::convert::{finite, vec_out, Failure, Out};
-use crate::free::{time, FreeRigidBody};
+use crate::convert::{at_time, getters, vec_out, Out};
+use crate::free::FreeRigidBody;
 use poinsot::analytic as an;
 use wasm_bindgen::prelude::wasm_bindgen;
 
@@ -21,13 +21,27 @@ fn flat(points: &[poinsot::Vec3]) -> Vec<f64> {
     points.iter().flat_map(|p| [p.x, p.y, p.z]).collect()
 }
 
+impl FreeRigidBody {
+    /// `f` (a method of the core's body at one time) at each of `times` (s): 3N numbers;
+    /// errors name `times`.
+    fn at_times(
+        &self,
+        times: &Numbers,
+        f: impl Fn(&an::FreeRigidBody, f64) -> poinsot::Result<poinsot::Vec3>,
+    ) -> Out<Vec<f64>> {
+        let times = numbers_each("times", times, BYTES_PER_TIME)?;
+        poinsot::error::check_finite("times", &times)?;
+        let points = times
+            .iter()
+            .map(|&t| f(&self.inner, t))
+            .collect::<poinsot::Result<Vec<_>>>()
+            .map_err(|e| e.renamed("t", "times"))?;
+        Ok(flat(&points))
+    }
+}
+
 #[wasm_bindgen]
 impl FreeRigidBody {
-    /// The Jacobi parameter m = k² (0 steady or symmetric, 1 on the separatrix).
-    #[wasm_bindgen(getter)]
-    pub fn parameter(&self) -> f64 {
-        self.inner.parameter()
-    }
     /// λ of the Jacobi argument τ = λt + τ₀ (1/s).
     #[wasm_bindgen(getter)]
     pub fn frequency(&self) -> Out<f64> {
@@ -44,39 +58,10 @@ impl FreeRigidBody {
     pub fn pole_axis(&self) -> Option<u32> {
         self.inner.pole_axis().map(|i| i as u32)
     }
-    /// (2T)^½ / |L|: the distance of the invariable plane from the centre in Poinsot's
-    /// construction (the inertia ellipsoid ρ·I·ρ = 1).
-    #[wasm_bindgen(getter, js_name = invariablePlaneDistance)]
-    pub fn invariable_plane_distance(&self) -> f64 {
-        self.inner.invariable_plane_distance()
-    }
     /// L̂, the invariable plane's unit normal (space components).
     #[wasm_bindgen(getter, js_name = invariablePlaneNormal)]
     pub fn invariable_plane_normal(&self) -> Vec<f64> {
         vec_out(&self.inner.invariable_plane_normal())
-    }
-    /// The contact point ρ = R(t) ω(t) / (2T)^½ of the inertia ellipsoid with the invariable
-    /// plane at time `t` (s), space components.
-    #[wasm_bindgen(js_name = contactPoint)]
-    pub fn contact_point(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
-    ) -> Out<Vec<f64>> {
-        let t = time(&t)?;
-        finite("t", "contact point", vec_out(&self.inner.contact_point(t)?))
-    }
-    /// The contact point ω(t) / (2T)^½ at time `t` (s), body components.
-    #[wasm_bindgen(js_name = contactPointBody)]
-    pub fn contact_point_body(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
-    ) -> Out<Vec<f64>> {
-        let t = time(&t)?;
-        finite(
-            "t",
-            "contact point",
-            vec_out(&self.inner.contact_point_body(t)?),
-        )
     }
     /// The contact points (space components) at each of `times` (s): 3N numbers, the
     /// herpolhode (scaled) when the times are consecutive.
@@ -85,29 +70,14 @@ impl FreeRigidBody {
         &self,
         #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] times: Numbers,
     ) -> Out<Vec<f64>> {
-        let times = numbers_each("times", &times, BYTES_PER_TIME)?;
-        poinsot::error::check_finite("times", &times)?;
-        let pts = times
-            .iter()
-            .map(|&t| self.inner.contact_point(t))
-            .collect::<Result<Vec<poinsot::Vec3>, _>>()
-            .map_err(|e| e.renamed("t", "times"))?;
-        finite("times", "contact point", flat(&pts))
+        self.at_times(&times, an::FreeRigidBody::contact_point)
     }
     /// ω (body components, rad/s) at each of `times` (s): 3N numbers.
-    #[wasm_bindgen(js_name = omegas)]
     pub fn omegas(
         &self,
         #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] times: Numbers,
     ) -> Out<Vec<f64>> {
-        let times = numbers_each("times", &times, BYTES_PER_TIME)?;
-        poinsot::error::check_finite("times", &times)?;
-        let pts = times
-            .iter()
-            .map(|&t| self.inner.omega(t))
-            .collect::<Result<Vec<poinsot::Vec3>, _>>()
-            .map_err(|e| e.renamed("t", "times"))?;
-        finite("times", "omega", flat(&pts))
+        self.at_times(&times, an::FreeRigidBody::omega)
     }
     /// `samples` points (3N numbers, body components) of the polhode on the inertia ellipsoid
     /// ρ·I·ρ = 1, over one period (on the separatrix, the branch from −12/λ to 12/λ).
@@ -123,6 +93,26 @@ impl FreeRigidBody {
         Ok(flat(&self.inner.contact_polhode(samples)?))
     }
 }
+
+getters!(FreeRigidBody {
+    " The Jacobi parameter m = k² (0 steady or symmetric, 1 on the separatrix)."
+    parameter parameter;
+    " (2T)^½ / |L|: the distance of the invariable plane from the centre in Poinsot's"
+    " construction (the inertia ellipsoid ρ·I·ρ = 1)."
+    invariablePlaneDistance invariable_plane_distance;
+    " The largest |t| (s) at which the state is computed: the time in which the motion turns"
+    " through 2⁴² rad at its fastest rate (a later `t` is refused naming `t`); `Infinity` when"
+    " the body never turns that far within the double range."
+    maxTime max_time;
+});
+
+at_time!(FreeRigidBody {
+    " The contact point ρ = R(t) ω(t) / (2T)^½ of the inertia ellipsoid with the invariable"
+    " plane at time `t` (s), space components."
+    contactPoint contact_point -> vec_out;
+    " The contact point ω(t) / (2T)^½ at time `t` (s), body components."
+    contactPointBody contact_point_body -> vec_out;
+});
 
 /// The linear stability of steady rotation about each principal axis
 /// (`poinsot.axis_stability` in Python).
@@ -155,18 +145,17 @@ pub fn axis_stability(
     #[wasm_bindgen(unchecked_param_type = "number")] spin: Number,
 ) -> Out<AxisStability> {
     let moments = triple("moments", &moments)?;
-    let s = an::axis_stability(moments, number("spin", &spin)?).map_err(Failure::from)?;
-    let rates: Vec<f64> = s.iter().map(|a| a.rate).collect();
-    finite("moments, spin", "rates", rates.clone())?;
+    let s = an::axis_stability(moments, number("spin", &spin)?)?;
     Ok(AxisStability {
         kinds: s.iter().map(|a| a.stability.as_str().to_string()).collect(),
-        rates,
+        rates: s.iter().map(|a| a.rate).collect(),
     })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::convert::refused;
 
     #[test]
     fn contact_point_is_on_the_ellipsoid_and_the_plane() {
@@ -196,31 +185,16 @@ mod tests {
     #[test]
     fn bad_input_names_the_argument() {
         let b = FreeRigidBody::new(vec![1.0, 2.0, 3.0], vec![0.3, 1.0, 0.2], vec![]).unwrap();
-        assert!(b
-            .contact_point(f64::INFINITY)
-            .unwrap_err()
-            .message
-            .starts_with("t"));
-        assert!(b
-            .contact_points(vec![0.0, f64::NAN])
-            .unwrap_err()
-            .message
-            .starts_with("times"));
-        assert!(b
-            .contact_polhode(1.0)
-            .unwrap_err()
-            .message
-            .starts_with("samples"));
+        refused(b.contact_point(f64::INFINITY), "t: must be finite");
+        refused(
+            b.contact_points(vec![0.0, f64::NAN]),
+            "times: must be finite",
+        );
+        refused(b.contact_polhode(1.0), "samples");
         let e = axis_stability(vec![1.0, 2.0, 5.0], 1.0).unwrap_err();
         assert_eq!(e.name, "InvalidInertiaError");
-        assert!(axis_stability(vec![1.0, 2.0], 1.0)
-            .unwrap_err()
-            .message
-            .starts_with("moments"));
-        assert!(axis_stability(vec![1.0, 2.0, 3.0], f64::NAN)
-            .unwrap_err()
-            .message
-            .starts_with("spin"));
+        refused(axis_stability(vec![1.0, 2.0], 1.0), "moments");
+        refused(axis_stability(vec![1.0, 2.0, 3.0], f64::NAN), "spin");
     }
 
     #[test]

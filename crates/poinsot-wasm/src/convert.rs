@@ -145,6 +145,11 @@ pub fn vec_out(v: &Vec3) -> Vec<f64> {
     vec![v.x, v.y, v.z]
 }
 
+/// The 4 components of the quaternion `q`, `[w, x, y, z]`.
+pub fn quat_out(q: &[f64; 4]) -> Vec<f64> {
+    q.to_vec()
+}
+
 /// The 9 components of `m`, row-major.
 pub fn mat_out(m: &Mat3) -> Vec<f64> {
     (0..3)
@@ -152,38 +157,59 @@ pub fn mat_out(m: &Mat3) -> Vec<f64> {
         .collect()
 }
 
-/// `values` unchanged if every one is finite; otherwise an error naming the call's `arguments`
-/// (`"t"`, `"height, latitude"`): the `quantity` they ask for is not a finite number — too large
-/// for double precision (a time of 1e308 s, a body of 1e308 kg), or outside the range where it
-/// can be computed. The core promises finite results for valid input where it can; this guard
-/// keeps a NaN or an infinity from reaching the page, and says which arguments to change.
-pub fn finite(arguments: &str, quantity: &str, values: Vec<f64>) -> Out<Vec<f64>> {
-    if values.iter().all(|v| v.is_finite()) {
-        Ok(values)
-    } else {
-        Err(not_finite(arguments, quantity))
-    }
+/// Getters that return the core's number of the same name unchanged: `getters!(Type { " doc"
+/// jsName rust_name; ... })` is one `#[wasm_bindgen] impl Type` block of
+/// `#[wasm_bindgen(getter, js_name = jsName)] pub fn rust_name(&self) -> f64 {
+/// self.inner.rust_name() }`, each with its doc lines (string literals, not `///`: wasm-bindgen
+/// writes a doc comment passed through `macro_rules!` into the TypeScript declarations as
+/// `r" ..."`). The core promises these numbers finite.
+macro_rules! getters {
+    ($ty:ident { $($($doc:literal)* $js:ident $name:ident;)* }) => {
+        #[wasm_bindgen::prelude::wasm_bindgen]
+        impl $ty {
+            $(
+                $(#[doc = $doc])*
+                #[wasm_bindgen(getter, js_name = $js)]
+                pub fn $name(&self) -> f64 {
+                    self.inner.$name()
+                }
+            )*
+        }
+    };
 }
+pub(crate) use getters;
 
-/// `value` if finite, otherwise the error of [`finite`].
-pub fn finite1(arguments: &str, quantity: &str, value: f64) -> Out<f64> {
-    if value.is_finite() {
-        Ok(value)
-    } else {
-        Err(not_finite(arguments, quantity))
-    }
+/// Methods of one time `t` (s, a JavaScript number, finite) that return the core's vector or
+/// quaternion at `t` as numbers: `at_time!(Type { " doc"
+/// jsName rust_name -> conversion; ... })` is one `#[wasm_bindgen] impl Type` block of
+/// `pub fn rust_name(&self, t) -> Out<Vec<f64>>`, `conversion(&self.inner.rust_name(t)?)`.
+macro_rules! at_time {
+    ($ty:ident { $($($doc:literal)* $js:ident $name:ident -> $out:path;)* }) => {
+        #[wasm_bindgen::prelude::wasm_bindgen]
+        impl $ty {
+            $(
+                $(#[doc = $doc])*
+                #[wasm_bindgen(js_name = $js)]
+                pub fn $name(
+                    &self,
+                    #[wasm_bindgen(unchecked_param_type = "number")] t: crate::args::Number,
+                ) -> Out<Vec<f64>> {
+                    Ok($out(&self.inner.$name(crate::free::time(&t)?)?))
+                }
+            )*
+        }
+    };
 }
+pub(crate) use at_time;
 
-/// The error of [`finite`]: `arguments` give a `quantity` that is not a finite number.
-pub fn not_finite(arguments: &str, quantity: &str) -> Failure {
-    Failure {
-        name: ErrorKind::InvalidArgument.class_name(),
-        message: format!(
-            "{arguments}: the result ({quantity}) is not a finite number for these values (too \
-             large for double precision, or outside the range where it can be computed); use \
-             smaller values"
-        ),
-    }
+/// Test helper: the failure of `result`, which must be an error whose message starts with
+/// `prefix` (the argument it names and the start of the condition).
+#[cfg(test)]
+#[track_caller]
+pub(crate) fn refused<T: std::fmt::Debug>(result: Out<T>, prefix: &str) -> Failure {
+    let e = result.unwrap_err();
+    assert!(e.message.starts_with(prefix), "{e}");
+    e
 }
 
 #[cfg(test)]
@@ -201,21 +227,13 @@ mod tests {
 
     #[test]
     fn wrong_lengths_name_the_argument() {
-        let e = vec3("omega0", &[1.0, 2.0]).unwrap_err();
-        assert_eq!(e.name, "PoinsotError");
-        assert!(
-            e.message.starts_with("omega0: must hold 3 numbers, got 2"),
-            "{}",
-            e.message
+        let e = refused(
+            vec3("omega0", &[1.0, 2.0]),
+            "omega0: must hold 3 numbers, got 2",
         );
-        assert!(mat3("R", &[0.0; 8])
-            .unwrap_err()
-            .message
-            .starts_with("R: must hold 9"));
-        assert!(quat("attitude0", &[1.0; 3])
-            .unwrap_err()
-            .message
-            .starts_with("attitude0: must hold 4"));
+        assert_eq!(e.name, "PoinsotError");
+        refused(mat3("R", &[0.0; 8]), "R: must hold 9");
+        refused(quat("attitude0", &[1.0; 3]), "attitude0: must hold 4");
     }
 
     #[test]
@@ -232,24 +250,5 @@ mod tests {
             Failure::from(Error::diverged("t", "x")).name,
             "IntegrationError"
         );
-    }
-
-    #[test]
-    fn non_finite_results_never_pass() {
-        let e = finite("t", "omega", vec![1.0, f64::NAN]).unwrap_err();
-        assert_eq!(e.name, "PoinsotError");
-        assert!(
-            e.message
-                .starts_with("t: the result (omega) is not a finite number for these values"),
-            "{}",
-            e.message
-        );
-        let e = finite1("omega, t", "energy", f64::INFINITY).unwrap_err();
-        assert!(
-            e.message.starts_with("omega, t: the result (energy)"),
-            "{}",
-            e.message
-        );
-        assert_eq!(finite1("omega", "energy", 2.0).unwrap(), 2.0);
     }
 }

@@ -3,7 +3,7 @@
 //! quaternions scalar-first `[w, x, y, z]` mapping body to space components.
 
 use crate::args::{number, numbers, triple, vector, Number, Numbers};
-use crate::convert::{finite, quat, vec_out, Out};
+use crate::convert::{at_time, getters, quat, quat_out, vec_out, Out};
 use poinsot::analytic as an;
 use wasm_bindgen::prelude::wasm_bindgen;
 
@@ -27,55 +27,10 @@ impl FreeSymmetricTop {
         let (i1, i3) = (number("i1", &i1)?, number("i3", &i3)?);
         let omega0 = vector("omega0", &omega0)?;
         let inner = an::FreeSymmetricTop::new(i1, i3, omega0, None)?;
-        // Every number the getters return must be finite (ω₀ = 1e300 overflows the energy).
-        let mut values = vec![
-            inner.precession_rate(),
-            inner.amplitude(),
-            inner.body_cone_angle(),
-            inner.space_cone_angle(),
-            inner.nutation_angle(),
-            inner.space_precession_rate(),
-            inner.energy()?,
-        ];
-        values.extend(vec_out(&inner.angular_momentum()?));
-        finite("i1, i3, omega0", "motion", values)?;
+        // Refused here, as the getters would refuse them: T and L beyond the doubles (ω₀ = 1e300).
+        inner.energy()?;
+        inner.angular_momentum()?;
         Ok(FreeSymmetricTop { inner })
-    }
-    /// The unit's Ω = (I₁ − I₃) ω₃ / I₁ (rad/s, 2.83): the body-frame precession rate of ω.
-    #[wasm_bindgen(getter, js_name = precessionRate)]
-    pub fn precession_rate(&self) -> f64 {
-        self.inner.precession_rate()
-    }
-    /// The amplitude A of the transverse components of ω (rad/s).
-    #[wasm_bindgen(getter)]
-    pub fn amplitude(&self) -> f64 {
-        self.inner.amplitude()
-    }
-    /// Half-angle (rad) of the body cone (ω about the symmetry axis).
-    #[wasm_bindgen(getter, js_name = bodyConeAngle)]
-    pub fn body_cone_angle(&self) -> f64 {
-        self.inner.body_cone_angle()
-    }
-    /// Half-angle (rad) of the space cone (ω about L).
-    #[wasm_bindgen(getter, js_name = spaceConeAngle)]
-    pub fn space_cone_angle(&self) -> f64 {
-        self.inner.space_cone_angle()
-    }
-    /// Angle (rad) between the symmetry axis and L.
-    #[wasm_bindgen(getter, js_name = nutationAngle)]
-    pub fn nutation_angle(&self) -> f64 {
-        self.inner.nutation_angle()
-    }
-    /// Rate (rad/s) at which the symmetry axis precesses about L in space.
-    #[wasm_bindgen(getter, js_name = spacePrecessionRate)]
-    pub fn space_precession_rate(&self) -> f64 {
-        self.inner.space_precession_rate()
-    }
-    /// The largest |t| (s) at which ω(t) and the attitude are computed: the time in which the
-    /// top turns through 2⁴² rad at its fastest rate (a later `t` is refused naming `t`).
-    #[wasm_bindgen(getter, js_name = maxTime)]
-    pub fn max_time(&self) -> f64 {
-        self.inner.max_time()
     }
     /// Kinetic energy (J), conserved.
     #[wasm_bindgen(getter)]
@@ -92,32 +47,34 @@ impl FreeSymmetricTop {
     pub fn shape(&self) -> String {
         self.inner.shape().as_str().to_string()
     }
-    /// Body angular velocity (rad/s) at time `t` (s).
-    pub fn omega(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
-    ) -> Out<Vec<f64>> {
-        let t = time(&t)?;
-        finite("t", "omega", vec_out(&self.inner.omega(t)?))
-    }
-    /// Attitude quaternion `[w, x, y, z]` at time `t` (s).
-    pub fn attitude(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
-    ) -> Out<Vec<f64>> {
-        let t = time(&t)?;
-        finite("t", "attitude", self.inner.attitude(t)?.to_vec())
-    }
-    /// The symmetry axis in space components at time `t` (s).
-    #[wasm_bindgen(js_name = symmetryAxis)]
-    pub fn symmetry_axis(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
-    ) -> Out<Vec<f64>> {
-        let t = time(&t)?;
-        finite("t", "axis", vec_out(&self.inner.symmetry_axis(t)?))
-    }
 }
+
+at_time!(FreeSymmetricTop {
+    " Body angular velocity (rad/s) at time `t` (s)."
+    omega omega -> vec_out;
+    " Attitude quaternion `[w, x, y, z]` at time `t` (s)."
+    attitude attitude -> quat_out;
+    " The symmetry axis in space components at time `t` (s)."
+    symmetryAxis symmetry_axis -> vec_out;
+});
+
+getters!(FreeSymmetricTop {
+    " The unit's Ω = (I₁ − I₃) ω₃ / I₁ (rad/s, 2.83): the body-frame precession rate of ω."
+    precessionRate precession_rate;
+    " The amplitude A of the transverse components of ω (rad/s)."
+    amplitude amplitude;
+    " Half-angle (rad) of the body cone (ω about the symmetry axis)."
+    bodyConeAngle body_cone_angle;
+    " Half-angle (rad) of the space cone (ω about L)."
+    spaceConeAngle space_cone_angle;
+    " Angle (rad) between the symmetry axis and L."
+    nutationAngle nutation_angle;
+    " Rate (rad/s) at which the symmetry axis precesses about L in space."
+    spacePrecessionRate space_precession_rate;
+    " The largest |t| (s) at which ω(t) and the attitude are computed: the time in which the"
+    " top turns through 2⁴² rad at its fastest rate (a later `t` is refused naming `t`)."
+    maxTime max_time;
+});
 
 /// The time argument `t` (s): a finite number.
 pub(crate) fn time(t: &Number) -> Out<f64> {
@@ -152,24 +109,11 @@ impl FreeRigidBody {
             Some(quat("attitude0", &attitude0)?)
         };
         let inner = an::FreeRigidBody::new(moments, omega0, q)?;
-        // Every number the getters return must be finite, but the period and the flip interval,
-        // which are Infinity on the separatrix (never NaN).
-        let mut values = vec![
-            inner.energy()?,
-            inner.parameter(),
-            inner.frequency()?,
-            inner.invariable_plane_distance(),
-        ];
-        values.extend(vec_out(&inner.angular_momentum()?));
-        values.extend(vec_out(&inner.invariable_plane_normal()));
-        values.extend([inner.period()?, inner.flip_interval()?].iter().map(|x| {
-            if x.is_nan() {
-                *x
-            } else {
-                0.0
-            }
-        }));
-        finite("moments, omega0, attitude0", "motion", values)?;
+        // Refused here, as the getters would refuse them: T, L, λ and the period beyond the doubles.
+        inner.energy()?;
+        inner.angular_momentum()?;
+        inner.frequency()?;
+        inner.period()?;
         Ok(FreeRigidBody { inner })
     }
     /// Kinetic energy (J), conserved.
@@ -187,65 +131,34 @@ impl FreeRigidBody {
     pub fn period(&self) -> Out<f64> {
         Ok(self.inner.period()?)
     }
-    /// The largest |t| (s) at which the state is computed: the time in which the motion turns
-    /// through 2⁴² rad at its fastest rate (a later `t` is refused naming `t`); `Infinity` when
-    /// the body never turns that far within the double range.
-    #[wasm_bindgen(getter, js_name = maxTime)]
-    pub fn max_time(&self) -> f64 {
-        self.inner.max_time()
-    }
     /// The regime of the motion (the core's name for it).
     #[wasm_bindgen(getter)]
     pub fn regime(&self) -> String {
         self.inner.regime().as_str().to_string()
-    }
-    /// Body angular velocity (rad/s) at time `t` (s).
-    pub fn omega(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
-    ) -> Out<Vec<f64>> {
-        let t = time(&t)?;
-        finite("t", "omega", vec_out(&self.inner.omega(t)?))
-    }
-    /// Attitude quaternion `[w, x, y, z]` at time `t` (s).
-    pub fn attitude(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
-    ) -> Out<Vec<f64>> {
-        let t = time(&t)?;
-        finite("t", "attitude", self.inner.attitude(t)?.to_vec())
     }
     /// Body ω (3 numbers) then attitude (4 numbers) at time `t` (s), in one call.
     pub fn state(
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
     ) -> Out<Vec<f64>> {
-        let t = time(&t)?;
-        let (w, q) = self.inner.state(t)?;
-        finite(
-            "t",
-            "state",
-            [w.x, w.y, w.z, q[0], q[1], q[2], q[3]].to_vec(),
-        )
-    }
-    /// Angular momentum in body components (kg·m²/s) at time `t` (s).
-    #[wasm_bindgen(js_name = angularMomentumBody)]
-    pub fn angular_momentum_body(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
-    ) -> Out<Vec<f64>> {
-        let t = time(&t)?;
-        finite(
-            "t",
-            "angular momentum",
-            vec_out(&self.inner.angular_momentum_body(t)?),
-        )
+        let (w, q) = self.inner.state(time(&t)?)?;
+        Ok(vec![w.x, w.y, w.z, q[0], q[1], q[2], q[3]])
     }
 }
+
+at_time!(FreeRigidBody {
+    " Body angular velocity (rad/s) at time `t` (s)."
+    omega omega -> vec_out;
+    " Attitude quaternion `[w, x, y, z]` at time `t` (s)."
+    attitude attitude -> quat_out;
+    " Angular momentum in body components (kg·m²/s) at time `t` (s)."
+    angularMomentumBody angular_momentum_body -> vec_out;
+});
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::convert::refused;
 
     #[test]
     fn symmetric_top_precession_rate_is_the_units_omega() {
@@ -261,12 +174,10 @@ mod tests {
         let s = b.state(7.3).unwrap();
         let t = 0.5 * (s[0] * s[0] + 2.0 * s[1] * s[1] + 3.0 * s[2] * s[2]);
         assert!((t / b.energy().unwrap() - 1.0).abs() < 1e-12);
-        assert!(b.omega(f64::NAN).unwrap_err().message.starts_with("t"));
-        assert!(
-            FreeRigidBody::new(vec![1.0, 2.0, 4.0], vec![1.0; 3], vec![])
-                .unwrap_err()
-                .message
-                .starts_with("moments")
+        refused(b.omega(f64::NAN), "t: must be finite");
+        refused(
+            FreeRigidBody::new(vec![1.0, 2.0, 4.0], vec![1.0; 3], vec![]),
+            "moments",
         );
     }
 }

@@ -11,10 +11,10 @@
 //! `"argument: condition"` text, or a real `TypeError` for an argument of the wrong JavaScript
 //! type. Arguments arrive as plain JavaScript values and are converted in [`args`] before any
 //! allocation or indexing: nothing is coerced (a string is not a number, `"no"` is not a flag,
-//! 2.5 is not a count), counts and arrays are checked against a memory budget. A result that is
-//! not finite where the contract promises a finite number is turned into an error naming the
-//! call's arguments rather than shown (the documented infinities: an infinite period on the
-//! separatrix, the pitch of a pure translation, ...).
+//! 2.5 is not a count), counts and arrays are checked against a memory budget. Every number
+//! returned is finite (but the documented infinities: an infinite period on the separatrix, the
+//! pitch of a pure translation, ...) because the core's functions promise it, naming the
+//! argument otherwise; the binding keeps no output guard of its own.
 //!
 //! A Rust panic or a failed allocation must never happen; on `wasm32-unknown-unknown` it would
 //! abort the instance (`RuntimeError: unreachable`), after [`console_error_panic_hook`] logged

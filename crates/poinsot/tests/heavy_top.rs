@@ -660,3 +660,52 @@ fn with_spin_gives_the_requested_omega3() {
     let e = HeavyTop::with_spin(1.0, 0.5, 1.0, 0.0, -1.0, 0.0, 0.0, 0.0, 1.0).unwrap_err();
     assert!(e.to_string().starts_with("theta"), "{e}");
 }
+
+/// The spin ω₃ = p_ψ/I₃ is a number the top returns: where it overflows although p_ψ and E do
+/// not (a subnormal I₃), the constructors refuse, naming the rate or the constant it comes from
+/// — the rule that every number returned is finite is the core's, not the front ends'.
+#[test]
+fn a_spin_beyond_the_doubles_is_refused_naming_its_cause() {
+    let fast = EulerState {
+        phi_dot: 1e308,
+        psi_dot: 1e308,
+        ..Default::default()
+    };
+    let e = HeavyTop::new(1.0, 1e-310, 0.0, fast).unwrap_err();
+    assert!(
+        e.to_string().starts_with("phi_dot: the top's spin omega3"),
+        "{e}"
+    );
+    let e = HeavyTop::from_constants(1.0, 5e-324, 0.0, 0.0, 1e-15, 1e300).unwrap_err();
+    assert!(
+        e.to_string().starts_with("p_psi: the top's spin omega3"),
+        "{e}"
+    );
+    // Just inside the range: accepted, and the spin is the finite p_psi / I3.
+    let top = HeavyTop::from_constants(1.0, 1e-300, 0.0, 0.0, 1e-15, 1e300).unwrap();
+    assert_eq!(top.omega3(), 1e-15 / 1e-300);
+}
+
+/// The corrected 2.120, p_ψ/(I₁ cos θ₀), can overflow where the exact fast rate q/(I₁ cos θ₀)
+/// and the printed p_ψ/(2 I₁ cos θ₀) do not (q ≈ 0.75 p_ψ here): refused naming `theta0`, as
+/// every other rate out of range, instead of returning an infinite `fast_approx`.
+#[test]
+fn steady_precession_refuses_an_infinite_fast_approximation() {
+    let theta0 = 1e-10f64.acos();
+    let e = steady_precession(1e-300, 1e-300, 6.56e305, theta0, 1.87e298).unwrap_err();
+    assert!(
+        e.to_string()
+            .starts_with("theta0: the fast precession rate"),
+        "{e}"
+    );
+    let s = steady_precession(1e-300, 1e-300, 6.56e305, theta0, 1.7e298).unwrap();
+    for r in [
+        s.slow,
+        s.fast,
+        s.fast_approx,
+        s.fast_approx_as_printed,
+        s.min_spin,
+    ] {
+        assert!(r.is_finite(), "{s:?}");
+    }
+}

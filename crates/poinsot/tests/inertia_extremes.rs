@@ -337,3 +337,30 @@ fn density_integrals_that_overflow_name_density() {
     assert!((r.body.mass() - 1e300).abs() <= 1e-12 * 1e300);
     assert!((r.body.inertia()[(0, 0)] - 1e300 / 6.0).abs() <= 1e-12 * 1e300);
 }
+
+/// A body reports its triangle margins (`I₂ + I₃ − I₁, ...`, up to twice the largest moment):
+/// where they would overflow although every moment is finite (a rod of 1.7e308 kg), the body is
+/// refused where it is made, naming the argument, instead of reporting an infinite margin.
+#[test]
+fn bodies_whose_triangle_margins_overflow_are_refused() {
+    let e = inertia::thin_rod(1.7e308, 3.4).unwrap_err();
+    assert!(e.argument == "mass" || e.argument == "length", "{e}");
+    let big = Mat3::from_diagonal(&Vec3::new(0.0, 1.5e308, 1.5e308));
+    let e = MassProperties::new(1.0, Vec3::zeros(), big).unwrap_err();
+    assert_eq!(e.argument, "inertia", "{e}");
+    // Just inside: the margins are finite.
+    let rod = inertia::thin_rod(0.8e308, 3.4).unwrap();
+    let margins = rod.principal(1e-9).triangle_margins();
+    assert!(margins.iter().all(|m| m.is_finite()), "{margins:?}");
+    let ok = MassProperties::new(1.0, Vec3::zeros(), big / 2.0).unwrap();
+    assert!(ok.principal(1e-9).triangle_margins()[0].is_finite());
+    // Margins that are finite although the sum I2 + I3 is not: computed without that sum.
+    let top = Mat3::from_diagonal(&Vec3::new(1.5e308, 1.0e308, 1.2e308));
+    let m = MassProperties::new(1.0, Vec3::zeros(), top)
+        .unwrap()
+        .principal(1e-9)
+        .triangle_margins();
+    for (x, want) in m.iter().zip([1.7e308, 1.3e308, 0.7e308]) {
+        assert!((x / want - 1.0).abs() < 1e-15, "{m:?}");
+    }
+}

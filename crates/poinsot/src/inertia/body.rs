@@ -14,7 +14,7 @@
 use crate::control;
 use crate::error::{check_finite, check_positive, Error, Result};
 use crate::inertia::scaling::{
-    check_overflow, check_range, exponent_of_max, ldexp, ldexp_mat, ldexp_vec, split,
+    check_margins, check_overflow, check_range, exponent_of_max, ldexp, ldexp_mat, ldexp_vec, split,
 };
 use crate::inertia::tensor::{self, Principal, TopKind};
 use crate::{Mat3, Vec3};
@@ -186,6 +186,7 @@ impl MassProperties {
             k,
             HINT,
         )?;
+        check_margins(blame, tensor::moments_of(&inertia), k, HINT)?;
         Ok(Self::from_parts(
             ldexp(mass, em),
             ldexp_vec(&com, er),

@@ -60,7 +60,8 @@ use crate::inertia::mesh_embedding::{
     probe_vertices, vertex_owners, Index, Points, UnionFind, UNUSED,
 };
 use crate::inertia::scaling::{
-    check_range, exponent, exponent_of_max, ldexp, ldexp_mat, ldexp_vec, magnitude, split,
+    check_margins, check_range, exponent, exponent_of_max, ldexp, ldexp_mat, ldexp_vec, magnitude,
+    split,
 };
 use crate::inertia::tensor;
 use crate::{Mat3, Vec3};
@@ -1007,6 +1008,7 @@ fn finish(whole: &Whole, density: f64) -> Result<MassProperties> {
         er + ki,
         HINT,
     )?;
+    check_margins(blame(ki), tensor::moments_of(&i), er + ki, HINT)?;
     let checked =
         tensor::check_inertia_scaled("inertia", &whole.inertia, whole.roundoff).map_err(|err| {
             Error::mesh(

@@ -115,6 +115,20 @@ pub(crate) fn check_overflow(
     ))
 }
 
+/// Checks the largest triangle margin `I3 + (I2 − I1)` (at most twice the largest moment) of a
+/// body's principal moments `moments · 2^k` (computed on scaled numbers) as [`check_range`]: a
+/// body reports its margins, so one whose margins would overflow is refused where it is made,
+/// naming `argument`, rather than one whose getters return infinity.
+pub(crate) fn check_margins(argument: &str, moments: [f64; 3], k: i32, hint: &str) -> Result<()> {
+    check_range(
+        argument,
+        "the largest triangle margin I3 + I2 - I1 (kg·m²)",
+        crate::inertia::tensor::largest_margin(moments),
+        k,
+        hint,
+    )
+}
+
 /// Checks a result `value · 2^k` (the largest magnitude of a quantity, computed on scaled
 /// numbers) against the range of normal doubles and names `argument` when it leaves it:
 /// beyond `f64::MAX` no finite answer exists; below `f64::MIN_POSITIVE` (but not zero) it

@@ -16,7 +16,7 @@
 
 use crate::error::{check_positive, Error, Result};
 use crate::inertia::body::MassProperties;
-use crate::inertia::scaling::{check_range, exponent, ldexp, split};
+use crate::inertia::scaling::{check_margins, check_range, exponent, ldexp, split};
 use crate::{Mat3, Vec3};
 
 /// What to do when the moments leave the range of doubles.
@@ -51,6 +51,7 @@ fn solid(
         k,
         HINT,
     )?;
+    check_margins(blame, d, k, HINT)?;
     Ok(MassProperties::from_parts(
         mass,
         com,

@@ -115,7 +115,8 @@ pub fn check_inertia_scaled(argument: &str, inertia: &Mat3, scale: f64) -> Resul
     // squares neither overflow (entries near 1e308) nor underflow (near 1e-308).
     let e = exponent(entries.max(f64::MIN_POSITIVE));
     let moments = sorted_eigenvalues(&ldexp_mat(&sym, -e)).map(|x| ldexp(x, e));
-    if !moments.iter().all(|m| m.is_finite()) {
+    // The triangle margins the body reports are finite too.
+    if !(moments.iter().all(|m| m.is_finite()) && largest_margin(moments).is_finite()) {
         return Err(Error::inertia(
             argument,
             "its principal moments are beyond the largest double (they overflow): rescale the units",
@@ -179,10 +180,31 @@ impl Principal {
     /// for a body, and a margin of zero means the mass lies in the plane ⟂ that axis (the
     /// perpendicular-axis theorem of a lamina: a thin disk or ring has `I1 + I2 − I3 = 0`). The
     /// last margin is the smallest.
+    /// Finite for every body the core makes (it refuses one whose largest margin overflows,
+    /// see [`largest_margin`]); near the top of the range the sums are reordered so that no
+    /// intermediate `I2 + I3` overflows where the margin does not.
     pub fn triangle_margins(&self) -> [f64; 3] {
         let [a, b, c] = self.moments;
-        [b + c - a, c + a - b, a + b - c]
+        let m = [b + c - a, c + a - b, a + b - c];
+        if m.iter().all(|x| x.is_finite()) {
+            return m;
+        }
+        [c + (b - a), c - (b - a), a - (c - b)]
     }
+}
+
+/// The largest triangle margin `I3 + (I2 − I1)` of the principal moments `moments` (any
+/// order; at most twice the largest): where it overflows, a body of these moments cannot report
+/// its margins, and the core refuses it.
+pub(crate) fn largest_margin(moments: [f64; 3]) -> f64 {
+    let mut m = moments;
+    m.sort_by(f64::total_cmp);
+    m[2] + (m[1] - m[0])
+}
+
+/// The principal moments of the symmetric tensor `inertia`, ascending.
+pub(crate) fn moments_of(inertia: &Mat3) -> [f64; 3] {
+    sorted_eigenvalues(&symmetrised(inertia))
 }
 
 /// Principal moments (ascending) and principal axes (columns of a proper rotation) of the

@@ -20,13 +20,7 @@ pub fn top(
         i1,
         i3,
         mgl,
-        EulerState {
-            theta,
-            theta_dot,
-            phi_dot,
-            psi_dot,
-            ..Default::default()
-        },
+        EulerState::with_rates(theta, theta_dot, phi_dot, psi_dot),
     )
     .unwrap()
 }

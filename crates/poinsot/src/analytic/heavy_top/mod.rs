@@ -231,6 +231,7 @@ impl HeavyTop {
         let energy = reduced_energy + ts.moment_to_si(0.5 * i3, omega3 * omega3, 2); // 2.105
         check_representable(&[
             ("p_psi", p_psi, largest),
+            ("spin omega3 = p_psi/I3", p_psi / i3, largest),
             ("p_phi", p_phi, largest),
             ("E", energy, largest),
             ("E'", reduced_energy, largest),
@@ -312,6 +313,7 @@ impl HeavyTop {
         check_representable(&[
             ("E' = E - p_psi^2/(2 I3)", reduced_energy, "energy"),
             ("p_psi/I1", si.a, "p_psi"),
+            ("spin omega3 = p_psi/I3", p_psi / i3, "p_psi"),
             ("p_phi/I1", si.b, "p_phi"),
             ("(p_phi - p_psi)/I1", si.d, culprit),
             ("(p_phi + p_psi)/I1", si.e, culprit),

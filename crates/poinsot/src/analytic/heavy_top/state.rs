@@ -48,6 +48,21 @@ pub struct EulerState {
     pub psi_dot: f64,
 }
 
+impl EulerState {
+    /// The state at the nutation angle `theta` (rad) with the rates `theta_dot`, `phi_dot`,
+    /// `psi_dot` (rad/s) and φ = ψ = 0: all the Lagrangian 2.102 and the constants 2.103–2.105
+    /// of a state depend on.
+    pub fn with_rates(theta: f64, theta_dot: f64, phi_dot: f64, psi_dot: f64) -> Self {
+        Self {
+            theta,
+            theta_dot,
+            phi_dot,
+            psi_dot,
+            ..Self::default()
+        }
+    }
+}
+
 /// The time unit in which a top's motion is computed: 1/σ with σ = 2ᵏ the power of two nearest
 /// its fastest rate (|θ̇|, |φ̇|, |ψ̇|, √(2mgl/I₁); for a top given by its constants, |p_ψ|/I₁,
 /// |p_φ|/I₁ and the square roots of the energies per I₁). In that unit every rate is at most ~1,

@@ -171,7 +171,8 @@ pub fn steady_precession(
             ),
         ));
     }
-    if !(out.fast.is_finite() && out.fast_approx_as_printed.is_finite()) {
+    // fast_approx = 2 × fast_approx_as_printed: both finite when it is.
+    if !(out.fast.is_finite() && out.fast_approx.is_finite()) {
         return Err(Error::invalid(
             "theta0",
             format!(
