@@ -16,7 +16,7 @@ from __future__ import annotations
 import html
 import re
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -149,6 +149,12 @@ def scalar(
     return Row(key, quantity, symbol, number(x), unit if x is not None else "", brief, label=label)
 
 
+def details(obj: Any, *rows: tuple[str, str, str, str]) -> list[Row]:
+    """Numbers shown in the HTML table only (not brief): for each row (key, quantity, symbol,
+    unit), :func:`scalar` of ``obj``'s attribute ``key``."""
+    return [scalar(k, q, s, getattr(obj, k), u, brief=False) for k, q, s, u in rows]
+
+
 def vec(key: str, quantity: str, symbol: str, v: Any, unit: str = "", *, brief: bool = True) -> Row:
     """A short vector, all of it."""
     return Row(key, quantity, symbol, vector(v), unit, brief)
@@ -161,19 +167,11 @@ def mat(
     return Row(key, quantity, symbol, matrix(m), unit, brief)
 
 
-def span(
-    key: str,
-    quantity: str,
-    symbol: str,
-    lo: Any,
-    hi: Any,
-    unit: str = "",
-    *,
-    brief: bool = True,
-    label: str | None = None,
-) -> Row:
-    """A range ``[lo, hi]``: ``label in [lo, hi] unit`` in the text repr."""
-    return Row(key, quantity, symbol, vector([lo, hi]), unit, brief, relation=" in ", label=label)
+def span(key: str, quantity: str, symbol: str, lo: Any, hi: Any, unit: str = "", **kw: Any) -> Row:
+    """A range ``[lo, hi]``: ``label in [lo, hi] unit`` in the text repr (``brief``, ``label``
+    as :func:`scalar`)."""
+    row = scalar(key, quantity, symbol, lo, unit, **kw)
+    return replace(row, value=vector([lo, hi]), unit=unit, relation=" in ")
 
 
 def samples(

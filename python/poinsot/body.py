@@ -39,6 +39,7 @@ import numpy as np
 from . import _core
 from . import _display as show
 from ._core import DEFAULTS as _DEFAULTS
+from ._props import core_property
 from ._validate import (
     FloatArray,
     as_callable,
@@ -684,21 +685,15 @@ class RigidBody(show.Displayed):
 
     # ---- attributes -----------------------------------------------------------------------
 
-    @property
-    def mass(self) -> float:
-        """Mass (kg)."""
-        return float(self._core.mass)
+    mass = core_property("mass", "Mass (kg).", float)
+    center_of_mass = core_property("center_of_mass", "Centre of mass (m), shape (3,).", np.asarray)
 
-    @property
-    def center_of_mass(self) -> FloatArray:
-        """Centre of mass (m), shape (3,)."""
-        return np.asarray(self._core.center_of_mass)
-
-    @property
-    def inertia(self) -> FloatArray:
+    inertia = core_property(
+        "inertia",
         """Inertia tensor about the centre of mass (kg·m², (3, 3)), products of inertia negated
-        (I_xy = −Σ m x y, eqs. 2.46–2.50), so that L = I·ω."""
-        return np.asarray(self._core.inertia)
+        (I_xy = −Σ m x y, eqs. 2.46–2.50), so that L = I·ω.""",
+        np.asarray,
+    )
 
     @property
     def principal_moments(self) -> FloatArray:

@@ -20,9 +20,9 @@ import stat
 import sys
 import time
 import warnings
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
-from typing import Any, NoReturn
+from typing import Any, NoReturn, cast
 
 import click
 import numpy as np
@@ -121,6 +121,22 @@ class FiniteFloat(click.ParamType):
 
 #: The type of every real-valued option.
 FINITE = FiniteFloat()
+
+
+def _number(
+    flag: str, *decls_help: str, call: str | None = None, **kwargs: Any
+) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
+    """A finite-number option: ``flag``, its other declarations (its parameter name) and its
+    help; with ``call``, the default (shown) the core's for that call's argument of the
+    option's name (``poinsot._core.DEFAULTS``); required unless it has a default. ``kwargs``
+    are click's (``nargs``, ``type`` for a choice)."""
+    *decls, help_ = decls_help
+    if call is not None:
+        name = decls[0] if decls else flag.lstrip("-").replace("-", "_")
+        table = cast("dict[str, dict[str, Any]]", _DEFAULTS)  # read by a name given here
+        kwargs.update(default=table[call][name], show_default=True)
+    kwargs.setdefault("type", FINITE)
+    return click.option(flag, *decls, required="default" not in kwargs, help=help_, **kwargs)
 
 
 class Refused(click.ClickException):
@@ -347,10 +363,10 @@ def render_progress(description: str) -> Iterator[Callable[[int, int], None]]:
 
 
 def _picture_options(
-    plot_help: str, animate_help: str | None = None
+    plot_help: str, animate_help: str | None = None, folder: bool = False
 ) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
-    """The options ``--plot PATH``, ``--animate PATH`` (when ``animate_help`` is given) and
-    ``--style`` of a computing command."""
+    """The options ``--plot PATH`` (a folder, ``plot_dir``, when ``folder``), ``--animate
+    PATH`` (when ``animate_help`` is given) and ``--style`` of a computing command."""
 
     def deco(f: Callable[..., Any]) -> Callable[..., Any]:
         f = click.option(
@@ -361,21 +377,15 @@ def _picture_options(
             help=f"Style of {'--plot and --animate' if animate_help else '--plot'}: paper (a "
             "page) or slides (a projector: larger text, thicker lines, 200 dpi).",
         )(f)
+        file = click.Path(dir_okay=False)
         if animate_help is not None:
-            f = click.option(
-                "--animate",
-                "animate_path",
-                type=click.Path(dir_okay=False),
-                default=None,
-                help=animate_help + " A .gif, or a .mp4 when ffmpeg is installed.",
-            )(f)
-        return click.option(
-            "--plot",
-            "plot_path",
-            type=click.Path(dir_okay=False),
-            default=None,
-            help=plot_help + " The suffix picks the format (.png, .pdf, .svg, ...).",
-        )(f)
+            more = " A .gif, or a .mp4 when ffmpeg is installed."
+            f = click.option("--animate", "animate_path", type=file, help=animate_help + more)(f)
+        if folder:
+            path = click.Path(file_okay=False)
+            return click.option("--plot", "plot_dir", type=path, help=plot_help)(f)
+        more = " The suffix picks the format (.png, .pdf, .svg, ...)."
+        return click.option("--plot", "plot_path", type=file, help=plot_help + more)(f)
 
     return deco
 
@@ -429,20 +439,96 @@ def _echo_saved(data: dict[str, Any]) -> None:
         click.echo(f"saved {p}")
 
 
+#: ``--json`` of the computing commands (read by :func:`_report`).
+_JSON = click.option(
+    "--json", "as_json", is_flag=True, help="Print one JSON document instead of a table."
+)
+
+
+def _keep_picture(
+    data: dict[str, Any], path: str | None, draw: str, /, *args: Any, **kw: Any
+) -> None:
+    """--plot: when ``path`` is given, saves the figure ``draw(*args, **kw)`` (``draw`` a
+    function of :mod:`poinsot.plots`, "module.function", imported only then) and lists
+    ``path`` in ``data["plots"]``."""
+    if path is not None:
+        _save_figure(_plotter(draw)(*args, **kw), path)
+        data.setdefault("plots", []).append(path)
+
+
+def _keep_animation(
+    data: dict[str, Any],
+    path: str | None,
+    draw: str,
+    rate: int,
+    what: str,
+    /,
+    *args: Any,
+    **kw: Any,
+) -> None:
+    """--animate: as :func:`_keep_picture`, the animation ``draw(*args, **kw)`` written at
+    ``rate`` frames a second under a progress bar that says ``what``."""
+    if path is not None:
+        _save_animation(_plotter(draw)(*args, **kw), path, rate, what)
+        data.setdefault("plots", []).append(path)
+
+
+def _plotter(name: str) -> Callable[..., Any]:
+    """The function "module.function" of :mod:`poinsot.plots` (matplotlib imported now)."""
+    import importlib
+
+    module, function = name.rsplit(".", 1)
+    return getattr(importlib.import_module(f"{__package__}.plots.{module}"), function)  # type: ignore[no-any-return]
+
+
+def _report(
+    data: dict[str, Any],
+    as_json: bool,
+    title: str,
+    columns: tuple[str, ...],
+    rows: Iterable[tuple[str, ...]],
+    notes: Iterable[str] = (),
+    lines: Iterable[str] = (),
+) -> None:
+    """A command's output: ``data`` as one JSON document (--json), or else a table (its
+    ``columns``: the first the quantity's name, the others right-aligned), the ``notes`` under
+    it (rich's text), ``lines`` as they are, and where the pictures went."""
+    if as_json:
+        emit_json(data)
+        return
+    from rich.console import Console
+    from rich.table import Table
+
+    table = Table(title=title)
+    table.add_column(columns[0])
+    for column in columns[1:]:
+        table.add_column(column, justify="right")
+    for row in rows:
+        table.add_row(*row)
+    console = Console()
+    console.print(table)
+    for note in notes:
+        console.print(note)
+    for line in lines:
+        click.echo(line)
+    _echo_saved(data)
+
+
 #: Samples of a Foucault run drawn by --plot and --animate, per half swing (between turning
 #: points), and at most in all: enough for a smooth track and a bob that does not jump.
 FOUCAULT_SAMPLES_PER_TURN = 24
 FOUCAULT_MAX_SAMPLES = 200_001
 
 
-def _save_figure(fig: Any, path: str) -> None:
-    """Saves a figure of --plot (at its style's dpi), a write failure refused naming --plot."""
+def _save_figure(fig: Any, path: str | Path, option: str = "--plot") -> None:
+    """Saves a figure of --plot (or ``option``; at its style's dpi), a write failure refused
+    naming the option."""
     from .plots._mpl import pyplot
 
     try:
         fig.savefig(path)
     except OSError as exc:
-        raise Refused(f"--plot: cannot write {path}: {exc.strerror or exc}") from exc
+        raise Refused(f"{option}: cannot write {path}: {exc.strerror or exc}") from exc
     finally:
         pyplot().close(fig)
 
@@ -516,35 +602,15 @@ def tour() -> None:
 
 @main.command()
 @click.argument("shape")
-@click.option("--mass", type=FINITE, default=None, help="Mass in kg (standard shapes; default 1).")
-@click.option(
-    "--radius",
-    type=FINITE,
-    default=None,
-    help="Radius in m (sphere, shell, cylinder, cone, disk, ring).",
-)
-@click.option("--height", type=FINITE, default=None, help="Height in m (cylinder, cone).")
-@click.option("--length", type=FINITE, default=None, help="Length in m (rod).")
-@click.option(
-    "--sides",
-    type=FINITE,
-    nargs=3,
-    default=None,
-    help="Side lengths a b c in m along x y z (cuboid).",
-)
-@click.option(
-    "--semi-axes",
-    "semi_axes",
-    type=FINITE,
-    nargs=3,
-    default=None,
-    help="Semi-axes a b c in m (ellipsoid).",
-)
-@click.option(
-    "--density", type=FINITE, default=None, help="Density in kg/m³ (mesh files; default 1)."
-)
+@_number("--mass", "Mass in kg (standard shapes; default 1).", default=None)
+@_number("--radius", "Radius in m (sphere, shell, cylinder, cone, disk, ring).", default=None)
+@_number("--height", "Height in m (cylinder, cone).", default=None)
+@_number("--length", "Length in m (rod).", default=None)
+@_number("--sides", "Side lengths a b c in m along x y z (cuboid).", nargs=3, default=None)
+@_number("--semi-axes", "semi_axes", "Semi-axes a b c in m (ellipsoid).", nargs=3, default=None)
+@_number("--density", "Density in kg/m³ (mesh files; default 1).", default=None)
 @_picture_options("Save a picture of the inertia ellipsoid and principal axes to this file.")
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
+@_JSON
 def inertia(
     shape: str,
     mass: float | None,
@@ -612,12 +678,7 @@ def inertia(
 
     data = {"source": source, **body.to_dict()}
     require_finite(data)
-    if plot_path is not None:
-        from .plots.inertia import plot_inertia_ellipsoid
-
-        _save_figure(plot_inertia_ellipsoid(body, name=name, style=style), plot_path)
-        data["plots"] = [plot_path]
-
+    _keep_picture(data, plot_path, "inertia.plot_inertia_ellipsoid", body, name=name, style=style)
     if as_json:
         emit_json(data)
         return
@@ -708,6 +769,18 @@ def _load_mesh(path: Path, density: float) -> Any:
             trimesh_log.handlers[:] = []
 
 
+def _picture_kinds(who: str) -> dict[str, str]:
+    """The file types matplotlib writes (suffix: description); refused, saying that ``who``
+    needs it, when matplotlib is not installed."""
+    try:
+        from matplotlib.backend_bases import FigureCanvasBase
+    except ImportError as exc:
+        raise Refused(
+            f"{who} needs matplotlib, which is not installed: pip install 'poinsot[plot]'"
+        ) from exc
+    return FigureCanvasBase.get_supported_filetypes()  # type: ignore[no-any-return]
+
+
 def _check_picture_path(plot_path: str) -> None:
     """--plot must name a file in an existing directory, with a suffix matplotlib can write."""
     target = Path(plot_path)
@@ -716,13 +789,7 @@ def _check_picture_path(plot_path: str) -> None:
         raise click.UsageError(f"--plot: no directory '{parent}' to save {target.name} into")
     suffix = target.suffix.lower().lstrip(".")
     if suffix:
-        try:
-            from matplotlib.backend_bases import FigureCanvasBase
-        except ImportError as exc:
-            raise Refused(
-                "--plot needs matplotlib, which is not installed: pip install 'poinsot[plot]'"
-            ) from exc
-        kinds = FigureCanvasBase.get_supported_filetypes()
+        kinds = _picture_kinds("--plot")
         if suffix not in kinds:
             raise click.UsageError(
                 f"--plot: matplotlib cannot write '.{suffix}' files; use one of "
@@ -764,13 +831,8 @@ def _angle_unit(degrees: bool) -> str:
 
 
 @main.command()
-@click.option("--height", type=FINITE, required=True, help="Drop height in m (> 0).")
-@click.option(
-    "--latitude",
-    type=FINITE,
-    required=True,
-    help="Latitude, north-positive (rad, or degrees with --degrees).",
-)
+@_number("--height", "Drop height in m (> 0).")
+@_number("--latitude", "Latitude, north-positive (rad, or degrees with --degrees).")
 @click.option("--degrees", is_flag=True, help="Read --latitude in degrees.")
 @click.option(
     "--solar-day",
@@ -778,18 +840,17 @@ def _angle_unit(degrees: bool) -> str:
     is_flag=True,
     help="Use the unit's rate 2π/86400 instead of the sidereal rate.",
 )
-@click.option(
+@_number(
     "--gravity",
+    "Uniform gravity (the unit's model) or g falling off with height.",
+    call="Earth.drop",
     type=click.Choice(["uniform", "inverse-square"]),
-    default=_DEFAULTS["Earth.drop"]["gravity"],
-    show_default=True,
-    help="Uniform gravity (the unit's model) or g falling off with height.",
 )
 @_picture_options(
     "Save a picture of the fall to this file: east and south displacement against height, "
     "beside 2.42 and the second-order south."
 )
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
+@_JSON
 def fall(
     height: float,
     latitude: float,
@@ -828,62 +889,37 @@ def fall(
         "second_order_south": res.second_order_south,
     }
     require_finite(data)
-    if plot_path is not None:
-        from .plots.earth import plot_trajectory
-
-        _save_figure(plot_trajectory(res, style=style), plot_path)
-        data["plots"] = [plot_path]
-    if as_json:
-        emit_json(data)
-        return
-    from rich.console import Console
-    from rich.table import Table
-
-    table = Table(
-        title=f"drop from {height:g} m at latitude {latitude:g}{_angle_unit(degrees)} "
-        f"(ω = {earth.rotation_rate:.7g} rad/s, g = {earth.g:g} m/s², {gravity} gravity)"
+    _keep_picture(data, plot_path, "earth.plot_trajectory", res, style=style)
+    _report(
+        data,
+        as_json,
+        f"drop from {height:g} m at latitude {latitude:g}{_angle_unit(degrees)} "
+        f"(ω = {earth.rotation_rate:.7g} rad/s, g = {earth.g:g} m/s², {gravity} gravity)",
+        ("quantity", "exact (rotating frame)", "closed form"),
+        [
+            (
+                "time of fall (s)",
+                f"{res.time:.9g}",
+                f"{earth.fall_time(height):.9g}  √(2h/g), 2.41",
+            ),
+            ("east (m)", f"{res.east:.6e}", f"{res.first_order_east:.6e}  eq. 2.42"),
+            ("south (m)", f"{-res.north:.6e}", f"{res.second_order_south:.6e}  ¾ω² sin2λ h²/g"),
+        ],
     )
-    table.add_column("quantity")
-    table.add_column("exact (rotating frame)", justify="right")
-    table.add_column("closed form", justify="right")
-    table.add_row(
-        "time of fall (s)", f"{data['time']:.9g}", f"{earth.fall_time(height):.9g}  √(2h/g), 2.41"
-    )
-    table.add_row("east (m)", f"{data['east']:.6e}", f"{res.first_order_east:.6e}  eq. 2.42")
-    table.add_row(
-        "south (m)", f"{-data['north']:.6e}", f"{res.second_order_south:.6e}  ¾ω² sin2λ h²/g"
-    )
-    Console().print(table)
-    _echo_saved(data)
 
 
 @main.command()
-@click.option("--speed", type=FINITE, required=True, help="Launch speed in m/s.")
-@click.option(
-    "--elevation",
-    type=FINITE,
-    required=True,
-    help="Elevation above the horizon (rad, or degrees with --degrees).",
+@_number("--speed", "Launch speed in m/s.")
+@_number("--elevation", "Elevation above the horizon (rad, or degrees with --degrees).")
+@_number(
+    "--azimuth", "Azimuth clockwise from north (0 north, 90° east).", default=0.0, show_default=True
 )
-@click.option(
-    "--azimuth",
-    type=FINITE,
-    default=0.0,
-    show_default=True,
-    help="Azimuth clockwise from north (0 north, 90° east).",
-)
-@click.option("--latitude", type=FINITE, required=True, help="Latitude, north-positive.")
-@click.option(
-    "--height",
-    type=FINITE,
-    default=_DEFAULTS["Earth.projectile"]["height"],
-    show_default=True,
-    help="Launch height in m.",
-)
+@_number("--latitude", "Latitude, north-positive.")
+@_number("--height", "Launch height in m.", call="Earth.projectile")
 @click.option("--degrees", is_flag=True, help="Read the angles in degrees.")
 @click.option("--solar-day", "solar_day", is_flag=True, help="Use the unit's rate 2π/86400.")
 @_picture_options("Save a picture of the flight (its track in east, north, up) to this file.")
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
+@_JSON
 def projectile(
     speed: float,
     elevation: float,
@@ -923,76 +959,44 @@ def projectile(
         "without_rotation": {k: getattr(still, k) for k in keys},
     }
     require_finite(data)
-    if plot_path is not None:
-        from .plots.earth import plot_trajectory
+    _keep_picture(data, plot_path, "earth.plot_trajectory", spin, style=style)
 
-        _save_figure(plot_trajectory(spin, style=style), plot_path)
-        data["plots"] = [plot_path]
-    if as_json:
-        emit_json(data)
-        return
-    from rich.console import Console
-    from rich.table import Table
-
-    table = Table(
-        title=f"{speed:g} m/s at elevation {elevation:g}{_angle_unit(degrees)}, azimuth "
-        f"{azimuth:g}{_angle_unit(degrees)}, latitude {latitude:g}{_angle_unit(degrees)}"
-    )
-    table.add_column("quantity")
-    table.add_column("rotating Earth", justify="right")
-    table.add_column("no rotation", justify="right")
-    table.add_column("difference", justify="right")
-    for k, label in (
-        ("time", "time of flight (s)"),
-        ("range", "range (m)"),
-        ("downrange", "downrange (m)"),
-        ("drift", "drift, right + (m)"),
-    ):
+    def row(k: str, label: str) -> tuple[str, ...]:
         a, b = getattr(spin, k), getattr(still, k)
         # each value computed from numbers of the size of its flight's time or range
         size = "time" if k == "time" else "range"
         sa, sb = getattr(spin, size), getattr(still, size)
-        table.add_row(
-            label,
-            at_precision(a, sa),
-            at_precision(b, sb),
-            at_precision(a - b, max(abs(sa), abs(sb)), "+.4g"),
-        )
-    Console().print(table)
-    _echo_saved(data)
+        diff = at_precision(a - b, max(abs(sa), abs(sb)), "+.4g")
+        return label, at_precision(a, sa), at_precision(b, sb), diff
+
+    _report(
+        data,
+        as_json,
+        f"{speed:g} m/s at elevation {elevation:g}{_angle_unit(degrees)}, azimuth "
+        f"{azimuth:g}{_angle_unit(degrees)}, latitude {latitude:g}{_angle_unit(degrees)}",
+        ("quantity", "rotating Earth", "no rotation", "difference"),
+        [
+            row("time", "time of flight (s)"),
+            row("range", "range (m)"),
+            row("downrange", "downrange (m)"),
+            row("drift", "drift, right + (m)"),
+        ],
+    )
 
 
 @main.command()
-@click.option("--latitude", type=FINITE, required=True, help="Latitude, north-positive.")
+@_number("--latitude", "Latitude, north-positive.")
 @click.option("--degrees", is_flag=True, help="Read --latitude in degrees.")
-@click.option(
-    "--length",
-    type=FINITE,
-    default=_DEFAULTS["Earth.foucault"]["length"],
-    show_default=True,
-    help="Pendulum length in m (the Panthéon's 67 m).",
-)
-@click.option(
-    "--amplitude",
-    type=FINITE,
-    default=_DEFAULTS["Earth.foucault"]["amplitude"],
-    show_default=True,
-    help="Release displacement in m.",
-)
-@click.option(
-    "--duration",
-    type=FINITE,
-    default=_DEFAULTS["Earth.foucault"]["duration"],
-    show_default=True,
-    help="Simulated time in s.",
-)
+@_number("--length", "Pendulum length in m (the Panthéon's 67 m).", call="Earth.foucault")
+@_number("--amplitude", "Release displacement in m.", call="Earth.foucault")
+@_number("--duration", "Simulated time in s.", call="Earth.foucault")
 @click.option("--solar-day", "solar_day", is_flag=True, help="Use the unit's rate 2π/86400.")
 @_picture_options(
     "Save the rosette to this file: the track seen from above, and the swing plane's angle "
     "at every turning point against time.",
     "Save an animation of the bob seen from above to this file (200 frames over the run).",
 )
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
+@_JSON
 def foucault(
     latitude: float,
     degrees: bool,
@@ -1046,8 +1050,6 @@ def foucault(
     }
     require_finite(data)
     if plot_path is not None or animate_path is not None:
-        from .plots.earth import animate_foucault, plot_foucault_rosette
-
         # The table needs only the measurement; a picture needs the track: the same run,
         # sampled FOUCAULT_SAMPLES_PER_TURN times between turning points.
         samples = min(
@@ -1062,39 +1064,39 @@ def foucault(
             samples=samples,
         )
         data["plots"] = []
-        if plot_path is not None:
-            _save_figure(plot_foucault_rosette(track, style=style), plot_path)
-            data["plots"].append(plot_path)
-        if animate_path is not None:
-            anim = animate_foucault(track, frames=200, fps=25, style=style)
-            _save_animation(anim, animate_path, 25, "animating the pendulum")
-            data["plots"].append(animate_path)
-    if as_json:
-        emit_json(data)
-        return
-    from rich.console import Console
-    from rich.table import Table
+        _keep_picture(data, plot_path, "earth.plot_foucault_rosette", track, style=style)
+        _keep_animation(
+            data,
+            animate_path,
+            "earth.animate_foucault",
+            25,
+            "animating the pendulum",
+            track,
+            frames=200,
+            fps=25,
+            style=style,
+        )
 
     def rate(value: float | None) -> str:
         return "—" if value is None else f"{value:.6e}"
 
-    table = Table(
-        title=f"Foucault pendulum, L = {length:g} m, latitude {latitude:g}{_angle_unit(degrees)}, "
-        f"{duration:g} s simulated"
+    _report(
+        data,
+        as_json,
+        f"Foucault pendulum, L = {length:g} m, latitude {latitude:g}{_angle_unit(degrees)}, "
+        f"{duration:g} s simulated",
+        ("quantity", "value"),
+        [
+            ("regime", run.regime),
+            ("swing-plane rate, simulated (rad/s)", rate(run.precession_rate)),
+            ("small-swing theory (rad/s)", rate(run.theory_rate)),
+            ("−ω sin λ (rad/s)", f"{run.expected_rate:.6e}"),
+            ("sense seen from above", run.sense),
+            ("one full turn (h)", f"{hours:.4g}"),
+            ("turning points used", str(len(run.turn_times))),
+        ],
+        [run.regime_note],
     )
-    table.add_column("quantity")
-    table.add_column("value", justify="right")
-    table.add_row("regime", run.regime)
-    table.add_row("swing-plane rate, simulated (rad/s)", rate(run.precession_rate))
-    table.add_row("small-swing theory (rad/s)", rate(run.theory_rate))
-    table.add_row("−ω sin λ (rad/s)", f"{run.expected_rate:.6e}")
-    table.add_row("sense seen from above", run.sense)
-    table.add_row("one full turn (h)", f"{hours:.4g}")
-    table.add_row("turning points used", str(len(run.turn_times)))
-    console = Console()
-    console.print(table)
-    console.print(run.regime_note)
-    _echo_saved(data)
 
 
 @main.command()
@@ -1104,19 +1106,14 @@ def foucault(
 @click.option(
     "--omega", nargs=3, type=FINITE, required=True, help="Body angular velocity at t = 0 (rad/s)."
 )
-@click.option(
-    "--duration", type=FINITE, default=10.0, show_default=True, help="Simulated time in s."
-)
-@click.option(
+@_number("--duration", "Simulated time in s.", default=10.0, show_default=True)
+@_number(
     "--method",
+    "Integrator (auto: the exact flow).",
+    call="simulate",
     type=click.Choice(["auto", "exact", "rk4", "dop853", "splitting2", "splitting4", "splitting6"]),
-    default=_DEFAULTS["simulate"]["method"],
-    show_default=True,
-    help="Integrator (auto: the exact flow).",
 )
-@click.option(
-    "--dt", type=FINITE, default=None, help="Step of rk4/splitting (s); default 1/1000 turn."
-)
+@_number("--dt", "Step of rk4/splitting (s); default 1/1000 turn.", default=None)
 @click.option(
     "--samples", type=int, default=201, show_default=True, help="Evenly spaced output times."
 )
@@ -1125,7 +1122,7 @@ def foucault(
     "Save an animation of the body in space to this file (its principal axes and inertia "
     "ellipsoid, L fixed, ω moving): 200 frames over --duration.",
 )
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
+@_JSON
 def free(
     moments: tuple[float, float, float],
     omega: tuple[float, float, float],
@@ -1211,135 +1208,62 @@ def free(
         "axis_stability": [s.stability for s in stab],
     }
     require_finite(data)
-    data.update(_free_pictures(exact, tr, duration, plot_path, animate_path, style))
-    if as_json:
-        emit_json(data)
-        return
-    from rich.console import Console
-    from rich.table import Table
-
-    table = Table(
-        title=f"free rigid body I = {moments}, ω₀ = {omega}, {duration:g} s by {tr.method}"
+    _keep_picture(data, plot_path, "free.plot_omega", tr, exact, style=style)
+    _keep_animation(
+        data,
+        animate_path,
+        "free.animate_free_body",
+        25,
+        "animating the body",
+        exact,
+        duration=duration,
+        frames=200,
+        fps=25,
+        style=style,
     )
-    table.add_column("quantity")
-    table.add_column("value", justify="right")
-    table.add_row("regime", exact.regime)
-    table.add_row("period of ω (s)", f"{exact.period:.10g}")
-    table.add_row("Jacobi parameter m", f"{exact.parameter:.10g}")
-    table.add_row(
-        "T (J) / |L| (kg·m²/s)", f"{exact.energy:.10g} / {data['angular_momentum_magnitude']:.10g}"
+    _report(
+        data,
+        as_json,
+        f"free rigid body I = {moments}, ω₀ = {omega}, {duration:g} s by {tr.method}",
+        ("quantity", "value"),
+        [
+            ("regime", exact.regime),
+            ("period of ω (s)", f"{exact.period:.10g}"),
+            ("Jacobi parameter m", f"{exact.parameter:.10g}"),
+            (
+                "T (J) / |L| (kg·m²/s)",
+                f"{exact.energy:.10g} / {data['angular_momentum_magnitude']:.10g}",
+            ),
+            ("stability of axes 1, 2, 3", ", ".join(data["axis_stability"])),
+            (
+                "max |ΔE/E| / max |Δ|L|/|L||",
+                f"{data['max_energy_error']:.2e} / {data['max_momentum_error']:.2e}",
+            ),
+            ("ω at the end (rad/s)", np.array2string(tr.omega[-1], precision=10)),
+            ("|ω − ω_exact| / |q − q_exact|", f"{data['omega_error']:.2e} / {q_err:.2e}"),
+            ("steps / wall time", f"{tr.steps} / {wall:.3g} s"),
+        ],
     )
-    table.add_row("stability of axes 1, 2, 3", ", ".join(data["axis_stability"]))
-    table.add_row(
-        "max |ΔE/E| / max |Δ|L|/|L||",
-        f"{data['max_energy_error']:.2e} / {data['max_momentum_error']:.2e}",
-    )
-    table.add_row("ω at the end (rad/s)", np.array2string(tr.omega[-1], precision=10))
-    table.add_row("|ω − ω_exact| / |q − q_exact|", f"{data['omega_error']:.2e} / {q_err:.2e}")
-    table.add_row("steps / wall time", f"{tr.steps} / {wall:.3g} s")
-    Console().print(table)
-    _echo_saved(data)
-
-
-def _free_pictures(
-    exact: Any,
-    tr: Any,
-    duration: float,
-    plot_path: str | None,
-    animate_path: str | None,
-    style: str,
-) -> dict[str, Any]:
-    """The pictures of `poinsot free`: ω(t) (--plot) and the body in space (--animate)."""
-    if plot_path is None and animate_path is None:
-        return {}
-    from .plots.free import animate_free_body, plot_omega
-
-    saved = []
-    if plot_path is not None:
-        _save_figure(plot_omega(tr, exact, style=style), plot_path)
-        saved.append(plot_path)
-    if animate_path is not None:
-        anim = animate_free_body(exact, duration=duration, frames=200, fps=25, style=style)
-        _save_animation(anim, animate_path, 25, "animating the body")
-        saved.append(animate_path)
-    return {"plots": saved}
 
 
 @main.command()
-@click.option(
-    "--I1",
-    "i1",
-    type=FINITE,
-    required=True,
-    help="Moment about a transverse axis through the pivot (kg·m²).",
-)
-@click.option(
-    "--I3", "i3", type=FINITE, required=True, help="Moment about the symmetry axis (kg·m², ≤ 2 I1)."
-)
-@click.option(
-    "--mgl",
-    type=FINITE,
-    required=True,
-    help="m g l: weight × pivot-to-centre-of-mass distance (N·m).",
-)
-@click.option(
-    "--theta",
-    type=FINITE,
-    required=True,
-    help="Initial nutation angle θ₀ from the upward vertical (rad, or degrees).",
-)
-@click.option(
-    "--phi-dot",
-    "phi_dot",
-    type=FINITE,
-    default=_DEFAULTS["HeavyTop.__init__"]["phi_dot"],
-    show_default=True,
-    help="Initial precession rate φ̇₀ (rad/s).",
-)
-@click.option(
-    "--psi-dot",
-    "psi_dot",
-    type=FINITE,
-    default=_DEFAULTS["HeavyTop.__init__"]["psi_dot"],
-    show_default=True,
-    help="Initial spin rate ψ̇₀ (rad/s).",
-)
-@click.option(
-    "--theta-dot",
-    "theta_dot",
-    type=FINITE,
-    default=_DEFAULTS["HeavyTop.__init__"]["theta_dot"],
-    show_default=True,
-    help="Initial nutation rate θ̇₀ (rad/s).",
-)
+@_number("--I1", "i1", "Moment about a transverse axis through the pivot (kg·m²).")
+@_number("--I3", "i3", "Moment about the symmetry axis (kg·m², ≤ 2 I1).")
+@_number("--mgl", "m g l: weight × pivot-to-centre-of-mass distance (N·m).")
+@_number("--theta", "Initial nutation angle θ₀ from the upward vertical (rad, or degrees).")
+@_number("--phi-dot", "phi_dot", "Initial precession rate φ̇₀ (rad/s).", call="HeavyTop.__init__")
+@_number("--psi-dot", "psi_dot", "Initial spin rate ψ̇₀ (rad/s).", call="HeavyTop.__init__")
+@_number("--theta-dot", "theta_dot", "Initial nutation rate θ̇₀ (rad/s).", call="HeavyTop.__init__")
 @click.option(
     "--degrees", is_flag=True, help="Read θ₀ in degrees and the rates in degrees per second."
 )
-@click.option(
-    "--plot",
-    "plot_dir",
-    type=click.Path(file_okay=False),
-    default=None,
-    help="Save pictures (V(θ), the axis' locus, θ/φ̇/ψ̇ against t, steady rates against spin) "
+@_picture_options(
+    "Save pictures (V(θ), the axis' locus, θ/φ̇/ψ̇ against t, steady rates against spin) "
     "and an animation (top.gif) into this folder.",
+    "Save an animation of the top (two nutation periods) to this file.",
+    folder=True,
 )
-@click.option(
-    "--animate",
-    "animate_path",
-    type=click.Path(dir_okay=False),
-    default=None,
-    help="Save an animation of the top (two nutation periods) to this file: a .gif, or a .mp4 "
-    "when ffmpeg is installed.",
-)
-@click.option(
-    "--style",
-    type=click.Choice(list(STYLES)),
-    default="paper",
-    show_default=True,
-    help="Style of --plot and --animate: paper (a page) or slides (a projector: larger text, "
-    "thicker lines, 200 dpi).",
-)
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON document instead of a table.")
+@_JSON
 def top(
     i1: float,
     i3: float,
@@ -1421,27 +1345,9 @@ def top(
             saved = [str(p) for p in paths]
         except OSError as exc:
             raise Refused(f"--plot: cannot write into {plot_dir}: {exc.strerror or exc}") from exc
-    if animate_path is not None:
-        from .plots.top import animate_top
-
-        anim = animate_top(t, style=style)
-        _save_animation(anim, animate_path, 24, "animating the top")
-        saved.append(animate_path)
     if saved:
         data["plots"] = saved
-    if as_json:
-        emit_json(data)
-        return
-    from rich.console import Console
-    from rich.table import Table
-
-    table = Table(
-        title=f"heavy top: I₁ = {i1:g} kg·m², I₃ = {i3:g} kg·m², m g l = {mgl:g} N·m, "
-        f"θ₀ = {theta0:.6g} rad"
-    )
-    table.add_column("quantity")
-    table.add_column("value", justify="right")
-    table.add_column("unit's eq.", justify="right")
+    _keep_animation(data, animate_path, "top.animate_top", 24, "animating the top", t, style=style)
     rows = [
         ("p_ψ = I₃ω₃ (kg·m²/s)", f"{t.p_psi:.10g}", "2.103"),
         ("p_φ = L_Z (kg·m²/s)", f"{t.p_phi:.10g}", "2.104"),
@@ -1489,14 +1395,18 @@ def top(
             "stable" if t.is_sleeping_stable else "unstable",
         ),
     ]
-    for row in rows:
-        table.add_row(*row)
-    Console().print(table)
-    click.echo(
-        "* 2.120 corrected: the unit prints p_ψ/(2 I₁ cos θ₀), a factor 2 too small (see docs/heavy_top.md)."
+    _report(
+        data,
+        as_json,
+        f"heavy top: I₁ = {i1:g} kg·m², I₃ = {i3:g} kg·m², m g l = {mgl:g} N·m, "
+        f"θ₀ = {theta0:.6g} rad",
+        ("quantity", "value", "unit's eq."),
+        rows,
+        lines=[
+            "* 2.120 corrected: the unit prints p_ψ/(2 I₁ cos θ₀), a factor 2 too small (see "
+            "docs/heavy_top.md)."
+        ],
     )
-    for p in saved:
-        click.echo(f"saved {p}")
 
 
 @main.command()
@@ -1595,15 +1505,7 @@ def figure(number: str | None, style: str, out_path: str | None, list_all: bool)
         out_path or (f"fig-{number}.png" if style == "paper" else f"fig-{number}-{style}.png")
     )
     _check_figure_out(path)
-    fig = unit_figure(number, style=style)
-    try:
-        fig.savefig(path)
-    except OSError as exc:
-        raise Refused(f"--out: cannot write {path}: {exc.strerror or exc}") from exc
-    finally:
-        from .plots._mpl import pyplot
-
-        pyplot().close(fig)
+    _save_figure(unit_figure(number, style=style), path, "--out")
     click.echo(f"Fig. {number}, {UNIT_FIGURES[number].caption}: saved to {path}")
 
 
@@ -1614,13 +1516,7 @@ def _check_figure_out(path: Path) -> None:
     if path.is_dir():
         raise click.UsageError(f"--out: '{path}' is a folder; give a file name")
     suffix = path.suffix.lower().lstrip(".")
-    try:
-        from matplotlib.backend_bases import FigureCanvasBase
-    except ImportError as exc:
-        raise Refused(
-            "poinsot figure needs matplotlib, which is not installed: pip install 'poinsot[plot]'"
-        ) from exc
-    kinds = FigureCanvasBase.get_supported_filetypes()
+    kinds = _picture_kinds("poinsot figure")
     if suffix not in kinds:
         raise click.UsageError(
             f"--out: matplotlib cannot write {'.' + suffix if suffix else 'a file without a suffix'}"

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any, Union
+from typing import Any, ClassVar, Union
 
 import numpy as np
 
@@ -59,29 +59,29 @@ METHODS = ("auto", "exact", "rk4", "dop853", "splitting2", "splitting4", "splitt
 
 
 @dataclass(frozen=True)
-class BodyTorque:
+class _ConstantTorque:
+    """A constant torque (N·m, (3,)) in the components of the frame ``_FRAME``."""
+
+    torque: Any
+    _FRAME: ClassVar[str]
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "torque", as_vector3(self.torque, "torque"))
+
+    def _spec(self, body: Any) -> tuple[str, FloatArray, float]:
+        return self._FRAME, as_vector3(self.torque, "torque"), 0.0
+
+
+class BodyTorque(_ConstantTorque):
     """A constant torque in body components (N·m, (3,)), like a thruster fixed to the body."""
 
-    torque: Any
-
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "torque", as_vector3(self.torque, "torque"))
-
-    def _spec(self, body: Any) -> tuple[str, FloatArray, float]:
-        return "body", as_vector3(self.torque, "torque"), 0.0
+    _FRAME = "body"
 
 
-@dataclass(frozen=True)
-class SpaceTorque:
+class SpaceTorque(_ConstantTorque):
     """A constant torque in space components (N·m, (3,)): N_body = Rᵀ N_space."""
 
-    torque: Any
-
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "torque", as_vector3(self.torque, "torque"))
-
-    def _spec(self, body: Any) -> tuple[str, FloatArray, float]:
-        return "space", as_vector3(self.torque, "torque"), 0.0
+    _FRAME = "space"
 
 
 @dataclass(frozen=True)
@@ -189,9 +189,10 @@ class Trajectory(show.Displayed):
             show.span("t", "time", "t", self.t[0], self.t[-1], "s"),
             show.words("method", "method", self.method),
             show.scalar("steps", "steps taken", "", self.steps),
-            show.scalar("step", "fixed step", "Δt", self.step, "s", brief=False),
-            show.scalar(
-                "torque_evaluations", "torque evaluations", "", self.torque_evaluations, brief=False
+            *show.details(
+                self,
+                ("step", "fixed step", "Δt", "s"),
+                ("torque_evaluations", "torque evaluations", "", ""),
             ),
             show.samples("omega", "angular velocity, body axes", "ω", self.omega, "rad/s"),
             show.samples("attitude", "attitude [w, x, y, z], body → space", "q", self.attitude),

@@ -16,6 +16,7 @@ import numpy as np
 
 from . import _core
 from . import _display as show
+from ._props import core_property
 from ._validate import (
     FloatArray,
     as_angle,
@@ -337,10 +338,20 @@ def _fall_model(
         as_choice(gravity, "gravity", _GRAVITY),
         as_flag(rotation, "rotation"),
         as_flag(centrifugal, "centrifugal"),
-        as_scalar(rtol, "rtol"),
-        as_scalar(atol, "atol"),
-        as_count(max_steps, "max_steps", 1),
+        *_tolerances(rtol, atol, max_steps),
     )
+
+
+def _tolerances(rtol: Any, atol: Any, max_steps: Any) -> tuple[float, float, int]:
+    """An integration's tolerances and step limit (≥ 1), each checked naming its keyword."""
+    return as_scalar(rtol, "rtol"), as_scalar(atol, "atol"), as_count(max_steps, "max_steps", 1)
+
+
+def _run_settings(
+    samples: Any, rtol: Any, atol: Any, max_steps: Any
+) -> tuple[int, float, float, int]:
+    """A run's sample count (≥ 2), then :func:`_tolerances`."""
+    return (as_count(samples, "samples", 2), *_tolerances(rtol, atol, max_steps))
 
 
 class Earth:
@@ -392,20 +403,9 @@ class Earth:
         """The unit's Earth, turning once per solar day: ω = 2π/86400 = 7.2722e-5 rad/s."""
         return cls(SOLAR_DAY_RATE, radius, g)
 
-    @property
-    def rotation_rate(self) -> float:
-        """ω (rad/s)."""
-        return self._core.rotation_rate
-
-    @property
-    def radius(self) -> float:
-        """R (m)."""
-        return self._core.radius
-
-    @property
-    def g(self) -> float:
-        """g (m/s²)."""
-        return self._core.g
+    rotation_rate = core_property("rotation_rate", "ω (rad/s).")
+    radius = core_property("radius", "R (m).")
+    g = core_property("g", "g (m/s²).")
 
     def __repr__(self) -> str:
         c = self._core
@@ -662,10 +662,8 @@ class Earth:
         lat = as_angle(latitude, "latitude", degrees)
         az = as_angle(azimuth, "azimuth", degrees)
         dur = as_scalar(duration, "duration")
-        n = as_count(samples, "samples", 2)
+        settings = _run_settings(samples, rtol, atol, max_steps)
         progress = as_flag(progress, "progress")
-        steps = as_count(max_steps, "max_steps", 1)
-        tols = as_scalar(rtol, "rtol"), as_scalar(atol, "atol")
         length = as_scalar(length, "length")
         amp = as_scalar(amplitude, "amplitude")
         # The whole run is the core's: release, sample grid, integration, measurement; with a
@@ -682,7 +680,7 @@ class Earth:
                 bar.update(task, completed=fraction)
 
         try:
-            r = self._core.foucault_swing(lat, length, amp, az, dur, n, *tols, steps, report)
+            r = self._core.foucault_swing(lat, length, amp, az, dur, *settings, report)
         finally:
             if bar is not None:
                 bar.stop()
@@ -716,15 +714,8 @@ class Earth:
         if v.shape != (2,):
             raise PoinsotError(f"velocity: must have shape (2,) [v_east, v_north], got {v.shape}")
         dur = None if duration is None else as_scalar(duration, "duration")
-        r = self._core.inertial_swing(
-            lat,
-            np.ascontiguousarray(v),
-            dur,
-            as_count(samples, "samples", 2),
-            as_scalar(rtol, "rtol"),
-            as_scalar(atol, "atol"),
-            as_count(max_steps, "max_steps", 1),
-        )
+        settings = _run_settings(samples, rtol, atol, max_steps)
+        r = self._core.inertial_swing(lat, np.ascontiguousarray(v), dur, *settings)
         return _result(InertialOscillation, r)
 
     def flow_into_low(
@@ -763,9 +754,6 @@ class Earth:
             as_scalar(pull, "pull"),
             as_scalar(friction, "friction"),
             as_scalar(duration, "duration"),
-            as_count(samples, "samples", 2),
-            as_scalar(rtol, "rtol"),
-            as_scalar(atol, "atol"),
-            as_count(max_steps, "max_steps", 1),
+            *_run_settings(samples, rtol, atol, max_steps),
         )
         return _result(LowFlow, r)

@@ -22,6 +22,7 @@ from typing import Any, Union
 import numpy as np
 
 from . import _core
+from ._props import core_property
 from ._validate import (
     FloatArray,
     as_count,
@@ -133,6 +134,12 @@ class FrameTransform:
     acceleration_terms: dict[str, FloatArray] = field(repr=False)
 
 
+def _state_property(start: int, doc: str) -> Any:
+    """A read-only vector of :class:`MovingFrame`: its state's three numbers from ``start``
+    (a copy), documented by ``doc``."""
+    return property(lambda self: self._state[start : start + 3].copy(), doc=doc)
+
+
 class MovingFrame:
     """The state of a moving frame at one instant, relative to the fixed (inertial) frame.
 
@@ -198,30 +205,11 @@ class MovingFrame:
         _core.frame_to_fixed(self._state, self._attitude, empty, empty, empty)
 
     # -- the state ------------------------------------------------------------------------
-    @property
-    def origin(self) -> FloatArray:
-        """R (m), shape (3,)."""
-        return self._state[0:3].copy()
-
-    @property
-    def velocity(self) -> FloatArray:
-        """Ṙ (m/s), shape (3,)."""
-        return self._state[3:6].copy()
-
-    @property
-    def acceleration(self) -> FloatArray:
-        """R̈ (m/s²), shape (3,)."""
-        return self._state[6:9].copy()
-
-    @property
-    def angular_velocity(self) -> FloatArray:
-        """ω (rad/s), shape (3,), fixed components."""
-        return self._state[9:12].copy()
-
-    @property
-    def angular_acceleration(self) -> FloatArray:
-        """ω̇ (rad/s²), shape (3,), fixed components."""
-        return self._state[12:15].copy()
+    origin = _state_property(0, "R (m), shape (3,).")
+    velocity = _state_property(3, "Ṙ (m/s), shape (3,).")
+    acceleration = _state_property(6, "R̈ (m/s²), shape (3,).")
+    angular_velocity = _state_property(9, "ω (rad/s), shape (3,), fixed components.")
+    angular_acceleration = _state_property(12, "ω̇ (rad/s²), shape (3,), fixed components.")
 
     @property
     def attitude(self) -> FloatArray:
@@ -262,18 +250,8 @@ class MovingFrame:
             Fixed-frame position, velocity, acceleration ``(..., 3)`` and the terms
             ``"relative"``, ``"origin"``, ``"coriolis"``, ``"centripetal"``, ``"euler"``.
         """
-        (r, v, a), lead = _broadcast(
-            [(position, "position"), (velocity, "velocity"), (acceleration, "acceleration")]
-        )
-        out = _core.frame_to_fixed(self._state, self._attitude, r, v, a)
         names = ("relative", "origin", "coriolis", "centripetal", "euler")
-        shape = lead + (3,)
-        return FrameTransform(
-            out[0].reshape(shape),
-            out[1].reshape(shape),
-            out[2].reshape(shape),
-            {n: x.reshape(shape) for n, x in zip(names, out[3:])},
-        )
+        return self._transform(_core.frame_to_fixed, names, position, velocity, acceleration)
 
     def to_moving(
         self,
@@ -297,18 +275,21 @@ class MovingFrame:
             Moving-frame position, velocity, acceleration in moving components and the terms
             ``"inertial"``, ``"translational"``, ``"coriolis"``, ``"centrifugal"``, ``"euler"``.
         """
+        names = ("inertial", "translational", "coriolis", "centrifugal", "euler")
+        return self._transform(_core.frame_to_moving, names, position, velocity, acceleration)
+
+    def _transform(
+        self, core: Any, names: tuple[str, ...], position: Any, velocity: Any, acceleration: Any
+    ) -> FrameTransform:
+        """A particle's position, velocity and acceleration (broadcast together, each checked
+        naming it) carried by the core's ``core`` transform; its terms named ``names``."""
         (r, v, a), lead = _broadcast(
             [(position, "position"), (velocity, "velocity"), (acceleration, "acceleration")]
         )
-        out = _core.frame_to_moving(self._state, self._attitude, r, v, a)
-        names = ("inertial", "translational", "coriolis", "centrifugal", "euler")
+        out = core(self._state, self._attitude, r, v, a)
         shape = lead + (3,)
-        return FrameTransform(
-            out[0].reshape(shape),
-            out[1].reshape(shape),
-            out[2].reshape(shape),
-            {n: x.reshape(shape) for n, x in zip(names, out[3:])},
-        )
+        x, xd, xdd = (out[i].reshape(shape) for i in range(3))
+        return FrameTransform(x, xd, xdd, {n: t.reshape(shape) for n, t in zip(names, out[3:])})
 
     def fictitious_forces(self, mass: Any, position: Any, velocity: Any) -> dict[str, FloatArray]:
         """The fictitious forces on a particle of ``mass`` (kg, > 0) at ``position`` (m) moving
@@ -610,15 +591,8 @@ class SpringParticle:
     def __reduce__(self) -> tuple[Any, ...]:  # pickling and copying: the constructor again
         return (SpringParticle, (self.mass, self.stiffness))
 
-    @property
-    def mass(self) -> float:
-        """m (kg)."""
-        return self._core.mass
-
-    @property
-    def stiffness(self) -> float:
-        """k (N/m)."""
-        return self._core.stiffness
+    mass = core_property("mass", "m (kg).")
+    stiffness = core_property("stiffness", "k (N/m).")
 
     def force(self, position: Any) -> FloatArray:
         """F = −k r (N) at ``position`` r (m), shape (..., 3), in the components of ``position``."""

@@ -25,6 +25,7 @@ import numpy as np
 
 from . import _core
 from . import _display as show
+from ._props import core_property
 from ._validate import (
     FloatArray,
     as_callable,
@@ -63,6 +64,14 @@ def _quat(value: Any, name: str) -> FloatArray | None:
 def _times(t: Any) -> tuple[FloatArray, tuple[int, ...]]:
     arr = as_float_array(t, "t")
     return np.ascontiguousarray(arr.reshape(-1)), arr.shape
+
+
+#: ``omega0`` of both free bodies.
+_OMEGA0 = core_property(
+    "omega0",
+    "ω at t = 0 in body components, as given (rad/s, shape (3,); a new array).",
+    np.asarray,
+)
 
 
 class FreeSymmetricTop(show.Displayed):
@@ -119,10 +128,7 @@ class FreeSymmetricTop(show.Displayed):
     def __reduce__(self) -> tuple[Any, ...]:  # pickling and copying: the constructor again
         return (FreeSymmetricTop, (self.I1, self.I3, self.omega0, self._attitude0))
 
-    @property
-    def omega0(self) -> FloatArray:
-        """ω at t = 0 in body components, as given (rad/s, shape (3,); a new array)."""
-        return np.asarray(self._core.omega0)
+    omega0 = _OMEGA0
 
     def _rows(self) -> list[show.Row]:
         return [
@@ -138,136 +144,89 @@ class FreeSymmetricTop(show.Displayed):
                 "rad/s",
                 label="Ω",
             ),
-            show.scalar("omega3", "spin, constant (2.80)", "ω₃", self.omega3, "rad/s", brief=False),
-            show.scalar(
-                "amplitude", "amplitude of ω₁, ω₂ (2.88)", "A", self.amplitude, "rad/s", brief=False
-            ),
-            show.scalar(
-                "phase", "phase of ω₁ = A sin(Ωt + θ₀) (2.85)", "θ₀", self.phase, "rad", brief=False
-            ),
-            show.scalar(
-                "omega_magnitude",
-                "|ω|, constant (2.89)",
-                "|ω|",
-                self.omega_magnitude,
-                "rad/s",
-                brief=False,
-            ),
-            show.scalar(
-                "body_cone_angle",
-                "body cone half-angle (2.90)",
-                "α_b",
-                self.body_cone_angle,
-                "rad",
-                brief=False,
-            ),
-            show.scalar(
-                "space_cone_angle",
-                "space cone half-angle (2.97)",
-                "α_s",
-                self.space_cone_angle,
-                "rad",
-                brief=False,
-            ),
-            show.scalar("energy", "kinetic energy (2.91)", "T", self.energy, "J", brief=False),
-            show.scalar(
-                "angular_momentum_magnitude",
-                "|L| (2.93)",
-                "|L|",
-                self.angular_momentum_magnitude,
-                "kg·m²/s",
-                brief=False,
-            ),
-            show.scalar(
-                "nutation_angle",
-                "angle between L and the symmetry axis",
-                "θ",
-                self.nutation_angle,
-                "rad",
-                brief=False,
-            ),
-            show.scalar(
-                "space_precession_rate",
-                "rate of the axis about L",
-                "|L|/I₁",
-                self.space_precession_rate,
-                "rad/s",
-                brief=False,
+            *show.details(
+                self,
+                ("omega3", "spin, constant (2.80)", "ω₃", "rad/s"),
+                ("amplitude", "amplitude of ω₁, ω₂ (2.88)", "A", "rad/s"),
+                ("phase", "phase of ω₁ = A sin(Ωt + θ₀) (2.85)", "θ₀", "rad"),
+                ("omega_magnitude", "|ω|, constant (2.89)", "|ω|", "rad/s"),
+                ("body_cone_angle", "body cone half-angle (2.90)", "α_b", "rad"),
+                ("space_cone_angle", "space cone half-angle (2.97)", "α_s", "rad"),
+                ("energy", "kinetic energy (2.91)", "T", "J"),
+                ("angular_momentum_magnitude", "|L| (2.93)", "|L|", "kg·m²/s"),
+                ("nutation_angle", "angle between L and the symmetry axis", "θ", "rad"),
+                ("space_precession_rate", "rate of the axis about L", "|L|/I₁", "rad/s"),
             ),
         ]
 
-    @property
-    def precession_rate(self) -> float:
-        """Ω = (I₁ − I₃) ω₃ / I₁ (2.83), rad/s."""
-        return float(self._core.precession_rate)
+    precession_rate = core_property(
+        "precession_rate",
+        "Ω = (I₁ − I₃) ω₃ / I₁ (2.83), rad/s.",
+        float,
+    )
 
-    @property
-    def amplitude(self) -> float:
-        """A = (ω₁² + ω₂²)^½ (2.88), rad/s."""
-        return float(self._core.amplitude)
+    amplitude = core_property("amplitude", "A = (ω₁² + ω₂²)^½ (2.88), rad/s.", float)
+    phase = core_property("phase", "θ₀ of ω₁ = A sin(Ωt + θ₀) (2.85), rad.", float)
+    omega3 = core_property("omega3", "ω₃ (2.80), rad/s.", float)
 
-    @property
-    def phase(self) -> float:
-        """θ₀ of ω₁ = A sin(Ωt + θ₀) (2.85), rad."""
-        return float(self._core.phase)
+    omega_magnitude = core_property(
+        "omega_magnitude",
+        "|ω| = (A² + ω₃²)^½, constant (2.89), rad/s.",
+        float,
+    )
 
-    @property
-    def omega3(self) -> float:
-        """ω₃ (2.80), rad/s."""
-        return float(self._core.omega3)
+    energy = core_property("energy", "T = ½ I₁ A² + ½ I₃ ω₃² (2.91), J.", float)
 
-    @property
-    def omega_magnitude(self) -> float:
-        """|ω| = (A² + ω₃²)^½, constant (2.89), rad/s."""
-        return float(self._core.omega_magnitude)
+    angular_momentum_magnitude = core_property(
+        "angular_momentum_magnitude",
+        "|L| = (I₁² A² + I₃² ω₃²)^½ (2.93), kg·m²/s.",
+        float,
+    )
 
-    @property
-    def energy(self) -> float:
-        """T = ½ I₁ A² + ½ I₃ ω₃² (2.91), J."""
-        return float(self._core.energy)
+    angular_momentum = core_property(
+        "angular_momentum",
+        "L in space components (constant), kg·m²/s, shape (3,).",
+        np.asarray,
+    )
 
-    @property
-    def angular_momentum_magnitude(self) -> float:
-        """|L| = (I₁² A² + I₃² ω₃²)^½ (2.93), kg·m²/s."""
-        return float(self._core.angular_momentum_magnitude)
+    body_cone_angle = core_property(
+        "body_cone_angle",
+        "Half-angle of the body cone, tan α_b = A / ω₃ (2.90), rad.",
+        float,
+    )
 
-    @property
-    def angular_momentum(self) -> FloatArray:
-        """L in space components (constant), kg·m²/s, shape (3,)."""
-        return np.asarray(self._core.angular_momentum)
+    space_cone_angle = core_property(
+        "space_cone_angle",
+        "Half-angle of the space cone, cos α_s = 2T / (ω L) (2.97), rad.",
+        float,
+    )
 
-    @property
-    def body_cone_angle(self) -> float:
-        """Half-angle of the body cone, tan α_b = A / ω₃ (2.90), rad."""
-        return float(self._core.body_cone_angle)
+    nutation_angle = core_property(
+        "nutation_angle",
+        "The constant angle between L and the symmetry axis, tan θ = I₁A / (I₃ω₃), rad.",
+        float,
+    )
 
-    @property
-    def space_cone_angle(self) -> float:
-        """Half-angle of the space cone, cos α_s = 2T / (ω L) (2.97), rad."""
-        return float(self._core.space_cone_angle)
+    space_precession_rate = core_property(
+        "space_precession_rate",
+        "|L| / I₁: the rate at which ω and the symmetry axis go round L in space, rad/s.",
+        float,
+    )
 
-    @property
-    def nutation_angle(self) -> float:
-        """The constant angle between L and the symmetry axis, tan θ = I₁A / (I₃ω₃), rad."""
-        return float(self._core.nutation_angle)
+    max_time = core_property(
+        "max_time",
+        """The largest ``|t|`` at which :meth:`omega` and the attitude are computed, s: the time in
+        which the top turns through 2⁴² ≈ 4.4e12 rad at its fastest rate (the phase is then good to
+        ~1e-3 rad); a later ``t`` is refused naming ``t``; ``inf`` when the top never turns that far
+        within the double range (docs/dynamics.md).""",
+        float,
+    )
 
-    @property
-    def space_precession_rate(self) -> float:
-        """|L| / I₁: the rate at which ω and the symmetry axis go round L in space, rad/s."""
-        return float(self._core.space_precession_rate)
-
-    @property
-    def max_time(self) -> float:
-        """The largest ``|t|`` at which :meth:`omega` and the attitude are computed, s: the
-        time in which the top turns through 2⁴² ≈ 4.4e12 rad at its fastest rate (the phase is
-        then good to ~1e-3 rad); a later ``t`` is refused naming ``t``; ``inf`` when the top
-        never turns that far within the double range (docs/dynamics.md)."""
-        return float(self._core.max_time)
-
-    @property
-    def shape(self) -> str:
-        """ "prolate" (I₃ < I₁), "oblate" (I₃ > I₁) or "spherical"."""
-        return str(self._core.shape)
+    shape = core_property(
+        "shape",
+        """"prolate" (I₃ < I₁), "oblate" (I₃ > I₁) or "spherical".""",
+        str,
+    )
 
     @property
     def cone_contact(self) -> str:
@@ -385,15 +344,13 @@ class FreeRigidBody(show.Displayed):
         # pickling and copying: the constructor again, on the floats the core was given
         return (FreeRigidBody, (self.moments, self.omega0, self._attitude0))
 
-    @property
-    def moments(self) -> FloatArray:
-        """The principal moments, as given (kg·m², shape (3,); a new array)."""
-        return np.asarray(self._core.moments)
+    moments = core_property(
+        "moments",
+        "The principal moments, as given (kg·m², shape (3,); a new array).",
+        np.asarray,
+    )
 
-    @property
-    def omega0(self) -> FloatArray:
-        """ω at t = 0 in body components, as given (rad/s, shape (3,); a new array)."""
-        return np.asarray(self._core.omega0)
+    omega0 = _OMEGA0
 
     def _rows(self) -> list[show.Row]:
         return [
@@ -410,77 +367,80 @@ class FreeRigidBody(show.Displayed):
                 "kg·m²/s",
                 brief=False,
             ),
-            show.scalar("parameter", "Jacobi parameter", "m = k²", self.parameter, brief=False),
-            show.scalar(
-                "frequency", "rate of τ = λt + τ₀", "λ", self.frequency, "1/s", brief=False
-            ),
-            show.scalar(
-                "flip_interval", "interval between flips", "", self.flip_interval, "s", brief=False
-            ),
-            show.scalar(
-                "pole_axis", "principal axis ω circles (index)", "", self.pole_axis, brief=False
+            *show.details(
+                self,
+                ("parameter", "Jacobi parameter", "m = k²", ""),
+                ("frequency", "rate of τ = λt + τ₀", "λ", "1/s"),
+                ("flip_interval", "interval between flips", "", "s"),
+                ("pole_axis", "principal axis ω circles (index)", "", ""),
             ),
         ]
 
-    @property
-    def energy(self) -> float:
-        """T = ½ ω·I·ω, conserved (J)."""
-        return float(self._core.energy)
+    energy = core_property("energy", "T = ½ ω·I·ω, conserved (J).", float)
 
-    @property
-    def angular_momentum(self) -> FloatArray:
-        """L in space components, conserved (kg·m²/s, (3,))."""
-        return np.asarray(self._core.angular_momentum)
+    angular_momentum = core_property(
+        "angular_momentum",
+        "L in space components, conserved (kg·m²/s, (3,)).",
+        np.asarray,
+    )
 
-    @property
-    def period(self) -> float:
-        """The period of ω(t) (s); inf when ω is constant or on the separatrix."""
-        return float(self._core.period)
+    period = core_property(
+        "period",
+        "The period of ω(t) (s); inf when ω is constant or on the separatrix.",
+        float,
+    )
 
-    @property
-    def max_time(self) -> float:
-        """The largest ``|t|`` at which the state is computed, s: the time in which the motion
-        turns through 2⁴² ≈ 4.4e12 rad at its fastest rate (λ or the precession rate; the
-        phase is then good to ~1e-3 rad). A later ``t`` is refused naming ``t`` (``duration``
-        in :func:`simulate`); ``inf`` when the body never turns that far within the double
-        range (docs/dynamics.md)."""
-        return float(self._core.max_time)
+    max_time = core_property(
+        "max_time",
+        """The largest ``|t|`` at which the state is computed, s: the time in which the motion turns
+        through 2⁴² ≈ 4.4e12 rad at its fastest rate (λ or the precession rate; the phase is then
+        good to ~1e-3 rad). A later ``t`` is refused naming ``t`` (``duration`` in
+        :func:`simulate`); ``inf`` when the body never turns that far within the double range
+        (docs/dynamics.md).""",
+        float,
+    )
 
-    @property
-    def regime(self) -> str:
-        """ "steady", "symmetric", "about max axis", "about min axis" or "separatrix"."""
-        return str(self._core.regime)
+    regime = core_property(
+        "regime",
+        """"steady", "symmetric", "about max axis", "about min axis" or "separatrix".""",
+        str,
+    )
 
-    @property
-    def parameter(self) -> float:
-        """The Jacobi parameter m = k² (0 steady/symmetric, 1 on the separatrix)."""
-        return float(self._core.parameter)
+    parameter = core_property(
+        "parameter",
+        "The Jacobi parameter m = k² (0 steady/symmetric, 1 on the separatrix).",
+        float,
+    )
 
-    @property
-    def frequency(self) -> float:
-        """λ of τ = λ t + τ₀ (1/s); |Ω| for a symmetric top."""
-        return float(self._core.frequency)
+    frequency = core_property(
+        "frequency",
+        "λ of τ = λ t + τ₀ (1/s); |Ω| for a symmetric top.",
+        float,
+    )
 
-    @property
-    def flip_interval(self) -> float:
-        """Half the period (s): the interval between Dzhanibekov flips near the separatrix."""
-        return float(self._core.flip_interval)
+    flip_interval = core_property(
+        "flip_interval",
+        "Half the period (s): the interval between Dzhanibekov flips near the separatrix.",
+        float,
+    )
 
-    @property
-    def pole_axis(self) -> int | None:
-        """The principal axis (index into ``moments``) that ω circles, or None."""
-        return self._core.pole_axis  # type: ignore[no-any-return]
+    pole_axis = core_property(
+        "pole_axis",
+        "The principal axis (index into ``moments``) that ω circles, or None.",
+    )
 
-    @property
-    def invariable_plane_distance(self) -> float:
+    invariable_plane_distance = core_property(
+        "invariable_plane_distance",
         """(2T)^½ / |L|: in Poinsot's construction the inertia ellipsoid x·I·x = 1 rolls on the
-        plane at this distance from its centre, touching it at ω / (2T)^½."""
-        return float(self._core.invariable_plane_distance)
+        plane at this distance from its centre, touching it at ω / (2T)^½.""",
+        float,
+    )
 
-    @property
-    def invariable_plane_normal(self) -> FloatArray:
-        """L̂ = L / |L|, the unit normal of the invariable plane (space components, (3,))."""
-        return np.asarray(self._core.invariable_plane_normal)
+    invariable_plane_normal = core_property(
+        "invariable_plane_normal",
+        "L̂ = L / |L|, the unit normal of the invariable plane (space components, (3,)).",
+        np.asarray,
+    )
 
     def contact_point(
         self, t: Any, frame: str = _core.DEFAULTS["FreeRigidBody.contact_point"]["frame"]

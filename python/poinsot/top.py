@@ -26,6 +26,7 @@ import numpy as np
 
 from . import _core
 from . import _display as show
+from ._props import core_property
 from ._validate import FloatArray, as_angle, as_flag, as_flat, as_scalar, plain_float, shaped
 
 __all__ = ["HeavyTop", "SteadyPrecession", "MOTION_CLASSES"]
@@ -88,6 +89,21 @@ class SteadyPrecession:
     fast_approx: float
     fast_approx_as_printed: float
     min_spin: float
+
+
+#: The parameters of every top, and the angles and rates of a starting state, in the core's order.
+_MOMENTS = ("I1", "I3", "mgl")
+_STATE = ("phi", "theta", "psi", "phi_dot", "theta_dot")
+
+
+def _checked(args: dict[str, Any], scalars: tuple[str, ...], angles: tuple[str, ...] = ()) -> Any:
+    """The arguments named, from a constructor's ``args`` (its ``locals()``), each checked
+    naming it: ``scalars`` finite, ``angles`` finite too and in rad (converted from degrees
+    when ``args["degrees"]``)."""
+    return (
+        *(as_scalar(args[n], n) for n in scalars),
+        *(as_angle(args[n], n, args["degrees"]) for n in angles),
+    )
 
 
 class HeavyTop(show.Displayed):
@@ -154,18 +170,7 @@ class HeavyTop(show.Displayed):
         psi: float = _TOP["psi"],
         degrees: bool = False,
     ) -> None:
-        self._build(
-            "from_state",
-            as_scalar(I1, "I1"),
-            as_scalar(I3, "I3"),
-            as_scalar(mgl, "mgl"),
-            as_angle(phi, "phi", degrees),
-            as_angle(theta, "theta", degrees),
-            as_angle(psi, "psi", degrees),
-            as_angle(phi_dot, "phi_dot", degrees),
-            as_angle(theta_dot, "theta_dot", degrees),
-            as_angle(psi_dot, "psi_dot", degrees),
-        )
+        self._build("from_state", *_checked(locals(), _MOMENTS, (*_STATE, "psi_dot")))
 
     @classmethod
     def from_spin(
@@ -187,18 +192,7 @@ class HeavyTop(show.Displayed):
         whatever ``phi_dot`` (the rates as in :class:`HeavyTop`; ``omega3`` in deg/s with
         ``degrees=True``). Raises as :class:`HeavyTop`, and naming ``omega3`` if not finite."""
         top = cls.__new__(cls)
-        top._build(
-            "from_spin",
-            as_scalar(I1, "I1"),
-            as_scalar(I3, "I3"),
-            as_scalar(mgl, "mgl"),
-            as_angle(phi, "phi", degrees),
-            as_angle(theta, "theta", degrees),
-            as_angle(psi, "psi", degrees),
-            as_angle(phi_dot, "phi_dot", degrees),
-            as_angle(theta_dot, "theta_dot", degrees),
-            as_angle(omega3, "omega3", degrees),
-        )
+        top._build("from_spin", *_checked(locals(), _MOMENTS, (*_STATE, "omega3")))
         return top
 
     @classmethod
@@ -218,15 +212,7 @@ class HeavyTop(show.Displayed):
         Raises :class:`PoinsotError` naming ``energy`` when ``E' = E - p_psi**2/(2 I3)`` lies below
         the minimum of the effective potential (no motion has these constants)."""
         top = cls.__new__(cls)
-        top._build(
-            "from_constants",
-            as_scalar(I1, "I1"),
-            as_scalar(I3, "I3"),
-            as_scalar(mgl, "mgl"),
-            as_scalar(p_phi, "p_phi"),
-            as_scalar(p_psi, "p_psi"),
-            as_scalar(energy, "energy"),
-        )
+        top._build("from_constants", *_checked(locals(), (*_MOMENTS, "p_phi", "p_psi", "energy")))
         return top
 
     def _rows(self) -> list[show.Row]:
@@ -250,44 +236,15 @@ class HeavyTop(show.Displayed):
                 label="theta",
             ),
             show.scalar("omega3", "spin (2.99)", "ω₃", self.omega3, "rad/s"),
-            show.scalar(
-                "p_phi", "momentum about the vertical (2.104)", "p_φ", self.p_phi, q, brief=False
-            ),
-            show.scalar(
-                "p_psi",
-                "momentum about the symmetry axis (2.103)",
-                "p_ψ",
-                self.p_psi,
-                q,
-                brief=False,
-            ),
-            show.scalar("energy", "total energy (2.105)", "E", self.energy, "J", brief=False),
-            show.scalar(
-                "reduced_energy",
-                "reduced energy (2.109)",
-                "E′",
-                self.reduced_energy,
-                "J",
-                brief=False,
-            ),
-            show.scalar(
-                "nutation_period", "period of θ", "", self.nutation_period, "s", brief=False
-            ),
-            show.scalar(
-                "mean_precession_rate",
-                "mean precession rate",
-                "⟨φ′⟩",
-                self.mean_precession_rate,
-                "rad/s",
-                brief=False,
-            ),
-            show.scalar(
-                "mean_spin_rate",
-                "mean spin rate",
-                "⟨ψ′⟩",
-                self.mean_spin_rate,
-                "rad/s",
-                brief=False,
+            *show.details(
+                self,
+                ("p_phi", "momentum about the vertical (2.104)", "p_φ", q),
+                ("p_psi", "momentum about the symmetry axis (2.103)", "p_ψ", q),
+                ("energy", "total energy (2.105)", "E", "J"),
+                ("reduced_energy", "reduced energy (2.109)", "E′", "J"),
+                ("nutation_period", "period of θ", "", "s"),
+                ("mean_precession_rate", "mean precession rate", "⟨φ′⟩", "rad/s"),
+                ("mean_spin_rate", "mean spin rate", "⟨ψ′⟩", "rad/s"),
             ),
         ]
 
@@ -307,31 +264,28 @@ class HeavyTop(show.Displayed):
         """``m g l`` (N m)."""
         return self._core.parameters[2]
 
-    @property
-    def p_phi(self) -> float:
+    p_phi = core_property(
+        "p_phi",
         """``p_phi = I1 phi' sin^2(theta) + p_psi cos(theta)`` (kg m^2/s, 2.104): the conserved
-        vertical angular momentum ``L_Z``."""
-        return self._core.p_phi
+        vertical angular momentum ``L_Z``.""",
+    )
 
-    @property
-    def p_psi(self) -> float:
-        """``p_psi = I3 omega3`` (kg m^2/s, 2.103): the conserved angular momentum about axis 3."""
-        return self._core.p_psi
+    p_psi = core_property(
+        "p_psi",
+        "``p_psi = I3 omega3`` (kg m^2/s, 2.103): the conserved angular momentum about axis 3.",
+    )
 
-    @property
-    def omega3(self) -> float:
-        """The spin ``omega3 = psi' + phi' cos(theta)`` (rad/s, 2.99), constant."""
-        return self._core.omega3
+    omega3 = core_property(
+        "omega3",
+        "The spin ``omega3 = psi' + phi' cos(theta)`` (rad/s, 2.99), constant.",
+    )
 
-    @property
-    def energy(self) -> float:
-        """The total energy ``E = T + m g l cos(theta)`` (J, 2.105)."""
-        return self._core.energy
+    energy = core_property("energy", "The total energy ``E = T + m g l cos(theta)`` (J, 2.105).")
 
-    @property
-    def reduced_energy(self) -> float:
-        """``E' = E - p_psi**2/(2 I3) = I1 theta'**2/2 + V(theta)`` (J, 2.109)."""
-        return self._core.reduced_energy
+    reduced_energy = core_property(
+        "reduced_energy",
+        "``E' = E - p_psi**2/(2 I3) = I1 theta'**2/2 + V(theta)`` (J, 2.109).",
+    )
 
     @property
     def initial_state(self) -> dict[str, float]:
@@ -356,28 +310,28 @@ class HeavyTop(show.Displayed):
         flat, shape = as_flat(theta, "theta", degrees)
         return shaped(self._core.effective_potential_derivative(flat), shape)
 
-    @property
-    def turning_points(self) -> tuple[float, float]:
+    turning_points = core_property(
+        "turning_points",
         """``(theta1, theta2)`` (rad), ``theta1 <= theta2``: where ``E' = V(theta)``, the roots of
         the cubic ``f(u) = (1 - u^2)(alpha - beta u) - (b - a u)^2`` in ``u = cos(theta)``, computed
-        without cancellation at the poles (both equal for steady precession)."""
-        return self._core.turning_points
+        without cancellation at the poles (both equal for steady precession).""",
+    )
 
-    @property
-    def cubic_roots(self) -> tuple[float, float, float]:
-        """``(u1, u2, u3)``: the roots of the cubic in ``u = cos(theta)``, ``u1 = cos(theta2) <=
-        u2 = cos(theta1) <= 1 <= u3`` (``u3 = inf`` when ``m g l = 0``)."""
-        return self._core.cubic_roots
+    cubic_roots = core_property(
+        "cubic_roots",
+        """``(u1, u2, u3)``: the roots of the cubic in ``u = cos(theta)``, ``u1 = cos(theta2) <= u2
+        = cos(theta1) <= 1 <= u3`` (``u3 = inf`` when ``m g l = 0``).""",
+    )
 
-    @property
-    def motion_class(self) -> str:
-        """The shape of the axis' path: one of :data:`MOTION_CLASSES`."""
-        return self._core.motion_class
+    motion_class = core_property(
+        "motion_class",
+        "The shape of the axis' path: one of :data:`MOTION_CLASSES`.",
+    )
 
-    @property
-    def is_sleeping_stable(self) -> bool:
-        """Whether this spin keeps an upright top asleep: ``omega3**2 > 4 m g l I1 / I3**2``."""
-        return self._core.is_sleeping_stable
+    is_sleeping_stable = core_property(
+        "is_sleeping_stable",
+        "Whether this spin keeps an upright top asleep: ``omega3**2 > 4 m g l I1 / I3**2``.",
+    )
 
     @property
     def nutation_period(self) -> float:
@@ -386,15 +340,15 @@ class HeavyTop(show.Displayed):
         p = self._core.nutation_period
         return math.inf if p is None else p
 
-    @property
-    def mean_precession_rate(self) -> float:
-        """The mean of ``phi'`` over a nutation period (rad/s)."""
-        return self._core.mean_precession_rate
+    mean_precession_rate = core_property(
+        "mean_precession_rate",
+        "The mean of ``phi'`` over a nutation period (rad/s).",
+    )
 
-    @property
-    def mean_spin_rate(self) -> float:
-        """The mean of ``psi'`` over a nutation period (rad/s)."""
-        return self._core.mean_spin_rate
+    mean_spin_rate = core_property(
+        "mean_spin_rate",
+        "The mean of ``psi'`` over a nutation period (rad/s).",
+    )
 
     # ---- the exact motion ------------------------------------------------------------------
     def euler_angles(self, t: Any, *, degrees: bool = False) -> tuple[Any, Any, Any]:

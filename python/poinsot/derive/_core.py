@@ -9,6 +9,8 @@ sympy object, so a derivation that builds is a proof of each equation it shows.
 
 from __future__ import annotations
 
+import functools
+import operator
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -18,6 +20,45 @@ from sympy.physics.vector.printing import VectorPrettyPrinter, vlatex
 from sympy.printing.pretty.stringpict import prettyForm
 
 from ..errors import PoinsotError
+
+
+def add(*terms: Any) -> Any:
+    """A sum printed in the order written (unevaluated)."""
+    return sp.Add(*terms, evaluate=False)
+
+
+def mul(*factors: Any) -> Any:
+    """A product printed in the order written (unevaluated)."""
+    return sp.Mul(*factors, evaluate=False)
+
+
+def power(base: Any, exp: Any) -> Any:
+    """``base**exp`` printed as written (unevaluated)."""
+    return sp.Pow(base, exp, evaluate=False)
+
+
+def eq(lhs: Any, rhs: Any) -> Any:
+    """The equation ``lhs = rhs`` as written (unevaluated)."""
+    return sp.Eq(lhs, rhs, evaluate=False)
+
+
+def dot_value(x: sp.Matrix, y: sp.Matrix) -> Any:
+    """The value of ``Dot(x, y)`` on components: a (3, 3) matrix times a column, a column
+    times a matrix (as a column), or the scalar product of two columns."""
+    if x.shape == (3, 3):
+        return x * y
+    if y.shape == (3, 3):
+        return (x.T * y).T
+    return (x.T * y)[0, 0]
+
+
+def in_order(e: sp.Add | sp.Mul, values: Sequence[Any]) -> Any:
+    """The sum or product ``e`` of the ``values`` of its terms (matrices or expressions), taken
+    left to right: a matrix product keeps its order."""
+    if isinstance(e, sp.Add):
+        return functools.reduce(operator.add, values)
+    return functools.reduce(operator.mul, values, sp.Integer(1))
+
 
 __all__ = [
     "Vec",
@@ -166,36 +207,33 @@ def _dt_pretty(printer: Any, e: Any, frame: str) -> Any:
     return prettyForm(*head.right(prettyForm(*body.parens())))
 
 
-class DtFix(sp.Function):
+class _FrameRate(sp.Function):
+    """A rate of change of X seen in the frame ``_frame`` ("fix" or "rot")."""
+
+    nargs = 1
+    _frame = ""
+
+    def _latex(self, printer: Any, exp: Any = None) -> str:
+        return _power(self._body_latex(printer), exp, printer)
+
+    def _body_latex(self, printer: Any) -> str:
+        """The LaTeX without a power (a notation of a topic overrides this)."""
+        return _dt_latex(printer, self, self._frame)
+
+    def _pretty(self, printer: Any) -> Any:
+        return _dt_pretty(printer, self, self._frame)
+
+
+class DtFix(_FrameRate):
     """(dX/dt)_fix: the rate of change of X seen in the fixed (primed, inertial) frame."""
 
-    nargs = 1
-
-    def _latex(self, printer: Any, exp: Any = None) -> str:
-        return _power(self._body_latex(printer), exp, printer)
-
-    def _body_latex(self, printer: Any) -> str:
-        """The LaTeX without a power (a notation of a topic overrides this)."""
-        return _dt_latex(printer, self, "fix")
-
-    def _pretty(self, printer: Any) -> Any:
-        return _dt_pretty(printer, self, "fix")
+    _frame = "fix"
 
 
-class DtRot(sp.Function):
+class DtRot(_FrameRate):
     """(dX/dt)_rot: the rate of change of X seen in the rotating (unprimed) frame."""
 
-    nargs = 1
-
-    def _latex(self, printer: Any, exp: Any = None) -> str:
-        return _power(self._body_latex(printer), exp, printer)
-
-    def _body_latex(self, printer: Any) -> str:
-        """The LaTeX without a power (a notation of a topic overrides this)."""
-        return _dt_latex(printer, self, "rot")
-
-    def _pretty(self, printer: Any) -> Any:
-        return _dt_pretty(printer, self, "rot")
+    _frame = "rot"
 
 
 def cross_matrix(a: Any) -> sp.Matrix:
@@ -243,18 +281,8 @@ class VectorModel:
             if self.dt_rot is None:
                 raise PoinsotError("the model has no rotating-frame rate")
             return self.dt_rot(self._ev(e.args[0]))
-        if isinstance(e, sp.Add):
-            parts = [self._ev(x) for x in e.args]
-            total = parts[0]
-            for p in parts[1:]:
-                total = total + p
-            return total
-        if isinstance(e, sp.Mul):
-            out: Any = sp.Integer(1)
-            for x in e.args:
-                v = self._ev(x)
-                out = out * v  # left to right: a matrix product keeps its order
-            return out
+        if isinstance(e, (sp.Add, sp.Mul)):
+            return in_order(e, [self._ev(x) for x in e.args])
         if isinstance(e, sp.Pow):
             return self._ev(e.base) ** e.exp
         if e.args and not isinstance(e, sp.Derivative) and isinstance(e, sp.Function):

@@ -52,6 +52,9 @@ import sympy as sp
 from sympy.physics.vector import dynamicsymbols
 
 from ._core import Cross, Derivation, Dot, DtFix, DtRot, Printed, Unit, Vec, VectorModel
+from ._core import add as _add
+from ._core import eq as _eq
+from ._core import mul as _mul
 
 __all__ = ["derive", "PRINTED"]
 
@@ -121,18 +124,6 @@ class _Num(sp.Function):
         return printer._print(self.args[0])
 
 
-def _mul(*args: Any) -> Any:
-    return sp.Mul(*args, evaluate=False)
-
-
-def _add(*args: Any) -> Any:
-    return sp.Add(*args, evaluate=False)
-
-
-def _eq(lhs: Any, rhs: Any) -> Any:
-    return sp.Eq(lhs, rhs, evaluate=False)
-
-
 def _row(*items: Any) -> sp.ImmutableMatrix:
     return sp.ImmutableMatrix([list(items)])
 
@@ -146,6 +137,20 @@ _UNIT_DATA = {  # the unit's data for its numbers (g for the 100 m example: not 
     lam: sp.pi / 4,
     g: sp.Rational("9.81"),
 }
+
+
+def _east(omega: Any, g: Any, h: Any, latitude: Any) -> tuple[Any, Any]:
+    """The eastward deflection of a body dropped from ``h`` (2.42) in the unit's two printed
+    forms, unevaluated: ⅓ ω g cos λ (2h/g)^{3/2} and ⅓ ω cos λ (8h³/g)^{1/2}."""
+    third = sp.Rational(1, 3)
+    return (
+        _mul(
+            third, omega, g, sp.cos(latitude), sp.Pow(2 * h / g, sp.Rational(3, 2), evaluate=False)
+        ),
+        _mul(
+            third, omega, sp.cos(latitude), sp.Pow(8 * h**3 / g, sp.Rational(1, 2), evaluate=False)
+        ),
+    )
 
 
 def _half(e: Any) -> Any:
@@ -554,31 +559,8 @@ def derive() -> Derivation:
         "Put T into 2.38: the eastward deflection at landing (2.42).",
         [
             _eq(x1.subs(t, T), _mul(sp.Rational(1, 3), omega, g, sp.cos(lam), T**3)),
-            _eq(
-                _mul(sp.Rational(1, 3), omega, g, sp.cos(lam), T**3),
-                _mul(
-                    sp.Rational(1, 3),
-                    omega,
-                    g,
-                    sp.cos(lam),
-                    sp.Pow(2 * h / g, sp.Rational(3, 2), evaluate=False),
-                ),
-            ),
-            _eq(
-                _mul(
-                    sp.Rational(1, 3),
-                    omega,
-                    g,
-                    sp.cos(lam),
-                    sp.Pow(2 * h / g, sp.Rational(3, 2), evaluate=False),
-                ),
-                _mul(
-                    sp.Rational(1, 3),
-                    omega,
-                    sp.cos(lam),
-                    sp.Pow(8 * h**3 / g, sp.Rational(1, 2), evaluate=False),
-                ),
-            ),
+            _eq(_mul(sp.Rational(1, 3), omega, g, sp.cos(lam), T**3), _east(omega, g, h, lam)[0]),
+            _eq(*_east(omega, g, h, lam)),
         ],
         "2.42",
     )
@@ -846,33 +828,7 @@ PRINTED: tuple[Printed, ...] = (
         "earth",
         r"x = \frac{1}{3}\omega g \cos\theta \left(\frac{2h}{g}\right)^{3/2} = \frac{1}{3}\omega "
         r"\cos\theta \left(\frac{8h^3}{g}\right)^{1/2}",
-        [
-            _eq(
-                x1.subs(t, T),
-                _mul(
-                    sp.Rational(1, 3),
-                    omega,
-                    g,
-                    sp.cos(theta),
-                    sp.Pow(2 * h / g, sp.Rational(3, 2), evaluate=False),
-                ),
-            ),
-            _eq(
-                _mul(
-                    sp.Rational(1, 3),
-                    omega,
-                    g,
-                    sp.cos(theta),
-                    sp.Pow(2 * h / g, sp.Rational(3, 2), evaluate=False),
-                ),
-                _mul(
-                    sp.Rational(1, 3),
-                    omega,
-                    sp.cos(theta),
-                    sp.Pow(8 * h**3 / g, sp.Rational(1, 2), evaluate=False),
-                ),
-            ),
-        ],
+        [_eq(x1.subs(t, T), _east(omega, g, h, theta)[0]), _eq(*_east(omega, g, h, theta))],
         "x at the landing time; " + _UNIT_THETA,
     ),
     Printed(

@@ -58,6 +58,8 @@ from sympy.printing.pretty.stringpict import prettyForm
 
 from ..errors import PoinsotError
 from ._core import Derivation, Printed
+from ._core import add as _add
+from ._core import eq as _eq
 
 __all__ = ["NAME", "PRINTED", "SEQUENCES", "derive", "tags"]
 
@@ -199,12 +201,16 @@ def _col(items: Sequence[Any]) -> sp.ImmutableMatrix:
     return sp.ImmutableMatrix([[x] for x in items])
 
 
-def _eq(a: Any, b: Any) -> sp.Equality:
-    return sp.Eq(a, b, evaluate=False)
+def _turned(x: Any, y: Any, psi: Any) -> list[Any]:
+    """Components (x, y) on ξ, η turned by ψ about ζ onto the body axes 1, 2 (2.99):
+    x cos ψ + y sin ψ, −x sin ψ + y cos ψ."""
+    s, c = sp.sin(psi), sp.cos(psi)
+    return [_add(x * c, y * s), _add(-x * s, y * c)]
 
 
-def _add(*terms: Any) -> Any:
-    return sp.Add(*terms, evaluate=False)
+def _body_rates(dphi: Any, dtheta: Any, dpsi: Any, theta: Any, psi: Any) -> sp.ImmutableMatrix:
+    """The body components of ω from the Euler rates (2.99): ω on ξηζ (2.98) turned by ψ."""
+    return _col([*_turned(dtheta, dphi * sp.sin(theta), psi), _add(dpsi, dphi * sp.cos(theta))])
 
 
 _UNITS = tuple(
@@ -602,21 +608,8 @@ def _unit(d: Derivation, m: _Model) -> None:
         _eq(xez_col, eq298),
         "2.98",
     )
-    spsi, cpsi = sp.sin(psi), sp.cos(psi)
-    resolved = _col(
-        [
-            _add(xez[0] * cpsi, xez[1] * spsi),
-            _add(-xez[0] * spsi, xez[1] * cpsi),
-            xez[2],
-        ]
-    )
-    result299 = _col(
-        [
-            _add(dtheta * cpsi, dphi * sp.sin(theta) * spsi),
-            _add(-dtheta * spsi, dphi * sp.sin(theta) * cpsi),
-            _add(dpsi, dphi * sp.cos(theta)),
-        ]
-    )
+    resolved = _col([*_turned(xez[0], xez[1], psi), xez[2]])
+    result299 = _body_rates(dphi, dtheta, dpsi, theta, psi)
     d.step(
         "Back to the body axes, (ω₁, ω₂, ω₃) = R_z(ψ)ᵀ(ω_ξ, ω_η, ω_ζ), and substitute 2.98: this "
         "is 2.99. The unit prints ω₃ = ω_ξ; the component along 3 = ζ is ω_ζ (an index typo; "
@@ -969,21 +962,8 @@ def _printed() -> tuple[Printed, ...]:
     w = [_sym(rf"\omega_{{{k + 1}}}", tag) for k in range(3)]
     xez = [_sym(rf"\omega_{{\{n}}}", tag) for n in ("xi", "eta", "zeta")]
     T = _sym("T", tag)
-    spsi, cpsi = sp.sin(psi), sp.cos(psi)
-    p299_mid = _col(
-        [
-            _add(xez[0] * cpsi, xez[1] * spsi),
-            _add(-xez[0] * spsi, xez[1] * cpsi),
-            xez[0],
-        ]
-    )
-    p299_end = _col(
-        [
-            _add(dtheta * cpsi, dphi * sp.sin(theta) * spsi),
-            _add(-dtheta * spsi, dphi * sp.sin(theta) * cpsi),
-            _add(dpsi, dphi * sp.cos(theta)),
-        ]
-    )
+    p299_mid = _col([*_turned(xez[0], xez[1], psi), xez[0]])  # the unit's third row: ω_ξ
+    p299_end = _body_rates(dphi, dtheta, dpsi, theta, psi)
     perp = _add(dtheta**2, dphi**2 * sp.sin(theta) ** 2)
     psi_note = "the unit writes the spin angle Ψ; it is ψ here"
     return (

@@ -44,7 +44,10 @@ from typing import Any
 import sympy as sp
 from sympy.physics.vector import dynamicsymbols
 
-from ._core import Cross, Derivation, Dot, DtFix, DtRot, Printed, Unit, Vec, VectorModel
+from ._core import Cross, Derivation, Dot, DtFix, DtRot, Printed, Unit, Vec, VectorModel, dot_value
+from ._core import add as _add
+from ._core import eq as _eq
+from ._core import mul as _mul
 
 __all__ = ["derive", "PRINTED"]
 
@@ -172,12 +175,7 @@ class _Model(VectorModel):
         if isinstance(e, sp.UnevaluatedExpr):
             return self._ev(e.args[0])
         if isinstance(e, Dot):
-            a, b = (sp.Matrix(self._ev(x)) for x in e.args)
-            if a.shape == (3, 3):
-                return a * b
-            if b.shape == (3, 3):
-                return (a.T * b).T
-            return (a.T * b)[0, 0]
+            return dot_value(*(sp.Matrix(self._ev(x)) for x in e.args))
         if isinstance(e, _Ddt):
             return self._rate(self._ev(e.args[0]), [(self.t, 1)])
         if isinstance(e, sp.Derivative) and e not in self.scalars:
@@ -186,20 +184,6 @@ class _Model(VectorModel):
             v = sp.Matrix(self._ev(e.args[0]))
             return sp.sqrt(sp.factor(_trig_reduce(sp.expand((v.T * v)[0, 0]))))
         return super()._ev(e)
-
-
-def _add(*terms: Any) -> Any:
-    """A sum printed in the order written."""
-    return sp.Add(*terms, evaluate=False)
-
-
-def _mul(*factors: Any) -> Any:
-    """A product printed in the order written."""
-    return sp.Mul(*factors, evaluate=False)
-
-
-def _eq(lhs: Any, rhs: Any) -> sp.Equality:
-    return sp.Eq(lhs, rhs, evaluate=False)
 
 
 def _chain(*sides: Any) -> list[sp.Equality]:

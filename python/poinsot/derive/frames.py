@@ -74,6 +74,9 @@ from sympy.polys.rings import ring
 
 from ..errors import PoinsotError
 from ._core import Cross, Derivation, Dot, DtFix, DtRot, Printed, Unit, Vec, VectorModel
+from ._core import add as _sum
+from ._core import eq as _eq
+from ._core import mul as _mul
 
 __all__ = ["derive", "PRINTED"]
 
@@ -217,20 +220,6 @@ class _Steady(Vec):
 
 class _AtRest(Vec):
     """A vector of 2.28: ω⃗ constant, the particle at rest in the rotating frame."""
-
-
-def _sum(*terms: Any) -> Any:
-    """A sum printed in the order written."""
-    return sp.Add(*terms, evaluate=False)
-
-
-def _mul(*factors: Any) -> Any:
-    """A product printed in the order written."""
-    return sp.Mul(*factors, evaluate=False)
-
-
-def _eq(a: Any, b: Any) -> Any:
-    return sp.Eq(a, b, evaluate=False)
 
 
 def _chain(*sides: Any) -> list[Any]:
@@ -663,6 +652,33 @@ def _d2(op: type, x: Any) -> Any:
     return op(op(x))
 
 
+def _second_rate(w: Any, big_v: Any, inner: Any, last: Any) -> Any:
+    """2.18: the rotating frame's second rate of V⃗ by 2.15 applied twice (``inner`` the first
+    rate, dV⃗/dt + ω⃗ × V⃗), expanded by the product rule (the third line ending in ``last``, ω⃗
+    × ``inner``; the unit prints another), then collected."""
+    return _chain(
+        _d2(_DPrime, big_v),
+        _DPrime(inner),
+        _sum(_DPlain(inner), Cross(w, inner)),
+        _sum(_d2(_DPlain, big_v), Cross(_DPlain(w), big_v), Cross(w, _DPlain(big_v)), last),
+        _sum(
+            _d2(_DPlain, big_v),
+            2 * Cross(w, _DPlain(big_v)),
+            Cross(w, Cross(w, big_v)),
+            Cross(_DPlain(w), big_v),
+        ),
+    )
+
+
+def _acceleration(fix: type, rot: type, dot: type, rp: Any, big_r: Any, r: Any, w: Any) -> Any:
+    """2.21 in the derivative notation given (``fix``, ``rot``: in the fixed and the rotating
+    frame; ``dot``: of ω, the same in both): the fixed-frame acceleration of r⃗' = R⃗ + r⃗ as
+    the origin's, the relative, Coriolis, centripetal and Euler terms."""
+    coriolis = 2 * Cross(w, rot(r))
+    terms = _sum(_d2(fix, big_r), _d2(rot, r), coriolis, Cross(w, Cross(w, r)), Cross(dot(w), r))
+    return _eq(_d2(fix, rp), terms)
+
+
 # ---- the derivation -----------------------------------------------------------------------------
 
 
@@ -878,23 +894,7 @@ def _rotating_frame(d: Derivation) -> None:
         "Apply 2.15 twice and expand, d/dt of ω⃗ × V⃗ by the product rule. (The unit's third line "
         "prints ω⃗ × [dV⃗/dt + ω⃗ × dV⃗/dt]: the last V⃗ is not differentiated. Its last line is "
         "right, ω⃗ × ω⃗ × V⃗ meaning ω⃗ × (ω⃗ × V⃗).)",
-        _chain(
-            _d2(_DPrime, big_v),
-            _DPrime(inner),
-            _sum(_DPlain(inner), Cross(w, inner)),
-            _sum(
-                _d2(_DPlain, big_v),
-                Cross(_DPlain(w), big_v),
-                Cross(w, _DPlain(big_v)),
-                Cross(w, inner),
-            ),
-            _sum(
-                _d2(_DPlain, big_v),
-                2 * Cross(w, _DPlain(big_v)),
-                Cross(w, Cross(w, big_v)),
-                Cross(_DPlain(w), big_v),
-            ),
-        ),
+        _second_rate(w, big_v, inner, Cross(w, inner)),
         "2.18",
     )
     d.given("Now let the origin O of the rotating frame move too (Fig. 2.2).", _eq(rp, big_r + r))
@@ -936,16 +936,7 @@ def _rotating_frame(d: Derivation) -> None:
         "acceleration 2ω⃗ × ṙ_r, the centripetal acceleration ω⃗ × (ω⃗ × r⃗) and the Euler "
         "(transverse) acceleration ω̇ × r⃗. (The unit prints r⃗_f for r̈_r and ω⃗ × r⃗ for the last "
         "term: a subscript wrong and the dots lost.)",
-        _eq(
-            _d2(_SubF, rp),
-            _sum(
-                _d2(_SubF, big_r),
-                _d2(_SubR, r),
-                2 * Cross(w, _SubR(r)),
-                Cross(w, Cross(w, r)),
-                Cross(_Dot(w), r),
-            ),
-        ),
+        _acceleration(_SubF, _SubR, _Dot, rp, big_r, r, w),
         "2.23",
     )
     res = d.result
@@ -1243,23 +1234,7 @@ def _printed() -> tuple[Printed, ...]:
             r"\frac{d\vec{V}}{dt} \right] \\ \therefore \frac{d'^2 \vec{V}}{dt^2} = "
             r"\frac{d^2 \vec{V}}{dt^2} + 2\vec{\omega} \times \frac{d\vec{V}}{dt} + \vec{\omega} "
             r"\times \vec{\omega} \times \vec{V} + \frac{d\vec{\omega}}{dt} \times \vec{V}",
-            _chain(
-                _d2(_DPrime, big_v),
-                _DPrime(inner),
-                _sum(_DPlain(inner), Cross(w, inner)),
-                _sum(
-                    _d2(_DPlain, big_v),
-                    Cross(_DPlain(w), big_v),
-                    Cross(w, _DPlain(big_v)),
-                    Cross(w, _sum(_DPlain(big_v), Cross(w, _DPlain(big_v)))),
-                ),
-                _sum(
-                    _d2(_DPlain, big_v),
-                    2 * Cross(w, _DPlain(big_v)),
-                    Cross(w, Cross(w, big_v)),
-                    Cross(_DPlain(w), big_v),
-                ),
-            ),
+            _second_rate(w, big_v, inner, Cross(w, _sum(_DPlain(big_v), Cross(w, _DPlain(big_v))))),
             "The four lines as one chain (the identity d′/dt(d′V⃗/dt) of the first dropped); "
             "the operator product [d/dt + ω⃗×][X⃗] as dX⃗/dt + ω⃗ × X⃗; ω⃗ × ω⃗ × V⃗ read as "
             "ω⃗ × (ω⃗ × V⃗) (the other grouping is 0).",
@@ -1285,16 +1260,7 @@ def _printed() -> tuple[Printed, ...]:
             r"\left(\frac{d^2\vec{r}}{dt^2}\right)_{rot} + 2\vec{\omega} \times "
             r"\left(\frac{d\vec{r}}{dt}\right)_{rot} + \vec{\omega} \times (\vec{\omega} \times "
             r"\vec{r}) + \frac{d\vec{\omega}}{dt} \times \vec{r}",
-            _eq(
-                _d2(DtFix, rp),
-                _sum(
-                    _d2(DtFix, big_r),
-                    _d2(DtRot, r),
-                    2 * Cross(w, DtRot(r)),
-                    Cross(w, Cross(w, r)),
-                    Cross(_DPlain(w), r),
-                ),
-            ),
+            _acceleration(DtFix, DtRot, _DPlain, rp, big_r, r, w),
             "dω⃗/dt is the same in both frames (2.16).",
         ),
         p(

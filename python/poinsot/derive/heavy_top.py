@@ -74,6 +74,10 @@ from sympy.polys.fields import field
 from sympy.printing.pretty.stringpict import prettyForm
 
 from ._core import Derivation, Printed
+from ._core import add as _add
+from ._core import eq as _eq
+from ._core import mul as _mul
+from ._core import power as _pow
 
 __all__ = ["derive", "PRINTED"]
 
@@ -167,24 +171,8 @@ def _at_least(a: Any, b_: Any) -> Any:
     return _eq(_Larger(a, b_), a)
 
 
-def _add(*terms: Any) -> Any:
-    return sp.Add(*terms, evaluate=False)
-
-
-def _mul(*factors: Any) -> Any:
-    return sp.Mul(*factors, evaluate=False)
-
-
-def _pow(base: Any, exp: Any) -> Any:
-    return sp.Pow(base, exp, evaluate=False)
-
-
 def _frac(num: Any, den: Any) -> Any:
     return _mul(num, _pow(den, -1))
-
-
-def _eq(lhs: Any, rhs: Any) -> Any:
-    return sp.Eq(lhs, rhs, evaluate=False)
 
 
 HALF = sp.Rational(1, 2)

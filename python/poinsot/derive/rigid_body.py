@@ -68,7 +68,10 @@ from typing import Any
 import sympy as sp
 
 from ..errors import PoinsotError
-from ._core import Cross, Derivation, Dot, DtFix, DtRot, Printed, Unit, Vec
+from ._core import Cross, Derivation, Dot, DtFix, DtRot, Printed, Unit, Vec, dot_value, in_order
+from ._core import add as _add
+from ._core import eq as _eq
+from ._core import mul as _mul
 
 __all__ = ["derive", "PRINTED"]
 
@@ -196,24 +199,12 @@ class _Dot(Dot):
         return _parens(printer, x) + r" \cdot " + _parens(printer, y)
 
 
-def _add(*xs: Any) -> Any:
-    return sp.Add(*xs, evaluate=False)
-
-
-def _mul(*xs: Any) -> Any:
-    return sp.Mul(*xs, evaluate=False)
-
-
 def _neg(x: Any) -> Any:
     return sp.Mul(-1, x, evaluate=False)
 
 
 def _sub(x: Any, y: Any) -> Any:
     return _add(x, _neg(y))
-
-
-def _eq(lhs: Any, rhs: Any) -> Any:
-    return sp.Eq(lhs, rhs, evaluate=False)
 
 
 def _chain(*xs: Any) -> list[Any]:
@@ -548,12 +539,7 @@ class _Model:
             x, y = (ev(a, b, env) for a in e.args)
             return x.cross(y)
         if isinstance(e, Dot):
-            x, y = (ev(a, b, env) for a in e.args)
-            if x.shape == (3, 3):
-                return x * y
-            if y.shape == (3, 3):
-                return (x.T * y).T
-            return (x.T * y)[0, 0]
+            return dot_value(*(ev(a, b, env) for a in e.args))
         if isinstance(e, DtFix):
             return b.dt_fix(ev(e.args[0], b, env))
         if isinstance(e, DtRot):
@@ -576,17 +562,8 @@ class _Model:
             return inner.subs({ev(v, b, env): ev(x, b, env) for v, x in e.args[1]})
         if isinstance(e, sp.Integral):
             return self._integral(e, b)
-        if isinstance(e, sp.Add):
-            parts = [ev(x, b, env) for x in e.args]
-            total = parts[0]
-            for p in parts[1:]:
-                total = total + p
-            return total
-        if isinstance(e, sp.Mul):
-            out: Any = sp.Integer(1)
-            for x in e.args:
-                out = out * ev(x, b, env)
-            return out
+        if isinstance(e, (sp.Add, sp.Mul)):
+            return in_order(e, [ev(x, b, env) for x in e.args])
         if isinstance(e, sp.Pow):
             return ev(e.base, b, env) ** e.exp
         if e.args and isinstance(e, sp.Function):

@@ -19,77 +19,21 @@ rest of poinsot; these functions only draw. matplotlib is imported when a pictur
 
 from __future__ import annotations
 
-from .earth import (
-    animate_foucault,
-    plot_deflection,
-    plot_foucault_rosette,
-    plot_inertial_circles,
-    plot_trajectory,
-)
-from .free import (
-    animate_free_body,
-    animate_tumbling_box,
-    plot_cones,
-    plot_conservation,
-    plot_omega,
-    plot_polhodes,
-)
-from .inertia import plot_inertia_ellipsoid
-from .top import (
-    animate_top,
-    plot_angles,
-    plot_axis_locus,
-    plot_effective_potential,
-    plot_steady_precession,
-    save_top_plots,
-)
-from .unit import (
-    UNIT_FIGURES,  # noqa: F401 - the registry, importable from here; __all__ lists the functions
-    plot_body_cone,
-    plot_centripetal,
-    plot_dumbbell,
-    plot_earth_centrifugal,
-    plot_earth_coriolis,
-    plot_euler_angle_steps,
-    plot_euler_theorem,
-    plot_flow_into_low,
-    plot_heavy_top,
-    plot_omega_components,
-    plot_rotating_frame,
-    plot_translating_frame,
-    unit_figure,
-)
+from . import earth, free, inertia, top, unit
+from .earth import *  # noqa: F403 - each module's drawing functions, listed in its __all__
+from .free import *  # noqa: F403
+from .inertia import *  # noqa: F403
+from .top import *  # noqa: F403
+from .unit import *  # noqa: F403
+from .unit import UNIT_FIGURES  # noqa: F401 - the registry, importable from here
 
-__all__ = [
-    "plot_inertia_ellipsoid",
-    "plot_omega",
-    "plot_cones",
-    "plot_polhodes",
-    "plot_conservation",
-    "animate_tumbling_box",
-    "animate_free_body",
-    "plot_effective_potential",
-    "plot_axis_locus",
-    "plot_angles",
-    "plot_steady_precession",
-    "animate_top",
-    "save_top_plots",
-    "plot_deflection",
-    "plot_trajectory",
-    "plot_foucault_rosette",
-    "plot_inertial_circles",
-    "animate_foucault",
-    "plot_translating_frame",
-    "plot_rotating_frame",
-    "plot_centripetal",
-    "plot_earth_centrifugal",
-    "plot_earth_coriolis",
-    "plot_flow_into_low",
-    "plot_euler_theorem",
-    "plot_dumbbell",
-    "plot_body_cone",
-    "plot_euler_angle_steps",
-    "plot_omega_components",
-    "plot_heavy_top",
-    "unit_figure",
+#: What :mod:`poinsot.plots.unit` lists besides its drawing functions (importable from there).
+_UNIT_HELPERS = {"classroom_free_top", "classroom_heavy_top", "UnitFigure", "UNIT_FIGURES"}
+
+__all__ = [  # the drawing functions, as their modules list them
+    *inertia.__all__,
+    *free.__all__,
+    *top.__all__,
+    *earth.__all__,
+    *(name for name in unit.__all__ if name not in _UNIT_HELPERS),
 ]

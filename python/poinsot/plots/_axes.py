@@ -28,8 +28,7 @@ def few_ticks(ax: Any, n: int = 5) -> None:
 def label_3d(ax: Any, x: str, y: str, z: str) -> None:
     """The axis labels of a 3-D axes: x and y upright, z upright too when short, else
     turned to read upwards along the axis (matplotlib's own turn may set it upside down)."""
-    ax.set_xlabel(x)
-    ax.set_ylabel(y)
+    ax.set(xlabel=x, ylabel=y)
     ax.set_zlabel(z, rotation=90 if len(z) > 8 else 0)
 
 

@@ -90,6 +90,13 @@ def _inline_animation_class() -> Any:
     return InlineAnimation
 
 
+def line_width() -> float:
+    """The current style's line width (points)."""
+    from matplotlib import rcParams
+
+    return float(rcParams["lines.linewidth"])
+
+
 def check_style(style: Any) -> str:
     """``style`` as one of :data:`STYLES`; :class:`poinsot.PoinsotError` naming ``style``
     otherwise."""

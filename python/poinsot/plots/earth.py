@@ -1,7 +1,7 @@
 """Pictures of the rotating Earth's effects (matplotlib, the optional ``plot`` extra).
 
-Every function returns a :class:`matplotlib.figure.Figure` (or an animation) and never calls
-``plt.show()``. The physics comes from :class:`poinsot.Earth`; these functions only draw.
+The physics comes from :class:`poinsot.Earth`; these functions only draw (see
+:mod:`poinsot.plots`).
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ import numpy as np
 
 from ..earth import Earth, Fall, Flight, FoucaultRun
 from ._axes import few_ticks, label_3d
-from ._mpl import figure_style, func_animation, new_figure, save_animation, subplots
+from ._mpl import figure_style, func_animation, line_width, new_figure, save_animation, subplots
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -26,13 +26,6 @@ __all__ = [
     "plot_inertial_circles",
     "animate_foucault",
 ]
-
-
-def _lw() -> float:
-    """The current style's line width (points)."""
-    from matplotlib import rcParams
-
-    return float(rcParams["lines.linewidth"])
 
 
 # Units for lengths too small to read in metres: (factor from m, name), largest first.
@@ -83,10 +76,8 @@ def plot_deflection(
         ax1.plot(lats, first * 100, "-", label="first order (2.42)")
         ax1.plot(lats, [f.east * 100 for f in exact], "o", label="exact, east")
         ax1.plot(lats, [-f.north * 1e5 for f in exact], "s", label="exact, south (×1000)")
-        ax1.set_xlabel("latitude (°)")
-        ax1.set_ylabel("deflection (cm)")
-        ax1.set_title(f"drop from {height:g} m")
-        ax1.axhline(0, color="0.7", lw=0.5 * _lw())
+        ax1.set(xlabel="latitude (°)", ylabel="deflection (cm)", title=f"drop from {height:g} m")
+        ax1.axhline(0, color="0.7", lw=0.5 * line_width())
         ax1.set_xticks([-90, -45, 0, 45, 90])
         ax1.legend(loc="best")
         heights = np.logspace(0, 4, n)
@@ -101,9 +92,7 @@ def plot_deflection(
             label="south, ¾ω² sin2λ h²/g",
         )
         ax2.loglog(heights, [-f.north for f in exact_h], "s", label="south, exact")
-        ax2.set_xlabel("height (m)")
-        ax2.set_ylabel("deflection (m)")
-        ax2.set_title(f"latitude {latitude:g}°")
+        ax2.set(xlabel="height (m)", ylabel="deflection (m)", title=f"latitude {latitude:g}°")
         ax2.legend(loc="upper left")
     return fig
 
@@ -130,8 +119,7 @@ def plot_trajectory(
             east = f"{result.east * k:.3g} {unit} east in {result.time:.4g} s"
             ax.plot(pos[:, 0] * k, pos[:, 2], label="exact")
             ax.plot(result.first_order_east * k, pos[-1, 2], "o", label="first order (2.42)")
-            ax.set_xlabel(f"east ({unit})")
-            ax.set_ylabel("height (m)")
+            ax.set(xlabel=f"east ({unit})", ylabel="height (m)")
             ax.legend(loc="upper right")
             few_ticks(ax, 5)
             if ax_s is not None:
@@ -212,7 +200,7 @@ def plot_foucault_rosette(
             )
         else:
             fig, ax_t = ax.figure, None
-        ax.plot(along, across, lw=0.3 * _lw())
+        ax.plot(along, across, lw=0.3 * line_width())
         r = float(np.max(r_xy))
         if planes.size:
             for a, ls, color, name in (
@@ -225,14 +213,13 @@ def plot_foucault_rosette(
                     [-r * np.sin(d), r * np.sin(d)],
                     ls,
                     color=color,
-                    lw=0.6 * _lw(),
+                    lw=0.6 * line_width(),
                     label=name,
                 )
             ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
         ax.set_aspect("equal", adjustable="datalim")
         few_ticks(ax, 7)
-        ax.set_xlabel("along the first swing (m)")
-        ax.set_ylabel("across it (m)")
+        ax.set(xlabel="along the first swing (m)", ylabel="across it (m)")
         if run.precession_rate is not None:
             turns = f"the swing plane turns {run.sense}"
         else:
@@ -256,7 +243,7 @@ def plot_foucault_rosette(
                     deg[0] + np.degrees(run.expected_rate * (ends - t[0])),
                     "--",
                     color="k",
-                    lw=0.6 * _lw(),
+                    lw=0.6 * line_width(),
                     label=f"−ω sin λ = {run.expected_rate:.3e} rad/s",
                 )
             ax_t.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
@@ -289,7 +276,7 @@ def plot_inertial_circles(
                 "",
                 xy=(x[5], y[5]),
                 xytext=(x[0], y[0]),
-                arrowprops={"arrowstyle": "->", "color": line.get_color(), "lw": _lw()},
+                arrowprops={"arrowstyle": "->", "color": line.get_color(), "lw": line_width()},
             )
         ax.set_aspect("equal", adjustable="datalim")
         few_ticks(ax, 6)
@@ -334,8 +321,8 @@ def animate_foucault(
         ax.set_xlabel("east (m)")
         ax.set_ylabel("north (m)")
         ax.set_title(f"Foucault pendulum from above, turning {run.sense}")
-        (plane,) = ax.plot([], [], "--", color="C3", lw=0.6 * _lw(), label="swing plane")
-        (tr,) = ax.plot([], [], lw=0.5 * _lw(), alpha=0.6)
+        (plane,) = ax.plot([], [], "--", color="C3", lw=0.6 * line_width(), label="swing plane")
+        (tr,) = ax.plot([], [], lw=0.5 * line_width(), alpha=0.6)
         (bob,) = ax.plot([], [], "o", color="C0", label="bob")
         ax.legend(loc="upper right")
         text = ax.text(0.02, 0.98, "", transform=ax.transAxes, va="top")

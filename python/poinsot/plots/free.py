@@ -1,8 +1,7 @@
 """Pictures of torque-free motion (matplotlib, the optional ``plot`` extra).
 
-Every function returns a :class:`matplotlib.figure.Figure` (or an animation) and never calls
-``plt.show()``. The physics comes from :class:`poinsot.FreeRigidBody`,
-:class:`poinsot.FreeSymmetricTop` and :func:`poinsot.simulate`; these functions only draw.
+The physics comes from :class:`poinsot.FreeRigidBody`, :class:`poinsot.FreeSymmetricTop` and
+:func:`poinsot.simulate`; these functions only draw (see :mod:`poinsot.plots`).
 """
 
 from __future__ import annotations
@@ -17,7 +16,7 @@ from ..dynamics import Trajectory
 from ..free import FreeRigidBody, FreeSymmetricTop
 from ..rotation import quaternion_to_matrix, rotate_vectors
 from ._axes import cube_limits, few_ticks, label_3d
-from ._mpl import figure_style, func_animation, new_figure, save_animation, subplots
+from ._mpl import figure_style, func_animation, line_width, new_figure, save_animation, subplots
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -73,22 +72,14 @@ def plot_omega(
                     t,
                     om[:, k],
                     color="k",
-                    lw=0.4 * _lw(),
+                    lw=0.4 * line_width(),
                     ls="--",
                     label="exact" if k == 0 else None,
                 )
-        ax.set_xlabel("t (s)")
-        ax.set_ylabel("ω, body components (rad/s)")
+        ax.set(xlabel="t (s)", ylabel="ω, body components (rad/s)")
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
         ax.set_title(title or "angular velocity in the body")
     return fig
-
-
-def _lw() -> float:
-    """The current style's line width (points)."""
-    from matplotlib import rcParams
-
-    return float(rcParams["lines.linewidth"])
 
 
 def _unit(v: np.ndarray) -> np.ndarray:
@@ -119,7 +110,7 @@ def _cone(
     r = np.linspace(0.0, 1.0, 8)[:, None, None]
     pts = r * rim[None]
     ax.plot_surface(pts[..., 0], pts[..., 1], pts[..., 2], color=color, alpha=0.3, linewidth=0)
-    ax.plot(rim[:, 0], rim[:, 1], rim[:, 2], color=color, lw=0.5 * _lw())
+    ax.plot(rim[:, 0], rim[:, 1], rim[:, 2], color=color, lw=0.5 * line_width())
     ax.plot(*np.stack([np.zeros(3), height * axis], axis=1), color=color, label=label)
     return pts.reshape(-1, 3)
 
@@ -235,10 +226,12 @@ def plot_cones(
             ax2.plot(rim_s[:, 0], rim_s[:, 1], color="C0", label=space_label)
             ax2.plot(rim_b[:, 0], rim_b[:, 1], color="C1", label=body_label)
             p = _along(ell, e1, e2, e3_path)
-            ax2.plot(p[:, 0], p[:, 1], color="C1", ls=":", lw=0.5 * _lw(), label="path of e₃")
+            ax2.plot(
+                p[:, 0], p[:, 1], color="C1", ls=":", lw=0.5 * line_width(), label="path of e₃"
+            )
             q = _along(ell, e1, e2, np.stack([w, body_axis]))
-            ax2.plot([0.0, q[0, 0]], [0.0, q[0, 1]], color="k", lw=0.5 * _lw())
-            ax2.plot([q[1, 0], q[0, 0]], [q[1, 1], q[0, 1]], color="C1", lw=0.5 * _lw())
+            ax2.plot([0.0, q[0, 0]], [0.0, q[0, 1]], color="k", lw=0.5 * line_width())
+            ax2.plot([q[1, 0], q[0, 0]], [q[1, 1], q[0, 1]], color="C1", lw=0.5 * line_width())
             ax2.plot(*q[0], "o", color="k", label="ω: the line of contact")
             ax2.plot(*q[1], "s", color="C1", label="e₃")
             ax2.plot(0.0, 0.0, "P", color="C0", label="L (fixed)")
@@ -308,7 +301,7 @@ def plot_polhodes(
                     p[:, 1],
                     p[:, 2],
                     color="C0",
-                    lw=0.5 * _lw(),
+                    lw=0.5 * line_width(),
                     label="polhodes" if first else None,
                 )
         # The separatrix: |L|² = 2T I_mid, through ±e_mid.
@@ -363,12 +356,11 @@ def plot_conservation(
                 t,
                 np.maximum(tr.momentum_error()[1:], 1e-17),
                 color=color,
-                lw=0.7 * _lw(),
+                lw=0.7 * line_width(),
                 ls=":",
                 label=f"{label}: |L|",
             )
-        ax.set_xlabel("t (s)")
-        ax.set_ylabel("relative error (1)")
+        ax.set(xlabel="t (s)", ylabel="relative error (1)")
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
         ax.set_title(title or "conservation of energy and |L|")
     return fig
@@ -502,9 +494,9 @@ def animate_free_body(
             )[0]
             for k in range(3)
         ]
-        rings = [ax.plot([], [], [], color="0.5", lw=0.4 * _lw())[0] for _ in sections]
+        rings = [ax.plot([], [], [], color="0.5", lw=0.4 * line_width())[0] for _ in sections]
         (omega_line,) = ax.plot([], [], [], color="C0", marker="o", markevery=[1], label="ω")
-        (omega_trail,) = ax.plot([], [], [], color="C0", lw=0.4 * _lw(), alpha=0.7)
+        (omega_trail,) = ax.plot([], [], [], color="C0", lw=0.4 * line_width(), alpha=0.7)
         ax.legend(loc="upper left", bbox_to_anchor=(0.0, 1.0))
         ax.set_title(f"free body: {body.regime}, period of ω {period:.4g} s")
         text = ax.text2D(0.98, 0.02, "", transform=ax.transAxes, ha="right")

@@ -1,7 +1,7 @@
 """Pictures of the heavy symmetric top (matplotlib, the optional ``plot`` extra).
 
-Every function returns a :class:`matplotlib.figure.Figure` (or an animation) and never calls
-``plt.show()``. The physics comes from :class:`poinsot.HeavyTop`; these functions only draw.
+The physics comes from :class:`poinsot.HeavyTop`; these functions only draw (see
+:mod:`poinsot.plots`).
 """
 
 from __future__ import annotations
@@ -14,7 +14,15 @@ import numpy as np
 
 from ..top import HeavyTop
 from ._axes import cube_limits, few_ticks, label_3d
-from ._mpl import check_style, figure_style, func_animation, new_figure, save_animation, subplots
+from ._mpl import (
+    check_style,
+    figure_style,
+    func_animation,
+    line_width,
+    new_figure,
+    save_animation,
+    subplots,
+)
 from ._mpl import pyplot as _pyplot
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -35,13 +43,6 @@ def _periods(top: HeavyTop, periods: float, fallback: float = 10.0) -> float:
     return periods * p if np.isfinite(p) else fallback
 
 
-def _lw() -> float:
-    """The current style's line width (points)."""
-    from matplotlib import rcParams
-
-    return float(rcParams["lines.linewidth"])
-
-
 def plot_effective_potential(
     top: HeavyTop, ax: Any = None, *, samples: int = 600, style: str = "paper"
 ) -> Figure:
@@ -57,14 +58,14 @@ def plot_effective_potential(
         v = top.effective_potential(theta)
         ep = top.reduced_energy
         ax.plot(theta, v, label="V(θ)  (2.110)")
-        ax.axhline(ep, color="C1", lw=0.6 * _lw(), label="E′  (2.109)")
+        ax.axhline(ep, color="C1", lw=0.6 * line_width(), label="E′  (2.109)")
         ax.plot([t1, t2], [ep, ep], "o", color="C3", label=f"θ₁ = {t1:.4g}, θ₂ = {t2:.4g} rad")
         span = max(ep - np.min(v), 1e-12)
         ax.set_ylim(np.min(v) - 0.5 * span, ep + 2.0 * span)
         few_ticks(ax, 6)
-        ax.set_xlabel("θ (rad)")
-        ax.set_ylabel("energy (J)")
-        ax.set_title(f"effective potential: {top.motion_class}")
+        ax.set(
+            xlabel="θ (rad)", ylabel="energy (J)", title=f"effective potential: {top.motion_class}"
+        )
         ax.legend(loc="upper center")
     return fig
 
@@ -110,10 +111,10 @@ def plot_axis_locus(
                 np.sin(th) * np.sin(a),
                 ls,
                 color="0.45",
-                lw=0.5 * _lw(),
+                lw=0.5 * line_width(),
                 label=name,
             )
-        ax.plot(np.cos(a), np.sin(a), color="k", lw=0.4 * _lw())
+        ax.plot(np.cos(a), np.sin(a), color="k", lw=0.4 * line_width())
         ax.plot([x[0]], [y[0]], "o", color="C3", label="t = 0")
         ax.set_aspect("equal")
         ax.set_xlim(-1.05, 1.05)
@@ -140,15 +141,19 @@ def plot_angles(
         fig, axes = subplots(style, 7.0, 7.0, 3, 1, sharex=True)
         axes[0].plot(t, theta)
         for th in top.turning_points:
-            axes[0].axhline(th, ls=":", color="gray", lw=0.5 * _lw())
+            axes[0].axhline(th, ls=":", color="gray", lw=0.5 * line_width())
         axes[0].set_ylabel("θ (rad)")
         axes[1].plot(t, phid)
-        axes[1].axhline(top.mean_precession_rate, ls="--", color="C1", lw=0.6 * _lw(), label="mean")
-        axes[1].axhline(0.0, color="k", lw=0.3 * _lw())
+        axes[1].axhline(
+            top.mean_precession_rate, ls="--", color="C1", lw=0.6 * line_width(), label="mean"
+        )
+        axes[1].axhline(0.0, color="k", lw=0.3 * line_width())
         axes[1].set_ylabel("φ̇ (rad/s)")
         axes[1].legend(loc="best")
         axes[2].plot(t, psid)
-        axes[2].axhline(top.mean_spin_rate, ls="--", color="C1", lw=0.6 * _lw(), label="mean")
+        axes[2].axhline(
+            top.mean_spin_rate, ls="--", color="C1", lw=0.6 * line_width(), label="mean"
+        )
         axes[2].set_ylabel("ψ̇ (rad/s)")
         axes[2].set_xlabel("t (s)")
         axes[2].legend(loc="best")
@@ -184,7 +189,7 @@ def plot_steady_precession(
         rates = [HeavyTop.steady_precession(I1, I3, mgl, theta0, w) for w in spins]
         slow = np.array([r.slow for r in rates])
         fast = np.array([r.fast for r in rates])
-        thin = 0.5 * _lw()
+        thin = 0.5 * line_width()
         ax.plot(spins, fast, color="C0", label="fast (exact, 2.116)")
         ax.plot(spins, slow, color="C1", label="slow (exact, 2.116)")
         ax.plot(
@@ -252,17 +257,27 @@ def animate_top(
         circle = np.stack([np.cos(a), np.sin(a)], axis=1)
         fig = new_figure(style, 6.0, 6.5)
         ax = fig.add_subplot(projection="3d")
-        ax.plot([0, 0], [0, 0], [0, 1.0], color="0.5", ls="--", lw=0.4 * _lw(), label="vertical Z")
+        ax.plot(
+            [0, 0],
+            [0, 0],
+            [0, 1.0],
+            color="0.5",
+            ls="--",
+            lw=0.4 * line_width(),
+            label="vertical Z",
+        )
         bands = []
         for th, ls in ((t1, ":"), (t2, "-.")):
             xy = np.sin(th) * circle
             bands.append(np.column_stack([xy, np.full(len(a), np.cos(th))]))
-            ax.plot(*bands[-1].T, ls, color="0.45", lw=0.5 * _lw())
+            ax.plot(*bands[-1].T, ls, color="0.45", lw=0.5 * line_width())
         ax.plot([], [], ":", color="0.45", label=f"circles θ₁ = {t1:.3g}, θ₂ = {t2:.3g} rad")
         (stick,) = ax.plot([], [], [], color="k", label="symmetry axis")
         (ring,) = ax.plot([], [], [], color="C0", label="disk")
         (mark,) = ax.plot([], [], [], color="C3", label="mark: the spin ψ")
-        (trail_line,) = ax.plot([], [], [], lw=0.5 * _lw(), color="C1", label="path of the tip")
+        (trail_line,) = ax.plot(
+            [], [], [], lw=0.5 * line_width(), color="C1", label="path of the tip"
+        )
         ax.plot([0], [0], [0], "o", color="k", ms=4)
         cube_limits(
             ax, np.concatenate([rings.reshape(-1, 3), tip, *bands, np.zeros((1, 3))]), zoom=0.85

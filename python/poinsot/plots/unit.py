@@ -306,7 +306,7 @@ def _info(
             0.0, 0.97, text, transform=side.transAxes, ha="left", va="top", linespacing=1.5
         )
         if key:
-            side.legend(handles=_handles(key), loc="lower left", frameon=False, borderaxespad=0.0)
+            _legend(side, "lower left", key, fontsize=None, frameon=False, borderaxespad=0.0)
     t.set_gid(gid)
     return t
 
@@ -457,19 +457,15 @@ def plot_translating_frame(
         ax1.set_xlim(lo[0] - 0.6 * unit, hi[0] + 2.8 * unit)
         ax1.set_ylim(lo[1] - 0.8 * unit, hi[1] + 4.0 * unit)
         ax1.set_aspect("equal", adjustable="box")
-        ax1.set_xlabel("x′ (m)")
-        ax1.set_ylabel("y′ (m)")
-        ax1.set_title("positions: r′ = R + r (2.1)")
-        ax1.legend(
-            handles=_handles(
-                [
-                    (_MOVING, f"R = {_vec(R)} m"),
-                    (_POSITION, f"r = {_vec(r)} m"),
-                    (_ACCEL, f"r′ = {_vec(seen.position)} m"),
-                ]
-            ),
-            loc="upper left",
-            fontsize="small",
+        ax1.set(xlabel="x′ (m)", ylabel="y′ (m)", title="positions: r′ = R + r (2.1)")
+        _legend(
+            ax1,
+            "upper left",
+            [
+                (_MOVING, f"R = {_vec(R)} m"),
+                (_POSITION, f"r = {_vec(r)} m"),
+                (_ACCEL, f"r′ = {_vec(seen.position)} m"),
+            ],
         )
         # -- accelerations (2.3)
         terms = seen.acceleration_terms
@@ -488,24 +484,27 @@ def plot_translating_frame(
         ax2.set_xlabel("x′ component (m/s²)")
         ax2.set_ylabel("y′ component (m/s²)")
         ax2.set_title("accelerations: r̈′ = R̈ + r̈ (2.3)")
-        ax2.legend(
-            handles=_handles(
-                [
-                    (_MOVING, f"R̈ = {_vec(A)} m/s² (the frame's)"),
-                    (_POSITION, f"r̈ = {_vec(rel)} m/s² (relative)"),
-                    (_ACCEL, f"r̈′ = {_vec(tot)} m/s²"),
-                ]
-            ),
-            loc="upper left",
-            fontsize="small",
+        _legend(
+            ax2,
+            "upper left",
+            [
+                (_MOVING, f"R̈ = {_vec(A)} m/s² (the frame's)"),
+                (_POSITION, f"r̈ = {_vec(rel)} m/s² (relative)"),
+                (_ACCEL, f"r̈′ = {_vec(tot)} m/s²"),
+            ],
         )
     return fig
 
 
-def _handles(items: list[tuple[str, str]]) -> list[Any]:
+def _legend(
+    ax: Any, loc: str, items: list[tuple[str, str]], fontsize: str | None = "small", **kw: Any
+) -> None:
+    """A legend at ``loc`` of coloured lines, ``items`` (colour, label); small text unless
+    ``fontsize`` says otherwise (``None``: the style's)."""
     from matplotlib.lines import Line2D
 
-    return [Line2D([], [], color=c, label=text) for c, text in items]
+    handles = [Line2D([], [], color=c, label=text) for c, text in items]
+    ax.legend(handles=handles, loc=loc, fontsize=fontsize, **kw)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -727,8 +726,7 @@ def _meridian(ax: Any, earth: Earth) -> float:
     _arrow2d(ax, (0.0, 0.0), (0.0, 0.55 * R), _OMEGA, "omega")
     _label2d(ax, (-0.04 * R, 0.45 * R), "ω", "omega-label", color=_OMEGA, ha="right", va="center")
     ax.set_aspect("equal", adjustable="box")
-    ax.set_xlabel("distance from the axis (10³ km)")
-    ax.set_ylabel("along the axis (10³ km)")
+    ax.set(xlabel="distance from the axis (10³ km)", ylabel="along the axis (10³ km)")
     return R
 
 
@@ -921,16 +919,14 @@ def plot_earth_coriolis(
         _latitude_arc(ax1, R, lat, lat_deg)
         ax1.set_xlim(-1.15 * R, 1.75 * R)
         ax1.set_ylim(-1.6 * R, 1.75 * R)
-        ax1.legend(
-            handles=_handles(
-                [
-                    (_OMEGA, f"ω = {_num(wn, 5)} rad/s"),
-                    ("C9", f"ω sin λ = {_num(w_enu[2], 4, scale=wn)} rad/s (vertical)"),
-                    ("C8", f"ω cos λ = {_num(w_enu[1], 4, scale=wn)} rad/s (north)"),
-                ]
-            ),
-            loc="lower left",
-            fontsize="small",
+        _legend(
+            ax1,
+            "lower left",
+            [
+                (_OMEGA, f"ω = {_num(wn, 5)} rad/s"),
+                ("C9", f"ω sin λ = {_num(w_enu[2], 4, scale=wn)} rad/s (vertical)"),
+                ("C8", f"ω cos λ = {_num(w_enu[1], 4, scale=wn)} rad/s (north)"),
+            ],
         )
         ax1.set_title(f"ω at P, {_hemisphere(lat_deg)} (2.33)")
         # -- the horizontal plane at P, from above
@@ -959,18 +955,15 @@ def plot_earth_coriolis(
         ax2.set_xlim(-1.15 * reach, 1.15 * reach)
         ax2.set_ylim(-1.8 * reach, 1.15 * reach)
         ax2.set_aspect("equal", adjustable="box")
-        ax2.set_xlabel("east (km)")
-        ax2.set_ylabel("north (km)")
-        ax2.legend(
-            handles=_handles(
-                [
-                    (_VELOCITY, f"v = {_num(v)} m/s"),
-                    (_ACCEL, "−2ω×v, horizontal part (2ω v ↦ |v|)"),
-                    (_MOVING, f"tracks over {_num(dur / 3600)} h: {tracks['north'].sense}"),
-                ]
-            ),
-            loc="lower left",
-            fontsize="small",
+        ax2.set(xlabel="east (km)", ylabel="north (km)")
+        _legend(
+            ax2,
+            "lower left",
+            [
+                (_VELOCITY, f"v = {_num(v)} m/s"),
+                (_ACCEL, "−2ω×v, horizontal part (2ω v ↦ |v|)"),
+                (_MOVING, f"tracks over {_num(dur / 3600)} h: {tracks['north'].sense}"),
+            ],
         )
         ax2.set_title(f"Coriolis: 2ω v sin λ = {_num(float(np.linalg.norm(a_n)))} m/s²")
     return fig
@@ -1024,9 +1017,9 @@ def plot_flow_into_low(
             ax.set_xlim(-lim, lim)
             ax.set_ylim(-lim, 1.5 * lim)
             ax.set_aspect("equal", adjustable="box")
-            ax.set_xlabel("east (km)")
-            ax.set_ylabel("north (km)")
-            ax.set_title(f"{_hemisphere(deg)}: {flow.sense}")
+            ax.set(
+                xlabel="east (km)", ylabel="north (km)", title=f"{_hemisphere(deg)}: {flow.sense}"
+            )
             ax.text(
                 0.03,
                 0.97,

@@ -47,10 +47,11 @@ imported only when a sweep runs (an ``ImportError`` names the extra when they ar
 
 from __future__ import annotations
 
-from typing import Any, Callable, Optional, Union
+import inspect
+from typing import Any, Callable, Union
 
 from .. import _core
-from ..dynamics import DEFAULT_MAX_STEPS, TorqueLike, _batch_settings
+from ..dynamics import DEFAULT_MAX_STEPS, _batch_settings
 from ..earth import _DROP, Earth, _fall_model
 from ..errors import ArgumentTypeError
 from ._run import run
@@ -315,19 +316,77 @@ def _doc(text: str, degrees: bool) -> str:
     return head.rstrip() + "\n" + (_DEGREES if degrees else "") + _COMMON + notes
 
 
-def heavy_top(
-    *,
-    degrees: bool = False,
-    quantities: Any = None,
-    samples: Optional[int] = None,
-    seed: Optional[int] = None,
-    paired: Optional[dict[str, Any]] = None,
-    client: Any = None,
-    chunks: Any = None,
-    to_zarr: Any = None,
-    progress: ProgressLike = None,
-    **keywords: Any,
-) -> Any:
+#: The options every sweep takes after its own (name, annotation, default), keyword-only; then
+#: ``**keywords``, the model's keywords.
+_OPTIONS = (
+    ("quantities", "Any", None),
+    ("samples", "Optional[int]", None),
+    ("seed", "Optional[int]", None),
+    ("paired", "Optional[dict[str, Any]]", None),
+    ("client", "Any", None),
+    ("chunks", "Any", None),
+    ("to_zarr", "Any", None),
+    ("progress", "ProgressLike", None),
+)
+_DEGREES_OPTION = (("degrees", "bool", False),)
+_NO_SETTINGS: Callable[[dict[str, Any], dict[str, Any]], Any] = lambda args, keywords: ((), None)
+
+
+def _sweep_function(
+    name: str,
+    model: Model,
+    doc: str,
+    own: tuple[tuple[str, str, Any], ...] = _DEGREES_OPTION,
+    settings: Callable[[dict[str, Any], dict[str, Any]], Any] = _NO_SETTINGS,
+) -> Callable[..., Any]:
+    """The public sweep ``name`` of ``model``: keyword-only arguments ``own`` (its settings, and
+    ``degrees`` where it takes angles), then :data:`_OPTIONS` and the model's ``**keywords``;
+    ``settings(arguments, keywords)`` gives the core's settings of the sweep and the attributes
+    that record them. Its docstring is ``doc`` completed by :func:`_doc`."""
+    P = inspect.Parameter
+    signature = inspect.Signature(
+        [P(n, P.KEYWORD_ONLY, default=d, annotation=a) for n, a, d in own + _OPTIONS]
+        + [P("keywords", P.VAR_KEYWORD, annotation="Any")],
+        return_annotation="Any",
+    )
+
+    def sweep(**given: Any) -> Any:
+        try:
+            bound = signature.bind(**given)
+        except TypeError as exc:  # a required setting missing
+            raise TypeError(f"{name}() {exc}") from None
+        bound.apply_defaults()
+        args = bound.arguments
+        keywords = dict(args["keywords"])
+        setting, attrs = settings(args, keywords)
+        p = plan(
+            model,
+            keywords,
+            degrees=args.get("degrees", False),
+            samples=args["samples"],
+            seed=args["seed"],
+            paired=args["paired"],
+            quantities=args["quantities"],
+            settings=setting,
+            attrs=attrs,
+        )
+        return run(
+            p,
+            client=args["client"],
+            chunks=args["chunks"],
+            to_zarr=args["to_zarr"],
+            progress=args["progress"],
+        )
+
+    sweep.__name__ = sweep.__qualname__ = name
+    sweep.__doc__ = _doc(doc, any(n == "degrees" for n, _, _ in own))
+    sweep.__signature__ = signature  # type: ignore[attr-defined]
+    return sweep
+
+
+heavy_top = _sweep_function(
+    "heavy_top",
+    _HEAVY_TOP,
     """The heavy symmetric top (:class:`poinsot.HeavyTop`, eqs. 2.102–2.121) at every point of
     a grid of its keywords.
 
@@ -348,32 +407,12 @@ def heavy_top(
     ``p_phi``, ``p_psi`` (kg m²/s), ``energy``, ``reduced_energy`` (J),
     ``is_sleeping_stable``: at each point the property of that name of
     ``HeavyTop(I1, I3, mgl, theta, ...)``, bit for bit.
-    """
-    p = plan(
-        _HEAVY_TOP,
-        keywords,
-        degrees=degrees,
-        samples=samples,
-        seed=seed,
-        paired=paired,
-        quantities=quantities,
-    )
-    return run(p, client=client, chunks=chunks, to_zarr=to_zarr, progress=progress)
+    """,
+)
 
-
-def free_body(
-    *,
-    degrees: bool = False,
-    quantities: Any = None,
-    samples: Optional[int] = None,
-    seed: Optional[int] = None,
-    paired: Optional[dict[str, Any]] = None,
-    client: Any = None,
-    chunks: Any = None,
-    to_zarr: Any = None,
-    progress: ProgressLike = None,
-    **keywords: Any,
-) -> Any:
+free_body = _sweep_function(
+    "free_body",
+    _FREE_BODY,
     """The torque-free rigid body (:class:`poinsot.FreeRigidBody`) at every point of a grid of
     its moments and initial angular velocities.
 
@@ -394,36 +433,34 @@ def free_body(
     ``frequency`` (rad/s), ``pole_axis`` (-1: none), ``energy`` (J), ``angular_momentum``
     (kg m²/s); and :func:`poinsot.axis_stability` at the spin |ω₀|: ``axis_stability``
     ("stable", "unstable", "neutral") and ``axis_rate`` (1/s) along ``axis``.
-    """
-    p = plan(
-        _FREE_BODY,
-        keywords,
-        degrees=degrees,
-        samples=samples,
-        seed=seed,
-        paired=paired,
-        quantities=quantities,
+    """,
+)
+
+
+def _simulate_settings(args: dict[str, Any], keywords: dict[str, Any]) -> Any:
+    """The settings of :func:`simulate` (as ``simulate_batch``'s) and their attributes."""
+    settings = _batch_settings(
+        args["torque"],
+        args["duration"],
+        args["method"],
+        args["dt"],
+        args["max_steps"],
+        "a sweep takes the built-in torques only (no callables), as simulate_batch",
     )
-    return run(p, client=client, chunks=chunks, to_zarr=to_zarr, progress=progress)
+    dur, _, _, _, m, step, steps = settings
+    attrs = {
+        "duration": dur,
+        "torque": repr(args["torque"]),
+        "method": m,
+        "dt": "default" if step is None else step,
+        "max_steps": steps,
+    }
+    return settings, attrs
 
 
-def simulate(
-    *,
-    duration: float,
-    torque: TorqueLike = None,
-    method: str = "rk4",
-    dt: Optional[float] = None,
-    max_steps: int = DEFAULT_MAX_STEPS,
-    quantities: Any = None,
-    samples: Optional[int] = None,
-    seed: Optional[int] = None,
-    paired: Optional[dict[str, Any]] = None,
-    client: Any = None,
-    chunks: Any = None,
-    to_zarr: Any = None,
-    progress: ProgressLike = None,
-    **keywords: Any,
-) -> Any:
+simulate = _sweep_function(
+    "simulate",
+    _SIMULATE,
     """Ensembles of rigid bodies under a torque: the final state of every point of a grid of
     moments and initial states, integrated by :func:`poinsot.simulate_batch` (Euler's equations
     2.71 with the attitude).
@@ -443,54 +480,38 @@ def simulate(
 
     The results: ``omega`` (rad/s, along ``axis``) and ``attitude`` (along ``quaternion``) at
     ``duration``: at each point those of ``simulate_batch`` of that body, bit for bit.
-    """
-    settings = _batch_settings(
-        torque,
-        duration,
-        method,
-        dt,
-        max_steps,
-        "a sweep takes the built-in torques only (no callables), as simulate_batch",
-    )
-    dur, _, _, _, m, step, steps = settings
-    p = plan(
-        _SIMULATE,
-        keywords,
-        degrees=False,
-        samples=samples,
-        seed=seed,
-        paired=paired,
-        quantities=quantities,
-        settings=settings,
-        attrs={
-            "duration": dur,
-            "torque": repr(torque),
-            "method": m,
-            "dt": "default" if step is None else step,
-            "max_steps": steps,
-        },
-    )
-    return run(p, client=client, chunks=chunks, to_zarr=to_zarr, progress=progress)
+    """,
+    (
+        ("duration", "float", inspect.Parameter.empty),
+        ("torque", "TorqueLike", None),
+        ("method", "str", "rk4"),
+        ("dt", "Optional[float]", None),
+        ("max_steps", "int", DEFAULT_MAX_STEPS),
+    ),
+    _simulate_settings,
+)
+
+#: The settings of the Earth's sweeps (as :meth:`poinsot.Earth.drop`'s), then ``degrees``.
+_EARTH_OPTIONS = (
+    ("earth", "Optional[Earth]", None),
+    ("gravity", "str", "uniform"),
+    ("rotation", "bool", True),
+    ("centrifugal", "bool", True),
+    ("rtol", "float", _DROP["rtol"]),
+    ("atol", "float", _DROP["atol"]),
+    ("max_steps", "int", _DROP["max_steps"]),
+) + _DEGREES_OPTION
 
 
-def _earth_settings(
-    earth: Any,
-    gravity: Any,
-    rotation: Any,
-    centrifugal: Any,
-    rtol: Any,
-    atol: Any,
-    max_steps: Any,
-) -> tuple[tuple[Any, ...], dict[str, Any]]:
+def _earth_settings(args: dict[str, Any], keywords: dict[str, Any]) -> Any:
     """The core's Earth and fall model of a sweep (its settings), and the attributes that
-    record them."""
-    if earth is None:
-        earth = Earth()
+    record them; a projectile's ``height`` is 0 when not given."""
+    earth = Earth() if args["earth"] is None else args["earth"]
     if not isinstance(earth, Earth):
         raise ArgumentTypeError(
             f"earth: must be a poinsot.Earth or None, got {type(earth).__name__}"
         )
-    model = _fall_model(gravity, rotation, centrifugal, rtol, atol, max_steps)
+    model = _fall_model(*(args[n] for n, _, _ in _EARTH_OPTIONS[1:7]))
     attrs: dict[str, Any] = {
         "rotation_rate": earth.rotation_rate,
         "radius": earth.radius,
@@ -505,26 +526,9 @@ def _earth_settings(
     return (earth._core, model), attrs
 
 
-def drop(
-    *,
-    earth: Optional[Earth] = None,
-    gravity: str = "uniform",
-    rotation: bool = True,
-    centrifugal: bool = True,
-    rtol: float = _DROP["rtol"],
-    atol: float = _DROP["atol"],
-    max_steps: int = _DROP["max_steps"],
-    degrees: bool = False,
-    quantities: Any = None,
-    samples: Optional[int] = None,
-    seed: Optional[int] = None,
-    paired: Optional[dict[str, Any]] = None,
-    client: Any = None,
-    chunks: Any = None,
-    to_zarr: Any = None,
-    progress: ProgressLike = None,
-    **keywords: Any,
-) -> Any:
+drop = _sweep_function(
+    "drop",
+    _DROP_MODEL,
     """A body dropped from rest on the rotating Earth (:meth:`poinsot.Earth.drop`, eqs.
     2.30–2.42) at every point of a grid of heights and latitudes.
 
@@ -541,42 +545,21 @@ def drop(
     The results, at each point those of ``earth.drop(height, latitude, ...)``, bit for bit:
     ``time`` (s), ``east``, ``north`` (m), and the closed forms ``first_order_east`` (2.42) and
     ``second_order_south`` (m).
-    """
-    settings, attrs = _earth_settings(earth, gravity, rotation, centrifugal, rtol, atol, max_steps)
-    p = plan(
-        _DROP_MODEL,
-        keywords,
-        degrees=degrees,
-        samples=samples,
-        seed=seed,
-        paired=paired,
-        quantities=quantities,
-        settings=settings,
-        attrs=attrs,
-    )
-    return run(p, client=client, chunks=chunks, to_zarr=to_zarr, progress=progress)
+    """,
+    _EARTH_OPTIONS,
+    _earth_settings,
+)
 
 
-def projectile(
-    *,
-    earth: Optional[Earth] = None,
-    gravity: str = "uniform",
-    rotation: bool = True,
-    centrifugal: bool = True,
-    rtol: float = _DROP["rtol"],
-    atol: float = _DROP["atol"],
-    max_steps: int = _DROP["max_steps"],
-    degrees: bool = False,
-    quantities: Any = None,
-    samples: Optional[int] = None,
-    seed: Optional[int] = None,
-    paired: Optional[dict[str, Any]] = None,
-    client: Any = None,
-    chunks: Any = None,
-    to_zarr: Any = None,
-    progress: ProgressLike = None,
-    **keywords: Any,
-) -> Any:
+def _projectile_settings(args: dict[str, Any], keywords: dict[str, Any]) -> Any:
+    """As :func:`_earth_settings`, the launch height 0 when not given."""
+    keywords.setdefault("height", 0.0)
+    return _earth_settings(args, keywords)
+
+
+projectile = _sweep_function(
+    "projectile",
+    _PROJECTILE,
     """A projectile on the rotating Earth (:meth:`poinsot.Earth.projectile`) at every point of
     a grid of launches.
 
@@ -593,23 +576,7 @@ def projectile(
 
     The results, at each point those of ``earth.projectile(...)``, bit for bit: ``time`` (s),
     ``east``, ``north``, ``range``, ``downrange``, ``drift`` (m).
-    """
-    settings, attrs = _earth_settings(earth, gravity, rotation, centrifugal, rtol, atol, max_steps)
-    keywords.setdefault("height", 0.0)
-    p = plan(
-        _PROJECTILE,
-        keywords,
-        degrees=degrees,
-        samples=samples,
-        seed=seed,
-        paired=paired,
-        quantities=quantities,
-        settings=settings,
-        attrs=attrs,
-    )
-    return run(p, client=client, chunks=chunks, to_zarr=to_zarr, progress=progress)
-
-
-for _f, _degrees in ((heavy_top, 1), (free_body, 1), (simulate, 0), (drop, 1), (projectile, 1)):
-    _f.__doc__ = _doc(_f.__doc__ or "", bool(_degrees))
-del _f, _degrees
+    """,
+    _EARTH_OPTIONS,
+    _projectile_settings,
+)
