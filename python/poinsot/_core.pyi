@@ -170,8 +170,6 @@ DEFAULTS: _Defaults
 
 def memory_budget() -> int: ...
 def set_memory_budget(bytes: int) -> int: ...
-def check_count(argument: str, count: int, minimum: int, bytes_each: int) -> None: ...
-def check_memory(argument: str, count: float, bytes_each: int) -> None: ...
 def _test_panic(message: str, place: str = ...) -> None: ...
 def error_classes() -> list[tuple[str, str]]: ...
 
@@ -729,6 +727,31 @@ def free_body_states(
 # ---- dynamics (dynamics.rs) ----
 # torque_kind: "none", "body", "space", "gravity", "gravity_gradient" or "callback"
 # (torque_fn(t, omega (3,), attitude (4,)) -> 3 floats, body components).
+@final
+class TrajectoryCore:
+    @property
+    def t(self) -> NDArray[np.float64]: ...
+    @property
+    def omega(self) -> NDArray[np.float64]: ...
+    @property
+    def attitude(self) -> NDArray[np.float64]: ...
+    @property
+    def angular_momentum(self) -> NDArray[np.float64]: ...
+    @property
+    def energy(self) -> NDArray[np.float64]: ...
+    @property
+    def potential(self) -> NDArray[np.float64]: ...
+    @property
+    def power(self) -> NDArray[np.float64]: ...
+    @property
+    def method(self) -> str: ...
+    @property
+    def step(self) -> float | None: ...
+    @property
+    def steps(self) -> int: ...
+    @property
+    def torque_evaluations(self) -> int: ...
+
 def dynamics_simulate(
     inertia: NDArray[np.float64],
     omega0: NDArray[np.float64],
@@ -745,7 +768,7 @@ def dynamics_simulate(
     atol: float,
     max_steps: int,
     progress: Callable[[float], Any] | None,
-) -> dict[str, Any]: ...
+) -> TrajectoryCore: ...
 def dynamics_simulate_batch(
     moments: NDArray[np.float64],
     omega0: NDArray[np.float64],
@@ -855,21 +878,21 @@ SWEEP_DROP_KEYWORDS: list[str]
 SWEEP_PROJECTILE_KEYWORDS: list[str]
 
 def sweep_categories() -> dict[str, list[str]]: ...
-def sweep_check_memory(dims: Sequence[tuple[str, int, int]], bytes_each: int) -> None: ...
+def sweep_check_memory(dims: Sequence[tuple[str, int, int, str]], bytes_each: int) -> None: ...
 def sweep_heavy_top(
-    dims: Sequence[tuple[str, int, int]],
+    dims: Sequence[tuple[str, int, int, str]],
     columns: Sequence[tuple[str, NDArray[np.float64], int | None]],
     check_only: bool,
     progress: Callable[[float], Any] | None = None,
 ) -> dict[str, NDArray[Any]] | None: ...
 def sweep_free_body(
-    dims: Sequence[tuple[str, int, int]],
+    dims: Sequence[tuple[str, int, int, str]],
     columns: Sequence[tuple[str, NDArray[np.float64], int | None]],
     check_only: bool,
     progress: Callable[[float], Any] | None = None,
 ) -> dict[str, NDArray[Any]] | None: ...
 def sweep_simulate(
-    dims: Sequence[tuple[str, int, int]],
+    dims: Sequence[tuple[str, int, int, str]],
     columns: Sequence[tuple[str, NDArray[np.float64], int | None]],
     duration: float,
     torque_kind: str,
@@ -882,7 +905,7 @@ def sweep_simulate(
     progress: Callable[[float], Any] | None = None,
 ) -> dict[str, NDArray[Any]] | None: ...
 def sweep_drop(
-    dims: Sequence[tuple[str, int, int]],
+    dims: Sequence[tuple[str, int, int, str]],
     columns: Sequence[tuple[str, NDArray[np.float64], int | None]],
     earth: EarthCore,
     model: FallModel,
@@ -890,7 +913,7 @@ def sweep_drop(
     progress: Callable[[float], Any] | None = None,
 ) -> dict[str, NDArray[Any]] | None: ...
 def sweep_projectile(
-    dims: Sequence[tuple[str, int, int]],
+    dims: Sequence[tuple[str, int, int, str]],
     columns: Sequence[tuple[str, NDArray[np.float64], int | None]],
     earth: EarthCore,
     model: FallModel,

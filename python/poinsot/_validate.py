@@ -5,8 +5,6 @@ from __future__ import annotations
 
 import math
 import sys
-from collections.abc import Iterator
-from contextlib import contextmanager
 from typing import Any
 
 import numpy as np
@@ -222,18 +220,3 @@ def as_callable(value: Any, name: str, *, optional: bool = True) -> Any:
             f"{name}: must be callable{' or None' if optional else ''}, got {type(value).__name__}"
         )
     return value
-
-
-@contextmanager
-def public_names(**names: str) -> Iterator[None]:
-    """Translate the argument names of errors from the core into the public API's: inside
-    ``with public_names(inertia="body", t="duration"):`` an error ``"t: ..."`` from the core is
-    raised as ``"duration: ..."`` (same type). For core functions whose arguments are derived
-    from the user's (a tensor from a body, a strength from a pull)."""
-    try:
-        yield
-    except PoinsotError as exc:
-        head, sep, rest = str(exc).partition(":")
-        if sep and head in names:
-            raise type(exc)(f"{names[head]}:{rest}") from None
-        raise

@@ -170,18 +170,18 @@ class Trajectory(show.Displayed):
         Work counters.
     """
 
-    def __init__(self, d: dict[str, Any]) -> None:
-        self.t: FloatArray = np.asarray(d["t"])
-        self.omega: FloatArray = np.asarray(d["omega"])
-        self.attitude: FloatArray = np.asarray(d["attitude"])
-        self.angular_momentum: FloatArray = np.asarray(d["angular_momentum"])
-        self.energy: FloatArray = np.asarray(d["energy"])
-        self.potential_energy: FloatArray = np.asarray(d["potential"])
-        self.power: FloatArray = np.asarray(d["power"])
-        self.method: str = str(d["method"])
-        self.step: float | None = d["step"]
-        self.steps: int = int(d["steps"])
-        self.torque_evaluations: int = int(d["torque_evaluations"])
+    def __init__(self, core: _core.TrajectoryCore) -> None:
+        self.t: FloatArray = core.t
+        self.omega: FloatArray = core.omega
+        self.attitude: FloatArray = core.attitude
+        self.angular_momentum: FloatArray = core.angular_momentum
+        self.energy: FloatArray = core.energy
+        self.potential_energy: FloatArray = core.potential
+        self.power: FloatArray = core.power
+        self.method: str = core.method
+        self.step: float | None = core.step
+        self.steps: int = core.steps
+        self.torque_evaluations: int = core.torque_evaluations
 
     def _rows(self) -> list[show.Row]:
         return [
@@ -372,7 +372,7 @@ def simulate(
                 raise PoinsotError(f"torque: the callable must return 3 real numbers, got {out!r}")
             return out.astype(np.float64).reshape(-1).tolist()
 
-    d = _core.dynamics_simulate(
+    core = _core.dynamics_simulate(
         inertia,
         w0,
         q0,
@@ -389,7 +389,7 @@ def simulate(
         steps,
         progress,
     )
-    return Trajectory(d)
+    return Trajectory(core)
 
 
 def _batch_settings(

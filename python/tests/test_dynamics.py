@@ -393,3 +393,25 @@ def test_torques_are_checked_when_made():
         poinsot.GravityTorque(mgl=np.nan)
     with pytest.raises(poinsot.PoinsotError, match="^mean_motion: "):
         poinsot.GravityGradientTorque(np.inf)
+
+
+def test_the_core_returns_a_typed_trajectory() -> None:
+    """simulate's one core call returns the class _core.TrajectoryCore (typed in _core.pyi,
+    which holds no dict[str, Any]), whose values the Trajectory shows as they are."""
+    from pathlib import Path
+
+    from poinsot import _core
+
+    stub = Path(_core.__file__).with_name("_core.pyi").read_text(encoding="utf-8")
+    assert "dict[str, Any]" not in stub
+    tr = simulate(I123, W0, 1.0, method="rk4", dt=0.01, samples=11)
+    core = _core.dynamics_simulate(
+        np.diag(I123), W0, None, 1.0, "none", np.zeros(3), 0.0, None, "rk4", 0.01, 11,
+        1e-10, 1e-12, 10**6, None,
+    )  # fmt: skip
+    assert isinstance(core, _core.TrajectoryCore)
+    for name in ("t", "omega", "attitude", "angular_momentum", "energy", "power"):
+        np.testing.assert_array_equal(getattr(tr, name), getattr(core, name))
+    np.testing.assert_array_equal(tr.potential_energy, core.potential)
+    assert (tr.method, tr.step, tr.steps) == (core.method, core.step, core.steps)
+    assert tr.t.shape == (11,) and tr.omega.shape == (11, 3) and tr.attitude.shape == (11, 4)

@@ -194,7 +194,7 @@ pub fn mat3(argument: &str, a: &PyReadonlyArray2<'_, f64>) -> PyResult<[[f64; 3]
 
 /// A (3, 3) float array → a core matrix.
 pub fn matrix(argument: &str, a: &PyReadonlyArray2<'_, f64>) -> PyResult<Mat3> {
-    mat3(argument, a).map(|m| to_mat(&m))
+    mat3(argument, a).map(|m| Mat3::from_fn(|i, j| m[i][j]))
 }
 
 /// An (N, K) float array → rows of K floats, naming `argument` on a shape error.
@@ -326,11 +326,6 @@ pub fn a3(v: &Vec3) -> [f64; 3] {
     [v.x, v.y, v.z]
 }
 
-/// Row-major `[[f64; 3]; 3]` → a core matrix (nalgebra stores columns; same matrix).
-pub fn to_mat(m: &[[f64; 3]; 3]) -> Mat3 {
-    Mat3::from_fn(|i, j| m[i][j])
-}
-
 /// A core matrix → row-major `[[f64; 3]; 3]`.
 pub fn from_mat(m: &Mat3) -> [[f64; 3]; 3] {
     std::array::from_fn(|i| std::array::from_fn(|j| m[(i, j)]))
@@ -422,31 +417,27 @@ impl FromIterator<f64> for Values {
     }
 }
 
-impl<'py> IntoPyObject<'py> for Vector {
-    type Target = PyArray1<f64>;
-    type Output = Bound<'py, PyArray1<f64>>;
-    type Error = std::convert::Infallible;
-    fn into_pyobject(self, py: Python<'py>) -> Result<Self::Output, Self::Error> {
-        Ok(vec3_out(py, a3(&self.0)))
-    }
+/// `IntoPyObject` for the result types made without failing: `impl[generics] Type => Target,
+/// |value, py| array;`.
+macro_rules! into_array {
+    ($(impl[$($generics:tt)*] $ty:ty => $target:ty, |$v:ident, $py:ident| $make:expr;)+) => {
+        $(impl<'py, $($generics)*> IntoPyObject<'py> for $ty {
+            type Target = $target;
+            type Output = Bound<'py, $target>;
+            type Error = std::convert::Infallible;
+            fn into_pyobject(self, $py: Python<'py>) -> Result<Self::Output, Self::Error> {
+                let $v = self;
+                Ok($make)
+            }
+        })+
+    };
 }
 
-impl<'py, const K: usize> IntoPyObject<'py> for Numbers<K> {
-    type Target = PyArray1<f64>;
-    type Output = Bound<'py, PyArray1<f64>>;
-    type Error = std::convert::Infallible;
-    fn into_pyobject(self, py: Python<'py>) -> Result<Self::Output, Self::Error> {
-        Ok(PyArray1::from_slice(py, &self.0))
-    }
-}
-
-impl<'py> IntoPyObject<'py> for Matrix {
-    type Target = PyArray2<f64>;
-    type Output = Bound<'py, PyArray2<f64>>;
-    type Error = std::convert::Infallible;
-    fn into_pyobject(self, py: Python<'py>) -> Result<Self::Output, Self::Error> {
-        Ok(mat3_out(py, from_mat(&self.0)))
-    }
+into_array! {
+    impl[] Vector => PyArray1<f64>, |v, py| vec3_out(py, a3(&v.0));
+    impl[const K: usize] Numbers<K> => PyArray1<f64>, |v, py| PyArray1::from_slice(py, &v.0);
+    impl[] Matrix => PyArray2<f64>, |v, py| mat3_out(py, from_mat(&v.0));
+    impl[] Values => PyArray1<f64>, |v, py| PyArray1::from_vec(py, v.0);
 }
 
 impl<'py, const K: usize> IntoPyObject<'py> for Rows<K> {
@@ -457,14 +448,5 @@ impl<'py, const K: usize> IntoPyObject<'py> for Rows<K> {
         // The rows moved into numpy, not copied (a copy of 10⁸ rows held the GIL ~0.5 s).
         let n = self.0.len();
         PyArray1::from_vec(py, self.0.into_flattened()).reshape([n, K])
-    }
-}
-
-impl<'py> IntoPyObject<'py> for Values {
-    type Target = PyArray1<f64>;
-    type Output = Bound<'py, PyArray1<f64>>;
-    type Error = std::convert::Infallible;
-    fn into_pyobject(self, py: Python<'py>) -> Result<Self::Output, Self::Error> {
-        Ok(PyArray1::from_vec(py, self.0))
     }
 }

@@ -6,17 +6,17 @@
 //! the torque in body components.
 use std::cell::RefCell;
 
-use numpy::{PyArray1, PyReadonlyArray1, PyReadonlyArray2};
+use numpy::{PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
 use poinsot::dynamics::{
-    self as dyn_core, BodyInertia, Method, SimulateOptions, TorqueContext, TorqueKind, TorqueModel,
+    self as dyn_core, BodyInertia, Method, SimulateOptions, Torque, TorqueContext, TorqueKind,
+    TorqueModel, Trajectory,
 };
 use poinsot::Vec3;
 use poinsot_py_macros::export;
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
 
 use crate::control::{run, run_attached};
-use crate::convert::{matrix, opt_quat, parse, rows_into, rows_out, rows_view, vector};
+use crate::convert::{matrix, opt_quat, parse, rows_into, rows_view, vector};
 use crate::errors::{invalid, IntoPy};
 
 /// A torque model calling Python; the first Python error is kept and NaN returned (which stops
@@ -69,9 +69,67 @@ impl TorqueModel for PyTorque<'_, '_> {
     }
 }
 
-/// Simulates one body (see `poinsot.simulate`); returns a dict of numpy arrays ("t", "omega",
-/// "attitude", "angular_momentum", "energy", "potential", "power") and counters ("method",
-/// "step", "steps", "torque_evaluations").
+/// One body's sampled trajectory (the core's `dynamics::Trajectory`; see `poinsot.Trajectory`):
+/// t (N,) (s), omega (N, 3) (rad/s, body), attitude (N, 4) ([w, x, y, z]), angular_momentum
+/// (N, 3) (kg·m²/s, space), energy, potential (J) and power (W) (N,), the method's name, the
+/// fixed step (s, None for "exact" and "dop853") and the work counters.
+#[pyclass(module = "poinsot._core", name = "TrajectoryCore", frozen, get_all)]
+pub struct PyTrajectory {
+    t: Py<PyArray1<f64>>,
+    omega: Py<PyArray2<f64>>,
+    attitude: Py<PyArray2<f64>>,
+    angular_momentum: Py<PyArray2<f64>>,
+    energy: Py<PyArray1<f64>>,
+    potential: Py<PyArray1<f64>>,
+    power: Py<PyArray1<f64>>,
+    method: String,
+    step: Option<f64>,
+    steps: usize,
+    torque_evaluations: usize,
+}
+
+impl PyTrajectory {
+    fn new(py: Python<'_>, tr: Trajectory) -> PyResult<Self> {
+        Ok(Self {
+            t: PyArray1::from_vec(py, tr.t).unbind(),
+            omega: rows_into(py, tr.omega)?.unbind(),
+            attitude: rows_into(py, tr.attitude)?.unbind(),
+            angular_momentum: rows_into(py, tr.angular_momentum)?.unbind(),
+            energy: PyArray1::from_vec(py, tr.energy).unbind(),
+            potential: PyArray1::from_vec(py, tr.potential).unbind(),
+            power: PyArray1::from_vec(py, tr.power).unbind(),
+            method: tr.method.name(),
+            step: tr.step,
+            steps: tr.steps,
+            torque_evaluations: tr.torque_evaluations,
+        })
+    }
+}
+
+/// The settings of a batch of bodies (`simulate_batch`, `sweep.simulate`) as Python passes them
+/// — the torque's kind, (3,) vector and scalar, the method, the step and the step limit — as
+/// the core's torque and options.
+pub(crate) fn batch_settings(
+    torque_kind: &str,
+    torque_vector: &PyReadonlyArray1<'_, f64>,
+    torque_scalar: f64,
+    method: &str,
+    dt: Option<f64>,
+    max_steps: usize,
+) -> PyResult<(Torque, SimulateOptions)> {
+    let torque = parse::<TorqueKind>(torque_kind)?
+        .torque(vector("torque", torque_vector)?, torque_scalar)
+        .py()?;
+    let opts = SimulateOptions {
+        method: Method::parse(method).py()?,
+        dt,
+        max_steps,
+        ..SimulateOptions::default()
+    };
+    Ok((torque, opts))
+}
+
+/// Simulates one body (see `poinsot.simulate`).
 #[export]
 #[pyo3(signature = (inertia, omega0, attitude0, duration, torque_kind, torque_vector, torque_scalar, torque_fn, method, dt, samples, rtol, atol, max_steps, progress))]
 #[allow(clippy::too_many_arguments)]
@@ -92,13 +150,12 @@ fn dynamics_simulate<'py>(
     atol: f64,
     max_steps: usize,
     progress: Option<Bound<'py, PyAny>>,
-) -> PyResult<Bound<'py, PyDict>> {
+) -> PyResult<PyTrajectory> {
     let body = BodyInertia::from_tensor(&matrix("body", &inertia)?).py()?;
     let w0 = vector("omega0", &omega0)?;
     let q0 = opt_quat("attitude0", &attitude0)?;
-    let method = Method::parse(method).py()?;
     let opts = SimulateOptions {
-        method,
+        method: Method::parse(method).py()?,
         dt,
         samples,
         rtol,
@@ -128,19 +185,7 @@ fn dynamics_simulate<'py>(
             dyn_core::simulate(&body, w0, q0, duration, &mut torque, &opts)
         })?
     };
-    let d = PyDict::new(py);
-    d.set_item("t", PyArray1::from_vec(py, tr.t))?;
-    d.set_item("omega", rows_out(py, &tr.omega))?;
-    d.set_item("attitude", rows_out(py, &tr.attitude))?;
-    d.set_item("angular_momentum", rows_out(py, &tr.angular_momentum))?;
-    d.set_item("energy", PyArray1::from_vec(py, tr.energy))?;
-    d.set_item("potential", PyArray1::from_vec(py, tr.potential))?;
-    d.set_item("power", PyArray1::from_vec(py, tr.power))?;
-    d.set_item("method", tr.method.name())?;
-    d.set_item("step", tr.step)?;
-    d.set_item("steps", tr.steps)?;
-    d.set_item("torque_evaluations", tr.torque_evaluations)?;
-    Ok(d)
+    PyTrajectory::new(py, tr)
 }
 
 /// Simulates many bodies in parallel (see `poinsot.simulate_batch`): principal moments (N, 3),
@@ -161,28 +206,21 @@ fn dynamics_simulate_batch<'py>(
     dt: Option<f64>,
     max_steps: usize,
     progress: Option<Bound<'py, PyAny>>,
-) -> PyResult<(
-    Bound<'py, numpy::PyArray2<f64>>,
-    Bound<'py, numpy::PyArray2<f64>>,
-    usize,
-)> {
+) -> PyResult<(Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<f64>>, usize)> {
     let m = rows_view::<3>("moments", &moments)?;
     let w = rows_view::<3>("omega0", &omega0)?;
     let q = match &attitude0 {
         Some(a) => Some(rows_view::<4>("attitude0", a)?),
         None => None,
     };
-    let torque_vector = vector("torque", &torque_vector)?;
-    let torque = parse::<TorqueKind>(torque_kind)?
-        .torque(torque_vector, torque_scalar)
-        .py()?;
-    let method = Method::parse(method).py()?;
-    let opts = SimulateOptions {
+    let (torque, opts) = batch_settings(
+        torque_kind,
+        &torque_vector,
+        torque_scalar,
         method,
         dt,
         max_steps,
-        ..SimulateOptions::default()
-    };
+    )?;
     let out = run(py, progress.as_ref(), || {
         dyn_core::simulate_batch(&m, &w, q.as_deref(), duration, &torque, &opts)
     })?;
@@ -195,7 +233,7 @@ fn dynamics_simulate_batch<'py>(
 
 /// Registers this file's functions on the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(dynamics_simulate, m)?)?;
-    m.add_function(wrap_pyfunction!(dynamics_simulate_batch, m)?)?;
+    m.add_class::<PyTrajectory>()?;
+    add_functions!(m; dynamics_simulate, dynamics_simulate_batch);
     Ok(())
 }

@@ -37,33 +37,49 @@ pub struct PyFallModel {
     pub(crate) inner: FallModel,
 }
 
-/// A body dropped from rest (the core's `Fall`), sampled: landing time (s), point (m, ENU), the
-/// closed forms 2.42 and second order (m), and the samples t (N,), position and velocity (N, 3).
-#[pyclass(module = "poinsot._core", name = "FallCore", frozen, get_all)]
+/// `#[getter]`s of a result class for fields of the core value it holds:
+/// `getters!(Class.held: Type { field, … } …)`.
+macro_rules! getters {
+    ($class:ident.$held:ident: $($ty:ty { $($field:ident),+ $(,)? })+) => {
+        #[export]
+        impl $class {
+            $($(#[getter]
+            fn $field(&self) -> $ty {
+                self.$held.$field
+            })+)+
+        }
+    };
+}
+
+/// A body dropped from rest (the core's `Fall`, held), sampled: landing time (s), point (m,
+/// ENU), the closed forms 2.42 and second order (m), and the samples t (N,), position and
+/// velocity (N, 3).
+#[pyclass(module = "poinsot._core", name = "FallCore", frozen)]
 pub struct PyFall {
-    time: f64,
-    east: f64,
-    north: f64,
-    first_order_east: f64,
-    second_order_south: f64,
+    fall: ea::Fall,
+    #[pyo3(get)]
     t: Py<PyArray1<f64>>,
+    #[pyo3(get)]
     position: Py<PyArray2<f64>>,
+    #[pyo3(get)]
     velocity: Py<PyArray2<f64>>,
 }
 
-/// A projectile's flight (the core's `Flight`), sampled as [`PyFall`].
-#[pyclass(module = "poinsot._core", name = "FlightCore", frozen, get_all)]
+getters!(PyFall.fall: f64 { time, east, north, first_order_east, second_order_south });
+
+/// A projectile's flight (the core's `Flight`, held), sampled as [`PyFall`].
+#[pyclass(module = "poinsot._core", name = "FlightCore", frozen)]
 pub struct PyFlight {
-    time: f64,
-    east: f64,
-    north: f64,
-    range: f64,
-    downrange: f64,
-    drift: f64,
+    flight: ea::Flight,
+    #[pyo3(get)]
     t: Py<PyArray1<f64>>,
+    #[pyo3(get)]
     position: Py<PyArray2<f64>>,
+    #[pyo3(get)]
     velocity: Py<PyArray2<f64>>,
 }
+
+getters!(PyFlight.flight: f64 { time, east, north, range, downrange, drift });
 
 /// A Foucault run (the core's `FoucaultSwing`): samples, turning points, the measurement of the
 /// swing plane and whether the unit's −ω sin λ describes it (`FoucaultSwing::unit_rate`).
@@ -435,20 +451,17 @@ impl PyEarth {
         samples: usize,
     ) -> PyResult<PyFall> {
         let m = model.inner;
-        let (f, t, states) = run(py, None, || {
+        let (fall, t, states) = run(py, None, || {
             let f = self.inner.drop(height, latitude, &m)?;
             let t = grid(f.time, samples)?;
             let states = f.solution.sample(&t)?;
             Ok((f, t, states))
         })?;
         let (position, velocity) = split(py, &states)?;
+        let t = values(py, t);
         Ok(PyFall {
-            time: f.time,
-            east: f.east,
-            north: f.north,
-            first_order_east: f.first_order_east,
-            second_order_south: f.second_order_south,
-            t: values(py, t),
+            fall,
+            t,
             position,
             velocity,
         })
@@ -468,7 +481,7 @@ impl PyEarth {
         samples: usize,
     ) -> PyResult<PyFlight> {
         let m = model.inner;
-        let (f, t, states) = run(py, None, || {
+        let (flight, t, states) = run(py, None, || {
             let f = self
                 .inner
                 .projectile(speed, elevation, azimuth, latitude, height, &m)?;
@@ -477,14 +490,10 @@ impl PyEarth {
             Ok((f, t, states))
         })?;
         let (position, velocity) = split(py, &states)?;
+        let t = values(py, t);
         Ok(PyFlight {
-            time: f.time,
-            east: f.east,
-            north: f.north,
-            range: f.range,
-            downrange: f.downrange,
-            drift: f.drift,
-            t: values(py, t),
+            flight,
+            t,
             position,
             velocity,
         })
@@ -635,7 +644,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyFoucaultRun>()?;
     m.add_class::<PyInertialRun>()?;
     m.add_class::<PyLowFlow>()?;
-    m.add_function(wrap_pyfunction!(py_sample_times, m)?)?;
+    add_functions!(m; py_sample_times);
     // The physical constants (the defaults of `poinsot.Earth`).
     m.add("SIDEREAL_RATE", ea::SIDEREAL_RATE)?;
     m.add("SOLAR_DAY_RATE", ea::SOLAR_DAY_RATE)?;

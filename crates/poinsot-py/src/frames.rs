@@ -3,7 +3,6 @@
 //! A frame state travels as a flat array of 15 floats — origin, velocity, acceleration,
 //! angular velocity, angular acceleration (3 each, fixed components) — and an attitude
 //! (3, 3) array. Particles travel as (N, 3) arrays.
-use std::borrow::Cow;
 use std::cell::RefCell;
 
 use numpy::{PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
@@ -86,63 +85,41 @@ fn columns<'py, const K: usize>(
         .collect()
 }
 
-/// Transforms (N, 3) moving-frame positions, velocities and accelerations to the fixed frame:
-/// (position, velocity, acceleration, relative, origin, coriolis, centripetal, euler).
-#[export]
-#[allow(clippy::type_complexity)]
-fn frame_to_fixed<'py>(
-    py: Python<'py>,
-    frame: PyReadonlyArray1<'py, f64>,
-    attitude: PyReadonlyArray2<'py, f64>,
-    position: PyReadonlyArray2<'py, f64>,
-    velocity: PyReadonlyArray2<'py, f64>,
-    acceleration: PyReadonlyArray2<'py, f64>,
-) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
-    let f = frame_arg(&frame, &attitude)?;
-    transform_rows(py, &position, &velocity, &acceleration, |r, v, a| {
-        let m = f.to_fixed(r, v, a)?;
-        let t = m.terms;
-        Ok([
-            m.position,
-            m.velocity,
-            m.acceleration,
-            t.relative,
-            t.origin,
-            t.coriolis,
-            t.centripetal,
-            t.euler,
-        ])
-    })
+/// Exports `$name`, which transforms (N, 3) positions, velocities and accelerations by the
+/// frame's `$method` (`to_fixed`, `to_moving`): its eight (N, 3) outputs, the transformed
+/// state then the acceleration's `$term`s.
+macro_rules! transform_export {
+    ($(#[$doc:meta])* $name:ident = $method:ident: $($term:ident),+) => {
+        $(#[$doc])*
+        #[export]
+        fn $name<'py>(
+            py: Python<'py>,
+            frame: PyReadonlyArray1<'py, f64>,
+            attitude: PyReadonlyArray2<'py, f64>,
+            position: PyReadonlyArray2<'py, f64>,
+            velocity: PyReadonlyArray2<'py, f64>,
+            acceleration: PyReadonlyArray2<'py, f64>,
+        ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
+            let f = frame_arg(&frame, &attitude)?;
+            transform_rows(py, &position, &velocity, &acceleration, |r, v, a| {
+                let m = f.$method(r, v, a)?;
+                Ok([m.position, m.velocity, m.acceleration, $(m.terms.$term),+])
+            })
+        }
+    };
 }
 
-/// Transforms (N, 3) fixed-frame positions, velocities and accelerations to the moving frame:
-/// (position, velocity, acceleration, inertial, translational, coriolis, centrifugal, euler).
-#[export]
-#[allow(clippy::type_complexity)]
-fn frame_to_moving<'py>(
-    py: Python<'py>,
-    frame: PyReadonlyArray1<'py, f64>,
-    attitude: PyReadonlyArray2<'py, f64>,
-    position: PyReadonlyArray2<'py, f64>,
-    velocity: PyReadonlyArray2<'py, f64>,
-    acceleration: PyReadonlyArray2<'py, f64>,
-) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
-    let f = frame_arg(&frame, &attitude)?;
-    transform_rows(py, &position, &velocity, &acceleration, |r, v, a| {
-        let m = f.to_moving(r, v, a)?;
-        let t = m.terms;
-        Ok([
-            m.position,
-            m.velocity,
-            m.acceleration,
-            t.inertial,
-            t.translational,
-            t.coriolis,
-            t.centrifugal,
-            t.euler,
-        ])
-    })
-}
+transform_export!(
+    /// Transforms (N, 3) moving-frame positions, velocities and accelerations to the fixed
+    /// frame: (position, velocity, acceleration, relative, origin, coriolis, centripetal, euler).
+    frame_to_fixed = to_fixed: relative, origin, coriolis, centripetal, euler
+);
+transform_export!(
+    /// Transforms (N, 3) fixed-frame positions, velocities and accelerations to the moving
+    /// frame: (position, velocity, acceleration, inertial, translational, coriolis, centrifugal,
+    /// euler).
+    frame_to_moving = to_moving: inertial, translational, coriolis, centrifugal, euler
+);
 
 /// Fictitious forces on (N,) masses at (N, 3) positions with (N, 3) velocities in the frame:
 /// (translational, coriolis, centrifugal, euler).
@@ -263,71 +240,56 @@ fn frame_simulate_particle<'py>(
     };
     let opts = options(rtol, atol, max_steps, false);
     let error: RefCell<Option<PyErr>> = RefCell::new(None);
-    let result = if frame_fn.is_none() && force_fn.is_none() {
+    if frame_fn.is_none() && force_fn.is_none() {
         let motion = steady()?;
-        let work = || {
-            simulate_particle_at(
-                &motion,
-                mass,
-                r0,
-                v0,
-                duration,
-                &times,
-                |_t, r, _v| f_const + spring.force_unchecked(r),
-                &opts,
-            )
-        };
+        let force = |_t: f64, r: &Vec3, _v: &Vec3| f_const + spring.force_unchecked(r);
+        let work = || simulate_particle_at(&motion, mass, r0, v0, duration, &times, force, &opts);
         // Release the GIL only for long outputs: for a handful of samples the release costs
         // more than it frees. Either way Ctrl-C stops the run.
-        return Ok(scan_out(
-            py,
-            &if times.len() > 64 {
-                run(py, None, work)?
-            } else {
-                run_attached(py, None, work)?
-            },
-        ));
-    } else {
-        let force_call = |t: f64, r: &Vec3, v: &Vec3| -> Vec3 {
-            match &force_fn {
-                None => f_const + spring.force_unchecked(r),
-                Some(func) => match func
-                    .call1((t, r.x, r.y, r.z, v.x, v.y, v.z))
-                    .and_then(|o| o.extract::<(f64, f64, f64)>())
-                {
-                    Ok((a, b, c)) => f_const + spring.force_unchecked(r) + Vec3::new(a, b, c),
-                    Err(e) => {
-                        error.borrow_mut().get_or_insert(e);
-                        Vec3::repeat(f64::NAN)
-                    }
-                },
-            }
+        let scan = if times.len() > 64 {
+            run(py, None, work)?
+        } else {
+            run_attached(py, None, work)?
         };
-        let result = match &frame_fn {
-            Some(func) => {
-                let motion = PyFrame {
-                    py,
-                    func,
-                    error: &error,
-                };
-                run_attached(py, None, || {
-                    simulate_particle_at(&motion, mass, r0, v0, duration, &times, force_call, &opts)
-                })
+        return Ok(scan_out(py, &scan));
+    }
+    let force = |t: f64, r: &Vec3, v: &Vec3| -> Vec3 {
+        let base = f_const + spring.force_unchecked(r);
+        let Some(func) = &force_fn else { return base };
+        match func
+            .call1((t, r.x, r.y, r.z, v.x, v.y, v.z))
+            .and_then(|o| o.extract::<(f64, f64, f64)>())
+        {
+            Ok((a, b, c)) => base + Vec3::new(a, b, c),
+            Err(e) => {
+                error.borrow_mut().get_or_insert(e);
+                Vec3::repeat(f64::NAN)
             }
-            None => {
-                let motion = steady()?;
-                run_attached(py, None, || {
-                    simulate_particle_at(&motion, mass, r0, v0, duration, &times, force_call, &opts)
-                })
-            }
-        };
-        // A callback's own exception explains a run it stopped.
-        if let Some(e) = error.into_inner() {
-            return Err(e);
         }
-        result?
     };
-    Ok(scan_out(py, &result))
+    let (called, steady_motion);
+    let motion: &dyn FrameMotion = match &frame_fn {
+        Some(func) => {
+            called = PyFrame {
+                py,
+                func,
+                error: &error,
+            };
+            &called
+        }
+        None => {
+            steady_motion = steady()?;
+            &steady_motion
+        }
+    };
+    let result = run_attached(py, None, || {
+        simulate_particle_at(motion, mass, r0, v0, duration, &times, force, &opts)
+    });
+    // A callback's own exception explains a run it stopped.
+    if let Some(e) = error.into_inner() {
+        return Err(e);
+    }
+    Ok(scan_out(py, &result?))
 }
 
 /// A scan's samples as (states (N, 6): position then velocity, evaluations).
@@ -363,7 +325,6 @@ fn frame_steady_at<'py>(
     Ok((vecs, mat3_out(py, att)))
 }
 
-/// Registers this file's functions on the module.
 /// A particle of `mass` (kg) on an isotropic spring of `stiffness` (N/m) anchored at the common
 /// origin of the fixed and the rotating frame (`poinsot::frames::SpringParticle`).
 #[pyclass(name = "SpringParticleCore", module = "poinsot._core", frozen)]
@@ -393,8 +354,7 @@ impl SpringParticleCore {
         py: Python<'py>,
         position: PyReadonlyArray2<'py, f64>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let r = rows_view::<3>("position", &position)?;
-        let out = map_each(py, &r, |x| self.inner.force(&v3(x)).map(|f| a3(&f)))?;
+        let out = at_positions(py, &position, |x| self.inner.force(x).map(|f| a3(&f)))?;
         Ok(rows_out(py, &out))
     }
     /// (N, 3) accelerations −(k/m) r (m/s²) at (N, 3) positions (m).
@@ -403,14 +363,14 @@ impl SpringParticleCore {
         py: Python<'py>,
         position: PyReadonlyArray2<'py, f64>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let r = rows_view::<3>("position", &position)?;
-        let out = map_each(py, &r, |x| self.inner.acceleration(&v3(x)).map(|a| a3(&a)))?;
+        let out = at_positions(py, &position, |x| {
+            self.inner.acceleration(x).map(|a| a3(&a))
+        })?;
         Ok(rows_out(py, &out))
     }
     /// (N,) potentials ½ k |r|² (J) at (N, 3) positions (m).
     fn potential(&self, py: Python<'_>, position: PyReadonlyArray2<'_, f64>) -> PyResult<Values> {
-        let r = rows_view::<3>("position", &position)?;
-        map_each(py, &r, |x| self.inner.potential(&v3(x))).map(Values)
+        at_positions(py, &position, |x| self.inner.potential(x)).map(Values)
     }
     /// (N,) fixed-frame energies (J) of (N, 3) positions (m) and velocities (m/s).
     fn energy(
@@ -419,11 +379,7 @@ impl SpringParticleCore {
         position: PyReadonlyArray2<'_, f64>,
         velocity: PyReadonlyArray2<'_, f64>,
     ) -> PyResult<Values> {
-        let (r, v) = pairs(&position, &velocity)?;
-        run(py, None, || {
-            poinsot::control::try_map_n(r.len(), |i| self.inner.energy(&v3(&r[i]), &v3(&v[i])))
-        })
-        .map(Values)
+        at_states(py, &position, &velocity, |r, v| self.inner.energy(r, v))
     }
     /// (N,) Jacobi integrals (J) in the frame (15 floats, attitude) of (N, 3) relative positions
     /// (m) and velocities (m/s) in moving components.
@@ -436,23 +392,31 @@ impl SpringParticleCore {
         velocity: PyReadonlyArray2<'_, f64>,
     ) -> PyResult<Values> {
         let f = frame_arg(&frame, &attitude)?;
-        let (r, v) = pairs(&position, &velocity)?;
-        run(py, None, || {
-            poinsot::control::try_map_n(r.len(), |i| {
-                self.inner.jacobi_integral(&f, &v3(&r[i]), &v3(&v[i]))
-            })
+        at_states(py, &position, &velocity, |r, v| {
+            self.inner.jacobi_integral(&f, r, v)
         })
-        .map(Values)
     }
 }
 
-/// (N, 3) positions and velocities with the same number of rows, borrowed from C-contiguous
-/// arrays (their values are the core's to check).
-#[allow(clippy::type_complexity)]
-fn pairs<'a>(
-    position: &'a PyReadonlyArray2<'_, f64>,
-    velocity: &'a PyReadonlyArray2<'_, f64>,
-) -> PyResult<(Cow<'a, [[f64; 3]]>, Cow<'a, [[f64; 3]]>)> {
+/// `f` at each of the (N, 3) positions (m), borrowed from a C-contiguous array (its values are
+/// the core's to check); the GIL released, Ctrl-C polled.
+fn at_positions<R: Send>(
+    py: Python<'_>,
+    position: &PyReadonlyArray2<'_, f64>,
+    f: impl Fn(&Vec3) -> poinsot::Result<R> + Send + Sync,
+) -> PyResult<Vec<R>> {
+    let r = rows_view::<3>("position", position)?;
+    map_each(py, &r, |x| f(&v3(x)))
+}
+
+/// `f` at each of the (N, 3) positions and velocities, as [`at_positions`]; the error names
+/// `velocity` when the numbers of rows differ.
+fn at_states(
+    py: Python<'_>,
+    position: &PyReadonlyArray2<'_, f64>,
+    velocity: &PyReadonlyArray2<'_, f64>,
+    f: impl Fn(&Vec3, &Vec3) -> poinsot::Result<f64> + Send + Sync,
+) -> PyResult<Values> {
     let (r, v) = (
         rows_view::<3>("position", position)?,
         rows_view::<3>("velocity", velocity)?,
@@ -467,15 +431,16 @@ fn pairs<'a>(
             ),
         ));
     }
-    Ok((r, v))
+    let each = run(py, None, || {
+        poinsot::control::try_map_n(r.len(), |i| f(&v3(&r[i]), &v3(&v[i])))
+    })?;
+    Ok(Values(each))
 }
 
+/// Registers this file's functions and classes on the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<SpringParticleCore>()?;
-    m.add_function(wrap_pyfunction!(frame_to_fixed, m)?)?;
-    m.add_function(wrap_pyfunction!(frame_to_moving, m)?)?;
-    m.add_function(wrap_pyfunction!(frame_fictitious_forces, m)?)?;
-    m.add_function(wrap_pyfunction!(frame_simulate_particle, m)?)?;
-    m.add_function(wrap_pyfunction!(frame_steady_at, m)?)?;
+    add_functions!(m; frame_to_fixed, frame_to_moving, frame_fictitious_forces,
+        frame_simulate_particle, frame_steady_at);
     Ok(())
 }

@@ -5,6 +5,13 @@
 //! the typed public API lives in `python/poinsot`.
 #![forbid(unsafe_code)]
 
+/// Adds the `#[export]`ed functions to the module: `add_functions!(m; f, g)`.
+macro_rules! add_functions {
+    ($m:expr; $($f:ident),+ $(,)?) => {{
+        $($m.add_function(::pyo3::wrap_pyfunction!($f, $m)?)?;)+
+    }};
+}
+
 mod analytic;
 mod control;
 mod convert;
@@ -33,22 +40,6 @@ fn memory_budget() -> u64 {
 fn set_memory_budget(bytes: u64) -> PyResult<u64> {
     use errors::IntoPy;
     poinsot::limits::set_memory_budget(bytes).py()
-}
-
-/// Checks a user's count (samples, parcels): at least `minimum`, and `count` items of
-/// `bytes_each` bytes within the memory budget; the error names `argument`.
-#[export]
-fn check_count(argument: &str, count: usize, minimum: usize, bytes_each: usize) -> PyResult<()> {
-    use errors::IntoPy;
-    poinsot::limits::check_count(argument, count, minimum, bytes_each).py()
-}
-
-/// Checks that `count` items of `bytes_each` bytes fit in the memory budget (`count` a float:
-/// a product of counts); the error names `argument`.
-#[export]
-fn check_memory(argument: &str, count: f64, bytes_each: usize) -> PyResult<()> {
-    use errors::IntoPy;
-    poinsot::limits::check_memory(argument, count, bytes_each).py()
 }
 
 /// Panics on purpose, for the tests only (never called by the package): the panic guard every
@@ -83,11 +74,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
         "DEFAULT_MEMORY_BUDGET",
         poinsot::limits::DEFAULT_MEMORY_BUDGET,
     )?;
-    m.add_function(wrap_pyfunction!(memory_budget, m)?)?;
-    m.add_function(wrap_pyfunction!(set_memory_budget, m)?)?;
-    m.add_function(wrap_pyfunction!(check_count, m)?)?;
-    m.add_function(wrap_pyfunction!(check_memory, m)?)?;
-    m.add_function(wrap_pyfunction!(_test_panic, m)?)?;
+    add_functions!(m; memory_budget, set_memory_budget, _test_panic);
     defaults::register(m)?;
     errors::register(m)?;
     rotation::register(m)?;

@@ -59,17 +59,10 @@ fn matrix_to_euler<'py>(
 ) -> PyResult<(Out<'py>, Bound<'py, PyArray1<bool>>)> {
     let seq = EulerSequence::new(seq, intrinsic).py()?;
     let (m, n) = records("R", &R, &[3, 3])?;
-    let out = zeros(py, &[n, 3]);
     let mut locked = vec![false; n];
-    {
-        let mut rw = out.readwrite();
-        let slice = rw
-            .as_slice_mut()
-            .map_err(|_| invalid("out", "not contiguous"))?;
-        run(py, None, || {
-            rot::matrix_to_euler_batch(seq, m, slice, &mut locked)
-        })?;
-    }
+    let out = batch(py, &[n, 3], |out| {
+        rot::matrix_to_euler_batch(seq, m, out, &mut locked).map(|_| ())
+    })?;
     Ok((out, PyArray1::from_vec(py, locked)))
 }
 
@@ -152,6 +145,26 @@ fn check_rotation_matrix(py: Python<'_>, R: PyReadonlyArrayDyn<'_, f64>, tol: f6
     run(py, None, || rot::check_rotation_matrix_batch(m, tol))
 }
 
+/// The Euler kinematics' `kernel` (`angular_velocity_batch`, `euler_rates_batch`) of angles
+/// `(N, 3)` and the rates or ω `(N, 3)` (named `name`) → `(N, 3)`.
+#[allow(clippy::too_many_arguments)]
+fn euler_kinematics<'py>(
+    py: Python<'py>,
+    angles: &PyReadonlyArrayDyn<'py, f64>,
+    other: &PyReadonlyArrayDyn<'py, f64>,
+    name: &str,
+    seq: &str,
+    intrinsic: bool,
+    frame: &str,
+    kernel: fn(EulerSequence, Frame, &[f64], &[f64], &mut [f64]) -> poinsot::Result<()>,
+) -> PyResult<Out<'py>> {
+    let seq = EulerSequence::new(seq, intrinsic).py()?;
+    let frame: Frame = parse(frame)?;
+    let (a, n) = records("angles", angles, &[3])?;
+    let (b, _) = records(name, other, &[3])?;
+    batch(py, &[n, 3], |out| kernel(seq, frame, a, b, out))
+}
+
 /// Angular velocities `(N, 3)` (rad/s, in `frame`) from angles and rates `(N, 3)`.
 #[export]
 fn angular_velocity<'py>(
@@ -162,13 +175,8 @@ fn angular_velocity<'py>(
     intrinsic: bool,
     frame: &str,
 ) -> PyResult<Out<'py>> {
-    let seq = EulerSequence::new(seq, intrinsic).py()?;
-    let frame: Frame = parse(frame)?;
-    let (a, n) = records("angles", &angles, &[3])?;
-    let (r, _) = records("rates", &rates, &[3])?;
-    batch(py, &[n, 3], |out| {
-        rot::angular_velocity_batch(seq, frame, a, r, out)
-    })
+    let kernel = rot::angular_velocity_batch;
+    euler_kinematics(py, &angles, &rates, "rates", seq, intrinsic, frame, kernel)
 }
 
 /// Euler-angle rates `(N, 3)` (rad/s) from angles `(N, 3)` and ω `(N, 3)` (in `frame`).
@@ -181,13 +189,17 @@ fn euler_rates<'py>(
     intrinsic: bool,
     frame: &str,
 ) -> PyResult<Out<'py>> {
-    let seq = EulerSequence::new(seq, intrinsic).py()?;
-    let frame: Frame = parse(frame)?;
-    let (a, n) = records("angles", &angles, &[3])?;
-    let (w, _) = records("omega_body", &omega, &[3])?;
-    batch(py, &[n, 3], |out| {
-        rot::euler_rates_batch(seq, frame, a, w, out)
-    })
+    let kernel = rot::euler_rates_batch;
+    euler_kinematics(
+        py,
+        &angles,
+        &omega,
+        "omega_body",
+        seq,
+        intrinsic,
+        frame,
+        kernel,
+    )
 }
 
 /// Chasles' screw of `x ↦ R x + t` for one `R` `(3, 3)` and `t` `(3,)`:
@@ -199,25 +211,24 @@ fn screw_axis(
     t: numpy::PyReadonlyArray1<'_, f64>,
 ) -> PyResult<(Vector, Vector, f64, f64, f64)> {
     let (r, t) = (matrix("R", &R)?, vector("t", &t)?);
-    let s = rot::screw_axis(&r, &t).py()?;
-    Ok((Vector(s.axis), Vector(s.point), s.angle, s.slide, s.pitch))
+    Ok(screw_out(rot::screw_axis(&r, &t).py()?))
 }
 
-/// The screw `(axis, point, angle, slide)` as a core `Screw` (checked by `Screw::new`).
+/// A screw as Python takes it: `(axis, point, angle, slide, pitch)`.
+fn screw_out(s: rot::Screw) -> (Vector, Vector, f64, f64, f64) {
+    (Vector(s.axis), Vector(s.point), s.angle, s.slide, s.pitch)
+}
+
+/// The screw `(axis, point, angle, slide, pitch)` as a core `Screw` (checked by `Screw::new`).
 fn screw_from_parts(
     axis: &numpy::PyReadonlyArray1<'_, f64>,
     point: &numpy::PyReadonlyArray1<'_, f64>,
     angle: f64,
     slide: f64,
+    pitch: Option<f64>,
 ) -> PyResult<rot::Screw> {
-    rot::Screw::new(
-        vector("axis", axis)?,
-        vector("point", point)?,
-        angle,
-        slide,
-        None,
-    )
-    .py()
+    let (axis, point) = (vector("axis", axis)?, vector("point", point)?);
+    rot::Screw::new(axis, point, angle, slide, pitch).py()
 }
 
 /// A screw from its parts, checked by the core: `(axis, point, angle, slide, pitch)` with the
@@ -231,15 +242,9 @@ fn screw_new(
     slide: f64,
     pitch: Option<f64>,
 ) -> PyResult<(Vector, Vector, f64, f64, f64)> {
-    let s = rot::Screw::new(
-        vector("axis", &axis)?,
-        vector("point", &point)?,
-        angle,
-        slide,
-        pitch,
-    )
-    .py()?;
-    Ok((Vector(s.axis), Vector(s.point), s.angle, s.slide, s.pitch))
+    Ok(screw_out(screw_from_parts(
+        &axis, &point, angle, slide, pitch,
+    )?))
 }
 
 /// The displacement `(R (3, 3), t (3,))` of a screw.
@@ -250,7 +255,7 @@ fn screw_displacement(
     angle: f64,
     slide: f64,
 ) -> PyResult<(Matrix, Vector)> {
-    let (r, t) = screw_from_parts(&axis, &point, angle, slide)?.displacement();
+    let (r, t) = screw_from_parts(&axis, &point, angle, slide, None)?.displacement();
     Ok((Matrix(r), Vector(t)))
 }
 
@@ -263,7 +268,7 @@ fn screw_displacement_at(
     slide: f64,
     s: f64,
 ) -> PyResult<(Matrix, Vector)> {
-    let (r, t) = screw_from_parts(&axis, &point, angle, slide)?
+    let (r, t) = screw_from_parts(&axis, &point, angle, slide, None)?
         .displacement_at(s)
         .py()?;
     Ok((Matrix(r), Vector(t)))
@@ -279,7 +284,7 @@ fn screw_apply<'py>(
     slide: f64,
     x: numpy::PyReadonlyArray2<'py, f64>,
 ) -> PyResult<Out<'py>> {
-    let screw = screw_from_parts(&axis, &point, angle, slide)?;
+    let screw = screw_from_parts(&axis, &point, angle, slide, None)?;
     let points = rows_view::<3>("x", &x)?;
     // In chunks of points, Ctrl-C polled between two (on this thread: `run`'s monitor).
     batch(py, &[points.len(), 3], |out| {
@@ -294,22 +299,10 @@ fn screw_apply<'py>(
 
 /// Registers this file's functions and classes on the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(euler_to_matrix, m)?)?;
-    m.add_function(wrap_pyfunction!(matrix_to_euler, m)?)?;
-    m.add_function(wrap_pyfunction!(matrix_to_quaternion, m)?)?;
-    m.add_function(wrap_pyfunction!(quaternion_to_matrix, m)?)?;
-    m.add_function(wrap_pyfunction!(quaternion_multiply, m)?)?;
-    m.add_function(wrap_pyfunction!(rotation_axis, m)?)?;
-    m.add_function(wrap_pyfunction!(axis_angle_to_matrix, m)?)?;
-    m.add_function(wrap_pyfunction!(rotate_vectors, m)?)?;
-    m.add_function(wrap_pyfunction!(check_rotation_matrix, m)?)?;
-    m.add_function(wrap_pyfunction!(angular_velocity, m)?)?;
-    m.add_function(wrap_pyfunction!(euler_rates, m)?)?;
-    m.add_function(wrap_pyfunction!(screw_axis, m)?)?;
-    m.add_function(wrap_pyfunction!(screw_new, m)?)?;
-    m.add_function(wrap_pyfunction!(screw_displacement, m)?)?;
-    m.add_function(wrap_pyfunction!(screw_displacement_at, m)?)?;
-    m.add_function(wrap_pyfunction!(screw_apply, m)?)?;
+    add_functions!(m; euler_to_matrix, matrix_to_euler, matrix_to_quaternion,
+        quaternion_to_matrix, quaternion_multiply, rotation_axis, axis_angle_to_matrix,
+        rotate_vectors, check_rotation_matrix, angular_velocity, euler_rates, screw_axis,
+        screw_new, screw_displacement, screw_displacement_at, screw_apply);
     m.add("EULER_LOCK_TOL", rot::EULER_LOCK_TOL)?;
     m.add("RATES_LOCK_TOL", rot::RATES_LOCK_TOL)?;
     m.add("ROTATION_MATRIX_TOL", rot::ROTATION_MATRIX_TOL)?;

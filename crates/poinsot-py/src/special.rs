@@ -5,7 +5,7 @@ use poinsot_py_macros::export;
 use pyo3::prelude::*;
 
 use crate::control::map_each;
-use crate::errors::{invalid, IntoPy};
+use crate::errors::IntoPy;
 use crate::frames::{rows_out, vec_in};
 
 /// sn, cn, dn, am of u (N,) for parameter m → (N, 4).
@@ -26,26 +26,11 @@ fn special_jacobi<'py>(
 /// Legendre's elliptic integral `kind` ("K", "E", "PI", "F", "EINC", "PIINC") at (phi, n, m).
 #[export]
 fn special_elliptic(kind: &str, phi: f64, n: f64, m: f64) -> PyResult<f64> {
-    match kind {
-        "K" => special::ellipk(m),
-        "E" => special::ellipe(m),
-        "PI" => special::ellippi(n, m),
-        "F" => special::ellipf(phi, m),
-        "EINC" => special::ellipeinc(phi, m),
-        "PIINC" => special::ellippiinc(phi, n, m),
-        _ => {
-            return Err(invalid(
-                "kind",
-                format!("must be one of K, E, PI, F, EINC, PIINC, got {kind:?}"),
-            ))
-        }
-    }
-    .py()
+    special::elliptic(kind, phi, n, m).py()
 }
 
 /// Registers this file's functions on the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(special_jacobi, m)?)?;
-    m.add_function(wrap_pyfunction!(special_elliptic, m)?)?;
+    add_functions!(m; special_jacobi, special_elliptic);
     Ok(())
 }

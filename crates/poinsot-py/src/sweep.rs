@@ -7,30 +7,34 @@
 //! dict of flat arrays, one entry a point in row-major order (`(N, 3)` / `(N, 4)` for vectors);
 //! categories (motion class, regime, stability) as `uint8` codes into `sweep_categories()`.
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
-use poinsot::dynamics::{Method, SimulateOptions, TorqueKind};
 use poinsot::sweep::{self as core, Column, Dim, Grid};
 use poinsot_py_macros::export;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::control::run;
-use crate::convert::{parse, rows_out, slice, vector};
+use crate::convert::{rows_out, slice};
+use crate::dynamics::batch_settings;
 use crate::earth::{PyEarth, PyFallModel};
 use crate::errors::IntoPy;
 
-/// The dimensions as they come from Python: `(name, length, offset)`.
-type Dims = Vec<(String, usize, usize)>;
+/// The dimensions as they come from Python: `(name, length, offset, argument)` (see
+/// [`Dim::argument`]: the user's argument that errors about the dimension name).
+type Dims = Vec<(String, usize, usize, String)>;
 /// The keywords as they come from Python: `(keyword, values, dimension)`.
 type Columns<'py> = Vec<(String, PyReadonlyArray1<'py, f64>, Option<usize>)>;
+/// A sweep's results: None with `check_only`.
+type Out<'py> = Option<Bound<'py, PyDict>>;
 
 /// The core's grid over the Python arrays (borrowed: no copy).
 fn grid<'a>(dims: &'a Dims, columns: &'a Columns<'_>) -> PyResult<Grid<'a>> {
     let dims = dims
         .iter()
-        .map(|(name, len, offset)| Dim {
+        .map(|(name, len, offset, argument)| Dim {
             name,
             len: *len,
             offset: *offset,
+            argument,
         })
         .collect();
     let columns = columns
@@ -46,26 +50,69 @@ fn grid<'a>(dims: &'a Dims, columns: &'a Columns<'_>) -> PyResult<Grid<'a>> {
     Grid::new(dims, columns).py()
 }
 
-/// A new (N,) float64 array of `f` over the points.
-fn floats<'py, T>(
+/// A sweep from Python: its `check` alone (`check_only`: None), or its points from `compute`
+/// (the GIL released, reporting to `progress`) written into a new dict by `fill`.
+fn sweep<'py, T: Send>(
     py: Python<'py>,
-    points: &[T],
-    f: impl Fn(&T) -> f64,
-) -> Bound<'py, PyArray1<f64>> {
-    PyArray1::from_vec(py, points.iter().map(f).collect())
+    check_only: bool,
+    progress: Option<Bound<'py, PyAny>>,
+    check: impl FnOnce() -> poinsot::Result<()> + Send,
+    compute: impl FnOnce() -> poinsot::Result<Vec<T>> + Send,
+    fill: impl FnOnce(&Bound<'py, PyDict>, &[T]) -> PyResult<()>,
+) -> PyResult<Out<'py>> {
+    if check_only {
+        run(py, None, check)?;
+        return Ok(None);
+    }
+    let out = run(py, progress.as_ref(), compute)?;
+    let d = PyDict::new(py);
+    fill(&d, &out)?;
+    Ok(Some(d))
 }
 
-/// A new (N,) uint8 array of `f` over the points.
-fn codes<'py, T>(py: Python<'py>, points: &[T], f: impl Fn(&T) -> u8) -> Bound<'py, PyArray1<u8>> {
-    PyArray1::from_vec(py, points.iter().map(f).collect())
+/// Sets `d[name]` to the (N,) float64 array of the `f64` field `name` of each point, for each
+/// name given.
+macro_rules! set_floats {
+    ($d:expr, $points:expr; $($field:ident),+ $(,)?) => {{
+        let py = $d.py();
+        $($d.set_item(
+            stringify!($field),
+            PyArray1::from_vec(py, $points.iter().map(|p| p.$field).collect()),
+        )?;)+
+    }};
+}
+
+/// Sets `d[name]` to a new (N, …) array of `f` over the points: rows (`[f64; K]`) or a column
+/// of scalars (`f64`, `u8`, `i8`, `bool`).
+fn set<T, E: numpy::Element>(
+    d: &Bound<'_, PyDict>,
+    name: &str,
+    points: &[T],
+    f: impl Fn(&T) -> E,
+) -> PyResult<()> {
+    d.set_item(
+        name,
+        PyArray1::from_vec(d.py(), points.iter().map(f).collect()),
+    )
+}
+
+/// Sets `d[name]` to the (N, K) array of `f` over the points.
+fn set_rows<T, const K: usize>(
+    d: &Bound<'_, PyDict>,
+    name: &str,
+    points: &[T],
+    f: impl Fn(&T) -> [f64; K],
+) -> PyResult<()> {
+    let rows: Vec<[f64; K]> = points.iter().map(f).collect();
+    d.set_item(name, rows_out(d.py(), &rows))
 }
 
 /// Checks that `bytes_each` bytes a point of the sweep of `dims` fit in the memory budget (the
-/// results of a sweep gathered from its chunks); the error names the longest dimension.
+/// results of a sweep gathered from its chunks); the error names the longest dimension's
+/// argument.
 #[export]
 fn sweep_check_memory(dims: Dims, bytes_each: usize) -> PyResult<()> {
-    let columns: Columns<'_> = Vec::new();
-    grid(&dims, &columns)?.check_memory(bytes_each).py()
+    grid(&dims, &Vec::new())?.check_memory(bytes_each).py()
 }
 
 /// The names of the categories' codes, from the core's tables: `{"motion_class": [...],
@@ -93,37 +140,20 @@ fn sweep_heavy_top<'py>(
     columns: Columns<'py>,
     check_only: bool,
     progress: Option<Bound<'py, PyAny>>,
-) -> PyResult<Option<Bound<'py, PyDict>>> {
+) -> PyResult<Out<'py>> {
     let g = grid(&dims, &columns)?;
-    if check_only {
-        run(py, None, || core::check_heavy_top(&g))?;
-        return Ok(None);
-    }
-    let out = run(py, progress.as_ref(), || core::heavy_top(&g))?;
-    let d = PyDict::new(py);
-    d.set_item(
-        "motion_class",
-        codes(py, &out, |p| core::motion_class_code(p.motion_class)),
-    )?;
-    let turning: Vec<[f64; 2]> = out
-        .iter()
-        .map(|p| [p.turning_points.0, p.turning_points.1])
-        .collect();
-    d.set_item("turning_points", rows_out(py, &turning))?;
-    d.set_item("nutation_period", floats(py, &out, |p| p.nutation_period))?;
-    d.set_item(
-        "mean_precession_rate",
-        floats(py, &out, |p| p.mean_precession_rate),
-    )?;
-    d.set_item("mean_spin_rate", floats(py, &out, |p| p.mean_spin_rate))?;
-    d.set_item("omega3", floats(py, &out, |p| p.omega3))?;
-    d.set_item("p_phi", floats(py, &out, |p| p.p_phi))?;
-    d.set_item("p_psi", floats(py, &out, |p| p.p_psi))?;
-    d.set_item("energy", floats(py, &out, |p| p.energy))?;
-    d.set_item("reduced_energy", floats(py, &out, |p| p.reduced_energy))?;
-    let sleeping: Vec<bool> = out.iter().map(|p| p.is_sleeping_stable).collect();
-    d.set_item("is_sleeping_stable", PyArray1::from_vec(py, sleeping))?;
-    Ok(Some(d))
+    let (check, compute) = (|| core::check_heavy_top(&g), || core::heavy_top(&g));
+    sweep(py, check_only, progress, check, compute, |d, out| {
+        set(d, "motion_class", out, |p| {
+            core::motion_class_code(p.motion_class)
+        })?;
+        set_rows(d, "turning_points", out, |p| {
+            [p.turning_points.0, p.turning_points.1]
+        })?;
+        set_floats!(d, out; nutation_period, mean_precession_rate, mean_spin_rate, omega3,
+            p_phi, p_psi, energy, reduced_energy);
+        set(d, "is_sleeping_stable", out, |p| p.is_sleeping_stable)
+    })
 }
 
 /// The free body at every point: `{"omega0" (N, 3), "regime" (codes), "period",
@@ -138,43 +168,24 @@ fn sweep_free_body<'py>(
     columns: Columns<'py>,
     check_only: bool,
     progress: Option<Bound<'py, PyAny>>,
-) -> PyResult<Option<Bound<'py, PyDict>>> {
+) -> PyResult<Out<'py>> {
     let g = grid(&dims, &columns)?;
-    if check_only {
-        run(py, None, || core::check_free_body(&g))?;
-        return Ok(None);
-    }
-    let out = run(py, progress.as_ref(), || core::free_body(&g))?;
-    let d = PyDict::new(py);
-    let omega0: Vec<[f64; 3]> = out.iter().map(|p| p.omega0).collect();
-    d.set_item("omega0", rows_out(py, &omega0))?;
-    d.set_item("regime", codes(py, &out, |p| core::regime_code(p.regime)))?;
-    d.set_item("period", floats(py, &out, |p| p.period))?;
-    d.set_item("flip_interval", floats(py, &out, |p| p.flip_interval))?;
-    d.set_item("parameter", floats(py, &out, |p| p.parameter))?;
-    d.set_item("frequency", floats(py, &out, |p| p.frequency))?;
-    let pole: Vec<i8> = out
-        .iter()
-        .map(|p| p.pole_axis.map_or(-1, |k| k as i8))
-        .collect();
-    d.set_item("pole_axis", PyArray1::from_vec(py, pole))?;
-    d.set_item("energy", floats(py, &out, |p| p.energy))?;
-    let l: Vec<[f64; 3]> = out.iter().map(|p| p.angular_momentum).collect();
-    d.set_item("angular_momentum", rows_out(py, &l))?;
-    let kinds: Vec<u8> = out
-        .iter()
-        .flat_map(|p| p.axis_stability.map(|a| core::stability_code(a.stability)))
-        .collect();
-    d.set_item(
-        "axis_stability",
-        PyArray1::from_vec(py, kinds).reshape([out.len(), 3])?,
-    )?;
-    let rates: Vec<[f64; 3]> = out
-        .iter()
-        .map(|p| p.axis_stability.map(|a| a.rate))
-        .collect();
-    d.set_item("axis_rate", rows_out(py, &rates))?;
-    Ok(Some(d))
+    let (check, compute) = (|| core::check_free_body(&g), || core::free_body(&g));
+    sweep(py, check_only, progress, check, compute, |d, out| {
+        set_rows(d, "omega0", out, |p| p.omega0)?;
+        set(d, "regime", out, |p| core::regime_code(p.regime))?;
+        set_floats!(d, out; period, flip_interval, parameter, frequency);
+        set(d, "pole_axis", out, |p| p.pole_axis.map_or(-1, |k| k as i8))?;
+        set_floats!(d, out; energy);
+        set_rows(d, "angular_momentum", out, |p| p.angular_momentum)?;
+        let kinds: Vec<u8> = out
+            .iter()
+            .flat_map(|p| p.axis_stability.map(|a| core::stability_code(a.stability)))
+            .collect();
+        let kinds = PyArray1::from_vec(d.py(), kinds).reshape([out.len(), 3])?;
+        d.set_item("axis_stability", kinds)?;
+        set_rows(d, "axis_rate", out, |p| p.axis_stability.map(|a| a.rate))
+    })
 }
 
 /// Ensembles under a torque (`simulate_batch`'s settings: duration, torque as kind, (3,)
@@ -196,32 +207,22 @@ fn sweep_simulate<'py>(
     max_steps: usize,
     check_only: bool,
     progress: Option<Bound<'py, PyAny>>,
-) -> PyResult<Option<Bound<'py, PyDict>>> {
+) -> PyResult<Out<'py>> {
     let g = grid(&dims, &columns)?;
-    let torque = parse::<TorqueKind>(torque_kind)?
-        .torque(vector("torque", &torque_vector)?, torque_scalar)
-        .py()?;
-    let opts = SimulateOptions {
-        method: Method::parse(method).py()?,
+    let (torque, opts) = batch_settings(
+        torque_kind,
+        &torque_vector,
+        torque_scalar,
+        method,
         dt,
         max_steps,
-        ..SimulateOptions::default()
-    };
-    if check_only {
-        run(py, None, || {
-            core::check_simulate(&g, duration, &torque, &opts)
-        })?;
-        return Ok(None);
-    }
-    let out = run(py, progress.as_ref(), || {
-        core::simulate(&g, duration, &torque, &opts)
-    })?;
-    let d = PyDict::new(py);
-    let omega: Vec<[f64; 3]> = out.iter().map(|p| p.omega).collect();
-    let attitude: Vec<[f64; 4]> = out.iter().map(|p| p.attitude).collect();
-    d.set_item("omega", rows_out(py, &omega))?;
-    d.set_item("attitude", rows_out(py, &attitude))?;
-    Ok(Some(d))
+    )?;
+    let check = || core::check_simulate(&g, duration, &torque, &opts);
+    let compute = || core::simulate(&g, duration, &torque, &opts);
+    sweep(py, check_only, progress, check, compute, |d, out| {
+        set_rows(d, "omega", out, |p| p.omega)?;
+        set_rows(d, "attitude", out, |p| p.attitude)
+    })
 }
 
 /// Drops on the Earth (`EarthCore`) under the fall model (`FallModel`): `{"time", "east",
@@ -236,24 +237,14 @@ fn sweep_drop<'py>(
     model: PyRef<'py, PyFallModel>,
     check_only: bool,
     progress: Option<Bound<'py, PyAny>>,
-) -> PyResult<Option<Bound<'py, PyDict>>> {
-    let grid = grid(&dims, &columns)?;
+) -> PyResult<Out<'py>> {
+    let g = grid(&dims, &columns)?;
     let (e, m) = (earth.inner, model.inner);
-    if check_only {
-        run(py, None, || core::check_drop(&grid, &m))?;
-        return Ok(None);
-    }
-    let out = run(py, progress.as_ref(), || core::drop(&e, &grid, &m))?;
-    let d = PyDict::new(py);
-    d.set_item("time", floats(py, &out, |p| p.time))?;
-    d.set_item("east", floats(py, &out, |p| p.east))?;
-    d.set_item("north", floats(py, &out, |p| p.north))?;
-    d.set_item("first_order_east", floats(py, &out, |p| p.first_order_east))?;
-    d.set_item(
-        "second_order_south",
-        floats(py, &out, |p| p.second_order_south),
-    )?;
-    Ok(Some(d))
+    let (check, compute) = (|| core::check_drop(&g, &m), || core::drop(&e, &g, &m));
+    sweep(py, check_only, progress, check, compute, |d, out| {
+        set_floats!(d, out; time, east, north, first_order_east, second_order_south);
+        Ok(())
+    })
 }
 
 /// Projectiles on the Earth, as [`sweep_drop`]: `{"time", "east", "north", "range",
@@ -268,46 +259,29 @@ fn sweep_projectile<'py>(
     model: PyRef<'py, PyFallModel>,
     check_only: bool,
     progress: Option<Bound<'py, PyAny>>,
-) -> PyResult<Option<Bound<'py, PyDict>>> {
-    let grid = grid(&dims, &columns)?;
+) -> PyResult<Out<'py>> {
+    let g = grid(&dims, &columns)?;
     let (e, m) = (earth.inner, model.inner);
-    if check_only {
-        run(py, None, || core::check_projectile(&grid, &m))?;
-        return Ok(None);
-    }
-    let out = run(py, progress.as_ref(), || core::projectile(&e, &grid, &m))?;
-    let d = PyDict::new(py);
-    d.set_item("time", floats(py, &out, |p| p.time))?;
-    d.set_item("east", floats(py, &out, |p| p.east))?;
-    d.set_item("north", floats(py, &out, |p| p.north))?;
-    d.set_item("range", floats(py, &out, |p| p.range))?;
-    d.set_item("downrange", floats(py, &out, |p| p.downrange))?;
-    d.set_item("drift", floats(py, &out, |p| p.drift))?;
-    Ok(Some(d))
+    let check = || core::check_projectile(&g, &m);
+    let compute = || core::projectile(&e, &g, &m);
+    sweep(py, check_only, progress, check, compute, |d, out| {
+        set_floats!(d, out; time, east, north, range, downrange, drift);
+        Ok(())
+    })
 }
 
 /// Registers this file's functions on the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add(
-        "SWEEP_HEAVY_TOP_KEYWORDS",
-        core::HEAVY_TOP_KEYWORDS.to_vec(),
-    )?;
-    m.add(
-        "SWEEP_FREE_BODY_KEYWORDS",
-        core::FREE_BODY_KEYWORDS.to_vec(),
-    )?;
-    m.add("SWEEP_SIMULATE_KEYWORDS", core::SIMULATE_KEYWORDS.to_vec())?;
-    m.add("SWEEP_DROP_KEYWORDS", core::DROP_KEYWORDS.to_vec())?;
-    m.add(
-        "SWEEP_PROJECTILE_KEYWORDS",
-        core::PROJECTILE_KEYWORDS.to_vec(),
-    )?;
-    m.add_function(wrap_pyfunction!(sweep_categories, m)?)?;
-    m.add_function(wrap_pyfunction!(sweep_check_memory, m)?)?;
-    m.add_function(wrap_pyfunction!(sweep_heavy_top, m)?)?;
-    m.add_function(wrap_pyfunction!(sweep_free_body, m)?)?;
-    m.add_function(wrap_pyfunction!(sweep_simulate, m)?)?;
-    m.add_function(wrap_pyfunction!(sweep_drop, m)?)?;
-    m.add_function(wrap_pyfunction!(sweep_projectile, m)?)?;
+    for (name, keywords) in [
+        ("SWEEP_HEAVY_TOP_KEYWORDS", &core::HEAVY_TOP_KEYWORDS[..]),
+        ("SWEEP_FREE_BODY_KEYWORDS", &core::FREE_BODY_KEYWORDS[..]),
+        ("SWEEP_SIMULATE_KEYWORDS", &core::SIMULATE_KEYWORDS[..]),
+        ("SWEEP_DROP_KEYWORDS", &core::DROP_KEYWORDS[..]),
+        ("SWEEP_PROJECTILE_KEYWORDS", &core::PROJECTILE_KEYWORDS[..]),
+    ] {
+        m.add(name, keywords.to_vec())?;
+    }
+    add_functions!(m; sweep_categories, sweep_check_memory, sweep_heavy_top, sweep_free_body,
+        sweep_simulate, sweep_drop, sweep_projectile);
     Ok(())
 }

@@ -143,16 +143,8 @@ fn elliptic_integrals_match_mpmath() {
         let (kind, rest) = line.split_once(',').unwrap();
         let v = parse(rest);
         let (phi, n, m, want) = (v[0], v[1], v[2], v[3]);
-        let got = match kind {
-            "K" => special::ellipk(m),
-            "E" => special::ellipe(m),
-            "PI" => special::ellippi(n, m),
-            "F" => special::ellipf(phi, m),
-            "EINC" => special::ellipeinc(phi, m),
-            "PIINC" => special::ellippiinc(phi, n, m),
-            other => panic!("unknown kind {other}"),
-        }
-        .unwrap_or_else(|e| panic!("{kind}({phi}, {n}, {m}): {e}"));
+        let got = special::elliptic(kind, phi, n, m)
+            .unwrap_or_else(|e| panic!("{kind}({phi}, {n}, {m}): {e}"));
         // ∂/∂φ of the integrand's antiderivative: (1 − n sin²φ)⁻¹ (1 − m sin²φ)^(∓½).
         let s2 = phi.sin().powi(2);
         let dphi = match kind {
@@ -374,4 +366,17 @@ proptest! {
             prop_assert_eq!(h, -f);
         }
     }
+}
+
+#[test]
+fn elliptic_by_name_is_each_integral_and_refuses_an_unknown_kind() {
+    let e = special::elliptic("G", 0.5, 0.0, 0.5).unwrap_err();
+    assert_eq!(e.argument, "kind");
+    assert!(e.message.contains("K, E, PI, F, EINC, PIINC"), "{e}");
+    let by_name = |kind| special::elliptic(kind, 0.7, 0.3, 0.6).unwrap();
+    assert_eq!(by_name("K"), special::ellipk(0.6).unwrap());
+    assert_eq!(
+        by_name("PIINC"),
+        special::ellippiinc(0.7, 0.3, 0.6).unwrap()
+    );
 }

@@ -17,6 +17,7 @@ fn dim(name: &str, len: usize) -> Dim<'_> {
         name,
         len,
         offset: 0,
+        argument: name,
     }
 }
 
@@ -239,8 +240,8 @@ proptest! {
                 let (ts, ps) = (&theta[t0..t1], &psi_dot[p0..p1]);
                 let g = Grid::new(
                     vec![
-                        Dim { name: "theta", len: ts.len(), offset: t0 },
-                        Dim { name: "psi_dot", len: ps.len(), offset: p0 },
+                        Dim { name: "theta", len: ts.len(), offset: t0, argument: "theta" },
+                        Dim { name: "psi_dot", len: ps.len(), offset: p0, argument: "psi_dot" },
                     ],
                     vec![
                         col("I1", &[1.0], None),
@@ -268,7 +269,7 @@ proptest! {
         let p0 = (j / cp) * cp;
         let ps = &bad_psi[p0..(p0 + cp).min(np)];
         let g = Grid::new(
-            vec![Dim { name: "theta", len: 1, offset: nt - 1 }, Dim { name: "psi_dot", len: ps.len(), offset: p0 }],
+            vec![Dim { name: "theta", len: 1, offset: nt - 1, argument: "theta" }, Dim { name: "psi_dot", len: ps.len(), offset: p0, argument: "psi_dot" }],
             vec![
                 col("I1", &[1.0], None),
                 col("I3", &[0.5], None),

@@ -21,7 +21,7 @@ import numpy as np
 
 from .. import _core
 from .._progress import delayed_bar, stderr_interactive
-from .._validate import as_callable, as_count, public_names
+from .._validate import as_callable, as_count
 from ..errors import ArgumentTypeError, PoinsotError
 from ._spec import Output, Plan, bytes_per_point, component_dim, component_labels
 
@@ -71,7 +71,7 @@ def progress_reporter(
 
 def block_results(
     model_name: str,
-    dims: list[tuple[str, int, int]],
+    dims: list[tuple[str, int, int, str]],
     columns: list[tuple[str, Any, Optional[int]]],
     settings: tuple[Any, ...],
     names: Sequence[str],
@@ -85,7 +85,7 @@ def block_results(
     from . import MODELS
 
     model = MODELS[model_name]
-    shape = tuple(n for _, n, _ in dims)
+    shape = tuple(d[1] for d in dims)
     # Arrays unpickled on a worker may be unaligned (small ones, in a message's buffer): the
     # core reads aligned, C-contiguous float64.
     columns = [(k, np.require(v, np.float64, ["C", "A"]), d) for k, v, d in columns]
@@ -104,7 +104,7 @@ def block_results(
 
 def block_to_zarr(
     model_name: str,
-    dims: list[tuple[str, int, int]],
+    dims: list[tuple[str, int, int, str]],
     columns: list[tuple[str, Any, Optional[int]]],
     settings: tuple[Any, ...],
     outputs: Sequence[Output],
@@ -115,17 +115,17 @@ def block_to_zarr(
     xr = require("xarray")
     names = [o.name for o in outputs]
     results = block_results(model_name, dims, columns, settings, names, decode=False)
-    region = {name: slice(offset, offset + n) for name, n, offset in dims}
+    region = {name: slice(offset, offset + n) for name, n, offset, _ in dims}
     data = {}
     for o in outputs:
         arr = results[o.name]
-        vdims = [name for name, _, _ in dims] + ([o.extra] if o.extra else [])
+        vdims = [d[0] for d in dims] + ([o.extra] if o.extra else [])
         if o.extra:
             region[o.extra] = slice(0, arr.shape[-1])
         data[o.name] = (vdims, arr)
     # A sweep of one point (no dimension) writes its arrays whole.
     xr.Dataset(data).to_zarr(path, region=region if dims else None, mode="r+", consolidated=False)
-    return int(math.prod(n for _, n, _ in dims))
+    return int(math.prod(d[1] for d in dims))
 
 
 # ---- chunks --------------------------------------------------------------------------------
@@ -193,13 +193,8 @@ def run(
     to_zarr: Any,
     progress: Any,
 ) -> Any:
-    """Runs ``plan`` and returns its Dataset (see :mod:`poinsot.sweep`); an error naming a
-    dimension names the user's argument instead."""
-    with public_names(**plan.argument_names):
-        return _run(plan, client=client, chunks=chunks, to_zarr=to_zarr, progress=progress)
-
-
-def _run(plan: Plan, *, client: Any, chunks: Any, to_zarr: Any, progress: Any) -> Any:
+    """Runs ``plan`` and returns its Dataset (see :mod:`poinsot.sweep`); an error about a
+    dimension names the user's argument that makes it (the core's ``Dim.argument``)."""
     xr = require("xarray")
     names = [o.name for o in plan.outputs]
     model = plan.model

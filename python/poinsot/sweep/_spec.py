@@ -147,6 +147,15 @@ class Dim:
     members: list[str] = field(default_factory=list)
     chunks: Optional[tuple[int, ...]] = None
 
+    @property
+    def argument(self) -> str:
+        """The user's argument that makes it, which the core's errors about it name (its
+        length, the memory budget): the keyword it sweeps, ``samples`` for a random sample,
+        the first keyword of a paired dimension."""
+        if self.name == SAMPLE:
+            return "samples"
+        return self.name if self.name in self.members else self.members[0]
+
 
 @dataclass
 class Column:
@@ -174,19 +183,6 @@ class Plan:
     outputs: list[Output]
 
     @property
-    def argument_names(self) -> dict[str, str]:
-        """The user's argument for each dimension not named after one (for errors that name a
-        dimension, such as the memory budget's): ``sample`` → ``samples``, ``omega0_index`` →
-        ``omega0``, a paired dimension → its first keyword."""
-        out = {}
-        for d in self.dims:
-            if d.name == SAMPLE:
-                out[d.name] = "samples"
-            elif d.name not in d.members:
-                out[d.name] = d.members[0]
-        return out
-
-    @property
     def shape(self) -> tuple[int, ...]:
         return tuple(d.size for d in self.dims)
 
@@ -196,12 +192,15 @@ class Plan:
 
     def core_columns(
         self, block: Optional[Sequence[tuple[int, int]]] = None
-    ) -> tuple[list[tuple[str, int, int]], list[tuple[str, FloatArray, Optional[int]]]]:
-        """The core's dimensions and columns of the whole sweep, or of the block of
-        ``[(start, stop)]`` per dimension (the keywords' slices, with offsets)."""
+    ) -> tuple[list[tuple[str, int, int, str]], list[tuple[str, FloatArray, Optional[int]]]]:
+        """The core's dimensions ``(name, length, offset, argument)`` and columns of the whole
+        sweep, or of the block of ``[(start, stop)]`` per dimension (the keywords' slices, with
+        offsets)."""
         if block is None:
             block = [(0, d.size) for d in self.dims]
-        dims = [(d.name, stop - start, start) for d, (start, stop) in zip(self.dims, block)]
+        dims = [
+            (d.name, stop - start, start, d.argument) for d, (start, stop) in zip(self.dims, block)
+        ]
         cols = []
         for c in self.columns:
             values = c.core

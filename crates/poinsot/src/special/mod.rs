@@ -17,3 +17,21 @@ pub use integrals::{
     ellippiinc_complement,
 };
 pub use jacobi::{am, cn, dn, jacobi_all, sn, sncndn, Jacobi, JacobiValues};
+
+/// Legendre's elliptic integral named `kind` at (φ, n, m): `"K"` K(m), `"E"` E(m), `"PI"`
+/// Π(n | m), `"F"` F(φ | m), `"EINC"` E(φ | m), `"PIINC"` Π(n; φ | m) (the arguments a kind
+/// does not take are ignored). An unknown kind is refused naming `kind`.
+pub fn elliptic(kind: &str, phi: f64, n: f64, m: f64) -> crate::Result<f64> {
+    match kind {
+        "K" => ellipk(m),
+        "E" => ellipe(m),
+        "PI" => ellippi(n, m),
+        "F" => ellipf(phi, m),
+        "EINC" => ellipeinc(phi, m),
+        "PIINC" => ellippiinc(phi, n, m),
+        _ => Err(crate::Error::invalid(
+            "kind",
+            format!("must be one of K, E, PI, F, EINC, PIINC, got {kind:?}"),
+        )),
+    }
+}

@@ -20,6 +20,10 @@ pub struct Dim<'a> {
     /// The index, in the whole sweep, of this block's first element along it (0 for a whole
     /// sweep): error messages give indices into the user's arrays.
     pub offset: usize,
+    /// The caller's argument that makes it, named by the errors about the dimension (its
+    /// length, the memory budget): the keyword itself, `"samples"` for a random sample, the
+    /// first keyword of a paired dimension.
+    pub argument: &'a str,
 }
 
 /// A keyword's values: `width` numbers per entry (1 for a number, 3 for a vector, 4 for a
@@ -106,7 +110,7 @@ impl<'a> Grid<'a> {
         for d in &dims {
             if d.len == 0 {
                 return Err(Error::invalid(
-                    d.name,
+                    d.argument,
                     "must not be empty: a dimension of a sweep needs at least one value",
                 ));
             }
@@ -133,7 +137,7 @@ impl<'a> Grid<'a> {
             strides[k] = len;
             len = len.checked_mul(dims[k].len).ok_or_else(|| {
                 Error::invalid(
-                    dims[k].name,
+                    dims[k].argument,
                     format!(
                         "the sweep's {} dimensions ({}) hold more points than can be counted",
                         dims.len(),
@@ -258,7 +262,7 @@ impl<'a> Grid<'a> {
             .dims
             .iter()
             .max_by_key(|d| d.len)
-            .map_or("sweep", |d| d.name);
+            .map_or("sweep", |d| d.argument);
         limits::check_bytes(
             argument,
             &format!(
@@ -352,7 +356,12 @@ mod tests {
 
     fn dims<'a>(spec: &[(&'a str, usize, usize)]) -> Vec<Dim<'a>> {
         spec.iter()
-            .map(|&(name, len, offset)| Dim { name, len, offset })
+            .map(|&(name, len, offset)| Dim {
+                name,
+                len,
+                offset,
+                argument: name,
+            })
             .collect()
     }
 
@@ -498,5 +507,24 @@ mod tests {
             "{e}"
         );
         assert!(g.check_memory(0).is_ok());
+    }
+
+    #[test]
+    fn errors_about_a_dimension_name_the_callers_argument() {
+        let sample = |len| Dim {
+            name: "sample",
+            len,
+            offset: 0,
+            argument: "samples",
+        };
+        let g = Grid::new(vec![sample(1 << 30)], vec![]).unwrap();
+        assert_eq!(g.check_memory(100).unwrap_err().argument, "samples");
+        let e = Grid::new(vec![sample(0)], vec![]).unwrap_err();
+        assert_eq!(e.argument, "samples");
+        let e = Grid::new(vec![sample(1 << 40), sample(1 << 40)], vec![]).unwrap_err();
+        assert_eq!(e.argument, "samples");
+        // The dimension keeps its name where it locates a point.
+        let g = Grid::new(vec![sample(3)], vec![]).unwrap();
+        assert_eq!(g.locate(2), "sample[2]");
     }
 }
