@@ -149,10 +149,10 @@ def scalar(
     return Row(key, quantity, symbol, number(x), unit if x is not None else "", brief, label=label)
 
 
-def details(obj: Any, *rows: tuple[str, str, str, str]) -> list[Row]:
-    """Numbers shown in the HTML table only (not brief): for each row (key, quantity, symbol,
-    unit), :func:`scalar` of ``obj``'s attribute ``key``."""
-    return [scalar(k, q, s, getattr(obj, k), u, brief=False) for k, q, s, u in rows]
+def scalars(obj: Any, *rows: tuple[str, str, str, str], brief: bool = True) -> list[Row]:
+    """:func:`scalar` of ``obj``'s attribute ``key`` for each row (key, quantity, symbol,
+    unit)."""
+    return [scalar(k, q, s, getattr(obj, k), u, brief=brief) for k, q, s, u in rows]
 
 
 def vec(key: str, quantity: str, symbol: str, v: Any, unit: str = "", *, brief: bool = True) -> Row:

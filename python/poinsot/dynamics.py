@@ -189,10 +189,11 @@ class Trajectory(show.Displayed):
             show.span("t", "time", "t", self.t[0], self.t[-1], "s"),
             show.words("method", "method", self.method),
             show.scalar("steps", "steps taken", "", self.steps),
-            *show.details(
+            *show.scalars(
                 self,
                 ("step", "fixed step", "Δt", "s"),
                 ("torque_evaluations", "torque evaluations", "", ""),
+                brief=False,
             ),
             show.samples("omega", "angular velocity, body axes", "ω", self.omega, "rad/s"),
             show.samples("attitude", "attitude [w, x, y, z], body → space", "q", self.attitude),

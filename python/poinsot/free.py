@@ -144,7 +144,7 @@ class FreeSymmetricTop(show.Displayed):
                 "rad/s",
                 label="Ω",
             ),
-            *show.details(
+            *show.scalars(
                 self,
                 ("omega3", "spin, constant (2.80)", "ω₃", "rad/s"),
                 ("amplitude", "amplitude of ω₁, ω₂ (2.88)", "A", "rad/s"),
@@ -156,6 +156,7 @@ class FreeSymmetricTop(show.Displayed):
                 ("angular_momentum_magnitude", "|L| (2.93)", "|L|", "kg·m²/s"),
                 ("nutation_angle", "angle between L and the symmetry axis", "θ", "rad"),
                 ("space_precession_rate", "rate of the axis about L", "|L|/I₁", "rad/s"),
+                brief=False,
             ),
         ]
 
@@ -367,12 +368,13 @@ class FreeRigidBody(show.Displayed):
                 "kg·m²/s",
                 brief=False,
             ),
-            *show.details(
+            *show.scalars(
                 self,
                 ("parameter", "Jacobi parameter", "m = k²", ""),
                 ("frequency", "rate of τ = λt + τ₀", "λ", "1/s"),
                 ("flip_interval", "interval between flips", "", "s"),
                 ("pole_axis", "principal axis ω circles (index)", "", ""),
+                brief=False,
             ),
         ]
 

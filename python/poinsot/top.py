@@ -236,7 +236,7 @@ class HeavyTop(show.Displayed):
                 label="theta",
             ),
             show.scalar("omega3", "spin (2.99)", "ω₃", self.omega3, "rad/s"),
-            *show.details(
+            *show.scalars(
                 self,
                 ("p_phi", "momentum about the vertical (2.104)", "p_φ", q),
                 ("p_psi", "momentum about the symmetry axis (2.103)", "p_ψ", q),
@@ -245,6 +245,7 @@ class HeavyTop(show.Displayed):
                 ("nutation_period", "period of θ", "", "s"),
                 ("mean_precession_rate", "mean precession rate", "⟨φ′⟩", "rad/s"),
                 ("mean_spin_rate", "mean spin rate", "⟨ψ′⟩", "rad/s"),
+                brief=False,
             ),
         ]
 

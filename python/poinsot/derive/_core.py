@@ -147,13 +147,21 @@ def _power(text: str, exp: Any, printer: Any) -> str:
     return r"\left(" + text + r"\right)^{" + str(printer._print(exp)) + "}"
 
 
-class Cross(sp.Function):
-    """The cross product a × b, unevaluated (its components come from the model)."""
-
-    nargs = 2
+class _Notation(sp.Function):
+    """A function of the unit's notation, printed by its ``_body_latex`` (raised to a power
+    when sympy's printer asks)."""
 
     def _latex(self, printer: Any, exp: Any = None) -> str:
         return _power(self._body_latex(printer), exp, printer)
+
+    def _body_latex(self, printer: Any) -> str:
+        raise NotImplementedError
+
+
+class Cross(_Notation):
+    """The cross product a × b, unevaluated (its components come from the model)."""
+
+    nargs = 2
 
     def _body_latex(self, printer: Any) -> str:
         """The LaTeX without a power (a notation of a topic overrides this)."""
@@ -164,13 +172,10 @@ class Cross(sp.Function):
         return _pretty_binary(printer, self, "×")
 
 
-class Dot(sp.Function):
+class Dot(_Notation):
     """The scalar product a · b, unevaluated."""
 
     nargs = 2
-
-    def _latex(self, printer: Any, exp: Any = None) -> str:
-        return _power(self._body_latex(printer), exp, printer)
 
     def _body_latex(self, printer: Any) -> str:
         """The LaTeX without a power (a notation of a topic overrides this)."""
@@ -207,14 +212,11 @@ def _dt_pretty(printer: Any, e: Any, frame: str) -> Any:
     return prettyForm(*head.right(prettyForm(*body.parens())))
 
 
-class _FrameRate(sp.Function):
+class _FrameRate(_Notation):
     """A rate of change of X seen in the frame ``_frame`` ("fix" or "rot")."""
 
     nargs = 1
     _frame = ""
-
-    def _latex(self, printer: Any, exp: Any = None) -> str:
-        return _power(self._body_latex(printer), exp, printer)
 
     def _body_latex(self, printer: Any) -> str:
         """The LaTeX without a power (a notation of a topic overrides this)."""

@@ -713,6 +713,12 @@ def derive() -> Derivation:
     return d
 
 
+def _carried(lhs: Any, x: Any) -> list[Any]:
+    """``lhs`` = the fixed-frame rate of a vector ``x`` fixed in the body, by the operator 2.14
+    with (dx/dt)_rot = 0: (dx/dt)_fix = (dx/dt)_rot + ω⃗ × x = ω⃗ × x."""
+    return _chain(lhs, DtFix(x), _add(DtRot(x), Cross(W, x)), Cross(W, x))
+
+
 def _particles_part(d: _RigidDerivation) -> None:
     ra, va, ma = _ra(), _va(), _ma()
     d.given(
@@ -724,7 +730,7 @@ def _particles_part(d: _RigidDerivation) -> None:
     d.step(
         "The velocity of particle a is the rate of r⃗_a seen from the fixed frame; by the "
         "operator 2.14, with (dr⃗_a/dt)_rot = 0:",
-        _chain(va, DtFix(ra), _add(DtRot(ra), Cross(W, ra)), Cross(W, ra)),
+        _carried(va, ra),
         "2.43",
     )
     d.given(
@@ -940,7 +946,7 @@ def _dumbbell_part(d: _RigidDerivation) -> None:
     d.step(
         "At constant ω⃗ the body-frame components of L⃗ (2.50) are constant, (dL⃗/dt)_rot = 0, "
         "and by 2.14 the torque that must hold the body is",
-        _chain(N, DtFix(L), _add(DtRot(L), Cross(W, L)), Cross(W, L)),
+        _carried(N, L),
         "2.59",
     )
     torque = _neg(_mul(i_rod, OMEGA**2, sp.sin(ALPHA), sp.cos(ALPHA), J_HAT))
