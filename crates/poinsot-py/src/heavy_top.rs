@@ -42,6 +42,20 @@ fn batch<'py>(
     Ok(arr)
 }
 
+/// Angles θ (rad, (N,)).
+type Angles<'py> = PyReadonlyArray1<'py, f64>;
+
+/// `f` at each of the angles `theta`, without the GIL, stoppable by Ctrl-C.
+fn each_theta(
+    py: Python<'_>,
+    theta: &Angles<'_>,
+    f: impl Fn(f64) -> poinsot::Result<f64> + Sync,
+) -> PyResult<Values> {
+    Ok(map_each(py, slice("theta", theta)?, |&th| f(th))?
+        .into_iter()
+        .collect())
+}
+
 /// Evaluates `f` (a batch kernel) at the one time `t`, with the GIL held (releasing it costs
 /// more than one evaluation); errors name `t` as in [`batch`].
 fn one(t: f64, f: impl Fn(&[f64], &mut [f64]) -> poinsot::Result<()>) -> PyResult<(f64, f64, f64)> {
@@ -184,27 +198,19 @@ impl PyHeavyTop {
     }
 
     /// V(θ) (J) at (N,) angles θ (rad).
-    fn effective_potential(
-        &self,
-        py: Python<'_>,
-        theta: PyReadonlyArray1<'_, f64>,
-    ) -> PyResult<Values> {
-        let v = map_each(py, slice("theta", &theta)?, |&th| {
-            self.inner.effective_potential(th)
-        })?;
-        Ok(v.into_iter().collect())
+    fn effective_potential(&self, py: Python<'_>, theta: Angles<'_>) -> PyResult<Values> {
+        each_theta(py, &theta, |th| self.inner.effective_potential(th))
     }
 
     /// dV/dθ (N·m) at (N,) angles θ (rad).
     fn effective_potential_derivative(
         &self,
         py: Python<'_>,
-        theta: PyReadonlyArray1<'_, f64>,
+        theta: Angles<'_>,
     ) -> PyResult<Values> {
-        let v = map_each(py, slice("theta", &theta)?, |&th| {
+        each_theta(py, &theta, |th| {
             self.inner.effective_potential_derivative(th)
-        })?;
-        Ok(v.into_iter().collect())
+        })
     }
 
     /// (N, 3) Euler angles [φ, θ, ψ] (rad) at (N,) times (s).
@@ -294,13 +300,7 @@ fn heavy_top_lagrangian(
     phi_dot: f64,
     psi_dot: f64,
 ) -> PyResult<f64> {
-    let s = EulerState {
-        theta,
-        theta_dot,
-        phi_dot,
-        psi_dot,
-        ..EulerState::default()
-    };
+    let s = EulerState::with_rates(theta, theta_dot, phi_dot, psi_dot);
     analytic::lagrangian(i1, i3, mgl, &s).py()
 }
 
@@ -315,13 +315,7 @@ fn heavy_top_constants_of_state(
     phi_dot: f64,
     psi_dot: f64,
 ) -> PyResult<(f64, f64, f64)> {
-    let s = EulerState {
-        theta,
-        theta_dot,
-        phi_dot,
-        psi_dot,
-        ..EulerState::default()
-    };
+    let s = EulerState::with_rates(theta, theta_dot, phi_dot, psi_dot);
     let c = analytic::constants_of_state(i1, i3, mgl, &s).py()?;
     Ok((c.p_phi, c.p_psi, c.energy))
 }
