@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 import sys
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -65,6 +66,16 @@ def as_float_array(value: Any, name: str, *, finite: bool = True) -> FloatArray:
                 f"{name}: a number is beyond the range of doubles (about 1.8e308)"
             ) from None
     return _finite(value, name) if finite else value
+
+
+def returned(got: Any, name: str, what: str, shown: Callable[[Any], str] = repr) -> FloatArray:
+    """What the user's callable ``name`` returned, as a float64 array (finite or not: the core
+    judges), or :class:`PoinsotError` naming ``name``: "the callable must return ``what``, got
+    ``shown(got)``" (``shown`` runs only then)."""
+    try:
+        return as_float_array(got, name, finite=False)
+    except PoinsotError:
+        raise PoinsotError(f"{name}: the callable must return {what}, got {shown(got)}") from None
 
 
 def _finite(arr: FloatArray, name: str) -> FloatArray:

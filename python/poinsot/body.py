@@ -50,6 +50,7 @@ from ._validate import (
     as_scalar,
     as_vector3,
     as_vectors,
+    returned,
 )
 from .errors import ArgumentTypeError, InvalidMeshError, PoinsotError
 
@@ -65,6 +66,10 @@ __all__ = [
 #: Default relative tolerance of :func:`classify` and :attr:`RigidBody.kind` (in units of the
 #: largest principal moment): moments closer than this are "equal", smaller than this "zero".
 DEFAULT_KIND_RTOL: float = _DEFAULTS["classify"]["rtol"]
+
+
+def _type_name(value: Any) -> str:
+    return type(value).__name__
 
 
 class IntegrationWarning(UserWarning):
@@ -430,13 +435,7 @@ class RigidBody(show.Displayed):
         as_callable(density, "density", optional=False)
 
         def batched(points: FloatArray) -> FloatArray:
-            got = density(points)
-            try:
-                values = as_float_array(got, "density", finite=False)
-            except PoinsotError:
-                raise PoinsotError(
-                    f"density: the callable must return real numbers, got {type(got).__name__}"
-                ) from None
+            values = returned(density(points), "density", "real numbers", _type_name)
             if values.ndim == 0:
                 values = np.full(points.shape[0], float(values))
             if values.shape != (points.shape[0],):

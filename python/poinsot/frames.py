@@ -30,6 +30,7 @@ from ._validate import (
     as_matrices,
     as_scalar,
     as_vectors,
+    returned,
     shaped,
 )
 from .errors import PoinsotError
@@ -415,13 +416,9 @@ def _force_callable(force: Callable[..., Any]) -> Callable[..., tuple[float, flo
     def call(
         t: float, x: float, y: float, z: float, vx: float, vy: float, vz: float
     ) -> tuple[float, float, float]:
-        got = force(t, np.array((x, y, z)), np.array((vx, vy, vz)))
-        try:
-            f = as_float_array(got, "force", finite=False)
-        except PoinsotError:
-            raise PoinsotError(
-                f"force: the callable must return 3 real numbers, got {got!r}"
-            ) from None
+        f = returned(
+            force(t, np.array((x, y, z)), np.array((vx, vy, vz))), "force", "3 real numbers"
+        )
         if f.shape != (3,):
             raise PoinsotError(f"force: the callable must return shape (3,), got {f.shape}")
         if (

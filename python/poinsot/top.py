@@ -91,21 +91,6 @@ class SteadyPrecession:
     min_spin: float
 
 
-#: The parameters of every top, and the angles and rates of a starting state, in the core's order.
-_MOMENTS = ("I1", "I3", "mgl")
-_STATE = ("phi", "theta", "psi", "phi_dot", "theta_dot")
-
-
-def _checked(args: dict[str, Any], scalars: tuple[str, ...], angles: tuple[str, ...] = ()) -> Any:
-    """The arguments named, from a constructor's ``args`` (its ``locals()``), each checked
-    naming it: ``scalars`` finite, ``angles`` finite too and in rad (converted from degrees
-    when ``args["degrees"]``)."""
-    return (
-        *(as_scalar(args[n], n) for n in scalars),
-        *(as_angle(args[n], n, args["degrees"]) for n in angles),
-    )
-
-
 class HeavyTop(show.Displayed):
     """A heavy symmetric top started from Euler angles and rates, with its exact motion.
 
@@ -170,7 +155,18 @@ class HeavyTop(show.Displayed):
         psi: float = _TOP["psi"],
         degrees: bool = False,
     ) -> None:
-        self._build("from_state", *_checked(locals(), _MOMENTS, (*_STATE, "psi_dot")))
+        self._build(
+            "from_state",
+            as_scalar(I1, "I1"),
+            as_scalar(I3, "I3"),
+            as_scalar(mgl, "mgl"),
+            as_angle(phi, "phi", degrees),
+            as_angle(theta, "theta", degrees),
+            as_angle(psi, "psi", degrees),
+            as_angle(phi_dot, "phi_dot", degrees),
+            as_angle(theta_dot, "theta_dot", degrees),
+            as_angle(psi_dot, "psi_dot", degrees),
+        )
 
     @classmethod
     def from_spin(
@@ -192,7 +188,18 @@ class HeavyTop(show.Displayed):
         whatever ``phi_dot`` (the rates as in :class:`HeavyTop`; ``omega3`` in deg/s with
         ``degrees=True``). Raises as :class:`HeavyTop`, and naming ``omega3`` if not finite."""
         top = cls.__new__(cls)
-        top._build("from_spin", *_checked(locals(), _MOMENTS, (*_STATE, "omega3")))
+        top._build(
+            "from_spin",
+            as_scalar(I1, "I1"),
+            as_scalar(I3, "I3"),
+            as_scalar(mgl, "mgl"),
+            as_angle(phi, "phi", degrees),
+            as_angle(theta, "theta", degrees),
+            as_angle(psi, "psi", degrees),
+            as_angle(phi_dot, "phi_dot", degrees),
+            as_angle(theta_dot, "theta_dot", degrees),
+            as_angle(omega3, "omega3", degrees),
+        )
         return top
 
     @classmethod
@@ -212,7 +219,15 @@ class HeavyTop(show.Displayed):
         Raises :class:`PoinsotError` naming ``energy`` when ``E' = E - p_psi**2/(2 I3)`` lies below
         the minimum of the effective potential (no motion has these constants)."""
         top = cls.__new__(cls)
-        top._build("from_constants", *_checked(locals(), (*_MOMENTS, "p_phi", "p_psi", "energy")))
+        top._build(
+            "from_constants",
+            as_scalar(I1, "I1"),
+            as_scalar(I3, "I3"),
+            as_scalar(mgl, "mgl"),
+            as_scalar(p_phi, "p_phi"),
+            as_scalar(p_psi, "p_psi"),
+            as_scalar(energy, "energy"),
+        )
         return top
 
     def _rows(self) -> list[show.Row]:

@@ -7,7 +7,10 @@ takes."""
 from __future__ import annotations
 
 import inspect
+import re
+from typing import Any
 
+import poinsot as ps
 import poinsot.plots as plots
 import pytest
 from poinsot import sweep
@@ -56,3 +59,25 @@ def test_every_sweep_ends_with_the_same_options(name: str) -> None:
     assert tail == [n for n, _, _ in sweep._OPTIONS] + ["keywords"]
     assert all(p.kind is p.KEYWORD_ONLY for p in params[:-1])
     assert params[-1].kind is inspect.Parameter.VAR_KEYWORD
+
+
+@pytest.mark.parametrize(
+    ("call", "message"),
+    [
+        (
+            lambda: ps.RigidBody.from_density(lambda p: "dense", [[0, 1], [0, 1], [0, 1]]),
+            "density: the callable must return real numbers, got str",
+        ),
+        (
+            lambda: ps.simulate_particle(
+                ps.MovingFrame(), [1, 0, 0], [0, 0, 0], 1.0, force=lambda t, r, v: "push"
+            ),
+            "force: the callable must return 3 real numbers, got 'push'",
+        ),
+    ],
+)
+def test_a_callable_returning_text_is_refused_naming_it(call: Any, message: str) -> None:
+    """One helper (``_validate.returned``) reads what the user's callables return: the
+    message names the argument and shows what came back."""
+    with pytest.raises(ps.PoinsotError, match=f"^{re.escape(message)}$"):
+        call()

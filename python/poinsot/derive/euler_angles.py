@@ -142,11 +142,15 @@ class _Rot(sp.Function):
         return prettyForm(*head.right(prettyForm(*printer._print(self.args[1]).parens())))
 
 
-class _Tr(sp.Function):
-    """The transpose Xᵀ."""
+class _MatrixOp(sp.Function):
+    """An operation on one matrix of the notation (a matrix again: non-commutative)."""
 
     nargs = 1
     is_commutative = False
+
+
+class _Tr(_MatrixOp):
+    """The transpose Xᵀ."""
 
     def _latex(self, printer: Any) -> str:
         return f"{printer._print(self.args[0])}^{{\\mathsf{{T}}}}"
@@ -155,11 +159,8 @@ class _Tr(sp.Function):
         return prettyForm(*printer._print(self.args[0]).right("ᵀ"))
 
 
-class _Dot(sp.Function):
+class _Dot(_MatrixOp):
     """The time derivative Ẋ of a matrix."""
-
-    nargs = 1
-    is_commutative = False
 
     def _latex(self, printer: Any) -> str:
         return f"\\dot{{{printer._print(self.args[0])}}}"
@@ -168,11 +169,8 @@ class _Dot(sp.Function):
         return prettyForm(printer._print(self.args[0]).render(wrap_line=False) + "\u0307")
 
 
-class _Skew(sp.Function):
+class _Skew(_MatrixOp):
     """[v]×, the matrix with [v]× u = v × u."""
-
-    nargs = 1
-    is_commutative = False
 
     def _latex(self, printer: Any) -> str:
         return f"\\left[{printer._print(self.args[0])}\\right]_{{\\times}}"
