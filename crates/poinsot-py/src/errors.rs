@@ -26,38 +26,22 @@ use pyo3::exceptions::{PyKeyboardInterrupt, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyType;
 
-create_exception!(poinsot, PoinsotError, PyValueError, "Bad input or an impossible request to poinsot (also a ValueError). The message names the argument and the violated condition.");
-create_exception!(poinsot, InvalidInertiaError, PoinsotError, "An inertia tensor that no body can have (asymmetric, negative moment, triangle inequality violated).");
-create_exception!(
-    poinsot,
-    InvalidRotationError,
-    PoinsotError,
-    "A matrix that is not a proper rotation (not orthonormal within tolerance, or det != +1)."
-);
-create_exception!(
-    poinsot,
-    InvalidMeshError,
-    PoinsotError,
-    "A triangle mesh that does not bound a solid (open, non-manifold, inside-out or degenerate)."
-);
-create_exception!(
-    poinsot,
-    GimbalLockError,
-    PoinsotError,
-    "Euler-angle rates requested at the singular angles of their sequence (gimbal lock)."
-);
-create_exception!(
-    poinsot,
-    IntegrationError,
-    PoinsotError,
-    "A numerical integration diverged or could not reach its tolerance."
-);
-create_exception!(
-    poinsot,
-    InternalError,
-    PoinsotError,
-    "A bug in poinsot: the compiled core panicked (it validates its input first, so this should never happen). Raised instead of ``pyo3_runtime.PanicException``, which would escape ``except Exception``; the message asks for a report."
-);
+/// The exception classes, `Name: Base = "docstring";` each (pyo3's `create_exception!`).
+macro_rules! exceptions {
+    ($($name:ident: $base:ty = $doc:literal;)+) => {
+        $(create_exception!(poinsot, $name, $base, $doc);)+
+    };
+}
+
+exceptions! {
+    PoinsotError: PyValueError = "Bad input or an impossible request to poinsot (also a ValueError). The message names the argument and the violated condition.";
+    InvalidInertiaError: PoinsotError = "An inertia tensor that no body can have (asymmetric, negative moment, triangle inequality violated).";
+    InvalidRotationError: PoinsotError = "A matrix that is not a proper rotation (not orthonormal within tolerance, or det != +1).";
+    InvalidMeshError: PoinsotError = "A triangle mesh that does not bound a solid (open, non-manifold, inside-out or degenerate).";
+    GimbalLockError: PoinsotError = "Euler-angle rates requested at the singular angles of their sequence (gimbal lock).";
+    IntegrationError: PoinsotError = "A numerical integration diverged or could not reach its tolerance.";
+    InternalError: PoinsotError = "A bug in poinsot: the compiled core panicked (it validates its input first, so this should never happen). Raised instead of ``pyo3_runtime.PanicException``, which would escape ``except Exception``; the message asks for a report.";
+}
 
 /// The exception class named `name` (one of the core's [`ErrorKind::class_name`]s): the types
 /// created above, or Python's `KeyboardInterrupt` (a monitor stopped the run without keeping a
@@ -153,6 +137,6 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
         }
     }
     m.add("InternalError", py.get_type::<InternalError>())?;
-    m.add_function(wrap_pyfunction!(error_classes, m)?)?;
+    add_functions!(m; error_classes);
     Ok(())
 }

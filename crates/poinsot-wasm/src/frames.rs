@@ -24,53 +24,50 @@ pub struct MovingFrame {
 #[wasm_bindgen]
 #[derive(Debug, Clone)]
 pub struct FixedMotion {
-    values: Vec<f64>,
+    inner: fr::FixedMotion,
 }
 
 #[wasm_bindgen]
 impl FixedMotion {
-    fn part(&self, k: usize) -> Vec<f64> {
-        self.values[3 * k..3 * k + 3].to_vec()
-    }
     /// Position in the fixed frame (m).
     #[wasm_bindgen(getter)]
     pub fn position(&self) -> Vec<f64> {
-        self.part(0)
+        vec_out(&self.inner.position)
     }
     /// Velocity in the fixed frame (m/s).
     #[wasm_bindgen(getter)]
     pub fn velocity(&self) -> Vec<f64> {
-        self.part(1)
+        vec_out(&self.inner.velocity)
     }
     /// Acceleration in the fixed frame (m/s²): the sum of the five terms.
     #[wasm_bindgen(getter)]
     pub fn acceleration(&self) -> Vec<f64> {
-        self.part(2)
+        vec_out(&self.inner.acceleration)
     }
     /// The relative acceleration term (m/s²).
     #[wasm_bindgen(getter)]
     pub fn relative(&self) -> Vec<f64> {
-        self.part(3)
+        vec_out(&self.inner.terms.relative)
     }
     /// The acceleration of the moving origin (m/s²).
     #[wasm_bindgen(getter)]
     pub fn origin(&self) -> Vec<f64> {
-        self.part(4)
+        vec_out(&self.inner.terms.origin)
     }
     /// The Coriolis term 2 ω × v (m/s²).
     #[wasm_bindgen(getter)]
     pub fn coriolis(&self) -> Vec<f64> {
-        self.part(5)
+        vec_out(&self.inner.terms.coriolis)
     }
     /// The centripetal term ω × (ω × r) (m/s²).
     #[wasm_bindgen(getter)]
     pub fn centripetal(&self) -> Vec<f64> {
-        self.part(6)
+        vec_out(&self.inner.terms.centripetal)
     }
     /// The Euler term ω̇ × r (m/s²).
     #[wasm_bindgen(getter)]
     pub fn euler(&self) -> Vec<f64> {
-        self.part(7)
+        vec_out(&self.inner.terms.euler)
     }
 }
 
@@ -80,53 +77,50 @@ impl FixedMotion {
 #[wasm_bindgen]
 #[derive(Debug, Clone)]
 pub struct RelativeMotion {
-    values: Vec<f64>,
+    inner: fr::RelativeMotion,
 }
 
 #[wasm_bindgen]
 impl RelativeMotion {
-    fn part(&self, k: usize) -> Vec<f64> {
-        self.values[3 * k..3 * k + 3].to_vec()
-    }
     /// Position r in the moving frame (m).
     #[wasm_bindgen(getter)]
     pub fn position(&self) -> Vec<f64> {
-        self.part(0)
+        vec_out(&self.inner.position)
     }
     /// Velocity (dr/dt)_rot (m/s).
     #[wasm_bindgen(getter)]
     pub fn velocity(&self) -> Vec<f64> {
-        self.part(1)
+        vec_out(&self.inner.velocity)
     }
     /// Acceleration (d²r/dt²)_rot (m/s²): the sum of the five terms.
     #[wasm_bindgen(getter)]
     pub fn acceleration(&self) -> Vec<f64> {
-        self.part(2)
+        vec_out(&self.inner.acceleration)
     }
     /// The true (inertial) acceleration r̈' (m/s²).
     #[wasm_bindgen(getter)]
     pub fn inertial(&self) -> Vec<f64> {
-        self.part(3)
+        vec_out(&self.inner.terms.inertial)
     }
     /// −R̈, from the acceleration of the moving origin (m/s²).
     #[wasm_bindgen(getter)]
     pub fn translational(&self) -> Vec<f64> {
-        self.part(4)
+        vec_out(&self.inner.terms.translational)
     }
     /// The Coriolis term −2 ω × (dr/dt)_rot (m/s²).
     #[wasm_bindgen(getter)]
     pub fn coriolis(&self) -> Vec<f64> {
-        self.part(5)
+        vec_out(&self.inner.terms.coriolis)
     }
     /// The centrifugal term −ω × (ω × r) (m/s²).
     #[wasm_bindgen(getter)]
     pub fn centrifugal(&self) -> Vec<f64> {
-        self.part(6)
+        vec_out(&self.inner.terms.centrifugal)
     }
     /// The Euler term −ω̇ × r (m/s²).
     #[wasm_bindgen(getter)]
     pub fn euler(&self) -> Vec<f64> {
-        self.part(7)
+        vec_out(&self.inner.terms.euler)
     }
 }
 
@@ -161,24 +155,10 @@ impl MovingFrame {
         #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] velocity: Numbers,
         #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] acceleration: Numbers,
     ) -> Out<FixedMotion> {
-        let (r, v, a) = (
-            vector("position", &position)?,
-            vector("velocity", &velocity)?,
-            vector("acceleration", &acceleration)?,
-        );
-        let m = self.inner.to_fixed(&r, &v, &a)?;
-        let t = &m.terms;
+        let (r, v) = state(&position, &velocity)?;
+        let a = vector("acceleration", &acceleration)?;
         Ok(FixedMotion {
-            values: flat(&[
-                m.position,
-                m.velocity,
-                m.acceleration,
-                t.relative,
-                t.origin,
-                t.coriolis,
-                t.centripetal,
-                t.euler,
-            ]),
+            inner: self.inner.to_fixed(&r, &v, &a)?,
         })
     }
 
@@ -191,24 +171,10 @@ impl MovingFrame {
         #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] velocity: Numbers,
         #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] acceleration: Numbers,
     ) -> Out<RelativeMotion> {
-        let (r, v, a) = (
-            vector("position", &position)?,
-            vector("velocity", &velocity)?,
-            vector("acceleration", &acceleration)?,
-        );
-        let m = self.inner.to_moving(&r, &v, &a)?;
-        let t = &m.terms;
+        let (r, v) = state(&position, &velocity)?;
+        let a = vector("acceleration", &acceleration)?;
         Ok(RelativeMotion {
-            values: flat(&[
-                m.position,
-                m.velocity,
-                m.acceleration,
-                t.inertial,
-                t.translational,
-                t.coriolis,
-                t.centrifugal,
-                t.euler,
-            ]),
+            inner: self.inner.to_moving(&r, &v, &a)?,
         })
     }
 
@@ -297,10 +263,7 @@ impl SpringParticle {
         #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] position: Numbers,
         #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] velocity: Numbers,
     ) -> Out<f64> {
-        let (r, v) = (
-            vector("position", &position)?,
-            vector("velocity", &velocity)?,
-        );
+        let (r, v) = state(&position, &velocity)?;
         Ok(self.inner.energy(&r, &v)?)
     }
 
@@ -313,10 +276,7 @@ impl SpringParticle {
         #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] position: Numbers,
         #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] velocity: Numbers,
     ) -> Out<f64> {
-        let (r, v) = (
-            vector("position", &position)?,
-            vector("velocity", &velocity)?,
-        );
+        let (r, v) = state(&position, &velocity)?;
         Ok(self.inner.jacobi_integral(&frame.inner, &r, &v)?)
     }
 }
@@ -340,10 +300,7 @@ pub fn simulate_particle(
 ) -> Out<Vec<f64>> {
     let (mass, stiffness) = (number("mass", &mass)?, number("stiffness", &stiffness)?);
     let particle = fr::SpringParticle::new(mass, stiffness)?;
-    let (r0, v0) = (
-        vector("position", &position)?,
-        vector("velocity", &velocity)?,
-    );
+    let (r0, v0) = state(&position, &velocity)?;
     let duration = number("duration", &duration)?;
     let t_eval = numbers_each("t_eval", &t_eval, BYTES_PER_TIME)?;
     let motion = fr::SteadyMotion::new(frame.inner)?;
@@ -351,14 +308,15 @@ pub fn simulate_particle(
     Ok(scan.y.iter().flatten().copied().collect())
 }
 
-/// The vectors' components one after another.
-fn flat(parts: &[poinsot::Vec3]) -> Vec<f64> {
-    parts.iter().flat_map(|x| [x.x, x.y, x.z]).collect()
+/// A particle's `position` and `velocity` (3 numbers each) as core vectors.
+fn state(position: &Numbers, velocity: &Numbers) -> Out<(poinsot::Vec3, poinsot::Vec3)> {
+    Ok((vector("position", position)?, vector("velocity", velocity)?))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::refused;
 
     #[test]
     fn terms_sum_to_the_acceleration_and_coriolis_is_two_omega_cross_v() {
@@ -498,16 +456,8 @@ mod tests {
             vec![1.0, 0.0, 0.0],
         )
         .unwrap();
-        assert!(tilted
-            .at(1.0)
-            .unwrap_err()
-            .message
-            .starts_with("angular_acceleration"));
-        assert!(table(1.0, 0.0)
-            .at(f64::NAN)
-            .unwrap_err()
-            .message
-            .starts_with("t:"));
+        refused(tilted.at(1.0), "angular_acceleration");
+        refused(table(1.0, 0.0).at(f64::NAN), "t:");
         let f = table(1.0, 0.0);
         let run = |d: f64, times: Vec<f64>, m: f64, k: f64| {
             simulate_particle(&f, vec![1.0, 0.0, 0.0], vec![0.0; 3], d, times, m, k).unwrap_err()
@@ -520,11 +470,7 @@ mod tests {
         let e = run(1.0, vec![1.0], 1.0, -2.0);
         assert!(e.message.starts_with("stiffness") && e.name == "PoinsotError");
         let p = SpringParticle::new(1.0, 2.0).unwrap();
-        assert!(p
-            .force(vec![1.0, f64::NAN, 0.0])
-            .unwrap_err()
-            .message
-            .starts_with("position"));
+        refused(p.force(vec![1.0, f64::NAN, 0.0]), "position");
         assert!(p
             .energy(vec![1.0, 0.0], vec![0.0; 3])
             .unwrap_err()
@@ -557,16 +503,11 @@ mod tests {
             "{}",
             e.message
         );
-        assert!(p
-            .energy(vec![1.0, 0.0, 0.0], vec![1e200, 0.0, 0.0])
-            .unwrap_err()
-            .message
-            .starts_with("velocity: the result (energy)"));
-        assert!(table(1.0, 0.2)
-            .at(1e300)
-            .unwrap_err()
-            .message
-            .starts_with("t: the frame's"));
+        refused(
+            p.energy(vec![1.0, 0.0, 0.0], vec![1e200, 0.0, 0.0]),
+            "velocity: the result (energy)",
+        );
+        refused(table(1.0, 0.2).at(1e300), "t: the frame's");
         // ½·2·1² + ½·1·(1² − (2·1)²) at ω = 2 ẑ, r = x̂, v = ŷ: 1 + ½(1 − 4) = −0.5.
         let j = p
             .jacobi_integral(&table(2.0, 0.0), vec![1.0, 0.0, 0.0], vec![0.0, 1.0, 0.0])
