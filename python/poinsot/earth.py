@@ -403,9 +403,9 @@ class Earth:
         """The unit's Earth, turning once per solar day: ω = 2π/86400 = 7.2722e-5 rad/s."""
         return cls(SOLAR_DAY_RATE, radius, g)
 
-    rotation_rate = core_property("rotation_rate", "ω (rad/s).")
-    radius = core_property("radius", "R (m).")
-    g = core_property("g", "g (m/s²).")
+    rotation_rate: float = core_property("rotation_rate", "ω (rad/s).")
+    radius: float = core_property("radius", "R (m).")
+    g: float = core_property("g", "g (m/s²).")
 
     def __repr__(self) -> str:
         c = self._core

@@ -588,8 +588,8 @@ class SpringParticle:
     def __reduce__(self) -> tuple[Any, ...]:  # pickling and copying: the constructor again
         return (SpringParticle, (self.mass, self.stiffness))
 
-    mass = core_property("mass", "m (kg).")
-    stiffness = core_property("stiffness", "k (N/m).")
+    mass: float = core_property("mass", "m (kg).")
+    stiffness: float = core_property("stiffness", "k (N/m).")
 
     def force(self, position: Any) -> FloatArray:
         """F = −k r (N) at ``position`` r (m), shape (..., 3), in the components of ``position``."""

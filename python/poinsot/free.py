@@ -426,7 +426,7 @@ class FreeRigidBody(show.Displayed):
         float,
     )
 
-    pole_axis = core_property(
+    pole_axis: int | None = core_property(
         "pole_axis",
         "The principal axis (index into ``moments``) that ω circles, or None.",
     )

@@ -280,25 +280,27 @@ class HeavyTop(show.Displayed):
         """``m g l`` (N m)."""
         return self._core.parameters[2]
 
-    p_phi = core_property(
+    p_phi: float = core_property(
         "p_phi",
         """``p_phi = I1 phi' sin^2(theta) + p_psi cos(theta)`` (kg m^2/s, 2.104): the conserved
         vertical angular momentum ``L_Z``.""",
     )
 
-    p_psi = core_property(
+    p_psi: float = core_property(
         "p_psi",
         "``p_psi = I3 omega3`` (kg m^2/s, 2.103): the conserved angular momentum about axis 3.",
     )
 
-    omega3 = core_property(
+    omega3: float = core_property(
         "omega3",
         "The spin ``omega3 = psi' + phi' cos(theta)`` (rad/s, 2.99), constant.",
     )
 
-    energy = core_property("energy", "The total energy ``E = T + m g l cos(theta)`` (J, 2.105).")
+    energy: float = core_property(
+        "energy", "The total energy ``E = T + m g l cos(theta)`` (J, 2.105)."
+    )
 
-    reduced_energy = core_property(
+    reduced_energy: float = core_property(
         "reduced_energy",
         "``E' = E - p_psi**2/(2 I3) = I1 theta'**2/2 + V(theta)`` (J, 2.109).",
     )
@@ -326,25 +328,25 @@ class HeavyTop(show.Displayed):
         flat, shape = as_flat(theta, "theta", degrees)
         return shaped(self._core.effective_potential_derivative(flat), shape)
 
-    turning_points = core_property(
+    turning_points: tuple[float, float] = core_property(
         "turning_points",
         """``(theta1, theta2)`` (rad), ``theta1 <= theta2``: where ``E' = V(theta)``, the roots of
         the cubic ``f(u) = (1 - u^2)(alpha - beta u) - (b - a u)^2`` in ``u = cos(theta)``, computed
         without cancellation at the poles (both equal for steady precession).""",
     )
 
-    cubic_roots = core_property(
+    cubic_roots: tuple[float, float, float] = core_property(
         "cubic_roots",
         """``(u1, u2, u3)``: the roots of the cubic in ``u = cos(theta)``, ``u1 = cos(theta2) <= u2
         = cos(theta1) <= 1 <= u3`` (``u3 = inf`` when ``m g l = 0``).""",
     )
 
-    motion_class = core_property(
+    motion_class: str = core_property(
         "motion_class",
         "The shape of the axis' path: one of :data:`MOTION_CLASSES`.",
     )
 
-    is_sleeping_stable = core_property(
+    is_sleeping_stable: bool = core_property(
         "is_sleeping_stable",
         "Whether this spin keeps an upright top asleep: ``omega3**2 > 4 m g l I1 / I3**2``.",
     )
@@ -356,12 +358,12 @@ class HeavyTop(show.Displayed):
         p = self._core.nutation_period
         return math.inf if p is None else p
 
-    mean_precession_rate = core_property(
+    mean_precession_rate: float = core_property(
         "mean_precession_rate",
         "The mean of ``phi'`` over a nutation period (rad/s).",
     )
 
-    mean_spin_rate = core_property(
+    mean_spin_rate: float = core_property(
         "mean_spin_rate",
         "The mean of ``psi'`` over a nutation period (rad/s).",
     )
