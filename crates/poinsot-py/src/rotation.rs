@@ -33,6 +33,43 @@ fn batch<'py>(
     Ok(out)
 }
 
+/// Exports `$name`, the batch kernel `$kernel` of the arrays `$arg` (`N` records of shape
+/// `$shape` each, the first argument's `N`) into a new array of shape `(N, $out…)`.
+macro_rules! batch_export {
+    ($(#[$doc:meta])* $name:ident($($arg:ident: $shape:expr),+) -> $out:expr, $kernel:path) => {
+        $(#[$doc])*
+        #[export]
+        #[allow(non_snake_case)]
+        fn $name<'py>(py: Python<'py>, $($arg: PyReadonlyArrayDyn<'py, f64>),+) -> PyResult<Out<'py>> {
+            $(let $arg = records(stringify!($arg), &$arg, &$shape)?;)+
+            let n = [$($arg.1),+][0];
+            let dims: Vec<usize> = std::iter::once(n).chain($out).collect();
+            batch(py, &dims, |out| $kernel($($arg.0),+, out))
+        }
+    };
+}
+
+batch_export!(
+    /// Rotation matrices `(N, 3, 3)` → quaternions `(N, 4)`, `[w, x, y, z]`, `w >= 0`.
+    matrix_to_quaternion(R: [3, 3]) -> [4], rot::matrix_to_quaternion_batch
+);
+batch_export!(
+    /// Hamilton products of quaternions `(N, 4)` and `(N, 4)` → `(N, 4)`.
+    quaternion_multiply(p: [4], q: [4]) -> [4], rot::quaternion_multiply_batch
+);
+batch_export!(
+    /// Rotation matrices `(N, 3, 3)` → `(N, 4)` records `[n_x, n_y, n_z, angle]`.
+    rotation_axis(R: [3, 3]) -> [4], rot::rotation_axis_batch
+);
+batch_export!(
+    /// Axes `(N, 3)` and angles `(N,)` (rad) → rotation matrices `(N, 3, 3)`.
+    axis_angle_to_matrix(axis: [3], angle: []) -> [3, 3], rot::axis_angle_to_matrix_batch
+);
+batch_export!(
+    /// `R_k v_k` for matrices `(N, 3, 3)` and vectors `(N, 3)` → `(N, 3)`.
+    rotate_vectors(R: [3, 3], v: [3]) -> [3], rot::rotate_vectors_batch
+);
+
 /// Euler angles `(N, 3)` (rad) → rotation matrices `(N, 3, 3)`.
 #[export]
 fn euler_to_matrix<'py>(
@@ -66,17 +103,6 @@ fn matrix_to_euler<'py>(
     Ok((out, PyArray1::from_vec(py, locked)))
 }
 
-/// Rotation matrices `(N, 3, 3)` → quaternions `(N, 4)`, `[w, x, y, z]`, `w >= 0`.
-#[export]
-#[allow(non_snake_case)]
-fn matrix_to_quaternion<'py>(
-    py: Python<'py>,
-    R: PyReadonlyArrayDyn<'py, f64>,
-) -> PyResult<Out<'py>> {
-    let (m, n) = records("R", &R, &[3, 3])?;
-    batch(py, &[n, 4], |out| rot::matrix_to_quaternion_batch(m, out))
-}
-
 /// Quaternions `(N, 4)` `[w, x, y, z]` → rotation matrices `(N, 3, 3)`.
 #[export]
 fn quaternion_to_matrix<'py>(
@@ -90,53 +116,6 @@ fn quaternion_to_matrix<'py>(
     })
 }
 
-/// Hamilton products of quaternions `(N, 4)` and `(N, 4)` → `(N, 4)`.
-#[export]
-fn quaternion_multiply<'py>(
-    py: Python<'py>,
-    p: PyReadonlyArrayDyn<'py, f64>,
-    q: PyReadonlyArrayDyn<'py, f64>,
-) -> PyResult<Out<'py>> {
-    let (a, n) = records("p", &p, &[4])?;
-    let (b, _) = records("q", &q, &[4])?;
-    batch(py, &[n, 4], |out| rot::quaternion_multiply_batch(a, b, out))
-}
-
-/// Rotation matrices `(N, 3, 3)` → `(N, 4)` records `[n_x, n_y, n_z, angle]`.
-#[export]
-#[allow(non_snake_case)]
-fn rotation_axis<'py>(py: Python<'py>, R: PyReadonlyArrayDyn<'py, f64>) -> PyResult<Out<'py>> {
-    let (m, n) = records("R", &R, &[3, 3])?;
-    batch(py, &[n, 4], |out| rot::rotation_axis_batch(m, out))
-}
-
-/// Axes `(N, 3)` and angles `(N,)` (rad) → rotation matrices `(N, 3, 3)`.
-#[export]
-fn axis_angle_to_matrix<'py>(
-    py: Python<'py>,
-    axis: PyReadonlyArrayDyn<'py, f64>,
-    angle: PyReadonlyArrayDyn<'py, f64>,
-) -> PyResult<Out<'py>> {
-    let (a, n) = records("axis", &axis, &[3])?;
-    let (t, _) = records("angle", &angle, &[])?;
-    batch(py, &[n, 3, 3], |out| {
-        rot::axis_angle_to_matrix_batch(a, t, out)
-    })
-}
-
-/// `R_k v_k` for matrices `(N, 3, 3)` and vectors `(N, 3)` → `(N, 3)`.
-#[export]
-#[allow(non_snake_case)]
-fn rotate_vectors<'py>(
-    py: Python<'py>,
-    R: PyReadonlyArrayDyn<'py, f64>,
-    v: PyReadonlyArrayDyn<'py, f64>,
-) -> PyResult<Out<'py>> {
-    let (m, n) = records("R", &R, &[3, 3])?;
-    let (x, _) = records("v", &v, &[3])?;
-    batch(py, &[n, 3], |out| rot::rotate_vectors_batch(m, x, out))
-}
-
 /// Checks matrices `(N, 3, 3)` are rotations within `tol`; raises `InvalidRotationError`.
 #[export]
 #[allow(non_snake_case)]
@@ -144,6 +123,9 @@ fn check_rotation_matrix(py: Python<'_>, R: PyReadonlyArrayDyn<'_, f64>, tol: f6
     let (m, _) = records("R", &R, &[3, 3])?;
     run(py, None, || rot::check_rotation_matrix_batch(m, tol))
 }
+
+/// A batch kernel of the Euler kinematics: (sequence, frame, angles, rates or ω, out).
+type Kinematics = fn(EulerSequence, Frame, &[f64], &[f64], &mut [f64]) -> poinsot::Result<()>;
 
 /// The Euler kinematics' `kernel` (`angular_velocity_batch`, `euler_rates_batch`) of angles
 /// `(N, 3)` and the rates or ω `(N, 3)` (named `name`) → `(N, 3)`.
@@ -156,7 +138,7 @@ fn euler_kinematics<'py>(
     seq: &str,
     intrinsic: bool,
     frame: &str,
-    kernel: fn(EulerSequence, Frame, &[f64], &[f64], &mut [f64]) -> poinsot::Result<()>,
+    kernel: Kinematics,
 ) -> PyResult<Out<'py>> {
     let seq = EulerSequence::new(seq, intrinsic).py()?;
     let frame: Frame = parse(frame)?;

@@ -225,50 +225,44 @@ fn sweep_simulate<'py>(
     })
 }
 
-/// Drops on the Earth (`EarthCore`) under the fall model (`FallModel`): `{"time", "east",
-/// "north", "first_order_east", "second_order_south"}`; None with `check_only`.
-#[export]
-#[pyo3(signature = (dims, columns, earth, model, check_only, progress=None))]
-fn sweep_drop<'py>(
-    py: Python<'py>,
-    dims: Dims,
-    columns: Columns<'py>,
-    earth: PyRef<'py, PyEarth>,
-    model: PyRef<'py, PyFallModel>,
-    check_only: bool,
-    progress: Option<Bound<'py, PyAny>>,
-) -> PyResult<Out<'py>> {
-    let g = grid(&dims, &columns)?;
-    let (e, m) = (earth.inner, model.inner);
-    let (check, compute) = (|| core::check_drop(&g, &m), || core::drop(&e, &g, &m));
-    sweep(py, check_only, progress, check, compute, |d, out| {
-        set_floats!(d, out; time, east, north, first_order_east, second_order_south);
-        Ok(())
-    })
+/// Exports `$name`, a sweep on the Earth (`EarthCore`) under the fall model (`FallModel`):
+/// `core::$check` alone with `check_only` (None), else `core::$run` at every point, its
+/// `f64` results `$field`s as (N,) arrays.
+macro_rules! earth_sweep {
+    ($(#[$doc:meta])* $name:ident = $check:ident, $run:ident: $($field:ident),+) => {
+        $(#[$doc])*
+        #[export]
+        #[pyo3(signature = (dims, columns, earth, model, check_only, progress=None))]
+        fn $name<'py>(
+            py: Python<'py>,
+            dims: Dims,
+            columns: Columns<'py>,
+            earth: PyRef<'py, PyEarth>,
+            model: PyRef<'py, PyFallModel>,
+            check_only: bool,
+            progress: Option<Bound<'py, PyAny>>,
+        ) -> PyResult<Out<'py>> {
+            let g = grid(&dims, &columns)?;
+            let (e, m) = (earth.inner, model.inner);
+            let (check, compute) = (|| core::$check(&g, &m), || core::$run(&e, &g, &m));
+            sweep(py, check_only, progress, check, compute, |d, out| {
+                set_floats!(d, out; $($field),+);
+                Ok(())
+            })
+        }
+    };
 }
 
-/// Projectiles on the Earth, as [`sweep_drop`]: `{"time", "east", "north", "range",
-/// "downrange", "drift"}`; None with `check_only`.
-#[export]
-#[pyo3(signature = (dims, columns, earth, model, check_only, progress=None))]
-fn sweep_projectile<'py>(
-    py: Python<'py>,
-    dims: Dims,
-    columns: Columns<'py>,
-    earth: PyRef<'py, PyEarth>,
-    model: PyRef<'py, PyFallModel>,
-    check_only: bool,
-    progress: Option<Bound<'py, PyAny>>,
-) -> PyResult<Out<'py>> {
-    let g = grid(&dims, &columns)?;
-    let (e, m) = (earth.inner, model.inner);
-    let check = || core::check_projectile(&g, &m);
-    let compute = || core::projectile(&e, &g, &m);
-    sweep(py, check_only, progress, check, compute, |d, out| {
-        set_floats!(d, out; time, east, north, range, downrange, drift);
-        Ok(())
-    })
-}
+earth_sweep!(
+    /// Drops on the Earth: `{"time", "east", "north", "first_order_east",
+    /// "second_order_south"}`; None with `check_only`.
+    sweep_drop = check_drop, drop: time, east, north, first_order_east, second_order_south
+);
+earth_sweep!(
+    /// Projectiles on the Earth: `{"time", "east", "north", "range", "downrange", "drift"}`;
+    /// None with `check_only`.
+    sweep_projectile = check_projectile, projectile: time, east, north, range, downrange, drift
+);
 
 /// Registers this file's functions on the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
