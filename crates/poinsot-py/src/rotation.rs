@@ -124,65 +124,37 @@ fn check_rotation_matrix(py: Python<'_>, R: PyReadonlyArrayDyn<'_, f64>, tol: f6
     run(py, None, || rot::check_rotation_matrix_batch(m, tol))
 }
 
-/// A batch kernel of the Euler kinematics: (sequence, frame, angles, rates or ω, out).
-type Kinematics = fn(EulerSequence, Frame, &[f64], &[f64], &mut [f64]) -> poinsot::Result<()>;
-
-/// The Euler kinematics' `kernel` (`angular_velocity_batch`, `euler_rates_batch`) of angles
-/// `(N, 3)` and the rates or ω `(N, 3)` (named `name`) → `(N, 3)`.
-#[allow(clippy::too_many_arguments)]
-fn euler_kinematics<'py>(
-    py: Python<'py>,
-    angles: &PyReadonlyArrayDyn<'py, f64>,
-    other: &PyReadonlyArrayDyn<'py, f64>,
-    name: &str,
-    seq: &str,
-    intrinsic: bool,
-    frame: &str,
-    kernel: Kinematics,
-) -> PyResult<Out<'py>> {
-    let seq = EulerSequence::new(seq, intrinsic).py()?;
-    let frame: Frame = parse(frame)?;
-    let (a, n) = records("angles", angles, &[3])?;
-    let (b, _) = records(name, other, &[3])?;
-    batch(py, &[n, 3], |out| kernel(seq, frame, a, b, out))
+/// Exports `$name`, the Euler kinematics' batch kernel `$kernel` of angles `(N, 3)` and
+/// `$arg` `(N, 3)` (named `$public` in errors) in `frame` → `(N, 3)`.
+macro_rules! kinematics_export {
+    ($(#[$doc:meta])* $name:ident($arg:ident as $public:literal) = $kernel:path) => {
+        $(#[$doc])*
+        #[export]
+        fn $name<'py>(
+            py: Python<'py>,
+            angles: PyReadonlyArrayDyn<'py, f64>,
+            $arg: PyReadonlyArrayDyn<'py, f64>,
+            seq: &str,
+            intrinsic: bool,
+            frame: &str,
+        ) -> PyResult<Out<'py>> {
+            let seq = EulerSequence::new(seq, intrinsic).py()?;
+            let frame: Frame = parse(frame)?;
+            let (a, n) = records("angles", &angles, &[3])?;
+            let (b, _) = records($public, &$arg, &[3])?;
+            batch(py, &[n, 3], |out| $kernel(seq, frame, a, b, out))
+        }
+    };
 }
 
-/// Angular velocities `(N, 3)` (rad/s, in `frame`) from angles and rates `(N, 3)`.
-#[export]
-fn angular_velocity<'py>(
-    py: Python<'py>,
-    angles: PyReadonlyArrayDyn<'py, f64>,
-    rates: PyReadonlyArrayDyn<'py, f64>,
-    seq: &str,
-    intrinsic: bool,
-    frame: &str,
-) -> PyResult<Out<'py>> {
-    let kernel = rot::angular_velocity_batch;
-    euler_kinematics(py, &angles, &rates, "rates", seq, intrinsic, frame, kernel)
-}
-
-/// Euler-angle rates `(N, 3)` (rad/s) from angles `(N, 3)` and ω `(N, 3)` (in `frame`).
-#[export]
-fn euler_rates<'py>(
-    py: Python<'py>,
-    angles: PyReadonlyArrayDyn<'py, f64>,
-    omega: PyReadonlyArrayDyn<'py, f64>,
-    seq: &str,
-    intrinsic: bool,
-    frame: &str,
-) -> PyResult<Out<'py>> {
-    let kernel = rot::euler_rates_batch;
-    euler_kinematics(
-        py,
-        &angles,
-        &omega,
-        "omega_body",
-        seq,
-        intrinsic,
-        frame,
-        kernel,
-    )
-}
+kinematics_export!(
+    /// Angular velocities `(N, 3)` (rad/s, in `frame`) from angles and rates `(N, 3)`.
+    angular_velocity(rates as "rates") = rot::angular_velocity_batch
+);
+kinematics_export!(
+    /// Euler-angle rates `(N, 3)` (rad/s) from angles `(N, 3)` and ω `(N, 3)` (in `frame`).
+    euler_rates(omega as "omega_body") = rot::euler_rates_batch
+);
 
 /// Chasles' screw of `x ↦ R x + t` for one `R` `(3, 3)` and `t` `(3,)`:
 /// `(axis, point, angle, slide, pitch)`.

@@ -129,63 +129,70 @@ fn sweep_categories(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
     Ok(d)
 }
 
-/// The heavy top at every point: `{"motion_class" (uint8 codes), "turning_points" (N, 2),
-/// "nutation_period", "mean_precession_rate", "mean_spin_rate", "omega3", "p_phi", "p_psi",
-/// "energy", "reduced_energy", "is_sleeping_stable" (bool)}`; None with `check_only`.
-#[export]
-#[pyo3(signature = (dims, columns, check_only, progress=None))]
-fn sweep_heavy_top<'py>(
-    py: Python<'py>,
-    dims: Dims,
-    columns: Columns<'py>,
-    check_only: bool,
-    progress: Option<Bound<'py, PyAny>>,
-) -> PyResult<Out<'py>> {
-    let g = grid(&dims, &columns)?;
-    let (check, compute) = (|| core::check_heavy_top(&g), || core::heavy_top(&g));
-    sweep(py, check_only, progress, check, compute, |d, out| {
-        set(d, "motion_class", out, |p| {
-            core::motion_class_code(p.motion_class)
-        })?;
-        set_rows(d, "turning_points", out, |p| {
-            [p.turning_points.0, p.turning_points.1]
-        })?;
-        set_floats!(d, out; nutation_period, mean_precession_rate, mean_spin_rate, omega3,
-            p_phi, p_psi, energy, reduced_energy);
-        set(d, "is_sleeping_stable", out, |p| p.is_sleeping_stable)
-    })
+/// Exports `$name`, the sweep of a model of the grid alone: `core::$check` with `check_only`
+/// (None), else `core::$run` at every point, its results written into the dict by `$fill`.
+macro_rules! grid_sweep {
+    ($(#[$doc:meta])* $name:ident = $check:ident, $run:ident, $fill:ident) => {
+        $(#[$doc])*
+        #[export]
+        #[pyo3(signature = (dims, columns, check_only, progress=None))]
+        fn $name<'py>(
+            py: Python<'py>,
+            dims: Dims,
+            columns: Columns<'py>,
+            check_only: bool,
+            progress: Option<Bound<'py, PyAny>>,
+        ) -> PyResult<Out<'py>> {
+            let g = grid(&dims, &columns)?;
+            let (check, compute) = (|| core::$check(&g), || core::$run(&g));
+            sweep(py, check_only, progress, check, compute, $fill)
+        }
+    };
 }
 
-/// The free body at every point: `{"omega0" (N, 3), "regime" (codes), "period",
-/// "flip_interval", "parameter", "frequency", "pole_axis" (int8, -1 for none), "energy",
-/// "angular_momentum" (N, 3), "axis_stability" (N, 3 codes), "axis_rate" (N, 3)}`; None with
-/// `check_only`.
-#[export]
-#[pyo3(signature = (dims, columns, check_only, progress=None))]
-fn sweep_free_body<'py>(
-    py: Python<'py>,
-    dims: Dims,
-    columns: Columns<'py>,
-    check_only: bool,
-    progress: Option<Bound<'py, PyAny>>,
-) -> PyResult<Out<'py>> {
-    let g = grid(&dims, &columns)?;
-    let (check, compute) = (|| core::check_free_body(&g), || core::free_body(&g));
-    sweep(py, check_only, progress, check, compute, |d, out| {
-        set_rows(d, "omega0", out, |p| p.omega0)?;
-        set(d, "regime", out, |p| core::regime_code(p.regime))?;
-        set_floats!(d, out; period, flip_interval, parameter, frequency);
-        set(d, "pole_axis", out, |p| p.pole_axis.map_or(-1, |k| k as i8))?;
-        set_floats!(d, out; energy);
-        set_rows(d, "angular_momentum", out, |p| p.angular_momentum)?;
-        let kinds: Vec<u8> = out
-            .iter()
-            .flat_map(|p| p.axis_stability.map(|a| core::stability_code(a.stability)))
-            .collect();
-        let kinds = PyArray1::from_vec(d.py(), kinds).reshape([out.len(), 3])?;
-        d.set_item("axis_stability", kinds)?;
-        set_rows(d, "axis_rate", out, |p| p.axis_stability.map(|a| a.rate))
-    })
+grid_sweep!(
+    /// The heavy top at every point: `{"motion_class" (uint8 codes), "turning_points" (N, 2),
+    /// "nutation_period", "mean_precession_rate", "mean_spin_rate", "omega3", "p_phi", "p_psi",
+    /// "energy", "reduced_energy", "is_sleeping_stable" (bool)}`; None with `check_only`.
+    sweep_heavy_top = check_heavy_top, heavy_top, heavy_top_columns
+);
+
+/// The heavy top's results into the sweep's dict.
+fn heavy_top_columns(d: &Bound<'_, PyDict>, out: &[core::HeavyTopPoint]) -> PyResult<()> {
+    set(d, "motion_class", out, |p| {
+        core::motion_class_code(p.motion_class)
+    })?;
+    set_rows(d, "turning_points", out, |p| {
+        [p.turning_points.0, p.turning_points.1]
+    })?;
+    set_floats!(d, out; nutation_period, mean_precession_rate, mean_spin_rate, omega3,
+        p_phi, p_psi, energy, reduced_energy);
+    set(d, "is_sleeping_stable", out, |p| p.is_sleeping_stable)
+}
+
+grid_sweep!(
+    /// The free body at every point: `{"omega0" (N, 3), "regime" (codes), "period",
+    /// "flip_interval", "parameter", "frequency", "pole_axis" (int8, -1 for none), "energy",
+    /// "angular_momentum" (N, 3), "axis_stability" (N, 3 codes), "axis_rate" (N, 3)}`; None
+    /// with `check_only`.
+    sweep_free_body = check_free_body, free_body, free_body_columns
+);
+
+/// The free body's results into the sweep's dict.
+fn free_body_columns(d: &Bound<'_, PyDict>, out: &[core::FreeBodyPoint]) -> PyResult<()> {
+    set_rows(d, "omega0", out, |p| p.omega0)?;
+    set(d, "regime", out, |p| core::regime_code(p.regime))?;
+    set_floats!(d, out; period, flip_interval, parameter, frequency);
+    set(d, "pole_axis", out, |p| p.pole_axis.map_or(-1, |k| k as i8))?;
+    set_floats!(d, out; energy);
+    set_rows(d, "angular_momentum", out, |p| p.angular_momentum)?;
+    let kinds: Vec<u8> = out
+        .iter()
+        .flat_map(|p| p.axis_stability.map(|a| core::stability_code(a.stability)))
+        .collect();
+    let kinds = PyArray1::from_vec(d.py(), kinds).reshape([out.len(), 3])?;
+    d.set_item("axis_stability", kinds)?;
+    set_rows(d, "axis_rate", out, |p| p.axis_stability.map(|a| a.rate))
 }
 
 /// Ensembles under a torque (`simulate_batch`'s settings: duration, torque as kind, (3,)
