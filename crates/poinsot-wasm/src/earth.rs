@@ -707,15 +707,11 @@ mod tests {
     #[test]
     fn low_turns_with_the_hemisphere_and_closes_its_energy_budget() {
         let e = earth();
-        let north = e
-            .flow_into_low(0.8, 5e5, 8.0, 1e-3, 1e-5, 172800.0, 481.0)
-            .unwrap();
-        let south = e
-            .flow_into_low(-0.8, 5e5, 8.0, 1e-3, 1e-5, 172800.0, 481.0)
-            .unwrap();
-        let equator = e
-            .flow_into_low(0.0, 5e5, 8.0, 1e-3, 1e-5, 172800.0, 481.0)
-            .unwrap();
+        let low = |lat| {
+            e.flow_into_low(lat, 5e5, 8.0, 1e-3, 1e-5, 172800.0, 481.0)
+                .unwrap()
+        };
+        let (north, south, equator) = (low(0.8), low(-0.8), low(0.0));
         assert_eq!(north.sense(), "counterclockwise");
         assert_eq!(south.sense(), "clockwise");
         assert_eq!(equator.sense(), "none");
@@ -733,22 +729,13 @@ mod tests {
         assert_eq!(north.track(0.0).unwrap().len(), 2 * 481);
         refused(north.track(8.0), "index");
         refused(north.at(-1.0), "t: ");
-        refused(
-            e.flow_into_low(0.8, 5e5, 8.0, -1.0, 1e-5, 1e5, 11.0),
-            "pull",
-        );
-        refused(
-            e.flow_into_low(0.8, 5e5, 8.0, 1e-3, -1.0, 1e5, 11.0),
-            "friction",
-        );
-        refused(
-            e.flow_into_low(0.8, 0.0, 8.0, 1e-3, 0.0, 1e5, 11.0),
-            "radius",
-        );
-        refused(
-            e.flow_into_low(0.8, 5e5, 0.0, 1e-3, 0.0, 1e5, 11.0),
-            "parcels",
-        );
+        let bad = |radius, parcels, pull, friction| {
+            e.flow_into_low(0.8, radius, parcels, pull, friction, 1e5, 11.0)
+        };
+        refused(bad(5e5, 8.0, -1.0, 1e-5), "pull");
+        refused(bad(5e5, 8.0, 1e-3, -1.0), "friction");
+        refused(bad(0.0, 8.0, 1e-3, 0.0), "radius");
+        refused(bad(5e5, 0.0, 1e-3, 0.0), "parcels");
     }
 
     #[test]

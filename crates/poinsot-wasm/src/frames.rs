@@ -320,14 +320,7 @@ mod tests {
 
     #[test]
     fn terms_sum_to_the_acceleration_and_coriolis_is_two_omega_cross_v() {
-        let f = MovingFrame::new(
-            vec![0.0; 3],
-            vec![0.0; 3],
-            vec![0.0; 3],
-            vec![0.0, 0.0, 2.0],
-            vec![0.0; 3],
-        )
-        .unwrap();
+        let f = table(2.0, 0.0);
         let m = f
             .to_fixed(vec![1.0, 0.0, 0.0], vec![0.0, 3.0, 0.0], vec![0.0; 3])
             .unwrap();
@@ -347,14 +340,7 @@ mod tests {
 
     #[test]
     fn non_finite_particle_state_is_refused() {
-        let f = MovingFrame::new(
-            vec![0.0; 3],
-            vec![0.0; 3],
-            vec![0.0; 3],
-            vec![0.0, 0.0, 1.0],
-            vec![0.0; 3],
-        )
-        .unwrap();
+        let f = table(1.0, 0.0);
         assert!(f
             .to_fixed(vec![f64::NAN, 0.0, 0.0], vec![0.0; 3], vec![0.0; 3])
             .unwrap_err()
