@@ -603,7 +603,7 @@ impl Earth {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::refused;
+    use crate::convert::refused;
 
     fn earth() -> Earth {
         Earth::new(

@@ -316,7 +316,7 @@ fn state(position: &Numbers, velocity: &Numbers) -> Out<(poinsot::Vec3, poinsot:
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::refused;
+    use crate::convert::refused;
 
     #[test]
     fn terms_sum_to_the_acceleration_and_coriolis_is_two_omega_cross_v() {

@@ -39,16 +39,6 @@ pub mod rotation;
 
 pub use convert::Failure;
 
-/// Test helper: asserts that `result` was refused with a message starting with `prefix` (the
-/// argument the core named) and returns the failure.
-#[cfg(test)]
-#[track_caller]
-pub(crate) fn refused<T: std::fmt::Debug>(result: convert::Out<T>, prefix: &str) -> Failure {
-    let e = result.unwrap_err();
-    assert!(e.message.starts_with(prefix), "{}", e.message);
-    e
-}
-
 use wasm_bindgen::prelude::wasm_bindgen;
 
 /// Installs the panic hook once, when the module is instantiated: a panic is logged to the

@@ -176,7 +176,7 @@ pub fn euler_rates(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::refused;
+    use crate::convert::refused;
 
     #[test]
     fn zxz_matches_the_product_of_elementary_rotations() {
