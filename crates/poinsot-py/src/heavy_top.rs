@@ -82,14 +82,7 @@ impl PyHeavyTop {
         theta_dot: f64,
         psi_dot: f64,
     ) -> PyResult<Self> {
-        let state = EulerState {
-            phi,
-            theta,
-            psi,
-            phi_dot,
-            theta_dot,
-            psi_dot,
-        };
+        let state = EulerState::new(phi, theta, psi, phi_dot, theta_dot, psi_dot);
         Ok(Self {
             inner: HeavyTop::new(i1, i3, mgl, state).py()?,
         })

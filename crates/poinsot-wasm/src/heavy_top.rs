@@ -84,14 +84,7 @@ impl HeavyTop {
         #[wasm_bindgen(unchecked_param_type = "number")] psi_dot: Number,
     ) -> Out<HeavyTop> {
         let_numbers!(i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, psi_dot);
-        let state = an::EulerState {
-            phi,
-            theta,
-            psi,
-            phi_dot,
-            theta_dot,
-            psi_dot,
-        };
+        let state = an::EulerState::new(phi, theta, psi, phi_dot, theta_dot, psi_dot);
         const ARGUMENTS: &str = "i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, psi_dot";
         let inner = an::HeavyTop::new(i1, i3, mgl, state).map_err(attributed(ARGUMENTS))?;
         Ok(HeavyTop { inner })

@@ -49,6 +49,20 @@ pub struct EulerState {
 }
 
 impl EulerState {
+    /// The state of the Euler angles `phi`, `theta`, `psi` (rad) and their rates `phi_dot`,
+    /// `theta_dot`, `psi_dot` (rad/s), in the order of the fields (and of the front ends'
+    /// `HeavyTop.from_state`).
+    pub fn new(phi: f64, theta: f64, psi: f64, phi_dot: f64, theta_dot: f64, psi_dot: f64) -> Self {
+        Self {
+            phi,
+            theta,
+            psi,
+            phi_dot,
+            theta_dot,
+            psi_dot,
+        }
+    }
+
     /// The state at the nutation angle `theta` (rad) with the rates `theta_dot`, `phi_dot`,
     /// `psi_dot` (rad/s) and φ = ψ = 0: all the Lagrangian 2.102 and the constants 2.103–2.105
     /// of a state depend on.
