@@ -9,6 +9,7 @@ call would run for minutes otherwise, so finishing without the interrupt fails t
 from __future__ import annotations
 
 import re
+import subprocess
 import sys
 import time
 from pathlib import Path
@@ -165,6 +166,32 @@ def test_a_panic_never_reaches_the_user(place: str) -> None:
     message = str(caught.value)
     assert re.match(r"^_test_panic: internal error in poinsot's core \(boom\); .*report", message)
     assert ps.InternalError.__module__ == "poinsot" and ps.errors.InternalError is ps.InternalError
+
+
+_NUMPY_API_CHILD = """
+import numpy as np, numpy.lib
+import poinsot as ps
+class Interrupted:  # a Ctrl-C arriving while rust-numpy would read NumPy's version
+    def __init__(self, *args):
+        raise KeyboardInterrupt
+numpy.lib.NumpyVersion = Interrupted
+print(ps.Earth().coriolis_parameter(np.linspace(0.0, 1.0, 3)).tolist())
+"""
+
+
+def test_numpy_api_is_loaded_at_import() -> None:
+    """rust-numpy loads NumPy's C API at the first array it meets, running Python code
+    (``numpy.lib.NumpyVersion``) inside pyo3's argument extraction, outside the panic guard: a
+    Ctrl-C landing there became a panic raised as pyo3's PanicException (seen once in
+    test_interrupt_arrays under load). The binding loads the API at import, so the first array
+    call runs no Python code of NumPy's: with that code made to raise KeyboardInterrupt, the
+    first call still answers. On the old binding the child died with PanicException."""
+    proc = subprocess.run(
+        [sys.executable, "-c", _NUMPY_API_CHILD], capture_output=True, text=True, timeout=60
+    )
+    assert proc.returncode == 0, proc.stderr[-1500:]
+    f = np.array(eval(proc.stdout))  # 2 ω sin(latitude) at 0, 0.5 and 1 rad
+    assert np.allclose(f, 2 * ps.Earth().rotation_rate * np.sin([0.0, 0.5, 1.0]), rtol=1e-15)
 
 
 def test_every_export_of_the_binding_goes_through_the_panic_guard() -> None:

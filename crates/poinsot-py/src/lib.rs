@@ -65,6 +65,20 @@ fn _test_panic(py: Python<'_>, message: &str, place: &str) -> PyResult<()> {
     }
 }
 
+/// Loads NumPy's C API now, at import. rust-numpy loads it at the first array it meets, by
+/// running Python code (`numpy.lib.NumpyVersion`) during pyo3's extraction of the arguments,
+/// outside any export's guard: a Ctrl-C that arrived just then was raised inside that code and
+/// became a panic (`Failed to access NumPy array API capsule`), shown as pyo3's
+/// `PanicException` instead of `KeyboardInterrupt` (`python/tests/test_limits.py`,
+/// `test_numpy_api_is_loaded_at_import`). A Ctrl-C pending at import is raised as itself.
+fn load_numpy_api(py: Python<'_>) -> PyResult<()> {
+    py.check_signals()?;
+    errors::guard("", "import", || {
+        numpy::PyArray1::<f64>::zeros(py, 0, false);
+        Ok(())
+    })
+}
+
 /// The compiled core of poinsot (private: use the `poinsot` package).
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -77,6 +91,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     add_functions!(m; memory_budget, set_memory_budget, _test_panic);
     defaults::register(m)?;
     errors::register(m)?;
+    load_numpy_api(m.py())?;
     rotation::register(m)?;
     inertia::register(m)?;
     frames::register(m)?;
