@@ -199,12 +199,9 @@ def test_every_export_of_the_binding_goes_through_the_panic_guard() -> None:
     ``#[export]`` (``crates/poinsot-py-macros``), which runs its body in the binding's one panic
     guard; a bare pyo3 attribute would let a panic through as PanicException."""
     src = Path(__file__).resolve().parents[2] / "crates" / "poinsot-py" / "src"
-    # Files being rewritten by issue 22's other items; drop each once it uses #[export].
-    pending = {"defaults.rs"}
     bare = [
         f"{path.name}:{n}"
         for path in sorted(src.glob("*.rs"))
-        if path.name not in pending
         for n, line in enumerate(path.read_text().splitlines(), 1)
         if line.strip() in ("#[pyfunction]", "#[pymethods]")
     ]
