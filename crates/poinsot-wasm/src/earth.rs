@@ -9,8 +9,9 @@
 //! state at any time by the core's continuation of the run from the last sample before it, so
 //! that an animation can be evaluated — or seeked — anywhere.
 
-use crate::args::{count, index_in, number, numbers, Count, Number, Numbers};
+use crate::args::{count, index_in, let_numbers, number, numbers, Count, Number, Numbers};
 use crate::convert::{vec_out, Failure, Out};
+use crate::{calls, fields};
 use poinsot::earth::{self as ea, FallModel, Gravity, LowSetup};
 use poinsot::frames::ParticleState;
 use wasm_bindgen::prelude::wasm_bindgen;
@@ -54,23 +55,17 @@ pub struct Fall {
     inner: ea::Fall,
 }
 
+fields!(Fall {
+    " Time of flight (s)."
+    time time -> number(time);
+    " Eastward displacement at landing (m)."
+    east east -> number(east);
+    " Northward displacement at landing (m)."
+    north north -> number(north);
+});
+
 #[wasm_bindgen]
 impl Fall {
-    /// Time of flight (s).
-    #[wasm_bindgen(getter)]
-    pub fn time(&self) -> f64 {
-        self.inner.time
-    }
-    /// Eastward displacement at landing (m).
-    #[wasm_bindgen(getter)]
-    pub fn east(&self) -> f64 {
-        self.inner.east
-    }
-    /// Northward displacement at landing (m).
-    #[wasm_bindgen(getter)]
-    pub fn north(&self) -> f64 {
-        self.inner.north
-    }
     /// The state `[x, y, z, vx, vy, vz]` (ENU, m and m/s, origin at the ground below the
     /// release point) at time `t` (s, in [0, time]) from the integrator's dense output.
     pub fn state(
@@ -93,9 +88,7 @@ impl Earth {
         #[wasm_bindgen(unchecked_param_type = "number")] radius: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] g: Number,
     ) -> Out<Earth> {
-        let rotation_rate = number("rotation_rate", &rotation_rate)?;
-        let radius = number("radius", &radius)?;
-        let g = number("g", &g)?;
+        let_numbers!(rotation_rate, radius, g);
         Ok(Earth {
             inner: ea::Earth::new(rotation_rate, radius, g)?,
         })
@@ -122,41 +115,6 @@ impl Earth {
         ea::STANDARD_GRAVITY
     }
 
-    /// The first-order eastward deflection (m) of a body dropped from `height` (m) at
-    /// `latitude` (rad): the unit's 2.42.
-    #[wasm_bindgen(js_name = eastwardDeflection)]
-    pub fn eastward_deflection(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] height: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
-    ) -> Out<f64> {
-        let height = number("height", &height)?;
-        let latitude = number("latitude", &latitude)?;
-        Ok(self.inner.eastward_deflection(height, latitude)?)
-    }
-
-    /// The second-order southward deflection (m) in the northern hemisphere.
-    #[wasm_bindgen(js_name = southwardDeflection)]
-    pub fn southward_deflection(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] height: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
-    ) -> Out<f64> {
-        let height = number("height", &height)?;
-        let latitude = number("latitude", &latitude)?;
-        Ok(self.inner.southward_deflection(height, latitude)?)
-    }
-
-    /// The time (s) to fall `height` (m) in uniform gravity without rotation, √(2h/g).
-    #[wasm_bindgen(js_name = fallTime)]
-    pub fn fall_time(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] height: Number,
-    ) -> Out<f64> {
-        let height = number("height", &height)?;
-        Ok(self.inner.fall_time(height)?)
-    }
-
     /// The exact drop from rest at `height` (m) and `latitude` (rad), with the core's defaults
     /// (uniform gravity, Coriolis and centrifugal terms, tolerances `DROP_TOLERANCES`).
     pub fn drop(
@@ -164,8 +122,7 @@ impl Earth {
         #[wasm_bindgen(unchecked_param_type = "number")] height: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
     ) -> Out<Fall> {
-        let height = number("height", &height)?;
-        let latitude = number("latitude", &latitude)?;
+        let_numbers!(height, latitude);
         let model = FallModel {
             gravity: Gravity::Uniform,
             rotation: true,
@@ -179,27 +136,6 @@ impl Earth {
         Ok(Fall { inner: f })
     }
 
-    /// The precession rate (rad/s) of a Foucault pendulum's swing plane, ω sin λ (clockwise seen
-    /// from above in the north).
-    #[wasm_bindgen(js_name = foucaultRate)]
-    pub fn foucault_rate(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
-    ) -> Out<f64> {
-        let latitude = number("latitude", &latitude)?;
-        Ok(self.inner.foucault_rate(latitude)?)
-    }
-
-    /// The Earth's angular velocity in the local ENU frame, ω (0, cos λ, sin λ) (rad/s).
-    #[wasm_bindgen(js_name = omegaEnu)]
-    pub fn omega_enu(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
-    ) -> Out<Vec<f64>> {
-        let latitude = number("latitude", &latitude)?;
-        Ok(vec_out(&self.inner.omega_enu(latitude)?))
-    }
-
     /// The effective gravity vector (ENU, m/s²) at `latitude` (rad).
     #[wasm_bindgen(js_name = effectiveGravity)]
     pub fn effective_gravity(
@@ -209,21 +145,30 @@ impl Earth {
         let latitude = number("latitude", &latitude)?;
         Ok(vec_out(&self.inner.effective_gravity(latitude)?.vector))
     }
-
-    /// The Coriolis acceleration −2 ω × v (ENU, m/s²) of a velocity `velocity_enu` (ENU, m/s)
-    /// (`Earth.coriolis_acceleration`, the same argument's name).
-    #[wasm_bindgen(js_name = coriolisAcceleration)]
-    pub fn coriolis_acceleration(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] velocity_enu: Numbers,
-    ) -> Out<Vec<f64>> {
-        let latitude = number("latitude", &latitude)?;
-        let v = numbers("velocity_enu", &velocity_enu)?;
-        let v = crate::convert::vec3("velocity_enu", &v)?;
-        Ok(vec_out(&self.inner.coriolis_acceleration(latitude, &v)?))
-    }
 }
+
+calls!(Earth {
+    " The first-order eastward deflection (m) of a body dropped from `height` (m) at"
+    " `latitude` (rad): the unit's 2.42."
+    eastwardDeflection eastward_deflection(height: number, latitude: number) -> number;
+    " The second-order southward deflection (m) in the northern hemisphere."
+    southwardDeflection southward_deflection(height: number, latitude: number) -> number;
+    " The time (s) to fall `height` (m) in uniform gravity without rotation, √(2h/g)."
+    fallTime fall_time(height: number) -> number;
+    " The precession rate (rad/s) of a Foucault pendulum's swing plane, ω sin λ (clockwise seen"
+    " from above in the north)."
+    foucaultRate foucault_rate(latitude: number) -> number;
+    " The Earth's angular velocity in the local ENU frame, ω (0, cos λ, sin λ) (rad/s)."
+    omegaEnu omega_enu(latitude: number) -> vector;
+    " The Coriolis acceleration −2 ω × v (ENU, m/s²) of a velocity `velocity_enu` (ENU, m/s)"
+    " (`Earth.coriolis_acceleration`, the same argument's name)."
+    coriolisAcceleration coriolis_acceleration(latitude: number, velocity_enu: vector) -> vector;
+    " The period of inertial oscillations π/(ω |sin λ|) (s); `Infinity` at the equator (the"
+    " one non-finite number this module returns: there is no inertial oscillation there)."
+    inertialPeriod inertial_period(latitude: number) -> number;
+    " The Coriolis parameter f = 2 ω sin λ (1/s) at `latitude` (rad)."
+    coriolisParameter coriolis_parameter(latitude: number) -> number;
+});
 
 /// A Foucault pendulum swung in the rotating frame (`Earth.foucault` in Python): its samples,
 /// its turning points, the core's measurement of its swing plane (rate and regime), and its
@@ -471,11 +416,7 @@ impl Earth {
         #[wasm_bindgen(unchecked_param_type = "number")] duration: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] samples: Count,
     ) -> Out<FoucaultRun> {
-        let latitude = number("latitude", &latitude)?;
-        let length = number("length", &length)?;
-        let amplitude = number("amplitude", &amplitude)?;
-        let azimuth = number("azimuth", &azimuth)?;
-        let duration = number("duration", &duration)?;
+        let_numbers!(latitude, length, amplitude, azimuth, duration);
         // The count is parsed (a whole number within the memory budget) before the core checks
         // it again and makes the sample times.
         let samples = count("samples", &samples, ea::FOUCAULT_BYTES_PER_SAMPLE)?;
@@ -514,14 +455,12 @@ impl Earth {
         #[wasm_bindgen(unchecked_param_type = "number")] duration: Number,
         #[wasm_bindgen(unchecked_param_type = "number")] samples: Count,
     ) -> Out<LowFlow> {
-        let latitude = number("latitude", &latitude)?;
-        let radius = number("radius", &radius)?;
         // The counts are parsed (whole numbers within the memory budget) before the core checks
-        // them again, with their product, and makes the ring and the sample times.
+        // them again, with their product, and makes the ring and the sample times; the numbers
+        // and the counts are read in the order of the arguments.
+        let_numbers!(latitude, radius);
         let parcels = count("parcels", &parcels, LOW_BYTES)?;
-        let pull = number("pull", &pull)?;
-        let friction = number("friction", &friction)?;
-        let duration = number("duration", &duration)?;
+        let_numbers!(pull, friction, duration);
         let samples = count("samples", &samples, LOW_BYTES)?;
         let setup = LowSetup {
             radius,
@@ -563,27 +502,6 @@ impl Earth {
             )
             .map_err(step_limit("duration"))?;
         Ok(InertialOscillation { inner })
-    }
-
-    /// The period of inertial oscillations π/(ω |sin λ|) (s); `Infinity` at the equator (the
-    /// one non-finite number this module returns: there is no inertial oscillation there).
-    #[wasm_bindgen(js_name = inertialPeriod)]
-    pub fn inertial_period(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
-    ) -> Out<f64> {
-        let latitude = number("latitude", &latitude)?;
-        Ok(self.inner.inertial_period(latitude)?)
-    }
-
-    /// The Coriolis parameter f = 2 ω sin λ (1/s) at `latitude` (rad).
-    #[wasm_bindgen(js_name = coriolisParameter)]
-    pub fn coriolis_parameter(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
-    ) -> Out<f64> {
-        let latitude = number("latitude", &latitude)?;
-        Ok(self.inner.coriolis_parameter(latitude)?)
     }
 
     /// Jacobi's integral ½ |v|² + g z − ½ |ω × r|² (J/kg) of an ENU `state` `[x, y, z, vx, vy,

@@ -3,7 +3,8 @@
 //! (`MovingFrame.at`), and a particle on a spring (free when k = 0) integrated in a turning frame.
 
 use crate::args::{count, number, numbers_each, vector, Count, Number, Numbers};
-use crate::convert::{mat_out, vec_out, Out};
+use crate::convert::Out;
+use crate::{calls, fields};
 use poinsot::frames as fr;
 use wasm_bindgen::prelude::wasm_bindgen;
 
@@ -27,49 +28,24 @@ pub struct FixedMotion {
     inner: fr::FixedMotion,
 }
 
-#[wasm_bindgen]
-impl FixedMotion {
-    /// Position in the fixed frame (m).
-    #[wasm_bindgen(getter)]
-    pub fn position(&self) -> Vec<f64> {
-        vec_out(&self.inner.position)
-    }
-    /// Velocity in the fixed frame (m/s).
-    #[wasm_bindgen(getter)]
-    pub fn velocity(&self) -> Vec<f64> {
-        vec_out(&self.inner.velocity)
-    }
-    /// Acceleration in the fixed frame (m/s²): the sum of the five terms.
-    #[wasm_bindgen(getter)]
-    pub fn acceleration(&self) -> Vec<f64> {
-        vec_out(&self.inner.acceleration)
-    }
-    /// The relative acceleration term (m/s²).
-    #[wasm_bindgen(getter)]
-    pub fn relative(&self) -> Vec<f64> {
-        vec_out(&self.inner.terms.relative)
-    }
-    /// The acceleration of the moving origin (m/s²).
-    #[wasm_bindgen(getter)]
-    pub fn origin(&self) -> Vec<f64> {
-        vec_out(&self.inner.terms.origin)
-    }
-    /// The Coriolis term 2 ω × v (m/s²).
-    #[wasm_bindgen(getter)]
-    pub fn coriolis(&self) -> Vec<f64> {
-        vec_out(&self.inner.terms.coriolis)
-    }
-    /// The centripetal term ω × (ω × r) (m/s²).
-    #[wasm_bindgen(getter)]
-    pub fn centripetal(&self) -> Vec<f64> {
-        vec_out(&self.inner.terms.centripetal)
-    }
-    /// The Euler term ω̇ × r (m/s²).
-    #[wasm_bindgen(getter)]
-    pub fn euler(&self) -> Vec<f64> {
-        vec_out(&self.inner.terms.euler)
-    }
-}
+fields!(FixedMotion {
+    " Position in the fixed frame (m)."
+    position position -> vector(position);
+    " Velocity in the fixed frame (m/s)."
+    velocity velocity -> vector(velocity);
+    " Acceleration in the fixed frame (m/s²): the sum of the five terms."
+    acceleration acceleration -> vector(acceleration);
+    " The relative acceleration term (m/s²)."
+    relative relative -> vector(terms.relative);
+    " The acceleration of the moving origin (m/s²)."
+    origin origin -> vector(terms.origin);
+    " The Coriolis term 2 ω × v (m/s²)."
+    coriolis coriolis -> vector(terms.coriolis);
+    " The centripetal term ω × (ω × r) (m/s²)."
+    centripetal centripetal -> vector(terms.centripetal);
+    " The Euler term ω̇ × r (m/s²)."
+    euler euler -> vector(terms.euler);
+});
 
 /// A particle's motion seen in the moving frame (moving components), with the relative
 /// acceleration split into the true acceleration and the fictitious ones (each 3 numbers, m/s²),
@@ -80,49 +56,24 @@ pub struct RelativeMotion {
     inner: fr::RelativeMotion,
 }
 
-#[wasm_bindgen]
-impl RelativeMotion {
-    /// Position r in the moving frame (m).
-    #[wasm_bindgen(getter)]
-    pub fn position(&self) -> Vec<f64> {
-        vec_out(&self.inner.position)
-    }
-    /// Velocity (dr/dt)_rot (m/s).
-    #[wasm_bindgen(getter)]
-    pub fn velocity(&self) -> Vec<f64> {
-        vec_out(&self.inner.velocity)
-    }
-    /// Acceleration (d²r/dt²)_rot (m/s²): the sum of the five terms.
-    #[wasm_bindgen(getter)]
-    pub fn acceleration(&self) -> Vec<f64> {
-        vec_out(&self.inner.acceleration)
-    }
-    /// The true (inertial) acceleration r̈' (m/s²).
-    #[wasm_bindgen(getter)]
-    pub fn inertial(&self) -> Vec<f64> {
-        vec_out(&self.inner.terms.inertial)
-    }
-    /// −R̈, from the acceleration of the moving origin (m/s²).
-    #[wasm_bindgen(getter)]
-    pub fn translational(&self) -> Vec<f64> {
-        vec_out(&self.inner.terms.translational)
-    }
-    /// The Coriolis term −2 ω × (dr/dt)_rot (m/s²).
-    #[wasm_bindgen(getter)]
-    pub fn coriolis(&self) -> Vec<f64> {
-        vec_out(&self.inner.terms.coriolis)
-    }
-    /// The centrifugal term −ω × (ω × r) (m/s²).
-    #[wasm_bindgen(getter)]
-    pub fn centrifugal(&self) -> Vec<f64> {
-        vec_out(&self.inner.terms.centrifugal)
-    }
-    /// The Euler term −ω̇ × r (m/s²).
-    #[wasm_bindgen(getter)]
-    pub fn euler(&self) -> Vec<f64> {
-        vec_out(&self.inner.terms.euler)
-    }
-}
+fields!(RelativeMotion {
+    " Position r in the moving frame (m)."
+    position position -> vector(position);
+    " Velocity (dr/dt)_rot (m/s)."
+    velocity velocity -> vector(velocity);
+    " Acceleration (d²r/dt²)_rot (m/s²): the sum of the five terms."
+    acceleration acceleration -> vector(acceleration);
+    " The true (inertial) acceleration r̈' (m/s²)."
+    inertial inertial -> vector(terms.inertial);
+    " −R̈, from the acceleration of the moving origin (m/s²)."
+    translational translational -> vector(terms.translational);
+    " The Coriolis term −2 ω × (dr/dt)_rot (m/s²)."
+    coriolis coriolis -> vector(terms.coriolis);
+    " The centrifugal term −ω × (ω × r) (m/s²)."
+    centrifugal centrifugal -> vector(terms.centrifugal);
+    " The Euler term −ω̇ × r (m/s²)."
+    euler euler -> vector(terms.euler);
+});
 
 #[wasm_bindgen]
 impl MovingFrame {
@@ -146,38 +97,6 @@ impl MovingFrame {
         Ok(MovingFrame { inner })
     }
 
-    /// The fixed-frame motion of a particle at `position` (m) with `velocity` (m/s) and
-    /// `acceleration` (m/s²) relative to the moving frame.
-    #[wasm_bindgen(js_name = toFixed)]
-    pub fn to_fixed(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] position: Numbers,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] velocity: Numbers,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] acceleration: Numbers,
-    ) -> Out<FixedMotion> {
-        let (r, v) = state(&position, &velocity)?;
-        let a = vector("acceleration", &acceleration)?;
-        Ok(FixedMotion {
-            inner: self.inner.to_fixed(&r, &v, &a)?,
-        })
-    }
-
-    /// The moving-frame motion (moving components) of a particle whose fixed-frame `position`
-    /// (m), `velocity` (m/s) and `acceleration` (m/s²) are given: the inverse of `toFixed`.
-    #[wasm_bindgen(js_name = toMoving)]
-    pub fn to_moving(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] position: Numbers,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] velocity: Numbers,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] acceleration: Numbers,
-    ) -> Out<RelativeMotion> {
-        let (r, v) = state(&position, &velocity)?;
-        let a = vector("acceleration", &acceleration)?;
-        Ok(RelativeMotion {
-            inner: self.inner.to_moving(&r, &v, &a)?,
-        })
-    }
-
     /// The state at time `t` (s) of the steady motion that starts from this state at t = 0:
     /// origin at constant acceleration, axes turning about the fixed axis of ω with constant ω̇
     /// (which must be parallel to ω), as `MovingFrame.at` in Python.
@@ -191,29 +110,28 @@ impl MovingFrame {
             inner: motion.state_at(t)?,
         })
     }
-
-    /// R, the moving origin (m).
-    #[wasm_bindgen(getter)]
-    pub fn origin(&self) -> Vec<f64> {
-        vec_out(&self.inner.origin)
-    }
-    /// ω, the angular velocity (rad/s, fixed components).
-    #[wasm_bindgen(getter, js_name = angularVelocity)]
-    pub fn angular_velocity(&self) -> Vec<f64> {
-        vec_out(&self.inner.angular_velocity)
-    }
-    /// ω̇, the angular acceleration (rad/s², fixed components).
-    #[wasm_bindgen(getter, js_name = angularAcceleration)]
-    pub fn angular_acceleration(&self) -> Vec<f64> {
-        vec_out(&self.inner.angular_acceleration)
-    }
-    /// The moving axes as the columns of a rotation matrix in fixed components (9 numbers,
-    /// row-major).
-    #[wasm_bindgen(getter)]
-    pub fn attitude(&self) -> Vec<f64> {
-        mat_out(&self.inner.attitude)
-    }
 }
+
+calls!(MovingFrame {
+    " The fixed-frame motion of a particle at `position` (m) with `velocity` (m/s) and"
+    " `acceleration` (m/s²) relative to the moving frame."
+    toFixed to_fixed(position: vector, velocity: vector, acceleration: vector) -> FixedMotion;
+    " The moving-frame motion (moving components) of a particle whose fixed-frame `position`"
+    " (m), `velocity` (m/s) and `acceleration` (m/s²) are given: the inverse of `toFixed`."
+    toMoving to_moving(position: vector, velocity: vector, acceleration: vector) -> RelativeMotion;
+});
+
+fields!(MovingFrame {
+    " R, the moving origin (m)."
+    origin origin -> vector(origin);
+    " ω, the angular velocity (rad/s, fixed components)."
+    angularVelocity angular_velocity -> vector(angular_velocity);
+    " ω̇, the angular acceleration (rad/s², fixed components)."
+    angularAcceleration angular_acceleration -> vector(angular_acceleration);
+    " The moving axes as the columns of a rotation matrix in fixed components (9 numbers,"
+    " row-major)."
+    attitude attitude -> matrix(attitude);
+});
 
 /// A particle of mass m on an isotropic linear spring F = −k r anchored at the origin shared by
 /// the fixed and the turning frame (a free particle when k = 0): its energies. The Python
@@ -238,35 +156,6 @@ impl SpringParticle {
         })
     }
 
-    /// The spring force −k r (N) at `position` (m), in the components of `position`.
-    pub fn force(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] position: Numbers,
-    ) -> Out<Vec<f64>> {
-        Ok(vec_out(&self.inner.force(&vector("position", &position)?)?))
-    }
-
-    /// The acceleration F / m = −(k / m) r (m/s²) at `position` (m): the fixed-frame r̈'.
-    pub fn acceleration(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] position: Numbers,
-    ) -> Out<Vec<f64>> {
-        Ok(vec_out(
-            &self.inner.acceleration(&vector("position", &position)?)?,
-        ))
-    }
-
-    /// The fixed-frame energy ½ m |ṙ'|² + ½ k |r'|² (J) from the fixed-frame `position` (m)
-    /// and `velocity` (m/s).
-    pub fn energy(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] position: Numbers,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] velocity: Numbers,
-    ) -> Out<f64> {
-        let (r, v) = state(&position, &velocity)?;
-        Ok(self.inner.energy(&r, &v)?)
-    }
-
     /// The Jacobi integral ½ m |ṙ|² + ½ k |r|² − ½ m |ω × r|² (J) in the turning `frame`, from the
     /// relative `position` (m) and `velocity` (m/s) in moving components; conserved while ω̇ = 0.
     #[wasm_bindgen(js_name = jacobiIntegral)]
@@ -280,6 +169,16 @@ impl SpringParticle {
         Ok(self.inner.jacobi_integral(&frame.inner, &r, &v)?)
     }
 }
+
+calls!(SpringParticle {
+    " The spring force −k r (N) at `position` (m), in the components of `position`."
+    force force(position: vector) -> vector;
+    " The acceleration F / m = −(k / m) r (m/s²) at `position` (m): the fixed-frame r̈'."
+    acceleration acceleration(position: vector) -> vector;
+    " The fixed-frame energy ½ m |ṙ'|² + ½ k |r'|² (J) from the fixed-frame `position` (m)"
+    " and `velocity` (m/s)."
+    energy energy(position: vector, velocity: vector) -> number;
+});
 
 /// Integrates a particle of `mass` (kg) on a spring of `stiffness` (N/m; 0: a free particle)
 /// relative to `frame` (its state at t = 0 of a steady motion, as `simulate_particle` in Python)

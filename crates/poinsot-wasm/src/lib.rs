@@ -53,3 +53,76 @@ pub fn start() {
 pub fn version() -> String {
     env!("CARGO_PKG_VERSION").to_string()
 }
+
+/// Methods that read their arguments by name and call the core's method of the same name once:
+/// `calls!(Type { " doc" jsName rust_name(arg: kind, ...) -> out; ... })` is, for each entry, a
+/// `#[wasm_bindgen] impl Type` block of `pub fn rust_name(&self, arg, ...) -> Out<...>` that
+/// converts each argument with `args::kind` (`number`: a JavaScript number, `vector`: 3 numbers,
+/// passed to the core by reference) and returns `self.inner.rust_name(args...)?` as `out`
+/// (`number`: the `f64` itself, `vector`: `convert::vec_out`, 3 numbers, or the name of a binding
+/// type `Wrapper` of this crate: `Wrapper { inner }` around the core's value). Doc lines are string
+/// literals, not `///` (wasm-bindgen writes a doc comment passed through `macro_rules!` into the
+/// TypeScript declarations as `r" ..."`). The core validates the arguments, naming them, and
+/// promises its numbers finite, so nothing else is checked here.
+macro_rules! calls {
+    ($ty:ident { $($($doc:literal)* $js:ident $name:ident($($arg:ident: $kind:ident),* $(,)?) -> $out:ident;)* }) => {
+        $(crate::calls!(@params $ty [$($doc)*] $js $name [$($arg $kind)*] [$($arg $kind)*] [] $out);)*
+    };
+    // One parameter at a time, with the TypeScript type of its kind (an attribute takes only a
+    // literal, so each kind is spelled out).
+    (@params $ty:ident $docs:tt $js:ident $name:ident $args:tt [$arg:ident number $($rest:tt)*] [$($p:tt)*] $out:ident) => {
+        crate::calls!(@params $ty $docs $js $name $args [$($rest)*] [$($p)*
+            #[wasm_bindgen(unchecked_param_type = "number")] $arg: crate::args::Number,] $out);
+    };
+    (@params $ty:ident $docs:tt $js:ident $name:ident $args:tt [$arg:ident vector $($rest:tt)*] [$($p:tt)*] $out:ident) => {
+        crate::calls!(@params $ty $docs $js $name $args [$($rest)*] [$($p)*
+            #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] $arg: crate::args::Numbers,] $out);
+    };
+    (@params $ty:ident [$($doc:literal)*] $js:ident $name:ident [$($arg:ident $kind:ident)*] [] [$($p:tt)*] $out:ident) => {
+        #[wasm_bindgen::prelude::wasm_bindgen]
+        impl $ty {
+            $(#[doc = $doc])*
+            #[wasm_bindgen(js_name = $js)]
+            pub fn $name(&self, $($p)*) -> crate::convert::Out<crate::calls!(@type $out)> {
+                $(let $arg = crate::args::$kind(stringify!($arg), &$arg)?;)*
+                let value = self.inner.$name($(crate::calls!(@pass $kind $arg)),*)?;
+                Ok(crate::calls!(@out $out value))
+            }
+        }
+    };
+    (@pass number $arg:ident) => { $arg };
+    (@pass vector $arg:ident) => { &$arg };
+    (@type number) => { f64 };
+    (@type vector) => { Vec<f64> };
+    (@type $wrapper:ident) => { $wrapper };
+    (@out number $value:ident) => { $value };
+    (@out vector $value:ident) => { crate::convert::vec_out(&$value) };
+    (@out $wrapper:ident $value:ident) => { $wrapper { inner: $value } };
+}
+pub(crate) use calls;
+
+/// Getters of the core's fields: `fields!(Type { " doc" jsName rust_name -> out(field.path);
+/// ... })` is one `#[wasm_bindgen] impl Type` block of `#[wasm_bindgen(getter, js_name =
+/// jsName)] pub fn rust_name(&self)` returning `self.inner.field.path` as `out` (`number`: the
+/// `f64` itself, `vector`: 3 numbers, `matrix`: 9 numbers row-major). Doc lines are string
+/// literals, as in [`calls!`].
+macro_rules! fields {
+    ($ty:ident { $($($doc:literal)* $js:ident $name:ident -> $out:ident($($field:ident).+);)* }) => {
+        #[wasm_bindgen::prelude::wasm_bindgen]
+        impl $ty {
+            $(
+                $(#[doc = $doc])*
+                #[wasm_bindgen(getter, js_name = $js)]
+                pub fn $name(&self) -> crate::fields!(@type $out) {
+                    crate::fields!(@out $out self.inner.$($field).+)
+                }
+            )*
+        }
+    };
+    (@type number) => { f64 };
+    (@type $out:ident) => { Vec<f64> };
+    (@out number $value:expr) => { $value };
+    (@out vector $value:expr) => { crate::convert::vec_out(&$value) };
+    (@out matrix $value:expr) => { crate::convert::mat_out(&$value) };
+}
+pub(crate) use fields;
