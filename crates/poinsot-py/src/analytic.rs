@@ -32,8 +32,27 @@ pub struct PySymmetricTop {
     inner: FreeSymmetricTop,
 }
 
-#[export]
-impl PySymmetricTop {
+core_export! {
+    impl PySymmetricTop;
+    getters {
+        precession_rate -> f64;
+        amplitude -> f64;
+        phase -> f64;
+        omega3 -> f64;
+        omega_magnitude -> f64;
+        body_cone_angle -> f64;
+        space_cone_angle -> f64;
+        nutation_angle -> f64;
+        space_precession_rate -> f64;
+        /// The largest |t| (s) at which ω(t) and the attitude are computed (phase 2⁴² rad).
+        max_time -> f64;
+    }
+    fallible {
+        energy -> f64;
+        angular_momentum_magnitude -> f64;
+        angular_momentum.map(Vector) -> Vector;
+    }
+
     #[new]
     #[pyo3(signature = (i1, i3, omega0, attitude0=None))]
     fn new(
@@ -52,59 +71,6 @@ impl PySymmetricTop {
     #[getter]
     fn omega0(&self) -> Vector {
         Vector(self.inner.omega0())
-    }
-    #[getter]
-    fn precession_rate(&self) -> f64 {
-        self.inner.precession_rate()
-    }
-    #[getter]
-    fn amplitude(&self) -> f64 {
-        self.inner.amplitude()
-    }
-    #[getter]
-    fn phase(&self) -> f64 {
-        self.inner.phase()
-    }
-    #[getter]
-    fn omega3(&self) -> f64 {
-        self.inner.omega3()
-    }
-    #[getter]
-    fn omega_magnitude(&self) -> f64 {
-        self.inner.omega_magnitude()
-    }
-    #[getter]
-    fn energy(&self) -> PyResult<f64> {
-        self.inner.energy().py()
-    }
-    #[getter]
-    fn angular_momentum_magnitude(&self) -> PyResult<f64> {
-        self.inner.angular_momentum_magnitude().py()
-    }
-    #[getter]
-    fn angular_momentum(&self) -> PyResult<Vector> {
-        self.inner.angular_momentum().map(Vector).py()
-    }
-    #[getter]
-    fn body_cone_angle(&self) -> f64 {
-        self.inner.body_cone_angle()
-    }
-    #[getter]
-    fn space_cone_angle(&self) -> f64 {
-        self.inner.space_cone_angle()
-    }
-    #[getter]
-    fn nutation_angle(&self) -> f64 {
-        self.inner.nutation_angle()
-    }
-    #[getter]
-    fn space_precession_rate(&self) -> f64 {
-        self.inner.space_precession_rate()
-    }
-    /// The largest |t| (s) at which ω(t) and the attitude are computed (phase 2⁴² rad).
-    #[getter]
-    fn max_time(&self) -> f64 {
-        self.inner.max_time()
     }
     #[getter]
     fn shape(&self) -> &'static str {
@@ -152,8 +118,24 @@ pub struct PyFreeBody {
     inner: FreeRigidBody,
 }
 
-#[export]
-impl PyFreeBody {
+core_export! {
+    impl PyFreeBody;
+    getters {
+        parameter -> f64;
+        pole_axis -> Option<usize>;
+        invariable_plane_distance -> f64;
+        /// The largest |t| (s) at which the state is computed (phase 2⁴² rad; `inf` when the
+        /// body never turns that far within the double range).
+        max_time -> f64;
+    }
+    fallible {
+        energy -> f64;
+        angular_momentum.map(Vector) -> Vector;
+        frequency -> f64;
+        period -> f64;
+        flip_interval -> f64;
+    }
+
     #[new]
     #[pyo3(signature = (moments, omega0, attitude0=None))]
     fn new(
@@ -179,46 +161,8 @@ impl PyFreeBody {
         Vector(self.inner.omega0())
     }
     #[getter]
-    fn energy(&self) -> PyResult<f64> {
-        self.inner.energy().py()
-    }
-    #[getter]
-    fn angular_momentum(&self) -> PyResult<Vector> {
-        self.inner.angular_momentum().map(Vector).py()
-    }
-    #[getter]
     fn regime(&self) -> &'static str {
         self.inner.regime().as_str()
-    }
-    #[getter]
-    fn parameter(&self) -> f64 {
-        self.inner.parameter()
-    }
-    #[getter]
-    fn frequency(&self) -> PyResult<f64> {
-        self.inner.frequency().py()
-    }
-    #[getter]
-    fn period(&self) -> PyResult<f64> {
-        self.inner.period().py()
-    }
-    #[getter]
-    fn flip_interval(&self) -> PyResult<f64> {
-        self.inner.flip_interval().py()
-    }
-    #[getter]
-    fn pole_axis(&self) -> Option<usize> {
-        self.inner.pole_axis()
-    }
-    #[getter]
-    fn invariable_plane_distance(&self) -> f64 {
-        self.inner.invariable_plane_distance()
-    }
-    /// The largest |t| (s) at which the state is computed (phase 2⁴² rad; `inf` when the
-    /// body never turns that far within the double range).
-    #[getter]
-    fn max_time(&self) -> f64 {
-        self.inner.max_time()
     }
     /// (ω (N, 3) body, attitude (N, 4) [w, x, y, z], signs continuous) at times t (N,).
     fn state(&self, py: Python<'_>, t: PyReadonlyArray1<'_, f64>) -> PyResult<(Rows<3>, Rows<4>)> {

@@ -288,8 +288,53 @@ impl PyFallModel {
     }
 }
 
-#[export]
-impl PyEarth {
+/// `#[export] impl PyEarth { … }`: the methods written out after the two lists, and one method
+/// per quantity of the core's `Earth` named after it, at (N,) latitudes (`per_latitude { … }`,
+/// through [`per_latitude`]) or at (N,) heights and latitudes (`per_height { … }`, through
+/// [`per_height`]).
+/// pyo3 takes one `#[pymethods]` block per class, so the generated methods go into that block.
+macro_rules! earth_export {
+    (
+        per_latitude { $($(#[$ldoc:meta])* $lat:ident;)* }
+        per_height { $($(#[$hdoc:meta])* $height:ident;)* }
+        $($methods:tt)*
+    ) => {
+        #[export]
+        impl PyEarth {
+            $($(#[$ldoc])*
+            fn $lat(&self, py: Python<'_>, latitude: PyReadonlyArray1<'_, f64>) -> PyResult<Values> {
+                per_latitude(py, &latitude, |l| self.inner.$lat(l)).map(Values)
+            })*
+            $($(#[$hdoc])*
+            fn $height<'py>(
+                &self,
+                py: Python<'py>,
+                height: PyReadonlyArray1<'py, f64>,
+                latitude: PyReadonlyArray1<'py, f64>,
+            ) -> PyResult<Values> {
+                per_height(py, &height, &latitude, move |h, l| self.inner.$height(h, l))
+            })*
+            $($methods)*
+        }
+    };
+}
+
+earth_export! {
+    per_latitude {
+        /// f = 2 ω sin λ (1/s) at (N,) latitudes.
+        coriolis_parameter;
+        /// −ω sin λ (rad/s) at (N,) latitudes.
+        foucault_rate;
+        /// π/(ω |sin λ|) (s; inf where ω sin λ = 0) at (N,) latitudes.
+        inertial_period;
+    }
+    per_height {
+        /// The first-order eastward deflection 2.42 (m) for (N,) heights and latitudes.
+        eastward_deflection;
+        /// The second-order southward deflection (m) for (N,) heights and latitudes.
+        southward_deflection;
+    }
+
     /// The Earth of rate (rad/s, ≥ 0), radius (m, > 0) and gravity (m/s², > 0); errors name them.
     #[new]
     fn new(rotation_rate: f64, radius: f64, g: f64) -> PyResult<Self> {
@@ -363,60 +408,9 @@ impl PyEarth {
         Ok(rows.into_iter().collect())
     }
 
-    /// f = 2 ω sin λ (1/s) at (N,) latitudes.
-    fn coriolis_parameter(
-        &self,
-        py: Python<'_>,
-        latitude: PyReadonlyArray1<'_, f64>,
-    ) -> PyResult<Values> {
-        per_latitude(py, &latitude, |l| self.inner.coriolis_parameter(l)).map(Values)
-    }
-
-    /// −ω sin λ (rad/s) at (N,) latitudes.
-    fn foucault_rate(
-        &self,
-        py: Python<'_>,
-        latitude: PyReadonlyArray1<'_, f64>,
-    ) -> PyResult<Values> {
-        per_latitude(py, &latitude, |l| self.inner.foucault_rate(l)).map(Values)
-    }
-
-    /// π/(ω |sin λ|) (s; inf where ω sin λ = 0) at (N,) latitudes.
-    fn inertial_period(
-        &self,
-        py: Python<'_>,
-        latitude: PyReadonlyArray1<'_, f64>,
-    ) -> PyResult<Values> {
-        per_latitude(py, &latitude, |l| self.inner.inertial_period(l)).map(Values)
-    }
-
     /// The time of fall (s) from `height` (m) without rotation, √(2h/g) (2.41).
     fn fall_time(&self, height: f64) -> PyResult<f64> {
         self.inner.fall_time(height).py()
-    }
-
-    /// The first-order eastward deflection 2.42 (m) for (N,) heights and latitudes.
-    fn eastward_deflection<'py>(
-        &self,
-        py: Python<'py>,
-        height: PyReadonlyArray1<'py, f64>,
-        latitude: PyReadonlyArray1<'py, f64>,
-    ) -> PyResult<Values> {
-        per_height(py, &height, &latitude, move |h, l| {
-            self.inner.eastward_deflection(h, l)
-        })
-    }
-
-    /// The second-order southward deflection (m) for (N,) heights and latitudes.
-    fn southward_deflection<'py>(
-        &self,
-        py: Python<'py>,
-        height: PyReadonlyArray1<'py, f64>,
-        latitude: PyReadonlyArray1<'py, f64>,
-    ) -> PyResult<Values> {
-        per_height(py, &height, &latitude, move |h, l| {
-            self.inner.southward_deflection(h, l)
-        })
     }
 
     /// Jacobi's integral (N,) of (N, 3) ENU positions (m) and velocities (m/s) at `latitude`.

@@ -66,46 +66,68 @@ fn one(t: f64, f: impl Fn(&[f64], &mut [f64]) -> poinsot::Result<()>) -> PyResul
     Ok((out[0], out[1], out[2]))
 }
 
-#[export]
-impl PyHeavyTop {
-    /// The top (I₁, I₃, m g l) started at t = 0 from Euler angles and rates (rad, rad/s).
-    #[staticmethod]
-    #[allow(clippy::too_many_arguments)]
-    fn from_state(
-        i1: f64,
-        i3: f64,
-        mgl: f64,
-        phi: f64,
-        theta: f64,
-        psi: f64,
-        phi_dot: f64,
-        theta_dot: f64,
-        psi_dot: f64,
-    ) -> PyResult<Self> {
-        let state = EulerState::new(phi, theta, psi, phi_dot, theta_dot, psi_dot);
-        Ok(Self {
-            inner: HeavyTop::new(i1, i3, mgl, state).py()?,
-        })
+/// `core_export!` of `PyHeavyTop` with, first, its constructors from the state at t = 0: each
+/// `name(last) => make;` is the static method `name(i1, i3, mgl, phi, theta, psi, phi_dot,
+/// theta_dot, last)` (kg·m², kg·m², J; rad, rad/s), which calls `make(i1, i3, mgl, [phi, …,
+/// last])` (a closure), the constructors differing only in their last argument (ψ̇ or ω₃).
+macro_rules! heavy_top_export {
+    (constructors { $($(#[$doc:meta])* $name:ident($last:ident) => $make:expr;)* } $($rest:tt)*) => {
+        core_export! {
+            impl PyHeavyTop;
+            $($rest)*
+            $($(#[$doc])*
+            #[staticmethod]
+            #[allow(clippy::too_many_arguments)]
+            fn $name(
+                i1: f64,
+                i3: f64,
+                mgl: f64,
+                phi: f64,
+                theta: f64,
+                psi: f64,
+                phi_dot: f64,
+                theta_dot: f64,
+                $last: f64,
+            ) -> PyResult<Self> {
+                let make: fn(f64, f64, f64, [f64; 6]) -> poinsot::Result<HeavyTop> = $make;
+                let state = [phi, theta, psi, phi_dot, theta_dot, $last];
+                Ok(Self {
+                    inner: make(i1, i3, mgl, state).py()?,
+                })
+            })*
+        }
+    };
+}
+
+heavy_top_export! {
+    constructors {
+        /// The top (I₁, I₃, m g l) started at t = 0 from Euler angles and rates (rad, rad/s).
+        from_state(psi_dot) => |i1, i3, mgl, [phi, theta, psi, phi_dot, theta_dot, psi_dot]| {
+            let state = EulerState::new(phi, theta, psi, phi_dot, theta_dot, psi_dot);
+            HeavyTop::new(i1, i3, mgl, state)
+        };
+        /// The top started from Euler angles, φ̇, θ̇ and the spin ω₃ (ψ̇ = ω₃ − φ̇ cos θ, 2.99).
+        from_spin(omega3) => |i1, i3, mgl, [phi, theta, psi, phi_dot, theta_dot, omega3]| {
+            HeavyTop::with_spin(i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, omega3)
+        };
     }
 
-    /// The top started from Euler angles, φ̇, θ̇ and the spin ω₃ (ψ̇ = ω₃ − φ̇ cos θ, 2.99).
-    #[staticmethod]
-    #[allow(clippy::too_many_arguments)]
-    fn from_spin(
-        i1: f64,
-        i3: f64,
-        mgl: f64,
-        phi: f64,
-        theta: f64,
-        psi: f64,
-        phi_dot: f64,
-        theta_dot: f64,
-        omega3: f64,
-    ) -> PyResult<Self> {
-        Ok(Self {
-            inner: HeavyTop::with_spin(i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, omega3)
-                .py()?,
-        })
+    getters {
+        p_phi -> f64;
+        p_psi -> f64;
+        omega3 -> f64;
+        energy -> f64;
+        reduced_energy -> f64;
+        /// (θ₁, θ₂), rad.
+        turning_points -> (f64, f64);
+        /// (u₁, u₂, u₃): the roots of the cubic in u = cos θ (u₃ = inf for m g l = 0).
+        cubic_roots -> (f64, f64, f64);
+        is_sleeping_stable -> bool;
+        /// The nutation period (s), None when θ never returns.
+        nutation_period -> Option<f64>;
+        mean_precession_rate -> f64;
+        mean_spin_rate -> f64;
+        fourier_terms -> usize;
     }
 
     /// The top given by p_φ, p_ψ (kg·m²/s) and E (J); t = 0 at the upper turning point.
@@ -128,66 +150,15 @@ impl PyHeavyTop {
     fn parameters(&self) -> (f64, f64, f64) {
         (self.inner.i1(), self.inner.i3(), self.inner.mgl())
     }
-    #[getter]
-    fn p_phi(&self) -> f64 {
-        self.inner.p_phi()
-    }
-    #[getter]
-    fn p_psi(&self) -> f64 {
-        self.inner.p_psi()
-    }
-    #[getter]
-    fn omega3(&self) -> f64 {
-        self.inner.omega3()
-    }
-    #[getter]
-    fn energy(&self) -> f64 {
-        self.inner.energy()
-    }
-    #[getter]
-    fn reduced_energy(&self) -> f64 {
-        self.inner.reduced_energy()
-    }
     /// (φ, θ, ψ, φ̇, θ̇, ψ̇) at t = 0.
     #[getter]
     fn initial_state(&self) -> (f64, f64, f64, f64, f64, f64) {
         let s = self.inner.initial_state();
         (s.phi, s.theta, s.psi, s.phi_dot, s.theta_dot, s.psi_dot)
     }
-    /// (θ₁, θ₂), rad.
-    #[getter]
-    fn turning_points(&self) -> (f64, f64) {
-        self.inner.turning_points()
-    }
-    /// (u₁, u₂, u₃): the roots of the cubic in u = cos θ (u₃ = inf for m g l = 0).
-    #[getter]
-    fn cubic_roots(&self) -> (f64, f64, f64) {
-        self.inner.cubic_roots()
-    }
     #[getter]
     fn motion_class(&self) -> &'static str {
         self.inner.motion_class().name()
-    }
-    #[getter]
-    fn is_sleeping_stable(&self) -> bool {
-        self.inner.is_sleeping_stable()
-    }
-    /// The nutation period (s), None when θ never returns.
-    #[getter]
-    fn nutation_period(&self) -> Option<f64> {
-        self.inner.nutation_period()
-    }
-    #[getter]
-    fn mean_precession_rate(&self) -> f64 {
-        self.inner.mean_precession_rate()
-    }
-    #[getter]
-    fn mean_spin_rate(&self) -> f64 {
-        self.inner.mean_spin_rate()
-    }
-    #[getter]
-    fn fourier_terms(&self) -> usize {
-        self.inner.fourier_terms()
     }
 
     /// V(θ) (J) at (N,) angles θ (rad).

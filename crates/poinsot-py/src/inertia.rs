@@ -24,8 +24,43 @@ fn wrap(r: poinsot::Result<MassProperties>) -> PyResult<PyMassProperties> {
     Ok(PyMassProperties { inner: r.py()? })
 }
 
-#[export]
-impl PyMassProperties {
+/// `#[export] impl PyMassProperties { … }`: the methods written out after the list, and one
+/// method per quantity of the core's `MassProperties` at each ω of (N, 3) angular velocities,
+/// named after it (`per_omega { name -> output; … }`, through `per_omega`, with the optional
+/// reference point `about`). pyo3 takes one `#[pymethods]` block per class, so the generated
+/// methods go into that block.
+macro_rules! mass_properties_export {
+    (per_omega { $($(#[$doc:meta])* $name:ident -> $out:ty;)* } $($methods:tt)*) => {
+        #[export]
+        impl PyMassProperties {
+            $($(#[$doc])*
+            #[pyo3(signature = (omega, about=None))]
+            fn $name(
+                &self,
+                py: Python<'_>,
+                omega: Omegas<'_>,
+                about: About<'_>,
+            ) -> PyResult<$out> {
+                self.per_omega(py, &omega, &about, MassProperties::$name)
+            })*
+            $($methods)*
+        }
+    };
+}
+
+mass_properties_export! {
+    per_omega {
+        /// L = I·ω (kg·m²/s) for each ω of `omega` (rad/s, (N, 3)), about `about` (m) or the
+        /// centre of mass → (N, 3).
+        angular_momentum -> Rows<3>;
+        /// T = ½ ω·I·ω (J) for each ω of `omega` (rad/s, (N, 3)) → (N,).
+        kinetic_energy -> Values;
+        /// N = ω × L (N·m) for each ω of `omega` (rad/s, (N, 3)) → (N, 3).
+        holding_torque -> Rows<3>;
+        /// Angle between L and ω (rad) for each ω of `omega` (rad/s, (N, 3)) → (N,).
+        momentum_angle -> Values;
+    }
+
     /// Mass (kg), centre of mass (m, (3,)) and inertia about it (kg·m², (3, 3)), checked.
     #[staticmethod]
     fn from_inertia(
@@ -286,51 +321,6 @@ impl PyMassProperties {
     /// Kind of top with relative tolerance `rtol`.
     fn kind(&self, rtol: f64) -> PyResult<&'static str> {
         Ok(self.inner.kind(rtol).py()?.as_str())
-    }
-
-    /// L = I·ω (kg·m²/s) for each ω of `omega` (rad/s, (N, 3)), about `about` (m) or the
-    /// centre of mass → (N, 3).
-    #[pyo3(signature = (omega, about=None))]
-    fn angular_momentum(
-        &self,
-        py: Python<'_>,
-        omega: Omegas<'_>,
-        about: About<'_>,
-    ) -> PyResult<Rows<3>> {
-        self.per_omega(py, &omega, &about, MassProperties::angular_momentum)
-    }
-
-    /// T = ½ ω·I·ω (J) for each ω of `omega` (rad/s, (N, 3)) → (N,).
-    #[pyo3(signature = (omega, about=None))]
-    fn kinetic_energy(
-        &self,
-        py: Python<'_>,
-        omega: Omegas<'_>,
-        about: About<'_>,
-    ) -> PyResult<Values> {
-        self.per_omega(py, &omega, &about, MassProperties::kinetic_energy)
-    }
-
-    /// N = ω × L (N·m) for each ω of `omega` (rad/s, (N, 3)) → (N, 3).
-    #[pyo3(signature = (omega, about=None))]
-    fn holding_torque(
-        &self,
-        py: Python<'_>,
-        omega: Omegas<'_>,
-        about: About<'_>,
-    ) -> PyResult<Rows<3>> {
-        self.per_omega(py, &omega, &about, MassProperties::holding_torque)
-    }
-
-    /// Angle between L and ω (rad) for each ω of `omega` (rad/s, (N, 3)) → (N,).
-    #[pyo3(signature = (omega, about=None))]
-    fn momentum_angle(
-        &self,
-        py: Python<'_>,
-        omega: Omegas<'_>,
-        about: About<'_>,
-    ) -> PyResult<Values> {
-        self.per_omega(py, &omega, &about, MassProperties::momentum_angle)
     }
 }
 

@@ -12,6 +12,39 @@ macro_rules! add_functions {
     }};
 }
 
+/// `#[export] impl Class { … }` for a class holding a core value in `inner`: the methods written
+/// out after the lists, and one `#[getter]` per method of the core value, named after it and
+/// returning what it returns: `getters { name -> Type; … }` for a plain value, `fallible {
+/// name -> Type; name.map(Wrapper) -> Wrapper; … }` for a core `Result` (its error mapped by
+/// `IntoPy`, its value wrapped when `.map` says so). pyo3 takes one `#[pymethods]` block per
+/// class, so the getters go into that block.
+macro_rules! core_export {
+    (
+        impl $class:ident;
+        getters { $($(#[$doc:meta])* $name:ident -> $out:ty;)* }
+        fallible { $($(#[$fdoc:meta])* $fname:ident $(.map($wrap:path))? -> $fout:ty;)* }
+        $($methods:tt)*
+    ) => {
+        #[::poinsot_py_macros::export]
+        impl $class {
+            $($(#[$doc])*
+            #[getter]
+            fn $name(&self) -> $out {
+                self.inner.$name()
+            })*
+            $($(#[$fdoc])*
+            #[getter]
+            fn $fname(&self) -> ::pyo3::PyResult<$fout> {
+                crate::errors::IntoPy::py(self.inner.$fname()$(.map($wrap))?)
+            })*
+            $($methods)*
+        }
+    };
+    (impl $class:ident; getters { $($getters:tt)* } $($methods:tt)*) => {
+        core_export! { impl $class; getters { $($getters)* } fallible {} $($methods)* }
+    };
+}
+
 mod analytic;
 mod control;
 mod convert;
