@@ -77,23 +77,15 @@ impl Fall {
     }
 }
 
+calls!(Earth::new {
+    " An Earth of angular rate `rotation_rate` (rad/s), `radius` (m) and surface gravity `g`"
+    " (m/s²). The defaults (the core's, as in Python) are [`Earth::sidereal_rate`],"
+    " [`Earth::mean_radius`] and [`Earth::standard_gravity`]."
+    (rotation_rate: number, radius: number, g: number) = ea::Earth::new;
+});
+
 #[wasm_bindgen]
 impl Earth {
-    /// An Earth of angular rate `rotation_rate` (rad/s), `radius` (m) and surface gravity `g`
-    /// (m/s²). The defaults (the core's, as in Python) are [`Earth::sidereal_rate`],
-    /// [`Earth::mean_radius`] and [`Earth::standard_gravity`].
-    #[wasm_bindgen(constructor)]
-    pub fn new(
-        #[wasm_bindgen(unchecked_param_type = "number")] rotation_rate: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] radius: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] g: Number,
-    ) -> Out<Earth> {
-        let_numbers!(rotation_rate, radius, g);
-        Ok(Earth {
-            inner: ea::Earth::new(rotation_rate, radius, g)?,
-        })
-    }
-
     /// The sidereal rotation rate 7.2921150e-5 rad/s (the default).
     #[wasm_bindgen(js_name = siderealRate)]
     pub fn sidereal_rate() -> f64 {
@@ -183,7 +175,9 @@ pub struct FoucaultRun {
 }
 
 impl FoucaultRun {
-    fn state_at(&self, t: f64) -> Out<ParticleState> {
+    /// The state at the time argument `t` (s).
+    fn state_at(&self, t: &Number) -> Out<ParticleState> {
+        let t = number("t", t)?;
         self.inner.state_at(t).map_err(step_limit("t"))
     }
 }
@@ -304,8 +298,7 @@ impl FoucaultRun {
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
     ) -> Out<Vec<f64>> {
-        let t = number("t", &t)?;
-        Ok(self.state_at(t)?.to_vec())
+        Ok(self.state_at(&t)?.to_vec())
     }
     /// Jacobi's integral (J/kg) of the state at `t`: constant along the run.
     #[wasm_bindgen(js_name = jacobiIntegral)]
@@ -313,8 +306,7 @@ impl FoucaultRun {
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] t: Number,
     ) -> Out<f64> {
-        let t = number("t", &t)?;
-        let s = self.state_at(t)?;
+        let s = self.state_at(&t)?;
         Ok(self.inner.earth.jacobi_integral(self.inner.latitude, &s)?)
     }
 }

@@ -142,20 +142,13 @@ pub struct SpringParticle {
     inner: fr::SpringParticle,
 }
 
+calls!(SpringParticle::new {
+    " A particle of `mass` (kg, > 0) on a spring of `stiffness` (N/m, ≥ 0)."
+    (mass: number, stiffness: number) = fr::SpringParticle::new;
+});
+
 #[wasm_bindgen]
 impl SpringParticle {
-    /// A particle of `mass` (kg, > 0) on a spring of `stiffness` (N/m, ≥ 0).
-    #[wasm_bindgen(constructor)]
-    pub fn new(
-        #[wasm_bindgen(unchecked_param_type = "number")] mass: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] stiffness: Number,
-    ) -> Out<SpringParticle> {
-        let (mass, stiffness) = (number("mass", &mass)?, number("stiffness", &stiffness)?);
-        Ok(SpringParticle {
-            inner: fr::SpringParticle::new(mass, stiffness)?,
-        })
-    }
-
     /// The Jacobi integral ½ m |ṙ|² + ½ k |r|² − ½ m |ω × r|² (J) in the turning `frame`, from the
     /// relative `position` (m) and `velocity` (m/s) in moving components; conserved while ω̇ = 0.
     #[wasm_bindgen(js_name = jacobiIntegral)]

@@ -60,25 +60,30 @@ pub fn version() -> String {
 /// converts each argument with `args::kind` (`number`: a JavaScript number, `vector`: 3 numbers,
 /// passed to the core by reference) and returns `self.inner.rust_name(args...)?` as `out`
 /// (`number`: the `f64` itself, `vector`: `convert::vec_out`, 3 numbers, or the name of a binding
-/// type `Wrapper` of this crate: `Wrapper { inner }` around the core's value). Doc lines are string
+/// type `Wrapper` of this crate: `Wrapper { inner }` around the core's value).
+/// `calls!(Type::new { " doc" (arg: kind, ...) = core::Type::new; })` is the JavaScript
+/// constructor `Type { inner: core::Type::new(args...)? }` in the same way. Doc lines are string
 /// literals, not `///` (wasm-bindgen writes a doc comment passed through `macro_rules!` into the
 /// TypeScript declarations as `r" ..."`). The core validates the arguments, naming them, and
 /// promises its numbers finite, so nothing else is checked here.
 macro_rules! calls {
+    ($ty:ident::new { $($doc:literal)* ($($arg:ident: $kind:ident),* $(,)?) = $core:path; }) => {
+        crate::calls!(@params $ty [$($doc)*] [constructor $core] [$($arg $kind)*] [$($arg $kind)*] []);
+    };
     ($ty:ident { $($($doc:literal)* $js:ident $name:ident($($arg:ident: $kind:ident),* $(,)?) -> $out:ident;)* }) => {
-        $(crate::calls!(@params $ty [$($doc)*] $js $name [$($arg $kind)*] [$($arg $kind)*] [] $out);)*
+        $(crate::calls!(@params $ty [$($doc)*] [method $js $name $out] [$($arg $kind)*] [$($arg $kind)*] []);)*
     };
     // One parameter at a time, with the TypeScript type of its kind (an attribute takes only a
     // literal, so each kind is spelled out).
-    (@params $ty:ident $docs:tt $js:ident $name:ident $args:tt [$arg:ident number $($rest:tt)*] [$($p:tt)*] $out:ident) => {
-        crate::calls!(@params $ty $docs $js $name $args [$($rest)*] [$($p)*
-            #[wasm_bindgen(unchecked_param_type = "number")] $arg: crate::args::Number,] $out);
+    (@params $ty:ident $docs:tt $mode:tt $args:tt [$arg:ident number $($rest:tt)*] [$($p:tt)*]) => {
+        crate::calls!(@params $ty $docs $mode $args [$($rest)*] [$($p)*
+            #[wasm_bindgen(unchecked_param_type = "number")] $arg: crate::args::Number,]);
     };
-    (@params $ty:ident $docs:tt $js:ident $name:ident $args:tt [$arg:ident vector $($rest:tt)*] [$($p:tt)*] $out:ident) => {
-        crate::calls!(@params $ty $docs $js $name $args [$($rest)*] [$($p)*
-            #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] $arg: crate::args::Numbers,] $out);
+    (@params $ty:ident $docs:tt $mode:tt $args:tt [$arg:ident vector $($rest:tt)*] [$($p:tt)*]) => {
+        crate::calls!(@params $ty $docs $mode $args [$($rest)*] [$($p)*
+            #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] $arg: crate::args::Numbers,]);
     };
-    (@params $ty:ident [$($doc:literal)*] $js:ident $name:ident [$($arg:ident $kind:ident)*] [] [$($p:tt)*] $out:ident) => {
+    (@params $ty:ident [$($doc:literal)*] [method $js:ident $name:ident $out:ident] [$($arg:ident $kind:ident)*] [] [$($p:tt)*]) => {
         #[wasm_bindgen::prelude::wasm_bindgen]
         impl $ty {
             $(#[doc = $doc])*
@@ -87,6 +92,18 @@ macro_rules! calls {
                 $(let $arg = crate::args::$kind(stringify!($arg), &$arg)?;)*
                 let value = self.inner.$name($(crate::calls!(@pass $kind $arg)),*)?;
                 Ok(crate::calls!(@out $out value))
+            }
+        }
+    };
+    (@params $ty:ident [$($doc:literal)*] [constructor $core:path] [$($arg:ident $kind:ident)*] [] [$($p:tt)*]) => {
+        #[wasm_bindgen::prelude::wasm_bindgen]
+        impl $ty {
+            $(#[doc = $doc])*
+            #[wasm_bindgen(constructor)]
+            pub fn new($($p)*) -> crate::convert::Out<$ty> {
+                $(let $arg = crate::args::$kind(stringify!($arg), &$arg)?;)*
+                let inner = $core($(crate::calls!(@pass $kind $arg)),*)?;
+                Ok($ty { inner })
             }
         }
     };

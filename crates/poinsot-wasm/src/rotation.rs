@@ -1,8 +1,9 @@
 //! Bindings of `poinsot::rotation`: Euler angles (any of the 24 conventions), Euler's theorem,
 //! Chasles' screw and the Euler-angle kinematics (the unit's 2.98–2.99).
 
-use crate::args::{flag, matrix, number, text, triple, vector, Flag, Number, Numbers, Text};
+use crate::args::{flag, matrix, number, text, vector, Flag, Number, Numbers, Text};
 use crate::convert::{mat_out, renamed, vec_out, Out};
+use crate::fields;
 use poinsot::rotation::{self as rot, EulerSequence, Frame};
 use wasm_bindgen::prelude::wasm_bindgen;
 
@@ -12,21 +13,6 @@ fn sequence(seq: &Text, intrinsic: &Flag) -> Out<EulerSequence> {
         &text("seq", seq)?,
         flag("intrinsic", intrinsic)?,
     )?)
-}
-
-/// The rotation matrix (9 numbers, row-major) of Euler `angles` (rad, 3 numbers) in the
-/// sequence `seq` (three lowercase axis letters, e.g. `"zxz"`, the unit's φ, θ, ψ), intrinsic or
-/// extrinsic (`intrinsic`, a boolean): intrinsic `R = R_a(α) R_b(β) R_c(γ)`, extrinsic
-/// `R = R_c(γ) R_b(β) R_a(α)`.
-#[wasm_bindgen(js_name = eulerToMatrix)]
-pub fn euler_to_matrix(
-    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] angles: Numbers,
-    #[wasm_bindgen(unchecked_param_type = "string")] seq: Text,
-    #[wasm_bindgen(unchecked_param_type = "boolean")] intrinsic: Flag,
-) -> Out<Vec<f64>> {
-    let angles = triple("angles", &angles)?;
-    let r = rot::euler_to_matrix(angles, sequence(&seq, &intrinsic)?)?;
-    Ok(mat_out(&r))
 }
 
 /// Euler angles of a rotation matrix, with the gimbal-lock flag.
@@ -52,20 +38,57 @@ impl EulerAngles {
     }
 }
 
-/// The Euler angles of the rotation matrix `r` (9 numbers, row-major; must be a proper rotation)
-/// in the sequence `seq`, intrinsic or extrinsic.
-#[wasm_bindgen(js_name = matrixToEuler)]
-pub fn matrix_to_euler(
-    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] r: Numbers,
-    #[wasm_bindgen(unchecked_param_type = "string")] seq: Text,
-    #[wasm_bindgen(unchecked_param_type = "boolean")] intrinsic: Flag,
-) -> Out<EulerAngles> {
-    let r = matrix("r", &r)?;
-    let e = rot::matrix_to_euler(&r, sequence(&seq, &intrinsic)?).map_err(renamed("R", "r"))?;
-    Ok(EulerAngles {
-        angles: e.angles.to_vec(),
-        gimbal_lock: e.gimbal_lock,
-    })
+/// Functions of arrays of numbers and of an Euler sequence: `in_sequence! { " doc" jsName
+/// rust_name(arg: kind, ...) -> Output = |sequence| body; ... }` is, for each entry, a
+/// `#[wasm_bindgen] pub fn rust_name(arg, ..., seq, intrinsic) -> Out<Output>` that converts
+/// each array with `args::kind` (`triple`, `vector`, `matrix`), then `seq` (a string) and
+/// `intrinsic` (a boolean) to the [`EulerSequence`] `sequence`, and returns `body`. Doc lines are
+/// string literals (see `crate::calls!`).
+macro_rules! in_sequence {
+    ($($($doc:literal)* $js:ident $name:ident($($arg:ident: $kind:ident),+) -> $out:ty = |$seq:ident| $body:expr;)*) => {
+        $(
+            $(#[doc = $doc])*
+            #[wasm_bindgen(js_name = $js)]
+            pub fn $name(
+                $(#[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] $arg: Numbers,)+
+                #[wasm_bindgen(unchecked_param_type = "string")] seq: Text,
+                #[wasm_bindgen(unchecked_param_type = "boolean")] intrinsic: Flag,
+            ) -> Out<$out> {
+                $(let $arg = crate::args::$kind(stringify!($arg), &$arg)?;)+
+                let $seq = sequence(&seq, &intrinsic)?;
+                $body
+            }
+        )*
+    };
+}
+
+in_sequence! {
+    " The rotation matrix (9 numbers, row-major) of Euler `angles` (rad, 3 numbers) in the"
+    " sequence `seq` (three lowercase axis letters, e.g. `\"zxz\"`, the unit's φ, θ, ψ), intrinsic or"
+    " extrinsic (`intrinsic`, a boolean): intrinsic `R = R_a(α) R_b(β) R_c(γ)`, extrinsic"
+    " `R = R_c(γ) R_b(β) R_a(α)`."
+    eulerToMatrix euler_to_matrix(angles: triple) -> Vec<f64> = |seq| {
+        Ok(mat_out(&rot::euler_to_matrix(angles, seq)?))
+    };
+    " The Euler angles of the rotation matrix `r` (9 numbers, row-major; must be a proper rotation)"
+    " in the sequence `seq`, intrinsic or extrinsic."
+    matrixToEuler matrix_to_euler(r: matrix) -> EulerAngles = |seq| {
+        let e = rot::matrix_to_euler(&r, seq).map_err(renamed("R", "r"))?;
+        Ok(EulerAngles {
+            angles: e.angles.to_vec(),
+            gimbal_lock: e.gimbal_lock,
+        })
+    };
+    " The body-frame angular velocity (rad/s, 3 numbers) for Euler `angles` (rad) and their time"
+    " derivatives `rates` (rad/s) in sequence `seq` (the unit's 2.99 for intrinsic zxz)."
+    bodyAngularVelocity body_angular_velocity(angles: triple, rates: triple) -> Vec<f64> = |seq| {
+        Ok(vec_out(&rot::body_angular_velocity(angles, rates, seq)?))
+    };
+    " The Euler-angle rates (rad/s) that produce the body angular velocity `omega_body` (rad/s) at"
+    " `angles` (rad); throws a `GimbalLockError` at the singular angles of the sequence."
+    eulerRates euler_rates(angles: triple, omega_body: vector) -> Vec<f64> = |seq| {
+        Ok(rot::euler_rates(angles, &omega_body, seq, Frame::Body)?.to_vec())
+    };
 }
 
 /// Euler's theorem: `[ax, ay, az, angle]`, the unit axis and the angle (rad, in [0, π]) of the
@@ -85,33 +108,21 @@ pub struct Screw {
     inner: rot::Screw,
 }
 
+fields!(Screw {
+    " Unit direction of the screw axis."
+    axis axis -> vector(axis);
+    " The point of the axis nearest the origin (m)."
+    point point -> vector(point);
+    " Rotation angle about the axis (rad, in [0, π])."
+    angle angle -> number(angle);
+    " Signed translation along the axis (m)."
+    slide slide -> number(slide);
+    " `slide / angle` (m/rad); `Infinity` for a pure translation (never NaN)."
+    pitch pitch -> number(pitch);
+});
+
 #[wasm_bindgen]
 impl Screw {
-    /// Unit direction of the screw axis.
-    #[wasm_bindgen(getter)]
-    pub fn axis(&self) -> Vec<f64> {
-        vec_out(&self.inner.axis)
-    }
-    /// The point of the axis nearest the origin (m).
-    #[wasm_bindgen(getter)]
-    pub fn point(&self) -> Vec<f64> {
-        vec_out(&self.inner.point)
-    }
-    /// Rotation angle about the axis (rad, in [0, π]).
-    #[wasm_bindgen(getter)]
-    pub fn angle(&self) -> f64 {
-        self.inner.angle
-    }
-    /// Signed translation along the axis (m).
-    #[wasm_bindgen(getter)]
-    pub fn slide(&self) -> f64 {
-        self.inner.slide
-    }
-    /// `slide / angle` (m/rad); `Infinity` for a pure translation (never NaN).
-    #[wasm_bindgen(getter)]
-    pub fn pitch(&self) -> f64 {
-        self.inner.pitch
-    }
     /// The pose reached at fraction `s` of the screw motion (rotation by `s·angle` about the
     /// axis while sliding `s·slide` along it; core `Screw::displacement_at`, Python
     /// `Screw.displacement_at`): 12 numbers, `R(s)` row-major then `t(s)` (m). `s = 0` is the
@@ -136,41 +147,6 @@ pub fn screw_axis(
 ) -> Out<Screw> {
     let s = rot::screw_axis(&matrix("r", &r)?, &vector("t", &t)?).map_err(renamed("R", "r"))?;
     Ok(Screw { inner: s })
-}
-
-/// The body-frame angular velocity (rad/s, 3 numbers) for Euler `angles` (rad) and their time
-/// derivatives `rates` (rad/s) in sequence `seq` (the unit's 2.99 for intrinsic zxz).
-#[wasm_bindgen(js_name = bodyAngularVelocity)]
-pub fn body_angular_velocity(
-    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] angles: Numbers,
-    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] rates: Numbers,
-    #[wasm_bindgen(unchecked_param_type = "string")] seq: Text,
-    #[wasm_bindgen(unchecked_param_type = "boolean")] intrinsic: Flag,
-) -> Out<Vec<f64>> {
-    let w = rot::body_angular_velocity(
-        triple("angles", &angles)?,
-        triple("rates", &rates)?,
-        sequence(&seq, &intrinsic)?,
-    )?;
-    Ok(vec_out(&w))
-}
-
-/// The Euler-angle rates (rad/s) that produce the body angular velocity `omega_body` (rad/s) at
-/// `angles` (rad); throws a `GimbalLockError` at the singular angles of the sequence.
-#[wasm_bindgen(js_name = eulerRates)]
-pub fn euler_rates(
-    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] angles: Numbers,
-    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] omega_body: Numbers,
-    #[wasm_bindgen(unchecked_param_type = "string")] seq: Text,
-    #[wasm_bindgen(unchecked_param_type = "boolean")] intrinsic: Flag,
-) -> Out<Vec<f64>> {
-    let r = rot::euler_rates(
-        triple("angles", &angles)?,
-        &vector("omega_body", &omega_body)?,
-        sequence(&seq, &intrinsic)?,
-        Frame::Body,
-    )?;
-    Ok(r.to_vec())
 }
 
 #[cfg(test)]
