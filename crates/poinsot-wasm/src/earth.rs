@@ -182,30 +182,48 @@ impl FoucaultRun {
     }
 }
 
+fields!(FoucaultRun {
+    " The swing plane's rate of turn fitted through the turning points (rad/s,"
+    " counterclockwise seen from above positive), or `undefined` where the run shows no"
+    " steady turn (see `regime`): `FoucaultRun.precession_rate`."
+    precessionRate precession_rate -> option(measurement.precession_rate);
+    " The unit's rate −ω sin λ (rad/s): `FoucaultRun.expected_rate`."
+    expectedRate expected_rate -> number(measurement.expected_rate);
+    " The exact small-swing theory's mean rate (rad/s), or `undefined` without a stable rest"
+    " position: `FoucaultRun.theory_rate`."
+    theoryRate theory_rate -> option(measurement.theory_rate);
+    " One sentence on the regime, with its figures: `FoucaultRun.regime_note`."
+    regimeNote regime_note -> text(measurement.note);
+});
+
+fields!(FoucaultRun.unit_rate {
+    " Whether the unit's rate −ω sin λ describes this run (both departures within the core's"
+    " `UNIT_RATE_TOLERANCE`, the plane turning steadily or not at all): `UnitRateCheck.holds`."
+    unitRateHolds unit_rate_holds -> flag(holds);
+    " One sentence on whether −ω sin λ describes this run, with its figures:"
+    " `UnitRateCheck.note`."
+    unitRateNote unit_rate_note -> text(note);
+    " ω/√(g/L), the planet's spin against the pendulum's own frequency (dimensionless):"
+    " `UnitRateCheck.spin_ratio`."
+    spinRatio spin_ratio -> number(spin_ratio);
+    " A/L, the release's distance from rest against the length (dimensionless):"
+    " `UnitRateCheck.amplitude_ratio`."
+    amplitudeRatio amplitude_ratio -> number(amplitude_ratio);
+    " |Δ − (−ω sin λ)| / max(|Δ|, |ω sin λ|), the exact small-swing rate's departure from the"
+    " unit's (a fraction), or `undefined` without a stable rest: `UnitRateCheck.spin_departure`."
+    spinDeparture spin_departure -> option(spin_departure);
+    " |r − r_lin| / |r_lin|, the measured rate's departure from the small-swing theory's fit"
+    " over the run (a fraction), or `undefined` without a steady turn:"
+    " `UnitRateCheck.amplitude_departure`."
+    amplitudeDeparture amplitude_departure -> option(amplitude_departure);
+});
+
 #[wasm_bindgen]
 impl FoucaultRun {
     /// The length of the run (s).
     #[wasm_bindgen(getter)]
     pub fn duration(&self) -> f64 {
         self.inner.duration()
-    }
-    /// The swing plane's rate of turn fitted through the turning points (rad/s,
-    /// counterclockwise seen from above positive), or `undefined` where the run shows no
-    /// steady turn (see `regime`): `FoucaultRun.precession_rate`.
-    #[wasm_bindgen(getter, js_name = precessionRate)]
-    pub fn precession_rate(&self) -> Option<f64> {
-        self.inner.measurement.precession_rate
-    }
-    /// The unit's rate −ω sin λ (rad/s): `FoucaultRun.expected_rate`.
-    #[wasm_bindgen(getter, js_name = expectedRate)]
-    pub fn expected_rate(&self) -> f64 {
-        self.inner.measurement.expected_rate
-    }
-    /// The exact small-swing theory's mean rate (rad/s), or `undefined` without a stable rest
-    /// position: `FoucaultRun.theory_rate`.
-    #[wasm_bindgen(getter, js_name = theoryRate)]
-    pub fn theory_rate(&self) -> Option<f64> {
-        self.inner.measurement.theory_rate
     }
     /// `"clockwise"`, `"counterclockwise"`, `"none"` (the plane does not turn) or
     /// `"undefined"` (no rate): `FoucaultRun.sense`.
@@ -219,48 +237,6 @@ impl FoucaultRun {
     #[wasm_bindgen(getter)]
     pub fn regime(&self) -> String {
         self.inner.measurement.regime.name().into()
-    }
-    /// One sentence on the regime, with its figures: `FoucaultRun.regime_note`.
-    #[wasm_bindgen(getter, js_name = regimeNote)]
-    pub fn regime_note(&self) -> String {
-        self.inner.measurement.note.clone()
-    }
-    /// Whether the unit's rate −ω sin λ describes this run (both departures within the core's
-    /// `UNIT_RATE_TOLERANCE`, the plane turning steadily or not at all): `UnitRateCheck.holds`.
-    #[wasm_bindgen(getter, js_name = unitRateHolds)]
-    pub fn unit_rate_holds(&self) -> bool {
-        self.unit_rate.holds
-    }
-    /// One sentence on whether −ω sin λ describes this run, with its figures:
-    /// `UnitRateCheck.note`.
-    #[wasm_bindgen(getter, js_name = unitRateNote)]
-    pub fn unit_rate_note(&self) -> String {
-        self.unit_rate.note.clone()
-    }
-    /// ω/√(g/L), the planet's spin against the pendulum's own frequency (dimensionless):
-    /// `UnitRateCheck.spin_ratio`.
-    #[wasm_bindgen(getter, js_name = spinRatio)]
-    pub fn spin_ratio(&self) -> f64 {
-        self.unit_rate.spin_ratio
-    }
-    /// A/L, the release's distance from rest against the length (dimensionless):
-    /// `UnitRateCheck.amplitude_ratio`.
-    #[wasm_bindgen(getter, js_name = amplitudeRatio)]
-    pub fn amplitude_ratio(&self) -> f64 {
-        self.unit_rate.amplitude_ratio
-    }
-    /// |Δ − (−ω sin λ)| / max(|Δ|, |ω sin λ|), the exact small-swing rate's departure from the
-    /// unit's (a fraction), or `undefined` without a stable rest: `UnitRateCheck.spin_departure`.
-    #[wasm_bindgen(getter, js_name = spinDeparture)]
-    pub fn spin_departure(&self) -> Option<f64> {
-        self.unit_rate.spin_departure
-    }
-    /// |r − r_lin| / |r_lin|, the measured rate's departure from the small-swing theory's fit
-    /// over the run (a fraction), or `undefined` without a steady turn:
-    /// `UnitRateCheck.amplitude_departure`.
-    #[wasm_bindgen(getter, js_name = amplitudeDeparture)]
-    pub fn amplitude_departure(&self) -> Option<f64> {
-        self.unit_rate.amplitude_departure
     }
     /// The core's tolerance on both departures (a fraction): `UNIT_RATE_TOLERANCE`.
     #[wasm_bindgen(js_name = unitRateTolerance)]

@@ -2,7 +2,7 @@
 //! fixed-frame acceleration split into the unit's terms (2.1–2.28); the steady motion of a frame
 //! (`MovingFrame.at`), and a particle on a spring (free when k = 0) integrated in a turning frame.
 
-use crate::args::{count, number, numbers_each, vector, Count, Number, Numbers};
+use crate::args::{count, let_numbers, number, numbers_each, vector, Count, Number, Numbers};
 use crate::convert::Out;
 use crate::{calls, fields};
 use poinsot::frames as fr;
@@ -75,28 +75,20 @@ fields!(RelativeMotion {
     euler euler -> vector(terms.euler);
 });
 
+calls!(MovingFrame::new {
+    " A moving frame from its origin (m), velocity (m/s), acceleration (m/s²), angular velocity"
+    " (rad/s) and angular acceleration (rad/s²), each 3 numbers in fixed components."
+    (
+        origin: vector,
+        velocity: vector,
+        acceleration: vector,
+        angular_velocity: vector,
+        angular_acceleration: vector,
+    ) = fr::MovingFrame::new;
+});
+
 #[wasm_bindgen]
 impl MovingFrame {
-    /// A moving frame from its origin (m), velocity (m/s), acceleration (m/s²), angular velocity
-    /// (rad/s) and angular acceleration (rad/s²), each 3 numbers in fixed components.
-    #[wasm_bindgen(constructor)]
-    pub fn new(
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] origin: Numbers,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] velocity: Numbers,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] acceleration: Numbers,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] angular_velocity: Numbers,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] angular_acceleration: Numbers,
-    ) -> Out<MovingFrame> {
-        let inner = fr::MovingFrame::new(
-            vector("origin", &origin)?,
-            vector("velocity", &velocity)?,
-            vector("acceleration", &acceleration)?,
-            vector("angular_velocity", &angular_velocity)?,
-            vector("angular_acceleration", &angular_acceleration)?,
-        )?;
-        Ok(MovingFrame { inner })
-    }
-
     /// The state at time `t` (s) of the steady motion that starts from this state at t = 0:
     /// origin at constant acceleration, axes turning about the fixed axis of ω with constant ω̇
     /// (which must be parallel to ω), as `MovingFrame.at` in Python.
@@ -190,7 +182,7 @@ pub fn simulate_particle(
     #[wasm_bindgen(unchecked_param_type = "number")] mass: Number,
     #[wasm_bindgen(unchecked_param_type = "number")] stiffness: Number,
 ) -> Out<Vec<f64>> {
-    let (mass, stiffness) = (number("mass", &mass)?, number("stiffness", &stiffness)?);
+    let_numbers!(mass, stiffness);
     let particle = fr::SpringParticle::new(mass, stiffness)?;
     let (r0, v0) = state(&position, &velocity)?;
     let duration = number("duration", &duration)?;

@@ -62,7 +62,8 @@ pub fn version() -> String {
 /// (`number`: the `f64` itself, `vector`: `convert::vec_out`, 3 numbers, or the name of a binding
 /// type `Wrapper` of this crate: `Wrapper { inner }` around the core's value).
 /// `calls!(Type::new { " doc" (arg: kind, ...) = core::Type::new; })` is the JavaScript
-/// constructor `Type { inner: core::Type::new(args...)? }` in the same way. Doc lines are string
+/// constructor `Type { inner: core::Type::new(args...)? }` in the same way, the arguments passed
+/// by value. Doc lines are string
 /// literals, not `///` (wasm-bindgen writes a doc comment passed through `macro_rules!` into the
 /// TypeScript declarations as `r" ..."`). The core validates the arguments, naming them, and
 /// promises its numbers finite, so nothing else is checked here.
@@ -102,7 +103,7 @@ macro_rules! calls {
             #[wasm_bindgen(constructor)]
             pub fn new($($p)*) -> crate::convert::Out<$ty> {
                 $(let $arg = crate::args::$kind(stringify!($arg), &$arg)?;)*
-                let inner = $core($(crate::calls!(@pass $kind $arg)),*)?;
+                let inner = $core($($arg),*)?;
                 Ok($ty { inner })
             }
         }
@@ -120,26 +121,34 @@ pub(crate) use calls;
 
 /// Getters of the core's fields: `fields!(Type { " doc" jsName rust_name -> out(field.path);
 /// ... })` is one `#[wasm_bindgen] impl Type` block of `#[wasm_bindgen(getter, js_name =
-/// jsName)] pub fn rust_name(&self)` returning `self.inner.field.path` as `out` (`number`: the
-/// `f64` itself, `vector`: 3 numbers, `matrix`: 9 numbers row-major). Doc lines are string
-/// literals, as in [`calls!`].
+/// jsName)] pub fn rust_name(&self)` returning `self.inner.field.path` as `out` (`number`,
+/// `option`, `flag`: the `f64`, `Option<f64>` or `bool` itself, `text`: a copy of the `String`,
+/// `vector`: 3 numbers, `matrix`: 9 numbers row-major); `fields!(Type.member { ... })` reads `self.member.field.path` instead.
+/// Doc lines are string literals, as in `calls!`.
 macro_rules! fields {
-    ($ty:ident { $($($doc:literal)* $js:ident $name:ident -> $out:ident($($field:ident).+);)* }) => {
+    ($ty:ident { $($entries:tt)* }) => {
+        crate::fields!($ty.inner { $($entries)* });
+    };
+    ($ty:ident . $root:ident { $($($doc:literal)* $js:ident $name:ident -> $out:ident($($field:ident).+);)* }) => {
         #[wasm_bindgen::prelude::wasm_bindgen]
         impl $ty {
             $(
                 $(#[doc = $doc])*
                 #[wasm_bindgen(getter, js_name = $js)]
                 pub fn $name(&self) -> crate::fields!(@type $out) {
-                    crate::fields!(@out $out self.inner.$($field).+)
+                    crate::fields!(@out $out self.$root.$($field).+)
                 }
             )*
         }
     };
     (@type number) => { f64 };
+    (@type option) => { Option<f64> };
+    (@type flag) => { bool };
+    (@type text) => { String };
     (@type $out:ident) => { Vec<f64> };
-    (@out number $value:expr) => { $value };
     (@out vector $value:expr) => { crate::convert::vec_out(&$value) };
     (@out matrix $value:expr) => { crate::convert::mat_out(&$value) };
+    (@out text $value:expr) => { $value.clone() };
+    (@out $copied:ident $value:expr) => { $value };
 }
 pub(crate) use fields;
