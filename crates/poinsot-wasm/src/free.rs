@@ -32,22 +32,49 @@ impl FreeSymmetricTop {
         inner.angular_momentum()?;
         Ok(FreeSymmetricTop { inner })
     }
-    /// Kinetic energy (J), conserved.
-    #[wasm_bindgen(getter)]
-    pub fn energy(&self) -> Out<f64> {
-        Ok(self.inner.energy()?)
-    }
-    /// Angular momentum in space components (kg·m²/s), conserved.
-    #[wasm_bindgen(getter, js_name = angularMomentum)]
-    pub fn angular_momentum(&self) -> Out<Vec<f64>> {
-        Ok(vec_out(&self.inner.angular_momentum()?))
-    }
     /// "prolate", "oblate" or "spherical".
     #[wasm_bindgen(getter)]
     pub fn shape(&self) -> String {
         self.inner.shape().as_str().to_string()
     }
 }
+
+/// Getters of the core's values that it refuses beyond the doubles: `results!(Type { " doc"
+/// jsName rust_name: kind; ... })` is one `#[wasm_bindgen] impl Type` block of
+/// `#[wasm_bindgen(getter)] pub fn rust_name(&self) -> Out<...>`, `self.inner.rust_name()?` as
+/// `kind` ([`kind!`]). Doc lines are string
+/// literals (wasm-bindgen writes a doc comment passed through `macro_rules!` as `r" ..."`).
+macro_rules! results {
+    ($ty:ident { $($($doc:literal)* $js:ident $name:ident: $kind:ident;)* }) => {
+        #[wasm_bindgen]
+        impl $ty {
+            $(
+                $(#[doc = $doc])*
+                #[wasm_bindgen(getter, js_name = $js)]
+                pub fn $name(&self) -> Out<kind!(type $kind)> {
+                    Ok(kind!(out $kind self.inner.$name()?))
+                }
+            )*
+        }
+    };
+}
+
+/// A core value as JavaScript receives it, by kind: `kind!(type k)` is its Rust type and
+/// `kind!(out k value)` converts it (`number`: the `f64` itself, `vector`: 3 numbers).
+macro_rules! kind {
+    (type number) => { f64 };
+    (type vector) => { Vec<f64> };
+    (out number $value:expr) => { $value };
+    (out vector $value:expr) => { crate::convert::vec_out(&$value) };
+}
+pub(crate) use kind;
+
+results!(FreeSymmetricTop {
+    " Kinetic energy (J), conserved."
+    energy energy: number;
+    " Angular momentum in space components (kg·m²/s), conserved."
+    angularMomentum angular_momentum: vector;
+});
 
 at_time!(FreeSymmetricTop {
     " Body angular velocity (rad/s) at time `t` (s)."
@@ -116,21 +143,6 @@ impl FreeRigidBody {
         inner.period()?;
         Ok(FreeRigidBody { inner })
     }
-    /// Kinetic energy (J), conserved.
-    #[wasm_bindgen(getter)]
-    pub fn energy(&self) -> Out<f64> {
-        Ok(self.inner.energy()?)
-    }
-    /// Angular momentum in space components (kg·m²/s), conserved.
-    #[wasm_bindgen(getter, js_name = angularMomentum)]
-    pub fn angular_momentum(&self) -> Out<Vec<f64>> {
-        Ok(vec_out(&self.inner.angular_momentum()?))
-    }
-    /// Period (s) of ω(t); `Infinity` on the separatrix.
-    #[wasm_bindgen(getter)]
-    pub fn period(&self) -> Out<f64> {
-        Ok(self.inner.period()?)
-    }
     /// The regime of the motion (the core's name for it).
     #[wasm_bindgen(getter)]
     pub fn regime(&self) -> String {
@@ -145,6 +157,15 @@ impl FreeRigidBody {
         Ok(vec![w.x, w.y, w.z, q[0], q[1], q[2], q[3]])
     }
 }
+
+results!(FreeRigidBody {
+    " Kinetic energy (J), conserved."
+    energy energy: number;
+    " Angular momentum in space components (kg·m²/s), conserved."
+    angularMomentum angular_momentum: vector;
+    " Period (s) of ω(t); `Infinity` on the separatrix."
+    period period: number;
+});
 
 at_time!(FreeRigidBody {
     " Body angular velocity (rad/s) at time `t` (s)."

@@ -166,48 +166,6 @@ impl HeavyTop {
         self.inner.nutation_period().unwrap_or(f64::INFINITY)
     }
 
-    /// V(θ) (J, 2.110) at each θ of `theta` (rad, in [0, π]). Errors name `theta`, also where V is
-    /// infinite (a pole the axis never reaches) or beyond the largest double.
-    #[wasm_bindgen(js_name = effectivePotential)]
-    pub fn effective_potential(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] theta: Numbers,
-    ) -> Out<Vec<f64>> {
-        let theta = numbers_each("theta", &theta, 8 + 8)?;
-        each_theta(&theta, |th| self.inner.effective_potential(th))
-    }
-    /// dV/dθ (N·m, 2.113) at each θ of `theta` (rad); ±`Infinity` at a pole where V is
-    /// infinite. Errors name `theta`.
-    #[wasm_bindgen(js_name = effectivePotentialDerivative)]
-    pub fn effective_potential_derivative(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] theta: Numbers,
-    ) -> Out<Vec<f64>> {
-        let theta = numbers_each("theta", &theta, 8 + 8)?;
-        each_theta(&theta, |th| self.inner.effective_potential_derivative(th))
-    }
-
-    /// The exact Euler angles at the times `t` (s): N×3 numbers `[φ, θ, ψ]` per time (rad).
-    #[wasm_bindgen(js_name = eulerAngles)]
-    pub fn euler_angles(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] t: Numbers,
-    ) -> Out<Vec<f64>> {
-        self.angles_at(&numbers_each("t", &t, 8 + 24)?)
-    }
-    /// The Euler-angle rates at the times `t` (s): N×3 numbers `[φ̇, θ̇, ψ̇]` (rad/s).
-    #[wasm_bindgen(js_name = eulerRates)]
-    pub fn euler_rates(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] t: Numbers,
-    ) -> Out<Vec<f64>> {
-        let t = numbers_each("t", &t, 8 + 24)?;
-        let mut out = vec![0.0; 3 * t.len()];
-        self.inner
-            .euler_rates_into(&t, &mut out)
-            .map_err(times_as_t)?;
-        Ok(out)
-    }
     /// Angles and rates at one time `t` (s): `[φ, θ, ψ, φ̇, θ̇, ψ̇]`.
     pub fn state(
         &self,
@@ -217,28 +175,6 @@ impl HeavyTop {
         let (a, r) = (self.inner.euler_angles(t)?, self.inner.euler_rates(t)?);
         Ok(vec![a[0], a[1], a[2], r[0], r[1], r[2]])
     }
-    /// The attitudes R(t) = R_z(φ) R_x(θ) R_z(ψ) at the times `t`: N×9 numbers (row-major, body
-    /// to space components).
-    pub fn attitude(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] t: Numbers,
-    ) -> Out<Vec<f64>> {
-        self.attitudes_at(&numbers_each("t", &t, BYTES_PER_ATTITUDE)?)
-    }
-    /// The symmetry axis (body axis 3, a unit vector in space components) at the times `t`: N×3
-    /// numbers — the points that trace waves, loops or cusps on the unit sphere.
-    #[wasm_bindgen(js_name = symmetryAxis)]
-    pub fn symmetry_axis(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] t: Numbers,
-    ) -> Out<Vec<f64>> {
-        let mats = self.attitudes_at(&numbers_each("t", &t, BYTES_PER_ATTITUDE + 24)?)?;
-        Ok(mats
-            .chunks_exact(9)
-            .flat_map(|r| [r[2], r[5], r[8]])
-            .collect())
-    }
-
     /// Both steady-precession rates at `theta0` (rad) and spin `omega3` (rad/s), 2.114–2.121.
     /// Errors name `omega3` below the minimum spin 2.119 (the message gives it).
     #[wasm_bindgen(js_name = steadyPrecession)]
@@ -319,6 +255,30 @@ impl HeavyTop {
             .map_err(times_as_t)?;
         Ok(out)
     }
+    /// The Euler-angle rates at the times `t` (N×3).
+    fn rates_at(&self, t: &[f64]) -> Out<Vec<f64>> {
+        let mut out = vec![0.0; 3 * t.len()];
+        self.inner
+            .euler_rates_into(t, &mut out)
+            .map_err(times_as_t)?;
+        Ok(out)
+    }
+    /// The symmetry axes at the times `t` (N×3): the third columns of the attitudes.
+    fn axes_at(&self, t: &[f64]) -> Out<Vec<f64>> {
+        let mats = self.attitudes_at(t)?;
+        Ok(mats
+            .chunks_exact(9)
+            .flat_map(|r| [r[2], r[5], r[8]])
+            .collect())
+    }
+    /// V(θ) (J) at each angle of `theta` (rad).
+    fn potentials_at(&self, theta: &[f64]) -> Out<Vec<f64>> {
+        each_theta(theta, |th| self.inner.effective_potential(th))
+    }
+    /// dV/dθ (N·m) at each angle of `theta` (rad).
+    fn potential_derivatives_at(&self, theta: &[f64]) -> Out<Vec<f64>> {
+        each_theta(theta, |th| self.inner.effective_potential_derivative(th))
+    }
     /// The attitude matrices at the times `t` (N×9, row-major).
     fn attitudes_at(&self, t: &[f64]) -> Out<Vec<f64>> {
         let angles = self.angles_at(t)?;
@@ -327,6 +287,50 @@ impl HeavyTop {
         Ok(out)
     }
 }
+
+/// Methods over a batch of numbers: `batches!(Type { " doc" jsName rust_name(arg, bytes) =>
+/// method; ... })` is one `#[wasm_bindgen] impl Type` block of `pub fn rust_name(&self, arg)
+/// -> Out<Vec<f64>>` that reads `arg` (any array-like of numbers, named in errors, within the
+/// memory budget at `bytes` per number: `args::numbers_each`) and returns `self.method(&arg)`.
+/// Doc lines are string literals (wasm-bindgen writes a doc comment passed through
+/// `macro_rules!` as `r" ..."`).
+macro_rules! batches {
+    ($ty:ident { $($($doc:literal)* $js:ident $name:ident($arg:ident, $bytes:expr) => $method:ident;)* }) => {
+        #[wasm_bindgen]
+        impl $ty {
+            $(
+                $(#[doc = $doc])*
+                #[wasm_bindgen(js_name = $js)]
+                pub fn $name(
+                    &self,
+                    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] $arg: Numbers,
+                ) -> Out<Vec<f64>> {
+                    self.$method(&numbers_each(stringify!($arg), &$arg, $bytes)?)
+                }
+            )*
+        }
+    };
+}
+
+batches!(HeavyTop {
+    " V(θ) (J, 2.110) at each θ of `theta` (rad, in [0, π]). Errors name `theta`, also where V is"
+    " infinite (a pole the axis never reaches) or beyond the largest double."
+    effectivePotential effective_potential(theta, 8 + 8) => potentials_at;
+    " dV/dθ (N·m, 2.113) at each θ of `theta` (rad); ±`Infinity` at a pole where V is"
+    " infinite. Errors name `theta`."
+    effectivePotentialDerivative effective_potential_derivative(theta, 8 + 8)
+        => potential_derivatives_at;
+    " The exact Euler angles at the times `t` (s): N×3 numbers `[φ, θ, ψ]` per time (rad)."
+    eulerAngles euler_angles(t, 8 + 24) => angles_at;
+    " The Euler-angle rates at the times `t` (s): N×3 numbers `[φ̇, θ̇, ψ̇]` (rad/s)."
+    eulerRates euler_rates(t, 8 + 24) => rates_at;
+    " The attitudes R(t) = R_z(φ) R_x(θ) R_z(ψ) at the times `t`: N×9 numbers (row-major, body"
+    " to space components)."
+    attitude attitude(t, BYTES_PER_ATTITUDE) => attitudes_at;
+    " The symmetry axis (body axis 3, a unit vector in space components) at the times `t`: N×3"
+    " numbers — the points that trace waves, loops or cusps on the unit sphere."
+    symmetryAxis symmetry_axis(t, BYTES_PER_ATTITUDE + 24) => axes_at;
+});
 
 /// `f` at each angle of `theta` (rad); the core names `theta` where V or dV/dθ is not finite.
 fn each_theta(theta: &[f64], f: impl Fn(f64) -> poinsot::Result<f64>) -> Out<Vec<f64>> {

@@ -4,6 +4,7 @@
 
 use crate::args::{let_numbers, matrix, numbers, triple, vector, Number, Numbers};
 use crate::convert::{getters, mat3, mat_out, vec_out, Failure, Out};
+use crate::free::kind;
 use poinsot::inertia::{self as inr, MassProperties, DEFAULT_KIND_RTOL};
 use wasm_bindgen::prelude::wasm_bindgen;
 
@@ -182,32 +183,39 @@ impl RigidBody {
             &self.inner.inertia_about(&vector("point", &point)?)?,
         ))
     }
-    /// L = I·ω (kg·m²/s) about the centre of mass for `omega` (rad/s).
-    #[wasm_bindgen(js_name = angularMomentum)]
-    pub fn angular_momentum(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] omega: Numbers,
-    ) -> Out<Vec<f64>> {
-        let omega = vector("omega", &omega)?;
-        Ok(vec_out(&self.inner.angular_momentum(&omega, None)?))
-    }
-    /// T = ½ ω·I·ω (J) about the centre of mass.
-    #[wasm_bindgen(js_name = kineticEnergy)]
-    pub fn kinetic_energy(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] omega: Numbers,
-    ) -> Out<f64> {
-        Ok(self.inner.kinetic_energy(&vector("omega", &omega)?, None)?)
-    }
-    /// ω × L (N·m): the torque that keeps the body turning at constant ω.
-    #[wasm_bindgen(js_name = holdingTorque)]
-    pub fn holding_torque(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] omega: Numbers,
-    ) -> Out<Vec<f64>> {
-        let omega = vector("omega", &omega)?;
-        Ok(vec_out(&self.inner.holding_torque(&omega, None)?))
-    }
+}
+
+/// The body's quantities at one angular velocity `omega` (rad/s, 3 numbers), about the centre
+/// of mass: `at_omega!(" doc" jsName rust_name: kind; ...)` is one `#[wasm_bindgen] impl
+/// RigidBody` block of `pub fn rust_name(&self, omega)`, the core's
+/// `rust_name(&omega, None)?` as `kind` ([`crate::free::kind`]; doc lines as string literals,
+/// see [`crate::convert::getters`]).
+macro_rules! at_omega {
+    ($($($doc:literal)* $js:ident $name:ident: $kind:ident;)+) => {
+        #[wasm_bindgen]
+        impl RigidBody {
+            $(
+                $(#[doc = $doc])*
+                #[wasm_bindgen(js_name = $js)]
+                pub fn $name(
+                    &self,
+                    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] omega: Numbers,
+                ) -> Out<kind!(type $kind)> {
+                    let value = self.inner.$name(&vector("omega", &omega)?, None)?;
+                    Ok(kind!(out $kind value))
+                }
+            )+
+        }
+    };
+}
+
+at_omega! {
+    " L = I·ω (kg·m²/s) about the centre of mass for `omega` (rad/s)."
+    angularMomentum angular_momentum: vector;
+    " T = ½ ω·I·ω (J) about the centre of mass."
+    kineticEnergy kinetic_energy: number;
+    " ω × L (N·m): the torque that keeps the body turning at constant ω."
+    holdingTorque holding_torque: vector;
 }
 
 getters!(RigidBody {
