@@ -218,6 +218,16 @@ fields!(FoucaultRun.unit_rate {
     amplitudeDeparture amplitude_departure -> option(amplitude_departure);
 });
 
+fields!(fn FoucaultRun {
+    " The sample times (s)."
+    times times -> numbers(run.t);
+    " The times of the turning points of the swing (s)."
+    turnTimes turn_times -> numbers(run.turn_times);
+    " The bob's direction at each turning point, counterclockwise from east seen from above"
+    " (rad)."
+    turnAngles turn_angles -> numbers(run.turn_angles);
+});
+
 #[wasm_bindgen]
 impl FoucaultRun {
     /// The length of the run (s).
@@ -243,10 +253,6 @@ impl FoucaultRun {
     pub fn unit_rate_tolerance() -> f64 {
         ea::UNIT_RATE_TOLERANCE
     }
-    /// The sample times (s).
-    pub fn times(&self) -> Vec<f64> {
-        self.inner.run.t.clone()
-    }
     /// The bob's positions at the sample times, `[x0, y0, z0, x1, ...]` (ENU, m, origin at the
     /// point of suspension).
     pub fn positions(&self) -> Vec<f64> {
@@ -256,17 +262,6 @@ impl FoucaultRun {
             .iter()
             .flat_map(|s| [s[0], s[1], s[2]])
             .collect()
-    }
-    /// The times of the turning points of the swing (s).
-    #[wasm_bindgen(js_name = turnTimes)]
-    pub fn turn_times(&self) -> Vec<f64> {
-        self.inner.run.turn_times.clone()
-    }
-    /// The bob's direction at each turning point, counterclockwise from east seen from above
-    /// (rad).
-    #[wasm_bindgen(js_name = turnAngles)]
-    pub fn turn_angles(&self) -> Vec<f64> {
-        self.inner.run.turn_angles.clone()
     }
     /// The bob's state `[x, y, z, vx, vy, vz]` at time `t` (s, in [0, duration]): the sample at
     /// `t`, or the core's integration continued from the last sample before `t`.
@@ -296,6 +291,11 @@ pub struct LowFlow {
     inner: ea::LowFlow,
 }
 
+fields!(fn LowFlow {
+    " The sample times (s)."
+    times times -> numbers(run.t);
+});
+
 #[wasm_bindgen]
 impl LowFlow {
     /// The length of the run (s).
@@ -320,10 +320,6 @@ impl LowFlow {
     #[wasm_bindgen(getter)]
     pub fn sense(&self) -> String {
         self.inner.sense.name().into()
-    }
-    /// The sample times (s).
-    pub fn times(&self) -> Vec<f64> {
-        self.inner.run.t.clone()
     }
     /// The track of parcel `index`: `[x0, y0, x1, y1, ...]` (m, east and north) at the samples.
     pub fn track(

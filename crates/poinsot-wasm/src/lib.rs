@@ -122,23 +122,32 @@ pub(crate) use calls;
 /// Getters of the core's fields: `fields!(Type { " doc" jsName rust_name -> out(field.path);
 /// ... })` is one `#[wasm_bindgen] impl Type` block of `#[wasm_bindgen(getter, js_name =
 /// jsName)] pub fn rust_name(&self)` returning `self.inner.field.path` as `out` (`number`,
-/// `option`, `flag`: the `f64`, `Option<f64>` or `bool` itself, `text`: a copy of the `String`,
-/// `vector`: 3 numbers, `matrix`: 9 numbers row-major); `fields!(Type.member { ... })` reads `self.member.field.path` instead.
+/// `option`, `flag`: the `f64`, `Option<f64>` or `bool` itself, `text`, `numbers`: a copy of the
+/// `String` or `Vec<f64>`, `vector`: 3 numbers, `matrix`: 9 numbers row-major);
+/// `fields!(Type.member { ... })` reads `self.member.field.path` instead, and `fields!(fn Type {
+/// ... })` makes methods `rust_name()` rather than getters.
 /// Doc lines are string literals, as in `calls!`.
 macro_rules! fields {
-    ($ty:ident { $($entries:tt)* }) => {
-        crate::fields!($ty.inner { $($entries)* });
+    (fn $ty:ident { $($entries:tt)* }) => {
+        crate::fields!(@entries [] $ty.inner { $($entries)* });
     };
-    ($ty:ident . $root:ident { $($($doc:literal)* $js:ident $name:ident -> $out:ident($($field:ident).+);)* }) => {
+    ($ty:ident { $($entries:tt)* }) => {
+        crate::fields!(@entries [getter,] $ty.inner { $($entries)* });
+    };
+    ($ty:ident . $root:ident { $($entries:tt)* }) => {
+        crate::fields!(@entries [getter,] $ty.$root { $($entries)* });
+    };
+    (@entries $attr:tt $ty:ident . $root:ident { $($($doc:literal)* $js:ident $name:ident -> $out:ident($($field:ident).+);)* }) => {
+        $(crate::fields!(@one $attr $ty [$($doc)*] $js $name $out [$root $(.$field)+]);)*
+    };
+    (@one [$($attr:tt)*] $ty:ident [$($doc:literal)*] $js:ident $name:ident $out:ident [$($path:tt)+]) => {
         #[wasm_bindgen::prelude::wasm_bindgen]
         impl $ty {
-            $(
-                $(#[doc = $doc])*
-                #[wasm_bindgen(getter, js_name = $js)]
-                pub fn $name(&self) -> crate::fields!(@type $out) {
-                    crate::fields!(@out $out self.$root.$($field).+)
-                }
-            )*
+            $(#[doc = $doc])*
+            #[wasm_bindgen($($attr)* js_name = $js)]
+            pub fn $name(&self) -> crate::fields!(@type $out) {
+                crate::fields!(@out $out self.$($path)+)
+            }
         }
     };
     (@type number) => { f64 };
@@ -149,6 +158,7 @@ macro_rules! fields {
     (@out vector $value:expr) => { crate::convert::vec_out(&$value) };
     (@out matrix $value:expr) => { crate::convert::mat_out(&$value) };
     (@out text $value:expr) => { $value.clone() };
+    (@out numbers $value:expr) => { $value.clone() };
     (@out $copied:ident $value:expr) => { $value };
 }
 pub(crate) use fields;
