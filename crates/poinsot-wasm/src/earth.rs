@@ -538,6 +538,32 @@ mod tests {
     }
 
     #[test]
+    fn methods_made_by_calls_name_each_argument() {
+        // The methods `calls!` writes convert each argument under its own name, in order, and
+        // the core names it when refused.
+        let e = earth();
+        let nan = f64::NAN;
+        refused(e.eastward_deflection(nan, 0.5), "height");
+        refused(e.southward_deflection(100.0, nan), "latitude");
+        refused(e.fall_time(-1.0), "height");
+        for refusal in [
+            e.foucault_rate(nan),
+            e.inertial_period(nan),
+            e.coriolis_parameter(nan),
+        ] {
+            refused(refusal, "latitude");
+        }
+        refused(e.omega_enu(nan), "latitude");
+        refused(e.coriolis_acceleration(nan, vec![0.0; 3]), "latitude");
+        refused(
+            e.coriolis_acceleration(0.5, vec![0.0; 2]),
+            "velocity_enu: must hold 3",
+        );
+        refused(Earth::new(nan, 1.0, 1.0), "rotation_rate");
+        refused(Earth::new(1.0, 1.0, -1.0), "g");
+    }
+
+    #[test]
     fn sample_times_are_the_cores() {
         let run = earth()
             .foucault(0.8, 10.0, 1.0, 0.0, 120.0, 1201.0)

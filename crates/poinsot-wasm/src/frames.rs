@@ -232,6 +232,27 @@ mod tests {
             .starts_with("position"));
     }
 
+    #[test]
+    fn the_constructor_made_by_calls_names_each_vector() {
+        let three = || vec![0.0; 3];
+        let names = [
+            "origin",
+            "velocity",
+            "acceleration",
+            "angular_velocity",
+            "angular_acceleration",
+        ];
+        for (i, name) in names.into_iter().enumerate() {
+            let mut v: Vec<Vec<f64>> = (0..5).map(|_| three()).collect();
+            v[i] = vec![0.0; 2];
+            let [a, b, c, d, f] = <[Vec<f64>; 5]>::try_from(v).unwrap();
+            refused(
+                MovingFrame::new(a, b, c, d, f),
+                &format!("{name}: must hold 3"),
+            );
+        }
+    }
+
     fn table(rate: f64, rate_dot: f64) -> MovingFrame {
         MovingFrame::new(
             vec![0.0; 3],
