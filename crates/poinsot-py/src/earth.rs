@@ -51,35 +51,58 @@ macro_rules! getters {
     };
 }
 
-/// A body dropped from rest (the core's `Fall`, held), sampled: landing time (s), point (m,
-/// ENU), the closed forms 2.42 and second order (m), and the samples t (N,), position and
-/// velocity (N, 3).
-#[pyclass(module = "poinsot._core", name = "FallCore", frozen)]
-pub struct PyFall {
-    fall: ea::Fall,
-    #[pyo3(get)]
-    t: Py<PyArray1<f64>>,
-    #[pyo3(get)]
-    position: Py<PyArray2<f64>>,
-    #[pyo3(get)]
-    velocity: Py<PyArray2<f64>>,
+/// A run of the core that ends at a landing (`Fall`, `Flight`: `time` (s) and `solution`), held
+/// with its samples: `landing_run!(doc Class("PythonName", CoreType) { getter, … })` is the
+/// class, the `#[getter]`s of the core run's listed fields and `Class::sampled`.
+macro_rules! landing_run {
+    ($(#[$doc:meta])* $class:ident($name:literal, $run:ty) { $($field:ident),+ }) => {
+        $(#[$doc])*
+        #[pyclass(module = "poinsot._core", name = $name, frozen)]
+        pub struct $class {
+            run: $run,
+            #[pyo3(get)]
+            t: Py<PyArray1<f64>>,
+            #[pyo3(get)]
+            position: Py<PyArray2<f64>>,
+            #[pyo3(get)]
+            velocity: Py<PyArray2<f64>>,
+        }
+
+        getters!($class.run: f64 { $($field),+ });
+
+        impl $class {
+            /// The run `make` makes (without the GIL), sampled at `samples` even times from
+            /// release to landing.
+            fn sampled(
+                py: Python<'_>,
+                samples: usize,
+                make: impl FnOnce() -> poinsot::Result<$run> + Send,
+            ) -> PyResult<Self> {
+                let (made, t, states) = run(py, None, || {
+                    let made = make()?;
+                    let t = grid(made.time, samples)?;
+                    let states = made.solution.sample(&t)?;
+                    Ok((made, t, states))
+                })?;
+                let (position, velocity) = split(py, &states)?;
+                let t = values(py, t);
+                Ok(Self { run: made, t, position, velocity })
+            }
+        }
+    };
 }
 
-getters!(PyFall.fall: f64 { time, east, north, first_order_east, second_order_south });
+landing_run!(
+    /// A body dropped from rest (the core's `Fall`, held), sampled: landing time (s), point (m,
+    /// ENU), the closed forms 2.42 and second order (m), and the samples t (N,), position and
+    /// velocity (N, 3).
+    PyFall("FallCore", ea::Fall) { time, east, north, first_order_east, second_order_south }
+);
 
-/// A projectile's flight (the core's `Flight`, held), sampled as [`PyFall`].
-#[pyclass(module = "poinsot._core", name = "FlightCore", frozen)]
-pub struct PyFlight {
-    flight: ea::Flight,
-    #[pyo3(get)]
-    t: Py<PyArray1<f64>>,
-    #[pyo3(get)]
-    position: Py<PyArray2<f64>>,
-    #[pyo3(get)]
-    velocity: Py<PyArray2<f64>>,
-}
-
-getters!(PyFlight.flight: f64 { time, east, north, range, downrange, drift });
+landing_run!(
+    /// A projectile's flight (the core's `Flight`, held), sampled as [`PyFall`].
+    PyFlight("FlightCore", ea::Flight) { time, east, north, range, downrange, drift }
+);
 
 /// A Foucault run (the core's `FoucaultSwing`): samples, turning points, the measurement of the
 /// swing plane and whether the unit's −ω sin λ describes it (`FoucaultSwing::unit_rate`).
@@ -445,20 +468,7 @@ earth_export! {
         samples: usize,
     ) -> PyResult<PyFall> {
         let m = model.inner;
-        let (fall, t, states) = run(py, None, || {
-            let f = self.inner.drop(height, latitude, &m)?;
-            let t = grid(f.time, samples)?;
-            let states = f.solution.sample(&t)?;
-            Ok((f, t, states))
-        })?;
-        let (position, velocity) = split(py, &states)?;
-        let t = values(py, t);
-        Ok(PyFall {
-            fall,
-            t,
-            position,
-            velocity,
-        })
+        PyFall::sampled(py, samples, || self.inner.drop(height, latitude, &m))
     }
 
     /// A projectile's flight (`Earth::projectile`), sampled as [`PyEarth::drop`].
@@ -475,21 +485,9 @@ earth_export! {
         samples: usize,
     ) -> PyResult<PyFlight> {
         let m = model.inner;
-        let (flight, t, states) = run(py, None, || {
-            let f = self
-                .inner
-                .projectile(speed, elevation, azimuth, latitude, height, &m)?;
-            let t = grid(f.time, samples)?;
-            let states = f.solution.sample(&t)?;
-            Ok((f, t, states))
-        })?;
-        let (position, velocity) = split(py, &states)?;
-        let t = values(py, t);
-        Ok(PyFlight {
-            flight,
-            t,
-            position,
-            velocity,
+        PyFlight::sampled(py, samples, || {
+            self.inner
+                .projectile(speed, elevation, azimuth, latitude, height, &m)
         })
     }
 

@@ -59,16 +59,32 @@ fn transform_rows<'py>(
         rows_view::<3>("velocity", velocity)?,
         rows_view::<3>("acceleration", acceleration)?,
     );
-    let n = r.len();
-    if v.len() != n || a.len() != n {
-        return Err(invalid(
-            "velocity",
-            "position, velocity and acceleration must have the same number of rows",
-        ));
+    let n = same_rows(
+        "position, velocity and acceleration",
+        &[r.len(), v.len(), a.len()],
+    )?;
+    per_row(py, n, |i| transform(&v3(&r[i]), &v3(&v[i]), &v3(&a[i])))
+}
+
+/// The common number of rows of the arrays `names` (`lens`, the first of them listed first),
+/// else an error naming `velocity` (one of them in each caller).
+fn same_rows(names: &str, lens: &[usize]) -> PyResult<usize> {
+    let n = lens[0];
+    if lens.iter().any(|&l| l != n) {
+        let message = format!("{names} must have the same number of rows");
+        return Err(invalid("velocity", message));
     }
-    let each = run(py, None, || {
-        poinsot::control::try_map_n(n, |i| transform(&v3(&r[i]), &v3(&v[i]), &v3(&a[i])))
-    })?;
+    Ok(n)
+}
+
+/// `f` at each row index 0..n (the GIL released, Ctrl-C polled every chunk of rows: [`run`],
+/// [`poinsot::control::try_map_n`]), its K outputs as K (N, 3) arrays ([`columns`]).
+fn per_row<'py, const K: usize>(
+    py: Python<'py>,
+    n: usize,
+    f: impl Fn(usize) -> poinsot::Result<[Vec3; K]> + Send,
+) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
+    let each = run(py, None, || poinsot::control::try_map_n(n, f))?;
     Ok(columns(py, &each))
 }
 
@@ -138,20 +154,11 @@ fn frame_fictitious_forces<'py>(
         rows_view::<3>("position", &position)?,
         rows_view::<3>("velocity", &velocity)?,
     );
-    let n = r.len();
-    if v.len() != n || m.len() != n {
-        return Err(invalid(
-            "velocity",
-            "mass, position and velocity must have the same number of rows",
-        ));
-    }
-    let each = run(py, None, || {
-        poinsot::control::try_map_n(n, |i| {
-            let ff = f.fictitious_forces(m[i], &v3(&r[i]), &v3(&v[i]))?;
-            Ok([ff.translational, ff.coriolis, ff.centrifugal, ff.euler])
-        })
-    })?;
-    Ok(columns(py, &each))
+    let n = same_rows("mass, position and velocity", &[m.len(), r.len(), v.len()])?;
+    per_row(py, n, |i| {
+        let ff = f.fictitious_forces(m[i], &v3(&r[i]), &v3(&v[i]))?;
+        Ok([ff.translational, ff.coriolis, ff.centrifugal, ff.euler])
+    })
 }
 
 /// A frame motion that asks a Python callable `t -> (15 floats, 3×3 nested attitude)`; the

@@ -24,15 +24,26 @@ fn wrap(r: poinsot::Result<MassProperties>) -> PyResult<PyMassProperties> {
     Ok(PyMassProperties { inner: r.py()? })
 }
 
-/// `#[export] impl PyMassProperties { … }`: the methods written out after the list, and one
-/// method per quantity of the core's `MassProperties` at each ω of (N, 3) angular velocities,
-/// named after it (`per_omega { name -> output; … }`, through `per_omega`, with the optional
-/// reference point `about`). pyo3 takes one `#[pymethods]` block per class, so the generated
+/// `#[export] impl PyMassProperties { … }`: the methods written out after the lists, the
+/// standard solids of scalar dimensions (`solids { name(dimension, …); … }`: the static method
+/// `name(mass, dimension, …)` calling the core's `inertia::name`), and one method per quantity
+/// of the core's `MassProperties` at each ω of (N, 3) angular velocities, named after it
+/// (`per_omega { name -> output; … }`, through `per_omega`, with the optional reference point
+/// `about`). pyo3 takes one `#[pymethods]` block per class, so the generated
 /// methods go into that block.
 macro_rules! mass_properties_export {
-    (per_omega { $($(#[$doc:meta])* $name:ident -> $out:ty;)* } $($methods:tt)*) => {
+    (
+        solids { $($(#[$sdoc:meta])* $solid:ident($($dim:ident),+);)* }
+        per_omega { $($(#[$doc:meta])* $name:ident -> $out:ty;)* }
+        $($methods:tt)*
+    ) => {
         #[export]
         impl PyMassProperties {
+            $($(#[$sdoc])*
+            #[staticmethod]
+            fn $solid(mass: f64, $($dim: f64),+) -> PyResult<Self> {
+                wrap(inertia::$solid(mass, $($dim),+))
+            })*
             $($(#[$doc])*
             #[pyo3(signature = (omega, about=None))]
             fn $name(
@@ -49,6 +60,22 @@ macro_rules! mass_properties_export {
 }
 
 mass_properties_export! {
+    solids {
+        /// Solid sphere.
+        solid_sphere(radius);
+        /// Thin spherical shell.
+        spherical_shell(radius);
+        /// Solid cylinder along z.
+        solid_cylinder(radius, height);
+        /// Solid cone, apex at the origin, axis +z.
+        solid_cone(radius, height);
+        /// Thin rod along z.
+        thin_rod(length);
+        /// Thin disk in the xy plane.
+        thin_disk(radius);
+        /// Thin ring in the xy plane.
+        thin_ring(radius);
+    }
     per_omega {
         /// L = I·ω (kg·m²/s) for each ω of `omega` (rad/s, (N, 3)), about `about` (m) or the
         /// centre of mass → (N, 3).
@@ -105,30 +132,6 @@ mass_properties_export! {
         Ok(Self { inner })
     }
 
-    /// Solid sphere.
-    #[staticmethod]
-    fn solid_sphere(mass: f64, radius: f64) -> PyResult<Self> {
-        wrap(inertia::solid_sphere(mass, radius))
-    }
-
-    /// Thin spherical shell.
-    #[staticmethod]
-    fn spherical_shell(mass: f64, radius: f64) -> PyResult<Self> {
-        wrap(inertia::spherical_shell(mass, radius))
-    }
-
-    /// Solid cylinder along z.
-    #[staticmethod]
-    fn solid_cylinder(mass: f64, radius: f64, height: f64) -> PyResult<Self> {
-        wrap(inertia::solid_cylinder(mass, radius, height))
-    }
-
-    /// Solid cone, apex at the origin, axis +z.
-    #[staticmethod]
-    fn solid_cone(mass: f64, radius: f64, height: f64) -> PyResult<Self> {
-        wrap(inertia::solid_cone(mass, radius, height))
-    }
-
     /// Cuboid with sides (3,) along x, y, z.
     #[staticmethod]
     fn cuboid(mass: f64, sides: PyReadonlyArray1<'_, f64>) -> PyResult<Self> {
@@ -147,24 +150,6 @@ mass_properties_export! {
     #[staticmethod]
     fn ellipsoid(mass: f64, semi_axes: PyReadonlyArray1<'_, f64>) -> PyResult<Self> {
         wrap(inertia::ellipsoid(mass, vec3("semi_axes", &semi_axes)?))
-    }
-
-    /// Thin rod along z.
-    #[staticmethod]
-    fn thin_rod(mass: f64, length: f64) -> PyResult<Self> {
-        wrap(inertia::thin_rod(mass, length))
-    }
-
-    /// Thin disk in the xy plane.
-    #[staticmethod]
-    fn thin_disk(mass: f64, radius: f64) -> PyResult<Self> {
-        wrap(inertia::thin_disk(mass, radius))
-    }
-
-    /// Thin ring in the xy plane.
-    #[staticmethod]
-    fn thin_ring(mass: f64, radius: f64) -> PyResult<Self> {
-        wrap(inertia::thin_ring(mass, radius))
     }
 
     /// Closed triangle mesh: vertices (m, (N, 3) float64), faces ((M, 3) int64), density
