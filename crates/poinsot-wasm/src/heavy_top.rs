@@ -63,57 +63,65 @@ fn times_as_t(e: poinsot::Error) -> Failure {
     Failure::from(e)
 }
 
+/// The constructors from the state at t = 0, which differ only in their last argument (ψ̇ or
+/// ω₃): `from_state!(" doc" #[how] rust_name(last) => make; ...)` is one `#[wasm_bindgen] impl
+/// HeavyTop` block of `pub fn rust_name(i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, last)`
+/// (JavaScript numbers) returning `make(i1, i3, mgl, [phi, …, last])`, its errors attributed to
+/// those arguments (doc lines as string literals, see [`crate::convert::getters`]).
+macro_rules! from_state {
+    ($($($doc:literal)* #[$how:meta] $name:ident($last:ident) => $make:expr;)*) => {
+        #[wasm_bindgen]
+        impl HeavyTop {
+            $(
+                $(#[doc = $doc])*
+                #[$how]
+                #[allow(clippy::too_many_arguments)]
+                pub fn $name(
+                    #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
+                    #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
+                    #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
+                    #[wasm_bindgen(unchecked_param_type = "number")] phi: Number,
+                    #[wasm_bindgen(unchecked_param_type = "number")] theta: Number,
+                    #[wasm_bindgen(unchecked_param_type = "number")] psi: Number,
+                    #[wasm_bindgen(unchecked_param_type = "number")] phi_dot: Number,
+                    #[wasm_bindgen(unchecked_param_type = "number")] theta_dot: Number,
+                    #[wasm_bindgen(unchecked_param_type = "number")] $last: Number,
+                ) -> Out<HeavyTop> {
+                    let_numbers!(i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, $last);
+                    let make: fn(f64, f64, f64, [f64; 6]) -> poinsot::Result<an::HeavyTop> = $make;
+                    let state = [phi, theta, psi, phi_dot, theta_dot, $last];
+                    let arguments =
+                        concat!("i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, ", stringify!($last));
+                    let inner = make(i1, i3, mgl, state).map_err(attributed(arguments))?;
+                    Ok(HeavyTop { inner })
+                }
+            )*
+        }
+    };
+}
+
+from_state! {
+    " The top with moments `i1` (about a transverse axis through the pivot) and `i3` (about the"
+    " symmetry axis, kg·m²) and `mgl` = m g l (N·m), started at t = 0 from the Euler angles"
+    " `phi`, `theta`, `psi` (rad) and their rates `phi_dot`, `theta_dot`, `psi_dot` (rad/s) — the"
+    " core's order, as `HeavyTopCore.from_state` in Python. Errors name `I1`, `I3`, `mgl`, `theta`"
+    " (in [0, π]), an angle or a rate."
+    #[wasm_bindgen(constructor)]
+    new(psi_dot) => |i1, i3, mgl, [phi, theta, psi, phi_dot, theta_dot, psi_dot]| {
+        let state = an::EulerState::new(phi, theta, psi, phi_dot, theta_dot, psi_dot);
+        an::HeavyTop::new(i1, i3, mgl, state)
+    };
+    " The top started from the Euler angles `phi`, `theta`, `psi`, the rates `phi_dot`,"
+    " `theta_dot` and the spin `omega3` (rad/s) given instead of ψ̇ (ψ̇ = ω₃ − φ̇ cos θ, 2.99; the"
+    " core's order, as `HeavyTop.from_spin` in Python)."
+    #[wasm_bindgen(js_name = fromSpin)]
+    from_spin(omega3) => |i1, i3, mgl, [phi, theta, psi, phi_dot, theta_dot, omega3]| {
+        an::HeavyTop::with_spin(i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, omega3)
+    };
+}
+
 #[wasm_bindgen]
 impl HeavyTop {
-    /// The top with moments `i1` (about a transverse axis through the pivot) and `i3` (about the
-    /// symmetry axis, kg·m²) and `mgl` = m g l (N·m), started at t = 0 from the Euler angles
-    /// `phi`, `theta`, `psi` (rad) and their rates `phi_dot`, `theta_dot`, `psi_dot` (rad/s) — the
-    /// core's order, as `HeavyTopCore.from_state` in Python. Errors name `I1`, `I3`, `mgl`, `theta`
-    /// (in [0, π]), an angle or a rate.
-    #[wasm_bindgen(constructor)]
-    #[allow(clippy::too_many_arguments)]
-    pub fn new(
-        #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] phi: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] theta: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] psi: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] phi_dot: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] theta_dot: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] psi_dot: Number,
-    ) -> Out<HeavyTop> {
-        let_numbers!(i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, psi_dot);
-        let state = an::EulerState::new(phi, theta, psi, phi_dot, theta_dot, psi_dot);
-        const ARGUMENTS: &str = "i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, psi_dot";
-        let inner = an::HeavyTop::new(i1, i3, mgl, state).map_err(attributed(ARGUMENTS))?;
-        Ok(HeavyTop { inner })
-    }
-
-    /// The top started from the Euler angles `phi`, `theta`, `psi`, the rates `phi_dot`,
-    /// `theta_dot` and the spin `omega3` (rad/s) given instead of ψ̇ (ψ̇ = ω₃ − φ̇ cos θ, 2.99; the
-    /// core's order, as `HeavyTop.from_spin` in Python).
-    #[wasm_bindgen(js_name = fromSpin)]
-    #[allow(clippy::too_many_arguments)]
-    pub fn from_spin(
-        #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] phi: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] theta: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] psi: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] phi_dot: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] theta_dot: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] omega3: Number,
-    ) -> Out<HeavyTop> {
-        let_numbers!(i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, omega3);
-        const ARGUMENTS: &str = "i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, omega3";
-        let inner =
-            an::HeavyTop::with_spin(i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, omega3)
-                .map_err(attributed(ARGUMENTS))?;
-        Ok(HeavyTop { inner })
-    }
-
     /// The top with the constants p_φ, p_ψ (kg·m²/s) and E (J); t = 0 at the upper turning point.
     #[wasm_bindgen(js_name = fromConstants)]
     pub fn from_constants(
