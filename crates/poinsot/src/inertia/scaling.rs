@@ -10,49 +10,9 @@
 use crate::error::{Error, Result};
 use crate::{Mat3, Vec3};
 
-/// `2^k` for `k` in `[-1022, 1023]`, exactly.
-#[inline]
-fn pow2(k: i32) -> f64 {
-    debug_assert!((-1022..=1023).contains(&k));
-    f64::from_bits(((k + 1023) as u64) << 52)
-}
-
-/// `x · 2^k`, with at most one rounding (in the subnormal range); `±inf` on overflow.
-pub(crate) fn ldexp(mut x: f64, mut k: i32) -> f64 {
-    while k > 1023 {
-        x *= pow2(1023);
-        k -= 1023;
-        if !x.is_finite() || x == 0.0 {
-            return x;
-        }
-    }
-    while k < -1022 {
-        // Keep the intermediate normal so that only the last step rounds.
-        let step = (k + 1022).max(-1022);
-        x *= pow2(step);
-        k -= step;
-        if x == 0.0 {
-            return x;
-        }
-    }
-    x * pow2(k)
-}
-
-/// The binary exponent of `x`: `|x|` in `[2^e, 2^(e+1))`; `0` for zero and non-finite `x`.
-pub(crate) fn exponent(x: f64) -> i32 {
-    if x == 0.0 || !x.is_finite() {
-        return 0;
-    }
-    let bits = x.abs().to_bits();
-    let field = (bits >> 52) as i32;
-    if field == 0 {
-        // Subnormal: the position of the leading bit of the mantissa.
-        let mantissa = bits & ((1u64 << 52) - 1);
-        63 - mantissa.leading_zeros() as i32 - 1074
-    } else {
-        field - 1023
-    }
-}
+/// The crate's one exact scaling by powers of two (`special::fp`: `ldexp` rounds once, only in
+/// the subnormal range; `exponent` is `0` for zero and non-finite numbers).
+pub(crate) use crate::special::fp::{exponent, ldexp};
 
 /// `(x · 2^-e, e)` with `e = exponent(x)`: a mantissa in `[1, 2)` (or zero) and its exponent.
 pub(crate) fn split(x: f64) -> (f64, i32) {

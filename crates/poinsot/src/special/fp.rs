@@ -3,9 +3,11 @@
 //! under ω → sω, t → t/s and I → sI).
 
 /// The exponent `e` of a finite nonzero `x` with `2^e ≤ |x| < 2^(e+1)`, subnormals included
-/// (`e` from −1074 to 1023).
+/// (`e` from −1074 to 1023); `0` for zero and non-finite `x` (which scaling leaves as they are).
 pub(crate) fn exponent(x: f64) -> i32 {
-    debug_assert!(x.is_finite() && x != 0.0);
+    if x == 0.0 || !x.is_finite() {
+        return 0;
+    }
     let bits = x.abs().to_bits();
     let biased = (bits >> 52) as i32;
     if biased == 0 {
