@@ -46,6 +46,9 @@ core_export! {
         space_precession_rate -> f64;
         /// The largest |t| (s) at which ω(t) and the attitude are computed (phase 2⁴² rad).
         max_time -> f64;
+        /// ω at t = 0 as given (body, rad/s, (3,)).
+        omega0.into() -> Vector;
+        shape.as_str() -> &'static str;
     }
     fallible {
         energy -> f64;
@@ -66,15 +69,6 @@ core_export! {
         Ok(Self {
             inner: FreeSymmetricTop::new(i1, i3, w, q).py()?,
         })
-    }
-    /// ω at t = 0 as given (body, rad/s, (3,)).
-    #[getter]
-    fn omega0(&self) -> Vector {
-        Vector(self.inner.omega0())
-    }
-    #[getter]
-    fn shape(&self) -> &'static str {
-        self.inner.shape().as_str()
     }
     /// ω at times t (N,) → (N, 3).
     fn omega(&self, py: Python<'_>, t: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<3>> {
@@ -127,6 +121,13 @@ core_export! {
         /// The largest |t| (s) at which the state is computed (phase 2⁴² rad; `inf` when the
         /// body never turns that far within the double range).
         max_time -> f64;
+        /// The principal moments as given (kg·m², (3,)).
+        moments.into() -> Vector;
+        /// ω at t = 0 as given (body, rad/s, (3,)).
+        omega0.into() -> Vector;
+        regime.as_str() -> &'static str;
+        /// The invariable plane's unit normal L̂ (3,).
+        invariable_plane_normal.into() -> Vector;
     }
     fallible {
         energy -> f64;
@@ -149,20 +150,6 @@ core_export! {
         Ok(Self {
             inner: FreeRigidBody::new(m, w, q).py()?,
         })
-    }
-    /// The principal moments as given (kg·m², (3,)).
-    #[getter]
-    fn moments(&self) -> Vector {
-        Vector::from(self.inner.moments())
-    }
-    /// ω at t = 0 as given (body, rad/s, (3,)).
-    #[getter]
-    fn omega0(&self) -> Vector {
-        Vector(self.inner.omega0())
-    }
-    #[getter]
-    fn regime(&self) -> &'static str {
-        self.inner.regime().as_str()
     }
     /// (ω (N, 3) body, attitude (N, 4) [w, x, y, z], signs continuous) at times t (N,).
     fn state(&self, py: Python<'_>, t: PyReadonlyArray1<'_, f64>) -> PyResult<(Rows<3>, Rows<4>)> {
@@ -193,11 +180,6 @@ core_export! {
         Ok(run(py, None, || self.inner.polhode(samples))?
             .into_iter()
             .collect())
-    }
-    /// The invariable plane's unit normal L̂ (3,).
-    #[getter]
-    fn invariable_plane_normal(&self) -> Vector {
-        Vector(self.inner.invariable_plane_normal())
     }
     /// Poinsot's contact point at times t (N,) → (N, 3), space (`body` false) or body components.
     fn contact_point(

@@ -128,6 +128,7 @@ heavy_top_export! {
         mean_precession_rate -> f64;
         mean_spin_rate -> f64;
         fourier_terms -> usize;
+        motion_class.name() -> &'static str;
     }
 
     /// The top given by p_φ, p_ψ (kg·m²/s) and E (J); t = 0 at the upper turning point.
@@ -155,10 +156,6 @@ heavy_top_export! {
     fn initial_state(&self) -> (f64, f64, f64, f64, f64, f64) {
         let s = self.inner.initial_state();
         (s.phi, s.theta, s.psi, s.phi_dot, s.theta_dot, s.psi_dot)
-    }
-    #[getter]
-    fn motion_class(&self) -> &'static str {
-        self.inner.motion_class().name()
     }
 
     /// V(θ) (J) at (N,) angles θ (rad).

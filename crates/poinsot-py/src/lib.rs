@@ -14,14 +14,15 @@ macro_rules! add_functions {
 
 /// `#[export] impl Class { … }` for a class holding a core value in `inner`: the methods written
 /// out after the lists, and one `#[getter]` per method of the core value, named after it and
-/// returning what it returns: `getters { name -> Type; … }` for a plain value, `fallible {
+/// returning what it returns: `getters { name -> Type; … }` for a plain value (`name.then() ->
+/// Type` calls `then` on it: `.as_str()`, `.into()`), `fallible {
 /// name -> Type; name.map(Wrapper) -> Wrapper; … }` for a core `Result` (its error mapped by
 /// `IntoPy`, its value wrapped when `.map` says so). pyo3 takes one `#[pymethods]` block per
 /// class, so the getters go into that block.
 macro_rules! core_export {
     (
         impl $class:ident;
-        getters { $($(#[$doc:meta])* $name:ident -> $out:ty;)* }
+        getters { $($(#[$doc:meta])* $name:ident $(.$then:ident())* -> $out:ty;)* }
         fallible { $($(#[$fdoc:meta])* $fname:ident $(.map($wrap:path))? -> $fout:ty;)* }
         $($methods:tt)*
     ) => {
@@ -30,7 +31,7 @@ macro_rules! core_export {
             $($(#[$doc])*
             #[getter]
             fn $name(&self) -> $out {
-                self.inner.$name()
+                self.inner.$name()$(.$then())*
             })*
             $($(#[$fdoc])*
             #[getter]
