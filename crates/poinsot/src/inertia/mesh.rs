@@ -57,7 +57,7 @@ use crate::control::Cancel;
 use crate::error::{check_positive, Error, Result};
 use crate::inertia::body::MassProperties;
 use crate::inertia::mesh_embedding::{
-    probe_vertices, vertex_owners, Index, Points, UnionFind, UNUSED,
+    probe_vertices, vertex_owners, Bounds, Index, Points, UnionFind, UNUSED,
 };
 use crate::inertia::scaling::{
     check_margins, check_range, exponent, exponent_of_max, ldexp, ldexp_mat, ldexp_vec, magnitude,
@@ -675,31 +675,10 @@ fn integrate_parts(
         .map(|k| {
             let faces = &members[start[k]..start[k + 1]];
             // The box of the component's vertices (unused vertices play no part).
-            let (lo, hi) = faces
-                .par_iter()
-                .with_min_len(CHUNK)
-                .fold(
-                    || ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
-                    |(mut lo, mut hi), &f| {
-                        for &i in &tris[f as usize] {
-                            let v = vertex(i);
-                            for j in 0..3 {
-                                lo[j] = lo[j].min(v[j]);
-                                hi[j] = hi[j].max(v[j]);
-                            }
-                        }
-                        (lo, hi)
-                    },
-                )
-                .reduce(
-                    || ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
-                    |(l1, h1), (l2, h2)| {
-                        (
-                            [0, 1, 2].map(|j| l1[j].min(l2[j])),
-                            [0, 1, 2].map(|j| h1[j].max(h2[j])),
-                        )
-                    },
-                );
+            let Bounds { lo, hi } = faces
+                .par_chunks(CHUNK)
+                .map(|c| Bounds::of(c.iter().flat_map(|&f| tris[f as usize].map(vertex))))
+                .reduce(|| Bounds::EMPTY, Bounds::union);
             // Halves first: no overflow for coordinates near ±1.8e308.
             let p = [0, 1, 2].map(|j| 0.5 * lo[j] + 0.5 * hi[j]);
             let half = (0..3).fold(0.0f64, |m, j| m.max(0.5 * hi[j] - 0.5 * lo[j]));

@@ -212,6 +212,43 @@ fn max2(a: f64, b: f64) -> f64 {
     }
 }
 
+/// The box of points (`lo`, `hi` per axis), for finite coordinates: the one fold of the vertex
+/// boxes (the Morton grid of [`Index::new`], each component's centre in `mesh::integrate_parts`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Bounds {
+    /// The least coordinate on each axis.
+    pub(crate) lo: [f64; 3],
+    /// The greatest coordinate on each axis.
+    pub(crate) hi: [f64; 3],
+}
+
+impl Bounds {
+    /// The box of nothing (the identity of [`Bounds::union`]).
+    pub(crate) const EMPTY: Self = Self {
+        lo: [f64::INFINITY; 3],
+        hi: [f64::NEG_INFINITY; 3],
+    };
+
+    /// The box of `points`.
+    pub(crate) fn of(points: impl IntoIterator<Item = [f64; 3]>) -> Self {
+        points.into_iter().fold(Self::EMPTY, |mut b, p| {
+            for k in 0..3 {
+                b.lo[k] = min2(b.lo[k], p[k]);
+                b.hi[k] = max2(b.hi[k], p[k]);
+            }
+            b
+        })
+    }
+
+    /// The box of both.
+    pub(crate) fn union(self, o: Self) -> Self {
+        Self {
+            lo: [0, 1, 2].map(|k| min2(self.lo[k], o.lo[k])),
+            hi: [0, 1, 2].map(|k| max2(self.hi[k], o.hi[k])),
+        }
+    }
+}
+
 /// The extent of `pts` (the largest side of their box) is in `[2^-60, 2^60]`, where the
 /// predicates' products cannot overflow or underflow.
 #[inline]
@@ -841,30 +878,11 @@ impl<'a> Index<'a> {
     ) -> Result<Self> {
         // The box of the vertices, for the Morton keys (a far vertex that no face uses only
         // coarsens the order: the speed of the join, not its result).
-        let (lo, hi) = pts
+        let Bounds { lo, hi } = pts
             .v
             .par_chunks(3 * FACE_CHUNK)
-            .map(|c| {
-                c.chunks_exact(3).fold(
-                    ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
-                    |(mut lo, mut hi), p| {
-                        for k in 0..3 {
-                            lo[k] = min2(lo[k], p[k]);
-                            hi[k] = max2(hi[k], p[k]);
-                        }
-                        (lo, hi)
-                    },
-                )
-            })
-            .reduce(
-                || ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
-                |(a, b), (c, d)| {
-                    (
-                        [0, 1, 2].map(|k| a[k].min(c[k])),
-                        [0, 1, 2].map(|k| b[k].max(d[k])),
-                    )
-                },
-            );
+            .map(|c| Bounds::of(c.chunks_exact(3).map(|p| [p[0], p[1], p[2]])))
+            .reduce(|| Bounds::EMPTY, Bounds::union);
         let cells = f64::from(1u32 << MORTON_BITS);
         let scale = [0, 1, 2].map(|k| {
             let span = hi[k] - lo[k];
