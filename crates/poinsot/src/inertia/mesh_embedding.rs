@@ -232,9 +232,9 @@ impl Bounds {
     /// The box of `points`.
     pub(crate) fn of(points: impl IntoIterator<Item = [f64; 3]>) -> Self {
         points.into_iter().fold(Self::EMPTY, |mut b, p| {
-            for k in 0..3 {
-                b.lo[k] = min2(b.lo[k], p[k]);
-                b.hi[k] = max2(b.hi[k], p[k]);
+            for (k, &x) in p.iter().enumerate() {
+                b.lo[k] = min2(b.lo[k], x);
+                b.hi[k] = max2(b.hi[k], x);
             }
             b
         })
