@@ -250,35 +250,37 @@ fn heavy_top_sleeping_threshold(i1: f64, i3: f64, mgl: f64) -> PyResult<f64> {
     analytic::sleeping_threshold(i1, i3, mgl).py()
 }
 
-/// The Lagrangian 2.102 (J) at one state.
-#[export]
-fn heavy_top_lagrangian(
-    i1: f64,
-    i3: f64,
-    mgl: f64,
-    theta: f64,
-    theta_dot: f64,
-    phi_dot: f64,
-    psi_dot: f64,
-) -> PyResult<f64> {
-    let s = EulerState::with_rates(theta, theta_dot, phi_dot, psi_dot);
-    analytic::lagrangian(i1, i3, mgl, &s).py()
+/// Exports functions of the top (I₁, I₃ kg·m², m g l J) at one state (θ rad; θ̇, φ̇, ψ̇ rad/s):
+/// `of_state!(doc name -> T = compute; …)` is `name(i1, i3, mgl, theta, theta_dot, phi_dot,
+/// psi_dot) -> T`, `compute(i1, i3, mgl, &state)`.
+macro_rules! of_state {
+    ($($(#[$doc:meta])* $name:ident -> $out:ty = $compute:expr;)*) => {
+        $($(#[$doc])*
+        #[export]
+        fn $name(
+            i1: f64,
+            i3: f64,
+            mgl: f64,
+            theta: f64,
+            theta_dot: f64,
+            phi_dot: f64,
+            psi_dot: f64,
+        ) -> PyResult<$out> {
+            let s = EulerState::with_rates(theta, theta_dot, phi_dot, psi_dot);
+            let compute: fn(f64, f64, f64, &EulerState) -> poinsot::Result<$out> = $compute;
+            compute(i1, i3, mgl, &s).py()
+        })*
+    };
 }
 
-/// (p_φ, p_ψ, E) of one state (2.103–2.105), for the drift of a solution.
-#[export]
-fn heavy_top_constants_of_state(
-    i1: f64,
-    i3: f64,
-    mgl: f64,
-    theta: f64,
-    theta_dot: f64,
-    phi_dot: f64,
-    psi_dot: f64,
-) -> PyResult<(f64, f64, f64)> {
-    let s = EulerState::with_rates(theta, theta_dot, phi_dot, psi_dot);
-    let c = analytic::constants_of_state(i1, i3, mgl, &s).py()?;
-    Ok((c.p_phi, c.p_psi, c.energy))
+of_state! {
+    /// The Lagrangian 2.102 (J) at one state.
+    heavy_top_lagrangian -> f64 = analytic::lagrangian;
+    /// (p_φ, p_ψ, E) of one state (2.103–2.105), for the drift of a solution.
+    heavy_top_constants_of_state -> (f64, f64, f64) = |i1, i3, mgl, s| {
+        let c = analytic::constants_of_state(i1, i3, mgl, s)?;
+        Ok((c.p_phi, c.p_psi, c.energy))
+    };
 }
 
 /// Registers the heavy-top class and functions.

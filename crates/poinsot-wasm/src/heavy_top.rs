@@ -218,58 +218,72 @@ impl HeavyTop {
         let_numbers!(i1, i3, mgl);
         Ok(an::sleeping_threshold(i1, i3, mgl)?)
     }
-    /// The Lagrangian 2.102 (J) at one state (rad, rad/s).
-    pub fn lagrangian(
-        #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] theta: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] theta_dot: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] phi_dot: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] psi_dot: Number,
-    ) -> Out<f64> {
-        let_numbers!(i1, i3, mgl, theta, theta_dot, phi_dot, psi_dot);
-        let s = an::EulerState::with_rates(theta, theta_dot, phi_dot, psi_dot);
-        Ok(an::lagrangian(i1, i3, mgl, &s)?)
-    }
-    /// `[p_φ, p_ψ, E]` of one state (2.103–2.105; `HeavyTop.constants_of_state` in Python): at
-    /// the exact state at t they equal the constants to round-off (their drift).
-    #[wasm_bindgen(js_name = constantsOfState)]
-    pub fn constants_of_state(
-        #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] theta: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] theta_dot: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] phi_dot: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] psi_dot: Number,
-    ) -> Out<Vec<f64>> {
-        let_numbers!(i1, i3, mgl, theta, theta_dot, phi_dot, psi_dot);
-        let s = an::EulerState::with_rates(theta, theta_dot, phi_dot, psi_dot);
-        let c = an::constants_of_state(i1, i3, mgl, &s)?;
-        Ok(vec![c.p_phi, c.p_psi, c.energy])
-    }
 }
+
+/// Functions of the top (`i1`, `i3` kg·m², `mgl` N·m) at one state (`theta` rad; `theta_dot`,
+/// `phi_dot`, `psi_dot` rad/s): `of_state!(" doc" rust_name -> T = compute; ...)` is one
+/// `#[wasm_bindgen] impl HeavyTop` block of the static `pub fn rust_name(i1, i3, mgl, theta,
+/// theta_dot, phi_dot, psi_dot) -> Out<T>` (JavaScript numbers) returning `compute(i1, i3, mgl,
+/// &state)` (doc lines as string literals, see [`crate::convert::getters`]).
+macro_rules! of_state {
+    ($($($doc:literal)* $(#[$how:meta])* $name:ident -> $out:ty = $compute:expr;)*) => {
+        #[wasm_bindgen]
+        impl HeavyTop {
+            $(
+                $(#[doc = $doc])*
+                $(#[$how])*
+                pub fn $name(
+                    #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
+                    #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
+                    #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
+                    #[wasm_bindgen(unchecked_param_type = "number")] theta: Number,
+                    #[wasm_bindgen(unchecked_param_type = "number")] theta_dot: Number,
+                    #[wasm_bindgen(unchecked_param_type = "number")] phi_dot: Number,
+                    #[wasm_bindgen(unchecked_param_type = "number")] psi_dot: Number,
+                ) -> Out<$out> {
+                    let_numbers!(i1, i3, mgl, theta, theta_dot, phi_dot, psi_dot);
+                    let s = an::EulerState::with_rates(theta, theta_dot, phi_dot, psi_dot);
+                    let compute: fn(f64, f64, f64, &an::EulerState) -> poinsot::Result<$out> =
+                        $compute;
+                    Ok(compute(i1, i3, mgl, &s)?)
+                }
+            )*
+        }
+    };
+}
+
+of_state! {
+    " The Lagrangian 2.102 (J) at one state (rad, rad/s)."
+    lagrangian -> f64 = an::lagrangian;
+    " `[p_φ, p_ψ, E]` of one state (2.103–2.105; `HeavyTop.constants_of_state` in Python): at"
+    " the exact state at t they equal the constants to round-off (their drift)."
+    #[wasm_bindgen(js_name = constantsOfState)]
+    constants_of_state -> Vec<f64> = |i1, i3, mgl, s| {
+        let c = an::constants_of_state(i1, i3, mgl, s)?;
+        Ok(vec![c.p_phi, c.p_psi, c.energy])
+    };
+}
+
+/// A batch kernel of the core's top: N times in, N×3 numbers out.
+type Kernel = fn(&an::HeavyTop, &[f64], &mut [f64]) -> poinsot::Result<()>;
 
 /// Bytes per time of `attitude`: the copy of the time (8), the angles (24) and the matrix (72).
 const BYTES_PER_ATTITUDE: usize = 8 + 24 + 72;
 
 impl HeavyTop {
+    /// The core's batch `kernel` at the times `t` (N×3), its `times` named `t`.
+    fn per_time(&self, t: &[f64], kernel: Kernel) -> Out<Vec<f64>> {
+        let mut out = vec![0.0; 3 * t.len()];
+        kernel(&self.inner, t, &mut out).map_err(times_as_t)?;
+        Ok(out)
+    }
     /// The Euler angles at the times `t` (N×3).
     fn angles_at(&self, t: &[f64]) -> Out<Vec<f64>> {
-        let mut out = vec![0.0; 3 * t.len()];
-        self.inner
-            .euler_angles_into(t, &mut out)
-            .map_err(times_as_t)?;
-        Ok(out)
+        self.per_time(t, an::HeavyTop::euler_angles_into)
     }
     /// The Euler-angle rates at the times `t` (N×3).
     fn rates_at(&self, t: &[f64]) -> Out<Vec<f64>> {
-        let mut out = vec![0.0; 3 * t.len()];
-        self.inner
-            .euler_rates_into(t, &mut out)
-            .map_err(times_as_t)?;
-        Ok(out)
+        self.per_time(t, an::HeavyTop::euler_rates_into)
     }
     /// The symmetry axes at the times `t` (N×3): the third columns of the attitudes.
     fn axes_at(&self, t: &[f64]) -> Out<Vec<f64>> {
