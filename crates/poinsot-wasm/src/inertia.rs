@@ -22,9 +22,27 @@ fn wrap(r: poinsot::Result<MassProperties>) -> Out<RigidBody> {
 }
 
 /// The standard solids of scalar dimensions: `solids!(" doc" jsName rust_name(mass, dims...);)`
-/// is one constructor per solid, calling the core's `inertia::rust_name(mass, dims...)` (doc
-/// lines as string literals, see [`crate::convert::getters`]).
+/// is one constructor per solid, calling the core's `inertia::rust_name(mass, dims...)`;
+/// `solids!(of_three { " doc" jsName rust_name(dims); })` the same for a solid of `mass` and 3
+/// dimensions (x, y, z) given as one array-like `dims` (doc lines as string literals, see
+/// [`crate::convert::getters`]).
 macro_rules! solids {
+    (of_three { $($($doc:literal)* $js:ident $name:ident($dims:ident);)+ }) => {
+        #[wasm_bindgen]
+        impl RigidBody {
+            $(
+                $(#[doc = $doc])*
+                #[wasm_bindgen(js_name = $js)]
+                pub fn $name(
+                    #[wasm_bindgen(unchecked_param_type = "number")] mass: Number,
+                    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] $dims: Numbers,
+                ) -> Out<RigidBody> {
+                    let_numbers!(mass);
+                    wrap(inr::$name(mass, triple(stringify!($dims), &$dims)?))
+                }
+            )+
+        }
+    };
     ($($($doc:literal)* $js:ident $name:ident($($arg:ident),+);)+) => {
         #[wasm_bindgen]
         impl RigidBody {
@@ -59,6 +77,15 @@ solids! {
     thinRing thin_ring(mass, radius);
 }
 
+solids! {
+    of_three {
+        " A cuboid of `sides` (m, 3 numbers: x, y, z)."
+        cuboid cuboid(sides);
+        " A solid ellipsoid of `semi_axes` (m, 3 numbers)."
+        ellipsoid ellipsoid(semi_axes);
+    }
+}
+
 #[wasm_bindgen]
 impl RigidBody {
     /// A body of `mass` (kg) with inertia tensor `inertia` (kg·m², 9 numbers row-major, about the
@@ -74,22 +101,6 @@ impl RigidBody {
         let center_of_mass = vector("center_of_mass", &center_of_mass)?;
         let inertia = mat3("inertia", &inertia)?;
         wrap(MassProperties::new(mass, center_of_mass, inertia))
-    }
-    /// A cuboid of `sides` (m, 3 numbers: x, y, z).
-    pub fn cuboid(
-        #[wasm_bindgen(unchecked_param_type = "number")] mass: Number,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] sides: Numbers,
-    ) -> Out<RigidBody> {
-        let_numbers!(mass);
-        wrap(inr::cuboid(mass, triple("sides", &sides)?))
-    }
-    /// A solid ellipsoid of `semi_axes` (m, 3 numbers).
-    pub fn ellipsoid(
-        #[wasm_bindgen(unchecked_param_type = "number")] mass: Number,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] semi_axes: Numbers,
-    ) -> Out<RigidBody> {
-        let_numbers!(mass);
-        wrap(inr::ellipsoid(mass, triple("semi_axes", &semi_axes)?))
     }
     /// The solid bounded by a closed triangle mesh of uniform `density` (kg/m³), by the core's
     /// exact polyhedral integrals (2.61–2.62; `poinsot.RigidBody.from_mesh` in Python).
