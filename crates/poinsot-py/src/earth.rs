@@ -311,19 +311,25 @@ impl PyFallModel {
     }
 }
 
-/// `#[export] impl PyEarth { … }`: the methods written out after the two lists, and one method
-/// per quantity of the core's `Earth` named after it, at (N,) latitudes (`per_latitude { … }`,
-/// through [`per_latitude`]) or at (N,) heights and latitudes (`per_height { … }`, through
-/// [`per_height`]).
-/// pyo3 takes one `#[pymethods]` block per class, so the generated methods go into that block.
+/// `#[export] impl PyEarth { … }`: the methods written out after the lists, a getter per field
+/// of the core's `Earth` listed in `fields { … }` (f64), and one method per quantity of the
+/// core's `Earth` named after it, at (N,) latitudes (`per_latitude { … }`, through
+/// [`per_latitude`]) or at (N,) heights and latitudes (`per_height { … }`, through
+/// [`per_height`]). pyo3 takes one `#[pymethods]` block per class, so the generated methods go
+/// into that block.
 macro_rules! earth_export {
     (
+        fields { $($field:ident),* }
         per_latitude { $($(#[$ldoc:meta])* $lat:ident;)* }
         per_height { $($(#[$hdoc:meta])* $height:ident;)* }
         $($methods:tt)*
     ) => {
         #[export]
         impl PyEarth {
+            $(#[getter]
+            fn $field(&self) -> f64 {
+                self.inner.$field
+            })*
             $($(#[$ldoc])*
             fn $lat(&self, py: Python<'_>, latitude: PyReadonlyArray1<'_, f64>) -> PyResult<Values> {
                 per_latitude(py, &latitude, |l| self.inner.$lat(l)).map(Values)
@@ -343,6 +349,7 @@ macro_rules! earth_export {
 }
 
 earth_export! {
+    fields { rotation_rate, radius, g }
     per_latitude {
         /// f = 2 ω sin λ (1/s) at (N,) latitudes.
         coriolis_parameter;
@@ -371,18 +378,6 @@ earth_export! {
         (slf.get_type(), (e.rotation_rate, e.radius, e.g))
     }
 
-    #[getter]
-    fn rotation_rate(&self) -> f64 {
-        self.inner.rotation_rate
-    }
-    #[getter]
-    fn radius(&self) -> f64 {
-        self.inner.radius
-    }
-    #[getter]
-    fn g(&self) -> f64 {
-        self.inner.g
-    }
 
     /// ω in ENU components, (N, 3), at (N,) latitudes.
     fn omega_enu(&self, py: Python<'_>, latitude: PyReadonlyArray1<'_, f64>) -> PyResult<Rows<3>> {
