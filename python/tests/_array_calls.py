@@ -90,6 +90,10 @@ ARRAY_CALLS: dict[str, tuple[str, str]] = {
         _SPHERE.format(n=1000, m=2600),
         "ps.RigidBody.from_mesh(v, f, density=1.0)",
     ),
+    "RigidBody.from_mesh(merge_vertices=True)": (
+        _SPHERE.format(n=1000, m=2600),
+        "ps.RigidBody.from_mesh(v, f, density=1.0, merge_vertices=True)",
+    ),
     "free_body_states": (
         _PTS.format(n=10**6) + "\nI = np.ones((len(x), 3)) * [1.0, 2.0, 3.0]",
         "ps.free_body_states(I, x + [0.1, 0.2, 0.3], np.linspace(0.0, 1.0, 2))",

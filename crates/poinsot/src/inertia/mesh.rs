@@ -121,8 +121,7 @@ pub fn mesh_mass_properties_merging<I: FaceIndex>(
     check_positive("density", density)?;
     crate::control::parallel((faces.len() / 3) as u64, |cancel| {
         let mut tris = checked_arrays(vertices, faces)?;
-        let tolerance = merge_close_vertices(vertices, &mut tris);
-        cancel.check()?;
+        let tolerance = merge_close_vertices(vertices, &mut tris, cancel)?;
         solid(vertices, &tris, density, Some(tolerance), cancel)
     })
 }
@@ -169,8 +168,13 @@ pub const MERGE_RTOL: f64 = 2.384_185_791_015_625e-7; // 2^-22
 /// (whose coordinates are kept; the others become unused and play no part). Returns the
 /// distance used (m). The vertices are filed in a grid of cells of that size and each is
 /// compared with those of the 27 cells around it; exactly equal coordinates (−0.0 and 0.0
-/// included) are always merged.
-pub fn merge_close_vertices(vertices: &[f64], tris: &mut [[u32; 3]]) -> f64 {
+/// included) are always merged. Stops with [`crate::control::interrupted`] once `cancel` is set
+/// (checked around the sort and every [`CHUNK`] vertices of the comparison).
+pub fn merge_close_vertices(
+    vertices: &[f64],
+    tris: &mut [[u32; 3]],
+    cancel: &Cancel,
+) -> Result<f64> {
     let nv = vertices.len() / 3;
     let mut used = vec![false; nv];
     for t in tris.iter() {
@@ -196,36 +200,38 @@ pub fn merge_close_vertices(vertices: &[f64], tris: &mut [[u32; 3]]) -> f64 {
         .filter(|&i| used[i])
         .map(|i| (key(i), i as u32))
         .collect();
+    cancel.check()?;
     sorted.par_sort_unstable();
     let groups = UnionFind::new(nv);
-    sorted.par_iter().with_min_len(CHUNK).for_each(|&(k, i)| {
-        let p = &vertices[3 * i as usize..3 * i as usize + 3];
-        for dx in -1..=1 {
-            for dy in -1..=1 {
-                for dz in -1..=1 {
-                    let c = [k[0] + dx, k[1] + dy, k[2] + dz];
-                    let from = sorted.partition_point(|e| e.0 < c);
-                    for &(kj, j) in &sorted[from..] {
-                        if kj != c {
-                            break;
-                        }
-                        if j != i {
-                            let q = &vertices[3 * j as usize..3 * j as usize + 3];
-                            if (0..3).all(|m| (p[m] - q[m]).abs() <= tolerance) {
-                                groups.union(i, j);
+    sorted.par_chunks(CHUNK).try_for_each(|chunk| {
+        cancel.check()?;
+        for &(k, i) in chunk {
+            let p = &vertices[3 * i as usize..3 * i as usize + 3];
+            for dx in -1..=1 {
+                for dy in -1..=1 {
+                    for dz in -1..=1 {
+                        let c = [k[0] + dx, k[1] + dy, k[2] + dz];
+                        let from = sorted.partition_point(|e| e.0 < c);
+                        for &(_, j) in sorted[from..].iter().take_while(|e| e.0 == c) {
+                            if j != i {
+                                let q = &vertices[3 * j as usize..3 * j as usize + 3];
+                                if (0..3).all(|m| (p[m] - q[m]).abs() <= tolerance) {
+                                    groups.union(i, j);
+                                }
                             }
                         }
                     }
                 }
             }
         }
-    });
+        Ok(())
+    })?;
     tris.par_iter_mut().with_min_len(CHUNK).for_each(|t| {
         for v in t.iter_mut() {
             *v = groups.find(*v);
         }
     });
-    tolerance
+    Ok(tolerance)
 }
 
 /// Peak memory (bytes) per triangle of `RigidBody.load_mesh` reading a binary STL file with
@@ -1008,6 +1014,56 @@ fn finish(whole: &Whole, density: f64) -> Result<MassProperties> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The merge (a grid of cells of the tolerance) groups exactly the vertices that a comparison of
+    /// every pair groups (chains included), on clustered random points at scales from 1e-300
+    /// to 1e300; and it stops when cancelled.
+    #[test]
+    fn merging_matches_all_pairs_and_stops_when_cancelled() {
+        let mut seed = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for scale in [1e-300, 1.0, 1e300] {
+            // 2000 points about 60 centres: a third spread over ~4 tolerances (some pairs merge,
+            // some only through chains, some not), the others within a twentieth of one.
+            let mut v = Vec::new();
+            let centres: Vec<[f64; 3]> = (0..60)
+                .map(|_| [next() - 0.5, next() - 0.5, next() - 0.5])
+                .collect();
+            for k in 0..2000 {
+                let c = centres[k % 60];
+                let spread = if k % 3 == 0 { 1e-6 } else { 1e-8 };
+                for x in c {
+                    v.push(scale * (x + spread * (next() - 0.5)));
+                }
+            }
+            let n = v.len() / 3;
+            let tris: Vec<[u32; 3]> = (0..n as u32 - 2).map(|i| [i, i + 1, i + 2]).collect();
+            let mut merged = tris.clone();
+            let tol = merge_close_vertices(&v, &mut merged, &Cancel::new(1)).unwrap();
+            let all = UnionFind::new(n);
+            for i in 0..n {
+                for j in i + 1..n {
+                    if (0..3).all(|m| (v[3 * i + m] - v[3 * j + m]).abs() <= tol) {
+                        all.union(i as u32, j as u32);
+                    }
+                }
+            }
+            let want: Vec<[u32; 3]> = tris.iter().map(|t| t.map(|x| all.find(x))).collect();
+            assert_eq!(merged, want, "scale {scale}");
+            // Negative controls: some merged, and not all of a cluster's points into one.
+            assert_ne!(merged, tris, "nothing merged at scale {scale}");
+            let roots: std::collections::BTreeSet<u32> = merged.iter().flatten().copied().collect();
+            assert!(roots.len() > 120, "{} groups at scale {scale}", roots.len());
+            let cancel = Cancel::new(1);
+            cancel.cancel();
+            assert!(merge_close_vertices(&v, &mut tris.clone(), &cancel).is_err());
+        }
+    }
 
     fn cube() -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
         let v: Vec<[f64; 3]> = (0..8)
