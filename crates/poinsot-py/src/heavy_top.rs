@@ -69,12 +69,31 @@ fn one(t: f64, f: impl Fn(&[f64], &mut [f64]) -> poinsot::Result<()>) -> PyResul
 /// `core_export!` of `PyHeavyTop` with, first, its constructors from the state at t = 0: each
 /// `name(last) => make;` is the static method `name(i1, i3, mgl, phi, theta, psi, phi_dot,
 /// theta_dot, last)` (kg·m², kg·m², J; rad, rad/s), which calls `make(i1, i3, mgl, [phi, …,
-/// last])` (a closure), the constructors differing only in their last argument (ψ̇ or ω₃).
+/// last])` (a closure), the constructors differing only in their last argument (ψ̇ or ω₃); then
+/// the core's functions of θ at (N,) angles (`per_theta { name; … }`, through [`each_theta`])
+/// and its batch kernels at (N,) times (`per_time { name => kernel; … }`, through [`batch`]).
 macro_rules! heavy_top_export {
-    (constructors { $($(#[$doc:meta])* $name:ident($last:ident) => $make:expr;)* } $($rest:tt)*) => {
+    (
+        constructors { $($(#[$doc:meta])* $name:ident($last:ident) => $make:expr;)* }
+        per_theta { $($(#[$tdoc:meta])* $per_theta:ident;)* }
+        per_time { $($(#[$bdoc:meta])* $per_time:ident => $kernel:ident;)* }
+        $($rest:tt)*
+    ) => {
         core_export! {
             impl PyHeavyTop;
             $($rest)*
+            $($(#[$tdoc])*
+            fn $per_theta(&self, py: Python<'_>, theta: Angles<'_>) -> PyResult<Values> {
+                each_theta(py, &theta, |th| self.inner.$per_theta(th))
+            })*
+            $($(#[$bdoc])*
+            fn $per_time<'py>(
+                &self,
+                py: Python<'py>,
+                t: PyReadonlyArray1<'py, f64>,
+            ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+                batch(py, &t, |ts, out| self.inner.$kernel(ts, out))
+            })*
             $($(#[$doc])*
             #[staticmethod]
             #[allow(clippy::too_many_arguments)]
@@ -110,6 +129,18 @@ heavy_top_export! {
         from_spin(omega3) => |i1, i3, mgl, [phi, theta, psi, phi_dot, theta_dot, omega3]| {
             HeavyTop::with_spin(i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, omega3)
         };
+    }
+    per_theta {
+        /// V(θ) (J) at (N,) angles θ (rad).
+        effective_potential;
+        /// dV/dθ (N·m) at (N,) angles θ (rad).
+        effective_potential_derivative;
+    }
+    per_time {
+        /// (N, 3) Euler angles [φ, θ, ψ] (rad) at (N,) times (s).
+        euler_angles => euler_angles_into;
+        /// (N, 3) Euler-angle rates [φ̇, θ̇, ψ̇] (rad/s) at (N,) times (s).
+        euler_rates => euler_rates_into;
     }
 
     getters {
@@ -156,40 +187,6 @@ heavy_top_export! {
     fn initial_state(&self) -> (f64, f64, f64, f64, f64, f64) {
         let s = self.inner.initial_state();
         (s.phi, s.theta, s.psi, s.phi_dot, s.theta_dot, s.psi_dot)
-    }
-
-    /// V(θ) (J) at (N,) angles θ (rad).
-    fn effective_potential(&self, py: Python<'_>, theta: Angles<'_>) -> PyResult<Values> {
-        each_theta(py, &theta, |th| self.inner.effective_potential(th))
-    }
-
-    /// dV/dθ (N·m) at (N,) angles θ (rad).
-    fn effective_potential_derivative(
-        &self,
-        py: Python<'_>,
-        theta: Angles<'_>,
-    ) -> PyResult<Values> {
-        each_theta(py, &theta, |th| {
-            self.inner.effective_potential_derivative(th)
-        })
-    }
-
-    /// (N, 3) Euler angles [φ, θ, ψ] (rad) at (N,) times (s).
-    fn euler_angles<'py>(
-        &self,
-        py: Python<'py>,
-        t: PyReadonlyArray1<'py, f64>,
-    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        batch(py, &t, |ts, out| self.inner.euler_angles_into(ts, out))
-    }
-
-    /// (N, 3) Euler-angle rates [φ̇, θ̇, ψ̇] (rad/s) at (N,) times (s).
-    fn euler_rates<'py>(
-        &self,
-        py: Python<'py>,
-        t: PyReadonlyArray1<'py, f64>,
-    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        batch(py, &t, |ts, out| self.inner.euler_rates_into(ts, out))
     }
 
     /// (φ, θ, ψ) (rad) at one time t (s): `euler_angles` of [t] without the arrays (the same
