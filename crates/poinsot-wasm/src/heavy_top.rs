@@ -183,41 +183,42 @@ impl HeavyTop {
         let (a, r) = (self.inner.euler_angles(t)?, self.inner.euler_rates(t)?);
         Ok(vec![a[0], a[1], a[2], r[0], r[1], r[2]])
     }
-    /// Both steady-precession rates at `theta0` (rad) and spin `omega3` (rad/s), 2.114–2.121.
-    /// Errors name `omega3` below the minimum spin 2.119 (the message gives it).
-    #[wasm_bindgen(js_name = steadyPrecession)]
-    pub fn steady_precession(
-        #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] theta0: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] omega3: Number,
-    ) -> Out<SteadyPrecession> {
-        let_numbers!(i1, i3, mgl, theta0, omega3);
-        let inner = an::steady_precession(i1, i3, mgl, theta0, omega3)?;
-        Ok(SteadyPrecession { inner })
-    }
-    /// The minimum spin for steady precession at `theta0` (rad/s, 2.119).
-    #[wasm_bindgen(js_name = minSpin)]
-    pub fn min_spin(
-        #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] theta0: Number,
-    ) -> Out<f64> {
-        let_numbers!(i1, i3, mgl, theta0);
-        Ok(an::min_spin(i1, i3, mgl, theta0)?)
-    }
-    /// The spin above which an upright top sleeps stably, 2√(m g l I₁)/I₃ (rad/s).
-    #[wasm_bindgen(js_name = sleepingThreshold)]
-    pub fn sleeping_threshold(
-        #[wasm_bindgen(unchecked_param_type = "number")] i1: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] i3: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] mgl: Number,
-    ) -> Out<f64> {
-        let_numbers!(i1, i3, mgl);
-        Ok(an::sleeping_threshold(i1, i3, mgl)?)
-    }
+}
+
+/// The top's static functions of numbers: `functions!(" doc" jsName rust_name(arg, ...) -> T =
+/// compute; ...)` is one `#[wasm_bindgen] impl HeavyTop` block of `pub fn rust_name(arg, ...) ->
+/// Out<T>` (JavaScript numbers, read by name) returning `compute(args...)?` (doc lines as string
+/// literals, see [`crate::convert::getters`]).
+macro_rules! functions {
+    ($($($doc:literal)* $js:ident $name:ident($($arg:ident),+) -> $out:ty = $compute:expr;)*) => {
+        #[wasm_bindgen]
+        impl HeavyTop {
+            $(
+                $(#[doc = $doc])*
+                #[wasm_bindgen(js_name = $js)]
+                pub fn $name(
+                    $(#[wasm_bindgen(unchecked_param_type = "number")] $arg: Number),+
+                ) -> Out<$out> {
+                    let_numbers!($($arg),+);
+                    Ok(($compute)($($arg),+)?)
+                }
+            )*
+        }
+    };
+}
+
+functions! {
+    " Both steady-precession rates at `theta0` (rad) and spin `omega3` (rad/s), 2.114–2.121."
+    " Errors name `omega3` below the minimum spin 2.119 (the message gives it)."
+    steadyPrecession steady_precession(i1, i3, mgl, theta0, omega3) -> SteadyPrecession =
+        |i1, i3, mgl, theta0, omega3| {
+            let inner = an::steady_precession(i1, i3, mgl, theta0, omega3)?;
+            Ok::<_, poinsot::Error>(SteadyPrecession { inner })
+        };
+    " The minimum spin for steady precession at `theta0` (rad/s, 2.119)."
+    minSpin min_spin(i1, i3, mgl, theta0) -> f64 = an::min_spin;
+    " The spin above which an upright top sleeps stably, 2√(m g l I₁)/I₃ (rad/s)."
+    sleepingThreshold sleeping_threshold(i1, i3, mgl) -> f64 = an::sleeping_threshold;
 }
 
 /// Functions of the top (`i1`, `i3` kg·m², `mgl` N·m) at one state (`theta` rad; `theta_dot`,
