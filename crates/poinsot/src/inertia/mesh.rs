@@ -169,7 +169,7 @@ pub const MERGE_RTOL: f64 = 2.384_185_791_015_625e-7; // 2^-22
 /// distance used (m). The vertices are filed in a grid of cells of that size and each is
 /// compared with those of the 27 cells around it; exactly equal coordinates (−0.0 and 0.0
 /// included) are always merged. Stops with [`crate::control::interrupted`] once `cancel` is set
-/// (checked around the sort and every [`CHUNK`] vertices of the comparison).
+/// (checked around the sort and every 4,096 vertices of the comparison).
 pub fn merge_close_vertices(
     vertices: &[f64],
     tris: &mut [[u32; 3]],

@@ -181,7 +181,7 @@ impl Principal {
     /// perpendicular-axis theorem of a lamina: a thin disk or ring has `I1 + I2 − I3 = 0`). The
     /// last margin is the smallest.
     /// Finite for every body the core makes (it refuses one whose largest margin overflows,
-    /// see [`largest_margin`]); near the top of the range the sums are reordered so that no
+    /// checked where it is made); near the top of the range the sums are reordered so that no
     /// intermediate `I2 + I3` overflows where the margin does not.
     pub fn triangle_margins(&self) -> [f64; 3] {
         let [a, b, c] = self.moments;
