@@ -65,15 +65,21 @@ def has_attribute(cls: type, attr: str) -> bool:
 
 
 def wasm_names() -> dict[str, set[str]]:
-    """The functions of each ``impl Class`` block of the wasm crate (Rust names)."""
+    """The functions of each ``impl Class`` block of the wasm crate (Rust names), including the
+    blocks a macro writes: an indented ``impl Class {`` in a ``macro_rules!`` takes the text up
+    to the next block (the macro's invocation, with its entries' attributes), and
+    ``calls!(Class::new {`` writes the constructor of ``Class``."""
     out: dict[str, set[str]] = {}
     for path in sorted((ROOT / "crates" / "poinsot-wasm" / "src").glob("*.rs")):
-        parts = re.split(r"^impl (\w+) \{", path.read_text(encoding="utf-8"), flags=re.M)
+        text = path.read_text(encoding="utf-8")
+        parts = re.split(r"^\s*impl (\w+) \{", text, flags=re.M)
         for cls_name, body in zip(parts[1::2], parts[2::2]):
             names = out.setdefault(cls_name, set())
             names.update(re.findall(r"pub fn (\w+)", body))
             if "wasm_bindgen(constructor)" in body:
                 names.add("constructor")  # JavaScript's `new Class(...)`
+        for cls_name in re.findall(r"^calls!\((\w+)::new \{", text, flags=re.M):
+            out.setdefault(cls_name, set()).add("constructor")
     return out
 
 
