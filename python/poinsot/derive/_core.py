@@ -155,7 +155,9 @@ class _Notation(sp.Function):
         return _power(self._body_latex(printer), exp, printer)
 
     def _body_latex(self, printer: Any) -> str:
-        raise NotImplementedError
+        """The LaTeX without a power; here sympy's for a function, ``name(args)`` (each notation
+        of the unit writes its own)."""
+        return str(printer._print_Function(self))
 
 
 class Cross(_Notation):
