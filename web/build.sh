@@ -3,7 +3,9 @@
 # (wasm-bindgen --target web, into src/wasm, git-ignored) and the page (vite, into
 # python/poinsot/lab, git-ignored, shipped in the wheel through maturin's python-source), then the
 # notebook widgets' front end (vite.widget.config.ts: one ES module with the core inlined, into
-# python/poinsot/widgets/static, git-ignored, in the wheel).
+# python/poinsot/widgets/static, git-ignored, in the wheel), then the lab as one self-contained
+# file (vite.export.config.ts: script, styles and core inside the HTML, opens from file://), copied
+# to python/poinsot/lab/poinsot-lab.html (in the wheel with the page; `poinsot lab --export`).
 #   bash web/build.sh          everything
 #   bash web/build.sh wasm     the WebAssembly module and its glue only
 set -euo pipefail
@@ -31,3 +33,11 @@ if [[ ! -d node_modules ]]; then npm ci --no-audit --no-fund; fi
 npx tsc --noEmit
 npx vite build
 npx vite build -c vite.widget.config.ts
+npx vite build -c vite.export.config.ts
+# A file to e-mail or put on Moodle: refused above 4 MB (it is about 2.2 MB).
+size="$(stat -c %s "$root/target/lab-export/index.html")"
+if (( size > 4000000 )); then
+  echo "web/build.sh: the one-file lab is $size bytes, over the 4 MB it must stay under" >&2
+  exit 1
+fi
+cp "$root/target/lab-export/index.html" "$root/python/poinsot/lab/poinsot-lab.html"

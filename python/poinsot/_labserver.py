@@ -121,6 +121,16 @@ def page_dir() -> Path:
     return Path(__file__).resolve().parent / "lab"
 
 
+#: The lab as one self-contained HTML file (script, styles and WebAssembly inside; built by
+#: web/vite.export.config.ts), beside the page in the package; `poinsot lab --export` copies it.
+EXPORT_NAME = "poinsot-lab.html"
+
+
+def export_file() -> Path:
+    """The one-file lab inside the installed package (may not exist)."""
+    return page_dir() / EXPORT_NAME
+
+
 def resolve_request(root: Path, raw_path: str) -> Optional[Path]:
     """The file under ``root`` that the request path ``raw_path`` names, or None (→ 404).
 

@@ -1419,14 +1419,25 @@ def top(
 )
 @click.option("--no-browser", "no_browser", is_flag=True, help="Do not open a web browser.")
 @click.option("--verbose", is_flag=True, help="Log every request.")
-def lab(port: int, no_browser: bool, verbose: bool) -> None:
+@click.option(
+    "--export",
+    "export_path",
+    metavar="FILE.html",
+    help="Write the lab as one self-contained HTML file (about 2 MB) instead of serving it: it "
+    "opens by double-click, offline, and can be e-mailed or put on any web space.",
+)
+def lab(port: int, no_browser: bool, verbose: bool, export_path: str | None) -> None:
     """The browser lab: every scene of the unit to play with, on the same core (WebAssembly).
 
     Serves the page built into the package on 127.0.0.1 only, and only the page's own files.
-    Stop it with Ctrl+C. Build the page from a source checkout with `make lab`.
+    Stop it with Ctrl+C. Build the page from a source checkout with `make lab`. With
+    `--export FILE.html`, writes the lab as one file instead (no server).
     """
-    from ._labserver import LabServer, page_dir
+    from ._labserver import LabServer, export_file, page_dir
 
+    if export_path is not None:
+        _export_lab(export_file(), Path(export_path))
+        return
     root = page_dir()
     if not (root / "index.html").is_file():
         raise click.ClickException(
@@ -1449,6 +1460,40 @@ def lab(port: int, no_browser: bool, verbose: bool) -> None:
         click.echo("poinsot lab: stopped")
     finally:
         server.server_close()
+
+
+def _export_lab(source: Path, target: Path) -> None:
+    """``poinsot lab --export``: the built one-file lab ``source`` copied to ``target``, a new or
+    replaced ``.html`` file in an existing, writable folder (refused otherwise, naming --export)."""
+    import shutil
+
+    if not source.is_file():
+        raise click.ClickException(
+            f"the one-file lab is not built (no {source}): run `make lab-build` in a source "
+            "checkout (it needs the rust wasm32 target, wasm-bindgen-cli and node)"
+        )
+    if target.is_dir():
+        raise click.UsageError(
+            f"--export: '{target}' is a folder; give a file name, e.g. {target / source.name}"
+        )
+    if not target.parent.is_dir():
+        raise click.UsageError(f"--export: no folder '{target.parent}' to write {target.name} into")
+    if target.suffix.lower() not in (".html", ".htm"):
+        raise click.UsageError(
+            f"--export: '{target.name}' does not end in .html; a browser opens the lab by "
+            "double-click only from an .html file"
+        )
+    try:
+        shutil.copyfile(source, target)
+    except OSError as exc:
+        raise click.ClickException(
+            f"--export: cannot write '{target}': {exc.strerror or exc}"
+        ) from exc
+    size = target.stat().st_size
+    click.echo(
+        f"poinsot lab: wrote {target} ({size / 1e6:.1f} MB), the lab in one file: open it by "
+        "double-click (offline, in any recent browser), e-mail it, or put it on any web space"
+    )
 
 
 # -- poinsot figure: the unit's own figures (docs/figures.md) ------------------------------------

@@ -109,7 +109,8 @@ async function main(): Promise<void> {
     }
     return p;
   }
-  function writeUrl(): void {
+  /** The state as a query: the scene, its parameters, the speed and (when paused) the time. */
+  function stateQuery(): URLSearchParams {
     const q = new URLSearchParams({ scene: def.id });
     for (const spec of def.params) q.set(spec.key, String(lab.params[spec.key]));
     if (speed !== 1) q.set("speed", String(speed));
@@ -117,7 +118,14 @@ async function main(): Promise<void> {
       q.set("paused", "1");
       q.set("t", String(lab.t));
     }
-    history.replaceState(null, "", `${location.pathname}?${q}`);
+    return q;
+  }
+  function writeUrl(): void {
+    // A browser may refuse to rewrite the address of a page opened from a file: the share link
+    // does not depend on it (shareLink), so the refusal is ignored.
+    try {
+      history.replaceState(null, "", `${location.pathname}?${stateQuery()}`);
+    } catch { /* the address keeps its old query */ }
   }
 
   // --- controls ---------------------------------------------------------------------------
@@ -473,13 +481,46 @@ async function main(): Promise<void> {
   $("reset").addEventListener("click", reset);
   const speedSel = $<HTMLSelectElement>("speed");
   speedSel.addEventListener("change", () => { speed = Number(speedSel.value); writeUrl(); });
+  // --- share: a link to this state where the page was opened from ------------------------------
   const shareBox = $<HTMLInputElement>("share-url");
+  const shareNote = $("share-note");
+  /** The page's own address (the host it was served from, or the file on this computer: never a
+   * fixed host) with the state in its query, and where that link works, in words. */
+  function shareLink(): { url: string; where: string } {
+    const url = `${location.href.split(/[?#]/)[0]}?${stateQuery()}`;
+    const host = location.hostname;
+    const where = location.protocol === "file:"
+      ? "works on this computer (a link to this file; to share the lab, send the file itself)"
+      : host === "127.0.0.1" || host === "localhost" || host === "[::1]"
+        ? "works on this computer while poinsot lab runs"
+        : `works for anyone who can open ${location.host}`;
+    return { url, where };
+  }
+  /** Copies the link; says so, or (clipboard refused, missing or silent for 2 s: a page opened
+   * from a file, an old browser) shows the link selected, to copy by hand. */
   const share = () => {
     writeUrl();
-    shareBox.value = location.href;
+    const { url, where } = shareLink();
+    shareBox.value = url;
     shareBox.hidden = false;
     shareBox.select();
-    navigator.clipboard?.writeText(location.href).catch(() => undefined);
+    shareNote.hidden = false;
+    shareNote.className = "share-note";
+    shareNote.textContent = "Copying the link…";
+    const refused = new Promise<never>((_, reject) => setTimeout(() => reject(new Error("no answer")), 2000));
+    const copy = navigator.clipboard?.writeText ? Promise.race([navigator.clipboard.writeText(url), refused]) : refused;
+    copy.then(
+      () => {
+        shareNote.classList.add("ok");
+        shareNote.textContent = `Link copied: it ${where}.`;
+      },
+      () => {
+        shareNote.classList.add("manual");
+        shareNote.textContent = `Copy this link by hand (Ctrl+C or ⌘C): it ${where}.`;
+        shareBox.focus();
+        shareBox.select();
+      },
+    );
   };
   $("share").addEventListener("click", share);
 
