@@ -11,7 +11,7 @@ PY := $(VENV)/bin/python
 export PYO3_PYTHON := $(abspath $(PY))
 export MPLBACKEND := Agg
 
-.PHONY: docs errata-page docs-setup test-docs setup demo test test-rust lint doc publish-check test-python examples bench stubtest clean lab lab-build test-web web-setup fuzz fuzz-python fuzz-web wheel test-wheel msrv
+.PHONY: docs lab-shots errata-page docs-setup test-docs setup demo test test-rust lint doc publish-check test-python examples bench stubtest clean lab lab-build test-web web-setup fuzz fuzz-python fuzz-web wheel test-wheel msrv
 
 $(PY):
 	$(PYTHON) -m venv $(VENV)
@@ -82,7 +82,7 @@ errata-page:
 docs-setup:
 	cd docs && npm ci --no-audit --no-fund
 
-docs: lab-build docs-setup
+docs: lab-shots docs-setup
 	$(PY) -m sphinx -W --keep-going -b html docs docs/_build/html
 
 # The built site in Debian's chromium (docs/tests/site.test.mjs): home, math, gallery, API, lab, search.
@@ -91,6 +91,11 @@ test-docs: docs
 
 lab-build: setup web-setup
 	bash web/build.sh
+
+# One screenshot of each scene of the built lab (web/tests/shots.test.mjs, Debian's chromium) into
+# docs/_generated/lab/ (git-ignored), for the pages that show the lab (docs/_ext/pictures.py).
+lab-shots: lab-build
+	cd web && PYTHON=$(abspath $(PY)) node --test tests/shots.test.mjs
 
 lab: lab-build
 	$(VENV)/bin/poinsot lab

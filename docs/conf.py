@@ -35,6 +35,7 @@ extensions = [
     "sphinx_copybutton",
     "sphinx_design",
     "poinsot_docs",
+    "pictures",
     "cited_equations",
 ]
 
@@ -90,7 +91,11 @@ sphinx_gallery_conf = {
     "matplotlib_animations": True,
     "download_all_examples": False,
     "remove_config_comments": True,
-    "within_subsection_order": "FileNameSortKey",
+    # The unit's order (docs/_ext/pictures.py), not the alphabet.
+    "within_subsection_order": "pictures.UnitOrder",
+    # No execution-times pages: sphinx-gallery builds them with scripts and styles from public
+    # CDNs, which would be the only network requests of the site.
+    "write_computation_times": False,
     "show_memory": False,
     "line_numbers": False,
     "plot_gallery": os.environ.get("POINSOT_DOCS_GALLERY", "1") != "0",
