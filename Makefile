@@ -85,6 +85,17 @@ docs-setup:
 docs: lab-shots docs-setup
 	$(PY) -m sphinx -W --keep-going -b html docs docs/_build/html
 
+# The static site for any web host: the documentation with the lab inside (lab/index.html, and
+# lab/poinsot-lab.html, the lab as one file to download), relative addresses only, nothing loaded
+# from the network, no 127.0.0.1 (docs/_ext/check_site.py reads every page), and .nojekyll so
+# that GitHub Pages serves the _static/ folders as they are. SITE_DIR is the folder the release
+# workflow (.github/workflows/release.yml) publishes to GitHub Pages: upload exactly this folder.
+SITE_DIR := docs/_build/html
+.PHONY: site
+site: docs
+	touch $(SITE_DIR)/.nojekyll
+	$(PY) docs/_ext/check_site.py $(SITE_DIR)
+
 # The built site in Debian's chromium (docs/tests/site.test.mjs): home, math, gallery, API, lab, search.
 test-docs: docs
 	cd docs && node --test --test-concurrency=1 tests/
