@@ -100,6 +100,7 @@ def test_wheel_is_abi3_and_carries_the_lab(wheel: Path) -> None:
         "poinsot/py.typed",
         "poinsot/_core.pyi",
         "poinsot/lab/index.html",
+        "poinsot/lab/poinsot-lab.html",  # the lab as one file: `poinsot lab --export`
     ):
         assert required in names, required
     assert any(re.fullmatch(r"poinsot/_core\.(abi3\.so|pyd)", n) for n in names), sorted(names)
