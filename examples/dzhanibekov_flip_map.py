@@ -3,24 +3,23 @@
 
 How long does a body spun near its intermediate axis wait before it flips? The answer depends on
 the direction of ω₀ in the body, and steeply so near the separatrix. This example maps it: one
-call of :func:`poinsot.sweep.free_body` solves 130,321 bodies (moments 1, 2, 3 kg m², ω₀ of
-size 1 rad/s, the direction of ω₀ over 361 × 361 polar angles from axis 3 and azimuths from
-axis 1), exactly (Jacobi elliptic functions), and colours the direction by the flip interval — the
-time between reversals of the intermediate component ω₂, half the period of ω.
+call of :func:`poinsot.sweep.free_body` solves 130,321 bodies, exactly (Jacobi elliptic
+functions), and colours each direction of ω₀ by the flip interval — the time between reversals
+of the intermediate component ω₂, half the period of ω. The periods are checked against an
+independent closed form and an RK4 integration.
 
-Drawn on the map in closed form: the separatrix, the directions with 2 T I₂ = L², i.e.
-I₁ (I₂ − I₁) ω₁² = I₃ (I₃ − I₂) ω₃² — here tan²θ cos²φ = 3 — where the flip interval grows
-without bound; it divides the directions whose ω circles the largest axis from those that circle
-the smallest, and crosses itself at the intermediate axis.
-
-The sweep's periods are compared with the closed form T = 4 K(m) / ω_p (Landau & Lifshitz §37),
-with ω_p² = (I₃ − I₂)(L² − 2 T I₁) / (I₁ I₂ I₃) and
-1 − m = (I₃ − I₁)(L² − 2 T I₂) / ((I₃ − I₂)(L² − 2 T I₁)) where L² > 2 T I₂ (I₁ and I₃ swapped
-otherwise), evaluated here with scipy's ``ellipkm1`` — an implementation independent of the
-core's Carlson forms — and, at a few directions along one meridian, with the flips of ω₂ counted
-in an RK4 integration. Writes dzhanibekov_flip_map.png into out/ (or the folder given as first
-argument).
+Writes dzhanibekov_flip_map.png into out/ (or the folder given as first argument).
 """
+
+# %%
+# One sweep over the directions of ω₀
+# -----------------------------------
+#
+# Moments 1, 2, 3 kg m², ω₀ of size 1 rad/s, its direction over 361 × 361 polar angles from
+# axis 3 and azimuths from axis 1: :func:`poinsot.sweep.free_body` returns an xarray Dataset
+# with each body's regime, period and flip interval. The counts say about which axis ω goes
+# round (``about max axis``, ``about min axis``) and how many bodies start on a principal axis
+# (``steady``).
 
 from __future__ import annotations
 
@@ -48,6 +47,19 @@ elapsed = time.perf_counter() - start
 print(f"{ds.regime.size:,} free bodies (direction of ω₀) swept in {elapsed:.2f} s")
 regimes, counts = np.unique(ds.regime.values, return_counts=True)
 print("  " + ", ".join(f"{r}: {n:,}" for r, n in zip(regimes, counts)))
+
+# %%
+# The period in closed form (Landau & Lifshitz §37)
+# -------------------------------------------------
+#
+# The period of ω is 4 K(m) / ω_p, with ω_p² = (I₃ − I₂)(L² − 2 T I₁) / (I₁ I₂ I₃) and
+# 1 − m = (I₃ − I₁)(L² − 2 T I₂) / ((I₃ − I₂)(L² − 2 T I₁)) where L² > 2 T I₂ (I₁ and I₃
+# swapped otherwise), from the energy T and |L| of ω₀ alone. It is evaluated here with scipy's
+# ``ellipkm1``, an implementation independent of the core's Carlson forms. Look at the median
+# relative difference (about 1e-16) and at the worst one in units of the closed form's own
+# rounding near the separatrix, 1e-15 × (1 + L²/|L² − 2 T I₂|): below one. On a principal axis
+# nothing flips (no period), and at the intermediate axis itself the closed form in doubles
+# loses what the core keeps.
 
 # The closed-form period at every direction, from T and L of ω₀ alone.
 w = ds.omega0.values  # (polar, azimuth, 3), rad/s
@@ -94,7 +106,14 @@ print(
     " (the closed form in doubles: L² − 2 T I₂ rounds to 0)"
 )
 
-# The flip interval scales as 1/|ω₀|: a coarser sweep over three sizes.
+# %%
+# The flip interval scales as 1/|ω₀|
+# ----------------------------------
+#
+# Euler's equations are unchanged when ω and 1/t are scaled together, so a body spun twice as
+# fast flips twice as often. A coarser sweep over three sizes of ω₀ checks that flip interval
+# × |ω₀| is the same at every direction.
+
 sizes = ps.sweep.free_body(
     moments=I,
     omega_magnitude=[0.5, 1.0, 4.0],
@@ -109,7 +128,15 @@ spread = np.ptp(scaled.values[:, finite], axis=0) / scaled.values[1, finite]
 assert spread.max() < 1e-13
 print(f"  flip interval × |ω₀| the same at |ω₀| = 0.5, 1, 4 rad/s: worst spread {spread.max():.1e}")
 
-# An independent count of flips: RK4 on a few directions of one meridian, ω₂'s zero crossings.
+# %%
+# An independent count of flips: RK4
+# -----------------------------------
+#
+# Along the meridian at azimuth 60°, six bodies are integrated by RK4 (:func:`poinsot.simulate`,
+# dt = 1 ms) over six flips, and the times between ω₂'s zero crossings are measured. The
+# exact and the integrated intervals agree to better than 1e-4, on both sides of the
+# separatrix.
+
 cut = 60.0  # azimuth, degrees
 line = ds.sel(omega_azimuth=cut)
 sep = np.degrees(np.arctan(np.sqrt(I3 * (I3 - I2) / (I1 * (I2 - I1))) / np.cos(np.radians(cut))))
@@ -128,6 +155,17 @@ print(
     f"  RK4 flips along azimuth {cut:g}° (separatrix at {sep:.1f}° and {180 - sep:.1f}°):"
     + "".join(f"\n    polar {th:5.1f}°: exact {f:8.5f} s, RK4 {m:8.5f} s" for th, f, m in checks)
 )
+
+# %%
+# The map
+# -------
+#
+# Drawn on it in closed form: the separatrix, the directions with 2 T I₂ = L², i.e.
+# I₁ (I₂ − I₁) ω₁² = I₃ (I₃ − I₂) ω₃² — here tan²θ cos²φ = 3 — where the flip interval grows
+# without bound. It divides the directions whose ω circles the largest axis from those that
+# circle the smallest, and crosses itself at the intermediate axis (the star): spun near it,
+# a body waits longer and longer before its first flip. The right panel is the dotted meridian:
+# the closed form, the sweep and the RK4 flips on one curve, rising steeply at the separatrix.
 
 import matplotlib
 
@@ -222,4 +260,4 @@ ax2.set_yticks([3, 4, 6, 10, 20, 40], ["3", "4", "6", "10", "20", "40"])
 ax2.minorticks_off()
 ax2.legend(loc="upper left", fontsize=8)
 fig.savefig(out / "dzhanibekov_flip_map.png", dpi=110)
-print(f"figure written to {out}/dzhanibekov_flip_map.png")
+print("figure written: dzhanibekov_flip_map.png")

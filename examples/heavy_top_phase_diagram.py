@@ -4,29 +4,20 @@
 How a heavy symmetric top moves depends on how fast it spins and how far it leans. This example
 sweeps both at once — 177 tilts × 240 spins, 42,480 tops in one call of
 :func:`poinsot.sweep.heavy_top` — and colours the plane by the shape the axis traces
-(:data:`poinsot.MOTION_CLASSES`). Each top starts at rest in θ (θ̇₀ = 0) at tilt θ₀ with spin ω₃ and
-precession rate φ̇₀ = Ω = 2 rad/s (I₁ = 1 kg m², I₃ = 0.5 kg m², m g l = 1 N m).
+(:data:`poinsot.MOTION_CLASSES`), with the unit's closed-form curves drawn on it and checked
+against the sweep.
 
-Drawn on it, in closed form (none of them computed by the sweep):
-
-* the steady-precession curve: the tops for which Ω is a root of the unit's quadratic 2.116,
-  m g l = Ω (I₃ ω₃ − I₁ Ω cos θ₀), i.e. ω₃ = (m g l + I₁ Ω² cos θ₀) / (I₃ Ω). Below it θ₀ is the
-  top's highest point and it waves below; above it θ₀ is the lowest point and the top rises;
-* the minimum spin for steady precession at any rate, 2.118–2.119:
-  ω₃ ≥ (2 / I₃) (m g l I₁ cos θ₀)^½ — the envelope of the steady curves of all Ω; this one touches
-  it where Ω² = m g l / (I₁ cos θ₀) (θ₀ = 75.5°): left of there Ω is the fast root, right of
-  there the slow one;
-* its value at θ₀ → 0, the sleeping-top threshold 2 (m g l I₁)^½ / I₃ = 4 rad/s: an upright top
-  spinning faster stays asleep (``is_sleeping_stable``);
-* the tops whose axis passes through the vertical, p_φ = p_ψ, i.e. ω₃ = I₁ Ω (1 + cos θ₀) / I₃:
-  on it the rising axis reaches the vertical (θ₁ = 0); a faster top turns back short of it with
-  φ̇ reversed near its highest point — the axis loops.
-
-The right panel is the nutation's amplitude θ₂ − θ₁ from the same sweep: it vanishes on the
-steady-precession curve. The example checks each closed-form curve against the sweep (to the
-grid's resolution), and a second sweep confirms that a top released with φ̇₀ = 0 always traces
-cusps. Writes heavy_top_phase_diagram.png into out/ (or the folder given as first argument).
+Writes heavy_top_phase_diagram.png into out/ (or the folder given as first argument).
 """
+
+# %%
+# One sweep over tilt and spin
+# ----------------------------
+#
+# Each top starts at rest in θ (θ̇₀ = 0) at tilt θ₀ with spin ω₃ and precession rate
+# φ̇₀ = Ω = 2 rad/s (I₁ = 1 kg m², I₃ = 0.5 kg m², m g l = 1 N m). The sweep returns each top's
+# motion class, turning points and whether it would sleep upright; the counts say how many
+# tops wave, loop, or sit exactly on a boundary.
 
 from __future__ import annotations
 
@@ -51,6 +42,26 @@ print(f"{ds.motion_class.size:,} tops (θ₀ × ω₃) swept in {elapsed:.2f} s"
 classes, counts = np.unique(ds.motion_class.values, return_counts=True)
 print("  " + ", ".join(f"{c}: {n:,}" for c, n in zip(classes, counts)))
 
+# %%
+# The closed-form curves
+# ----------------------
+#
+# None of these is computed by the sweep:
+#
+# * the steady-precession curve: the tops for which Ω is a root of the unit's quadratic 2.116,
+#   m g l = Ω (I₃ ω₃ − I₁ Ω cos θ₀), i.e. ω₃ = (m g l + I₁ Ω² cos θ₀) / (I₃ Ω). Below it θ₀ is
+#   the top's highest point and it waves below; above it θ₀ is the lowest point and the top
+#   rises;
+# * the minimum spin for steady precession at any rate, 2.118–2.119:
+#   ω₃ ≥ (2 / I₃) (m g l I₁ cos θ₀)^½ — the envelope of the steady curves of all Ω; this one
+#   touches it where Ω² = m g l / (I₁ cos θ₀) (θ₀ = 75.5°): left of there Ω is the fast root,
+#   right of there the slow one;
+# * its value at θ₀ → 0, the sleeping-top threshold 2 (m g l I₁)^½ / I₃ = 4 rad/s: an upright
+#   top spinning faster stays asleep (``is_sleeping_stable``);
+# * the tops whose axis passes through the vertical, p_φ = p_ψ, i.e.
+#   ω₃ = I₁ Ω (1 + cos θ₀) / I₃: on it the rising axis reaches the vertical (θ₁ = 0); a faster
+#   top turns back short of it with φ̇ reversed near its highest point — the axis loops.
+
 # The closed-form curves, one value of ω₃ per tilt.
 steady = (MGL + I1 * OMEGA**2 * np.cos(tilt)) / (I3 * OMEGA)  # Ω a root of 2.116
 minimum = np.array([ps.HeavyTop.min_spin(I1, I3, MGL, th) for th in tilt])  # 2.119
@@ -67,7 +78,15 @@ assert np.isclose(sleeping, 2.0 * np.sqrt(MGL * I1) / I3) and np.isclose(
     minimum[0], sleeping, rtol=1e-3
 )
 
-# Checks of the sweep against the curves, to the grid's resolution (one step of ω₃).
+# %%
+# The sweep against the curves
+# ----------------------------
+#
+# To the grid's resolution (one step of ω₃): per tilt, the spin of least nutation lies on the
+# steady-precession curve, the first spin that loops lies on p_φ = p_ψ, every top that neither
+# waves nor loops lies on one of the two, and ``is_sleeping_stable`` switches at the threshold.
+# Look at the two "worst" numbers: both within one grid step.
+
 step = spin[1] - spin[0]
 amplitude = ds.turning_points.sel(turning_point="theta2") - ds.turning_points.sel(
     turning_point="theta1"
@@ -91,12 +110,26 @@ asleep = ds.is_sleeping_stable.values
 assert np.all(asleep == (spin > sleeping)[None, :])
 print(f"  is_sleeping_stable switches at ω₃ = {sleeping:.4f} rad/s, the threshold 2(m g l I₁)^½/I₃")
 
-# A top released with no precession (φ̇₀ = 0) traces cusps whatever its spin and tilt.
+# %%
+# Released without precession: always cusps
+# -----------------------------------------
+#
+# A second sweep over the same plane with φ̇₀ = 0: the axis starts at rest, at its highest
+# point, so whatever the spin and tilt it traces cusps (the middle case of Goldstein's Fig. 5.9).
+
 cusps = ps.sweep.heavy_top(
     I1=I1, I3=I3, mgl=MGL, theta=tilt, omega3=spin, quantities=["motion_class"]
 )
 assert np.all(cusps.motion_class.values == "cusps")
 print(f"  released with φ̇₀ = 0: all {cusps.motion_class.size:,} tops trace cusps")
+
+# %%
+# The diagram
+# -----------
+#
+# Left, the motion class over the plane (blue: waves, orange: loops) with the four curves.
+# Right, the nutation's amplitude θ₂ − θ₁ from the same sweep: it vanishes on the
+# steady-precession curve (dashed), where the top precesses without nodding.
 
 import matplotlib
 
@@ -157,4 +190,4 @@ fig.suptitle(
     f"heavy top, I₁ = {I1:g}, I₃ = {I3:g} kg m², m g l = {MGL:g} N m: {ds.motion_class.size:,} tops in one sweep"
 )
 fig.savefig(out / "heavy_top_phase_diagram.png", dpi=110)
-print(f"figure written to {out}/heavy_top_phase_diagram.png")
+print("figure written: heavy_top_phase_diagram.png")

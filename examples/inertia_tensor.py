@@ -92,11 +92,11 @@ print(cone.inertia_about([0.0, 0.0, 0.0]))
 # A skewed body and its principal axes (eqs. 2.46–2.50, 2.60–2.66)
 # ----------------------------------------------------------------
 #
-# Four point masses placed with no symmetry make a body with products of inertia: I is full, and L is
-# not parallel to ω. The principal axes are the eigenvectors of I (columns of a proper
-# rotation A); in them Aᵀ I A is diagonal — look at the vanishing off-diagonal entries — and the
-# principal moments I₁ ≤ I₂ ≤ I₃ are its diagonal. Spun at 3 rad/s about z, the body's angular
-# momentum L = I·ω (2.63) leans away from ω by the printed angle.
+# Four point masses placed with no symmetry make a body with products of inertia: I is full,
+# and L is not parallel to ω. The principal axes are the eigenvectors of I (columns of a
+# proper rotation A); in them Aᵀ I A is diagonal — look at the vanishing off-diagonal entries —
+# and the principal moments I₁ ≤ I₂ ≤ I₃ are its diagonal. Spun at 3 rad/s about z, the body's
+# angular momentum L = I·ω (2.63) leans away from ω by the printed angle.
 
 # Products of inertia are negated (I_xy = −Σ m x y), so L = I·ω (2.63).
 masses = np.array([1.0, 2.0, 1.5, 0.5])

@@ -8,8 +8,20 @@ quadratic 2.116; they exist only above the minimum spin 2.119. For a fast top th
 approximates them by m g l/p_ψ (2.121, slow) and p_ψ/(2 I1 cos θ0) (2.120, fast) — the latter a
 misprint: the correct approximation is p_ψ/(I1 cos θ0). This example prints both roots beside
 the approximations, shows that a top started at either exact rate does not nutate (and one
-started at the misprinted rate does), and plots the rates against the spin into out/.
+started at the misprinted rate does), and plots the rates against the spin into out/ (or the
+folder given as the first argument).
 """
+
+# %%
+# The two rates against the spin (eqs. 2.116–2.121)
+# -------------------------------------------------
+#
+# A top with I₁ = 1 kg m², I₃ = 0.5 kg m², m g l = 0.3 N m held at θ₀ = 0.6 rad. Below the
+# minimum spin 2.119 it cannot precess steadily at all. Above it, for each spin ω₃, the two
+# roots of 2.116 (``slow`` and ``fast``) beside the unit's approximations: m g l/p_ψ (2.121)
+# for the slow one, and for the fast one the correct p_ψ/(I₁ cos θ₀) and 2.120 as printed,
+# p_ψ/(2 I₁ cos θ₀). Look down the columns: the approximations close in on the roots as the
+# spin grows, except the printed 2.120, which stays at half the fast rate.
 
 from __future__ import annotations
 
@@ -37,6 +49,15 @@ for w3 in (1.05 * w_min, 5.0, 10.0, 40.0, 200.0):
         f"{s.fast_approx_as_printed:11.4f}"
     )
 
+# %%
+# Started at each rate: no nutation, except at the misprint
+# ---------------------------------------------------------
+#
+# At ω₃ = 40 rad/s (the errata's example), a top started at θ₀ with θ̇₀ = 0 and φ̇₀ at each
+# rate. At the slow and the fast root its turning points coincide (θ₂ − θ₁ = 0):
+# steady precession. Started at the rate 2.120 prints, it nods. Below the minimum spin, the
+# call refuses and says why.
+
 s = ps.HeavyTop.steady_precession(I1, I3, MGL, THETA0, 40.0)
 assert round(s.fast, 4) == 24.2176 and round(s.fast_approx, 4) == 24.2326  # the errata example
 for name, rate in (
@@ -59,6 +80,13 @@ try:
 except ps.PoinsotError as exc:
     print(f"  below the minimum spin: {exc}")
 
+# %%
+# The picture
+# -----------
+#
+# Both roots of 2.116 against the spin up to 20 rad/s, with the minimum spin 2.119 where they
+# meet and the fast-top approximations 2.120 (corrected) and 2.121 beside them.
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -67,4 +95,4 @@ from poinsot.plots.top import plot_steady_precession
 plot_steady_precession(I1, I3, MGL, THETA0, max_spin=20.0).savefig(
     out / "steady_precession.png", dpi=110, bbox_inches="tight"
 )
-print(f"picture written to {out}/steady_precession.png")
+print("picture written: steady_precession.png")

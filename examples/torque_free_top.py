@@ -9,6 +9,18 @@ exactly and by the geometric integrators. Writes free_omega.png, free_cones.png,
 free_polhodes.png and free_conservation.png into out/ (or the folder given as the argument).
 """
 
+# %%
+# A prolate and an oblate top (eqs. 2.77–2.97)
+# --------------------------------------------
+#
+# :class:`poinsot.FreeSymmetricTop` gives the free symmetric top in closed form. For each top
+# (I₁ = 2, I₃ = 1 kg m²: prolate; I₁ = 1, I₃ = 1.8: oblate), started with ω = (0.6, 0, 1)
+# rad/s: ω precesses about the symmetry axis at the rate Ω (2.83) with amplitude A (2.88),
+# tracing the body cone of half-angle α_b (2.90), which rolls on the space cone α_s
+# (2.97) — outside it for the prolate top, inside for the oblate one. Look at the sign of Ω and
+# at "rolls". Each is checked against an integration of Euler's equations, and ω₃² and A² are
+# recovered from the energy and |L| alone (2.95–2.96).
+
 from __future__ import annotations
 
 import sys
@@ -40,6 +52,17 @@ for i1, i3 in ((2.0, 1.0), (1.0, 1.8)):
         abs(ps.FreeSymmetricTop.amplitude_squared_from(i1, i3, top.energy, l_mag) - 0.36) < 1e-12
     )  # 2.96
 
+# %%
+# The asymmetric top, exactly and by three integrators
+# ----------------------------------------------------
+#
+# I = (1, 2, 3) kg m² with ω₀ = (1, 0.1, 1) rad/s: :class:`poinsot.FreeRigidBody` solves it with
+# Jacobi elliptic functions. Then 1000 s by three integrators with the same step 0.01 s,
+# against it. Look at the columns: the two splitting methods keep |L| to rounding (each of
+# their sub-steps turns L without changing its length); the sixth-order one also keeps the
+# energy and ends within 1e-10 of the exact ω; the second-order one drifts most in ω, RK4
+# lies in between.
+
 body = ps.FreeRigidBody([1.0, 2.0, 3.0], [1.0, 0.1, 1.0])
 print(
     f"\nasymmetric top I = (1, 2, 3), ω₀ = (1, 0.1, 1): {body.regime}, m = {body.parameter:.6f}, "
@@ -55,6 +78,17 @@ for method, dt in (("splitting2", 0.01), ("splitting6", 0.01), ("rk4", 0.01)):
         f"max |Δ|L|/|L|| = {tr.momentum_error().max():.1e}"
     )
 
+# %%
+# The pictures
+# ------------
+#
+# First, ω(t) of the asymmetric top: an RK4 run beside the exact solution (dashed). Second,
+# the body cone rolling on the outside of the space cone for a prolate top (the unit's
+# Fig. 2.11). Third, the polhodes of a body with the same moments: the paths of ω on its
+# energy ellipsoid, circling the largest and smallest axes and parted by the separatrix
+# through the intermediate one. Last, the energy and |L| errors of the
+# three integrators over the 1000 s run.
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -67,4 +101,4 @@ plot_cones(ps.FreeSymmetricTop(2.0, 1.0, [0.8, 0.0, 1.0]), 0.5).savefig(
 )
 plot_polhodes().savefig(out / "free_polhodes.png", dpi=110)
 plot_conservation(runs).savefig(out / "free_conservation.png", dpi=110, bbox_inches="tight")
-print(f"pictures written to {out}/")
+print("pictures written: free_omega.png, free_cones.png, free_polhodes.png, free_conservation.png")
