@@ -1,7 +1,7 @@
 # Stubs of the compiled module poinsot._core (checked with `python -m mypy.stubtest`).
 # Sections mirror the binding files in crates/poinsot-py/src/.
 from collections.abc import Callable, Sequence
-from typing import Any, TypedDict, final
+from typing import Any, TypeAlias, TypedDict, final
 
 import numpy as np
 from numpy.typing import NDArray
@@ -222,10 +222,11 @@ def screw_new(
     pitch: float | None = None,
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], float, float, float]: ...
 def screw_displacement(
-    axis: NDArray[np.float64], point: NDArray[np.float64], angle: float, slide: float
-) -> tuple[NDArray[np.float64], NDArray[np.float64]]: ...
-def screw_displacement_at(
-    axis: NDArray[np.float64], point: NDArray[np.float64], angle: float, slide: float, s: float
+    axis: NDArray[np.float64],
+    point: NDArray[np.float64],
+    angle: float,
+    slide: float,
+    s: float | None = None,
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]: ...
 def screw_apply(
     axis: NDArray[np.float64],
@@ -769,17 +770,15 @@ def dynamics_simulate(
     max_steps: int,
     progress: Callable[[float], Any] | None,
 ) -> TrajectoryCore: ...
+# A batch's settings, as dynamics._batch_settings makes them: duration (s), the torque's kind,
+# (3,) vector and scalar, the method, dt (s or None) and max_steps.
+_BatchSettings: TypeAlias = tuple[float, str, NDArray[np.float64], float, str, float | None, int]
+
 def dynamics_simulate_batch(
     moments: NDArray[np.float64],
     omega0: NDArray[np.float64],
     attitude0: NDArray[np.float64] | None,
-    duration: float,
-    torque_kind: str,
-    torque_vector: NDArray[np.float64],
-    torque_scalar: float,
-    method: str,
-    dt: float | None,
-    max_steps: int,
+    settings: _BatchSettings,
     progress: Callable[[float], Any] | None,
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], int]: ...
 
@@ -894,13 +893,7 @@ def sweep_free_body(
 def sweep_simulate(
     dims: Sequence[tuple[str, int, int, str]],
     columns: Sequence[tuple[str, NDArray[np.float64], int | None]],
-    duration: float,
-    torque_kind: str,
-    torque_vector: NDArray[np.float64],
-    torque_scalar: float,
-    method: str,
-    dt: float | None,
-    max_steps: int,
+    settings: _BatchSettings,
     check_only: bool,
     progress: Callable[[float], Any] | None = None,
 ) -> dict[str, NDArray[Any]] | None: ...

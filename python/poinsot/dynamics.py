@@ -495,10 +495,6 @@ def simulate_batch(
         "simulate_batch takes the built-in torques only (no callables)",
     )
     w_out, q_out, _steps = _core.dynamics_simulate_batch(
-        m,
-        w,
-        q,
-        *settings,
-        as_callable(progress, "progress"),
+        m, w, q, settings, as_callable(progress, "progress")
     )
     return np.asarray(w_out), np.asarray(q_out)

@@ -416,7 +416,7 @@ class Screw(show.Displayed):
         PoinsotError
             ``s`` not finite.
         """
-        return _core.screw_displacement_at(
+        return _core.screw_displacement(
             self.axis, self.point, self.angle, self.slide, as_scalar(s, "s")
         )
 

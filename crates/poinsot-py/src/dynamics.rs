@@ -106,27 +106,34 @@ impl PyTrajectory {
     }
 }
 
-/// The settings of a batch of bodies (`simulate_batch`, `sweep.simulate`) as Python passes them
-/// — the torque's kind, (3,) vector and scalar, the method, the step and the step limit — as
-/// the core's torque and options.
+/// The settings of a batch of bodies (`simulate_batch`, `sweep.simulate`) as Python's
+/// `dynamics._batch_settings` makes them, one tuple: the duration (s), the torque's kind, (3,)
+/// vector and scalar, the method, the step (s, None: each body's default) and the step limit.
+pub(crate) type BatchSettings<'py> = (
+    f64,
+    String,
+    PyReadonlyArray1<'py, f64>,
+    f64,
+    String,
+    Option<f64>,
+    usize,
+);
+
+/// A batch's [`BatchSettings`] as the core's duration (s), torque and options.
 pub(crate) fn batch_settings(
-    torque_kind: &str,
-    torque_vector: &PyReadonlyArray1<'_, f64>,
-    torque_scalar: f64,
-    method: &str,
-    dt: Option<f64>,
-    max_steps: usize,
-) -> PyResult<(Torque, SimulateOptions)> {
-    let torque = parse::<TorqueKind>(torque_kind)?
-        .torque(vector("torque", torque_vector)?, torque_scalar)
+    settings: &BatchSettings<'_>,
+) -> PyResult<(f64, Torque, SimulateOptions)> {
+    let (duration, kind, torque_vector, torque_scalar, method, dt, max_steps) = settings;
+    let torque = parse::<TorqueKind>(kind)?
+        .torque(vector("torque", torque_vector)?, *torque_scalar)
         .py()?;
     let opts = SimulateOptions {
         method: Method::parse(method).py()?,
-        dt,
-        max_steps,
+        dt: *dt,
+        max_steps: *max_steps,
         ..SimulateOptions::default()
     };
-    Ok((torque, opts))
+    Ok((*duration, torque, opts))
 }
 
 /// Simulates one body (see `poinsot.simulate`).
@@ -188,39 +195,28 @@ fn dynamics_simulate<'py>(
     PyTrajectory::new(py, tr)
 }
 
+/// The final states of a batch: ω (N, 3), attitudes (N, 4) and the steps taken per body.
+type Finals<'py> = (Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<f64>>, usize);
+
 /// Simulates many bodies in parallel (see `poinsot.simulate_batch`): principal moments (N, 3),
-/// ω₀ (N, 3), optional attitudes (N, 4) → (ω (N, 3), attitude (N, 4), steps per body).
+/// ω₀ (N, 3), optional attitudes (N, 4) and the [`BatchSettings`] → [`Finals`].
 #[export]
-#[pyo3(signature = (moments, omega0, attitude0, duration, torque_kind, torque_vector, torque_scalar, method, dt, max_steps, progress))]
-#[allow(clippy::too_many_arguments, clippy::type_complexity)]
+#[pyo3(signature = (moments, omega0, attitude0, settings, progress))]
 fn dynamics_simulate_batch<'py>(
     py: Python<'py>,
     moments: PyReadonlyArray2<'py, f64>,
     omega0: PyReadonlyArray2<'py, f64>,
     attitude0: Option<PyReadonlyArray2<'py, f64>>,
-    duration: f64,
-    torque_kind: &str,
-    torque_vector: PyReadonlyArray1<'py, f64>,
-    torque_scalar: f64,
-    method: &str,
-    dt: Option<f64>,
-    max_steps: usize,
+    settings: BatchSettings<'py>,
     progress: Option<Bound<'py, PyAny>>,
-) -> PyResult<(Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<f64>>, usize)> {
+) -> PyResult<Finals<'py>> {
     let m = rows_view::<3>("moments", &moments)?;
     let w = rows_view::<3>("omega0", &omega0)?;
     let q = match &attitude0 {
         Some(a) => Some(rows_view::<4>("attitude0", a)?),
         None => None,
     };
-    let (torque, opts) = batch_settings(
-        torque_kind,
-        &torque_vector,
-        torque_scalar,
-        method,
-        dt,
-        max_steps,
-    )?;
+    let (duration, torque, opts) = batch_settings(&settings)?;
     let out = run(py, progress.as_ref(), || {
         dyn_core::simulate_batch(&m, &w, q.as_deref(), duration, &torque, &opts)
     })?;

@@ -201,30 +201,22 @@ fn screw_new(
     )?))
 }
 
-/// The displacement `(R (3, 3), t (3,))` of a screw.
+/// The displacement `(R (3, 3), t (3,))` of a screw, or with `s` the displacement `(R(s),
+/// t(s))` at fraction `s` of its motion.
 #[export]
+#[pyo3(signature = (axis, point, angle, slide, s=None))]
 fn screw_displacement(
     axis: numpy::PyReadonlyArray1<'_, f64>,
     point: numpy::PyReadonlyArray1<'_, f64>,
     angle: f64,
     slide: f64,
+    s: Option<f64>,
 ) -> PyResult<(Matrix, Vector)> {
-    let (r, t) = screw_from_parts(&axis, &point, angle, slide, None)?.displacement();
-    Ok((Matrix(r), Vector(t)))
-}
-
-/// The displacement `(R(s) (3, 3), t(s) (3,))` at fraction `s` of a screw motion.
-#[export]
-fn screw_displacement_at(
-    axis: numpy::PyReadonlyArray1<'_, f64>,
-    point: numpy::PyReadonlyArray1<'_, f64>,
-    angle: f64,
-    slide: f64,
-    s: f64,
-) -> PyResult<(Matrix, Vector)> {
-    let (r, t) = screw_from_parts(&axis, &point, angle, slide, None)?
-        .displacement_at(s)
-        .py()?;
+    let screw = screw_from_parts(&axis, &point, angle, slide, None)?;
+    let (r, t) = match s {
+        Some(s) => screw.displacement_at(s).py()?,
+        None => screw.displacement(),
+    };
     Ok((Matrix(r), Vector(t)))
 }
 
@@ -256,7 +248,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     add_functions!(m; euler_to_matrix, matrix_to_euler, matrix_to_quaternion,
         quaternion_to_matrix, quaternion_multiply, rotation_axis, axis_angle_to_matrix,
         rotate_vectors, check_rotation_matrix, angular_velocity, euler_rates, screw_axis,
-        screw_new, screw_displacement, screw_displacement_at, screw_apply);
+        screw_new, screw_displacement, screw_apply);
     m.add("EULER_LOCK_TOL", rot::EULER_LOCK_TOL)?;
     m.add("RATES_LOCK_TOL", rot::RATES_LOCK_TOL)?;
     m.add("ROTATION_MATRIX_TOL", rot::ROTATION_MATRIX_TOL)?;

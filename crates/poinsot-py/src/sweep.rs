@@ -14,7 +14,7 @@ use pyo3::types::PyDict;
 
 use crate::control::run;
 use crate::convert::{rows_out, slice};
-use crate::dynamics::batch_settings;
+use crate::dynamics::{batch_settings, BatchSettings};
 use crate::earth::{PyEarth, PyFallModel};
 use crate::errors::IntoPy;
 
@@ -195,35 +195,20 @@ fn free_body_columns(d: &Bound<'_, PyDict>, out: &[core::FreeBodyPoint]) -> PyRe
     set_rows(d, "axis_rate", out, |p| p.axis_stability.map(|a| a.rate))
 }
 
-/// Ensembles under a torque (`simulate_batch`'s settings: duration, torque as kind, (3,)
-/// vector and scalar, method, dt, max_steps): `{"omega" (N, 3), "attitude" (N, 4)}`; None with
-/// `check_only`.
+/// Ensembles under a torque (`simulate_batch`'s [`BatchSettings`]): `{"omega" (N, 3),
+/// "attitude" (N, 4)}`; None with `check_only`.
 #[export]
-#[pyo3(signature = (dims, columns, duration, torque_kind, torque_vector, torque_scalar, method, dt, max_steps, check_only, progress=None))]
-#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (dims, columns, settings, check_only, progress=None))]
 fn sweep_simulate<'py>(
     py: Python<'py>,
     dims: Dims,
     columns: Columns<'py>,
-    duration: f64,
-    torque_kind: &str,
-    torque_vector: PyReadonlyArray1<'py, f64>,
-    torque_scalar: f64,
-    method: &str,
-    dt: Option<f64>,
-    max_steps: usize,
+    settings: BatchSettings<'py>,
     check_only: bool,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Out<'py>> {
     let g = grid(&dims, &columns)?;
-    let (torque, opts) = batch_settings(
-        torque_kind,
-        &torque_vector,
-        torque_scalar,
-        method,
-        dt,
-        max_steps,
-    )?;
+    let (duration, torque, opts) = batch_settings(&settings)?;
     let check = || core::check_simulate(&g, duration, &torque, &opts);
     let compute = || core::simulate(&g, duration, &torque, &opts);
     sweep(py, check_only, progress, check, compute, |d, out| {

@@ -455,7 +455,8 @@ def _simulate_settings(args: dict[str, Any], keywords: dict[str, Any]) -> Any:
         "dt": "default" if step is None else step,
         "max_steps": steps,
     }
-    return settings, attrs
+    # The core's sweep takes the batch's settings as one tuple, as simulate_batch.
+    return (settings,), attrs
 
 
 simulate = _sweep_function(
