@@ -54,12 +54,12 @@ print("  " + ", ".join(f"{r}: {n:,}" for r, n in zip(regimes, counts)))
 #
 # The period of ω is 4 K(m) / ω_p, with ω_p² = (I₃ − I₂)(L² − 2 T I₁) / (I₁ I₂ I₃) and
 # 1 − m = (I₃ − I₁)(L² − 2 T I₂) / ((I₃ − I₂)(L² − 2 T I₁)) where L² > 2 T I₂ (I₁ and I₃
-# swapped otherwise), from the energy T and |L| of ω₀ alone. It is evaluated here with scipy's
-# ``ellipkm1``, an implementation independent of the core's Carlson forms. Look at the median
-# relative difference (about 1e-16) and at the worst one in units of the closed form's own
-# rounding near the separatrix, 1e-15 × (1 + L²/|L² − 2 T I₂|): below one. On a principal axis
-# nothing flips (no period), and at the intermediate axis itself the closed form in doubles
-# loses what the core keeps.
+# swapped otherwise), from the energy T and the angular momentum L of ω₀ alone. It is evaluated
+# here with scipy's ``ellipkm1``, an implementation independent of the core's Carlson forms.
+# Look at the median relative difference (about 1e-16) and at the worst one in units of the
+# closed form's own rounding near the separatrix, ``1e-15 × (1 + L²/|L² − 2 T I₂|)``: below
+# one. On a principal axis nothing flips (no period), and at the intermediate axis itself the
+# closed form in doubles loses what the core keeps.
 
 # The closed-form period at every direction, from T and L of ω₀ alone.
 w = ds.omega0.values  # (polar, azimuth, 3), rad/s
@@ -107,12 +107,12 @@ print(
 )
 
 # %%
-# The flip interval scales as 1/|ω₀|
-# ----------------------------------
+# The flip interval goes as one over the spin
+# -------------------------------------------
 #
 # Euler's equations are unchanged when ω and 1/t are scaled together, so a body spun twice as
 # fast flips twice as often. A coarser sweep over three sizes of ω₀ checks that flip interval
-# × |ω₀| is the same at every direction.
+# × ``|ω₀|`` is the same at every direction.
 
 sizes = ps.sweep.free_body(
     moments=I,

@@ -19,7 +19,7 @@ free_polhodes.png and free_conservation.png into out/ (or the folder given as th
 # tracing the body cone of half-angle α_b (2.90), which rolls on the space cone α_s
 # (2.97) — outside it for the prolate top, inside for the oblate one. Look at the sign of Ω and
 # at "rolls". Each is checked against an integration of Euler's equations, and ω₃² and A² are
-# recovered from the energy and |L| alone (2.95–2.96).
+# recovered from the energy and the size of L alone (2.95–2.96).
 
 from __future__ import annotations
 
@@ -58,10 +58,10 @@ for i1, i3 in ((2.0, 1.0), (1.0, 1.8)):
 #
 # I = (1, 2, 3) kg m² with ω₀ = (1, 0.1, 1) rad/s: :class:`poinsot.FreeRigidBody` solves it with
 # Jacobi elliptic functions. Then 1000 s by three integrators with the same step 0.01 s,
-# against it. Look at the columns: the two splitting methods keep |L| to rounding (each of
-# their sub-steps turns L without changing its length); the sixth-order one also keeps the
-# energy and ends within 1e-10 of the exact ω; the second-order one drifts most in ω, RK4
-# lies in between.
+# against it. Look at the columns: the two splitting methods keep the size of L to rounding
+# (each of their sub-steps turns L without changing its length); the sixth-order one also
+# keeps the energy and ends within 1e-10 of the exact ω; the second-order one drifts most in
+# ω, RK4 lies in between.
 
 body = ps.FreeRigidBody([1.0, 2.0, 3.0], [1.0, 0.1, 1.0])
 print(
@@ -86,7 +86,7 @@ for method, dt in (("splitting2", 0.01), ("splitting6", 0.01), ("rk4", 0.01)):
 # the body cone rolling on the outside of the space cone for a prolate top (the unit's
 # Fig. 2.11). Third, the polhodes of a body with the same moments: the paths of ω on its
 # energy ellipsoid, circling the largest and smallest axes and parted by the separatrix
-# through the intermediate one. Last, the energy and |L| errors of the
+# through the intermediate one. Last, the errors in the energy and in the size of L of the
 # three integrators over the 1000 s run.
 
 import matplotlib
