@@ -8,7 +8,10 @@
 * ``config-inited`` too: the derivations page and the errata page are written from
   :mod:`poinsot.derive` (docs/_ext/derive_pages.py).
 * ``build-finished``: the built browser lab (python/poinsot/lab, ``make lab-build``) is copied
-  to ``lab/`` of the site, so the site alone is a complete offline companion.
+  to ``lab/`` of the site, so the site alone is a complete offline companion (its one-file form,
+  ``lab/poinsot-lab.html``, too: a download); the teaching notebooks are copied beside their
+  pages (``notebooks/NAME.ipynb``), and ``html-page-context`` puts a link to download the
+  notebook under each notebook page's title (issue 23, item 7).
 """
 
 from __future__ import annotations
@@ -140,6 +143,40 @@ def _copy_lab(app: Any, exc: Exception | None) -> None:
     shutil.copytree(LAB, dest)
 
 
+def _copy_notebook_sources(app: Any, exc: Exception | None) -> None:
+    """notebooks/*.ipynb beside their pages (notebooks/NAME.html), for the download links."""
+    if exc is not None or app.builder.format != "html":
+        return
+    dest = Path(app.outdir) / "notebooks"
+    dest.mkdir(exist_ok=True)
+    for src in sorted(NOTEBOOKS.glob("*.ipynb")):
+        shutil.copy2(src, dest / src.name)
+
+
+#: The first heading's end in a page's body: the download link goes right after it.
+_FIRST_H1_END = re.compile(r"</h1>")
+
+
+def _notebook_download_link(
+    app: Any, pagename: str, templatename: str, context: dict[str, Any], doctree: Any
+) -> None:
+    """A notebook's page (notebooks/NAME) gets "Download this notebook" under its title: a
+    relative link to NAME.ipynb, copied beside the page by :func:`_copy_notebook_sources`."""
+    folder, _, name = pagename.partition("/")
+    if folder != "notebooks" or "/" in name or not (NOTEBOOKS / f"{name}.ipynb").is_file():
+        return
+    body = context.get("body")
+    if not isinstance(body, str):
+        return
+    link = (
+        f'<p class="poinsot-download"><a class="reference download" href="{name}.ipynb" '
+        f'download="{name}.ipynb">Download this notebook</a> ({name}.ipynb) to run it '
+        "yourself in Jupyter, with poinsot installed.</p>"
+    )
+    body, n = _FIRST_H1_END.subn("</h1>\n" + link, body, count=1)
+    context["body"] = body if n else link + body
+
+
 _BAR = re.compile(r"(?<!\\)\|")
 
 
@@ -162,6 +199,8 @@ def setup(app: Any) -> dict[str, Any]:
     app.connect("config-inited", _copy_notebooks)
     app.connect("config-inited", derive_pages.write_pages)
     app.connect("build-finished", _copy_lab)
+    app.connect("build-finished", _copy_notebook_sources)
+    app.connect("html-page-context", _notebook_download_link)
     return {"parallel_read_safe": True, "parallel_write_safe": True}
 
 
