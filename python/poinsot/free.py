@@ -19,6 +19,7 @@ numbers, same checks: anything not plainly a finite number goes the general way)
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -64,6 +65,25 @@ def _quat(value: Any, name: str) -> FloatArray | None:
 def _times(t: Any) -> tuple[FloatArray, tuple[int, ...]]:
     arr = as_float_array(t, "t")
     return np.ascontiguousarray(arr.reshape(-1)), arr.shape
+
+
+def _per_time(name: str, width: int, doc: str) -> Callable[[FreeSymmetricTop, Any], FloatArray]:
+    """The method ``name(self, t)`` of :class:`FreeSymmetricTop`, documented by ``doc``: the
+    core's ``name_at`` for a plain number ``t`` (the small call), else its ``name`` over ``t``
+    flattened, shaped ``t.shape + (width,)`` (the core's methods looked up once, here)."""
+    one = getattr(_core.SymmetricTopSolution, f"{name}_at")
+    many = getattr(_core.SymmetricTopSolution, name)
+
+    def method(self, t: Any) -> FloatArray:
+        x = plain_float(t)
+        if x is not None:
+            return one(self._core, x)
+        ts, shape = _times(t)
+        return np.asarray(many(self._core, ts)).reshape(shape + (width,))
+
+    method.__name__, method.__qualname__ = name, f"FreeSymmetricTop.{name}"
+    method.__doc__ = doc
+    return method
 
 
 #: ``omega0`` of both free bodies.
@@ -235,30 +255,20 @@ class FreeSymmetricTop(show.Displayed):
         the body cone surrounds the space cone) or "none" (spherical)."""
         return {"prolate": "outside", "oblate": "inside"}.get(self.shape, "none")
 
-    def omega(self, t: Any) -> FloatArray:
-        """ω(t) in body components (2.85–2.86), rad/s; ``t`` (s) of any shape → shape + (3,)."""
-        x = plain_float(t)
-        if x is not None:
-            return self._core.omega_at(x)
-        ts, shape = _times(t)
-        return np.asarray(self._core.omega(ts)).reshape(shape + (3,))
-
-    def attitude(self, t: Any) -> FloatArray:
+    omega = _per_time(
+        "omega",
+        3,
+        """ω(t) in body components (2.85–2.86), rad/s; ``t`` (s) of any shape → shape + (3,).""",
+    )
+    attitude = _per_time(
+        "attitude",
+        4,
         """The attitude at ``t`` (s), quaternions [w, x, y, z] (body → space), shape + (4,):
-        R(t) = R₀ · Rot(L̂_body(0), |L| t / I₁) · Rot(e₃, Ω t)."""
-        x = plain_float(t)
-        if x is not None:
-            return self._core.attitude_at(x)
-        ts, shape = _times(t)
-        return np.asarray(self._core.attitude(ts)).reshape(shape + (4,))
-
-    def symmetry_axis(self, t: Any) -> FloatArray:
-        """The symmetry axis e₃ in space components at ``t``, shape + (3,)."""
-        x = plain_float(t)
-        if x is not None:
-            return self._core.symmetry_axis_at(x)
-        ts, shape = _times(t)
-        return np.asarray(self._core.symmetry_axis(ts)).reshape(shape + (3,))
+        R(t) = R₀ · Rot(L̂_body(0), |L| t / I₁) · Rot(e₃, Ω t).""",
+    )
+    symmetry_axis = _per_time(
+        "symmetry_axis", 3, """The symmetry axis e₃ in space components at ``t``, shape + (3,)."""
+    )
 
     @staticmethod
     def omega3_squared_from(I1: float, I3: float, energy: float, angular_momentum: float) -> float:

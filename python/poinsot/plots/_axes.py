@@ -25,6 +25,12 @@ def few_ticks(ax: Any, n: int = 5) -> None:
             axis.labelpad = 1.5 * size
 
 
+def legend_below(ax: Any, ncol: int, drop: float) -> None:
+    """The legend of ``ax`` in ``ncol`` columns, centred under the axes with its top ``drop``
+    (a fraction of the axes' height) below their bottom edge, clear of the x label."""
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -drop), ncol=ncol, borderaxespad=0.0)
+
+
 def label_3d(ax: Any, x: str, y: str, z: str) -> None:
     """The axis labels of a 3-D axes: x and y upright, z upright too when short, else
     turned to read upwards along the axis (matplotlib's own turn may set it upside down)."""

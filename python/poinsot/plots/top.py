@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ..top import HeavyTop
-from ._axes import cube_limits, few_ticks, label_3d
+from ._axes import cube_limits, few_ticks, label_3d, legend_below
 from ._mpl import (
     check_style,
     figure_style,
@@ -121,10 +121,9 @@ def plot_axis_locus(
         ax.set_ylim(-1.05, 1.05)
         ax.set_xticks([-1.0, -0.5, 0.0, 0.5, 1.0])
         ax.set_yticks([-1.0, -0.5, 0.0, 0.5, 1.0])
-        ax.set_xlabel("X of the axis (1)")
-        ax.set_ylabel("Y of the axis (1)")
+        ax.set(xlabel="X of the axis (1)", ylabel="Y of the axis (1)")
         ax.set_title(f"axis seen from above: {top.motion_class}")
-        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, borderaxespad=0.0)
+        legend_below(ax, ncol=2, drop=0.14)
     return fig
 
 
@@ -215,10 +214,9 @@ def plot_steady_precession(
             lo, hi = np.min(finite), np.max(finite)
             ax.set_ylim(min(lo, 0.0) - 0.05 * (hi - lo), hi + 0.05 * (hi - lo))
         few_ticks(ax, 6)
-        ax.set_xlabel("spin ω₃ (rad/s)")
-        ax.set_ylabel("precession rate φ̇ (rad/s)")
+        ax.set(xlabel="spin ω₃ (rad/s)", ylabel="precession rate φ̇ (rad/s)")
         ax.set_title(f"steady precession at θ₀ = {theta0:.4g} rad")
-        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=1, borderaxespad=0.0)
+        legend_below(ax, ncol=1, drop=0.16)
     return fig
 
 

@@ -3,7 +3,7 @@ by chunk on a dask cluster (``client=``) or lazily (dask arrays given), and into
 chunk (``to_zarr=``); then labelling the results as an xarray ``Dataset``.
 
 Every chunk is computed by the core from the slices of the keywords with the offsets of the
-chunk (``Plan.core_columns``): the same code on the same numbers as the whole sweep in one
+chunk (``Plan.core_call``): the same code on the same numbers as the whole sweep in one
 call, hence the same results bit for bit, and errors naming the indices of the whole sweep.
 """
 
@@ -23,7 +23,7 @@ from .. import _core
 from .._progress import delayed_bar, stderr_interactive
 from .._validate import as_callable, as_count
 from ..errors import ArgumentTypeError, PoinsotError
-from ._spec import Output, Plan, bytes_per_point, component_dim, component_labels
+from ._spec import CoreCall, Output, Plan, bytes_per_point, component_dim, component_labels
 
 #: The optional extra that brings xarray, dask, distributed and zarr.
 EXTRA = "parallel"
@@ -70,26 +70,23 @@ def progress_reporter(
 
 
 def block_results(
-    model_name: str,
-    dims: list[tuple[str, int, int, str]],
-    columns: list[tuple[str, Any, Optional[int]]],
-    settings: tuple[Any, ...],
+    call: CoreCall,
     names: Sequence[str],
     progress: Optional[Callable[[float], Any]] = None,
     decode: bool = True,
 ) -> dict[str, np.ndarray]:
-    """The results ``names`` of one block (or of the whole sweep) of ``model_name``: arrays of
+    """The results ``names`` of one block (or of the whole sweep), ``call``: arrays of
     the block's shape (plus a components' dimension), categories as strings (``decode``) or
     their uint8 codes. Runs where it is called: in this process, or on a dask worker (it is
     imported there by name)."""
     from . import MODELS
 
-    model = MODELS[model_name]
-    shape = tuple(d[1] for d in dims)
+    model = MODELS[call.model]
+    shape = tuple(d[1] for d in call.dims)
     # Arrays unpickled on a worker may be unaligned (small ones, in a message's buffer): the
     # core reads aligned, C-contiguous float64.
-    columns = [(k, np.require(v, np.float64, ["C", "A"]), d) for k, v, d in columns]
-    out = model.core(dims, columns, *settings, False, progress)
+    columns = [(k, np.require(v, np.float64, ["C", "A"]), d) for k, v, d in call.columns]
+    out = model.core(call.dims, columns, *call.settings, False, progress)
     result = {}
     for o in model.outputs:
         if o.name not in names:
@@ -102,19 +99,13 @@ def block_results(
     return result
 
 
-def block_to_zarr(
-    model_name: str,
-    dims: list[tuple[str, int, int, str]],
-    columns: list[tuple[str, Any, Optional[int]]],
-    settings: tuple[Any, ...],
-    outputs: Sequence[Output],
-    path: str,
-) -> int:
-    """Computes one block and writes it into its region of the zarr store at ``path`` (made
-    by :func:`run` with one zarr chunk a block); returns its number of points."""
+def block_to_zarr(call: CoreCall, outputs: Sequence[Output], path: str) -> int:
+    """Computes one block, ``call``, and writes it into its region of the zarr store at
+    ``path`` (made by :func:`run` with one zarr chunk a block); returns its number of points."""
     xr = require("xarray")
     names = [o.name for o in outputs]
-    results = block_results(model_name, dims, columns, settings, names, decode=False)
+    results = block_results(call, names, decode=False)
+    dims = call.dims
     region = {name: slice(offset, offset + n) for name, n, offset, _ in dims}
     data = {}
     for o in outputs:
@@ -205,30 +196,28 @@ def run(
         to_zarr = _check_zarr_path(to_zarr)
     if not distributed:
         # Locally: one call of the core over the whole sweep (it checks every point first).
-        dims, cols = plan.core_columns()
         with progress_reporter(progress, f"sweep.{model.name}") as report:
-            whole = block_results(model.name, dims, cols, plan.settings, names, report)
+            whole = block_results(plan.core_call(), names, report)
         return dataset(xr, plan, whole)
 
     # Chunk by chunk: every point checked here first (cheap), then the chunks sent out.
-    dims, cols = plan.core_columns()
-    model.core(dims, cols, *plan.settings, True, None)
+    whole_call = plan.core_call()
+    model.core(whole_call.dims, whole_call.columns, *plan.settings, True, None)
     sizes = chunk_sizes(plan, chunks)
     todo = blocks(sizes)
     path = None
     if to_zarr is not None:
         path = _zarr_template(xr, plan, sizes, to_zarr)
     elif client is not None or not plan.lazy:
-        _core.sweep_check_memory(plan.core_columns()[0], bytes_per_point(plan.outputs))
+        _core.sweep_check_memory(whole_call.dims, bytes_per_point(plan.outputs))
 
     if plan.lazy and client is None and path is None:
         return _lazy(xr, plan, sizes, todo)
 
     def task(block: list[tuple[int, int]]) -> tuple[Any, ...]:
-        d, c = plan.core_columns(block)
         if path is not None:
-            return (block_to_zarr, model.name, d, c, plan.settings, plan.outputs, path)
-        return (block_results, model.name, d, c, plan.settings, names)
+            return (block_to_zarr, plan.core_call(block), plan.outputs, path)
+        return (block_results, plan.core_call(block), names)
 
     results: list[Any]
     with progress_reporter(progress, f"sweep.{model.name}") as report:
@@ -333,8 +322,7 @@ def _lazy(
     grid = tuple(len(s) for s in sizes)
     pieces: dict[str, dict[tuple[int, ...], Any]] = {n: {} for n in names}
     for index, block in zip(itertools.product(*[range(g) for g in grid]), todo):
-        d, c = plan.core_columns(block)
-        res = dask.delayed(block_results, pure=True)(plan.model.name, d, c, plan.settings, names)
+        res = dask.delayed(block_results, pure=True)(plan.core_call(block), names)
         shape = tuple(b - a for a, b in block)
         for o in plan.outputs:
             dtype = _DTYPES[o.kind] if o.kind != "category" else _category_dtype(o)

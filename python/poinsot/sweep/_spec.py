@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import Any, Callable, Optional
+from typing import Any, Callable, NamedTuple, Optional
 
 import numpy as np
 
@@ -168,6 +168,18 @@ class Column:
     dim: Optional[int]
 
 
+class CoreCall(NamedTuple):
+    """One call of a model's core function, over the whole sweep or one block of it (sent to
+    dask workers by value): the model's name (a key of ``MODELS``), the core's dimensions
+    ``(name, length, offset, argument)`` and columns ``(keyword, values, dimension)``, and the
+    model's settings."""
+
+    model: str
+    dims: list[tuple[str, int, int, str]]
+    columns: list[tuple[str, FloatArray, Optional[int]]]
+    settings: tuple[Any, ...]
+
+
 @dataclass
 class Plan:
     """A sweep ready to run: the model, its dimensions and columns, the model's settings (the
@@ -190,12 +202,9 @@ class Plan:
     def points(self) -> int:
         return math.prod(self.shape)
 
-    def core_columns(
-        self, block: Optional[Sequence[tuple[int, int]]] = None
-    ) -> tuple[list[tuple[str, int, int, str]], list[tuple[str, FloatArray, Optional[int]]]]:
-        """The core's dimensions ``(name, length, offset, argument)`` and columns of the whole
-        sweep, or of the block of ``[(start, stop)]`` per dimension (the keywords' slices, with
-        offsets)."""
+    def core_call(self, block: Optional[Sequence[tuple[int, int]]] = None) -> CoreCall:
+        """The core's call over the whole sweep, or over the block of ``[(start, stop)]`` per
+        dimension (the keywords' slices, with offsets)."""
         if block is None:
             block = [(0, d.size) for d in self.dims]
         dims = [
@@ -209,7 +218,7 @@ class Plan:
                 w = c.key.width
                 values = values[start * w : stop * w]
             cols.append((c.key.name, np.require(values, np.float64, ["C", "A"]), c.dim))
-        return dims, cols
+        return CoreCall(self.model.name, dims, cols, self.settings)
 
 
 def _values(key: Key, value: Any) -> tuple[FloatArray, bool, Optional[tuple[int, ...]]]:
