@@ -492,7 +492,7 @@ async function main(): Promise<void> {
     const where = location.protocol === "file:"
       ? "works on this computer (a link to this file; to share the lab, send the file itself)"
       : host === "127.0.0.1" || host === "localhost" || host === "[::1]"
-        ? "works on this computer while poinsot lab runs"
+        ? "works on this computer while poinsot lab runs (to hand the lab to others: poinsot lab --export FILE.html)"
         : `works for anyone who can open ${location.host}`;
     return { url, where };
   }
