@@ -8,6 +8,7 @@ checks the expressions, the runner labels and the actions' inputs."""
 
 from __future__ import annotations
 
+import re
 import shutil
 import subprocess
 from pathlib import Path
@@ -118,6 +119,12 @@ def test_publishing_runs_only_on_tags_and_after_the_tests(workflow: dict[Any, An
     assert "secrets." not in WORKFLOW.read_text(encoding="utf-8")  # no stored token
     assert "make site" in [s.get("run") for s in _steps(jobs["site"])]
     assert "actions/deploy-pages@v4" in _uses(jobs["pages"])
+    # the folder uploaded to Pages is the one `make site` writes and checks
+    site_dir = re.search(r"^SITE_DIR := (\S+)$", (ROOT / "Makefile").read_text(), re.MULTILINE)
+    assert site_dir, "Makefile: no SITE_DIR"
+    assert jobs["site"]["env"]["SITE"] == site_dir.group(1)
+    upload = next(s for s in _steps(jobs["site"]) if "upload-pages-artifact" in str(s.get("uses")))
+    assert upload["with"]["path"] == "${{ env.SITE }}"
     # the jobs no tag runs are the only ones a pull request can reach
     untagged = {n for n, j in jobs.items() if "if" not in j}
     assert untagged == {"lab", "wheels", "sdist", "test", "test-sdist"}
