@@ -214,27 +214,16 @@ def euler_rates(
 def screw_axis(
     R: NDArray[np.float64], t: NDArray[np.float64]
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], float, float, float]: ...
+# A screw as the core's functions take it: (axis (3,), point (3,), angle, slide).
+_ScrewParts: TypeAlias = tuple[NDArray[np.float64], NDArray[np.float64], float, float]
+
 def screw_new(
-    axis: NDArray[np.float64],
-    point: NDArray[np.float64],
-    angle: float,
-    slide: float,
-    pitch: float | None = None,
+    screw: _ScrewParts, pitch: float | None = None
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], float, float, float]: ...
 def screw_displacement(
-    axis: NDArray[np.float64],
-    point: NDArray[np.float64],
-    angle: float,
-    slide: float,
-    s: float | None = None,
+    screw: _ScrewParts, s: float | None = None
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]: ...
-def screw_apply(
-    axis: NDArray[np.float64],
-    point: NDArray[np.float64],
-    angle: float,
-    slide: float,
-    x: NDArray[np.float64],
-) -> NDArray[np.float64]: ...
+def screw_apply(screw: _ScrewParts, x: NDArray[np.float64]) -> NDArray[np.float64]: ...
 
 # ---- inertia (inertia.rs) ----
 

@@ -367,10 +367,12 @@ class Screw(show.Displayed):
 
     def __post_init__(self) -> None:
         parts = _core.screw_new(
-            as_vector3(self.axis, "axis", finite=False),
-            as_vector3(self.point, "point", finite=False),
-            _real(self.angle, "angle"),
-            _real(self.slide, "slide"),
+            (
+                as_vector3(self.axis, "axis", finite=False),
+                as_vector3(self.point, "point", finite=False),
+                _real(self.angle, "angle"),
+                _real(self.slide, "slide"),
+            ),
             None if self.pitch is None else _real(self.pitch, "pitch"),
         )
         for name, value in zip(("axis", "point", "angle", "slide", "pitch"), parts):
@@ -398,10 +400,15 @@ class Screw(show.Displayed):
 
     __hash__ = None  # type: ignore[assignment]  # holds arrays
 
+    @property
+    def _parts(self) -> tuple[FloatArray, FloatArray, float, float]:
+        """The screw as the core's functions take it: (axis, point, angle, slide)."""
+        return self.axis, self.point, self.angle, self.slide
+
     def displacement(self) -> tuple[FloatArray, FloatArray]:
         """The displacement ``(R, t)`` of this screw: ``R`` (3, 3) is the rotation by ``angle``
         about ``axis`` and ``t = point - R @ point + slide * axis`` (3,), m."""
-        return _core.screw_displacement(self.axis, self.point, self.angle, self.slide)
+        return _core.screw_displacement(self._parts)
 
     def displacement_at(self, s: float) -> tuple[FloatArray, FloatArray]:
         """The displacement ``(R(s), t(s))`` at fraction ``s`` (dimensionless) of the screw
@@ -416,17 +423,13 @@ class Screw(show.Displayed):
         PoinsotError
             ``s`` not finite.
         """
-        return _core.screw_displacement(
-            self.axis, self.point, self.angle, self.slide, as_scalar(s, "s")
-        )
+        return _core.screw_displacement(self._parts, as_scalar(s, "s"))
 
     def apply(self, x: Any) -> FloatArray:
         """Moves points ``x`` (..., 3), m, by the screw motion:
         ``point + R @ (x - point) + slide * axis`` (= ``R @ x + t``). Returns (..., 3)."""
         flat, lead = _records(x, "x", (3,))
-        return _core.screw_apply(self.axis, self.point, self.angle, self.slide, flat).reshape(
-            lead + (3,)
-        )
+        return _core.screw_apply(self._parts, flat).reshape(lead + (3,))
 
 
 def screw_axis(R: Any, t: Any) -> Screw:

@@ -173,46 +173,38 @@ fn screw_out(s: rot::Screw) -> (Vector, Vector, f64, f64, f64) {
     (Vector(s.axis), Vector(s.point), s.angle, s.slide, s.pitch)
 }
 
-/// The screw `(axis, point, angle, slide, pitch)` as a core `Screw` (checked by `Screw::new`).
-fn screw_from_parts(
-    axis: &numpy::PyReadonlyArray1<'_, f64>,
-    point: &numpy::PyReadonlyArray1<'_, f64>,
-    angle: f64,
-    slide: f64,
-    pitch: Option<f64>,
-) -> PyResult<rot::Screw> {
+/// A screw as Python passes it: `(axis (3,), point (3,) m, angle rad, slide m)`.
+type ScrewParts<'py> = (
+    numpy::PyReadonlyArray1<'py, f64>,
+    numpy::PyReadonlyArray1<'py, f64>,
+    f64,
+    f64,
+);
+
+/// The screw of `parts` and `pitch` as a core `Screw` (checked by `Screw::new`).
+fn screw_from_parts(parts: &ScrewParts<'_>, pitch: Option<f64>) -> PyResult<rot::Screw> {
+    let (axis, point, angle, slide) = parts;
     let (axis, point) = (vector("axis", axis)?, vector("point", point)?);
-    rot::Screw::new(axis, point, angle, slide, pitch).py()
+    rot::Screw::new(axis, point, *angle, *slide, pitch).py()
 }
 
 /// A screw from its parts, checked by the core: `(axis, point, angle, slide, pitch)` with the
 /// axis normalised and the pitch derived (a `pitch` given must agree).
 #[export]
-#[pyo3(signature = (axis, point, angle, slide, pitch=None))]
+#[pyo3(signature = (screw, pitch=None))]
 fn screw_new(
-    axis: numpy::PyReadonlyArray1<'_, f64>,
-    point: numpy::PyReadonlyArray1<'_, f64>,
-    angle: f64,
-    slide: f64,
+    screw: ScrewParts<'_>,
     pitch: Option<f64>,
 ) -> PyResult<(Vector, Vector, f64, f64, f64)> {
-    Ok(screw_out(screw_from_parts(
-        &axis, &point, angle, slide, pitch,
-    )?))
+    Ok(screw_out(screw_from_parts(&screw, pitch)?))
 }
 
 /// The displacement `(R (3, 3), t (3,))` of a screw, or with `s` the displacement `(R(s),
 /// t(s))` at fraction `s` of its motion.
 #[export]
-#[pyo3(signature = (axis, point, angle, slide, s=None))]
-fn screw_displacement(
-    axis: numpy::PyReadonlyArray1<'_, f64>,
-    point: numpy::PyReadonlyArray1<'_, f64>,
-    angle: f64,
-    slide: f64,
-    s: Option<f64>,
-) -> PyResult<(Matrix, Vector)> {
-    let screw = screw_from_parts(&axis, &point, angle, slide, None)?;
+#[pyo3(signature = (screw, s=None))]
+fn screw_displacement(screw: ScrewParts<'_>, s: Option<f64>) -> PyResult<(Matrix, Vector)> {
+    let screw = screw_from_parts(&screw, None)?;
     let (r, t) = match s {
         Some(s) => screw.displacement_at(s).py()?,
         None => screw.displacement(),
@@ -224,13 +216,10 @@ fn screw_displacement(
 #[export]
 fn screw_apply<'py>(
     py: Python<'py>,
-    axis: numpy::PyReadonlyArray1<'py, f64>,
-    point: numpy::PyReadonlyArray1<'py, f64>,
-    angle: f64,
-    slide: f64,
+    screw: ScrewParts<'py>,
     x: numpy::PyReadonlyArray2<'py, f64>,
 ) -> PyResult<Out<'py>> {
-    let screw = screw_from_parts(&axis, &point, angle, slide, None)?;
+    let screw = screw_from_parts(&screw, None)?;
     let points = rows_view::<3>("x", &x)?;
     // In chunks of points, Ctrl-C polled between two (on this thread: `run`'s monitor).
     batch(py, &[points.len(), 3], |out| {
