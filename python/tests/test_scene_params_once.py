@@ -52,9 +52,11 @@ def test_the_widgets_parameters_are_the_json():
 
 def test_negative_control_a_slider_restated_differently_is_caught():
     data = json.loads(widgets.SCENES_JSON.read_text(encoding="utf-8"))
-    data["heavytop"]["params"][1]["max"] = 41
+    w3 = data["heavytop"]["params"][1]
+    was = (w3["min"], w3["max"], w3["step"], w3["value"], w3["unit"])
+    w3["max"] += 1
     assert _differences(widgets.SCENE_PARAMS, data) == [
-        "heavytop.w3: (0, 40, 0.5, 9, 'rad/s') != (0, 41, 0.5, 9, 'rad/s')"
+        f"heavytop.w3: {was} != {(*was[:1], was[1] + 1, *was[2:])}"
     ]
 
 

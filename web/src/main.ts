@@ -7,8 +7,10 @@ import "./style.css";
 import * as THREE from "three";
 import init, { coreStatus, version, type CoreStatus } from "./core";
 import { aimCamera, createView, fitDistance, freeRect, Labels, projectBox } from "./view";
-import { fmtStep, type Params, type Readout, type Rect, type SceneDef, type SceneInstance } from "./scene";
+import { type NumberParam, type Params, type Readout, type Rect, type SceneDef, type SceneInstance } from "./scene";
 import { SCENES } from "./scenes";
+import { ariaValueText, fromInput, inputRange, resolve, toInput, valueText } from "./sliders";
+import { Recorder } from "./record";
 
 /** What the tests (and a curious user, from the console) can see: window.__lab. */
 interface LabHandle {
@@ -24,6 +26,15 @@ interface LabHandle {
   /** Mean physics time per frame (ms) over the last `PHYSICS_WINDOW` frames. */
   physicsMs: number;
   error: string | null;
+  /** A slider move the core refused (no valid value on its way): the sentence shown; the last
+   * valid state stays on screen. Null when the last move was taken. */
+  refused: string | null;
+  /** The sentence of the last slider move resolved by another slider following or the moved one
+   * stopping (null when taken as it was). */
+  note: string | null;
+  /** Whether a refused slider move is resolved (other slider follows, or the moved one stops);
+   * false sends every move to the core as it is (the negative control of tests/sliders.test.mjs). */
+  couple: boolean;
   /** Whether the page honours prefers-reduced-motion (it starts paused). */
   reducedMotion: boolean;
   /** The core's guard: restarts of the WebAssembly instance after an internal error. */
@@ -37,6 +48,8 @@ interface LabHandle {
   camera(): { position: number[]; target: number[] };
   /** The scene's named points on the screen (page pixels), e.g. a mark's centre. */
   probes(): Record<string, { x: number; y: number }>;
+  /** The record of the readouts over time: its CSV, and the series of one column (record.ts). */
+  record(): { csv: string; series(key: string): { t: number[]; v: number[] } };
 }
 
 const PHYSICS_WINDOW = 120;
@@ -59,7 +72,7 @@ async function main(): Promise<void> {
   view.controls.enableDamping = !reducedMotion;
   const lab: LabHandle = {
     ready: false, version: version(), scenes: SCENES.map((d) => d.id), scene: "", params: {}, t: 0, playing: true, frames: 0,
-    physicsMs: 0, error: null, reducedMotion, core: coreStatus,
+    physicsMs: 0, error: null, refused: null, note: null, couple: true, reducedMotion, core: coreStatus,
     readouts: () => Object.fromEntries(current.readouts().map((r) => [r.key, r.value])),
     seek: (t: number) => { lab.t = t; stepOnce(); },
     layout: () => layoutNow(),
@@ -69,6 +82,7 @@ async function main(): Promise<void> {
       const pts = current.probes?.(view.camera, viewports()[0]) ?? {};
       return Object.fromEntries(Object.entries(pts).map(([k, p]) => [k, { x: p.x + s.x, y: p.y + s.y }]));
     },
+    record: () => ({ csv: recorder.csv(), series: (key: string) => recorder.series(key) }),
   };
   (window as unknown as { __lab: LabHandle }).__lab = lab;
 
@@ -79,6 +93,8 @@ async function main(): Promise<void> {
   const costs: number[] = [];
 
   const alertBox = $("alert");
+  /** The parameters of the state on screen, which the core accepted (null before the first). */
+  let valid: Params | null = null;
   function showError(e: unknown): void {
     const err = e as { name?: string; message?: string };
     lab.error = `${err.name ?? "Error"}: ${err.message ?? String(e)}`;
@@ -88,11 +104,29 @@ async function main(): Promise<void> {
     for (const dd of [...cells.values(), ...pinnedCells.values()]) {
       dd.textContent = "—";
       dd.dataset.value = "null";
+      shown.delete(dd);
     }
   }
   function clearError(): void {
     lab.error = null;
+    lab.refused = null;
     alertBox.hidden = true;
+  }
+  /** A refused slider move: the sentence, the last valid state kept (readouts, view, motion). */
+  function showRefusal(sentence: string): void {
+    lab.refused = sentence;
+    alertBox.textContent = sentence;
+    alertBox.hidden = false;
+  }
+  const sliderNote = document.createElement("p");
+  sliderNote.id = "slider-note";
+  sliderNote.className = "slider-note";
+  sliderNote.setAttribute("role", "status");
+  sliderNote.hidden = true;
+  function showNote(sentence: string | null): void {
+    lab.note = sentence;
+    sliderNote.textContent = sentence ?? "";
+    sliderNote.hidden = sentence === null;
   }
 
   // --- URL <-> state --------------------------------------------------------------------
@@ -143,16 +177,13 @@ async function main(): Promise<void> {
       label.append(name);
       if (spec.kind === "number") {
         const input = document.createElement("input");
-        Object.assign(input, { type: "range", min: String(spec.min), max: String(spec.max), step: String(spec.step), name: spec.key });
-        input.value = String(lab.params[spec.key]);
+        Object.assign(input, { type: "range", ...inputRange(spec), name: spec.key });
         input.dataset.key = spec.key;
+        if (spec.scale === "log") input.dataset.scale = "log";
         const out = document.createElement("output");
-        out.textContent = fmtStep(Number(input.value), spec.step);
-        input.addEventListener("input", () => {
-          out.textContent = fmtStep(Number(input.value), spec.step);
-          setParam(spec.key, Number(input.value));
-        });
         label.append(input, out);
+        showValue(spec, Number(lab.params[spec.key]), label);
+        input.addEventListener("input", () => setParam(spec.key, fromInput(spec, input.value)));
       } else {
         label.classList.add("choice");
         const select = document.createElement("select");
@@ -166,7 +197,27 @@ async function main(): Promise<void> {
       form.append(label);
       controlRows.set(spec.key, label);
     }
+    form.append(sliderNote);
     showApplicable();
+  }
+  /** Puts a slider's thumb, output and spoken value at `x`. */
+  function showValue(spec: NumberParam, x: number, row = controlRows.get(spec.key)): void {
+    const input = row?.querySelector("input");
+    const out = row?.querySelector("output");
+    if (!input || !out) return;
+    input.value = toInput(spec, x);
+    out.textContent = valueText(spec, x);
+    input.setAttribute("aria-valuetext", ariaValueText(spec, x));
+  }
+  /** Puts every control at the current parameters (after a move another slider followed). */
+  function syncControls(): void {
+    for (const spec of def.params) {
+      if (spec.kind === "number") showValue(spec, Number(lab.params[spec.key]));
+      else {
+        const select = controlRows.get(spec.key)?.querySelector("select");
+        if (select && select.value !== lab.params[spec.key]) select.value = String(lab.params[spec.key]);
+      }
+    }
   }
   /** Shows the controls that apply to the current parameters only. */
   function showApplicable(): void {
@@ -175,16 +226,59 @@ async function main(): Promise<void> {
       if (row) row.hidden = spec.when ? !spec.when(lab.params) : false;
     }
   }
+  /** A slider or select moved: the core tries the new parameters; a move it refuses is resolved
+   * by another slider following or the moved one stopping (sliders.ts), or refused with a
+   * sentence naming the moved slider, the last valid state kept on screen. */
   function setParam(key: string, value: number | string): void {
-    lab.params = { ...lab.params, [key]: value };
+    if (!lab.couple || valid === null) {
+      lab.params = { ...lab.params, [key]: value };
+      showApplicable();
+      syncControls();
+      configure();
+      writeUrl();
+      return;
+    }
+    const keyOf = (argument: string) => def.argumentKeys?.[argument] ?? argument;
+    const trial = (p: Params): unknown => {
+      try {
+        current.configure(p);
+        current.step(lab.t);
+        return null;
+      } catch (e) {
+        return e;
+      }
+    };
+    const r = resolve(def.params, valid, key, value, trial, keyOf);
+    lab.params = r.params;
     showApplicable();
+    syncControls();
+    showNote(r.refused ? null : r.note);
     configure();
+    if (r.refused && r.note) showRefusal(r.note);
     writeUrl();
   }
 
   // --- readouts: all of them in the panel, the pinned ones on the canvas ---------------------
+  // The checks of the computation (residuals, drifts, conserved quantities recomputed) in their
+  // own folded list below the results.
   const dl = $("readouts");
+  const checksBox = document.createElement("details");
+  checksBox.className = "checks";
+  const checksSummary = document.createElement("summary");
+  checksSummary.textContent = "Checks of the computation";
+  const checksDl = document.createElement("dl");
+  checksDl.id = "checks";
+  checksDl.className = "readouts";
+  checksBox.append(checksSummary, checksDl);
+  dl.after(checksBox);
+  // The plot of a readout against time and the CSV export, under the scene's own widgets.
+  const recorder = new Recorder(document.createElement("div"));
+  $("scene-extra").after(recorder.box);
   const cells = new Map<string, HTMLElement>();
+  /** What each readout cell shows now (its text, value, warning and detail). */
+  const shown = new WeakMap<HTMLElement, { text: string; value: Readout["value"]; warn: boolean; detail: string }>();
+  const sameValue = (a: Readout["value"], b: Readout["value"]) =>
+    a === b || (Array.isArray(a) && Array.isArray(b) && a.length === b.length && a.every((x, i) => Object.is(x, b[i])));
   const pinnedDl = $("pinned");
   const pinnedCells = new Map<string, HTMLElement>();
   function renderReadouts(): void {
@@ -196,14 +290,20 @@ async function main(): Promise<void> {
         dt.textContent = r.label;
         dd = document.createElement("dd");
         dd.dataset.key = r.key;
-        dl.append(dt, dd);
+        (r.check ? checksDl : dl).append(dt, dd);
         cells.set(r.key, dd);
       }
+      // Only what changed is written: a scene's two dozen readouts cost more in the DOM than
+      // its physics (most of them, the constants, change only with the parameters).
+      const was = shown.get(dd);
+      if (was && was.text === r.text && sameValue(was.value, r.value) && was.warn === !!r.warn && was.detail === (r.detail ?? "")) continue;
       if (dd.textContent !== r.text) dd.textContent = r.text;
       dd.dataset.value = JSON.stringify(r.value);
       dd.classList.toggle("warn", !!r.warn);
       if (dd.title !== (r.detail ?? "")) dd.title = r.detail ?? "";
+      shown.set(dd, { text: r.text, value: Array.isArray(r.value) ? r.value.slice() : r.value, warn: !!r.warn, detail: r.detail ?? "" });
     }
+    checksBox.hidden = checksDl.childElementCount === 0;
     // The pinned readouts: the scene's keys, in its order, then the warnings it pins now.
     const pinnedKeys = typeof def.pinned === "function" ? def.pinned(lab.params) : def.pinned;
     const want = [...pinnedKeys.map((k) => list.find((r) => r.key === k)).filter((r): r is Readout => !!r), ...list.filter((r) => r.pin && !pinnedKeys.includes(r.key))];
@@ -386,10 +486,25 @@ async function main(): Promise<void> {
     try {
       current.configure(lab.params);
       clearError();
+      valid = { ...lab.params };
+      recorder.restart(def.id);
       stepOnce();
       maybeRefit();
     } catch (e) {
-      showError(e);
+      if (valid === null) {
+        showError(e);
+        return;
+      }
+      // The last valid state stays on screen (the sliders back at it), the refusal said.
+      const moved = Object.keys(lab.params).find((k) => lab.params[k] !== valid![k]);
+      const spec = def.params.find((p) => p.key === moved);
+      const err = e as { message?: string };
+      lab.params = { ...valid };
+      current.configure(lab.params);
+      syncControls();
+      showApplicable();
+      stepOnce();
+      showRefusal(`${spec ? spec.label : "This setting"} cannot take that value: ${err.message ?? String(e)}`);
     }
   }
   function stepOnce(): void {
@@ -404,6 +519,7 @@ async function main(): Promise<void> {
     if (costs.length > PHYSICS_WINDOW) costs.shift();
     lab.physicsMs = costs.reduce((a, b) => a + b, 0) / costs.length;
     renderReadouts();
+    recorder.push(lab.t, current.readouts());
   }
 
   const about = $<HTMLDetailsElement>("about");
@@ -411,6 +527,8 @@ async function main(): Promise<void> {
   function openScene(d: SceneDef, q: URLSearchParams): void {
     current?.dispose();
     labels?.dispose();
+    valid = null;
+    showNote(null);
     def = d;
     lab.scene = d.id;
     lab.params = paramsFromUrl(d, q);
@@ -421,6 +539,7 @@ async function main(): Promise<void> {
     costs.length = 0;
     cells.clear();
     dl.replaceChildren();
+    checksDl.replaceChildren();
     pinnedCells.clear();
     pinnedDl.replaceChildren();
     delete pinnedDl.dataset.keys;
@@ -448,10 +567,12 @@ async function main(): Promise<void> {
     });
     home.copy(view.camera.position).sub(view.controls.target).normalize();
     buildControls();
+    recorder.reset(d.id, typeof d.pinned === "function" ? d.pinned(lab.params)[0] : d.pinned[0]);
     // The first layout with this scene's HUD, then the frame.
     try {
       current.configure(lab.params);
       clearError();
+      valid = { ...lab.params };
       stepOnce();
     } catch (e) {
       showError(e);

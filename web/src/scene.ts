@@ -19,6 +19,9 @@ export interface NumberParam {
   max: number;
   step: number;
   value: number;
+  /** "log": the slider moves along a logarithmic scale (a range spanning decades; min > 0), its
+   * values rounded to 3 significant digits. Without it, linear in steps of `step`. */
+  scale?: "log";
   /** Whether the control applies to the current parameters (hidden where it does not; its value
    * is kept). Without it, always. */
   when?: (p: Params) => boolean;
@@ -49,6 +52,9 @@ export interface Readout {
   pin?: boolean;
   /** More detail (the core's own sentence, say), shown as the cell's tooltip. */
   detail?: string;
+  /** A check of the computation (a residual, a drift, a conserved quantity recomputed), not a
+   * result: listed under "Checks" below the headline readouts. */
+  check?: boolean;
 }
 
 /** A rectangle in CSS pixels (of the stage, or of a viewport in it). */
@@ -131,6 +137,10 @@ export interface SceneDef {
   pinned: string[] | ((p: Params) => string[]);
   /** What the 3-D view shows, for the canvas's aria-label. */
   describe: string;
+  /** The parameter key of each core argument whose name differs from it (`omega3` → `w3`): the
+   * shell reads the argument an error of the core names (its message's "argument: ...") to move
+   * or stop the right slider. */
+  argumentKeys?: Record<string, string>;
   create(ctx: SceneContext): SceneInstance;
 }
 

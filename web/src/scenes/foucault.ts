@@ -239,7 +239,7 @@ export const foucaultScene: SceneDef = {
           { key: "sense", label: "plane turns", value: sense, text: sense === "none" ? "not at all" : sense === "undefined" ? "— (no steady turn: see the regime)" : `${sense} (seen from above)`, warn: sense === "undefined" },
           { key: "period", label: "swing period (s)", value: period, text: fmt(period, 7) },
           { key: "jacobi", label: "Jacobi J (J/kg)", value: j, text: fmt(j, 12) },
-          { key: "jacobiDrift", label: "J(t) − J(0) (J/kg)", value: j - j0, text: fmtDiff(j, j0), warn: Math.abs(j - j0) > 1e-6 * Math.abs(j0) },
+          { check: true, key: "jacobiDrift", label: "J(t) − J(0) (J/kg)", value: j - j0, text: fmtDiff(j, j0), warn: Math.abs(j - j0) > 1e-6 * Math.abs(j0) },
         ];
       },
       readouts() {

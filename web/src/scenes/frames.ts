@@ -74,7 +74,7 @@ export const framesScene: SceneDef = {
   title: "Rotating frames",
   short: "Frames",
   angleUnit: "rad",
-  pinned: ["tau", "speedFixed", "speedRotating", "residual"],
+  pinned: ["tau", "speedFixed", "speedRotating", "omegaNow"],
   describe: "a turntable and a particle seen side by side from the fixed frame (left, the table turns) and from the table's own frame (right, the table at rest), with its path and the arrows of its acceleration and of the forces per mass; the fixed axes x′, y′ and the table's axes x, y are labelled",
   blurb:
     "A particle seen from the fixed frame (left, the turntable turns) and from the turntable's own frame (right, the table at rest). " +
@@ -353,7 +353,7 @@ export const framesScene: SceneDef = {
           vecOut("euler", "Euler ω̇×r", terms.euler),
           vecOut("sum", "sum of the four (m/s²)", terms.sum),
           vecOut("accelerationFixed", "r̈′ = F/m (m/s²)", aTrue),
-          { key: "residual", label: "|sum − F/m| (m/s²)", value: residual, text: fmt(residual, 3, aScale), warn: residual > 1e-12 },
+          { check: true, key: "residual", label: "|sum − F/m| (m/s²)", value: residual, text: fmt(residual, 3, aScale), warn: residual > 1e-12 },
           { key: "energy", label: "E = ½mṙ′² + ½kr′² (J)", value: energy, text: `${fmt(energy, 9)} (drift ${fmt(eDrift, 2, Math.max(Math.abs(energy), Math.abs(energy0)))})` },
           {
             key: "jacobi",

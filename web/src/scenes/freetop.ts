@@ -127,9 +127,9 @@ export const freeTopScene: SceneDef = {
           { key: "bodyConeAngle", label: `body cone (${A.name})`, value: top.bodyConeAngle, text: A.angle(top.bodyConeAngle) },
           { key: "spaceConeAngle", label: `space cone (${A.name})`, value: top.spaceConeAngle, text: A.angle(top.spaceConeAngle) },
           { key: "energy", label: "T (J), conserved", value: T0, text: fmt(T0, 8) },
-          { key: "energyNow", label: "T(t) from ω(t) (J)", value: T, text: `${fmt(T, 8)} (rel. drift ${fmt(T0 > 0 ? (T - T0) / T0 : 0, 2, 1)})` },
+          { check: true, key: "energyNow", label: "T(t) from ω(t) (J)", value: T, text: `${fmt(T, 8)} (rel. drift ${fmt(T0 > 0 ? (T - T0) / T0 : 0, 2, 1)})` },
           { key: "angularMomentum", label: "|L| (kg·m²/s)", value: L0, text: fmt(L0, 8) },
-          { key: "angularMomentumNow", label: "|L(t)| from ω(t) (kg·m²/s)", value: Lmag, text: `${fmt(Lmag, 8)} (rel. drift ${fmt(L0 > 0 ? (Lmag - L0) / L0 : 0, 2, 1)})` },
+          { check: true, key: "angularMomentumNow", label: "|L(t)| from ω(t) (kg·m²/s)", value: Lmag, text: `${fmt(Lmag, 8)} (rel. drift ${fmt(L0 > 0 ? (Lmag - L0) / L0 : 0, 2, 1)})` },
         ];
       },
       readouts() {

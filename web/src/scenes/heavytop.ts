@@ -19,6 +19,9 @@ const PATH_SAMPLES = 3000;
 const V_SAMPLES = 240;
 /** The bright trail keeps this many points at most. */
 const TRAIL_CAPACITY = 4000;
+/** The trail's finest time step (s): at most 8 new points per 60 Hz frame of motion, however
+ * fast the top nutates (a 1500 rpm tabletop top nods tens of times a second). */
+const MIN_TRAIL_DT = 1 / 480;
 /** The scene's angle unit: radians, as its rate sliders (rad/s) and the unit's equations. */
 const A = angles("rad");
 /** Below this stage width (CSS px) the V(θ) inset starts folded, so that it does not cover the top. */
@@ -104,6 +107,9 @@ class PotentialPlot {
   private y1 = 1;
   private ePrime = 0;
   private turning: number[] = [];
+  /** The cached layer (curve, lines, labels) and whether it must be redrawn. */
+  private readonly layer = document.createElement("canvas");
+  private layerDirty = true;
   private readonly W = 300;
   private readonly H = 170;
   private readonly pad = { l: 44, r: 10, t: 22, b: 28 };
@@ -123,6 +129,8 @@ class PotentialPlot {
     const dpr = Math.min(2, window.devicePixelRatio || 1);
     this.canvas.width = this.W * dpr;
     this.canvas.height = this.H * dpr;
+    this.layer.width = this.canvas.width;
+    this.layer.height = this.canvas.height;
     Object.assign(this.canvas.style, { width: `${this.W}px`, height: `${this.H}px` });
     this.canvas.setAttribute("role", "img");
     this.canvas.setAttribute("aria-label", "effective potential V(θ) with the energy line E′ and the turning points");
@@ -157,6 +165,7 @@ class PotentialPlot {
     const span = Math.max(ePrime - vmin, 0.3 * (vedge - vmin), 1e-9 * (1 + Math.abs(vmin)));
     this.y0 = vmin - 0.12 * span;
     this.y1 = Math.max(ePrime, vmin) + 0.9 * span;
+    this.layerDirty = true;
   }
 
   private px(theta: number): number {
@@ -167,10 +176,46 @@ class PotentialPlot {
     return Math.max(-10, Math.min(this.H + 10, y));
   }
 
-  /** Draws the plot with the dot at the current θ and V(θ). */
+  /** Draws the plot with the dot at the current θ and V(θ): the curve, the lines and the labels
+   * (which change only with the parameters) from a cached layer, then the state. */
   draw(theta: number, vNow: number): void {
     const g = this.g, W = this.W, H = this.H, P = this.pad;
-    g.clearRect(0, 0, W, H);
+    if (this.layerDirty) {
+      this.layerDirty = false;
+      g.clearRect(0, 0, W, H);
+      this.drawLayer();
+      const cg = this.layer.getContext("2d") as CanvasRenderingContext2D;
+      cg.clearRect(0, 0, this.layer.width, this.layer.height);
+      cg.drawImage(this.canvas, 0, 0);
+    }
+    g.save();
+    g.setTransform(1, 0, 0, 1, 0, 0);
+    g.clearRect(0, 0, this.canvas.width, this.canvas.height);
+    g.drawImage(this.layer, 0, 0);
+    g.restore();
+    g.save();
+    g.beginPath();
+    g.rect(P.l, P.t, W - P.l - P.r, H - P.t - P.b);
+    g.clip();
+    // The state: θ(t) on V, with the kinetic part ½I₁θ̇² = E' − V up to the energy line.
+    if (Number.isFinite(vNow)) {
+      g.strokeStyle = "rgba(255,255,255,0.5)";
+      g.lineWidth = 1;
+      g.beginPath();
+      g.moveTo(this.px(theta), this.py(vNow));
+      g.lineTo(this.px(theta), this.py(this.ePrime));
+      g.stroke();
+      g.fillStyle = "#ffffff";
+      g.beginPath();
+      g.arc(this.px(theta), this.py(vNow), 4, 0, 2 * Math.PI);
+      g.fill();
+    }
+    g.restore();
+  }
+
+  /** The parts of the plot that change only with the parameters. */
+  private drawLayer(): void {
+    const g = this.g, W = this.W, H = this.H, P = this.pad;
     g.font = "11px system-ui, sans-serif";
     g.fillStyle = "#9aa4b1";
     g.fillText("V(θ) (J, 2.110) · E′ (J, 2.109)", P.l, 14);
@@ -217,19 +262,6 @@ class PotentialPlot {
       pen = true;
     });
     g.stroke();
-    // The state: θ(t) on V, with the kinetic part ½I₁θ̇² = E' − V up to the energy line.
-    if (Number.isFinite(vNow)) {
-      g.strokeStyle = "rgba(255,255,255,0.5)";
-      g.lineWidth = 1;
-      g.beginPath();
-      g.moveTo(this.px(theta), this.py(vNow));
-      g.lineTo(this.px(theta), this.py(this.ePrime));
-      g.stroke();
-      g.fillStyle = "#ffffff";
-      g.beginPath();
-      g.arc(this.px(theta), this.py(vNow), 4, 0, 2 * Math.PI);
-      g.fill();
-    }
     g.restore();
     // Value ticks (J) at the edges of the vertical range.
     g.fillStyle = "#9aa4b1";
@@ -240,13 +272,17 @@ class PotentialPlot {
 
 /** The bright trail of the axis' tip over the last stretch of time: points on a fixed time grid
  * (multiples of `dt`, from the core in batches; only new grid points are computed each frame) plus
- * the point at t, so that a seek shows the same trail as playing up to t. */
+ * the point at t, so that a seek shows the same trail as playing up to t. The points lie in order
+ * in a buffer twice the trail's length, drawn from the trail's first point: a frame writes (and
+ * uploads) only its new points, and the trail slides back to the buffer's start once per
+ * trail's length of points — no per-frame copy of the whole trail. */
 class TipTrail {
   readonly obj: THREE.Line;
-  private readonly ring = new Float64Array(3 * TRAIL_CAPACITY);
-  private readonly pos = new Float32Array(3 * (TRAIL_CAPACITY + 1));
+  private readonly pos = new Float32Array(3 * (2 * TRAIL_CAPACITY + 1));
+  /** Grid points start..end are in the buffer, point k at slot k − offset. */
   private start = 0;
   private end = -1;
+  private offset = 0;
   private span = 1;
   private dt = 0.01;
 
@@ -260,39 +296,46 @@ class TipTrail {
     this.span = Math.max(1, Math.min(TRAIL_CAPACITY - 1, Math.ceil(window / dt)));
     this.start = 0;
     this.end = -1;
+    this.offset = 0;
   }
 
   update(top: HeavyTop, t: number, tip: THREE.Vector3): void {
+    const attr = this.obj.geometry.getAttribute("position") as THREE.BufferAttribute;
     const kEnd = Math.floor(t / this.dt + 1e-9);
     const kStart = Math.max(0, kEnd - this.span + 1);
     let from = kStart;
+    // The points already in the buffer are kept when the new trail continues them.
     if (kStart >= this.start && kStart <= this.end + 1 && kEnd >= this.end) from = this.end + 1;
+    else this.offset = kStart;
+    // Room for the new points and the tip: slide the kept ones back to the start.
+    let moved = false;
+    if (kEnd + 1 - this.offset >= 2 * TRAIL_CAPACITY) {
+      const keep = Math.max(kStart, this.offset);
+      if (from > keep) this.pos.copyWithin(0, 3 * (keep - this.offset), 3 * (from - this.offset));
+      this.offset = keep;
+      moved = true;
+    }
     if (kEnd >= from) {
       const times = new Float64Array(kEnd - from + 1);
       for (let k = from; k <= kEnd; k++) times[k - from] = k * this.dt;
       const axis = top.symmetryAxis(times);
-      for (let k = from; k <= kEnd; k++) {
-        const slot = 3 * (k % TRAIL_CAPACITY);
-        const i = 3 * (k - from);
-        this.ring[slot] = R_TIP * axis[i];
-        this.ring[slot + 1] = R_TIP * axis[i + 1];
-        this.ring[slot + 2] = R_TIP * axis[i + 2];
-      }
+      const at = 3 * (from - this.offset);
+      for (let i = 0; i < axis.length; i++) this.pos[at + i] = R_TIP * axis[i];
     }
     this.start = kStart;
     this.end = kEnd;
-    let n = 0;
-    for (let k = kStart; k <= kEnd; k++, n++) {
-      const slot = 3 * (k % TRAIL_CAPACITY);
-      this.pos[3 * n] = this.ring[slot];
-      this.pos[3 * n + 1] = this.ring[slot + 1];
-      this.pos[3 * n + 2] = this.ring[slot + 2];
+    const tipSlot = 3 * (kEnd + 1 - this.offset);
+    this.pos[tipSlot] = tip.x;
+    this.pos[tipSlot + 1] = tip.y;
+    this.pos[tipSlot + 2] = tip.z;
+    // Upload the new points and the tip only (all of them after a slide).
+    attr.clearUpdateRanges();
+    if (!moved) {
+      const first = 3 * (Math.min(from, kEnd + 1) - this.offset);
+      attr.addUpdateRange(first, tipSlot + 3 - first);
     }
-    this.pos.set([tip.x, tip.y, tip.z], 3 * n);
-    n++;
-    const attr = this.obj.geometry.getAttribute("position") as THREE.BufferAttribute;
     attr.needsUpdate = true;
-    this.obj.geometry.setDrawRange(0, n);
+    this.obj.geometry.setDrawRange(kStart - this.offset, kEnd - kStart + 2);
   }
 }
 
@@ -302,6 +345,8 @@ export const heavyTopScene: SceneDef = {
   short: "Heavy top",
   angleUnit: "rad",
   pinned: ["motionClass", "turningPoints", "nutationPeriod", "meanPrecessionRate"],
+  // The core's names of the sliders' arguments (HeavyTop.fromSpin, steadyPrecession).
+  argumentKeys: { omega3: "w3", theta: "theta0", phi_dot: "phiDot0", theta_dot: "thetaDot0" },
   describe: "a spinning top on a pivot under gravity, the tip of its axis moving on a translucent sphere between two dashed turning circles, with its trail; an inset plots the effective potential V(θ); the axes x, y, z are labelled",
   blurb:
     "A symmetric top on a pivot under gravity, exactly (θ by Jacobi's sn, φ and ψ by elliptic integrals; 2.102–2.121). " +
@@ -398,7 +443,7 @@ export const heavyTopScene: SceneDef = {
         const turn = rate > 0 ? (2 * Math.PI) / rate : Infinity;
         const nut = Number.isFinite(period) && period > 0 ? period : 1;
         const window = Math.min(60, Math.max(6 * nut, Math.min(0.95 * turn, 30)));
-        const dt = Math.max(nut / 60, window / (TRAIL_CAPACITY - 2));
+        const dt = Math.max(nut / 60, window / (TRAIL_CAPACITY - 2), MIN_TRAIL_DT);
         trail.reset(dt, window);
         const times = new Float64Array(PATH_SAMPLES);
         for (let i = 0; i < PATH_SAMPLES; i++) times[i] = (window * i) / (PATH_SAMPLES - 1);
@@ -465,11 +510,11 @@ export const heavyTopScene: SceneDef = {
           { key: "rates", label: `φ̇, θ̇, ψ̇ (${A.perSecond})`, value: [phiDot, thetaDot, psiDot], text: A.vec([phiDot, thetaDot, psiDot]) },
           ...fixed,
           { key: "energy", label: "E (J, 2.105), conserved", value: E, text: fmt(E, 10) },
-          { key: "energyNow", label: "E(t) from the state", value: eNow, text: `${fmt(eNow, 10)} (rel. drift ${rel(eNow, E)})` },
+          { check: true, key: "energyNow", label: "E(t) from the state", value: eNow, text: `${fmt(eNow, 10)} (rel. drift ${rel(eNow, E)})` },
           { key: "pPhi", label: "p_φ (2.104)", value: pPhi, text: fmt(pPhi, 10) },
-          { key: "pPhiNow", label: "p_φ(t) from the state", value: pPhiNow, text: `${fmt(pPhiNow, 10)} (rel. drift ${rel(pPhiNow, pPhi)})` },
+          { check: true, key: "pPhiNow", label: "p_φ(t) from the state", value: pPhiNow, text: `${fmt(pPhiNow, 10)} (rel. drift ${rel(pPhiNow, pPhi)})` },
           { key: "pPsi", label: "p_ψ = I₃ω₃ (2.103)", value: pPsi, text: fmt(pPsi, 10) },
-          { key: "pPsiNow", label: "p_ψ(t) from the state", value: pPsiNow, text: `${fmt(pPsiNow, 10)} (rel. drift ${rel(pPsiNow, pPsi)})` },
+          { check: true, key: "pPsiNow", label: "p_ψ(t) from the state", value: pPsiNow, text: `${fmt(pPsiNow, 10)} (rel. drift ${rel(pPsiNow, pPsi)})` },
           { key: "reducedEnergy", label: "E′ (J, 2.109)", value: top.reducedEnergy, text: fmt(top.reducedEnergy, 10) },
           { key: "potentialNow", label: "V(θ(t)) (J, 2.110)", value: vNow, text: fmt(vNow, 10) },
         ];

@@ -393,7 +393,7 @@ export const inertiaScene: SceneDef = {
             { key: "screwAngle", label: `screw angle (${A.name})`, value: screw.angle, text: A.angle(screw.angle, 6) },
             { key: "screwSlide", label: "slide (m)", value: screw.slide, text: fmt(screw.slide, 6, tScale) },
             { key: "screwPitch", label: `pitch (m/${A.name})`, value: screw.pitch, text: fmt(screw.pitch * DEG, 6, tScale * DEG) },
-            { key: "residual", label: "check |D(1) − (R, t)|∞", value: residual, text: fmt(residual, 3, tScale), warn: residual > 1e-12 * tScale },
+            { check: true, key: "residual", label: "check |D(1) − (R, t)|∞", value: residual, text: fmt(residual, 3, tScale), warn: residual > 1e-12 * tScale },
           );
         }
       },
@@ -429,7 +429,7 @@ export const inertiaScene: SceneDef = {
           { key: "pose", label: "pose R(s) rows, t(s) (m)", value: Array.from(d), text: rows(Rs, 3) + " " + fmtVec(ts, 4, tScale) },
           { key: "movedCom", label: "CM at s (m)", value: movedCom, text: fmtVec(movedCom, 5, tScale) },
           { key: "movedInertia", label: "R(s) I R(s)ᵀ (kg·m²)", value: movedInertia, text: rows(movedInertia) },
-          { key: "momentDrift", label: "moments of R(s) I R(s)ᵀ: drift", value: drift, text: fmt(drift, 3, 1), warn: drift > 1e-12 },
+          { check: true, key: "momentDrift", label: "moments of R(s) I R(s)ᵀ: drift", value: drift, text: fmt(drift, 3, 1), warn: drift > 1e-12 },
         ];
       },
       readouts() {

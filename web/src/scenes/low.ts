@@ -201,7 +201,7 @@ export const lowScene: SceneDef = {
           { key: "inertialTurning", label: `inertial turning (${A.perHour})`, value: turning, text: A.perHourRate(turning, 6) },
           { key: "energy", label: "energy ½v²+½kr² (J/kg)", value: energy, text: fmt(energy, 8) },
           { key: "dissipated", label: "friction's work (J/kg)", value: lostMean, text: fmt(lostMean, 8) },
-          { key: "budgetDrift", label: "budget |E+W−E₀|/E₀", value: worst, text: fmt(worst, 3, 1), warn: worst > 1e-8 },
+          { check: true, key: "budgetDrift", label: "budget |E+W−E₀|/E₀", value: worst, text: fmt(worst, 3, 1), warn: worst > 1e-8 },
           ...(offMap ? [offMap] : []),
         ];
       },

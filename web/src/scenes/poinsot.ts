@@ -500,14 +500,14 @@ export const poinsotScene: SceneDef = {
           { key: "planeNormal", label: "plane normal L̂", value: Array.from(lHat.toArray()), text: fmtVec(lHat.toArray(), 4, 1) },
           { key: "contactPoint", label: "contact ρ (space)", value: Array.from(rho), text: fmtVec(rho) },
           {
-            key: "contactResidual", label: "contact: ρ·I·ρ − 1, ρ·L̂/d − 1", value: [onEllipsoid, onPlane],
+            check: true, key: "contactResidual", label: "contact: ρ·I·ρ − 1, ρ·L̂/d − 1", value: [onEllipsoid, onPlane],
             text: `${fmt(onEllipsoid, 2, 1)}, ${fmt(onPlane, 2, 1)}`, warn: Math.max(Math.abs(onEllipsoid), Math.abs(onPlane)) > 1e-10,
           },
           { key: "energy", label: "T (J), conserved", value: T0, text: fmt(T0, 8) },
-          { key: "energyNow", label: "T(t) from ω(t) (J)", value: T, text: `${fmt(T, 8)} (rel. drift ${fmt((T - T0) / T0, 2, 1)})` },
+          { check: true, key: "energyNow", label: "T(t) from ω(t) (J)", value: T, text: `${fmt(T, 8)} (rel. drift ${fmt((T - T0) / T0, 2, 1)})` },
           { key: "angularMomentum", label: "|L| (kg·m²/s), conserved", value: L0, text: fmt(L0, 8) },
           {
-            key: "angularMomentumNow", label: "|L(t)| from ω(t) (kg·m²/s)", value: L,
+            check: true, key: "angularMomentumNow", label: "|L(t)| from ω(t) (kg·m²/s)", value: L,
             text: `${fmt(L, 8)} (rel. drift ${fmt((L - L0) / L0, 2, 1)})`,
           },
         ];
