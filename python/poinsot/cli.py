@@ -27,6 +27,7 @@ from typing import Any, NoReturn, cast
 import click
 import numpy as np
 
+from . import _answers
 from ._core import DEFAULTS as _DEFAULTS
 from ._progress import SHOW_PROGRESS_AFTER_S, delayed_bar, stderr_interactive
 from .errors import PoinsotError
@@ -75,7 +76,8 @@ MAX_MESH_FILE_BYTES = 256 * 1024 * 1024
 
 #: Result fields that the API documents as infinite in limiting cases: the period of ω and
 #: the flip interval of a steady rotation (FreeRigidBody.period, .flip_interval), the nutation
-#: period of a top that never returns (HeavyTop.nutation_period), the cubic's root u3 when
+#: period of a top that never returns (HeavyTop.nutation_period), the precession period of a
+#: top whose axis does not turn on average (HeavyTop.precession_period), the cubic's root u3 when
 #: m g l = 0 (HeavyTop.cubic_roots), the fast steady-precession rate at θ0 = 90° and the
 #: fast-top approximations 2.120/2.121 where they diverge (HeavyTop.steady_precession), the
 #: hours of one full turn of the Foucault pendulum at the equator. NaN is refused everywhere,
@@ -85,6 +87,7 @@ MAY_BE_INFINITE = frozenset(
         "period",
         "flip_interval",
         "nutation_period",
+        "precession_period",
         "cubic_roots",
         "steady_precession_at_theta0",
         "full_turn_hours",
@@ -210,6 +213,14 @@ class _PoinsotCommand(click.Command):
     """Runs a command so that it ends in one line, never a traceback: poinsot's errors name
     the option (:data:`EXIT_REFUSED`), Ctrl+C prints "interrupted" (:data:`EXIT_INTERRUPTED`),
     an output that cannot be written is refused, anything unforeseen is one line too."""
+
+    def get_short_help_str(self, limit: int = 45) -> str:
+        """The summary ``poinsot --help`` lists: the first paragraph of the help, whole (click
+        would cut it at the first full stop, "(eqs." included, or at ``limit`` characters with
+        "..."); the help formatter wraps it to the terminal instead."""
+        if self.short_help or not self.help:
+            return super().get_short_help_str(limit)
+        return " ".join(self.help.split("\n\n")[0].split())
 
     def invoke(self, ctx: click.Context) -> Any:
         try:
@@ -363,10 +374,10 @@ def render_progress(description: str) -> Iterator[Callable[[int, int], None]]:
 
 
 def _picture_options(
-    plot_help: str, animate_help: str | None = None, folder: bool = False
+    plot_help: str, animate_help: str | None = None
 ) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
-    """The options ``--plot PATH`` (a folder, ``plot_dir``, when ``folder``), ``--animate
-    PATH`` (when ``animate_help`` is given) and ``--style`` of a computing command."""
+    """The options ``--plot PATH``, ``--animate PATH`` (when ``animate_help`` is given) and
+    ``--style`` of a computing command."""
 
     def deco(f: Callable[..., Any]) -> Callable[..., Any]:
         f = click.option(
@@ -381,9 +392,6 @@ def _picture_options(
         if animate_help is not None:
             more = " A .gif, or a .mp4 when ffmpeg is installed."
             f = click.option("--animate", "animate_path", type=file, help=animate_help + more)(f)
-        if folder:
-            path = click.Path(file_okay=False)
-            return click.option("--plot", "plot_dir", type=path, help=plot_help)(f)
         more = " The suffix picks the format (.png, .pdf, .svg, ...)."
         return click.option("--plot", "plot_path", type=file, help=plot_help + more)(f)
 
@@ -490,9 +498,10 @@ def _report(
     notes: Iterable[str] = (),
     lines: Iterable[str] = (),
 ) -> None:
-    """A command's output: ``data`` as one JSON document (--json), or else a table (its
-    ``columns``: the first the quantity's name, the others right-aligned), the ``notes`` under
-    it (rich's text), ``lines`` as they are, and where the pictures went."""
+    """A command's output: ``data`` as one JSON document (--json), or else its answer in plain
+    words (``data["summary"]``, :mod:`poinsot._answers`), a table (its ``columns``: the first
+    the quantity's name, the others right-aligned), the ``notes`` under it (rich's text),
+    ``lines`` as they are, and where the pictures went."""
     if as_json:
         emit_json(data)
         return
@@ -506,12 +515,20 @@ def _report(
     for row in rows:
         table.add_row(*row)
     console = Console()
+    _print_summary(console, data)
     console.print(table)
     for note in notes:
         console.print(note)
     for line in lines:
         click.echo(line)
     _echo_saved(data)
+
+
+def _print_summary(console: Any, data: dict[str, Any]) -> None:
+    """The answer in plain words, wrapped to the terminal, before the tables."""
+    if "summary" in data:
+        console.print(data["summary"], markup=False, highlight=False)
+        console.print()
 
 
 #: Samples of a Foucault run drawn by --plot and --animate, per half swing (between turning
@@ -624,11 +641,11 @@ def inertia(
     style: str,
     as_json: bool,
 ) -> None:
-    """Mass properties of a standard SHAPE or of a closed mesh file (.stl, .obj, ...).
+    """Mass properties of a standard SHAPE or of a closed mesh file.
 
     SHAPE is one of sphere, shell, cylinder, cone, cuboid, ellipsoid, rod, disk, ring
-    (symmetry axis along z; the cone's apex at the origin), or a path to a mesh file
-    (needs the `mesh` extra, trimesh). Prints mass, centre of mass, the inertia tensor about
+    (symmetry axis along z; the cone's apex at the origin), or a path to a mesh file (.stl,
+    .obj, ...; needs the `mesh` extra, trimesh). Prints mass, centre of mass, the inertia tensor about
     the centre of mass (products of inertia negated, eqs. 2.46–2.50), principal moments and
     axes, and the kind of top.
 
@@ -678,11 +695,12 @@ def inertia(
 
     data = {"source": source, **body.to_dict()}
     require_finite(data)
+    data["summary"] = _answers.inertia(data)
     _keep_picture(data, plot_path, "inertia.plot_inertia_ellipsoid", body, name=name, style=style)
     if as_json:
         emit_json(data)
         return
-    _print_body(source, body)
+    _print_body(source, body, data)
     _echo_saved(data)
 
 
@@ -802,6 +820,7 @@ def _print_body(source: str, body: Any) -> None:
     from rich.table import Table
 
     console = Console()
+    _print_summary(console, data)
     fmt = "{:.6g}".format
     table = Table(title=f"mass properties of {source}", show_header=False)
     table.add_row("mass", f"{fmt(body.mass)} kg")
@@ -889,6 +908,7 @@ def fall(
         "second_order_south": res.second_order_south,
     }
     require_finite(data)
+    data["summary"] = _answers.fall(data)
     _keep_picture(data, plot_path, "earth.plot_trajectory", res, style=style)
     _report(
         data,
@@ -932,7 +952,7 @@ def projectile(
     style: str,
     as_json: bool,
 ) -> None:
-    """A projectile on the rotating Earth, with and without the Earth's rotation.
+    """A projectile on the rotating Earth, with and without its rotation.
 
     Prints the time of flight, range and the drift across the line of fire (to the right in
     the northern hemisphere, to the left in the southern: the missiles of the unit).
@@ -959,6 +979,7 @@ def projectile(
         "without_rotation": {k: getattr(still, k) for k in keys},
     }
     require_finite(data)
+    data["summary"] = _answers.projectile(data, at_precision(spin.drift, spin.range))
     _keep_picture(data, plot_path, "earth.plot_trajectory", spin, style=style)
 
     def row(k: str, label: str) -> tuple[str, ...]:
@@ -1049,6 +1070,7 @@ def foucault(
         "full_turn_hours": hours,
     }
     require_finite(data)
+    data["summary"] = _answers.foucault(data)
     if plot_path is not None or animate_path is not None:
         # The table needs only the measurement; a picture needs the track: the same run,
         # sampled FOUCAULT_SAMPLES_PER_TURN times between turning points.
@@ -1135,7 +1157,7 @@ def free(
     style: str,
     as_json: bool,
 ) -> None:
-    """The torque-free rigid body: the exact solution beside an integrator.
+    """The torque-free body: the exact solution beside an integrator.
 
     Reports the regime (which axis ω circles), the period of ω, the invariants and how well the
     chosen method keeps them, and ω and the attitude at the end, against the exact solution.
@@ -1208,6 +1230,7 @@ def free(
         "axis_stability": [s.stability for s in stab],
     }
     require_finite(data)
+    data["summary"] = _answers.free(data)
     _keep_picture(data, plot_path, "free.plot_omega", tr, exact, style=style)
     _keep_animation(
         data,
@@ -1258,10 +1281,17 @@ def free(
     "--degrees", is_flag=True, help="Read θ₀ in degrees and the rates in degrees per second."
 )
 @_picture_options(
-    "Save pictures (V(θ), the axis' locus, θ/φ̇/ψ̇ against t, steady rates against spin) "
-    "and an animation (top.gif) into this folder.",
+    "Save a picture of the axis' path seen from above (waves, loops or cusps between the "
+    "turning circles θ₁ and θ₂) to this file.",
     "Save an animation of the top (two nutation periods) to this file.",
-    folder=True,
+)
+@click.option(
+    "--plot-dir",
+    "plot_dir",
+    type=click.Path(file_okay=False),
+    help="Save the four pictures (V(θ), the axis' path, θ/φ̇/ψ̇ against t, steady rates "
+    "against spin: potential.png, axis_locus.png, angles.png, steady_precession.png) and an "
+    "animation (top.gif) into this folder (made if needed).",
 )
 @_JSON
 def top(
@@ -1273,6 +1303,7 @@ def top(
     psi_dot: float,
     theta_dot: float,
     degrees: bool,
+    plot_path: str | None,
     plot_dir: str | None,
     animate_path: str | None,
     style: str,
@@ -1289,12 +1320,13 @@ def top(
     Examples:
       poinsot top --I1 1 --I3 0.5 --mgl 1 --theta 0.8 --psi-dot 6            # cusps
       poinsot top --I1 1 --I3 0.5 --mgl 0.3 --theta 0.6 --psi-dot 40 --json
-      poinsot top --I1 1 --I3 0.5 --mgl 1 --theta 45 --degrees --phi-dot -30 --psi-dot 340 --plot out/
+      poinsot top --I1 1 --I3 0.5 --mgl 1 --theta 0.8 --phi-dot -0.5 --psi-dot 6 --plot loops.png
+      poinsot top --I1 1 --I3 0.5 --mgl 1 --theta 45 --degrees --phi-dot -30 --psi-dot 340 --plot-dir out/
       poinsot top --I1 1 --I3 0.5 --mgl 1 --theta 0.8 --phi-dot -0.5 --psi-dot 6 --animate top.gif
     """
     from .top import HeavyTop
 
-    _check_pictures(None, animate_path)
+    _check_pictures(plot_path, animate_path)
 
     t = HeavyTop(
         i1, i3, mgl, theta, theta_dot=theta_dot, phi_dot=phi_dot, psi_dot=psi_dot, degrees=degrees
@@ -1329,12 +1361,14 @@ def top(
         "motion_class": t.motion_class,
         "nutation_period": t.nutation_period,
         "mean_precession_rate": t.mean_precession_rate,
+        "precession_period": t.precession_period,
         "mean_spin_rate": t.mean_spin_rate,
         "steady_precession_at_theta0": steady,
         "sleeping_threshold": HeavyTop.sleeping_threshold(i1, i3, mgl),
         "sleeping_stable": t.is_sleeping_stable,
     }
     require_finite(data)
+    data["summary"] = _answers.top(data)
     saved: list[str] = []
     if plot_dir is not None:
         from .plots.top import save_top_plots
@@ -1344,9 +1378,10 @@ def top(
                 paths = save_top_plots(t, plot_dir, animation=True, style=style, progress=progress)
             saved = [str(p) for p in paths]
         except OSError as exc:
-            raise Refused(f"--plot: cannot write into {plot_dir}: {exc.strerror or exc}") from exc
+            raise Refused(f"--plot-dir: cannot write into {plot_dir}: {exc.strerror or exc}") from exc
     if saved:
         data["plots"] = saved
+    _keep_picture(data, plot_path, "top.plot_axis_locus", t, style=style)
     _keep_animation(data, animate_path, "top.animate_top", 24, "animating the top", t, style=style)
     rows = [
         ("p_ψ = I₃ω₃ (kg·m²/s)", f"{t.p_psi:.10g}", "2.103"),
@@ -1359,6 +1394,7 @@ def top(
         ("motion class", t.motion_class, ""),
         ("nutation period (s)", f"{t.nutation_period:.10g}", "2.112"),
         ("mean precession rate ⟨φ̇⟩ (rad/s)", f"{t.mean_precession_rate:.10g}", "2.106"),
+        ("precession period 2π/|⟨φ̇⟩| (s)", f"{t.precession_period:.10g}", ""),
         ("mean spin rate ⟨ψ̇⟩ (rad/s)", f"{t.mean_spin_rate:.10g}", "2.99"),
     ]
     if "error" in steady:
@@ -1496,6 +1532,48 @@ def _export_lab(source: Path, target: Path) -> None:
     )
 
 
+# -- poinsot notebooks: the teaching notebooks, copied out of the package --------------------------
+#: The teaching notebooks installed with the package (python/poinsot/notebooks in a checkout).
+NOTEBOOKS_DIR = Path(__file__).parent / "notebooks"
+
+
+@main.command()
+@click.argument("directory", type=click.Path(file_okay=False))
+@click.option("--force", is_flag=True, help="Overwrite notebooks already in DIRECTORY.")
+def notebooks(directory: str, force: bool) -> None:
+    """Copy the teaching notebooks into DIRECTORY, to open in Jupyter.
+
+    The four lessons in the unit's order (rotating frames and Coriolis; the falling body and
+    Foucault; inertia, Euler and Dzhanibekov; the heavy top), installed with poinsot.
+    DIRECTORY is made if needed; a notebook already there is kept unless --force. They need
+    matplotlib and Jupyter: pip install 'poinsot[plot]' jupyterlab.
+
+    \b
+    Example:
+      poinsot notebooks lessons && jupyter lab lessons
+    """
+    import shutil
+
+    sources = sorted(NOTEBOOKS_DIR.glob("*.ipynb"))
+    if not sources:
+        raise Refused(f"no notebook installed in {NOTEBOOKS_DIR}: reinstall poinsot")
+    target = Path(directory)
+    clashes = [target / src.name for src in sources if (target / src.name).exists()]
+    if clashes and not force:
+        raise click.UsageError(
+            f"DIRECTORY: {', '.join(str(c) for c in clashes)} already there; give --force to "
+            "overwrite, or another DIRECTORY"
+        )
+    try:
+        target.mkdir(parents=True, exist_ok=True)
+        for src in sources:
+            shutil.copyfile(src, target / src.name)
+            click.echo(f"saved {target / src.name}")
+    except OSError as exc:
+        raise Refused(f"DIRECTORY: cannot write into {target}: {exc.strerror or exc}") from exc
+    click.echo(f"open them with: jupyter lab {target}  (pip install 'poinsot[plot]' jupyterlab)")
+
+
 # -- poinsot figure: the unit's own figures (docs/figures.md) ------------------------------------
 @main.command()
 @click.argument("number", required=False)
@@ -1518,7 +1596,7 @@ def _export_lab(source: Path, target: Path) -> None:
     "--list", "list_all", is_flag=True, help="List the unit's figures and what draws them."
 )
 def figure(number: str | None, style: str, out_path: str | None, list_all: bool) -> None:
-    """The unit's figure NUMBER drawn from poinsot's numbers, saved as a picture.
+    """The unit's figure NUMBER, drawn from poinsot's numbers.
 
     NUMBER is one of the unit's figures, 2.1 to 2.15 (2.12a to 2.12d for the four steps of
     Euler's angles): each is drawn with a classroom example's numbers, every value computed by
@@ -1583,7 +1661,7 @@ def _check_figure_out(path: Path) -> None:
     help="Write the derivation as Markdown with $$ math (MyST, Jupyter, GitHub).",
 )
 def derive(name: str | None, list_all: bool, as_latex: bool, as_markdown: bool) -> None:
-    """The unit's derivation NAME, step by step, each step checked by sympy.
+    """The unit's derivation NAME, step by step, checked by sympy.
 
     NAME is one of the derivations (``--list`` shows them, in the unit's order), or
     ``questions`` (the unit's question bank with the package's answers) or ``errata`` (the

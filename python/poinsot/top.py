@@ -363,6 +363,15 @@ class HeavyTop(show.Displayed):
         "The mean of ``phi'`` over a nutation period (rad/s).",
     )
 
+    @property
+    def precession_period(self) -> float:
+        """The precession period ``2 pi / |<phi'>|`` (s): the time of one turn of the axis about the
+        vertical at the mean precession rate (for steady precession, exactly the time ``phi``
+        takes to advance by ``2 pi``); ``inf`` where the axis does not turn on average (a sleeping
+        or hanging top)."""
+        p = self._core.precession_period
+        return math.inf if p is None else p
+
     mean_spin_rate: float = core_property(
         "mean_spin_rate",
         "The mean of ``psi'`` over a nutation period (rad/s).",

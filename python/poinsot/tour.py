@@ -469,4 +469,27 @@ def run_tour(console: Console | None = None) -> None:
         heading(con, f"{i}. {title}")
         fn(con)
     con.rule()
-    con.print("More: `poinsot inertia --help`, the examples/ folder, and the docs/ pages.")
+    con.print("More, all installed with poinsot: every command's --help (`poinsot --help` lists")
+    con.print("them), the lab in your browser (`poinsot lab`), the teaching notebooks")
+    con.print("(`poinsot notebooks DIR` copies them out). The documentation, with the gallery:")
+    con.print(docs_url(), markup=False, highlight=False, soft_wrap=True)
+
+
+#: The documentation site: pyproject.toml's [project.urls] Documentation, read from the installed
+#: package's metadata; this copy only where the metadata is missing (a test keeps them equal).
+DOCS_URL = "https://poinsot.github.io/poinsot/"
+
+
+def docs_url() -> str:
+    """The documentation site's address, as the installed package's metadata gives it."""
+    from importlib.metadata import PackageNotFoundError, metadata
+
+    try:
+        entries = metadata("poinsot").get_all("Project-URL") or []
+    except PackageNotFoundError:
+        entries = []
+    for entry in entries:
+        label, _, url = entry.partition(",")
+        if label.strip().lower() == "documentation":
+            return url.strip()
+    return DOCS_URL

@@ -73,16 +73,14 @@ def test_every_computing_command_has_the_picture_options(command: str) -> None:
 @pytest.mark.parametrize("style", ["paper", "slides"])
 @pytest.mark.parametrize("command", list(RUNS))
 def test_plot_saves_the_picture_in_the_style(command: str, style: str, tmp_path: Path) -> None:
-    # top --plot names a folder of pictures (and top.gif); the others one file
-    target = tmp_path / ("pictures" if command == "top" else "picture.png")
+    # every command's --plot names one file (top's folder of pictures is --plot-dir)
+    target = tmp_path / "picture.png"
     code, out, err = invoke([*RUNS[command], "--plot", str(target), "--style", style])
     assert code == 0, err
-    files = sorted(target.glob("*.png")) if command == "top" else [target]
-    assert files and all(f.stat().st_size > 10_000 for f in files)
-    for f in files:
-        with Image.open(f) as im:
-            assert im.info["dpi"][0] == pytest.approx(200 if style == "slides" else 150, abs=0.5)
-    assert f"saved {files[0] if command != 'top' else target}" in out
+    assert target.stat().st_size > 10_000
+    with Image.open(target) as im:
+        assert im.info["dpi"][0] == pytest.approx(200 if style == "slides" else 150, abs=0.5)
+    assert f"saved {target}" in out
     code, out, _ = invoke([*RUNS[command], "--plot", str(target), "--json"])
     assert code == 0 and json.loads(out)["plots"]
 
@@ -177,7 +175,7 @@ def test_a_long_render_shows_a_progress_bar_on_a_terminal(
 ) -> None:
     monkeypatch.setattr(cli, "_stderr_interactive", lambda: True)
     monkeypatch.setattr(cli, "SHOW_PROGRESS_AFTER_S", 0.0)  # as if every render were long
-    code, _, err = invoke([*RUNS["top"], "--plot", str(tmp_path / "top")])
+    code, _, err = invoke([*RUNS["top"], "--plot-dir", str(tmp_path / "top")])
     assert code == 0, err
     (bar,) = spy_bar.made
     assert bar.stopped and bar.kwargs["console"].stderr  # on stderr, removed when done
@@ -189,10 +187,28 @@ def test_a_long_render_shows_a_progress_bar_on_a_terminal(
 def test_no_progress_bar_off_a_terminal_or_for_a_short_render(
     spy_bar: type[_SpyBar], monkeypatch: pytest.MonkeyPatch, tmp_path: Path
 ) -> None:
-    code, _, err = invoke([*RUNS["top"], "--plot", str(tmp_path / "top")])
+    code, _, err = invoke([*RUNS["top"], "--plot-dir", str(tmp_path / "top")])
     assert code == 0 and err == ""
     assert spy_bar.made == []  # CliRunner's stderr is not a terminal
     monkeypatch.setattr(cli, "_stderr_interactive", lambda: True)
     monkeypatch.setattr(cli, "SHOW_PROGRESS_AFTER_S", 3600.0)  # a terminal, a short render
     code, _, _ = invoke([*RUNS["free"], "--animate", str(tmp_path / "flip.gif")])
     assert code == 0 and spy_bar.made == []
+
+
+def test_top_plot_dir_saves_the_folder_of_pictures(tmp_path: Path) -> None:
+    target = tmp_path / "pictures"
+    code, out, err = invoke([*RUNS["top"], "--plot-dir", str(target)])
+    assert code == 0, err
+    names = {"potential.png", "axis_locus.png", "angles.png", "steady_precession.png", "top.gif"}
+    assert {p.name for p in target.iterdir()} == names
+    for name in sorted(names):
+        assert f"saved {target / name}" in out
+
+
+def test_top_plot_refuses_a_folder_as_every_command_does(tmp_path: Path) -> None:
+    # --plot takes a file on every command; a folder is refused before any work, naming --plot
+    for command in RUNS:
+        code, out, err = invoke([*RUNS[command], "--plot", str(tmp_path)])
+        assert code == cli.EXIT_USAGE and out == "", command
+        one_line_error(err, "--plot")

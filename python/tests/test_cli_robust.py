@@ -371,11 +371,11 @@ def test_the_mesh_extras_bring_what_trimesh_needs_for_text_files() -> None:
                 "1",
                 "--theta",
                 "0.8",
-                "--plot",
+                "--plot-dir",
                 "{tmp}/file.txt/sub",
             ],
             EXIT_REFUSED,
-            "--plot",
+            "--plot-dir",
         ),
         (
             [
@@ -388,11 +388,11 @@ def test_the_mesh_extras_bring_what_trimesh_needs_for_text_files() -> None:
                 "1",
                 "--theta",
                 "0.8",
-                "--plot",
+                "--plot-dir",
                 "{tmp}/file.txt",
             ],
             EXIT_USAGE,
-            "--plot",
+            "--plot-dir",
         ),
     ],
 )

@@ -157,6 +157,8 @@ heavy_top_export! {
         /// The nutation period (s), None when θ never returns.
         nutation_period -> Option<f64>;
         mean_precession_rate -> f64;
+        /// The precession period 2π/|⟨φ̇⟩| (s), None when the axis does not turn on average.
+        precession_period -> Option<f64>;
         mean_spin_rate -> f64;
         fourier_terms -> usize;
         motion_class.name() -> &'static str;

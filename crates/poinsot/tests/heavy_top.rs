@@ -327,6 +327,41 @@ fn nutation_period_and_mean_rates() {
     }
 }
 
+/// The precession period is the time of one turn about the vertical: for steady precession φ
+/// advances by exactly 2π in it; for a nutating top φ advances by 2π·k over k precession
+/// periods to within one nutation's wobble of φ about its mean line (|φ − ⟨φ̇⟩t − φ₀| stays
+/// below the spread of φ over a nutation period). A sleeping top does not turn: no period.
+/// Negative control: 2π/|φ̇₀| (the start rate, not the mean) misses the turn of a nutating top.
+#[test]
+fn precession_period_is_one_turn_about_the_vertical() {
+    use std::f64::consts::TAU;
+    let steady = steady_precession(1.0, 0.5, 1.0, 0.8, 12.0).unwrap().slow;
+    let s = HeavyTop::with_spin(1.0, 0.5, 1.0, 0.0, 0.8, 0.0, steady, 0.0, 12.0).unwrap();
+    let p = s.precession_period().unwrap();
+    assert!((p - TAU / steady).abs() < 1e-9 * p);
+    assert!((s.euler_angles(p).unwrap()[0] - TAU).abs() < 1e-9);
+
+    let t = top(1.0, 0.5, 1.0, 0.8, 0.3, 0.6, 6.0);
+    let (n, q) = (t.nutation_period().unwrap(), t.precession_period().unwrap());
+    assert!((q - TAU / t.mean_precession_rate().abs()).abs() < 1e-12 * q);
+    // After a whole number of nutation periods nearest to k precession periods, φ has turned
+    // by k·2π plus at most the mean rate times half a nutation period.
+    for k in 1..4 {
+        let m = (k as f64 * q / n).round();
+        let turned = t.euler_angles(m * n).unwrap()[0] - t.euler_angles(0.0).unwrap()[0];
+        let slack = t.mean_precession_rate().abs() * n / 2.0 + 1e-9;
+        assert!(
+            (turned.abs() - k as f64 * TAU).abs() <= slack,
+            "k = {k}: {turned}"
+        );
+    }
+    // Negative control: the start rate φ̇₀ = 0.3 rad/s is not the mean.
+    assert!((TAU / 0.3 - q).abs() > 0.1 * q);
+
+    let sleeping = top(1.0, 0.5, 1.0, 0.0, 0.0, 0.0, 10.0);
+    assert_eq!(sleeping.precession_period(), None);
+}
+
 #[test]
 fn from_constants_reproduces_the_top_with_those_constants() {
     let a = top(1.0, 0.5, 1.0, 0.8, 0.3, 0.6, 6.0);

@@ -577,6 +577,16 @@ impl HeavyTop {
             Motion::Nutating(n) => n.mean_rates().0,
         }
     }
+    /// The precession period (s): the time of one turn of the axis about the vertical at the
+    /// mean rate, `2π/|⟨φ̇⟩|` (for steady precession, exactly the time φ takes to advance by 2π;
+    /// for a nutating top, the mean over many nutations). `None` where the axis does not turn on
+    /// average (⟨φ̇⟩ = 0: a sleeping or hanging top) or the period is beyond the largest double.
+    pub fn precession_period(&self) -> Option<f64> {
+        let rate = self.mean_precession_rate().abs();
+        (rate > 0.0)
+            .then(|| 2.0 * std::f64::consts::PI / rate)
+            .filter(|p| p.is_finite())
+    }
     /// The mean spin rate ⟨ψ̇⟩ over a nutation period (rad/s).
     pub fn mean_spin_rate(&self) -> f64 {
         match &self.motion {
