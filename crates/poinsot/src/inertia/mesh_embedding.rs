@@ -19,6 +19,12 @@
 //!    the edge they share. A star that fails (a fold, a pinch, a fan winding twice, a face of
 //!    zero area) leaves its pairs to the narrow phase, which handles faces sharing a vertex
 //!    or an edge exactly as any others.
+//!    Before all that, a mesh of one component is tried as **star-shaped** about its centre
+//!    of mass ([`star_shaped_about`]): when every face faces away from that point and every
+//!    vertex's fan winds once about it, the radial projection onto a sphere is one to one
+//!    (a covering of the sphere), which proves the surface embedded in one pass over the
+//!    faces, without the hierarchy or any pair (a convex or blobby solid; a torus or a cup
+//!    is left to the pairwise tests).
 //!    Narrow phase: exact triangle–triangle tests on Shewchuk's adaptive orientation
 //!    predicates (`robust`), so a crossing by one ulp is found and neighbours that only share
 //!    a vertex or an edge are never flagged. Faces of exactly zero area (collinear corners)
@@ -42,7 +48,7 @@
 //! `[2^-60, 2^60]`, which keeps them exact for features down to about `1e-90` of the size of
 //! their neighbours, at any absolute scale.
 
-use std::sync::atomic::{AtomicU32, AtomicU64, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU32, AtomicU64, Ordering};
 
 use rayon::prelude::*;
 use robust::{Coord, Coord3D};
@@ -1482,6 +1488,190 @@ fn star_embedded(pts: Points<'_>, v: u32, star: &[[u32; 2]]) -> bool {
 }
 
 // ---------------------------------------------------------------------------------------------
+// A certificate for a whole component: star-shaped about a point.
+
+/// Is the closed surface of the faces `tris` (those with `skip(f)` left out) proved embedded
+/// by being **star-shaped about `c`**? The theorem: let `M` be a connected, closed,
+/// consistently oriented triangle mesh (the edge checks of `mesh::check_topology`, one
+/// component) and `c` a point such that
+///
+/// 1. every face `(p₀, p₁, p₂)` is positively oriented seen from `c`:
+///    `det[p₀ − c, p₁ − c, p₂ − c] > 0` (`c` strictly on the inner side of its plane), and
+/// 2. at every vertex `v` the faces around it, seen from `c`, wind once around `v`: their
+///    wedges `[a, b)` at `v` (tangent directions of the arcs `v → a`, `v → b` of the radial
+///    projection onto the unit sphere about `c`) hold one fixed tangent direction `t` exactly
+///    once.
+///
+/// Then the radial projection `x ↦ (x − c)/|x − c|` is a local homeomorphism from `M` onto the
+/// sphere (inside a face by 1; across an edge because 1 puts the two faces on opposite sides
+/// of the plane through `c` and the edge; at a vertex by 2: the wedges, each turning by less
+/// than π, tile its neighbourhood once, and a pinched vertex, two fans, would hold `t` twice).
+/// A local homeomorphism from a compact connected surface onto the sphere is a covering, and
+/// the sphere is simply connected, so it is one to one: no two points of `M` lie in one
+/// direction from `c`, so two faces meet only where they share a vertex or an edge by index,
+/// which is the self-intersection check's answer without testing any pair. It holds for any
+/// mesh star-shaped about `c` (a convex body about any interior point, most blobby or
+/// sculpted solids about their centre of mass), not for a torus, a cup or a double-wound
+/// fan; `false` then (the pairwise check decides), as for any zero test the proof cannot
+/// settle.
+///
+/// One pass over the faces, no sorting: per face the sign of condition 1, and per corner `v`
+/// whether its wedge holds `t = e_k − (e_k·u) u` (`u` the direction of `v − c`, `e_k` the
+/// axis along which `v − c` is shortest, decided from `v` and `c` alone so that every face
+/// around `v` uses the same `t`): `det[v − c, a − c, e_k]` and `det[v − c, e_k, b − c]`, the
+/// `k` components of `(v − c) × (a − c)` and `(b − c) × (v − c)`, i.e. 2-D orientations (`t`
+/// on the ray of `a` is held, on that of `b` not: the wedges of a closed fan, half-open, hold
+/// each direction as often as the fan winds). Every used vertex holds `t` at least once (its
+/// fans are closed by the edge checks, and a closed fan of wedges each turning by less than π
+/// winds at least once), so a flag per vertex, set atomically, finds any second hold (the
+/// same answer in any order). All signs are float-filtered (Shewchuk's bounds on the
+/// differences from `c`, plus [`FILTER_SLACK`]) with the exact predicates behind, for
+/// coordinates within [`FAST_COORD_MAX`] and faces of extent in `[2^-60, 2^60]` (the caller's
+/// envelope of the pairwise tests); outside it `false`. Stops once `cancel` is set.
+pub(crate) fn star_shaped_about(
+    pts: Points<'_>,
+    tris: &[[u32; 3]],
+    skip: impl Fn(usize) -> bool + Sync,
+    c: P3,
+    cancel: &Cancel,
+) -> Result<bool> {
+    let nv = pts.v.len() / 3;
+    if !c.iter().all(|x| x.abs() <= FAST_COORD_MAX) {
+        return Ok(false);
+    }
+    // Per vertex: a wedge around it holds t (a second one refuses the proof).
+    let held: Vec<AtomicBool> = (0..nv).map(|_| AtomicBool::new(false)).collect();
+    let ok = tris
+        .par_chunks(FACE_CHUNK)
+        .enumerate()
+        .try_for_each(|(chunk, ts)| {
+            if cancel.check().is_err() {
+                return Err(());
+            }
+            let f0 = chunk * FACE_CHUNK;
+            for (i, t) in ts.iter().enumerate() {
+                if skip(f0 + i) {
+                    continue;
+                }
+                let holds = radial_wedges(pts, t, c).ok_or(())?;
+                for (j, &v) in t.iter().enumerate() {
+                    if holds[j] && held[v as usize].swap(true, Ordering::Relaxed) {
+                        return Err(());
+                    }
+                }
+            }
+            Ok(())
+        });
+    cancel.check()?;
+    Ok(ok.is_ok())
+}
+
+/// For the face `t` seen from `c` ([`star_shaped_about`]): `None` unless it is positively
+/// oriented (and within the envelope of the predicates); else, for each corner, whether its
+/// wedge holds the corner's reference tangent direction.
+#[inline]
+fn radial_wedges(pts: Points<'_>, t: &[u32; 3], c: P3) -> Option<[bool; 3]> {
+    let p = pts.tri(t);
+    if !fast(&p) {
+        return None;
+    }
+    let extent = (0..3).fold(0.0f64, |m, k| {
+        max2(
+            m,
+            max2(max2(p[0][k], p[1][k]), p[2][k]) - min2(min2(p[0][k], p[1][k]), p[2][k]),
+        )
+    });
+    if !well_scaled(extent) {
+        return None;
+    }
+    let d = p.map(|x| [x[0] - c[0], x[1] - c[1], x[2] - c[2]]);
+    // x[i] = d[i] × d[i + 1] and its permanent (per component).
+    let cross = |u: P3, w: P3| {
+        let l = [u[1] * w[2], u[2] * w[0], u[0] * w[1]];
+        let r = [u[2] * w[1], u[0] * w[2], u[1] * w[0]];
+        (
+            [l[0] - r[0], l[1] - r[1], l[2] - r[2]],
+            [
+                l[0].abs() + r[0].abs(),
+                l[1].abs() + r[1].abs(),
+                l[2].abs() + r[2].abs(),
+            ],
+        )
+    };
+    let x = [cross(d[0], d[1]), cross(d[1], d[2]), cross(d[2], d[0])];
+    // Condition 1: det[d₀, d₁, d₂] = d₀ · (d₁ × d₂) > 0.
+    let (n, na) = x[1];
+    let det = d[0][0] * n[0] + d[0][1] * n[1] + d[0][2] * n[2];
+    let perm = d[0][0].abs() * na[0] + d[0][1].abs() * na[1] + d[0][2].abs() * na[2];
+    let positive = if det.abs() > O3_FILTER * perm + FILTER_SLACK {
+        det > 0.0
+    } else {
+        robust::orient3d(c3(p[0]), c3(p[1]), c3(p[2]), c3(c)) > 0.0
+    };
+    if !positive {
+        return None;
+    }
+    // The sign of component k of (p[i] − c) × (p[j] − c), from x[m] = d[i] × d[j].
+    let comp = |m: usize, k: usize, i: usize, j: usize| {
+        let (n, na) = x[m];
+        if n[k].abs() > O2_FILTER * na[k] + FILTER_SLACK {
+            sign(n[k])
+        } else {
+            o2(c, p[i], p[j], k as u8)
+        }
+    };
+    let mut holds = [false; 3];
+    for (i, h) in holds.iter_mut().enumerate() {
+        let (a, b) = ((i + 1) % 3, (i + 2) % 3);
+        let dv = d[i];
+        // The axis along which v − c is shortest (ties: the lowest); v − c ≠ 0 by condition 1,
+        // so e_k is not along it.
+        let m = dv.map(f64::abs);
+        let k = if m[0] <= m[1] && m[0] <= m[2] {
+            0
+        } else if m[1] <= m[2] {
+            1
+        } else {
+            2
+        };
+        // det[v − c, a − c, e_k] = ((v − c) × (a − c))_k = x[i]_k.
+        let sa = comp(i, k, i, a);
+        *h = if sa == 0 {
+            // t along ±(tangent towards a): held iff the same ray, i.e. (v − c) × e_k and
+            // (v − c) × (a − c) (parallel: e_k lies in their plane) point the same way.
+            same_ray(c, p[i], p[a], dv, k)
+        } else {
+            // det[v − c, e_k, b − c] = ((b − c) × (v − c))_k = x[b]_k (x[b] = d[b] × d[i]).
+            sa == 1 && comp(b, k, b, i) == 1
+        };
+    }
+    Some(holds)
+}
+
+/// For `det[v − c, a − c, e_k] = 0` ([`radial_wedges`]): do `(v − c) × e_k` and
+/// `(v − c) × (a − c)` point the same way? Compared on a component where the second is not
+/// zero (exact: [`o2`]); the first's components are `±` coordinates of `dv = v − c`, whose
+/// float signs are exact.
+#[cold]
+fn same_ray(c: P3, v: P3, a: P3, dv: P3, k: usize) -> bool {
+    for j in 0..3 {
+        let n = o2(c, v, a, j as u8);
+        if n != 0 {
+            // ((v − c) × e_k)_j = dv[j+1]·[k = j+2] − dv[j+2]·[k = j+1] (indices mod 3).
+            let w = if k == (j + 2) % 3 {
+                sign(dv[(j + 1) % 3])
+            } else if k == (j + 1) % 3 {
+                -sign(dv[(j + 2) % 3])
+            } else {
+                0
+            };
+            return w == n;
+        }
+    }
+    false
+}
+
+// ---------------------------------------------------------------------------------------------
 // Connected components.
 
 /// A lock-free union-find over `0..n` (links the larger root under the smaller, so parents
@@ -1786,6 +1976,108 @@ mod tests {
             assert_eq!(got, (count, first), "seed {seed}, amplitude {amp}");
         }
         assert!(skipped_some && found_some);
+    }
+
+    /// `bumpy_sphere` with its faces reversed: outward, as the star-shaped certificate needs.
+    fn outward_sphere(n: usize, m: usize, seed: u64, amp: f64) -> (Vec<f64>, Vec<[u32; 3]>) {
+        let (v, f) = bumpy_sphere(n, m, seed, amp);
+        (v, f.iter().map(|t| [t[0], t[2], t[1]]).collect())
+    }
+
+    /// Every pair of faces by the exact test: how many meet, and the first pair.
+    fn all_pairs(v: &[f64], f: &[[u32; 3]]) -> (u64, Option<(u32, u32)>) {
+        let pts = Points::new(v);
+        let mut count = 0u64;
+        let mut first = None;
+        for i in 0..f.len() {
+            for j in i + 1..f.len() {
+                let (p, q) = (pts.tri(&f[i]), pts.tri(&f[j]));
+                let (Some(kp), Some(kq)) = (drop_axis(&p), drop_axis(&q)) else {
+                    continue;
+                };
+                if faces_cross(&p, &q, &f[i], &f[j], kp, kq) {
+                    count += 1;
+                    first.get_or_insert((i as u32, j as u32));
+                }
+            }
+        }
+        (count, first)
+    }
+
+    /// Issue 21, item 17: the star-shaped certificate passes only meshes in which testing
+    /// every pair of faces finds no intersection, on bumpy spheres from smooth to folded and
+    /// self-intersecting, about points inside, off-centre and outside; it passes the smooth
+    /// ones about an inside point, and refuses any point outside.
+    #[test]
+    fn star_shaped_certificate_implies_no_intersection() {
+        let (mut certified, mut crossing, mut refused_embedded) = (0, 0, 0);
+        let cancel = Cancel::new(0);
+        for seed in 0..80u64 {
+            let amp = [0.0, 0.01, 0.05, 0.2, 0.5][seed as usize % 5];
+            let (n, m) = if seed % 2 == 0 { (6, 9) } else { (10, 17) };
+            let (v, f) = outward_sphere(n, m, seed, amp);
+            let pts = Points::new(&v);
+            let (count, _) = all_pairs(&v, &f);
+            crossing += usize::from(count > 0);
+            for c in [
+                [0.0; 3],
+                [0.21, -0.13, 0.07],
+                [0.0, 0.0, 0.93],
+                [2.5, 0.0, 0.0],
+            ] {
+                let ok = star_shaped_about(pts, &f, |_| false, c, &cancel).unwrap();
+                if ok {
+                    assert_eq!(count, 0, "seed {seed}, amplitude {amp}, centre {c:?}");
+                    certified += 1;
+                } else if count == 0 {
+                    refused_embedded += 1;
+                }
+                if amp <= 0.01 && c == [0.0; 3] {
+                    assert!(ok, "seed {seed}: a smooth sphere about its centre");
+                }
+                if c[0] > 2.0 {
+                    assert!(!ok, "seed {seed}: a point outside");
+                }
+            }
+        }
+        assert!(certified > 0 && crossing > 0 && refused_embedded > 0);
+    }
+
+    /// Negative controls: a sphere whose meridians wind twice around the axis (each face
+    /// seen from the centre is positively oriented, but the fans at the poles wind twice and
+    /// the sheets overlap) and a sphere with one vertex pushed through the opposite side are
+    /// refused by the certificate, and the pairwise check finds their intersections.
+    #[test]
+    fn star_shaped_certificate_refuses_self_intersecting_meshes() {
+        let cancel = Cancel::new(0);
+        let (n, m) = (8, 11);
+        let (mut v, f) = outward_sphere(n, m, 0, 0.0);
+        for k in 1..=n {
+            let th = std::f64::consts::PI * k as f64 / (n + 1) as f64;
+            for j in 0..m {
+                let ph = 4.0 * std::f64::consts::PI * j as f64 / m as f64;
+                let i = 3 * (1 + (k - 1) * m + j);
+                v[i..i + 3].copy_from_slice(&[th.sin() * ph.cos(), th.sin() * ph.sin(), th.cos()]);
+            }
+        }
+        let pts = Points::new(&v);
+        assert!(!star_shaped_about(pts, &f, |_| false, [0.0; 3], &cancel).unwrap());
+        assert!(all_pairs(&v, &f).0 > 0);
+        let index = Index::new(pts, &f, |_| false, &cancel).unwrap();
+        assert_eq!(index.intersections(&cancel).unwrap(), all_pairs(&v, &f));
+        // One ring vertex pushed through to the far side: faces around it turn inside out.
+        let (mut v, f) = outward_sphere(n, 2 * m, 0, 0.0);
+        let i = 3 * (1 + 3 * 2 * m);
+        let p = [v[i], v[i + 1], v[i + 2]];
+        v[i..i + 3].copy_from_slice(&p.map(|x| -1.3 * x));
+        let pts = Points::new(&v);
+        assert!(!star_shaped_about(pts, &f, |_| false, [0.0; 3], &cancel).unwrap());
+        assert!(all_pairs(&v, &f).0 > 0);
+        // A stopped call stops.
+        let stopped = Cancel::new(0);
+        stopped.cancel();
+        let (v, f) = outward_sphere(n, m, 0, 0.0);
+        assert!(star_shaped_about(Points::new(&v), &f, |_| false, [0.0; 3], &stopped).is_err());
     }
 
     /// A fan of more faces than [`STAR_MAX`] (the poles of a UV sphere of 100 meridians) is
