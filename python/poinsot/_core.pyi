@@ -123,6 +123,9 @@ class _FromSpin(TypedDict):
 class _HeavyTop(_FromSpin):
     psi_dot: float
 
+class _FromBody(_FromSpin):
+    g: float
+
 _Defaults = TypedDict(
     "_Defaults",
     {
@@ -160,6 +163,7 @@ _Defaults = TypedDict(
         "axis_stability": _Spin,
         "HeavyTop.__init__": _HeavyTop,
         "HeavyTop.from_spin": _FromSpin,
+        "HeavyTop.from_body": _FromBody,
         "sweep.simulate": _Batch,
         "sweep.drop": _SweepFall,
         "sweep.projectile": _SweepFall,
@@ -292,6 +296,9 @@ class MassProperties:
     def rotated(self, rotation: NDArray[np.float64]) -> MassProperties: ...
     def principal(self, rtol: float) -> tuple[NDArray[np.float64], NDArray[np.float64]]: ...
     def kind(self, rtol: float) -> str: ...
+    def heavy_top_parameters(
+        self, pivot_distance: float, g: float
+    ) -> tuple[float, float, float]: ...
     def angular_momentum(
         self, omega: NDArray[np.float64], about: NDArray[np.float64] | None = None
     ) -> NDArray[np.float64]: ...

@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from ._units import is_quantity, to_si
 from .errors import ArgumentTypeError, PoinsotError
 
 FloatArray = NDArray[np.float64]
@@ -38,6 +39,8 @@ def as_float_array(value: Any, name: str, *, finite: bool = True) -> FloatArray:
     :class:`PoinsotError` if it cannot be converted (ragged lists, numbers beyond the double
     range) or, with ``finite``, holds NaN or infinity."""
     if type(value) is not np.ndarray or value.dtype != np.float64:
+        if is_quantity(value):  # units at the door: SI for the argument's dimension
+            value = to_si(value, name)
         try:
             raw = np.asarray(value)
         except (TypeError, ValueError) as exc:
@@ -156,9 +159,16 @@ def as_choice(value: Any, name: str, choices: tuple[str, ...]) -> str:
 
 def as_angle(value: Any, name: str, degrees: Any = False) -> float:
     """One angle (or angular rate) as a float in radians: ``value`` converted from degrees
-    when ``degrees`` is true."""
+    when ``degrees`` is true (a pint quantity carries its unit: converted to radians whatever
+    ``degrees``)."""
     x = as_scalar(value, name)
-    return float(np.radians(x)) if as_flag(degrees, "degrees") else x
+    return float(np.radians(x)) if in_degrees(value, degrees) else x
+
+
+def in_degrees(value: Any, degrees: Any) -> bool:
+    """Whether the angles given as ``value`` are in degrees: ``degrees`` (checked a bool) for
+    plain numbers; never for a pint quantity, already in radians (:mod:`poinsot._units`)."""
+    return as_flag(degrees, "degrees") and not is_quantity(value)
 
 
 def as_flat(
@@ -168,7 +178,7 @@ def as_flat(
     :func:`shaped`), converted from degrees to radians when ``degrees`` is true. With
     ``finite=False`` NaN and infinity pass, for a core function that refuses them itself."""
     arr = as_float_array(value, name, finite=finite)
-    if as_flag(degrees, "degrees"):
+    if in_degrees(value, degrees):
         arr = np.radians(arr)
     return np.ascontiguousarray(arr.reshape(-1), dtype=np.float64), arr.shape
 

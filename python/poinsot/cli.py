@@ -30,6 +30,7 @@ import numpy as np
 from . import _answers
 from ._core import DEFAULTS as _DEFAULTS
 from ._progress import SHOW_PROGRESS_AFTER_S, delayed_bar, stderr_interactive
+from ._units import ARGUMENTS as _ARGUMENTS
 from .errors import PoinsotError
 from .plots._mpl import STYLES
 
@@ -99,12 +100,33 @@ MAY_BE_INFINITE = frozenset(
 API_NAMES = {
     "free": {"omega0": "omega", "t_end": "duration"},
     "inertia": {"path": "shape"},
+    "top": {"pivot_distance": "pivot", "omega3": "spin"},
 }
+
+
+class WithUnit(float):
+    """A number given on the command line with a unit (``5cm``, ``30deg``), converted to SI:
+    an angle in radians whatever ``--degrees`` (:func:`_read_units`)."""
+
+
+def _dimension(ctx: click.Context | None, param: click.Parameter | None) -> str | None:
+    """The dimension of the option ``param`` (a key of ``_units.DIMENSIONS``): that of the API
+    argument it stands for (``_units.ARGUMENTS``, through :data:`API_NAMES`), or None."""
+    if param is None or param.name is None:
+        return None
+    command = ctx.command.name if ctx is not None else None
+    renamed = {v: k for k, v in API_NAMES.get(command or "", {}).items()}
+    name = renamed.get(param.name, param.name)
+    dims = _ARGUMENTS_LOWER.get(name.lower())
+    return dims[0] if dims else None
 
 
 class FiniteFloat(click.ParamType):
     """A finite real number: ``nan``, ``inf`` and numbers that overflow a double (``1e400``)
-    are usage errors, like words that are not numbers."""
+    are usage errors, like words that are not numbers. A number may carry a unit of the
+    option's dimension (``5cm``, ``1500rpm``, ``50d53m``, ``12kn``; ``_units.parse``), returned
+    in SI as a :class:`WithUnit`; a unit of another dimension is a usage error saying which
+    ("--latitude: expected an angle, got 3 m")."""
 
     name = "number"
 
@@ -116,10 +138,67 @@ class FiniteFloat(click.ParamType):
         try:
             f = float(value)
         except (TypeError, ValueError, OverflowError):
-            self.fail(f"{value!r} is not a number", param, ctx)
+            f = self._with_unit(value, param, ctx)
         if not math.isfinite(f):
             self.fail(f"{value!r} is not a finite number", param, ctx)
         return f
+
+    def _with_unit(
+        self, value: Any, param: click.Parameter | None, ctx: click.Context | None
+    ) -> float:
+        from . import _units
+
+        if not isinstance(value, str):
+            self.fail(f"{value!r} is not a number", param, ctx)
+        dim = _dimension(ctx, param)
+        try:
+            if dim is None:
+                number, given = _units.parse(value, "number")
+            else:
+                number, given = _units.parse(value, dim)
+        except ValueError as exc:
+            if "not a number" in str(exc):
+                self.fail(f"{value!r} is not a number", param, ctx)
+            flag = _flag(param) if param is not None else "value"
+            raise click.UsageError(f"{flag}: {exc}", ctx) from None
+        except OverflowError:
+            self.fail(f"{value!r} is not a finite number", param, ctx)
+        return WithUnit(number) if given else number
+
+
+#: The dimensions of ``_units.ARGUMENTS`` by lower-case name (an option's parameter name is
+#: lower case: --I1 is i1).
+_ARGUMENTS_LOWER = {name.lower(): dims for name, dims in _ARGUMENTS.items()}
+
+
+def _read_units(ctx: click.Context) -> None:
+    """With ``--degrees``, an angle (and for ``top`` an angular rate) given with a unit goes back
+    to degrees, since the command converts all its angles from degrees: ``--theta 0.5rad
+    --degrees`` is 0.5 rad, like ``--theta 28.65 --degrees``."""
+    if not ctx.params.get("degrees"):
+        return
+    read = ("angle", "angular rate") if ctx.command.name == "top" else ("angle",)
+    for p in ctx.command.params:
+        value = ctx.params.get(p.name or "")
+        if isinstance(value, WithUnit) and _dimension(ctx, p) in read:
+            ctx.params[p.name or ""] = math.degrees(value)
+
+
+def _degrees_hint(ctx: click.Context, param: click.Parameter) -> str:
+    """The hint "; did you mean --degrees (or 30deg)?" for an angle given without unit,
+    refused in radians, where the command reads degrees with --degrees and the number is a
+    plausible angle in degrees; else ""."""
+    value = ctx.params.get(param.name or "")
+    if (
+        not isinstance(value, float)
+        or isinstance(value, WithUnit)
+        or _dimension(ctx, param) != "angle"
+        or "degrees" not in ctx.params
+        or ctx.params["degrees"]
+        or not abs(value) <= 360.0
+    ):
+        return ""
+    return f"; did you mean --degrees (or {value:g}deg)?"
 
 
 #: The type of every real-valued option.
@@ -204,7 +283,7 @@ def _explain(ctx: click.Context, exc: PoinsotError) -> str:
     if sep and name.replace("_", "").isalnum():
         param = _option_for(ctx, name.strip())
         if param is not None:
-            return f"{_flag(param)}:{rest}"
+            return f"{_flag(param)}:{rest}{_degrees_hint(ctx, param)}"
     given = _given(ctx)
     return f"{text} (given {given})" if given else text
 
@@ -223,6 +302,7 @@ class _PoinsotCommand(click.Command):
         return " ".join(self.help.split("\n\n")[0].split())
 
     def invoke(self, ctx: click.Context) -> Any:
+        _read_units(ctx)
         try:
             return super().invoke(ctx)
         except KeyboardInterrupt:
@@ -815,7 +895,7 @@ def _check_picture_path(plot_path: str) -> None:
             )
 
 
-def _print_body(source: str, body: Any) -> None:
+def _print_body(source: str, body: Any, data: dict[str, Any]) -> None:
     from rich.console import Console
     from rich.table import Table
 
@@ -1269,13 +1349,90 @@ def free(
     )
 
 
+#: The symmetric solids ``poinsot top --shape`` makes (poinsot.RigidBody's constructors, their
+#: axis of symmetry z), with the dimensions each takes.
+_TOP_SHAPES = ("disk", "ring", "cylinder", "cone")
+
+
+def _top_body(
+    shape: str | None,
+    mass: float | None,
+    radius: float | None,
+    height: float | None,
+    pivot: float | None,
+    moments: tuple[float | None, ...],
+) -> Any:
+    """The :class:`~poinsot.RigidBody` of ``top --shape`` (None without ``--shape``), after
+    checking that the options given go together: a body (``--shape``, ``--mass``, ``--radius``,
+    ``--height`` for a cylinder or cone, ``--pivot``) or the moments (``--I1 --I3 --mgl``)."""
+    from .body import RigidBody
+
+    body_options = {"--mass": mass, "--radius": radius, "--height": height, "--pivot": pivot}
+    moment_options = dict(zip(("--I1", "--I3", "--mgl"), moments))
+    if shape is None:
+        extra = [flag for flag, v in body_options.items() if v is not None]
+        if extra:
+            raise click.UsageError(f"{', '.join(extra)} go with --shape")
+        missing = [flag for flag, v in moment_options.items() if v is None]
+        if missing:
+            raise click.UsageError(
+                f"missing {', '.join(missing)} (or a body: --shape, --mass, --radius, --pivot)"
+            )
+        return None
+    extra = [flag for flag, v in moment_options.items() if v is not None]
+    if extra:
+        raise click.UsageError(f"{', '.join(extra)} do not go with --shape (the body gives them)")
+    needed = ["--mass", "--radius", "--pivot"]
+    if shape in ("cylinder", "cone"):
+        needed.append("--height")
+    elif height is not None:
+        raise click.UsageError(f"--height does not go with --shape {shape}")
+    missing = [flag for flag in needed if body_options[flag] is None]
+    if missing:
+        raise click.UsageError(f"--shape {shape} needs {', '.join(missing)}")
+    m, r, h = cast("tuple[float, float, float]", (mass, radius, height))  # given, as checked
+    if shape == "disk":
+        return RigidBody.thin_disk(m, r)
+    if shape == "ring":
+        return RigidBody.thin_ring(m, r)
+    if shape == "cylinder":
+        return RigidBody.solid_cylinder(m, r, h)
+    # The cone's apex is at the origin; its symmetry axis is z as the others'.
+    return RigidBody.solid_cone(m, r, h)
+
+
 @main.command()
-@_number("--I1", "i1", "Moment about a transverse axis through the pivot (kg·m²).")
-@_number("--I3", "i3", "Moment about the symmetry axis (kg·m², ≤ 2 I1).")
-@_number("--mgl", "m g l: weight × pivot-to-centre-of-mass distance (N·m).")
-@_number("--theta", "Initial nutation angle θ₀ from the upward vertical (rad, or degrees).")
+@_number("--I1", "i1", "Moment about a transverse axis through the pivot (kg·m²).", default=None)
+@_number("--I3", "i3", "Moment about the symmetry axis (kg·m², ≤ 2 I1).", default=None)
+@_number("--mgl", "m g l: weight × pivot-to-centre-of-mass distance (N·m).", default=None)
+@click.option(
+    "--shape",
+    type=click.Choice(_TOP_SHAPES),
+    default=None,
+    help="Or a real body instead of --I1/--I3/--mgl: its shape (with --mass, --radius, "
+    "--height for a cylinder or cone, and --pivot).",
+)
+@_number("--mass", "Mass of the body (kg; e.g. 0.2kg or 200g).", default=None)
+@_number("--radius", "Radius of the body (m; e.g. 5cm).", default=None)
+@_number("--height", "Height of a cylinder or cone (m).", default=None)
+@_number(
+    "--pivot",
+    "Distance from the pivot to the centre of mass along the symmetry axis (m; e.g. 10cm).",
+    default=None,
+)
+@_number(
+    "--theta",
+    "--tilt",
+    "theta",
+    "Initial nutation angle θ₀ from the upward vertical (rad, or degrees; e.g. 30deg).",
+)
 @_number("--phi-dot", "phi_dot", "Initial precession rate φ̇₀ (rad/s).", call="HeavyTop.__init__")
 @_number("--psi-dot", "psi_dot", "Initial spin rate ψ̇₀ (rad/s).", call="HeavyTop.__init__")
+@_number(
+    "--spin",
+    "Or the spin ω₃ instead of --psi-dot (rad/s; e.g. 1500rpm).",
+    default=None,
+)
 @_number("--theta-dot", "theta_dot", "Initial nutation rate θ̇₀ (rad/s).", call="HeavyTop.__init__")
 @click.option(
     "--degrees", is_flag=True, help="Read θ₀ in degrees and the rates in degrees per second."
@@ -1295,12 +1452,18 @@ def free(
 )
 @_JSON
 def top(
-    i1: float,
-    i3: float,
-    mgl: float,
+    i1: float | None,
+    i3: float | None,
+    mgl: float | None,
+    shape: str | None,
+    mass: float | None,
+    radius: float | None,
+    height: float | None,
+    pivot: float | None,
     theta: float,
     phi_dot: float,
     psi_dot: float,
+    spin: float | None,
     theta_dot: float,
     degrees: bool,
     plot_path: str | None,
@@ -1323,14 +1486,34 @@ def top(
       poinsot top --I1 1 --I3 0.5 --mgl 1 --theta 0.8 --phi-dot -0.5 --psi-dot 6 --plot loops.png
       poinsot top --I1 1 --I3 0.5 --mgl 1 --theta 45 --degrees --phi-dot -30 --psi-dot 340 --plot-dir out/
       poinsot top --I1 1 --I3 0.5 --mgl 1 --theta 0.8 --phi-dot -0.5 --psi-dot 6 --animate top.gif
+      poinsot top --shape disk --mass 0.2 --radius 5cm --pivot 10cm --spin 1500rpm --tilt 30deg
     """
     from .top import HeavyTop
 
     _check_pictures(plot_path, animate_path)
 
-    t = HeavyTop(
-        i1, i3, mgl, theta, theta_dot=theta_dot, phi_dot=phi_dot, psi_dot=psi_dot, degrees=degrees
-    )
+    body = _top_body(shape, mass, radius, height, pivot, (i1, i3, mgl))
+    if body is not None:  # the moments from the body: HeavyTop.from_body
+        made = HeavyTop.from_body(body, cast(float, pivot), theta, spin or 0.0, degrees=degrees)
+        i1, i3, mgl = made.I1, made.I3, made.mgl
+    assert i1 is not None and i3 is not None and mgl is not None  # checked by _top_body
+    if spin is not None:
+        if psi_dot:
+            raise click.UsageError("--spin and --psi-dot do not go together")
+        t = HeavyTop.from_spin(
+            i1, i3, mgl, theta, spin, theta_dot=theta_dot, phi_dot=phi_dot, degrees=degrees
+        )
+    else:
+        t = HeavyTop(
+            i1,
+            i3,
+            mgl,
+            theta,
+            theta_dot=theta_dot,
+            phi_dot=phi_dot,
+            psi_dot=psi_dot,
+            degrees=degrees,
+        )
     theta0 = t.initial_state["theta"]
     t1, t2 = t.turning_points
     steady: dict[str, Any]

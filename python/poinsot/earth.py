@@ -26,6 +26,7 @@ from ._validate import (
     as_flat,
     as_float_array,
     as_scalar,
+    in_degrees,
     shaped,
 )
 from .errors import PoinsotError
@@ -460,7 +461,7 @@ class Earth:
                 f"velocity_enu: shape {vel.shape} does not broadcast with latitude {lat.shape}"
             ) from None
         lat = np.broadcast_to(
-            np.radians(lat) if as_flag(degrees, "degrees") else lat, lead
+            np.radians(lat) if in_degrees(latitude, degrees) else lat, lead
         ).reshape(-1)
         vel = np.broadcast_to(vel, lead + (3,)).reshape(-1, 3)
         out = self._core.coriolis_acceleration(np.ascontiguousarray(lat), np.ascontiguousarray(vel))
@@ -544,7 +545,7 @@ class Earth:
             raise PoinsotError(
                 f"height: shape {h.shape} does not broadcast with latitude {lat.shape}"
             ) from None
-        lat = np.radians(lat) if as_flag(degrees, "degrees") else lat
+        lat = np.radians(lat) if in_degrees(latitude, degrees) else lat
         hh = np.ascontiguousarray(np.broadcast_to(h, shape).reshape(-1))
         ll = np.ascontiguousarray(np.broadcast_to(lat, shape).reshape(-1))
         return shaped(core(hh, ll), shape)

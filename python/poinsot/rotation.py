@@ -38,6 +38,7 @@ from numpy.typing import NDArray
 from . import _core
 from . import _display as show
 from ._core import DEFAULTS as _DEFAULTS
+from ._units import is_quantity
 from ._validate import _is_scipy_rotation, as_float_array, as_scalar, as_vector3
 from .errors import GimbalLockWarning, PoinsotError
 
@@ -195,7 +196,7 @@ def euler_to_matrix(
         Rotation matrices.
     """
     flat, lead = _records(angles, "angles", (3,))
-    if _flag(degrees, "degrees"):
+    if _flag(degrees, "degrees") and not is_quantity(angles):
         flat = flat * _DEG
     out = _run(lead, _core.euler_to_matrix, flat, _seq(seq), _flag(intrinsic, "intrinsic"))
     return out.reshape(lead + (3, 3))
@@ -316,7 +317,7 @@ def axis_angle_to_matrix(axis: Any, angle: Any, *, degrees: bool = False) -> Flo
         A zero axis (names ``axis``) or non-finite input.
     """
     (ax, an), lead = _broadcast((axis, "axis", (3,)), (angle, "angle", ()))
-    if _flag(degrees, "degrees"):
+    if _flag(degrees, "degrees") and not is_quantity(angle):
         an = an * _DEG
     return _run(lead, _core.axis_angle_to_matrix, ax, an).reshape(lead + (3, 3))
 
@@ -479,8 +480,9 @@ def _angular_velocity(
     angles: Any, rates: Any, seq: str, intrinsic: bool, degrees: bool, frame: str
 ) -> FloatArray:
     (a, r), lead = _broadcast((angles, "angles", (3,)), (rates, "rates", (3,)))
-    if _flag(degrees, "degrees"):
-        a, r = a * _DEG, r * _DEG
+    if _flag(degrees, "degrees"):  # a pint quantity is in rad or rad/s already
+        a = a if is_quantity(angles) else a * _DEG
+        r = r if is_quantity(rates) else r * _DEG
     out = _run(lead, _core.angular_velocity, a, r, _seq(seq), _flag(intrinsic, "intrinsic"), frame)
     return out.reshape(lead + (3,))
 

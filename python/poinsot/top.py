@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -28,12 +28,17 @@ from . import _core
 from . import _display as show
 from ._props import core_property
 from ._validate import FloatArray, as_angle, as_flag, as_flat, as_scalar, plain_float, shaped
+from .errors import ArgumentTypeError
+
+if TYPE_CHECKING:
+    from .body import RigidBody
 
 __all__ = ["HeavyTop", "SteadyPrecession", "MOTION_CLASSES"]
 
 # The start rates and angles left out: the core's (poinsot::defaults::EulerState).
 _TOP = _core.DEFAULTS["HeavyTop.__init__"]
 _FROM_SPIN = _core.DEFAULTS["HeavyTop.from_spin"]
+_FROM_BODY = _core.DEFAULTS["HeavyTop.from_body"]
 
 MOTION_CLASSES = (
     "waves",
@@ -201,6 +206,62 @@ class HeavyTop(show.Displayed):
             as_angle(omega3, "omega3", degrees),
         )
         return top
+
+    @classmethod
+    def from_body(
+        cls,
+        body: RigidBody,
+        pivot_distance: float,
+        theta: float,
+        omega3: float,
+        *,
+        theta_dot: float = _FROM_BODY["theta_dot"],
+        phi_dot: float = _FROM_BODY["phi_dot"],
+        phi: float = _FROM_BODY["phi"],
+        psi: float = _FROM_BODY["psi"],
+        g: float = _FROM_BODY["g"],
+        degrees: bool = False,
+    ) -> HeavyTop:
+        """The top made of a real body: the symmetric :class:`~poinsot.RigidBody` ``body``,
+        whose symmetry axis is its axis 3 (z), pivoted on that axis at ``pivot_distance`` (m,
+        >= 0) from its centre of mass, under gravity ``g`` (m/s^2), started at the tilt
+        ``theta`` (rad) spinning at ``omega3`` (rad/s) as :meth:`from_spin` (the other angles
+        and rates likewise; degrees and deg/s with ``degrees=True``).
+
+        The core computes ``I1 = I_xx + m d**2`` (the parallel-axis theorem: the transverse
+        moment about the pivot), ``I3 = I_zz`` and ``mgl = m g d``.
+
+        Raises :class:`PoinsotError` naming ``body`` when its axis 3 is not a principal axis or
+        its transverse moments differ (``I_xx != I_yy`` beyond 1e-9 of the largest moment),
+        ``pivot_distance`` or ``g`` when negative, and as :meth:`from_spin`.
+
+        Examples
+        --------
+        >>> from poinsot import RigidBody
+        >>> disk = RigidBody.thin_disk(0.2, 0.05)            # 0.2 kg, radius 5 cm
+        >>> top = HeavyTop.from_body(disk, 0.1, 30, 1500 * 6, degrees=True)  # 1500 rpm
+        >>> round(top.I1, 7), round(top.I3, 7), round(top.mgl, 6)
+        (0.002125, 0.00025, 0.196133)
+        """
+        from .body import RigidBody
+
+        if not isinstance(body, RigidBody):
+            raise ArgumentTypeError(f"body: must be a poinsot.RigidBody, got {type(body).__name__}")
+        i1, i3, mgl = body._core.heavy_top_parameters(
+            as_scalar(pivot_distance, "pivot_distance"), as_scalar(g, "g")
+        )
+        return cls.from_spin(
+            i1,
+            i3,
+            mgl,
+            theta,
+            omega3,
+            theta_dot=theta_dot,
+            phi_dot=phi_dot,
+            phi=phi,
+            psi=psi,
+            degrees=degrees,
+        )
 
     @classmethod
     def from_constants(

@@ -72,6 +72,8 @@ fn calls() -> Vec<(&'static str, Row)> {
     let mut projectile = drop();
     projectile.extend(row! { "height" => d::LAUNCH_HEIGHT });
     let from_spin = || row! { "theta_dot" => s.theta_dot, "phi_dot" => s.phi_dot, "phi" => s.phi, "psi" => s.psi };
+    let mut from_body = from_spin();
+    from_body.extend(row! { "g" => d::STANDARD_GRAVITY });
     let mut start = from_spin();
     start.extend(row! { "psi_dot" => s.psi_dot });
     vec![
@@ -128,6 +130,7 @@ fn calls() -> Vec<(&'static str, Row)> {
         ("axis_stability", row! { "spin" => d::AXIS_SPIN }),
         ("HeavyTop.__init__", start),
         ("HeavyTop.from_spin", from_spin()),
+        ("HeavyTop.from_body", from_body),
         ("sweep.simulate", batch()),
         ("sweep.drop", sweep_fall()),
         ("sweep.projectile", sweep_fall()),

@@ -307,6 +307,14 @@ mass_properties_export! {
     fn kind(&self, rtol: f64) -> PyResult<&'static str> {
         Ok(self.inner.kind(rtol).py()?.as_str())
     }
+
+    /// (I₁, I₃, m g l) (kg·m², kg·m², N·m) of the heavy top made of this symmetric body pivoted
+    /// on its axis 3 at `pivot_distance` (m) below its centre of mass, under gravity `g` (m/s²).
+    fn heavy_top_parameters(&self, pivot_distance: f64, g: f64) -> PyResult<(f64, f64, f64)> {
+        let [i1, i3, mgl] =
+            poinsot::analytic::heavy_top_parameters(&self.inner, pivot_distance, g).py()?;
+        Ok((i1, i3, mgl))
+    }
 }
 
 /// The angular velocities of a per-ω method: rad/s, (N, 3).

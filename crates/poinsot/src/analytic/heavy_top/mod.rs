@@ -23,6 +23,7 @@
 mod cubic;
 pub(super) mod fourier;
 mod motion;
+mod pivot;
 mod state;
 mod steady;
 mod validate;
@@ -33,6 +34,7 @@ use cubic::{
     Turning,
 };
 use motion::Nutation;
+pub use pivot::{heavy_top_parameters, PIVOT_SYMMETRY_RTOL};
 use state::TimeScale;
 pub use state::{
     EulerState, CUSP_TOLERANCE, MAX_PHASE, MIN_POLE_DISTANCE, STEADY_NUTATION_TOLERANCE,
