@@ -4,6 +4,7 @@
 #               browser lab (needs the web tooling that .ci/run installs)
 #   make lab    build the browser lab (WebAssembly core + page) and serve it: `poinsot lab`
 #   make wheel  build the abi3 wheel, the browser lab inside, into dist/ (installs without Rust)
+#   make sdist  build the source distribution into dist/ (installs with pip and Rust anywhere)
 SHELL := /bin/bash
 PYTHON ?= python3
 VENV ?= .venv
@@ -11,7 +12,7 @@ PY := $(VENV)/bin/python
 export PYO3_PYTHON := $(abspath $(PY))
 export MPLBACKEND := Agg
 
-.PHONY: docs lab-shots errata-page docs-setup test-docs setup demo test test-rust lint doc publish-check test-python examples bench stubtest clean lab lab-build test-web web-setup fuzz fuzz-python fuzz-web wheel test-wheel msrv
+.PHONY: docs lab-shots errata-page docs-setup test-docs setup demo test test-rust lint doc publish-check test-python examples bench stubtest clean lab lab-build test-web web-setup fuzz fuzz-python fuzz-web wheel test-wheel sdist test-sdist wheel-aarch64 msrv
 
 $(PY):
 	$(PYTHON) -m venv $(VENV)
@@ -24,7 +25,7 @@ setup: $(PY)
 demo: setup
 	$(VENV)/bin/poinsot tour
 
-test: setup test-rust lint msrv test-python examples test-web test-docs test-wheel
+test: setup test-rust lint msrv test-python examples test-web test-docs test-wheel test-sdist
 
 test-rust:
 	cargo test -p poinsot --release
@@ -56,7 +57,7 @@ publish-check:
 
 # The wheel test (python/tests/test_wheel.py) needs the built wheel: `make test-wheel` runs it.
 test-python: setup
-	$(PY) -m pytest -q -m "not wheel" python/tests
+	$(PY) -m pytest -q -m "not wheel and not sdist" python/tests
 
 examples: setup
 	@set -e; for f in examples/*.py; do echo "== $$f"; $(PY) $$f; done
@@ -124,6 +125,40 @@ wheel: lab-build
 # and fetches the lab's page and WebAssembly from `poinsot lab` (python/tests/test_wheel.py).
 test-wheel: wheel
 	POINSOT_WHEEL="$$(ls dist/poinsot-*.whl)" $(PY) -m pytest -q -m wheel python/tests/test_wheel.py
+
+# The source distribution (maturin sdist) into dist/: the Rust workspace without the wasm crate,
+# Cargo.lock, the Python package, README and licences, and the built browser lab and notebook
+# widgets (python/poinsot/lab and widgets/static, git-ignored, named in pyproject's include with
+# format "sdist"), so that `poinsot lab` works from an sdist install. Installing it builds the core
+# with maturin and cargo: it needs Rust >= 1.89 and a C linker, never node or wasm-bindgen.
+sdist: lab-build
+	$(PY) -m pip install -q 'maturin>=1.16,<2'
+	rm -f dist/poinsot-*.tar.gz
+	$(VENV)/bin/maturin sdist --out dist
+
+# Installs that sdist into a fresh virtual environment with plain `pip install` (build isolation:
+# maturin from the index or pip's cache), checks its file list, that no web tool was called, and
+# that `poinsot fall` and the API answer as this checkout does (python/tests/test_sdist.py). The
+# cargo target dir is kept (target/sdist) so that a second run compiles only what changed.
+test-sdist: sdist
+	CARGO_TARGET_DIR=$(abspath target/sdist) POINSOT_SDIST="$$(ls dist/poinsot-*.tar.gz)" \
+		$(PY) -m pytest -q -m sdist python/tests/test_sdist.py
+
+# The Linux aarch64 wheel (manylinux_2_17, glibc >= 2.17), cross-built on x86-64 with zig as the
+# linker (maturin --zig; the ziglang package and rustup's aarch64-unknown-linux-gnu target are
+# installed when missing), the browser lab inside, into dist/aarch64/ (apart from the host's
+# wheel that test-wheel installs), then inspected as auditwheel reads a wheel (tags, ELF machine,
+# glibc versions, linked libraries: python/tests/test_wheel_aarch64.py); this machine cannot run
+# it. Not in `make test`: a first release build for another CPU costs about 200 s of CPU (17 min
+# of wall time on two busy cores); the release workflow builds and tests it on every tag.
+wheel-aarch64: lab-build
+	$(PY) -m pip install -q 'maturin>=1.16,<2' ziglang
+	rustup target add aarch64-unknown-linux-gnu
+	rm -f dist/aarch64/poinsot-*.whl
+	PATH="$(abspath $(VENV))/bin:$$PATH" $(VENV)/bin/maturin build --release \
+		--target aarch64-unknown-linux-gnu --zig --out dist/aarch64
+	POINSOT_WHEEL_AARCH64="$$(ls dist/aarch64/poinsot-*.whl)" $(PY) -m pytest -q -m wheel \
+		python/tests/test_wheel_aarch64.py
 
 # Browser tests (playwright-core + Debian chromium): scenes, controls, URL, parity with Python.
 test-web: lab-build
