@@ -307,3 +307,60 @@ def test_every_real_option_of_the_cli_has_a_dimension() -> None:
         for p in command.params:
             if isinstance(p.type, FiniteFloat):
                 assert _dimension(ctx, p) in _units.DIMENSIONS, (name, p.name)
+
+
+#: Public calls across the modules, each with quantities and with the same values as SI floats.
+EVERYWHERE = {
+    "FreeSymmetricTop": lambda q: (
+        ps.FreeSymmetricTop(
+            q(1, "kg*m**2"), q(0.5, "kg*m**2"), q([0.1, 0, 2], "rad/s")
+        ).precession_rate
+    ),
+    "FreeRigidBody.omega": lambda q: ps.FreeRigidBody(
+        q([1, 2, 3], "kg*m**2"), q([1, 0.1, 1], "rad/s")
+    ).omega(q(2, "s")),
+    "simulate": lambda q: (
+        ps.simulate(
+            ps.RigidBody.cuboid(1.0, (1, 2, 3)), q([1, 0.1, 1], "rad/s"), q(1, "s"), samples=3
+        ).omega
+    ),
+    "MovingFrame.to_fixed": lambda q: (
+        ps.MovingFrame(angular_velocity=q([0, 0, 2], "rad/s"))
+        .to_fixed(q([3, 0, 0], "m"), velocity=q([0, 1, 0], "m/s"))
+        .acceleration
+    ),
+    "Earth.drop": lambda q: ps.Earth(radius=q(6.371e6, "m")).drop(q(100, "m"), q(0.7, "rad")).east,
+    "screw_axis": lambda q: ps.screw_axis(np.eye(3), q([0, 0, 2], "m")).slide,
+    "RigidBody.from_point_masses": lambda q: (
+        ps.RigidBody.from_point_masses(q([1, 2], "kg"), q([[1, 1, 0], [-1, -1, 0]], "m")).inertia
+    ),
+    "RigidBody.angular_momentum": lambda q: ps.RigidBody.cuboid(
+        q(1, "kg"), q([1, 2, 3], "m")
+    ).angular_momentum(q([0, 0, 2], "rad/s"), about=q([0, 0, 1], "m")),
+    "HeavyTop.min_spin": lambda q: ps.HeavyTop.min_spin(
+        q(1, "kg*m**2"), q(0.5, "kg*m**2"), q(1, "J"), q(0.5, "rad")
+    ),
+    "HeavyTop.euler_angles": lambda q: ps.HeavyTop(1, 0.5, 1, 0.8, psi_dot=6).euler_angles(
+        q([1, 2], "s")
+    ),
+}
+
+
+@pytest.mark.parametrize("call", sorted(EVERYWHERE))
+def test_quantities_are_taken_everywhere_as_their_si_values(call: str) -> None:
+    """Each public call gives the same numbers (bit for bit) for quantities in SI units and for
+    the plain floats, and for the same quantities in other units to round-off."""
+
+    def plain(x, unit):
+        return x
+
+    smaller = {"kg": "g", "m": "mm", "s": "ms", "rad": "mrad", "J": "mJ", "rad/s": "deg/s"}
+    smaller.update({"kg*m**2": "g*cm**2", "m/s": "km/h"})
+
+    def scaled(x, unit):  # the same value in another unit of its dimension
+        return Q(x, unit).to(smaller[unit])
+
+    f = EVERYWHERE[call]
+    want = np.asarray(f(plain))
+    assert np.array_equal(np.asarray(f(Q)), want)
+    assert np.allclose(np.asarray(f(scaled)), want, rtol=1e-12, atol=0)
