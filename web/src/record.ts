@@ -15,11 +15,16 @@ interface Column {
   label: string;
 }
 
-/** A readout's numeric columns and their values: a number, or each number of a vector. */
+/** A readout's numeric columns and their values: a number, or each number of a vector — named
+ * by its own name where the label lists one per component ("φ, θ, ψ (rad)" → "θ (rad)"), else
+ * by its place ("r′ fixed frame (m) [2]"). */
 function numbers(r: Readout): { key: string; label: string; value: number }[] {
   if (typeof r.value === "number") return [{ key: r.key, label: r.label, value: r.value }];
-  if (Array.isArray(r.value)) return r.value.map((v, i) => ({ key: `${r.key}[${i}]`, label: `${r.label} [${i + 1}]`, value: v }));
-  return [];
+  if (!Array.isArray(r.value)) return [];
+  const m = /^([^(]*?)\s*(\(.*\))?$/.exec(r.label);
+  const names = m ? m[1].split(", ") : [];
+  const own = names.length === r.value.length && names.every((n) => n && !n.includes(" "));
+  return r.value.map((v, i) => ({ key: `${r.key}[${i}]`, label: own ? `${names[i]}${m![2] ? ` ${m![2]}` : ""}` : `${r.label} [${i + 1}]`, value: v }));
 }
 
 export class Recorder {

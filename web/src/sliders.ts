@@ -75,10 +75,21 @@ export function fromInput(spec: NumberParam, position: string): number {
 /** A slider's value as its output shows it: the decimals of its step (3 significant digits on a
  * log scale), and the rpm beside a spin in rad/s. */
 export function valueText(spec: NumberParam, x: number): string {
-  const s = spec.scale === "log" ? fmt(x, 3) : fmtStep(x, spec.step);
-  if (spec.unit === "rad/s" && Math.abs(x) >= 10) return `${s} (${fmt(x * RPM_PER_RAD_S, 3)} rpm)`;
+  const s = spec.scale === "log" ? plain(x) : fmtStep(x, spec.step);
+  if (spec.unit === "rad/s" && Math.abs(x) >= 10) return `${s} (${rpm(x)} rpm)`;
   if (spec.unit === "rad") return `${s} (${fmt(x / DEG, 3)}°)`;
   return s;
+}
+
+/** A spin (rad/s) in whole revolutions per minute. */
+function rpm(x: number): string {
+  return String(Math.round(x * RPM_PER_RAD_S)).replace("-", "−");
+}
+
+/** A value of a logarithmic slider's grid as it is (at most 3 significant digits, no trailing
+ * zeros): 9, 0.5, 0.0021. */
+function plain(x: number): string {
+  return String(Number(x.toPrecision(3))).replace("-", "−");
 }
 
 /** Units in words, for a screen reader (aria-valuetext). */
@@ -102,11 +113,11 @@ const UNIT_WORDS: Record<string, [string, string]> = {
 
 /** What a screen reader says for a slider's value: "30 degrees", "157 radians per second (1500 rpm)". */
 export function ariaValueText(spec: NumberParam, x: number): string {
-  const n = (spec.scale === "log" ? fmt(x, 3) : fmtStep(x, spec.step)).replace("−", "minus ");
+  const n = (spec.scale === "log" ? plain(x) : fmtStep(x, spec.step)).replace("−", "minus ");
   const words = UNIT_WORDS[spec.unit];
   const unit = words ? words[Math.abs(x) === 1 ? 0 : 1] : spec.unit;
   const said = (y: number) => fmt(y, 3).replace("−", "minus ");
-  const beside = spec.unit === "rad/s" && Math.abs(x) >= 10 ? ` (${said(x * RPM_PER_RAD_S)} rpm)` : spec.unit === "rad" ? ` (${said(x / DEG)} degrees)` : "";
+  const beside = spec.unit === "rad/s" && Math.abs(x) >= 10 ? ` (${rpm(x).replace("−", "minus ")} rpm)` : spec.unit === "rad" ? ` (${said(x / DEG)} degrees)` : "";
   return `${n} ${unit}${beside}`.trim();
 }
 
@@ -154,8 +165,7 @@ export function resolve(params: Param[], last: Params, key: string, value: numbe
     const follow = nearestValid(other, Number(want[other.key]), (x) => trial({ ...want, [other.key]: x }) === null);
     if (follow !== null) {
       const p = { ...want, [other.key]: follow };
-      const movedText = moved?.kind === "number" ? say(moved, Number(value)) : String(value);
-      return { params: p, note: `${name(other)} follows ${moved ? name(moved) : key} (${movedText}) to ${say(other, follow)}: ${why}.`, refused: false };
+      return { params: p, note: `${name(other)} followed ${moved ? name(moved) : key} to ${say(other, follow)}: ${why}.`, refused: false };
     }
   }
   // The moved slider stops at the last value the core accepts on its way.

@@ -139,7 +139,7 @@ test("a refused move keeps the last valid state on screen and names the slider m
   });
   assert.equal(stop.refused, null);
   assert.ok(stop.params.I3 === 0.5 && stop.params.I1 >= 0.25 && stop.params.I1 < 0.26, JSON.stringify(stop.params));
-  assert.match(stop.note, /^I₁ \(pivot\) stops at 0\.25\d kg·m²: I3 must be <= 2\*I1 = 0\.4\d/);
+  assert.match(stop.note, /^I₁ \(pivot\) stops at 0\.25 kg·m²: I3 must be <= 2\*I1 = 0\.4\d/);
   assert.deepEqual(errors, []);
   await page.close();
   // ... and, released with the custom rates (no steady precession needed), I₃ follows I₁ down.
@@ -152,7 +152,7 @@ test("a refused move keeps the last valid state on screen and names the slider m
   });
   assert.equal(c.refused, null);
   assert.ok(c.params.I3 <= 2 * c.params.I1, JSON.stringify(c.params));
-  assert.match(c.note, /^I₃ follows I₁ \(pivot\)/);
+  assert.match(c.note, /^I₃ followed I₁ \(pivot\) to 0\.0002 kg·m²: I3 must be <= 2\*I1 = 0\.0002 \(the triangle inequality/);
   assert.deepEqual(errors, []);
   await page.close();
 });
