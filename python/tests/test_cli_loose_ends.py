@@ -1,6 +1,7 @@
 """The command line's loose ends (issue 23, item 7): ``poinsot --help`` lists whole summaries,
 ``poinsot tour`` ends at the documentation site (not at folders a wheel user lacks),
-and ``poinsot notebooks DIR`` copies the teaching notebooks out of the package."""
+``poinsot notebooks DIR`` copies the teaching notebooks out of the package, and Getting started
+lists the extras that pyproject.toml declares."""
 
 from __future__ import annotations
 
@@ -119,3 +120,18 @@ def test_the_notebooks_are_in_the_package() -> None:
             p.name for p in cli.NOTEBOOKS_DIR.glob("*.ipynb")
         )
 
+
+def test_getting_started_lists_every_extra() -> None:
+    extras = set(_pyproject()["project"]["optional-dependencies"])
+    text = (ROOT / "docs" / "getting_started.md").read_text(encoding="utf-8")
+    section = text.split("The extras")[1].split("\n## ")[0]
+    listed = set(re.findall(r"^- `([a-z]+)`", section, flags=re.M)) | set(
+        re.findall(r"; `([a-z]+)`:", section)
+    )
+    assert listed == extras, (listed ^ extras)
+    # "all" is described as what it holds: the extras whose packages it holds
+    deps = _pyproject()["project"]["optional-dependencies"]
+    inside = [e for e in extras - {"all"} if deps[e] and set(deps[e]) <= set(deps["all"])]
+    line = next(ln for ln in section.splitlines() if ln.startswith("- `all`"))
+    count = {2: "two", 3: "three", 4: "four", 5: "five", 6: "six"}[len(inside)]
+    assert f"the {count} above" in line, (inside, line)
