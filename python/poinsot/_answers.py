@@ -97,8 +97,7 @@ def _spin_clause(data: dict[str, Any]) -> str:
     ratio = w / least
     if ratio >= 2:
         return (
-            f"the spin is {num(ratio)} times the least for steady precession "
-            f"({num(least)} rad/s)"
+            f"the spin is {num(ratio)} times the least for steady precession ({num(least)} rad/s)"
         )
     above = (ratio - 1) * 100
     only = "only " if above < 20 else ""

@@ -1561,7 +1561,9 @@ def top(
                 paths = save_top_plots(t, plot_dir, animation=True, style=style, progress=progress)
             saved = [str(p) for p in paths]
         except OSError as exc:
-            raise Refused(f"--plot-dir: cannot write into {plot_dir}: {exc.strerror or exc}") from exc
+            raise Refused(
+                f"--plot-dir: cannot write into {plot_dir}: {exc.strerror or exc}"
+            ) from exc
     if saved:
         data["plots"] = saved
     _keep_picture(data, plot_path, "top.plot_axis_locus", t, style=style)

@@ -20,8 +20,8 @@ from poinsot.cli import main
 #: A number as a sentence writes it ("5.8", "1230", "-0.5", "5.49e-05").
 N = r"-?\d+(?:\.\d+)?(?:e[+-]?\d+)?"
 #: Units of a sentence's times and lengths, in s and m.
-TIMES = {unit: size for unit, size in _answers.TIME_UNITS}
-LENGTHS = {unit: size for unit, size in _answers.LENGTH_UNITS}
+TIMES = dict(_answers.TIME_UNITS)
+LENGTHS = dict(_answers.LENGTH_UNITS)
 T = rf"{N} (?:{'|'.join(TIMES)})\b"
 L = rf"{N} (?:{'|'.join(LENGTHS)})\b"
 
@@ -239,7 +239,9 @@ def test_top_sentence_checked_against_other_numbers_fails() -> None:
         check(cusps["summary"], NUTATING, nutating_expected(waves))
     period = re.search(rf"one turn every ({N})", cusps["summary"])
     assert period
-    moved = cusps["summary"].replace(period.group(0), f"one turn every {float(period.group(1)) * 1.05:.3g}")
+    moved = cusps["summary"].replace(
+        period.group(0), f"one turn every {float(period.group(1)) * 1.05:.3g}"
+    )
     with pytest.raises(AssertionError):
         check(moved, NUTATING, nutating_expected(cusps))
 
@@ -388,8 +390,17 @@ def test_inertia_sentence() -> None:
 
 @pytest.mark.parametrize(
     ("x", "shown"),
-    [(5.8123, "5.81"), (1.0849, "1.08"), (45.0, "45"), (1234.5, "1230"), (0.015524, "0.0155"),
-     (9.9996, "10"), (5.49e-5, "5.49e-05"), (-0.5, "-0.5"), (0.0, "0")],
+    [
+        (5.8123, "5.81"),
+        (1.0849, "1.08"),
+        (45.0, "45"),
+        (1234.5, "1230"),
+        (0.015524, "0.0155"),
+        (9.9996, "10"),
+        (5.49e-5, "5.49e-05"),
+        (-0.5, "-0.5"),
+        (0.0, "0"),
+    ],
 )
 def test_numbers_are_rounded_to_three_significant_digits(x: float, shown: str) -> None:
     assert _answers.num(x) == shown

@@ -72,7 +72,7 @@ def test_tour_ends_at_the_documentation_site() -> None:
     from poinsot import tour
 
     url = _pyproject()["project"]["urls"]["Documentation"]
-    assert tour.DOCS_URL == url  # the copy used where the metadata is missing
+    assert url == tour.DOCS_URL  # the copy used where the metadata is missing
     assert tour.docs_url() == url  # the installed package's metadata
     res = CliRunner().invoke(main, ["tour"])
     assert res.exit_code == 0
@@ -113,7 +113,7 @@ def test_notebooks_refuses_a_file_as_directory(tmp_path: Path) -> None:
 
 def test_the_notebooks_are_in_the_package() -> None:
     # the wheel carries python/poinsot/*; notebooks/ at the root of a checkout is a link to them
-    assert cli.NOTEBOOKS_DIR == Path(cli.__file__).parent / "notebooks"
+    assert Path(cli.__file__).parent / "notebooks" == cli.NOTEBOOKS_DIR
     root = ROOT / "notebooks"
     if root.exists():
         assert sorted(p.name for p in root.glob("*.ipynb")) == sorted(
@@ -128,7 +128,7 @@ def test_getting_started_lists_every_extra() -> None:
     listed = set(re.findall(r"^- `([a-z]+)`", section, flags=re.M)) | set(
         re.findall(r"; `([a-z]+)`:", section)
     )
-    assert listed == extras, (listed ^ extras)
+    assert listed == extras, listed ^ extras
     # "all" is described as what it holds: the extras whose packages it holds
     deps = _pyproject()["project"]["optional-dependencies"]
     inside = [e for e in extras - {"all"} if deps[e] and set(deps[e]) <= set(deps["all"])]
