@@ -5,6 +5,7 @@
 //! (row-major, `[φ₀, θ₀, ψ₀, φ₁, ...]`).
 
 use crate::args::{let_numbers, numbers_each, Number, Numbers};
+use crate::calls;
 use crate::convert::{attributed, getters, Failure, Out};
 use crate::free::time;
 use poinsot::analytic as an;
@@ -185,41 +186,17 @@ impl HeavyTop {
     }
 }
 
-/// The top's static functions of numbers: `functions!(" doc" jsName rust_name(arg, ...) -> T =
-/// compute; ...)` is one `#[wasm_bindgen] impl HeavyTop` block of `pub fn rust_name(arg, ...) ->
-/// Out<T>` (JavaScript numbers, read by name) returning `compute(args...)?` (doc lines as string
-/// literals, see [`crate::convert::getters`]).
-macro_rules! functions {
-    ($($($doc:literal)* $js:ident $name:ident($($arg:ident),+) -> $out:ty = $compute:expr;)*) => {
-        #[wasm_bindgen]
-        impl HeavyTop {
-            $(
-                $(#[doc = $doc])*
-                #[wasm_bindgen(js_name = $js)]
-                pub fn $name(
-                    $(#[wasm_bindgen(unchecked_param_type = "number")] $arg: Number),+
-                ) -> Out<$out> {
-                    let_numbers!($($arg),+);
-                    Ok(($compute)($($arg),+)?)
-                }
-            )*
-        }
-    };
-}
-
-functions! {
+calls!(fn HeavyTop {
     " Both steady-precession rates at `theta0` (rad) and spin `omega3` (rad/s), 2.114–2.121."
     " Errors name `omega3` below the minimum spin 2.119 (the message gives it)."
-    steadyPrecession steady_precession(i1, i3, mgl, theta0, omega3) -> SteadyPrecession =
-        |i1, i3, mgl, theta0, omega3| {
-            let inner = an::steady_precession(i1, i3, mgl, theta0, omega3)?;
-            Ok::<_, poinsot::Error>(SteadyPrecession { inner })
-        };
+    steadyPrecession steady_precession(i1: number, i3: number, mgl: number, theta0: number,
+        omega3: number) -> SteadyPrecession = an::steady_precession;
     " The minimum spin for steady precession at `theta0` (rad/s, 2.119)."
-    minSpin min_spin(i1, i3, mgl, theta0) -> f64 = an::min_spin;
+    minSpin min_spin(i1: number, i3: number, mgl: number, theta0: number) -> number = an::min_spin;
     " The spin above which an upright top sleeps stably, 2√(m g l I₁)/I₃ (rad/s)."
-    sleepingThreshold sleeping_threshold(i1, i3, mgl) -> f64 = an::sleeping_threshold;
-}
+    sleepingThreshold sleeping_threshold(i1: number, i3: number, mgl: number) -> number =
+        an::sleeping_threshold;
+});
 
 /// Functions of the top (`i1`, `i3` kg·m², `mgl` N·m) at one state (`theta` rad; `theta_dot`,
 /// `phi_dot`, `psi_dot` rad/s): `of_state!(" doc" rust_name -> T = compute; ...)` is one

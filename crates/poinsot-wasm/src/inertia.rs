@@ -3,6 +3,7 @@
 //! axes, kind of top, L and T (the unit's 2.43–2.66); closed triangle meshes (`fromMesh`).
 
 use crate::args::{let_numbers, matrix, numbers, triple, vector, Number, Numbers};
+use crate::calls;
 use crate::convert::{getters, mat3, mat_out, vec_out, Failure, Out};
 use crate::free::kind;
 use poinsot::inertia::{self as inr, MassProperties, DEFAULT_KIND_RTOL};
@@ -21,13 +22,11 @@ fn wrap(r: poinsot::Result<MassProperties>) -> Out<RigidBody> {
     Ok(RigidBody { inner: r? })
 }
 
-/// The standard solids of scalar dimensions: `solids!(" doc" jsName rust_name(mass, dims...);)`
-/// is one constructor per solid, calling the core's `inertia::rust_name(mass, dims...)`;
-/// `solids!(of_three { " doc" jsName rust_name(dims); })` the same for a solid of `mass` and 3
-/// dimensions (x, y, z) given as one array-like `dims` (doc lines as string literals, see
+/// The standard solids of 3 dimensions: `solids!(" doc" jsName rust_name(dims); ...)` is one constructor per solid, calling the core's `inertia::rust_name(mass, dims)` with the
+/// 3 dimensions (x, y, z) given as one array-like `dims` (doc lines as string literals, see
 /// [`crate::convert::getters`]).
 macro_rules! solids {
-    (of_three { $($($doc:literal)* $js:ident $name:ident($dims:ident);)+ }) => {
+    ($($($doc:literal)* $js:ident $name:ident($dims:ident);)+) => {
         #[wasm_bindgen]
         impl RigidBody {
             $(
@@ -43,47 +42,34 @@ macro_rules! solids {
             )+
         }
     };
-    ($($($doc:literal)* $js:ident $name:ident($($arg:ident),+);)+) => {
-        #[wasm_bindgen]
-        impl RigidBody {
-            $(
-                $(#[doc = $doc])*
-                #[wasm_bindgen(js_name = $js)]
-                pub fn $name(
-                    $(#[wasm_bindgen(unchecked_param_type = "number")] $arg: Number),+
-                ) -> Out<RigidBody> {
-                    let_numbers!($($arg),+);
-                    wrap(inr::$name($($arg),+))
-                }
-            )+
-        }
-    };
 }
 
-solids! {
+// The standard solids of scalar dimensions (the core's `inertia::rust_name(mass, dims...)`).
+calls!(fn RigidBody {
     " A solid sphere of `mass` (kg) and `radius` (m)."
-    solidSphere solid_sphere(mass, radius);
+    solidSphere solid_sphere(mass: number, radius: number) -> RigidBody = inr::solid_sphere;
     " A thin spherical shell."
-    sphericalShell spherical_shell(mass, radius);
+    sphericalShell spherical_shell(mass: number, radius: number) -> RigidBody =
+        inr::spherical_shell;
     " A solid cylinder, axis along z."
-    solidCylinder solid_cylinder(mass, radius, height);
+    solidCylinder solid_cylinder(mass: number, radius: number, height: number) -> RigidBody =
+        inr::solid_cylinder;
     " A solid cone, apex at the origin, axis along +z."
-    solidCone solid_cone(mass, radius, height);
+    solidCone solid_cone(mass: number, radius: number, height: number) -> RigidBody =
+        inr::solid_cone;
     " A thin rod of `length` (m) along z."
-    thinRod thin_rod(mass, length);
+    thinRod thin_rod(mass: number, length: number) -> RigidBody = inr::thin_rod;
     " A thin disk in the xy-plane."
-    thinDisk thin_disk(mass, radius);
+    thinDisk thin_disk(mass: number, radius: number) -> RigidBody = inr::thin_disk;
     " A thin ring in the xy-plane."
-    thinRing thin_ring(mass, radius);
-}
+    thinRing thin_ring(mass: number, radius: number) -> RigidBody = inr::thin_ring;
+});
 
 solids! {
-    of_three {
-        " A cuboid of `sides` (m, 3 numbers: x, y, z)."
-        cuboid cuboid(sides);
-        " A solid ellipsoid of `semi_axes` (m, 3 numbers)."
-        ellipsoid ellipsoid(semi_axes);
-    }
+    " A cuboid of `sides` (m, 3 numbers: x, y, z)."
+    cuboid cuboid(sides);
+    " A solid ellipsoid of `semi_axes` (m, 3 numbers)."
+    ellipsoid ellipsoid(semi_axes);
 }
 
 #[wasm_bindgen]

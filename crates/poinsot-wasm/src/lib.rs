@@ -61,6 +61,9 @@ pub fn version() -> String {
 /// passed to the core by reference) and returns `self.inner.rust_name(args...)?` as `out`
 /// (`number`: the `f64` itself, `vector`: `convert::vec_out`, 3 numbers, or the name of a binding
 /// type `Wrapper` of this crate: `Wrapper { inner }` around the core's value).
+/// `calls!(fn Type { " doc" jsName rust_name(arg: kind, ...) -> out = core::function; ... })`
+/// is the same for the static functions `Type.jsName(args...)`, returning
+/// `core::function(args...)?` as `out`.
 /// `calls!(Type::new { " doc" (arg: kind, ...) = core::Type::new; })` is the JavaScript
 /// constructor `Type { inner: core::Type::new(args...)? }` in the same way, the arguments passed
 /// by value. Doc lines are string
@@ -72,7 +75,10 @@ macro_rules! calls {
         crate::calls!(@params $ty [$($doc)*] [constructor $core] [$($arg $kind)*] [$($arg $kind)*] []);
     };
     ($ty:ident { $($($doc:literal)* $js:ident $name:ident($($arg:ident: $kind:ident),* $(,)?) -> $out:ident;)* }) => {
-        $(crate::calls!(@params $ty [$($doc)*] [method $js $name $out] [$($arg $kind)*] [$($arg $kind)*] []);)*
+        $(crate::calls!(@params $ty [$($doc)*] [call $js $name $out [&self,] [self.inner.$name]] [$($arg $kind)*] [$($arg $kind)*] []);)*
+    };
+    (fn $ty:ident { $($($doc:literal)* $js:ident $name:ident($($arg:ident: $kind:ident),* $(,)?) -> $out:ident = $core:path;)* }) => {
+        $(crate::calls!(@params $ty [$($doc)*] [call $js $name $out [] [$core]] [$($arg $kind)*] [$($arg $kind)*] []);)*
     };
     // One parameter at a time, with the TypeScript type of its kind (an attribute takes only a
     // literal, so each kind is spelled out).
@@ -84,14 +90,16 @@ macro_rules! calls {
         crate::calls!(@params $ty $docs $mode $args [$($rest)*] [$($p)*
             #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] $arg: crate::args::Numbers,]);
     };
-    (@params $ty:ident [$($doc:literal)*] [method $js:ident $name:ident $out:ident] [$($arg:ident $kind:ident)*] [] [$($p:tt)*]) => {
+    // A method (`[&self,]`, calling `self.inner.name`) or a static function (`[]`, calling the
+    // core's function).
+    (@params $ty:ident [$($doc:literal)*] [call $js:ident $name:ident $out:ident [$($recv:tt)*] [$($callee:tt)+]] [$($arg:ident $kind:ident)*] [] [$($p:tt)*]) => {
         #[wasm_bindgen::prelude::wasm_bindgen]
         impl $ty {
             $(#[doc = $doc])*
             #[wasm_bindgen(js_name = $js)]
-            pub fn $name(&self, $($p)*) -> crate::convert::Out<crate::calls!(@type $out)> {
+            pub fn $name($($recv)* $($p)*) -> crate::convert::Out<crate::calls!(@type $out)> {
                 $(let $arg = crate::args::$kind(stringify!($arg), &$arg)?;)*
-                let value = self.inner.$name($(crate::calls!(@pass $kind $arg)),*)?;
+                let value = $($callee)+($(crate::calls!(@pass $kind $arg)),*)?;
                 Ok(crate::calls!(@out $out value))
             }
         }
