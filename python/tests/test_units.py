@@ -364,3 +364,21 @@ def test_quantities_are_taken_everywhere_as_their_si_values(call: str) -> None:
     want = np.asarray(f(plain))
     assert np.array_equal(np.asarray(f(Q)), want)
     assert np.allclose(np.asarray(f(scaled)), want, rtol=1e-12, atol=0)
+
+
+def test_a_sweep_takes_quantities_with_or_without_degrees() -> None:
+    """A swept keyword given as a quantity is the same sweep as its SI floats; with
+    ``degrees=True`` its labels are in degrees and the core still gets radians."""
+    sweep = pytest.importorskip("poinsot.sweep")
+    pytest.importorskip("xarray")
+    theta = np.radians([20.0, 40.0])
+    want = sweep.heavy_top(I1=1.0, I3=0.5, mgl=1.0, theta=theta, psi_dot=6.0)
+    got = sweep.heavy_top(
+        I1=Q(1, "kg*m**2"), I3=0.5, mgl=1.0, theta=Q([20.0, 40.0], "deg"), psi_dot=6.0
+    )
+    assert np.allclose(got["turning_points"], want["turning_points"], rtol=1e-14)
+    deg = sweep.heavy_top(
+        I1=1.0, I3=0.5, mgl=1.0, theta=Q([20.0, 40.0], "deg"), psi_dot=Q(6, "rad/s"), degrees=True
+    )
+    assert np.allclose(deg["theta"], [20.0, 40.0])
+    assert np.allclose(deg["turning_points"], want["turning_points"], rtol=1e-14)

@@ -13,6 +13,7 @@ from typing import Any, Callable, NamedTuple, Optional
 import numpy as np
 
 from .. import _core
+from .._units import is_quantity
 from .._validate import FloatArray, as_count, as_flag, as_float_array
 from ..errors import ArgumentTypeError, PoinsotError
 
@@ -313,6 +314,8 @@ def plan(
             dim_name, spans, chunks = SAMPLE, True, None
         else:
             user, spans, chunks = _values(key, value)
+            if deg and key.angle and is_quantity(value):  # in rad or rad/s: the user's units
+                user = np.degrees(user)
             lazy = lazy or chunks is not None
             dim_name = pairs.get(name, name if key.width == 1 else f"{name}_index")
             if not spans and name in pairs:
