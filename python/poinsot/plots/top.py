@@ -191,22 +191,13 @@ def plot_steady_precession(
         thin = 0.5 * line_width()
         ax.plot(spins, fast, color="C0", label="fast (exact, 2.116)")
         ax.plot(spins, slow, color="C1", label="slow (exact, 2.116)")
-        ax.plot(
-            spins,
-            [r.fast_approx for r in rates],
-            "--",
-            color="C0",
-            lw=thin,
-            label="p_ψ/(I₁ cos θ₀)  (2.120, corrected)",
-        )
-        ax.plot(
-            spins,
-            [r.slow_approx for r in rates],
-            "--",
-            color="C1",
-            lw=thin,
-            label="mgl/p_ψ  (2.121)",
-        )
+        # The fast-top approximations, dashed in their exact rate's colour.
+        for approx, colour, label in (
+            ("fast_approx", "C0", "p_ψ/(I₁ cos θ₀)  (2.120, corrected)"),
+            ("slow_approx", "C1", "mgl/p_ψ  (2.121)"),
+        ):
+            values = [getattr(r, approx) for r in rates]
+            ax.plot(spins, values, "--", color=colour, lw=thin, label=label)
         if w_min > 0:
             ax.axvline(w_min, color="C3", lw=thin, label=f"minimum spin {w_min:.4g} rad/s (2.119)")
         finite = np.concatenate([slow[np.isfinite(slow)], fast[np.isfinite(fast)]])
