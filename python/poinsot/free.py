@@ -68,9 +68,8 @@ def _times(t: Any) -> tuple[FloatArray, tuple[int, ...]]:
 
 
 def _per_time(name: str, width: int, doc: str) -> Callable[[FreeSymmetricTop, Any], FloatArray]:
-    """The method ``name(self, t)`` of :class:`FreeSymmetricTop`, documented by ``doc``: the
-    core's ``name_at`` for a plain number ``t`` (the small call), else its ``name`` over ``t``
-    flattened, shaped ``t.shape + (width,)`` (the core's methods looked up once, here)."""
+    """The method ``name(self, t)`` of :class:`FreeSymmetricTop` (``doc``): the core's ``name_at``
+    for a plain number ``t``, else its ``name`` over ``t`` flat, shaped ``t.shape + (width,)``."""
     one = getattr(_core.SymmetricTopSolution, f"{name}_at")
     many = getattr(_core.SymmetricTopSolution, name)
 
@@ -81,8 +80,7 @@ def _per_time(name: str, width: int, doc: str) -> Callable[[FreeSymmetricTop, An
         ts, shape = _times(t)
         return np.asarray(many(self._core, ts)).reshape(shape + (width,))
 
-    method.__name__, method.__qualname__ = name, f"FreeSymmetricTop.{name}"
-    method.__doc__ = doc
+    method.__name__, method.__qualname__, method.__doc__ = name, f"FreeSymmetricTop.{name}", doc
     return method
 
 
