@@ -1550,6 +1550,14 @@ def top(
         "sleeping_threshold": HeavyTop.sleeping_threshold(i1, i3, mgl),
         "sleeping_stable": t.is_sleeping_stable,
     }
+    if body is not None:  # what the moments were made of (SI: kg, m)
+        data["body"] = {
+            "shape": shape,
+            "mass": body.mass,
+            "radius": radius,
+            **({} if height is None else {"height": height}),
+            "pivot_distance": pivot,
+        }
     require_finite(data)
     data["summary"] = _answers.top(data)
     saved: list[str] = []

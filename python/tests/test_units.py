@@ -249,6 +249,7 @@ def test_top_from_a_real_disk_on_the_command_line() -> None:
     assert (data["I1"], data["I3"], data["mgl"]) == (top.I1, top.I3, top.mgl)
     assert data["omega3"] == pytest.approx(50 * math.pi, rel=1e-15)
     assert data["initial_state"]["theta"] == pytest.approx(math.pi / 6, rel=1e-15)
+    assert data["body"] == {"shape": "disk", "mass": 0.2, "radius": 0.05, "pivot_distance": 0.1}
     # The same in plain SI numbers, and in degrees with --degrees (the spin then in deg/s).
     plain = run(
         "top", "--shape", "disk", "--mass", "0.2", "--radius", "0.05", "--pivot", "0.1",
