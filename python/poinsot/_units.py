@@ -116,12 +116,6 @@ def to_si(value: Any, name: str) -> Any:
     raise PoinsotError(f"{name}: expected {wanted}, got {value:~P}")
 
 
-def radians(value: Any, degrees: bool) -> bool:
-    """Whether an angle argument given as ``value`` still needs its degrees converted: ``degrees``
-    for a plain number, never for a quantity (converted to radians at the door)."""
-    return degrees and not is_quantity(value)
-
-
 # ---- the CLI's suffixes ---------------------------------------------------------------------
 
 _TURN = 2.0 * math.pi
