@@ -214,3 +214,45 @@ def test_the_lab_page_is_the_one_built(wheel: Path) -> None:
         pytest.skip("no built page in this checkout")
     with zipfile.ZipFile(wheel) as zf:
         assert zf.read("poinsot/lab/index.html") == (built / "index.html").read_bytes()
+
+
+#: The teaching notebooks of the checkout, which the wheel carries as package data.
+NOTEBOOKS = Path(__file__).resolve().parents[1] / "poinsot" / "notebooks"
+
+
+def test_wheel_carries_the_notebooks(wheel: Path) -> None:
+    names = set(zipfile.ZipFile(wheel).namelist())
+    lessons = sorted(NOTEBOOKS.glob("*.ipynb"))
+    assert len(lessons) >= 4
+    for nb in lessons:
+        assert f"poinsot/notebooks/{nb.name}" in names, nb.name
+
+
+def test_notebooks_and_docs_url_from_the_installed_wheel(
+    installed: tuple[Path, dict[str, str]],
+) -> None:
+    # a student with the wheel only: `poinsot notebooks DIR` copies the lessons out, and the
+    # tour's last line is the documentation site, read from the installed package's metadata
+    bindir, env = installed
+    target = bindir.parent.parent / "lessons"
+    proc = subprocess.run(
+        [str(bindir / "poinsot"), "notebooks", str(target)],
+        env=env,
+        cwd=bindir.parent,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert proc.returncode == 0, proc.stderr
+    assert sorted(p.name for p in target.glob("*.ipynb")) == sorted(
+        p.name for p in NOTEBOOKS.glob("*.ipynb")
+    )
+    url = subprocess.run(
+        [str(bindir / "python"), "-c", "from poinsot.tour import docs_url; print(docs_url())"],
+        env=env,
+        cwd=bindir.parent,
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout.strip()
+    assert url.startswith("https://") and url.endswith("/poinsot/"), url
