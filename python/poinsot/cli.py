@@ -685,7 +685,8 @@ def emit_json(data: dict[str, Any]) -> None:
 def main() -> None:
     """poinsot: moving frames and the motion of rigid bodies.
 
-    Start with `poinsot tour`, the course unit computed from end to end.
+    Start with `poinsot tour`, the course unit computed from end to end. Each computing command
+    opens with its answer in plain words, then the tables it is made from.
     """
 
 
@@ -1474,10 +1475,11 @@ def top(
 ) -> None:
     """The heavy symmetric top (eqs. 2.98–2.121), solved exactly.
 
-    Prints the constants of the motion (p_φ, p_ψ, E, E′), the turning points θ₁ ≤ θ₂, the
-    motion class (waves, loops, cusps, steady precession, sleeping, ...), the nutation period,
-    the mean precession and spin rates, and the steady-precession rates at θ₀ for this spin
-    (exact roots of 2.116 beside the unit's 2.120 (corrected) and 2.121, minimum spin 2.119).
+    Opens with what the top does in words, then prints the constants of the motion (p_φ, p_ψ,
+    E, E′), the turning points θ₁ ≤ θ₂, the motion class (waves, loops, cusps, steady
+    precession, sleeping, ...), the nutation period, the mean precession and spin rates, the
+    precession period 2π/|⟨φ̇⟩|, and the steady-precession rates at θ₀ for this spin (exact
+    roots of 2.116 beside the unit's 2.120 (corrected) and 2.121, minimum spin 2.119).
 
     \b
     Examples:
