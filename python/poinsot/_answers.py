@@ -251,6 +251,14 @@ def free(data: dict[str, Any]) -> str:
             f"ω circles axis {axis}, the axis of the {'smallest' if smallest else 'largest'} "
             f"moment, once every {duration(period)} in the body"
         )
+        omega0 = [abs(c) for c in data["omega0"]]
+        middle = sorted(range(3), key=lambda i: moments[i])[1]
+        if len(set(moments)) == 3 and omega0.index(max(omega0)) == middle:
+            # started near the unstable middle axis: the Dzhanibekov flips
+            what += (
+                f"; started near axis {middle + 1}, the middle one, the body flips over every "
+                f"{duration(data['flip_interval'])}"
+            )
     return (
         f"{what}; {data['method']} kept the energy to a relative {data['max_energy_error']:.1e} "
         f"over {num(data['duration'])} s."

@@ -373,6 +373,19 @@ def test_free_sentence(omega: list[str], axis: int, which: str) -> None:
     assert m and float(m.group(1)) == pytest.approx(d["max_energy_error"], rel=0.06, abs=1e-300)
 
 
+def test_free_sentence_of_the_dzhanibekov_flips() -> None:
+    # spun near the middle axis: ω circles an outer axis and the body flips every half period
+    d, _ = run(["free", "--moments", "1", "2", "3", "--omega", "0.01", "3", "0.01"])
+    pattern = (
+        rf"once every (?P<period>{T}) in the body; started near axis (?P<axis>\d), the middle "
+        rf"one, the body flips over every (?P<flip>{T})"
+    )
+    check(d["summary"], pattern, {"period": d["period"], "axis": "2", "flip": d["flip_interval"]})
+    # negative control: spun near an outer axis, no flip is announced
+    d, _ = run(["free", "--moments", "1", "2", "3", "--omega", "0.01", "0.01", "3"])
+    assert "flips" not in d["summary"]
+
+
 def test_inertia_sentence() -> None:
     d, out = run(["inertia", "cuboid", "--mass", "2", "--sides", "1", "2", "3"])
     pattern = (
