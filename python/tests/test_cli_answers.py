@@ -193,6 +193,13 @@ def test_top_sentence_of_a_sleeping_top(spin: str, stable: bool) -> None:
     assert ("topples" in d["summary"]) is not stable
 
 
+def test_top_sentence_of_a_hanging_top() -> None:
+    d, _ = run(TOP + ["--theta", "180", "--degrees", "--psi-dot", "120"])  # 120°/s
+    assert d["motion_class"] == "hanging" and d["precession_period"] == "inf"
+    pattern = rf"hangs straight down from its pivot, spinning at (?P<w>{N}) rad/s; it does not"
+    check(d["summary"], pattern, {"w": math.radians(120)})
+
+
 def test_top_sentence_below_the_least_spin_for_steady_precession() -> None:
     d, _ = run(TOP + ["--theta", "0.8", "--psi-dot", "2"])
     assert "error" in d["steady_precession_at_theta0"]
