@@ -230,11 +230,12 @@ async function main(): Promise<void> {
    * by another slider following or the moved one stopping (sliders.ts), or refused with a
    * sentence naming the moved slider, the last valid state kept on screen. */
   function setParam(key: string, value: number | string): void {
-    if (!lab.couple || valid === null) {
+    // In an error state (a refused link or file) the move starts from the parameters shown.
+    if (!lab.couple || valid === null || lab.error !== null) {
       lab.params = { ...lab.params, [key]: value };
       showApplicable();
       syncControls();
-      configure();
+      configure(lab.error === null);
       writeUrl();
       return;
     }
@@ -249,12 +250,15 @@ async function main(): Promise<void> {
       }
     };
     const r = resolve(def.params, valid, key, value, trial, keyOf);
-    lab.params = r.params;
+    // A choice (a shape, a file, a preset) the core refuses with nothing to follow is taken as
+    // chosen, and the core's error shown: the choice is the student's question, not a slip.
+    const chosen = r.refused && def.params.find((p) => p.key === key)?.kind === "choice";
+    lab.params = chosen ? { ...valid, [key]: value } : r.params;
     showApplicable();
     syncControls();
     showNote(r.refused ? null : r.note);
-    configure();
-    if (r.refused && r.note) showRefusal(r.note);
+    configure(!chosen);
+    if (r.refused && r.note && !chosen) showRefusal(r.note);
     writeUrl();
   }
 
@@ -482,7 +486,9 @@ async function main(): Promise<void> {
     nav.append(b);
   });
 
-  function configure(): void {
+  /** Configures the scene with the current parameters; refused, the last valid state stays on
+   * screen with the core's sentence (`keepLast`), or the error replaces the readouts. */
+  function configure(keepLast = true): void {
     try {
       current.configure(lab.params);
       clearError();
@@ -491,7 +497,7 @@ async function main(): Promise<void> {
       stepOnce();
       maybeRefit();
     } catch (e) {
-      if (valid === null) {
+      if (valid === null || !keepLast) {
         showError(e);
         return;
       }

@@ -165,7 +165,10 @@ export function resolve(params: Param[], last: Params, key: string, value: numbe
     const follow = nearestValid(other, Number(want[other.key]), (x) => trial({ ...want, [other.key]: x }) === null);
     if (follow !== null) {
       const p = { ...want, [other.key]: follow };
-      return { params: p, note: `${name(other)} followed ${moved ? name(moved) : key} to ${say(other, follow)}: ${why}.`, refused: false };
+      const note = moved?.kind === "choice"
+        ? `${name(other)} moved to ${say(other, follow)} for ${name(moved)} “${value}”: ${why}.`
+        : `${name(other)} followed ${moved ? name(moved) : key} to ${say(other, follow)}: ${why}.`;
+      return { params: p, note, refused: false };
     }
   }
   // The moved slider stops at the last value the core accepts on its way.
