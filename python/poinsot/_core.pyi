@@ -279,9 +279,7 @@ class MassProperties:
     def from_density(
         density: Callable[[NDArray[np.float64]], Any],
         bounds: NDArray[np.float64],
-        rtol: float,
-        atol: float,
-        max_evals: int,
+        options: tuple[float, float, int],  # rtol, atol, max_evals
     ) -> tuple[MassProperties, float, float, float, int, bool]: ...
     @staticmethod
     def combine(bodies: Sequence[MassProperties]) -> MassProperties: ...

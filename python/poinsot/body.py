@@ -448,9 +448,7 @@ class RigidBody(show.Displayed):
         core, mass_err, com_err, inertia_err, evals, converged = _core.MassProperties.from_density(
             batched,
             np.ascontiguousarray(b),
-            as_scalar(rtol, "rtol"),
-            as_scalar(atol, "atol"),
-            int(max_evals),
+            (as_scalar(rtol, "rtol"), as_scalar(atol, "atol"), int(max_evals)),
         )
         estimate = IntegrationErrorEstimate(mass_err, com_err, inertia_err, evals, converged)
         if not converged:

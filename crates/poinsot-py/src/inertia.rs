@@ -176,16 +176,15 @@ mass_properties_export! {
         Ok(Self { inner })
     }
 
-    /// Density (a callable (N, 3) float64 → (N,) float64, kg/m³) over bounds ((3, 2), m).
+    /// Density (a callable (N, 3) float64 → (N,) float64, kg/m³) over bounds ((3, 2), m), to
+    /// the cubature's `options` `(rtol, atol, max_evals)` (the core's `CubatureOptions`).
     /// Returns (body, mass_error, center_of_mass_error, inertia_error, evaluations, converged).
     #[staticmethod]
     fn from_density(
         py: Python<'_>,
         density: Bound<'_, PyAny>,
         bounds: PyReadonlyArray2<'_, f64>,
-        rtol: f64,
-        atol: f64,
-        max_evals: usize,
+        options: (f64, f64, usize),
     ) -> PyResult<(Self, f64, f64, f64, usize, bool)> {
         let shape = bounds.shape().to_vec();
         if shape != [3, 2] {
@@ -200,6 +199,7 @@ mass_properties_export! {
             [b[[1, 0]], b[[1, 1]]],
             [b[[2, 0]], b[[2, 1]]],
         ];
+        let (rtol, atol, max_evals) = options;
         let options = CubatureOptions {
             rtol,
             atol,
