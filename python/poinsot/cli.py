@@ -1478,7 +1478,7 @@ def top(
     Opens with what the top does in words, then prints the constants of the motion (p_φ, p_ψ,
     E, E′), the turning points θ₁ ≤ θ₂, the motion class (waves, loops, cusps, steady
     precession, sleeping, ...), the nutation period, the mean precession and spin rates, the
-    precession period 2π/|⟨φ̇⟩|, and the steady-precession rates at θ₀ for this spin (exact
+    precession period 2π/abs(⟨φ̇⟩), and the steady-precession rates at θ₀ for this spin (exact
     roots of 2.116 beside the unit's 2.120 (corrected) and 2.121, minimum spin 2.119).
 
     \b
