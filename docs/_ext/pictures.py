@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 from docutils import nodes
 from docutils.parsers.rst import Directive, directives
@@ -109,7 +109,9 @@ def _unit_figure(number: str, width: str) -> nodes.figure:
     from poinsot.plots import UNIT_FIGURES
 
     if number not in UNIT_FIGURES:
-        raise ValueError(f"unit-figure: {number!r} is not one of the unit's figures ({', '.join(UNIT_FIGURES)})")
+        raise ValueError(
+            f"unit-figure: {number!r} is not one of the unit's figures ({', '.join(UNIT_FIGURES)})"
+        )
     entry = UNIT_FIGURES[number]
     caption = [
         nodes.strong(text=f"Fig. {number}"),
@@ -126,7 +128,7 @@ class UnitFigureDirective(Directive):
     """``{unit-figure} 2.5`` with an optional ``:width:`` (default 80%)."""
 
     required_arguments = 1
-    option_spec = {"width": directives.unchanged}
+    option_spec: ClassVar[dict[str, Any]] = {"width": directives.unchanged}
 
     def run(self) -> list[nodes.Node]:
         return [_unit_figure(self.arguments[0], self.options.get("width", "80%"))]
@@ -160,7 +162,7 @@ class LabShotDirective(Directive):
     """``{lab-shot} heavytop`` with an optional ``:width:`` (default 90%)."""
 
     required_arguments = 1
-    option_spec = {"width": directives.unchanged}
+    option_spec: ClassVar[dict[str, Any]] = {"width": directives.unchanged}
 
     def run(self) -> list[nodes.Node]:
         return [_lab_shot(self.arguments[0], self.options.get("width", "90%"))]

@@ -218,6 +218,7 @@ def euler_rates(
 def screw_axis(
     R: NDArray[np.float64], t: NDArray[np.float64]
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], float, float, float]: ...
+
 # A screw as the core's functions take it: (axis (3,), point (3,), angle, slide).
 _ScrewParts: TypeAlias = tuple[NDArray[np.float64], NDArray[np.float64], float, float]
 
@@ -764,6 +765,7 @@ def dynamics_simulate(
     max_steps: int,
     progress: Callable[[float], Any] | None,
 ) -> TrajectoryCore: ...
+
 # A batch's settings, as dynamics._batch_settings makes them: duration (s), the torque's kind,
 # (3,) vector and scalar, the method, dt (s or None) and max_steps.
 _BatchSettings: TypeAlias = tuple[float, str, NDArray[np.float64], float, str, float | None, int]
