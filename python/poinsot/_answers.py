@@ -47,8 +47,11 @@ def degrees(rad: float) -> str:
 
 
 def angle(value: float, in_degrees: bool) -> str:
-    """An angle as the user gave it: "45°" with --degrees, else "0.785 rad"."""
-    return f"{given(value)}°" if in_degrees else f"{given(value)} rad"
+    """An angle as the user gave it: "45°" with --degrees, else "0.8 rad (45.8°)" — the degrees
+    beside radians, so that `--latitude 0.8` meant as 0.8° is seen to run at 45.8°."""
+    if in_degrees:
+        return f"{given(value)}°"
+    return f"{given(value)} rad ({degrees(value)})" if value != 0 else "0 rad"
 
 
 def length(m: float) -> str:

@@ -424,3 +424,26 @@ def test_inertia_sentence() -> None:
 )
 def test_numbers_are_rounded_to_three_significant_digits(x: float, shown: str) -> None:
     assert _answers.num(x) == shown
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        ["fall", "--height", "100"],
+        ["foucault"],
+        ["projectile", "--speed", "50", "--elevation", "0.5"],
+    ],
+)
+def test_an_angle_in_radians_is_shown_in_degrees_too(command: list[str]) -> None:
+    """`--latitude 0.8` meant as 0.8° runs at 45.8°: the sentence says so beside the radians
+    (issue 23: the case a unit suffix cannot catch, an angle valid in both units)."""
+    res = CliRunner().invoke(main, [*command, "--latitude", "0.8"])
+    assert res.exit_code == 0, res.output
+    first = " ".join(res.output.split("\n\n")[0].split())
+    shown = re.search(r"latitude 0\.8 rad \(([\d.]+)°\)", first)
+    assert shown, first
+    assert float(shown.group(1)) == pytest.approx(math.degrees(0.8), abs=0.05)
+    # negative control: in degrees the sentence has no radians to explain
+    res = CliRunner().invoke(main, [*command, "--latitude", "0.8", "--degrees"])
+    first = " ".join(res.output.split("\n\n")[0].split())
+    assert "latitude 0.8°" in first and " rad (" not in first
