@@ -287,6 +287,7 @@ VALID_FOR: dict[str, dict[str, Any]] = {
         "energy": 1.5,
         "angular_momentum": 2.0,
     },
+    "HeavyTop.from_body": {"body": ps.RigidBody.thin_disk(0.2, 0.05), "pivot_distance": 0.1},
     "HeavyTop.from_constants": {"p_phi": _TOP.p_phi, "p_psi": _TOP.p_psi, "energy": _TOP.energy},
     "HeavyTop.effective_potential": {"theta": [0.3, 0.5, 1.0]},
     "HeavyTop.effective_potential_derivative": {"theta": [0.3, 0.5, 1.0]},
@@ -347,6 +348,7 @@ DOCUMENTED_INF = {
     ("FreeRigidBody", "max_time"),  # never 2^42 rad within the doubles (omega0 ~ 1e-300)
     ("FreeSymmetricTop", "max_time"),
     ("HeavyTop", "nutation_period"),  # steady precession and the sleeping top
+    ("HeavyTop", "precession_period"),  # an axis that does not turn (sleeping, no gravity)
     ("HeavyTop", "cubic_roots"),  # u3 = inf for m g l = 0: the cubic has no third root
     ("axis_stability", "rate"),
     ("sweep.heavy_top", "nutation_period"),  # as HeavyTop's

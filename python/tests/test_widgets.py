@@ -82,9 +82,9 @@ def test_a_top_outside_the_sliders_is_refused_naming_top_and_the_parameter():
     w = widgets.HeavyTopWidget()
     before = dict(w.params)
     with pytest.raises(
-        PoinsotError, match=r"top: w3 = 50.0 \(rad/s\) is outside the slider's range \[0, 40\]"
+        PoinsotError, match=r"top: w3 = 250.0 \(rad/s\) is outside the slider's range \[0.5, 200\]"
     ):
-        w.top = HeavyTop.from_spin(1.0, 0.5, 1.5, 0.6, 50.0)
+        w.top = HeavyTop.from_spin(1.0, 0.5, 1.5, 0.6, 250.0)
     with pytest.raises(PoinsotError, match=r"top: I1 = 5.0"):
         w.top = HeavyTop.from_spin(5.0, 0.5, 1.5, 0.6, 10.0)
     with pytest.raises(PoinsotError, match=r"top: .*phi = 0.3"):
@@ -93,8 +93,8 @@ def test_a_top_outside_the_sliders_is_refused_naming_top_and_the_parameter():
         w.top = "a top"  # type: ignore[assignment]
     assert w.params == before  # nothing half-applied
     # Negative control: a top inside the ranges is taken.
-    w.top = HeavyTop.from_spin(1.0, 0.5, 1.5, 0.6, 39.5)
-    assert w.params["w3"] == 39.5
+    w.top = HeavyTop.from_spin(1.0, 0.5, 1.5, 0.6, 199.5)
+    assert w.params["w3"] == 199.5
 
 
 def test_params_are_checked_by_key():
