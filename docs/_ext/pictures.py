@@ -193,6 +193,14 @@ def _check_lab_shots(app: Any) -> None:
         )
 
 
+def _drop_execution_times(app: Any, config: Any) -> None:
+    """conf.py turns sphinx-gallery's execution-times pages off (they load scripts and styles
+    from public CDNs); a checkout that built the site before keeps their stale sources
+    (git-ignored), which Sphinx would still publish: they go."""
+    for stale in (DOCS / "sg_execution_times.rst", DOCS / "gallery" / "sg_execution_times.rst"):
+        stale.unlink(missing_ok=True)
+
+
 def _builder_inited(app: Any) -> None:
     _draw_figures(app)
     _check_lab_shots(app)
@@ -203,5 +211,6 @@ def setup(app: Any) -> dict[str, Any]:
     app.add_directive("unit-figures", UnitFiguresDirective)
     app.add_directive("lab-shot", LabShotDirective)
     app.add_directive("lab-shots", LabShotsDirective)
+    app.connect("config-inited", _drop_execution_times)
     app.connect("builder-inited", _builder_inited)
     return {"parallel_read_safe": True, "parallel_write_safe": True}
