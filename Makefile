@@ -105,10 +105,10 @@ test-docs: site
 lab-build: setup web-setup
 	bash web/build.sh
 
-# One screenshot of each scene of the built lab (web/tests/shots.test.mjs, Debian's chromium) into
+# One screenshot of each scene of the built lab (web/shots/shots.test.mjs, Debian's chromium) into
 # docs/_generated/lab/ (git-ignored), for the pages that show the lab (docs/_ext/pictures.py).
 lab-shots: lab-build
-	cd web && PYTHON=$(abspath $(PY)) node --test tests/shots.test.mjs
+	cd web && PYTHON=$(abspath $(PY)) node --test shots/shots.test.mjs
 
 lab: lab-build
 	$(VENV)/bin/poinsot lab

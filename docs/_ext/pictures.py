@@ -7,7 +7,7 @@
   the function that draws it and the command that writes it.
 * ``{unit-figures}``: all of them, in the unit's order, as a grid (the unit's figures page).
 * ``{lab-shot} heavytop``: the lab's scene as the browser shows it, a screenshot taken of the
-  built lab in Debian's chromium by ``web/shots.mjs`` (``make lab-shots``, which ``make docs``
+  built lab in Debian's chromium by ``web/shots/shots.test.mjs`` (``make lab-shots``, which ``make docs``
   runs first) into ``docs/_generated/lab/``; ``{lab-shots}``: every scene, in the tabs' order.
 * :class:`UnitOrder`: the gallery's examples in the unit's order (frames, the Earth, inertia,
   Euler's equations, the free top, the heavy top), not alphabetically.
@@ -26,7 +26,7 @@ DOCS = Path(__file__).resolve().parent.parent
 GENERATED = DOCS / "_generated"
 FIGURES = GENERATED / "figures"
 LAB_SHOTS = GENERATED / "lab"
-# The lab's scenes in the order of its tabs, with a caption each (web/shots.mjs writes the list
+# The lab's scenes in the order of its tabs, with a caption each (web/shots/shots.test.mjs writes the list
 # it shot into scenes.json beside the pictures; the build checks that the two agree).
 SCENES = {
     "frames": "Rotating frames: a particle on a turntable seen from the fixed and the turning frame",
@@ -183,12 +183,12 @@ def _check_lab_shots(app: Any) -> None:
     if not listing.is_file():
         raise RuntimeError(
             f"the lab's screenshots are missing ({LAB_SHOTS}): run `make lab-shots` "
-            "(make docs does) — web/shots.mjs takes them in chromium"
+            "(make docs does) — web/shots/shots.test.mjs takes them in chromium"
         )
     shot = json.loads(listing.read_text())
     if shot != list(SCENES):
         raise RuntimeError(
-            f"web/shots.mjs shot the scenes {shot}, docs/_ext/pictures.py captions {list(SCENES)}: "
+            f"web/shots/shots.test.mjs shot the scenes {shot}, docs/_ext/pictures.py captions {list(SCENES)}: "
             "make the two lists agree"
         )
 

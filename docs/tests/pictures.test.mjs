@@ -1,6 +1,6 @@
 // Pictures on the site (issue 23, item 3): every topic page, the unit's figures page, the lab page
 // and the home page show pictures made at build time (docs/_ext/pictures.py: the unit's figures
-// drawn by the installed poinsot, the lab's scenes shot in chromium by web/tests/shots.test.mjs);
+// drawn by the installed poinsot, the lab's scenes shot in chromium by web/shots/shots.test.mjs);
 // the gallery has a real thumbnail for every example, in the unit's order; no page shows a path
 // of the machine that built it, and no page loads a script or a style from another host.
 import { test } from "node:test";

@@ -2,12 +2,13 @@
 // the documentation's pages (docs/_ext/pictures.py shows them: the lab page, the topic pages).
 // Each scene must load and run without a console error; the pictures go to LAB_SHOTS (default
 // docs/_generated/lab, git-ignored) with scenes.json, the list of the scenes shot in tab order.
-// `make lab-shots` (which `make docs` runs) runs this file alone; `make test-web` runs it too.
+// `make lab-shots` (which `make docs` runs) runs it; it lives outside web/tests/ so that
+// `make test-web` does not take the same pictures a second time.
 import { test } from "node:test";
 import assert from "node:assert/strict";
 import { mkdirSync, writeFileSync, statSync } from "node:fs";
 import path from "node:path";
-import { startLab, open, repo } from "./harness.mjs";
+import { startLab, open, repo } from "../tests/harness.mjs";
 
 const OUT = process.env.LAB_SHOTS ?? path.join(repo, "docs/_generated/lab");
 // The tabs' order (web/src/scenes/index.ts); a test below checks the page agrees.
