@@ -196,8 +196,14 @@ def _check_lab_shots(app: Any) -> None:
 def _drop_execution_times(app: Any, config: Any) -> None:
     """conf.py turns sphinx-gallery's execution-times pages off (they load scripts and styles
     from public CDNs); a checkout that built the site before keeps their stale sources
-    (git-ignored), which Sphinx would still publish: they go."""
-    for stale in (DOCS / "sg_execution_times.rst", DOCS / "gallery" / "sg_execution_times.rst"):
+    (git-ignored) and built pages, which Sphinx would still publish: they go."""
+    out = Path(app.outdir)
+    for stale in (
+        DOCS / "sg_execution_times.rst",
+        DOCS / "gallery" / "sg_execution_times.rst",
+        out / "sg_execution_times.html",
+        out / "gallery" / "sg_execution_times.html",
+    ):
         stale.unlink(missing_ok=True)
 
 
