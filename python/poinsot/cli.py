@@ -1913,3 +1913,87 @@ def derive(name: str | None, list_all: bool, as_latex: bool, as_markdown: bool) 
         return
     one = d.derivation(name)
     click.echo(one.latex() if as_latex else one.markdown() if as_markdown else one.text())
+
+
+# -- poinsot experiments: the unit against the world (poinsot.experiments, the units extra) -------
+@main.command()
+@click.argument("name", required=False)
+@_JSON
+def experiments(name: str | None, as_json: bool) -> None:
+    """Published measurements, reproduced: measured vs poinsot's prediction.
+
+    Without NAME, the catalogue: each experiment (Reich's drops down a mine shaft, Foucault's
+    pendulums, ...) with what was measured, what poinsot predicts through its public API, the
+    unit's closed form and the verdict in units of the measurement's stated uncertainty. With
+    NAME, that experiment: its inputs as published, the model's assumptions and its sources.
+    Needs pint: ``pip install 'poinsot[units]'``.
+
+    \b
+    Examples:
+      poinsot experiments
+      poinsot experiments reich-1831
+      poinsot experiments reich-1831 --json
+    """
+    try:
+        from . import experiments as x
+    except ImportError as exc:
+        raise Refused(
+            "poinsot experiments needs pint, which is not installed: pip install 'poinsot[units]'"
+        ) from exc
+    if name is None:
+        results = x.run_all()
+        data: dict[str, Any] = {
+            "summary": x.catalogue_summary(results),
+            "experiments": [r.to_dict() for r in results],
+        }
+        rows = [
+            (
+                f"{r.name} ({r.year})",
+                r.quantity,
+                r.shown_measured(),
+                r.shown("predicted"),
+                r.shown("closed_form"),
+                r.verdict.split(" — ")[0],
+            )
+            for r in results
+        ]
+        _report(
+            data,
+            as_json,
+            "the unit against the world",
+            ("experiment", "quantity", "measured", "poinsot", "closed form", "verdict"),
+            rows,
+            notes=["poinsot experiments NAME shows one, with its sources and assumptions."],
+        )
+        return
+    try:
+        r = x.run(name)
+    except PoinsotError as exc:
+        raise click.UsageError(f"NAME: {str(exc).removeprefix('name: ')}") from None
+    data = r.to_dict()
+    rows = [
+        (f"{r.quantity}, measured", r.shown("measured")),
+        (f"uncertainty ({r.uncertainty_kind})", r.shown("uncertainty")),
+        ("poinsot's prediction", r.shown("predicted")),
+        ("the closed form", r.shown("closed_form")),
+        ("(measured − predicted) / uncertainty", "—" if r.sigma is None else f"{r.sigma:.3g} σ"),
+        ("verdict", r.verdict),
+    ]
+    rows += [(f"input: {k}", v) for k, v in r.inputs.items()]
+    notes = ["assumptions: " + ", ".join(r.assumptions)]
+    notes += [
+        f"source: {s.who}, {s.where}, {s.when}. {s.publication}, {s.page}"
+        + (f" <{s.url}>" if s.url else "")
+        for s in r.sources
+    ]
+    misquoted = x.get(name).misquoted
+    if misquoted:
+        notes.append(f"misquoted: {misquoted}")
+    _report(data, as_json, r.title, ("quantity", "value"), rows, notes=[_esc(n) for n in notes])
+
+
+def _esc(text: str) -> str:
+    """``text`` with rich's markup escaped (a citation's square brackets are text)."""
+    from rich.markup import escape
+
+    return escape(text)

@@ -446,6 +446,40 @@ def _fast_top(con: Console) -> None:
     )
 
 
+@section("The unit against the world: published measurements, reproduced (poinsot.experiments)")
+def _experiments(con: Console) -> None:
+    try:
+        from poinsot import experiments
+    except ImportError:
+        con.print("(needs pint: pip install 'poinsot[units]')")
+        return
+    firsts: dict[str, experiments.Experiment] = {}
+    for e in experiments.catalogue():
+        firsts.setdefault(e.topic, e)
+    results = [e.run() for e in firsts.values()]
+    con.print(
+        f"The catalogue holds {len(experiments.catalogue())} published measurements, each "
+        "recomputed through poinsot's public API from its inputs as published (Paris feet and "
+        "lines read by pint); the first of each topic:"
+    )
+    table = Table(show_header=True)
+    table.add_column("experiment")
+    table.add_column("measured", justify="right")
+    table.add_column("poinsot", justify="right")
+    table.add_column("verdict")
+    for r in results:
+        table.add_row(
+            f"{r.title} ({r.year})",
+            r.shown_measured(),
+            r.shown("predicted"),
+            r.verdict.split(" — ")[0],
+        )
+    con.print(table)
+    con.print(
+        "  all of them, with their sources: `poinsot experiments`, `poinsot experiments NAME`"
+    )
+
+
 def heading(con: Console, title: str) -> None:
     """A section's heading: a rule across the console, then the title in bold, wrapped at the
     console's width (a rule's own title is cut with "…" where it does not fit: at 80 columns

@@ -36,7 +36,15 @@ from ._catalogue import (
     problems,
     ureg,
 )
-from ._result import AGREE_RELATIVE, AGREE_SIGMA, ExperimentResult, run, run_all
+from ._plot import plot
+from ._result import (
+    AGREE_RELATIVE,
+    AGREE_SIGMA,
+    ExperimentResult,
+    catalogue_summary,
+    run,
+    run_all,
+)
 
 __all__ = [
     "AGREE_RELATIVE",
@@ -46,9 +54,11 @@ __all__ = [
     "ExperimentResult",
     "Source",
     "catalogue",
+    "catalogue_summary",
     "get",
     "names",
     "parse",
+    "plot",
     "problems",
     "run",
     "run_all",

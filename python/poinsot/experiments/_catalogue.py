@@ -205,11 +205,11 @@ class Experiment:
         """The inputs as quantities of :data:`ureg` (words stay strings)."""
         return {k: parse(v) for k, v in self.inputs.items()}
 
-    def run(self) -> Any:
-        """:func:`poinsot.experiments.run` of this entry."""
+    def run(self, **inputs: Any) -> Any:
+        """:func:`poinsot.experiments.run` of this entry (``inputs`` as there)."""
         from ._result import run_entry
 
-        return run_entry(self)
+        return run_entry(self, inputs)
 
 
 def problems(e: Experiment) -> list[str]:

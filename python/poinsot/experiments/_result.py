@@ -12,9 +12,16 @@ from .. import _display as show
 from .._answers import num
 from .._progress import delayed_bar, stderr_interactive
 from ..errors import PoinsotError
-from ._catalogue import Experiment, Source, catalogue, get, ureg
+from ._catalogue import Experiment, Source, catalogue, get, parse, ureg
 
-__all__ = ["AGREE_SIGMA", "ExperimentResult", "run", "run_all"]
+__all__ = [
+    "AGREE_RELATIVE",
+    "AGREE_SIGMA",
+    "ExperimentResult",
+    "catalogue_summary",
+    "run",
+    "run_all",
+]
 
 #: A measurement agrees with the prediction when they differ by at most this many of its
 #: standard uncertainties (about 95 % for a normal error). Without a stated uncertainty the
@@ -109,6 +116,13 @@ class ExperimentResult(show.Displayed):
         digits = 4 if key in ("measured", "predicted", "closed_form") else 2
         return f"{num(float(value.magnitude), digits)} {self.unit}".strip()
 
+    def shown_measured(self) -> str:
+        """The measured value with its uncertainty, ``"28.4 ± 4 mm"`` (a sense: the word)."""
+        if self.is_sense or self.uncertainty is None:
+            return self.shown("measured")
+        value = num(float(self.measured.magnitude), 4)
+        return f"{value} ± {self.shown('uncertainty')}"
+
     @property
     def summary(self) -> str:
         """The result in one plain sentence."""
@@ -116,10 +130,7 @@ class ExperimentResult(show.Displayed):
         if self.is_sense:
             body = f" seen {self.measured}, poinsot predicts {self.predicted}"
         else:
-            pm = f" ± {self.shown('uncertainty')}" if self.uncertainty is not None else ""
-            meas = self.shown("measured")
-            if pm:
-                meas = f"{num(float(self.measured.magnitude), 4)}{pm}"
+            meas = self.shown_measured()
             body = f" measured {meas}, poinsot predicts {self.shown('predicted')}"
             if self.closed_form is not None:
                 body += f" (closed form {self.shown('closed_form')})"
@@ -223,9 +234,22 @@ def _si(q: Any) -> tuple[float | None, str]:
     return float(base.magnitude), f"{base.units:~P}"
 
 
-def run_entry(e: Experiment) -> ExperimentResult:
-    """Run one entry: its inputs parsed, its prediction and closed form computed."""
+def run_entry(e: Experiment, changes: dict[str, Any] | None = None) -> ExperimentResult:
+    """Run one entry: its inputs parsed (with ``changes``, name → a pint string or quantity,
+    in place of the published ones), its prediction and closed form computed."""
     inputs = e.parsed_inputs()
+    for key, value in (changes or {}).items():
+        if key not in inputs:
+            raise PoinsotError(f"{key}: not an input of {e.name} (its inputs: {', '.join(inputs)})")
+        if isinstance(value, str):
+            inputs[key] = parse(value)
+        elif hasattr(value, "units"):
+            inputs[key] = ureg.Quantity(value.magnitude, str(value.units))
+        else:
+            raise PoinsotError(
+                f"{key}: give a quantity with its unit (a pint string such as "
+                f"{e.inputs[key]!r}, or a pint quantity), got {value!r}"
+            )
     measured = ureg.parse_expression(e.measured) if any(c.isdigit() for c in e.measured) else None
     unit = e.unit or ("" if measured is None else str(measured.units))
     if measured is None:
@@ -263,6 +287,9 @@ def run_entry(e: Experiment) -> ExperimentResult:
         text += f" — a disagreement was expected: {e.why}"
     elif not agrees:
         text += " — not expected"
+    shown_inputs = dict(e.inputs)
+    for key, value in (changes or {}).items():
+        shown_inputs[key] = value if isinstance(value, str) else f"{inputs[key]:~P}"
     return ExperimentResult(
         name=e.name,
         title=e.title,
@@ -288,18 +315,22 @@ def run_entry(e: Experiment) -> ExperimentResult:
         uncertainty_kind=e.uncertainty_kind,
         assumptions=tuple(e.assumptions),
         sources=tuple(e.sources),
-        inputs=dict(e.inputs),
+        inputs=shown_inputs,
         year=e.year,
     )
 
 
-def run(name: str) -> ExperimentResult:
+def run(name: str, **inputs: Any) -> ExperimentResult:
     """Run the catalogue's entry ``name`` (``"reich-1831"``): measured vs poinsot's prediction
     vs the closed form, and the verdict in units of the measurement's uncertainty.
-    :class:`PoinsotError` naming ``name`` (with the close names) for an unknown one."""
+    :class:`PoinsotError` naming ``name`` (with the close names) for an unknown one.
+
+    ``inputs`` replace published inputs by name, as pint strings or quantities
+    (``run("reich-1831", height="160 m")``): what the prediction would have been had the
+    experimenter measured the set-up differently. ``inputs`` shows the ones used."""
     if not isinstance(name, str):
         raise PoinsotError(f"name: expected an experiment's name (a string), got {name!r}")
-    return run_entry(get(name))
+    return run_entry(get(name), inputs)
 
 
 def run_all(progress: bool | None = None) -> tuple[ExperimentResult, ...]:
@@ -313,3 +344,20 @@ def run_all(progress: bool | None = None) -> tuple[ExperimentResult, ...]:
             out.append(run_entry(e))
             update(i + 1, len(entries))
     return tuple(out)
+
+
+def catalogue_summary(results: tuple[ExperimentResult, ...] | list[ExperimentResult]) -> str:
+    """The catalogue's results in one or two plain sentences (how many agree, how many
+    disagree as expected, and any that does not do what its entry expects)."""
+    n = len(results)
+    agree = sum(r.agrees for r in results)
+    expected_off = [r for r in results if not r.agrees and r.as_expected]
+    surprises = [r.name for r in results if not r.as_expected]
+    words = f"{n} published measurement{'s' if n != 1 else ''} reproduced by poinsot: "
+    words += f"{agree} agree with its prediction within the stated uncertainty"
+    if expected_off:
+        words += f", {len(expected_off)} disagree as expected (the model leaves something out)"
+    words += "."
+    if surprises:
+        words += f" Not as the entry expects: {', '.join(surprises)}."
+    return words
