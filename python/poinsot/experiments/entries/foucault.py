@@ -1,0 +1,199 @@
+"""Foucault pendulums: the turn of the swing plane, ω sin λ (clockwise in the north).
+
+The prediction swings the pendulum with :meth:`poinsot.Earth.foucault` (a spherical pendulum
+integrated in the rotating frame) and takes the rate of turn it fits through the turning
+points; the closed form is the unit's −ω sin λ, :meth:`poinsot.Earth.foucault_rate`. Rates
+are given clockwise seen from above, positive (the way the 1851 observers reported them).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from typing import Any
+
+from poinsot import Earth, PoinsotError
+
+from .._catalogue import Experiment, Source, ureg
+
+__all__ = ["ENTRIES"]
+
+#: How long the prediction swings the pendulum (s): an hour, as the 1851 audiences watched.
+_DURATION = 3600.0
+
+
+def _swing(inputs: Mapping[str, Any]) -> float:
+    """The fitted rate of turn of the swing plane, clockwise seen from above (rad/s)."""
+    run = Earth().foucault(
+        inputs["latitude"],
+        length=inputs["length"],
+        amplitude=inputs["length"] * _AMPLITUDE_RATIO,
+        duration=_DURATION,
+    )
+    if run.precession_rate is None:
+        raise PoinsotError(f"the pendulum shows no steady turn: {run.regime_note}")
+    return -run.precession_rate
+
+
+#: The release's distance from rest as a fraction of the length: a small swing (the sources do
+#: not give the amplitude; Foucault's Panthéon bob swung about 3 m each way on 67 m).
+_AMPLITUDE_RATIO = 0.015
+
+
+def _rate(inputs: Mapping[str, Any]) -> Any:
+    """The swing plane's rate of turn from the integrated pendulum (clockwise positive)."""
+    return ureg.Quantity(_swing(inputs), "rad/s")
+
+
+def _closed_rate(inputs: Mapping[str, Any]) -> Any:
+    """The unit's ω sin λ (clockwise positive)."""
+    return ureg.Quantity(-Earth().foucault_rate(inputs["latitude"]), "rad/s")
+
+
+def _turn_time(inputs: Mapping[str, Any]) -> Any:
+    """The time the swing plane takes to turn once, from the integrated pendulum's rate."""
+    return ureg.Quantity(2 * math.pi / abs(_swing(inputs)), "s")
+
+
+def _closed_turn_time(inputs: Mapping[str, Any]) -> Any:
+    """2π / (ω sin λ)."""
+    return ureg.Quantity(2 * math.pi / abs(Earth().foucault_rate(inputs["latitude"])), "s")
+
+
+_HANDBOOK = Source(
+    who="(compiled from the 1851 reports)",
+    where="Paris, Bristol, Dublin, Aberdeen, New York, Ceylon",
+    when="1851",
+    publication=(
+        "a nineteenth-century English handbook of astronomy, chapter 'Foucault's pendulum "
+        "experiment to show the Earth's axial rotation' (Google Books id ifIRAAAAYAAJ)"
+    ),
+    page="p. 115 ('The angular deviation for 1 hour was found to be at Paris 11°; ... at "
+    "Dublin nearly 12°'; 'At Dublin a complete revolution was watched and observed to occupy "
+    "28h 26m')",
+    url="https://books.google.com/books?id=ifIRAAAAYAAJ&pg=PA115",
+    note="secondary; the book's title was not shown on the page read",
+)
+
+ENTRIES = [
+    Experiment(
+        name="foucault-1851",
+        title="Foucault's Panthéon",
+        topic="Foucault pendulums",
+        sources=(
+            Source(
+                who="Léon Foucault",
+                where="Panthéon, Paris (first at the Observatoire, salle de la Méridienne)",
+                when="1851",
+                publication=(
+                    "Foucault, L. (1851), 'Démonstration physique du mouvement de rotation de "
+                    "la terre au moyen du pendule', Comptes rendus hebdomadaires des séances "
+                    "de l'Académie des sciences 32, 135–138"
+                ),
+                page=(
+                    "pp. 136–137 (the law: the plane turns by the Earth's turn times the sine "
+                    "of the latitude); p. 138 ('ne fait pas un tour entier dans les vingt-"
+                    "quatre heures'; the 11 m pendulum of the Méridienne)"
+                ),
+                url=(
+                    "https://fr.wikisource.org/wiki/Page:Comptes_rendus_hebdomadaires_des_"
+                    "s%C3%A9ances_de_l%E2%80%99Acad%C3%A9mie_des_sciences,_tome_032,_1851."
+                    "djvu/146"
+                ),
+                note=(
+                    "read on Wikisource (corrected pages). The note gives the law, not an "
+                    "hourly figure; the 11° per hour measured in the Panthéon is the "
+                    "handbook's (second source). 67 m and 28 kg: the Panthéon pendulum as "
+                    "reported since (e.g. francearchives.fr, Commémorations 2001)."
+                ),
+            ),
+            _HANDBOOK,
+        ),
+        inputs={"latitude": "48 deg + 50 arcmin + 46 arcsec", "length": "67 m"},
+        quantity="rate of turn of the swing plane (clockwise seen from above)",
+        measured="11 deg/hour",
+        uncertainty=None,
+        uncertainty_kind="none stated (the hourly figure is given to the whole degree)",
+        predict=_rate,
+        closed_form=_closed_rate,
+        assumptions=(
+            "spherical pendulum, small swing",
+            "no air drag",
+            "spherical Earth",
+            "sidereal rotation",
+        ),
+        story=(
+            "In February 1851 Léon Foucault told the Académie des sciences that the plane "
+            "of a freely hung pendulum turns from east to west, by the Earth's own turn times "
+            "the sine of the latitude: the Earth turns under it. He had seen it first in his "
+            "cellar with a 2 m wire, then on 11 m under the Observatoire's Méridienne; in "
+            "March the prince-president had him hang a 28 kg ball on 67 m of wire from the "
+            "dome of the Panthéon, where a stylus cut the swings into a bank of sand and the "
+            "crowds saw the plane advance about 11° each hour."
+        ),
+        misquoted=(
+            "'It rotates clockwise 11° per hour, making a full circle in 32.7 hours' is "
+            "repeated across the web (for example harveybenge.blogspot.com, 2010, and "
+            "walkingarizona.blogspot.com, 2012, copying the same sentence): 32.7 h is just "
+            "360/11, the rounded hourly figure turned into a period. The law Foucault "
+            "announced gives ω sin λ = 11.3° per hour at the Panthéon (48° 51′ N), a full turn "
+            "in a sidereal day / sin λ = 31.8 h. The same handbook credits Binet with "
+            "'32h 8m', also not the sidereal law's figure."
+        ),
+        unit="deg/hour",
+    ),
+    Experiment(
+        name="galbraith-haughton-1851",
+        title="The Dublin pendulum",
+        topic="Foucault pendulums",
+        sources=(
+            Source(
+                who="Joseph Galbraith and Samuel Haughton",
+                where=(
+                    "engine factory of the Dublin & Kingstown Railway, Grand Canal Basin, "
+                    "Ringsend, Dublin"
+                ),
+                when="1851",
+                publication=(
+                    "Galbraith's diary, April–July 1851, Trinity College Dublin, Manuscripts "
+                    "and Archives Research Library, TCD MS 3826; described in 'Galbraith's "
+                    "account of the Foucault pendulum experiment in Dublin', TCD Library "
+                    "manuscripts blog"
+                ),
+                page=(
+                    "the blog's account of the final experiment ('a full rotation was achieved "
+                    "in a time of 28 hours and 26 minutes'; length 35.4 feet; azimuth read "
+                    "every 20 minutes)"
+                ),
+                url="https://www.tcd.ie/library/manuscripts/blog/category/scientific/page/2/",
+                note=(
+                    "secondary (the library's account of the diary). Their printed paper in "
+                    "the Proceedings of the Royal Irish Academy was not found in the stored "
+                    "copies."
+                ),
+            ),
+            _HANDBOOK,
+        ),
+        inputs={"latitude": "53 deg + 20 arcmin", "length": "35.4 ft"},
+        quantity="time for the swing plane to turn once",
+        measured="28 hour + 26 minute",
+        uncertainty=None,
+        uncertainty_kind="none stated (one full turn timed; the azimuth was read every 20 min)",
+        predict=_turn_time,
+        closed_form=_closed_turn_time,
+        assumptions=(
+            "spherical pendulum, small swing",
+            "no air drag",
+            "spherical Earth",
+            "sidereal rotation",
+        ),
+        story=(
+            "Within weeks of Foucault's announcement two fellows of Trinity College Dublin, "
+            "Joseph Galbraith and Samuel Haughton, hung a pendulum 35.4 feet (10.8 m) long "
+            "under the lofty roof of the railway's engine factory at Ringsend and took turns "
+            "reading its azimuth every 20 minutes, through runs of 15 to 30 hours. In the last "
+            "run they watched the swing plane go once all the way round, in 28 h 26 min."
+        ),
+        unit="hour",
+    ),
+]

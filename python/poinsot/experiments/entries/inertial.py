@@ -1,0 +1,92 @@
+"""Inertial oscillations: water set moving and left to the Coriolis force turns in circles with
+the period π/(ω |sin λ|), half a pendulum day.
+
+The prediction integrates a parcel with :meth:`poinsot.Earth.inertial_oscillation` and takes
+the period from the rate at which its velocity turns in the run; the closed form is
+:meth:`poinsot.Earth.inertial_period`.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from typing import Any
+
+from poinsot import Earth
+
+from .._catalogue import Experiment, Source, ureg
+
+__all__ = ["ENTRIES"]
+
+
+def _period(inputs: Mapping[str, Any]) -> Any:
+    """2π over the rate at which the integrated parcel's velocity turns."""
+    run = Earth().inertial_oscillation(inputs["latitude"])
+    return ureg.Quantity(2 * math.pi / abs(run.turning_rate), "s")
+
+
+def _closed_period(inputs: Mapping[str, Any]) -> Any:
+    """π / (ω |sin λ|)."""
+    return ureg.Quantity(Earth().inertial_period(inputs["latitude"]), "s")
+
+
+ENTRIES = [
+    Experiment(
+        name="gustafson-kullenberg-1936",
+        title="Baltic inertial currents",
+        topic="inertial oscillations",
+        sources=(
+            Source(
+                who="Torsten Gustafson and Börje Kullenberg",
+                where="the Baltic Sea (position near 57.8° N as quoted after Gill 1982)",
+                when="published 1936",
+                publication=(
+                    "Gustafson, T. and Kullenberg, B. (1936), 'Untersuchungen von "
+                    "Trägheitsströmungen in der Ostsee', Svenska Hydrografisk-Biologiska "
+                    "Kommissionens Skrifter, Ny Serie, Hydrografi 13"
+                ),
+                page="the period of the oscillations (not seen here)",
+                note=(
+                    "the original was not found in the stored copies. Ekman's review "
+                    "(second source) says the period of the Baltic oscillations agrees, as "
+                    "well as it could be determined, with half a pendulum day (14.1 h there); "
+                    "the '14 hour period' and the position near 57.8° N are as quoted in "
+                    "teaching material after Gill, Atmosphere–Ocean Dynamics (1982), fig. 8.3 "
+                    "(marine.rutgers.edu problem set, 2000)."
+                ),
+            ),
+            Source(
+                who="V. Walfrid Ekman",
+                where="(review)",
+                when="c. 1939",
+                publication=(
+                    "Ekman, V. W., 'Trägheitsschwingungen und Trägheitsperiode im Meere', "
+                    "Annalen der Hydrographie und maritimen Meteorologie (BSH digital "
+                    "library, item 142204)"
+                ),
+                page="p. 239 (the Baltic oscillations: period equal to half a pendulum day, "
+                "14.1 h; circular and turning to the right)",
+                url="https://digitale-bibliothek.bsh.de/viewer/fulltext/142204/301/",
+                note="read in the BSH digital library's full text; volume and year not shown",
+            ),
+        ),
+        inputs={"latitude": "57.8 deg"},
+        quantity="period of the inertial oscillation",
+        measured="14 hour",
+        uncertainty=None,
+        uncertainty_kind="none stated ('about 14 hours')",
+        predict=_period,
+        closed_form=_closed_period,
+        assumptions=("frictionless level surface", "Coriolis force only", "sidereal rotation"),
+        story=(
+            "In the 1930s the Swedish oceanographers Torsten Gustafson and Börje Kullenberg "
+            "measured the currents of the open Baltic for days on end. Long after the wind that "
+            "set the water moving had dropped, the current kept turning clockwise through the "
+            "compass, once in about 14 hours: half a pendulum day, the "
+            "period of a body that only the Coriolis force turns. Ekman noted that the "
+            "oscillations were circular and turned to the right, as the theory requires in "
+            "the north."
+        ),
+        unit="hour",
+    ),
+]
