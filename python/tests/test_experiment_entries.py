@@ -105,6 +105,7 @@ REFERENCES: dict[str, tuple[Callable[[Mapping[str, Any]], Any], float]] = {
     "hall-1902": (_south, 1e-3),
     "foucault-1851": (_foucault_rate, 5e-3),
     "galbraith-haughton-1851": (_foucault_turn, 5e-3),
+    "ceylon-1851": (_foucault_rate, 5e-3),
     "gustafson-kullenberg-1936": (_inertial, 1e-6),
     "shapiro-1962": (_sense, 0.0),
     "trefethen-1965": (_sense, 0.0),

@@ -23,11 +23,13 @@ _DURATION = 3600.0
 
 
 def _swing(inputs: Mapping[str, Any]) -> float:
-    """The fitted rate of turn of the swing plane, clockwise seen from above (rad/s)."""
+    """The fitted rate of turn of the swing plane, clockwise seen from above (rad/s); a
+    pendulum of :data:`_UNPUBLISHED_LENGTH` where the source gives no length."""
+    length = inputs.get("length", _UNPUBLISHED_LENGTH)
     run = Earth().foucault(
         inputs["latitude"],
-        length=inputs["length"],
-        amplitude=inputs["length"] * _AMPLITUDE_RATIO,
+        length=length,
+        amplitude=length * _AMPLITUDE_RATIO,
         duration=_DURATION,
     )
     if run.precession_rate is None:
@@ -38,6 +40,9 @@ def _swing(inputs: Mapping[str, Any]) -> float:
 #: The release's distance from rest as a fraction of the length: a small swing (the sources do
 #: not give the amplitude; Foucault's Panthéon bob swung about 3 m each way on 67 m).
 _AMPLITUDE_RATIO = 0.015
+#: The pendulum swung where the source gives no length (m); the small-swing rate ω sin λ does
+#: not depend on it.
+_UNPUBLISHED_LENGTH = ureg.Quantity(10.0, "m")
 
 
 def _rate(inputs: Mapping[str, Any]) -> Any:
@@ -69,8 +74,8 @@ _HANDBOOK = Source(
         "experiment to show the Earth's axial rotation' (Google Books id ifIRAAAAYAAJ)"
     ),
     page="p. 115 ('The angular deviation for 1 hour was found to be at Paris 11°; ... at "
-    "Dublin nearly 12°'; 'At Dublin a complete revolution was watched and observed to occupy "
-    "28h 26m')",
+    "Dublin nearly 12°; ... at New York (Lat. 40°) it was only 9° and in Ceylon (Lat. 7°) only "
+    "1·8°'; 'At Dublin a complete revolution was watched and observed to occupy 28h 26m')",
     url="https://books.google.com/books?id=ifIRAAAAYAAJ&pg=PA115",
     note="secondary; the book's title was not shown on the page read",
 )
@@ -195,5 +200,46 @@ ENTRIES = [
             "run they watched the swing plane go once all the way round, in 28 h 26 min."
         ),
         unit="hour",
+    ),
+    Experiment(
+        name="ceylon-1851",
+        title="The pendulum in Ceylon",
+        topic="Foucault pendulums",
+        sources=(
+            Source(
+                who="observers in Ceylon (not named in the source found)",
+                where="Ceylon (latitude 7° N as the source gives it)",
+                when="1851",
+                publication=_HANDBOOK.publication,
+                page=_HANDBOOK.page,
+                url=_HANDBOOK.url,
+                note=(
+                    "secondary; francearchives.fr (Commémorations 2001) lists Ceylon among the "
+                    "places the pendulum was installed in 1851. The observers' own report was "
+                    "not found."
+                ),
+            ),
+        ),
+        inputs={"latitude": "7 deg"},
+        quantity="rate of turn of the swing plane (clockwise seen from above)",
+        measured="1.8 deg/hour",
+        uncertainty=None,
+        uncertainty_kind="none stated (the hourly figure is given to a tenth of a degree)",
+        predict=_rate,
+        closed_form=_closed_rate,
+        assumptions=(
+            "spherical pendulum, small swing, 10 m long (the source gives no length)",
+            "no air drag",
+            "spherical Earth",
+            "sidereal rotation",
+        ),
+        story=(
+            "Within the year Foucault's pendulum was swung from Rio de Janeiro to Ceylon. "
+            "Near the equator the experiment is at its hardest: at latitude 7° the swing "
+            "plane turns only ω sin λ = 1.8° an hour, 38 times slower than at the pole, and "
+            "any draught or ellipticity of the swing can mask it. The handbook that records "
+            "11° an hour in Paris and nearly 12° in Dublin gives 1.8° for Ceylon, and 9° for "
+            "New York at 40°, where the law gives 9.7°."
+        ),
     ),
 ]
