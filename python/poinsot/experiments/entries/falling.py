@@ -114,8 +114,9 @@ ENTRIES = [
             "0.0023 mm (poinsot's Earth().southward_deflection): the reported southward "
             "deviation is about 1500 times too large. Olbers suspected the tower's unequal "
             "warming (its south wall in the sun); Gauss showed the 1.5 lines do not fit the "
-            "theory. Textbooks that cite a 'southward deviation of falling bodies' repeat an "
-            "error of the plumb point, not a physical effect."
+            "theory. Accounts that cite a 'southward deviation of falling bodies' repeat a "
+            "systematic error of the set-up (the plumb point, the tower's warmth), not a "
+            "physical effect."
         ),
         unit="paris_line",
     ),

@@ -87,8 +87,8 @@ ENTRIES = [
             "centrifugal term of the sidereal rotation",
         ),
         story=(
-            "A pendulum clock carried from Paris to Cayenne in 1672 lost time: gravity is "
-            "weaker near the equator. The modern reference, WGS 84, gives 9.7803 m/s² at "
+            "In 1672 Jean Richer found at Cayenne that a pendulum beating seconds had to be "
+            "shorter than in Paris: gravity is weaker near the equator. The modern reference, WGS 84, gives 9.7803 m/s² at "
             "the equator and 9.8322 at the poles, a difference of 0.0519 m/s². The unit's "
             "spinning sphere explains only the centrifugal part of it, ω²R = 0.0339 m/s²."
         ),

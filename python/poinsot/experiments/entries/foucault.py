@@ -139,7 +139,7 @@ ENTRIES = [
         misquoted=(
             "'It rotates clockwise 11° per hour, making a full circle in 32.7 hours' is "
             "repeated across the web (for example harveybenge.blogspot.com, 2010, and "
-            "walkingarizona.blogspot.com, 2012, copying the same sentence): 32.7 h is just "
+            "walkingarizona.blogspot.com, 2012, with the same figures): 32.7 h is just "
             "360/11, the rounded hourly figure turned into a period. The law Foucault "
             "announced gives ω sin λ = 11.3° per hour at the Panthéon (48° 51′ N), a full turn "
             "in a sidereal day / sin λ = 31.8 h. The same handbook credits Binet with "

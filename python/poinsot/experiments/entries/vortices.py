@@ -31,8 +31,8 @@ def _closed_sense(inputs: Mapping[str, Any]) -> str:
 
 
 _STORY_COMMON = (
-    "The Coriolis force on water moving a metre towards a drain is ten million times weaker "
-    "than its weight; any swirl left from filling the tank, any draught or warm wall, decides "
+    "The Coriolis force on water creeping towards a drain at a centimetre a second is ten "
+    "million times weaker than its weight; any swirl left from filling the tank, any draught or warm wall, decides "
     "the sense of an ordinary bath's vortex. "
 )
 
