@@ -99,6 +99,7 @@ def _euler(i: Mapping[str, Any]) -> float:
 #: Each entry's reference (inputs as pint quantities → SI value, or the sense) and the relative
 #: tolerance of poinsot's prediction against it. An entry without one fails the test below.
 REFERENCES: dict[str, tuple[Callable[[Mapping[str, Any]], Any], float]] = {
+    "guglielmini-1791": (_east, 1e-6),
     "benzenberg-1802": (_east, 1e-6),
     "benzenberg-1804": (_east, 1e-6),
     "reich-1831": (_east, 1e-6),
@@ -209,6 +210,11 @@ def test_reported_southward_deviations_are_hundreds_of_times_what_physics_allows
     ratio = 0.0050e-2 / earth.southward_deflection(hall["height"], hall["latitude"])
     assert round(ratio, -1) == 230
     assert "230 times" in x.get("hall-1902").misquoted
+    # Guglielmini, Bologna: 5.272 lines south (Garthe's figure)
+    bologna = x.get("guglielmini-1791").parsed_inputs()
+    ratio = 5.272 * PARIS_LINE / earth.southward_deflection(bologna["height"], bologna["latitude"])
+    assert 4500 < ratio < 5000
+    assert "nearly 5000 times" in x.get("guglielmini-1791").misquoted
 
 
 def test_the_pantheon_32_7_hours_is_360_over_11_and_the_law_gives_31_8() -> None:

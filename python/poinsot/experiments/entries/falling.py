@@ -59,6 +59,67 @@ _OLBERS = (
 
 ENTRIES = [
     Experiment(
+        name="guglielmini-1791",
+        title="Guglielmini in Bologna",
+        topic="falling bodies",
+        sources=(
+            Source(
+                who="Giovanni Battista Guglielmini",
+                where="Torre degli Asinelli, Bologna",
+                when="1791",
+                publication=(
+                    "Guglielmini, G. B. (1792), De diurno terrae motu experimentis "
+                    "physico-mathematicis confirmato opusculum, Bologna; as reported by "
+                    "Benzenberg, Versuche über die Umdrehung der Erde (TIB PPN 820993328)"
+                ),
+                page=(
+                    "Benzenberg, printed p. 10 (241 Fuss fall; 7,4 Linien east, 5 Linien "
+                    "south; the tower swayed and the plumb point was taken half a year later, "
+                    "5 Linien south of the true one)"
+                ),
+                url="https://goobi.tib.eu/viewer/fulltext/820993328/15",
+                note=(
+                    "Guglielmini's own book was not found in the stored copies. Garthe, "
+                    "Foucault's Versuch ... im Dom zu Köln (1852), p. 14 (TIB PPN 827777809), "
+                    "gives the same figures: 7,400 Linien east and 5,272 south observed, "
+                    "7,581 and 6,163 by Guglielmini's computation; the Italian translation "
+                    "of Kant's Physische Geographie (1807, vol. 1, p. 55, it.wikisource) "
+                    "gives 8,375 east. Bologna's latitude 44° 30′ is the usual figure, not "
+                    "from these pages. Benzenberg dates the drops 1792, Garthe 1791."
+                ),
+            ),
+        ),
+        inputs={"height": "241 paris_foot", "latitude": "44 deg + 30 arcmin"},
+        quantity="eastward deflection",
+        measured="7.4 paris_line",
+        uncertainty=None,
+        uncertainty_kind="none stated (16 drops, as later accounts give it; only the mean found)",
+        predict=_drop_east,
+        closed_form=_closed_east,
+        assumptions=("vacuum", "uniform gravity", "spherical Earth", "sidereal rotation"),
+        story=(
+            "The first drops long enough to show the Earth's rotation were Guglielmini's, "
+            "in 1791, from the Torre degli Asinelli in Bologna, where Riccioli had once "
+            "timed falling bodies: 241 Paris feet (78 m). His balls "
+            "landed 7.4 Paris lines east and 5.3 lines south of his plumb point. But the "
+            "tower swayed, and he could only take the plumb point half a year later, when it "
+            "had settled; Benzenberg judged the experiments unusable."
+        ),
+        misquoted=(
+            "Guglielmini's own theory predicted 7.58 lines east and 6.16 lines south, and his "
+            "measurement seemed to confirm both. Physics gives 4.8 lines east in vacuum "
+            "(poinsot's Earth().drop) and only 0.0011 lines (0.0025 mm) south: the reported "
+            "southward deviation is nearly 5000 times too large, the size of the error in "
+            "his plumb point."
+        ),
+        expect="disagree",
+        why=(
+            "the set-up, not the model: the tower swayed and the plumb point, taken half a "
+            "year after the drops, lay 5 lines south of the true one (Benzenberg)"
+        ),
+        unit="paris_line",
+    ),
+    Experiment(
         name="benzenberg-1802",
         title="Benzenberg in Hamburg",
         topic="falling bodies",
