@@ -47,9 +47,9 @@ def _closed_south(inputs: Mapping[str, Any]) -> Any:
 
 
 _BENZENBERG_1845 = (
-    "Benzenberg, J. F., Versuche über die Umdrehung der Erde (a later Düsseldorf edition "
-    "recomputing the 1802–1804 drops with Olbers's and Gauss's formulas), digitised by the TIB "
-    "Hannover, PPN 820993328"
+    "Benzenberg, J. F., Versuche über die Umdrehung der Erde (a later book, after Reich's of "
+    "1832 which it quotes, recomputing the 1802–1804 drops with Olbers's and Gauss's "
+    "formulas), digitised by the TIB Hannover, PPN 820993328"
 )
 _BENZENBERG_URL = "https://goobi.tib.eu/viewer/fulltext/820993328/16"
 _OLBERS = (
@@ -249,10 +249,10 @@ ENTRIES = [
                 ),
             ),
             Source(
-                who="(anonymous author), Album der Natuur",
-                where="Haarlem",
+                who="(author not named on the page), Album der Natuur",
+                where="(a Dutch popular-science journal)",
                 when="1854",
-                publication="Album der Natuur, 1854 en 1855 (Haarlem: A. C. Kruseman)",
+                publication="Album der Natuur, 1854 en 1855",
                 page=(
                     "p. 342 (158½ Ned. ellen fall, theory 27½ strepen east; mean of all 106 "
                     "drops 28,4 strepen; 'not determinable to within one streep')"
