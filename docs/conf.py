@@ -37,6 +37,7 @@ extensions = [
     "poinsot_docs",
     "pictures",
     "cited_equations",
+    "world_pages",
 ]
 
 source_suffix = {".rst": "restructuredtext", ".md": "myst-nb", ".ipynb": "myst-nb"}

@@ -35,7 +35,13 @@ NOTEBOOKS = ROOT / "notebooks"
 NOTEBOOK_COPIES = DOCS / "notebooks"
 
 # The public submodules documented beside the package's top-level names.
-SUBMODULES = ["poinsot.plots", "poinsot.special", "poinsot.derive", "poinsot.sweep"]
+SUBMODULES = [
+    "poinsot.plots",
+    "poinsot.special",
+    "poinsot.derive",
+    "poinsot.sweep",
+    "poinsot.experiments",
+]
 
 
 def _copy_mathjax(app: Any, config: Any) -> None:

@@ -70,8 +70,8 @@ def index_markdown(results: Any) -> str:
         INTRO.format(sigma=x.AGREE_SIGMA),
         x.catalogue_summary(results),
         "",
-        "| experiment | year | quantity | measured | poinsot | closed form | verdict |",
-        "|---|---|---|---|---|---|---|",
+        "| experiment | verdict | measured | poinsot | closed form |",
+        "|---|---|---|---|---|",
     ]
     for r in results:
         lines.append(
@@ -79,13 +79,11 @@ def index_markdown(results: Any) -> str:
             + " | ".join(
                 _cell(c)
                 for c in (
-                    f"[{r.title}]({r.name}.md)",
-                    r.year,
-                    r.quantity,
+                    f"[{r.title} ({r.year})]({r.name}.md)",
+                    r.short_verdict,
                     r.shown_measured(),
                     r.shown("predicted"),
                     r.shown("closed_form"),
-                    r.verdict.split(" — ")[0],
                 )
             )
             + " |"
@@ -110,7 +108,7 @@ def page_markdown(entry: Any, r: Any) -> str:
         "",
         f"```{{image}} ../_generated/world/{figure_name(r.name)}",
         f":alt: {r.quantity}: measured {r.shown_measured()}, poinsot {r.shown('predicted')}",
-        ":width: 100%",
+        f":width: {'60%' if r.is_sense else '100%'}",
         "```",
         "",
         "| | |",

@@ -1946,25 +1946,29 @@ def experiments(name: str | None, as_json: bool) -> None:
             "summary": x.catalogue_summary(results),
             "experiments": [r.to_dict() for r in results],
         }
-        rows = [
-            (
-                f"{r.name} ({r.year})",
-                r.quantity,
+        if as_json:
+            emit_json(data)
+            return
+        from rich.console import Console
+        from rich.table import Table
+
+        table = Table(title="the unit against the world")
+        table.add_column("experiment", no_wrap=True)
+        for column in ("measured", "poinsot", "closed form"):
+            table.add_column(column, justify="right", overflow="fold")
+        table.add_column("verdict", overflow="fold")
+        for r in results:
+            table.add_row(
+                r.name,
                 r.shown_measured(),
                 r.shown("predicted"),
                 r.shown("closed_form"),
-                r.verdict.split(" — ")[0],
+                r.short_verdict,
             )
-            for r in results
-        ]
-        _report(
-            data,
-            as_json,
-            "the unit against the world",
-            ("experiment", "quantity", "measured", "poinsot", "closed form", "verdict"),
-            rows,
-            notes=["poinsot experiments NAME shows one, with its sources and assumptions."],
-        )
+        console = Console()
+        _print_summary(console, data)
+        console.print(table)
+        console.print("poinsot experiments NAME shows one, with its sources and assumptions.")
         return
     try:
         r = x.run(name)

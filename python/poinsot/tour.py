@@ -472,7 +472,7 @@ def _experiments(con: Console) -> None:
             f"{r.title} ({r.year})",
             r.shown_measured(),
             r.shown("predicted"),
-            r.verdict.split(" — ")[0],
+            r.short_verdict,
         )
     con.print(table)
     con.print(

@@ -23,7 +23,7 @@ def plot(result: ExperimentResult, *, style: str = "paper", ax: Any = None) -> F
     axes instead of a new figure. Returns the figure."""
     with figure_style(style) as style:
         if ax is None:
-            fig, ax = subplots(style, 7.0, 2.4)
+            fig, ax = subplots(style, 4.5 if result.is_sense else 7.0, 2.4)
         else:
             fig = ax.figure
         if result.is_sense:
@@ -87,7 +87,7 @@ def _numbers(ax: Any, r: ExperimentResult) -> None:
 def _senses(ax: Any, r: ExperimentResult) -> None:
     from matplotlib.patches import FancyArrowPatch
 
-    for x, label, word in ((0.0, "measured", r.measured), (2.6, "poinsot", r.predicted)):
+    for x, label, word in ((0.0, "measured", r.measured), (3.4, "poinsot", r.predicted)):
         turn = -1.0 if "anti" in str(word) or "counter" in str(word) else 1.0
         t = np.linspace(0.3, 2 * np.pi - 0.3, 60) * (-turn)
         ax.plot(x + np.cos(t[:-1]), np.sin(t[:-1]), color="C0", lw=2 * line_width())
@@ -100,8 +100,8 @@ def _senses(ax: Any, r: ExperimentResult) -> None:
                 color="C0",
             )
         )
-        ax.text(x, -1.45, f"{label}: {word}", ha="center", va="top")
-    ax.set_xlim(-1.6, 4.2)
-    ax.set_ylim(-2.0, 1.4)
+        ax.text(x, -1.3, f"{label}\n{word}", ha="center", va="top")
+    ax.set_xlim(-1.9, 5.3)
+    ax.set_ylim(-2.3, 1.3)
     ax.set_aspect("equal")
     ax.set_axis_off()

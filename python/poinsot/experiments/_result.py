@@ -61,7 +61,7 @@ class ExperimentResult(show.Displayed):
     relative:
         (measured − predicted) / predicted (``None`` for a sense).
     agrees:
-        |sigma| ≤ :data:`AGREE_SIGMA` (|relative| ≤ :data:`AGREE_RELATIVE` without an
+        abs(sigma) ≤ :data:`AGREE_SIGMA` (abs(relative) ≤ :data:`AGREE_RELATIVE` without an
         uncertainty; the same word for a sense).
     as_expected:
         Whether ``agrees`` is what the entry expects (``expect``).
@@ -105,6 +105,27 @@ class ExperimentResult(show.Displayed):
         """Whether the compared quantity is a sense (a word), not a number."""
         return isinstance(self.measured, str)
 
+    @property
+    def unit_symbol(self) -> str:
+        """``unit`` as pint abbreviates it (``"deg/h"``, ``"ligne"``, ``"m/s²"``)."""
+        return f"{ureg.Unit(self.unit):~P}" if self.unit else ""
+
+    @property
+    def short_verdict(self) -> str:
+        """The verdict in a few words, for a table: ``"agrees (0.78 σ)"``, ``"disagrees (40 σ),
+        expected"``, ``"agrees (3.6 %)"`` (no uncertainty stated), ``"same sense"``."""
+        if self.is_sense:
+            word = "same sense" if self.agrees else "opposite sense"
+        elif self.sigma is not None:
+            word = f"{'agrees' if self.agrees else 'disagrees'} ({num(abs(self.sigma), 2)} σ)"
+        else:
+            assert self.relative is not None
+            pct = num(abs(self.relative) * 100, 2)
+            word = f"{'agrees' if self.agrees else 'differs'} ({pct} %)"
+        if not self.as_expected:
+            return word + ", not expected"
+        return word + (", expected" if self.expect == "disagree" else "")
+
     def shown(self, key: str) -> str:
         """``measured``, ``uncertainty``, ``predicted`` or ``closed_form`` as text, rounded to
         3 significant digits (4 for the measured value and the prediction), with the unit."""
@@ -114,7 +135,7 @@ class ExperimentResult(show.Displayed):
         if isinstance(value, str):
             return value
         digits = 4 if key in ("measured", "predicted", "closed_form") else 2
-        return f"{num(float(value.magnitude), digits)} {self.unit}".strip()
+        return f"{num(float(value.magnitude), digits)} {self.unit_symbol}".strip()
 
     def shown_measured(self) -> str:
         """The measured value with its uncertainty, ``"28.4 ± 4 mm"`` (a sense: the word)."""
@@ -126,12 +147,11 @@ class ExperimentResult(show.Displayed):
     @property
     def summary(self) -> str:
         """The result in one plain sentence."""
-        head = f"{self.title} ({self.year}): {self.quantity}"
+        head = f"{self.title} ({self.year}), {self.quantity}:"
         if self.is_sense:
-            body = f" seen {self.measured}, poinsot predicts {self.predicted}"
+            body = f" observed {self.measured}, poinsot predicts {self.predicted}"
         else:
-            meas = self.shown_measured()
-            body = f" measured {meas}, poinsot predicts {self.shown('predicted')}"
+            body = f" measured {self.shown_measured()}, poinsot predicts {self.shown('predicted')}"
             if self.closed_form is not None:
                 body += f" (closed form {self.shown('closed_form')})"
         return f"{head}{body}: {self.verdict}."
@@ -141,7 +161,9 @@ class ExperimentResult(show.Displayed):
             value = getattr(self, key)
             if value is None or isinstance(value, str):
                 return show.words(key, quantity, "None" if value is None else value, brief=brief)
-            return show.scalar(key, quantity, "", float(value.magnitude), self.unit, brief=brief)
+            return show.scalar(
+                key, quantity, "", float(value.magnitude), self.unit_symbol, brief=brief
+            )
 
         return [
             show.words("name", "experiment", self.name),
@@ -354,7 +376,7 @@ def catalogue_summary(results: tuple[ExperimentResult, ...] | list[ExperimentRes
     expected_off = [r for r in results if not r.agrees and r.as_expected]
     surprises = [r.name for r in results if not r.as_expected]
     words = f"{n} published measurement{'s' if n != 1 else ''} reproduced by poinsot: "
-    words += f"{agree} agree with its prediction within the stated uncertainty"
+    words += f"{agree} agree with poinsot's prediction"
     if expected_off:
         words += f", {len(expected_off)} disagree as expected (the model leaves something out)"
     words += "."
