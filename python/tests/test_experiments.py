@@ -309,3 +309,25 @@ def test_docs_chapter_lists_every_entry() -> None:
         assert r.sources[0].publication in page
         assert "def " in page  # the computation, as code
         assert f"world-{r.name}.png" in page
+
+
+def test_without_pint_the_error_names_the_extra() -> None:
+    import subprocess
+
+    code = (
+        "import sys; sys.modules['pint'] = None\n"
+        "try:\n"
+        "    import poinsot.experiments\n"
+        "except ImportError as exc:\n"
+        "    print(exc)\n"
+        "from click.testing import CliRunner\n"
+        "from poinsot.cli import main\n"
+        "res = CliRunner().invoke(main, ['experiments'])\n"
+        "print(res.exit_code, res.stderr.strip())\n"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True
+    ).stdout.splitlines()
+    assert out[0] == "poinsot.experiments needs pint: pip install 'poinsot[units]'"
+    assert out[1].startswith("1 error: poinsot experiments needs pint")
+    assert "pip install 'poinsot[units]'" in out[1]

@@ -59,7 +59,7 @@ TOPICS: tuple[str, ...] = (
 #: * ``rhenish_foot`` (rheinländischer Fuß, the Prussian foot): 139.13 Paris lines by the
 #:   Prussian Maß- und Gewichtsordnung of 16 May 1816, 0.313853 m, usually rounded to 0.3139 m
 #:   (the value used here); ``rhenish_inch``, ``rhenish_line`` its twelfths.
-ureg = pint.UnitRegistry()
+ureg: pint.UnitRegistry = pint.UnitRegistry()
 ureg.define("paris_line = meter / 443.296 = ligne")
 ureg.define("paris_inch = 12 * paris_line = pouce")
 ureg.define("paris_foot = 12 * paris_inch = pied_du_roi")

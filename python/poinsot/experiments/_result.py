@@ -272,14 +272,12 @@ def run_entry(e: Experiment, changes: dict[str, Any] | None = None) -> Experimen
                 f"{key}: give a quantity with its unit (a pint string such as "
                 f"{e.inputs[key]!r}, or a pint quantity), got {value!r}"
             )
-    measured = ureg.parse_expression(e.measured) if any(c.isdigit() for c in e.measured) else None
-    unit = e.unit or ("" if measured is None else str(measured.units))
-    if measured is None:
-        measured = e.measured.strip()
-    measured = _as_unit(measured, unit, "measured", e.name)
+    published = parse(e.measured)
+    unit = e.unit or ("" if isinstance(published, str) else str(published.units))
+    measured = _as_unit(published, unit, "measured", e.name)
     uncertainty = None
     if e.uncertainty is not None:
-        uncertainty = _as_unit(ureg.parse_expression(e.uncertainty), unit, "uncertainty", e.name)
+        uncertainty = _as_unit(parse(e.uncertainty), unit, "uncertainty", e.name)
     predicted = _as_unit(e.predict(inputs), unit, "predict()", e.name)
     closed = _as_unit(e.closed_form(inputs), unit, "closed_form()", e.name)
     m_si, si_unit = _si(measured)
