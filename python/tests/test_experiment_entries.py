@@ -104,6 +104,7 @@ REFERENCES: dict[str, tuple[Callable[[Mapping[str, Any]], Any], float]] = {
     "benzenberg-1804": (_east, 1e-6),
     "reich-1831": (_east, 1e-6),
     "hall-1902": (_south, 1e-3),
+    "hall-1902-east": (_east, 1e-6),
     "foucault-1851": (_foucault_rate, 5e-3),
     "galbraith-haughton-1851": (_foucault_turn, 5e-3),
     "ceylon-1851": (_foucault_rate, 5e-3),
@@ -205,11 +206,12 @@ def test_reported_southward_deviations_are_hundreds_of_times_what_physics_allows
     ratio = 1.5 * PARIS_LINE / physics
     assert round(ratio, -2) == 1500
     assert "1500 times" in x.get("benzenberg-1802").misquoted
-    # Hall: 0.0050 cm south in the Jefferson tower
+    # Hall: 0.0050 cm south in the Jefferson tower, 75 feet
     hall = x.get("hall-1902").parsed_inputs()
     ratio = 0.0050e-2 / earth.southward_deflection(hall["height"], hall["latitude"])
-    assert round(ratio, -1) == 230
-    assert "230 times" in x.get("hall-1902").misquoted
+    assert ratio == pytest.approx(0.0050e-2 / _south(hall), rel=1e-9)
+    assert round(ratio, -1) == 240
+    assert "240 times" in x.get("hall-1902").misquoted
     # Guglielmini, Bologna: 5.272 lines south (Garthe's figure)
     bologna = x.get("guglielmini-1791").parsed_inputs()
     ratio = 5.272 * PARIS_LINE / earth.southward_deflection(bologna["height"], bologna["latitude"])
@@ -239,3 +241,85 @@ def test_the_euler_period_is_about_304_days_and_chandler_427() -> None:
     assert r.predicted_si is not None and r.measured_si is not None
     assert r.predicted_si / DAY == pytest.approx(303.6, abs=0.1)
     assert r.measured_si / DAY == 427
+
+
+INCH = 0.0254  # the international inch (1959), by hand
+
+
+def _source_with(name: str, text: str) -> Any:
+    found = [s for s in x.get(name).sources if text in (s.url or "") or text in s.publication]
+    assert found, f"{name}: no source with {text!r}"
+    return found[0]
+
+
+def test_hall_fell_75_english_feet_and_his_mean_is_a_seventeenth_of_an_inch() -> None:
+    east, south = x.get("hall-1902-east"), x.get("hall-1902")
+    assert east.inputs == south.inputs and east.sources == south.sources
+    height = east.parsed_inputs()["height"].to("m").magnitude
+    assert height == pytest.approx(75 * 12 * INCH, rel=1e-12)
+    # negative control: 75 Paris feet would be 24.4 m, not the 22.9 m of the English foot
+    assert height != pytest.approx(75 * PARIS_FOOT, rel=1e-3)
+    # the two secondary accounts agree: 0.149 cm (Tikalon) is about 1/17 inch (Indiana)
+    r = x.run("hall-1902-east")
+    assert r.measured_si == pytest.approx(0.149e-2, rel=1e-12)
+    assert r.measured_si == pytest.approx(INCH / 17, rel=0.01)
+    _source_with("hall-1902", "indianapublicmedia.org")
+    # the vacuum drop from 75 feet at 42° 23′: 1.77 mm, and the shortfall is 16 %
+    assert r.predicted_si == pytest.approx(1.7724e-3, rel=1e-4)
+    assert r.relative is not None and round(-r.relative * 100) == 16
+    assert "16 %" in east.why and "none stated" in east.uncertainty_kind
+
+
+def test_reichs_fall_in_paris_units_is_the_album_der_natuurs_in_metres() -> None:
+    e = x.get("reich-1831")
+    tib = _source_with("reich-1831", "82200366X")
+    assert "488 Fuß" in tib.page and "106" in tib.page
+    # 488 Paris feet and 12⅗ Paris lines, by hand, are the Album's 158½ el and 28,4 strepen
+    height = e.parsed_inputs()["height"].to("m").magnitude
+    assert height == pytest.approx(488 * PARIS_FOOT, rel=1e-3)
+    measured = x.run("reich-1831").measured_si
+    assert measured == pytest.approx(12.6 * PARIS_LINE, abs=0.05e-3)
+    # negative control: 12⅜ lines (the other reading of the OCR's '3/s') is 27.9 mm, not 28.4
+    assert measured != pytest.approx(12.375 * PARIS_LINE, abs=0.1e-3)
+
+
+def test_the_baltic_latitude_agrees_with_ekmans_half_pendulum_day_of_14_1_hours() -> None:
+    e = x.get("gustafson-kullenberg-1936")
+    lat = _si(e.parsed_inputs(), "latitude", "rad")
+    assert round(_inertial(e.parsed_inputs()) / 3600, 1) == 14.1
+    # 14.05 h to 14.15 h (Ekman's 14.1 to its last digit) is 57.75° to 58.4° N
+    band = [math.degrees(math.asin(math.pi / (OMEGA * t * 3600))) for t in (14.15, 14.05)]
+    assert band[0] < math.degrees(lat) < band[1]
+    assert round(band[0], 2) == 57.75 and round(band[1], 1) == 58.4
+    assert "hier gleich 14.1 Stunden" in e.sources[0].note
+    assert "August 1936" in e.sources[0].when
+    _source_with("gustafson-kullenberg-1936", "marine.rutgers.edu")
+
+
+def test_the_wgs84_gravity_values_follow_from_the_four_defining_constants() -> None:
+    # Somigliana's closed form (Heiskanen & Moritz 1967, eqs. 2-73 to 2-76), by hand
+    a, f, gm, w = 6378137.0, 1 / 298.257223563, 3986004.418e8, 7292115e-11
+    b = a * (1 - f)
+    ep = math.sqrt(a * a - b * b) / b
+    q0 = 0.5 * ((1 + 3 / ep**2) * math.atan(ep) - 3 / ep)
+    q0p = 3 * (1 + 1 / ep**2) * (1 - math.atan(ep) / ep) - 1
+    m = w * w * a * a * b / gm
+    gamma_e = gm / (a * b) * (1 - m - m / 6 * ep * q0p / q0)
+    gamma_p = gm / a**2 * (1 + m / 3 * ep * q0p / q0)
+    assert gamma_e == pytest.approx(9.7803253359, abs=1e-10)
+    assert gamma_p == pytest.approx(9.8321849378, abs=1e-10)
+    assert x.run("wgs84-gravity").measured_si == pytest.approx(gamma_p - gamma_e, abs=1e-9)
+    # negative control: the older edition's 9.7803267714 does not follow from them
+    assert gamma_e != pytest.approx(9.7803267714, abs=1e-7)
+
+
+def test_the_dynamical_flattening_is_the_iers_2010_value_and_euler_stays_304_days() -> None:
+    e = x.get("chandler-1891")
+    h = float(e.parsed_inputs()["dynamical_ellipticity"].to("dimensionless").magnitude)
+    assert h == 3273795e-9
+    iers = _source_with("chandler-1891", "IERS Technical Note No. 36")
+    assert "3273795" in iers.page
+    # its stated ± 1e-9 moves the Euler period by less than a tenth of a day
+    for dh in (-1e-9, 1e-9):
+        moved = _euler({"dynamical_ellipticity": x.parse(str(h + dh))})
+        assert abs(moved - _euler(e.parsed_inputs())) < 0.1 * DAY

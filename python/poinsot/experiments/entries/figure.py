@@ -57,14 +57,20 @@ _TR8350 = Source(
         "definition and relationships with local geodetic systems, 3rd edition (2000)"
     ),
     page=(
-        "Chapter 4, the WGS 84 ellipsoidal gravity formula: γe = 9.7803253359 m/s² at the "
-        "equator, γp = 9.8321849378 m/s² at the poles"
+        "the table of derived physical constants (not seen here): γe = 9.7803253359 m/s² at "
+        "the equator, γp = 9.8321849378 m/s² at the poles"
     ),
     note=(
-        "the report itself was not read here (its Chapter 3 in an fdocuments copy); the two "
-        "values as quoted with the formula on a copy of the 'International gravity formula' "
-        "encyclopaedia page and checked against the closed-form expressions from a, b, GM, ω "
-        "in an hpmuseum.org forum thread (9.78032533482 and 9.83218494001)"
+        "the 2000 report's table of derived constants was not read here (only the first page "
+        "of Chapter 3 of the earlier edition, in an fdocuments copy; a calculator page cites "
+        "the gravity formula as eq. 4-3 of that edition, with its older γe 9.7803267714, so "
+        "the chapter and the page of the 2000 values are not confirmed). The two values "
+        "are as quoted with the formula on a copy of the 'International gravity formula' "
+        "encyclopaedia page, and they follow from the four defining constants (a = 6378137 "
+        "m, 1/f = 298.257223563, GM = 3986004.418e8 m³/s², ω = 7292115e-11 rad/s, as "
+        "pyshtools quotes them from TR8350.2): the boule documentation computes 9.7803253359 "
+        "and 9.8321849379 (fatiando/boule, doc/ellipsoids/wgs84.rst), an hpmuseum.org forum "
+        "thread 9.78032533482 and 9.83218494001"
     ),
 )
 

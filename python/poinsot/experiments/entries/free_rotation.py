@@ -7,7 +7,10 @@ of the axis; the closed form is the symmetric top's 2π / |Ω|, Ω = (C − A)/A
 (:class:`poinsot.FreeSymmetricTop`, the unit's eqs. 2.85–2.88).
 
 The tennis-racket flip of a real object is not in the catalogue yet: no published measurement
-of a flip period with the object's measured moments was found.
+of a flip period with the object's measured moments was found. Peterson and Schwalm (Am. J.
+Phys. 89, 349 (2021)) model the T-handle filmed in orbit; the notebook that accompanies their
+paper says they "made no attempt to adjust the model to fit the period", the handle's moments
+being unknown.
 """
 
 from __future__ import annotations
@@ -86,13 +89,32 @@ ENTRIES = [
                 "the Earth's elasticity lengthen it)",
                 note=(
                     "read as quoted at length in Turner, Astronomical Discovery (1904); the AJ "
-                    "page not checked here. The input H = (C − A)/C = 0.0032737949 is the "
-                    "IERS Conventions (2010) value, written from memory, not read in a stored "
-                    "copy (Newcomb's 306 days used the ellipticity of his time)."
+                    "page not checked here. Newcomb's 306 days used the ellipticity of his "
+                    "time; the input H is today's (third source)."
+                ),
+            ),
+            Source(
+                who="G. Petit and B. Luzum (eds.), IERS Conventions Centre",
+                where="Bureau International des Poids et Mesures, Sèvres / US Naval Observatory",
+                when="2010",
+                publication=(
+                    "Petit, G. and Luzum, B. (eds.) (2010), IERS Conventions (2010), IERS "
+                    "Technical Note No. 36, Frankfurt am Main: Verlag des Bundesamts für "
+                    "Kartographie und Geodäsie"
+                ),
+                page="Table 1.1 (H, the dynamical flattening: 3273795 × 10⁻⁹ ± 1 × 10⁻⁹)",
+                url="https://www.iers.org/TN36/",
+                note=(
+                    "the table itself was not read here (only the report's title pages, in a "
+                    "stored copy); the value and its uncertainty as pyshtools quotes them "
+                    "from the report (SHTOOLS/SHTOOLS, pyshtools/constants/Earth.py, "
+                    "dynamical_flattening_earth), the table's number as the orb library's "
+                    "constants cite it for the Earth's parameters (benelsen/orb, "
+                    "src/constants/earth.js)"
                 ),
             ),
         ),
-        inputs={"dynamical_ellipticity": "0.0032737949"},
+        inputs={"dynamical_ellipticity": "3273795e-9"},
         quantity="period of the free wobble of the rotation axis",
         measured="427 day",
         uncertainty=None,

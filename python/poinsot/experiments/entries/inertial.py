@@ -38,8 +38,8 @@ ENTRIES = [
         sources=(
             Source(
                 who="Torsten Gustafson and Börje Kullenberg",
-                where="the Baltic Sea (position near 57.8° N as quoted after Gill 1982)",
-                when="published 1936",
+                where="the Baltic Sea (position: see the note)",
+                when="August 1936 (published 1936)",
                 publication=(
                     "Gustafson, T. and Kullenberg, B. (1936), 'Untersuchungen von "
                     "Trägheitsströmungen in der Ostsee', Svenska Hydrografisk-Biologiska "
@@ -47,12 +47,14 @@ ENTRIES = [
                 ),
                 page="the period of the oscillations (not seen here)",
                 note=(
-                    "the original was not found in the stored copies. Ekman's review "
-                    "(second source) says the period of the Baltic oscillations agrees, as "
-                    "well as it could be determined, with half a pendulum day (14.1 h there); "
-                    "the '14 hour period' and the position near 57.8° N are as quoted in "
-                    "teaching material after Gill, Atmosphere–Ocean Dynamics (1982), fig. 8.3 "
-                    "(marine.rutgers.edu problem set, 2000)."
+                    "the original was not found in the stored copies. The month (August "
+                    "1936) and the '14 hour period of oscillation' are from a Rutgers "
+                    "teaching problem set (third source) whose figure is adapted from Gill, "
+                    "Atmosphere–Ocean Dynamics (1982). The input latitude 57.8° N came with "
+                    "the task and is in none of the sources read: it is kept because Ekman's "
+                    "half pendulum day 'hier gleich 14.1 Stunden' (second source) puts the "
+                    "station between 57.75° and 58.4° N (14.05–14.15 h), and 57.8° gives "
+                    "14.14 h."
                 ),
             ),
             Source(
@@ -69,12 +71,27 @@ ENTRIES = [
                 url="https://digitale-bibliothek.bsh.de/viewer/fulltext/142204/301/",
                 note="read in the BSH digital library's full text; volume and year not shown",
             ),
+            Source(
+                who="Rutgers University, Physical Oceanography course (Fall 2000)",
+                where="(teaching material)",
+                when="2000",
+                publication="Physical Oceanography, Problem #9, due October 23, 2000",
+                page=(
+                    "parts b and c ('In August 1936, Gustafson and Kullenberg observed "
+                    "inertial motion in the Baltic Sea'; 'a 14 hour period of oscillation')"
+                ),
+                url="https://marine.rutgers.edu/cool/education/physical.oceanography/hw9.html",
+                note="secondary (after Gill 1982); no position or uncertainty on the page",
+            ),
         ),
         inputs={"latitude": "57.8 deg"},
         quantity="period of the inertial oscillation",
         measured="14 hour",
         uncertainty=None,
-        uncertainty_kind="none stated ('about 14 hours')",
+        uncertainty_kind=(
+            "none stated (a '14 hour period'; Ekman: equal to half a pendulum day as well as "
+            "it could be determined)"
+        ),
         predict=_period,
         closed_form=_closed_period,
         assumptions=("frictionless level surface", "Coriolis force only", "sidereal rotation"),
