@@ -10,7 +10,9 @@ The tennis-racket flip of a real object is not in the catalogue yet: no publishe
 of a flip period with the object's measured moments was found. Peterson and Schwalm (Am. J.
 Phys. 89, 349 (2021)) model the T-handle filmed in orbit; the notebook that accompanies their
 paper says they "made no attempt to adjust the model to fit the period", the handle's moments
-being unknown.
+being unknown. Wheatland et al. (Am. J. Phys. 89, 342 (2021), arXiv:2011.02024) recorded a
+tossed phone's flip with its own gyroscope; only the abstract was read here, so its moments and
+flip times are not in the catalogue.
 """
 
 from __future__ import annotations
