@@ -279,6 +279,8 @@ def test_reichs_fall_in_paris_units_is_the_album_der_natuurs_in_metres() -> None
     assert height == pytest.approx(488 * PARIS_FOOT, rel=1e-3)
     measured = x.run("reich-1831").measured_si
     assert measured == pytest.approx(12.6 * PARIS_LINE, abs=0.05e-3)
+    lexikon = _source_with("reich-1831", "857072099")
+    assert "488 Fuß" in lexikon.page and "12,6 Linien" in lexikon.page
     # negative control: 12⅜ lines (the other reading of the OCR's '3/s') is 27.9 mm, not 28.4
     assert measured != pytest.approx(12.375 * PARIS_LINE, abs=0.1e-3)
 
@@ -323,3 +325,11 @@ def test_the_dynamical_flattening_is_the_iers_2010_value_and_euler_stays_304_day
     for dh in (-1e-9, 1e-9):
         moved = _euler({"dynamical_ellipticity": x.parse(str(h + dh))})
         assert abs(moved - _euler(e.parsed_inputs())) < 0.1 * DAY
+
+
+def test_benzenbergs_scatter_is_quoted_from_gauss_but_not_made_a_standard_error() -> None:
+    e = x.get("benzenberg-1802")
+    gauss = _source_with("benzenberg-1802", "Gauss to Olbers")
+    assert "31 Versuchen" in gauss.page and "18 Linien" in gauss.page
+    assert e.uncertainty is None and "none stated" in e.uncertainty_kind
+    assert "Fehlergrenze" in e.uncertainty_kind

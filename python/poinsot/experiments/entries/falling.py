@@ -216,12 +216,38 @@ ENTRIES = [
                 url="https://goobi.tib.eu/viewer/fulltext/832065951/646",
                 note="read in the TIB's full text; 'Ihre Beobachtung gab 4 Linien'",
             ),
+            Source(
+                who="Carl Friedrich Gauss (letter to Olbers)",
+                where="Braunschweig",
+                when="1 March 1803 or 1808 (the OCR reads 1808)",
+                publication=(
+                    "Wilhelm Olbers, sein Leben und seine Werke, vol. 2, part 1 (the "
+                    "Olbers–Gauss correspondence), Gauss to Olbers, 1 March"
+                ),
+                page=(
+                    "printed p. 127 (Benzenberg's 'Resultate aus 31 Versuchen gezogen ..., "
+                    "wobei die Fehlergrenze 18 Linien war'; 'kann man bei dem Mittel für "
+                    "einzelne Linien noch nicht mit Gewissheit gut stehen')"
+                ),
+                url="https://goobi.tib.eu/viewer/fulltext/832944092/142",
+                note=(
+                    "read in the TIB's full text, whose OCR dates the letter 1808; Gauss "
+                    "wrote from Braunschweig, which he left in 1807, and worked on the "
+                    "falling bodies in 1803, so the year may be misread. The scatter is not "
+                    "turned into a standard error here: Gauss did not know what the 18 lines "
+                    "measure."
+                ),
+            ),
         ),
         inputs={"height": "235 paris_foot", "latitude": "53 deg + 33 arcmin"},
         quantity="eastward deflection",
         measured="3.997 paris_line",
         uncertainty=None,
-        uncertainty_kind="none stated (the pages found give only the mean of the drops)",
+        uncertainty_kind=(
+            "none stated (the pages found give only the mean of the drops; Gauss, in a letter "
+            "to Olbers, reports 31 drops with a 'Fehlergrenze' of 18 lines, not knowing "
+            "whether range or largest departure from the mean is meant)"
+        ),
         predict=_drop_east,
         closed_form=_closed_east,
         assumptions=("vacuum", "uniform gravity", "spherical Earth", "sidereal rotation"),
@@ -352,9 +378,22 @@ ENTRIES = [
                 url="https://goobi.tib.eu/viewer/fulltext/82200366X/122",
                 note=(
                     "a cross-check only: 488 Paris feet are 158.5 m, and the OCR's '12 3/s' "
-                    "read as 12⅗ Paris lines is 28.4 mm, the Album der Natuur's figure; the "
-                    "page dates the drops 1832"
+                    "read as 12⅗ Paris lines (the next source prints 12,6) is 28.4 mm, the "
+                    "Album der Natuur's figure; the page dates the drops 1832"
                 ),
+            ),
+            Source(
+                who="(a German encyclopaedia, article 'Erde'; title not shown on the page)",
+                where="(secondary account)",
+                when="19th century",
+                publication="article 'Erde', digitised by the TIB Hannover, PPN 857072099",
+                page=(
+                    "printed p. 125 ('Reich 1831 im Dreibrüderschacht bei 488 Fuß Fallhöhe', "
+                    "'12,6 Linien Abweichung nach O.'; the larger southward deviations 'sind "
+                    "als Beobachtungsfehler zu betrachten')"
+                ),
+                url="https://goobi.tib.eu/viewer/fulltext/857072099/134",
+                note="a cross-check only, read in the TIB's full text",
             ),
         ),
         inputs={"height": "158.5 m", "latitude": "50 deg + 55 arcmin"},
