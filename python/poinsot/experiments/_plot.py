@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ..plots._mpl import figure_style, line_width, subplots
-from ._result import AGREE_SIGMA, ExperimentResult
+from ._result import AGREE_RELATIVE, AGREE_SIGMA, ExperimentResult
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -63,7 +63,14 @@ def _numbers(ax: Any, r: ExperimentResult) -> None:
         )
         values += [m - AGREE_SIGMA * u, m + AGREE_SIGMA * u]
     else:
+        # no uncertainty stated: the band of agreement is ±AGREE_RELATIVE about the prediction
+        band = AGREE_RELATIVE * abs(p)
+        ax.errorbar(
+            [p], [1], xerr=[[band], [band]], fmt="none", ecolor="0.6", elinewidth=3 * lw,
+            capsize=0,
+        )  # fmt: skip
         ax.plot([m], [2], "o", color="C0", label="measured (no uncertainty stated)")
+        values += [p - band, p + band]
     ax.plot([p], [1], "D", color="C1", label="poinsot")
     if r.closed_form is not None:
         c = float(r.closed_form.magnitude)
@@ -74,13 +81,19 @@ def _numbers(ax: Any, r: ExperimentResult) -> None:
     ax.set_xlim(lo - pad, hi + pad)
     ax.set_ylim(-0.5, 2.9)
     ax.set_yticks([])
-    bars = f" (bar: 1 σ, grey: {AGREE_SIGMA:g} σ)" if r.uncertainty is not None else ""
-    rows = [(2, f"measured {r.shown_measured()}{bars}"), (1, f"poinsot {r.shown('predicted')}")]
+    if r.uncertainty is not None:
+        measured = f"measured {r.shown_measured()} (bar: 1 σ, grey: {AGREE_SIGMA:g} σ)"
+        predicted = f"poinsot {r.shown('predicted')}"
+    else:
+        measured = f"measured {r.shown_measured()} (no uncertainty stated)"
+        pct = f"{100 * AGREE_RELATIVE:g} %"
+        predicted = f"poinsot {r.shown('predicted')} (grey: ± {pct}, the band of agreement)"
+    rows = [(2, measured), (1, predicted)]
     if r.closed_form is not None:
         rows.append((0, f"closed form {r.shown('closed_form')}"))
     for y, text in rows:
         ax.text(0.01, y + 0.28, text, transform=ax.get_yaxis_transform(), va="bottom")
-    ax.set_xlabel(f"{r.quantity} ({r.unit})")
+    ax.set_xlabel(f"{r.quantity} ({r.unit_symbol})")
     ax.grid(axis="x", color="0.85", lw=0.5 * lw)
 
 

@@ -69,7 +69,10 @@ class ExperimentResult(show.Displayed):
         In words: ``"agrees within 0.6 σ"``, ``"disagrees by 40 σ — expected: ..."``,
         ``"same sense"``.
     expect, why, uncertainty_kind, assumptions, sources, inputs:
-        The entry's (inputs as published, strings).
+        The entry's (inputs as published, strings; those changed by ``run(name, **inputs)`` as
+        given).
+    year:
+        The year of the measurement (:attr:`Experiment.year`).
     """
 
     name: str
