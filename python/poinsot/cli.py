@@ -1739,9 +1739,10 @@ def notebooks(directory: str, force: bool) -> None:
     """Copy the teaching notebooks into DIRECTORY, to open in Jupyter.
 
     The four lessons in the unit's order (rotating frames and Coriolis; the falling body and
-    Foucault; inertia, Euler and Dzhanibekov; the heavy top), installed with poinsot.
-    DIRECTORY is made if needed; a notebook already there is kept unless --force. They need
-    matplotlib and Jupyter: pip install 'poinsot[plot]' jupyterlab.
+    Foucault; inertia, Euler and Dzhanibekov; the heavy top) and the published experiments
+    against the unit (world), installed with poinsot. DIRECTORY is made if needed; a notebook
+    already there is kept unless --force. They need matplotlib, pint and Jupyter:
+    pip install 'poinsot[plot,units]' jupyterlab.
 
     \b
     Example:
