@@ -3,9 +3,11 @@
 Each function here takes the result a command prints with ``--json`` (the same numbers as its
 tables) and returns one or two sentences a student can quote: what the body does, with the
 figures rounded for reading (3 significant digits, 2 for percentages). Only wording lives here;
-every number is read from the result, none is computed again except a unit change (rad → °,
-s → min or h, m → cm or km) and a ratio of two printed quantities (a period from a rate,
-2π/|rate|; how far the spin is above the least for steady precession).
+every number and every fact of the physics is read from the result (the period of a turn, |ω|
+of a steady rotation, the axis ω circles or flips about, the pole a top passes through: the
+core's), none is computed again except a unit change (rad → °, s → min or h, m → cm or km),
+the difference of the two printed turning points, and the ratio of two printed quantities
+(how far the spin is above the least for steady precession).
 """
 
 from __future__ import annotations
@@ -119,6 +121,15 @@ _PATHS = {
 }
 
 
+#: Where the axis of a top of the class "through vertical" passes, per pole (the core's
+#: ``HeavyTop.vertical_pass``).
+_POLES = {
+    "upright": "the upright position",
+    "straight down": "the straight down position",
+    "both": "both the upright and the straight down positions",
+}
+
+
 def _turning(data: dict[str, Any], mean: str = "") -> str:
     """The precession: its rate (``mean``: " on average" for the mean of a nutating top) and the
     period of one turn, or that the axis does not turn."""
@@ -156,9 +167,9 @@ def top(data: dict[str, Any]) -> str:
             f"the vertical; {_spin_clause(data)}."
         )
     if cls == "through vertical":
-        pole = "straight down" if t2 > math.pi / 2 and t1 > 0 else "upright"
         return (
-            f"The top's axis swings through the {pole} position, between {degrees(t1)} and "
+            f"The top's axis swings through {_POLES[data['vertical_pass']]}, between "
+            f"{degrees(t1)} and "
             f"{degrees(t2)} from the vertical, every {duration(nod)}, its azimuth jumping by half "
             "a turn at each pass; " + _spin_clause(data) + "."
         )
@@ -222,7 +233,7 @@ def foucault(data: dict[str, Any]) -> str:
         return (
             f"{where}, the swing plane turns {data['sense']} seen from above by "
             f"{num(math.degrees(abs(rate)) * 3600)}° an hour in the simulation, one full turn "
-            f"every {duration(2 * math.pi / abs(rate))}; {theory}."
+            f"every {duration(data['full_turn_period'])}; {theory}."
         )
     if data["regime"] == "still":
         return f"{where}, the swing plane does not turn measurably; {theory}."
@@ -235,11 +246,12 @@ def foucault(data: dict[str, Any]) -> str:
 def free(data: dict[str, Any]) -> str:
     """``poinsot free``: what ω does in the body, and how well the method kept the invariants."""
     regime = data["regime"]
-    moments = data["moments"]
-    w = math.sqrt(sum(c * c for c in data["omega0"]))
     period = data["period"]
     if regime == "steady":
-        what = f"The body spins steadily at {num(w)} rad/s about one principal axis: ω does not move in the body"
+        what = (
+            f"The body spins steadily at {num(data['steady_rate'])} rad/s about one principal "
+            "axis: ω does not move in the body"
+        )
     elif regime == "separatrix":
         what = (
             "ω starts on the separatrix: it leaves the middle axis and creeps back towards it "
@@ -249,14 +261,13 @@ def free(data: dict[str, Any]) -> str:
         what = f"The body is a symmetric top: ω circles its symmetry axis once every {duration(period)} in the body"
     else:
         smallest = regime == "about min axis"
-        axis = moments.index(min(moments) if smallest else max(moments)) + 1
         what = (
-            f"ω circles axis {axis}, the axis of the {'smallest' if smallest else 'largest'} "
-            f"moment, once every {duration(period)} in the body"
+            f"ω circles axis {data['pole_axis'] + 1}, the axis of the "
+            f"{'smallest' if smallest else 'largest'} moment, once every {duration(period)} in "
+            "the body"
         )
-        omega0 = [abs(c) for c in data["omega0"]]
-        middle = sorted(range(3), key=lambda i: moments[i])[1]
-        if len(set(moments)) == 3 and omega0.index(max(omega0)) == middle:
+        middle = data["flips_about"]
+        if middle is not None:
             # started near the unstable middle axis: the Dzhanibekov flips
             what += (
                 f"; started near axis {middle + 1}, the middle one, the body flips over every "

@@ -81,7 +81,8 @@ MAX_MESH_FILE_BYTES = 256 * 1024 * 1024
 #: top whose axis does not turn on average (HeavyTop.precession_period), the cubic's root u3 when
 #: m g l = 0 (HeavyTop.cubic_roots), the fast steady-precession rate at θ0 = 90° and the
 #: fast-top approximations 2.120/2.121 where they diverge (HeavyTop.steady_precession), the
-#: hours of one full turn of the Foucault pendulum at the equator. NaN is refused everywhere,
+#: hours of one full turn of the Foucault pendulum at the equator and the simulated plane's
+#: period of a turn where it does not turn (FoucaultRun.full_turn_period). NaN is refused everywhere,
 #: and any other infinity.
 MAY_BE_INFINITE = frozenset(
     {
@@ -92,6 +93,7 @@ MAY_BE_INFINITE = frozenset(
         "cubic_roots",
         "steady_precession_at_theta0",
         "full_turn_hours",
+        "full_turn_period",
     }
 )
 
@@ -1133,7 +1135,7 @@ def foucault(
         samples=2,
         progress=not as_json and _interactive(),
     )
-    hours = 2 * np.pi / abs(run.expected_rate) / 3600 if run.expected_rate != 0 else float("inf")
+    hours = run.expected_full_turn_period / 3600
     data = {
         "latitude": latitude,
         "degrees": degrees,
@@ -1142,6 +1144,7 @@ def foucault(
         "duration": duration,
         "rotation_rate": earth.rotation_rate,
         "precession_rate": run.precession_rate,
+        "full_turn_period": run.full_turn_period,
         "expected_rate": run.expected_rate,
         "theory_rate": run.theory_rate,
         "sense": run.sense,
@@ -1292,6 +1295,9 @@ def free(
         "steps": tr.steps,
         "wall_time_s": wall,
         "regime": exact.regime,
+        "steady_rate": exact.steady_rate,
+        "pole_axis": exact.pole_axis,
+        "flips_about": exact.flips_about,
         "period": exact.period,
         "parameter": exact.parameter,
         "flip_interval": exact.flip_interval,
@@ -1544,6 +1550,7 @@ def top(
         "turning_points": [t1, t2],
         "cubic_roots": list(t.cubic_roots),
         "motion_class": t.motion_class,
+        "vertical_pass": t.vertical_pass,
         "nutation_period": t.nutation_period,
         "mean_precession_rate": t.mean_precession_rate,
         "precession_period": t.precession_period,

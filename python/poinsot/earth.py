@@ -202,6 +202,12 @@ class FoucaultRun(show.Displayed):
     spin_departure, amplitude_departure:
         The two departures (fractions) judged against 1 %; ``None`` where there is nothing to
         compare (no rest position; no rate).
+    full_turn_period:
+        The simulated swing plane's time for one full turn, 2π/|``precession_rate``| (s), beside
+        the rate: ``inf`` where the plane does not turn measurably (``regime == "still"``),
+        ``None`` where the run gives no rate.
+    expected_full_turn_period:
+        The unit's time for one full turn, 2π/|ω sin λ| (s; ``inf`` at the equator).
     """
 
     t: FloatArray = field(repr=False)
@@ -221,6 +227,8 @@ class FoucaultRun(show.Displayed):
     amplitude_ratio: float = 0.0
     spin_departure: float | None = None
     amplitude_departure: float | None = None
+    full_turn_period: float | None = None
+    expected_full_turn_period: float = np.inf
 
     def _rows(self) -> list[show.Row]:
         return [

@@ -337,6 +337,11 @@ class FreeRigidBody(show.Displayed):
         Dzhanibekov flips near the separatrix), s.
     pole_axis:
         Index of the principal axis ω circles (None when steady or on the separatrix).
+    steady_rate:
+        |ω| of a steady rotation (rad/s); None when ω moves in the body.
+    flips_about:
+        Index of the intermediate axis when ω₀ starts nearest it (its largest component; ω
+        circling an outer axis): the body flips over every ``flip_interval``. None otherwise.
     """
 
     def __init__(self, moments: Any, omega0: Any, attitude0: Any = None) -> None:
@@ -437,6 +442,18 @@ class FreeRigidBody(show.Displayed):
     pole_axis: int | None = core_property(
         "pole_axis",
         "The principal axis (index into ``moments``) that ω circles, or None.",
+    )
+
+    steady_rate: float | None = core_property(
+        "steady_rate",
+        "|ω| of a steady rotation (rad/s, constant), or None when ω moves in the body.",
+    )
+
+    flips_about: int | None = core_property(
+        "flips_about",
+        """The intermediate axis (index into ``moments``) when ω₀ starts nearest it — its largest
+        component (the first of equal ones) is along it, ω circling an outer axis: the body flips
+        over every :attr:`flip_interval` (the Dzhanibekov effect). None otherwise.""",
     )
 
     invariable_plane_distance = core_property(

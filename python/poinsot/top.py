@@ -407,6 +407,13 @@ class HeavyTop(show.Displayed):
         "The shape of the axis' path: one of :data:`MOTION_CLASSES`.",
     )
 
+    vertical_pass: str | None = core_property(
+        "vertical_pass",
+        """The pole the axis passes through when :attr:`motion_class` is ``"through vertical"``:
+        ``"upright"`` (``theta1 == 0``), ``"straight down"`` (``theta2 == pi``) or ``"both"``;
+        None for every other class.""",
+    )
+
     is_sleeping_stable: bool = core_property(
         "is_sleeping_stable",
         "Whether this spin keeps an upright top asleep: ``omega3**2 > 4 m g l I1 / I3**2``.",

@@ -231,6 +231,22 @@ def test_top_sentence_of_a_top_swinging_through_the_vertical() -> None:
     )
 
 
+def test_top_sentence_words_the_pole_the_core_names() -> None:
+    # the pole is the core's (HeavyTop.vertical_pass), not guessed from the angles: a pendulum
+    # thrown over the top passes both poles, θ from 0 to π (the old guess said "upright")
+    d, _ = run(TOP + ["--theta", "0.8"])
+    assert d["vertical_pass"] == "straight down"
+    d, _ = run(TOP + ["--theta", "0.8", "--theta-dot", "5"])
+    assert d["motion_class"] == "through vertical" and d["vertical_pass"] == "both"
+    assert d["turning_points"] == [0, math.pi]
+    assert "swings through both the upright and the straight down positions" in d["summary"]
+    # the sentence reads the field: another pole in the data, another pole in the words
+    assert "the upright position" in _answers.top({**d, "vertical_pass": "upright"})
+    # negative control: a nutating top passes no pole
+    d, _ = run(TOP + ["--theta", "0.8", "--psi-dot", "6"])
+    assert d["vertical_pass"] is None
+
+
 def test_top_sentence_below_the_horizontal() -> None:
     d, _ = run(TOP + ["--theta", "2.0", "--psi-dot", "6"])
     assert d["steady_precession_at_theta0"]["min_spin_2_119"] == 0
@@ -343,6 +359,19 @@ def test_foucault_sentence() -> None:
     )
 
 
+def test_foucault_turn_period_is_the_cores() -> None:
+    # the simulated full turn is the core's field beside the rate (2π/|rate|), not computed by
+    # the sentence; a run without a rate has none
+    d, _ = run(["foucault", "--latitude", "48.85", "--degrees", "--duration", "7200"])
+    assert d["full_turn_period"] == 2 * math.pi / abs(d["precession_rate"])
+    moved = _answers.foucault({**d, "full_turn_period": 2 * d["full_turn_period"]})
+    assert _answers.duration(2 * d["full_turn_period"]) in moved
+    d, _ = run(["foucault", "--latitude", "45", "--degrees", "--duration", "10"])
+    assert d["full_turn_period"] is None
+    d, _ = run(["foucault", "--latitude", "0", "--degrees", "--duration", "600"])
+    assert d["regime"] == "still" and d["full_turn_period"] == "inf"
+
+
 def test_foucault_sentence_of_a_run_too_short() -> None:
     d, _ = run(["foucault", "--latitude", "45", "--degrees", "--duration", "10"])
     assert d["regime"] != "precessing"
@@ -391,6 +420,18 @@ def test_free_sentence_of_the_dzhanibekov_flips() -> None:
     # negative control: spun near an outer axis, no flip is announced
     d, _ = run(["free", "--moments", "1", "2", "3", "--omega", "0.01", "0.01", "3"])
     assert "flips" not in d["summary"]
+
+
+def test_free_sentence_reads_the_cores_rate_and_axes() -> None:
+    d, _ = run(["free", "--moments", "1", "2", "3", "--omega", "0", "-2", "0"])
+    assert d["regime"] == "steady" and d["steady_rate"] == 2
+    assert "spins steadily at 2 rad/s" in d["summary"]
+    assert (d["pole_axis"], d["flips_about"]) == (None, None)
+    d, _ = run(["free", "--moments", "2", "3", "1", "--omega", "3", "0.01", "0.01"])
+    # I = (2, 3, 1): axis 1 is the middle one, ω circles axis 2 (the largest moment)
+    assert (d["pole_axis"], d["flips_about"]) == (1, 0)
+    assert "ω circles axis 2, the axis of the largest moment" in d["summary"]
+    assert "started near axis 1, the middle one" in d["summary"]
 
 
 def test_inertia_sentence() -> None:

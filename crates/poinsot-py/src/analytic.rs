@@ -117,6 +117,10 @@ core_export! {
     getters {
         parameter -> f64;
         pole_axis -> Option<usize>;
+        /// |ω| of a steady rotation (rad/s), None where ω moves in the body.
+        steady_rate -> Option<f64>;
+        /// The intermediate axis (index) a body started nearest it flips about, or None.
+        flips_about -> Option<usize>;
         invariable_plane_distance -> f64;
         /// The largest |t| (s) at which the state is computed (phase 2⁴² rad; `inf` when the
         /// body never turns that far within the double range).

@@ -3,7 +3,7 @@
 //! `HeavyTopCore` wraps `poinsot::analytic::HeavyTop`; the public, documented class is
 //! `poinsot.HeavyTop` (python/poinsot/top.py), which holds one of these.
 use numpy::{PyArray2, PyArrayMethods, PyReadonlyArray1};
-use poinsot::analytic::{self, EulerState, HeavyTop};
+use poinsot::analytic::{self, EulerState, HeavyTop, VerticalPass};
 use poinsot_py_macros::export;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -179,6 +179,12 @@ heavy_top_export! {
         })
     }
 
+    /// The pole a top of class "through vertical" passes through: "upright", "straight
+    /// down" or "both"; None for every other class.
+    #[getter]
+    fn vertical_pass(&self) -> Option<&'static str> {
+        self.inner.vertical_pass().map(VerticalPass::name)
+    }
     /// (I₁, I₃, m g l).
     #[getter]
     fn parameters(&self) -> (f64, f64, f64) {

@@ -187,8 +187,15 @@ fields!(FoucaultRun {
     " counterclockwise seen from above positive), or `undefined` where the run shows no"
     " steady turn (see `regime`): `FoucaultRun.precession_rate`."
     precessionRate precession_rate -> option(measurement.precession_rate);
+    " The swing plane's time for one full turn, 2π/|rate| (s): `Infinity` where it does not"
+    " turn measurably (`regime` \"still\"), `undefined` where the run gives no rate:"
+    " `FoucaultRun.full_turn_period`."
+    fullTurnPeriod full_turn_period -> option(measurement.full_turn_period);
     " The unit's rate −ω sin λ (rad/s): `FoucaultRun.expected_rate`."
     expectedRate expected_rate -> number(measurement.expected_rate);
+    " The unit's time for one full turn, 2π/|ω sin λ| (s; `Infinity` at the equator):"
+    " `FoucaultRun.expected_full_turn_period`."
+    expectedFullTurnPeriod expected_full_turn_period -> number(measurement.expected_full_turn_period);
     " The exact small-swing theory's mean rate (rad/s), or `undefined` without a stable rest"
     " position: `FoucaultRun.theory_rate`."
     theoryRate theory_rate -> option(measurement.theory_rate);
@@ -587,6 +594,13 @@ mod tests {
         let rate = run.precession_rate().unwrap();
         assert!((rate / run.expected_rate() - 1.0).abs() < 1e-2);
         assert!((rate / run.theory_rate().unwrap() - 1.0).abs() < 1e-2);
+        // One full turn beside the rate, and the unit's beside −ω sin λ (the core's fields).
+        let tau = 2.0 * std::f64::consts::PI;
+        assert_eq!(run.full_turn_period(), Some(tau / rate.abs()));
+        assert_eq!(
+            run.expected_full_turn_period(),
+            tau / run.expected_rate().abs()
+        );
         assert_eq!(
             (run.sense(), run.regime()),
             ("clockwise".into(), "precessing".into())

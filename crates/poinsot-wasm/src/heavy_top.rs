@@ -163,6 +163,12 @@ impl HeavyTop {
     pub fn motion_class(&self) -> String {
         self.inner.motion_class().name().to_string()
     }
+    /// The pole a top of class "through vertical" passes through: "upright", "straight down"
+    /// or "both"; `undefined` for every other class.
+    #[wasm_bindgen(getter, js_name = verticalPass)]
+    pub fn vertical_pass(&self) -> Option<String> {
+        self.inner.vertical_pass().map(|p| p.name().to_string())
+    }
     /// Whether this spin keeps an upright top asleep: ω₃² > 4 m g l I₁ / I₃².
     #[wasm_bindgen(getter, js_name = isSleepingStable)]
     pub fn is_sleeping_stable(&self) -> bool {

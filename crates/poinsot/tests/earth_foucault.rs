@@ -708,3 +708,33 @@ fn unit_rate_applies_only_to_a_slow_spin_and_a_small_swing() {
         short.note
     );
 }
+
+/// The measurement carries the simulated plane's time for one full turn beside its rate
+/// (what the CLI's sentence quotes): 2π/|rate|, against the unit's closed form 2π/(Ω sin λ)
+/// over a long run on the Earth; infinite where the plane is still, absent where the run gives
+/// no rate; the unit's own period 2π/|Ω sin λ| beside −ω sin λ (infinite at the equator).
+#[test]
+fn full_turn_period_beside_the_rate() {
+    let e = Earth::default();
+    let lat = deg(48.85);
+    let (_, m) = swing(&e, lat, 67.0, 1.0, 0.0, 7200.0);
+    assert_eq!(m.regime, FoucaultRegime::Precessing, "{}", m.note);
+    let closed = 2.0 * PI / (SIDEREAL_RATE * lat.sin());
+    let period = m.full_turn_period.unwrap();
+    assert_eq!(period, 2.0 * PI / m.precession_rate.unwrap().abs());
+    // About 31.8 h; the run's rate is within the amplitude's and the wobble's 1e-3 of the unit's.
+    assert!((period / closed - 1.0).abs() < 1e-3, "{period} vs {closed}");
+    assert!((m.expected_full_turn_period / closed - 1.0).abs() < 1e-14);
+    // Negative control: the period is not that of the half turn a swing plane repeats after.
+    assert!((period / (0.5 * closed) - 1.0).abs() > 0.5);
+    // Still at the equator: no turn, an infinite period; the unit's is infinite too.
+    let (_, m) = swing(&e, 0.0, 67.0, 1.0, 0.3, 3600.0);
+    assert_eq!(m.regime, FoucaultRegime::Still, "{}", m.note);
+    assert_eq!(m.full_turn_period, Some(f64::INFINITY));
+    assert_eq!(m.expected_full_turn_period, f64::INFINITY);
+    // A run too short to measure: no rate, no period; the unit's is finite.
+    let (_, m) = swing(&e, lat, 67.0, 1.0, 0.0, 10.0);
+    assert_eq!(m.regime, FoucaultRegime::TooShort, "{}", m.note);
+    assert_eq!((m.precession_rate, m.full_turn_period), (None, None));
+    assert!((m.expected_full_turn_period / closed - 1.0).abs() < 1e-14);
+}

@@ -644,3 +644,53 @@ fn nearly_symmetric_bodies_keep_their_attitude_accuracy() {
         assert!(ew < 1e-12 && eq < 1e-12, "δ = {d:e}: ω {ew:e}, q {eq:e}");
     }
 }
+
+/// What the CLI's sentence says of a free body, from the core: the rate of a steady rotation is
+/// |ω₀| (the closed form: ω does not move), and only a motion that ω₀ starts nearest the middle
+/// axis flips about it — its largest component, ω along the intermediate axis, reverses every
+/// flip interval (sn(τ + 2K) = −sn τ), while the largest component of a start near an outer
+/// axis (dn, cn near 1) keeps its sign.
+#[test]
+fn steady_rate_and_flips_about_the_middle_axis() {
+    for (moments, w) in [
+        ([1.0, 2.0, 3.0], Vec3::new(0.0, -2.0, 0.0)),
+        ([3.0, 1.0, 2.0], Vec3::new(0.0, 0.0, 0.5)),
+        ([1.0, 1.0, 1.0], Vec3::new(1.0, 2.0, -2.0)),
+    ] {
+        let body = FreeRigidBody::new(moments, w, None).unwrap();
+        assert_eq!(body.regime(), FreeRegime::Steady);
+        let norm = (w.x * w.x + w.y * w.y + w.z * w.z).sqrt();
+        assert!((body.steady_rate().unwrap() - norm).abs() <= 1e-15 * norm);
+        assert_eq!(body.flips_about(), None);
+    }
+    // Near the middle axis (index 1 of I = (1, 2, 3); index 0 when the moments are reordered).
+    for (moments, w, middle) in [
+        ([1.0, 2.0, 3.0], Vec3::new(0.01, 3.0, 0.01), 1),
+        ([2.0, 3.0, 1.0], Vec3::new(-3.0, 0.01, 0.02), 0),
+    ] {
+        let body = FreeRigidBody::new(moments, w, None).unwrap();
+        assert_eq!(body.steady_rate(), None);
+        assert_eq!(body.flips_about(), Some(middle));
+        let w_flip = body.omega(body.flip_interval().unwrap()).unwrap();
+        assert!(
+            (w_flip[middle] + w[middle]).abs() < 1e-9 * w[middle].abs(),
+            "{w_flip:?}"
+        );
+    }
+    // Negative controls: near an outer axis the largest component keeps its sign, and a body
+    // whose ω circles its axis without flipping says so.
+    for w in [
+        Vec3::new(0.01, 0.01, 3.0),
+        Vec3::new(3.0, 0.01, 0.01),
+        Vec3::new(1.0, 0.1, 1.0),
+    ] {
+        let body = FreeRigidBody::new([1.0, 2.0, 3.0], w, None).unwrap();
+        assert_eq!(body.flips_about(), None, "{w:?}");
+        let k = if w.z >= w.x { 2 } else { 0 };
+        let w_flip = body.omega(body.flip_interval().unwrap()).unwrap();
+        assert!(w_flip[k] * w[k] > 0.0, "{w:?} → {w_flip:?}");
+    }
+    // A symmetric top precesses, never flips.
+    let top = FreeRigidBody::new([1.0, 1.0, 2.0], Vec3::new(0.01, 3.0, 0.01), None).unwrap();
+    assert_eq!((top.steady_rate(), top.flips_about()), (None, None));
+}

@@ -6,7 +6,7 @@ use common::top;
 
 use poinsot::analytic::{
     constants_of_state, lagrangian, min_spin, sleeping_threshold, steady_precession, EulerState,
-    HeavyTop, MotionClass,
+    HeavyTop, MotionClass, VerticalPass,
 };
 use poinsot::ErrorKind;
 use proptest::prelude::*;
@@ -742,5 +742,39 @@ fn steady_precession_refuses_an_infinite_fast_approximation() {
         s.min_spin,
     ] {
         assert!(r.is_finite(), "{s:?}");
+    }
+}
+
+/// Which pole a top of the class "through vertical" passes through, against its θ bounds and
+/// the closed forms of the planar pendulum (no spin, a = b = 0: the cubic is
+/// (1 − u²)(α − βu), roots ±1 and α/β): released at rest at θ₀ it swings between θ₀ and the
+/// bottom, θ₂ = π; thrown over the top (α/β > 1) it passes both poles. A top started upright
+/// with a nod (θ = 0, θ̇ ≠ 0) comes back through the upright, θ₁ = 0. Every other class has
+/// none.
+#[test]
+fn vertical_pass_names_the_pole_of_the_turning_points() {
+    let pi = std::f64::consts::PI;
+    let down = top(1.0, 0.5, 1.0, 0.8, 0.0, 0.0, 0.0);
+    assert_eq!(down.motion_class(), MotionClass::ThroughVertical);
+    assert_eq!(down.turning_points(), (0.8, pi));
+    assert_eq!(down.vertical_pass(), Some(VerticalPass::StraightDown));
+    // ½ I₁ θ̇² + m g l cos θ₀ > m g l: over the top.
+    let round = top(1.0, 0.5, 1.0, 0.8, 5.0, 0.0, 0.0);
+    assert_eq!(round.turning_points(), (0.0, pi));
+    assert_eq!(round.vertical_pass(), Some(VerticalPass::Both));
+    let up = top(1.0, 0.5, 1.0, 0.0, 1e-9, 0.0, 8.0);
+    assert_eq!(up.motion_class(), MotionClass::ThroughVertical);
+    let (t1, t2) = up.turning_points();
+    assert!(t1 == 0.0 && t2 > 0.0 && t2 < pi / 2.0, "{t1} {t2}");
+    assert_eq!(up.vertical_pass(), Some(VerticalPass::Upright));
+    assert_eq!(VerticalPass::StraightDown.name(), "straight down");
+    // Negative controls: a nutating, a sleeping and a hanging top pass through no pole.
+    for t in [
+        top(1.0, 0.5, 1.0, 0.8, 0.0, 0.0, 6.0),
+        top(1.0, 0.5, 1.0, 0.0, 0.0, 0.0, 6.0),
+        top(1.0, 0.5, 1.0, pi, 0.0, 0.0, 6.0),
+    ] {
+        assert_ne!(t.motion_class(), MotionClass::ThroughVertical);
+        assert_eq!(t.vertical_pass(), None, "{:?}", t.motion_class());
     }
 }

@@ -373,6 +373,39 @@ impl FreeRigidBody {
         }
     }
 
+    /// The rate of a steady rotation, |ω| (rad/s, constant: ω does not move in the body), or
+    /// `None` where ω moves ([`FreeRegime::Steady`] only).
+    pub fn steady_rate(&self) -> Option<f64> {
+        match &self.motion {
+            // Within the normal range at the user's scale: checked by `new`.
+            Motion::Steady { rate, .. } => Some(ldexp(*rate, self.scale.e_w)),
+            _ => None,
+        }
+    }
+
+    /// The principal axis (index into `moments`) of the intermediate moment when ω circles an
+    /// outer axis and ω₀ lies nearest this middle one — its largest component (the first of
+    /// equal ones) is along it: the body, spun about its unstable axis, flips over every
+    /// [`Self::flip_interval`] (the Dzhanibekov effect). `None` otherwise (a steady or
+    /// symmetric motion, the separatrix, or ω₀ nearest an outer axis).
+    pub fn flips_about(&self) -> Option<usize> {
+        let Motion::Elliptic(e) = &self.motion else {
+            return None;
+        };
+        if e.separatrix {
+            return None;
+        }
+        let row = e.to_sorted.row(1);
+        let middle = (0..3).find(|&k| row[k] != 0.0)?;
+        let w = [
+            self.omega0.x.abs(),
+            self.omega0.y.abs(),
+            self.omega0.z.abs(),
+        ];
+        let largest = (0..3).fold(0, |best, k| if w[k] > w[best] { k } else { best });
+        (largest == middle).then_some(middle)
+    }
+
     /// ω(t) in body components (rad/s). Errors name `t` (not finite, or beyond
     /// [`Self::max_time`]).
     pub fn omega(&self, t: f64) -> Result<Vec3> {

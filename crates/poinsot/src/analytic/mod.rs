@@ -19,8 +19,8 @@ pub use free_symmetric_top::{FreeSymmetricTop, TopShape};
 pub use heavy_top::{
     check_theta, check_top, constants_of_state, heavy_top_parameters, lagrangian, min_spin,
     sleeping_threshold, steady_precession, EulerState, HeavyTop, MotionClass, StateConstants,
-    SteadyPrecession, CUSP_TOLERANCE, MAX_PHASE, MIN_POLE_DISTANCE, PIVOT_SYMMETRY_RTOL,
-    STEADY_NUTATION_TOLERANCE,
+    SteadyPrecession, VerticalPass, CUSP_TOLERANCE, MAX_PHASE, MIN_POLE_DISTANCE,
+    PIVOT_SYMMETRY_RTOL, STEADY_NUTATION_TOLERANCE,
 };
 pub use poinsot_construction::{axis_stability, AxisStability, Stability};
 // The checks the constructors make, for the sweeps' validation before work ([`crate::sweep`]).

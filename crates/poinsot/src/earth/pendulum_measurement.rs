@@ -115,6 +115,11 @@ pub struct FoucaultMeasurement {
     /// counterclockwise seen from above positive), where the regime defines one
     /// ([`FoucaultRegime::Precessing`], and ≈ 0 for [`FoucaultRegime::Still`]).
     pub precession_rate: Option<f64>,
+    /// The simulated swing plane's time for one full turn, 2π/|rate| (s): where the regime
+    /// defines a rate, beside it ([`FoucaultRegime::Precessing`]), and infinite where the plane
+    /// does not turn measurably ([`FoucaultRegime::Still`], or a fitted rate of exactly 0);
+    /// `None` otherwise.
+    pub full_turn_period: Option<f64>,
     /// The sense of the turn, where the regime defines one: from the fitted rate when
     /// precessing (always the theory's), [`Sense::None`] when still.
     pub sense: Option<Sense>,
@@ -123,6 +128,9 @@ pub struct FoucaultMeasurement {
     pub theory_rate: Option<f64>,
     /// −ω sin λ, the unit's rate (rad/s): the limit of Δ for a slow spin.
     pub expected_rate: f64,
+    /// The unit's time for one full turn, 2π/|ω sin λ| (s; infinite at the equator, where
+    /// −ω sin λ = 0, or on a planet that does not spin).
+    pub expected_full_turn_period: f64,
     /// The small-swing theory's rate fitted through its own turning points over the same run
     /// (rad/s): what the measurement tends to as the amplitude goes to 0.
     pub theory_fit_rate: Option<f64>,
@@ -176,6 +184,15 @@ pub struct UnitRateCheck {
     pub amplitude_departure: Option<f64>,
     /// One sentence for the front ends to show, with the figures.
     pub note: String,
+}
+
+/// The time of one full turn at `rate` (rad/s), 2π/|rate| (s): infinite at a rate of 0.
+fn full_turn(rate: f64) -> f64 {
+    if rate == 0.0 {
+        f64::INFINITY
+    } else {
+        2.0 * PI / rate.abs()
+    }
 }
 
 /// |diff| / scale, 0 when both vanish (∞ when only the scale does).
@@ -475,9 +492,11 @@ impl Earth {
         let mut out = FoucaultMeasurement {
             regime: FoucaultRegime::NoRest,
             precession_rate: None,
+            full_turn_period: None,
             sense: None,
             theory_rate: None,
             expected_rate,
+            expected_full_turn_period: full_turn(expected_rate),
             theory_fit_rate: None,
             turning_points: n,
             note: String::new(),
@@ -545,6 +564,7 @@ impl Earth {
         {
             out.regime = FoucaultRegime::Still;
             out.precession_rate = rate.or(Some(0.0));
+            out.full_turn_period = Some(f64::INFINITY);
             out.sense = Some(Sense::None);
             out.note = format!(
                 "the swing plane does not turn measurably: by less than {STILL_ANGLE:e} rad over the {} s of the {n} \
@@ -577,6 +597,7 @@ impl Earth {
             }) {
                 out.regime = FoucaultRegime::Precessing;
                 out.precession_rate = Some(r);
+                out.full_turn_period = Some(full_turn(r));
                 out.sense = Some(if r > 0.0 {
                     Sense::Counterclockwise
                 } else {

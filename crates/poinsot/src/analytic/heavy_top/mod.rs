@@ -84,6 +84,30 @@ impl MotionClass {
     }
 }
 
+/// The pole a top of [`MotionClass::ThroughVertical`] passes through
+/// ([`HeavyTop::vertical_pass`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum VerticalPass {
+    /// θ₁ = 0: the axis swings through the upright position.
+    Upright,
+    /// θ₂ = π: the axis swings through the straight-down position (a pendulum through its
+    /// lowest point).
+    StraightDown,
+    /// θ₁ = 0 and θ₂ = π: the axis goes over both poles (a pendulum swung round).
+    Both,
+}
+
+impl VerticalPass {
+    /// "upright", "straight down" or "both".
+    pub fn name(self) -> &'static str {
+        match self {
+            VerticalPass::Upright => "upright",
+            VerticalPass::StraightDown => "straight down",
+            VerticalPass::Both => "both",
+        }
+    }
+}
+
 /// How the angles evolve in time.
 #[derive(Debug, Clone)]
 pub(crate) enum Motion {
@@ -550,6 +574,23 @@ impl HeavyTop {
     /// The shape of the axis' path.
     pub fn motion_class(&self) -> MotionClass {
         self.class
+    }
+    /// Which pole the axis passes through, for a motion of [`MotionClass::ThroughVertical`]
+    /// (a turning point at a pole: θ₁ = 0 upright, θ₂ = π straight down, exactly as
+    /// [`Self::turning_points`] gives them); `None` for every other class (a sleeping or hanging
+    /// top stays at its pole, it does not pass through it).
+    pub fn vertical_pass(&self) -> Option<VerticalPass> {
+        if self.class != MotionClass::ThroughVertical {
+            return None;
+        }
+        let t = &self.a.turning;
+        match (t.w_lo == 0.0, t.v_lo == 0.0) {
+            (true, true) => Some(VerticalPass::Both),
+            (true, false) => Some(VerticalPass::Upright),
+            (false, true) => Some(VerticalPass::StraightDown),
+            // `classify` gives this class only with one of the two at its pole.
+            (false, false) => None,
+        }
     }
     /// Whether an upright top with this spin would sleep stably: ω₃² > 4 m g l I₁ / I₃².
     pub fn is_sleeping_stable(&self) -> bool {
