@@ -37,8 +37,10 @@
 //! a solid). Faces with a repeated vertex index are degenerate (they have no area) and are left
 //! out of the edge checks; faces of zero area with three distinct indices take part in them as
 //! usual. The last two checks, with their limits, are in `mesh_embedding.rs`; a mesh of one
-//! component that is star-shaped about its centre of mass is proved free of self-intersection
-//! there in one pass over the faces, the others by testing the pairs of faces whose boxes meet.
+//! component that is star-shaped about the centre of the box of its vertices is proved free of
+//! self-intersection in the integrals' pass over the faces (no pass of its own), one that is
+//! star-shaped about its centre of mass in one more pass, the others by testing the pairs of
+//! faces whose boxes meet.
 //!
 //! **Merging** ([`mesh_mass_properties_merging`], for triangle soups and CAD exports): vertices
 //! within [`MERGE_RTOL`] (2^-22) of the largest coordinate magnitude of each other, in every
@@ -53,13 +55,16 @@
 //! lock-free union-find (the components). `O(n · degree)`, parallel (rayon: each task owns a
 //! range of low vertices; no `unsafe`).
 
+use std::sync::atomic::{AtomicBool, Ordering};
+
 use rayon::prelude::*;
 
 use crate::control::Cancel;
 use crate::error::{check_positive, Error, Result};
 use crate::inertia::body::MassProperties;
 use crate::inertia::mesh_embedding::{
-    probe_vertices, star_shaped_about, vertex_owners, Bounds, Index, Points, UnionFind, UNUSED,
+    probe_vertices, star_shaped_about, vertex_owners, Bounds, Index, Points, StarProof, UnionFind,
+    UNUSED,
 };
 use crate::inertia::scaling::{
     check_margins, check_range, exponent, exponent_of_max, ldexp, ldexp_mat, ldexp_vec, magnitude,
@@ -139,7 +144,7 @@ fn solid(
 ) -> Result<MassProperties> {
     let (comp, ncomp) = check_topology(vertices.len() / 3, tris, merged, cancel)?;
     cancel.check()?;
-    let parts = integrate_parts(vertices, tris, &comp, ncomp, cancel)?;
+    let (parts, proved) = integrate_parts(vertices, tris, &comp, ncomp, cancel)?;
     cancel.check()?;
     let whole = match assemble(&parts, tris.len()) {
         Ok(whole) => whole,
@@ -154,7 +159,9 @@ fn solid(
     };
     // The centre of mass: the point the star-shaped certificate tries first.
     let centre = (Vec3::from(whole.g) + ldexp_vec(&whole.com, whole.e)).into();
-    check_embedding(vertices, tris, &comp, &parts, Some(centre), cancel)?;
+    if !proved {
+        check_embedding(vertices, tris, &comp, &parts, Some(centre), cancel)?;
+    }
     cancel.check()?;
     finish(&whole, density)
 }
@@ -650,44 +657,100 @@ struct Part {
     degenerate: u64,
 }
 
-/// Integrates each component about a point of its own (module docs).
+/// The faces of one component, in fixed chunks of [`CHUNK`] (the chunks, and so the order of
+/// the sums, depend on the mesh only).
+#[derive(Clone, Copy)]
+enum Faces<'a> {
+    /// The only component: every face whose label is not `UNUSED`, chunked by face index
+    /// (no list of members to build).
+    All(&'a [u32]),
+    /// The listed faces.
+    Members(&'a [u32]),
+}
+
+impl Faces<'_> {
+    fn chunks(self) -> usize {
+        match self {
+            Faces::All(comp) => comp.len().div_ceil(CHUNK),
+            Faces::Members(m) => m.len().div_ceil(CHUNK),
+        }
+    }
+
+    /// Calls `f` on each face of chunk `k`, in order.
+    #[inline]
+    fn each(self, k: usize, mut f: impl FnMut(usize)) {
+        match self {
+            Faces::All(comp) => {
+                let hi = ((k + 1) * CHUNK).min(comp.len());
+                for (i, &c) in comp[k * CHUNK..hi].iter().enumerate() {
+                    if c != UNUSED {
+                        f(k * CHUNK + i);
+                    }
+                }
+            }
+            Faces::Members(m) => {
+                let hi = ((k + 1) * CHUNK).min(m.len());
+                for &g in &m[k * CHUNK..hi] {
+                    f(g as usize);
+                }
+            }
+        }
+    }
+}
+
+/// Integrates each component about a point of its own (module docs). A mesh of one component
+/// is also tried, in the same pass over its faces, as star-shaped about that point (the centre
+/// of the box of its vertices: [`StarProof`]); the second value says whether that proved it
+/// embedded (`false` also when there are several components).
 fn integrate_parts(
     vertices: &[f64],
     tris: &[[u32; 3]],
     comp: &[u32],
     ncomp: usize,
     cancel: &Cancel,
-) -> Result<Vec<Part>> {
-    // Faces grouped by component (a counting sort).
+) -> Result<(Vec<Part>, bool)> {
+    // Faces grouped by component (a counting sort), unless there is one.
     let mut start = vec![0usize; ncomp + 1];
-    for &c in comp {
-        if c != UNUSED {
-            start[c as usize + 1] += 1;
+    let mut members = Vec::new();
+    if ncomp > 1 {
+        for &c in comp {
+            if c != UNUSED {
+                start[c as usize + 1] += 1;
+            }
         }
-    }
-    for k in 0..ncomp {
-        start[k + 1] += start[k];
-    }
-    let mut members = vec![0u32; start[ncomp]];
-    let mut cursor = start.clone();
-    for (f, &c) in comp.iter().enumerate() {
-        if c != UNUSED {
-            members[cursor[c as usize]] = f as u32;
-            cursor[c as usize] += 1;
+        for k in 0..ncomp {
+            start[k + 1] += start[k];
+        }
+        members = vec![0u32; start[ncomp]];
+        let mut cursor = start.clone();
+        for (f, &c) in comp.iter().enumerate() {
+            if c != UNUSED {
+                members[cursor[c as usize]] = f as u32;
+                cursor[c as usize] += 1;
+            }
         }
     }
     let vertex = |i: u32| {
         let k = 3 * i as usize;
         [vertices[k], vertices[k + 1], vertices[k + 2]]
     };
+    let proved = AtomicBool::new(false);
     let parts = (0..ncomp)
         .into_par_iter()
         .map(|k| {
-            let faces = &members[start[k]..start[k + 1]];
+            let faces = if ncomp == 1 {
+                Faces::All(comp)
+            } else {
+                Faces::Members(&members[start[k]..start[k + 1]])
+            };
             // The box of the component's vertices (unused vertices play no part).
-            let Bounds { lo, hi } = faces
-                .par_chunks(CHUNK)
-                .map(|c| Bounds::of(c.iter().flat_map(|&f| tris[f as usize].map(vertex))))
+            let Bounds { lo, hi } = (0..faces.chunks())
+                .into_par_iter()
+                .map(|c| {
+                    let mut b = Bounds::EMPTY;
+                    faces.each(c, |f| b = b.union(Bounds::of(tris[f].map(vertex))));
+                    b
+                })
                 .reduce(|| Bounds::EMPTY, Bounds::union);
             // Halves first: no overflow for coordinates near ±1.8e308.
             let p = [0, 1, 2].map(|j| 0.5 * lo[j] + 0.5 * hi[j]);
@@ -698,68 +761,74 @@ fn integrate_parts(
             // (a product by a power of two is exact, or rounds once in the subnormal range
             // as ldexp does): one multiplication instead of ldexp's branches, per coordinate.
             let unit = (-1022..=1023).contains(&-e).then(|| ldexp(1.0, -e));
+            let star = if ncomp == 1 {
+                StarProof::new(vertices.len() / 3, p)
+            } else {
+                None
+            };
             // Fixed chunks summed in order: the same sums (bit for bit) on any number of
             // threads (a rayon fold's pieces depend on which thread steals what).
-            let sums: Vec<([f64; 12], u64)> = faces
-                .par_chunks(CHUNK)
+            let sums: Vec<([f64; 12], u64)> = (0..faces.chunks())
+                .into_par_iter()
                 .map(|chunk| {
+                    let (mut m, mut degenerate) = ([0.0; 12], 0u64);
                     if cancel.check().is_err() {
-                        return ([0.0; 12], 0);
+                        return (m, degenerate);
                     }
-                    chunk
-                        .iter()
-                        .fold(([0.0; 12], 0u64), |(mut m, mut degenerate), &f| {
-                            let q = |i: u32| {
-                                let v = vertex(i);
-                                match unit {
-                                    Some(u) => {
-                                        [v[0] * u - ps[0], v[1] * u - ps[1], v[2] * u - ps[2]]
-                                    }
-                                    None => [0, 1, 2].map(|j| ldexp(v[j], -e) - ps[j]),
-                                }
-                            };
-                            let t = &tris[f as usize];
-                            let (a, b, c) = (q(t[0]), q(t[1]), q(t[2]));
-                            // Zero area: (b − a) × (c − a) = 0.
-                            let (u, w) = (
-                                [b[0] - a[0], b[1] - a[1], b[2] - a[2]],
-                                [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
-                            );
-                            let n = [
-                                u[1] * w[2] - u[2] * w[1],
-                                u[2] * w[0] - u[0] * w[2],
-                                u[0] * w[1] - u[1] * w[0],
-                            ];
-                            if n == [0.0; 3] {
-                                degenerate += 1;
-                                return (m, degenerate);
-                            }
-                            let bc = [
-                                b[1] * c[2] - b[2] * c[1],
-                                b[2] * c[0] - b[0] * c[2],
-                                b[0] * c[1] - b[1] * c[0],
-                            ];
-                            let d = a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2];
-                            let sv = [a[0] + b[0] + c[0], a[1] + b[1] + c[1], a[2] + b[2] + c[2]];
-                            m[0] += d;
-                            m[1] += d * sv[0];
-                            m[2] += d * sv[1];
-                            m[3] += d * sv[2];
-                            let sq = |i: usize, j: usize| {
-                                a[i] * a[j] + b[i] * b[j] + c[i] * c[j] + sv[i] * sv[j]
-                            };
-                            m[4] += d * sq(0, 0);
-                            m[5] += d * sq(1, 1);
-                            m[6] += d * sq(2, 2);
-                            m[7] += d * sq(0, 1);
-                            m[8] += d * sq(1, 2);
-                            m[9] += d * sq(2, 0);
-                            m[10] += d.abs();
-                            m[11] += d.abs() * (sq(0, 0) + sq(1, 1) + sq(2, 2));
-                            (m, degenerate)
-                        })
+                    faces.each(chunk, |f| {
+                        let t = &tris[f];
+                        let raw = t.map(vertex);
+                        if let Some(star) = &star {
+                            star.face(t, raw);
+                        }
+                        let q = |v: [f64; 3]| match unit {
+                            Some(u) => [v[0] * u - ps[0], v[1] * u - ps[1], v[2] * u - ps[2]],
+                            None => [0, 1, 2].map(|j| ldexp(v[j], -e) - ps[j]),
+                        };
+                        let (a, b, c) = (q(raw[0]), q(raw[1]), q(raw[2]));
+                        // Zero area: (b − a) × (c − a) = 0.
+                        let (u, w) = (
+                            [b[0] - a[0], b[1] - a[1], b[2] - a[2]],
+                            [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
+                        );
+                        let n = [
+                            u[1] * w[2] - u[2] * w[1],
+                            u[2] * w[0] - u[0] * w[2],
+                            u[0] * w[1] - u[1] * w[0],
+                        ];
+                        if n == [0.0; 3] {
+                            degenerate += 1;
+                            return;
+                        }
+                        let bc = [
+                            b[1] * c[2] - b[2] * c[1],
+                            b[2] * c[0] - b[0] * c[2],
+                            b[0] * c[1] - b[1] * c[0],
+                        ];
+                        let d = a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2];
+                        let sv = [a[0] + b[0] + c[0], a[1] + b[1] + c[1], a[2] + b[2] + c[2]];
+                        m[0] += d;
+                        m[1] += d * sv[0];
+                        m[2] += d * sv[1];
+                        m[3] += d * sv[2];
+                        let sq = |i: usize, j: usize| {
+                            a[i] * a[j] + b[i] * b[j] + c[i] * c[j] + sv[i] * sv[j]
+                        };
+                        m[4] += d * sq(0, 0);
+                        m[5] += d * sq(1, 1);
+                        m[6] += d * sq(2, 2);
+                        m[7] += d * sq(0, 1);
+                        m[8] += d * sq(1, 2);
+                        m[9] += d * sq(2, 0);
+                        m[10] += d.abs();
+                        m[11] += d.abs() * (sq(0, 0) + sq(1, 1) + sq(2, 2));
+                    });
+                    (m, degenerate)
                 })
                 .collect();
+            if star.is_some_and(|s| s.proved()) {
+                proved.store(true, Ordering::Relaxed);
+            }
             let (s, degenerate) = sums.iter().fold(([0.0; 12], 0u64), |(mut x, d1), (y, d2)| {
                 for (a, b) in x.iter_mut().zip(y) {
                     *a += b;
@@ -775,7 +844,7 @@ fn integrate_parts(
         })
         .collect();
     cancel.check()?;
-    Ok(parts)
+    Ok((parts, proved.into_inner()))
 }
 
 /// The signed volume of a part relative to the tetrahedra it was summed from: `+1`, `−1`, or
@@ -1229,6 +1298,71 @@ mod tests {
         let b = mesh_mass_properties_rows(&v, &f, 1.0).unwrap();
         let exact = 2.0 * std::f64::consts::PI.powi(2) * 0.3 * 0.3;
         assert!((b.mass() - exact).abs() < 0.02 * exact, "{}", b.mass());
+    }
+
+    /// The star proof fused into the integrals' pass (about the centre of the box of the
+    /// vertices) is the certificate about that point: on perturbed spheres (radial bumps up
+    /// to 3 times the radius, spikes and dents, some far from star-shaped) a proof implies
+    /// that testing every pair of faces whose boxes meet finds no intersection, and the
+    /// answer equals [`star_shaped_about`] at the same point; the sphere wound twice
+    /// (negative control) is not proved and is refused. Sums are unchanged by the proof.
+    #[test]
+    fn fused_star_proof_is_the_certificate() {
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut uniform = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let fused = |v: &[[f64; 3]], f: &[[u32; 3]]| {
+            let cancel = Cancel::new(0);
+            let (comp, ncomp) = check_topology(v.len(), f, None, &cancel).unwrap();
+            integrate_parts(v.as_flattened(), f, &comp, ncomp, &cancel).unwrap()
+        };
+        let (mut proved, mut refused) = (0, 0);
+        for trial in 0..24 {
+            let (mut v, f) = wound_sphere(12, 18, 1.0);
+            let amp = [0.0, 0.05, 0.5, 3.0][trial % 4];
+            for p in v.iter_mut() {
+                let r = 1.0 + amp * (2.0 * uniform() - 1.0);
+                *p = p.map(|x| x * r + 0.25);
+            }
+            let (parts, ok) = fused(&v, &f);
+            assert_eq!(parts.len(), 1);
+            let pts = Points::new(v.as_flattened());
+            let p = parts[0].p;
+            let cancel = Cancel::new(0);
+            assert_eq!(
+                ok,
+                star_shaped_about(pts, &f, |_| false, p, &cancel).unwrap()
+            );
+            let index = Index::new(pts, &f, |_| false, &cancel).unwrap();
+            let (count, _) = index.intersections(&cancel).unwrap();
+            if ok {
+                proved += 1;
+                assert_eq!(count, 0, "trial {trial}: proved but {count} pairs meet");
+            } else {
+                refused += 1;
+            }
+        }
+        assert!(
+            proved >= 6 && refused >= 6,
+            "{proved} proved, {refused} not"
+        );
+        let (v, f) = wound_sphere(40, 61, 2.0);
+        let (_, ok) = fused(&v, &f);
+        assert!(!ok);
+        let e = mesh_mass_properties_rows(&v, &f, 1.0).unwrap_err();
+        assert!(e.message.contains("intersects itself"), "{e}");
+        // Two spheres: several components, no fused proof.
+        let (v, mut f) = wound_sphere(12, 18, 1.0);
+        let n = v.len() as u32;
+        let mut v2 = v.clone();
+        v2.extend(v.iter().map(|p| [p[0] + 5.0, p[1], p[2]]));
+        f.extend(f.clone().iter().map(|t| t.map(|i| i + n)));
+        let (parts, ok) = fused(&v2, &f);
+        assert!(parts.len() == 2 && !ok);
     }
 
     #[test]

@@ -19,12 +19,13 @@
 //!    the edge they share. A star that fails (a fold, a pinch, a fan winding twice, a face of
 //!    zero area) leaves its pairs to the narrow phase, which handles faces sharing a vertex
 //!    or an edge exactly as any others.
-//!    Before all that, a mesh of one component is tried as **star-shaped** about its centre
-//!    of mass ([`star_shaped_about`]): when every face faces away from that point and every
-//!    vertex's fan winds once about it, the radial projection onto a sphere is one to one
-//!    (a covering of the sphere), which proves the surface embedded in one pass over the
-//!    faces, without the hierarchy or any pair (a convex or blobby solid; a torus or a cup
-//!    is left to the pairwise tests).
+//!    Before all that, a mesh of one component is tried as **star-shaped** about the centre
+//!    of the box of its vertices (in the integrals' pass over the faces: [`StarProof`]), then
+//!    about its centre of mass ([`star_shaped_about`]): when every face faces away from that
+//!    point and every vertex's fan winds once about it, the radial projection onto a sphere
+//!    is one to one (a covering of the sphere), which proves the surface embedded in one pass
+//!    over the faces, without the hierarchy or any pair (a convex or blobby solid; a torus or
+//!    a cup is left to the pairwise tests).
 //!    Narrow phase: exact triangle–triangle tests on Shewchuk's adaptive orientation
 //!    predicates (`robust`), so a crossing by one ulp is found and neighbours that only share
 //!    a vertex or an edge are never flagged. Faces of exactly zero area (collinear corners)
@@ -1535,12 +1536,9 @@ pub(crate) fn star_shaped_about(
     c: P3,
     cancel: &Cancel,
 ) -> Result<bool> {
-    let nv = pts.v.len() / 3;
-    if !c.iter().all(|x| x.abs() <= FAST_COORD_MAX) {
+    let Some(proof) = StarProof::new(pts.v.len() / 3, c) else {
         return Ok(false);
-    }
-    // Per vertex: a wedge around it holds t (a second one refuses the proof).
-    let held: Vec<AtomicBool> = (0..nv).map(|_| AtomicBool::new(false)).collect();
+    };
     let ok = tris
         .par_chunks(FACE_CHUNK)
         .enumerate()
@@ -1550,28 +1548,70 @@ pub(crate) fn star_shaped_about(
             }
             let f0 = chunk * FACE_CHUNK;
             for (i, t) in ts.iter().enumerate() {
-                if skip(f0 + i) {
-                    continue;
-                }
-                let holds = radial_wedges(pts, t, c).ok_or(())?;
-                for (j, &v) in t.iter().enumerate() {
-                    if holds[j] && held[v as usize].swap(true, Ordering::Relaxed) {
-                        return Err(());
-                    }
+                if !skip(f0 + i) && !proof.face(t, pts.tri(t)) {
+                    return Err(());
                 }
             }
             Ok(())
         });
     cancel.check()?;
-    Ok(ok.is_ok())
+    Ok(ok.is_ok() && proof.proved())
+}
+
+/// [`star_shaped_about`] face by face, for a pass that reads every face anyway (the mesh
+/// integrals): [`StarProof::face`] for each face of the component in any order and on any
+/// thread, then [`StarProof::proved`]. The same answer as [`star_shaped_about`] on the same
+/// faces (the per-vertex flags are set atomically; any second hold fails the proof).
+pub(crate) struct StarProof {
+    /// Per vertex: a wedge around it holds the reference direction.
+    held: Vec<AtomicBool>,
+    /// Set once a face fails: the proof is refused and later faces are not examined.
+    failed: AtomicBool,
+    c: P3,
+}
+
+impl StarProof {
+    /// A proof about `c` for a mesh of `nv` vertices; `None` when `c` is outside the envelope
+    /// of the float filters ([`FAST_COORD_MAX`]).
+    pub(crate) fn new(nv: usize, c: P3) -> Option<Self> {
+        c.iter().all(|x| x.abs() <= FAST_COORD_MAX).then(|| Self {
+            held: (0..nv).map(|_| AtomicBool::new(false)).collect(),
+            failed: AtomicBool::new(false),
+            c,
+        })
+    }
+
+    /// Takes the face `t` with corners `p` (the points of `t`) into the proof; `false` once
+    /// the proof has failed (by this face or an earlier one).
+    #[inline]
+    pub(crate) fn face(&self, t: &[u32; 3], p: [P3; 3]) -> bool {
+        if self.failed.load(Ordering::Relaxed) {
+            return false;
+        }
+        let ok = match radial_wedges(p, self.c) {
+            Some(holds) => t
+                .iter()
+                .zip(holds)
+                .all(|(&v, h)| !(h && self.held[v as usize].swap(true, Ordering::Relaxed))),
+            None => false,
+        };
+        if !ok {
+            self.failed.store(true, Ordering::Relaxed);
+        }
+        ok
+    }
+
+    /// Whether every face taken in passed: the surface they form is embedded.
+    pub(crate) fn proved(&self) -> bool {
+        !self.failed.load(Ordering::Relaxed)
+    }
 }
 
 /// For the face `t` seen from `c` ([`star_shaped_about`]): `None` unless it is positively
 /// oriented (and within the envelope of the predicates); else, for each corner, whether its
 /// wedge holds the corner's reference tangent direction.
 #[inline]
-fn radial_wedges(pts: Points<'_>, t: &[u32; 3], c: P3) -> Option<[bool; 3]> {
-    let p = pts.tri(t);
+fn radial_wedges(p: [P3; 3], c: P3) -> Option<[bool; 3]> {
     if !fast(&p) {
         return None;
     }
