@@ -16,6 +16,7 @@
 from __future__ import annotations
 
 import json
+from collections.abc import Iterable
 from pathlib import Path
 from typing import Any, ClassVar
 
@@ -134,16 +135,20 @@ class UnitFigureDirective(Directive):
         return [_unit_figure(self.arguments[0], self.options.get("width", "80%"))]
 
 
+def _grid(figures: Iterable[nodes.figure]) -> list[nodes.Node]:
+    """What a grid directive returns: the figures side by side (CSS ``poinsot-picture-grid``)."""
+    grid = nodes.container(classes=["poinsot-picture-grid"])
+    grid.extend(figures)
+    return [grid]
+
+
 class UnitFiguresDirective(Directive):
     """Every unit figure, in the unit's order, as a grid."""
 
     def run(self) -> list[nodes.Node]:
         from poinsot.plots import UNIT_FIGURES
 
-        grid = nodes.container(classes=["poinsot-picture-grid"])
-        for number in UNIT_FIGURES:
-            grid += _unit_figure(number, "100%")
-        return [grid]
+        return _grid(_unit_figure(number, "100%") for number in UNIT_FIGURES)
 
 
 def _lab_shot(scene: str, width: str) -> nodes.figure:
@@ -172,10 +177,7 @@ class LabShotsDirective(Directive):
     """Every scene of the lab, in the order of its tabs, as a grid."""
 
     def run(self) -> list[nodes.Node]:
-        grid = nodes.container(classes=["poinsot-picture-grid"])
-        for scene in SCENES:
-            grid += _lab_shot(scene, "100%")
-        return [grid]
+        return _grid(_lab_shot(scene, "100%") for scene in SCENES)
 
 
 def _check_lab_shots(app: Any) -> None:
