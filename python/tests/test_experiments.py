@@ -331,3 +331,11 @@ def test_without_pint_the_error_names_the_extra() -> None:
     assert out[0] == "poinsot.experiments needs pint: pip install 'poinsot[units]'"
     assert out[1].startswith("1 error: poinsot experiments needs pint")
     assert "pip install 'poinsot[units]'" in out[1]
+
+
+def test_every_entry_round_trips_through_json_and_pickle() -> None:
+    for r in x.run_all(progress=False):
+        data = json.loads(json.dumps(r.to_dict()))
+        assert x.ExperimentResult.from_dict(data).to_dict() == r.to_dict(), r.name
+        assert pickle.loads(pickle.dumps(r)).to_dict() == r.to_dict(), r.name
+        assert r.summary.endswith(f"{r.verdict}."), r.name
