@@ -17,11 +17,11 @@ import os
 import subprocess
 import sys
 import tarfile
-import venv
 from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
+from _venv import install_in_fresh_venv
 
 pytestmark = pytest.mark.sdist
 
@@ -125,27 +125,15 @@ def installed(
     if os.name == "nt":
         pytest.skip("the web tools' shims are shell scripts")
     root = tmp_path_factory.mktemp("sdist-venv")
-    env_dir = root / "venv"
-    venv.EnvBuilder(with_pip=True, clear=True).create(env_dir)
-    bindir = env_dir / "bin"
     log = root / "web-tools.log"
     _shims(root / "shims", log)
-    env = {
-        k: v
-        for k, v in os.environ.items()
-        if not k.startswith(("PYO3", "MATURIN", "VIRTUAL_ENV", "PYTHON"))
-    }
-    env["PATH"] = os.pathsep.join([str(root / "shims"), str(bindir), os.environ["PATH"]])
-    env["PYTHONNOUSERSITE"] = "1"
-    env["MPLBACKEND"] = "Agg"
-    env["PIP_DISABLE_PIP_VERSION_CHECK"] = "1"
-    env["COLUMNS"] = "80"
-    subprocess.run(
-        [str(bindir / "python"), "-m", "pip", "install", "-q", str(sdist)],
-        env=env,
-        cwd=root,
-        check=True,
+    bindir, env = install_in_fresh_venv(
+        root,
+        [str(sdist)],
+        drop=("PYO3", "MATURIN", "VIRTUAL_ENV", "PYTHON"),
+        path=([str(root / "shims")], os.environ["PATH"]),
         timeout=1800,
+        extra_env={"COLUMNS": "80"},
     )
     yield bindir, env, log
 

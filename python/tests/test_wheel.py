@@ -16,12 +16,12 @@ import shutil
 import signal
 import subprocess
 import urllib.request
-import venv
 import zipfile
 from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
+from _venv import install_in_fresh_venv
 
 pytestmark = pytest.mark.wheel
 
@@ -54,41 +54,17 @@ def installed(
 ) -> Iterator[tuple[Path, dict[str, str]]]:
     """A fresh virtual environment with the wheel installed (binary packages only), and the
     environment to run it in: no Rust on PATH, no Cargo or PyO3 variables, no user site."""
-    root = tmp_path_factory.mktemp("wheel-venv")
-    env_dir = root / "venv"
-    venv.EnvBuilder(with_pip=True, clear=True).create(env_dir)
-    bindir = env_dir / ("Scripts" if os.name == "nt" else "bin")
-    env = {
-        k: v
-        for k, v in os.environ.items()
-        if not k.startswith(
-            ("CARGO", "RUSTUP", "RUSTC", "PYO3", "MATURIN", "VIRTUAL_ENV", "PYTHON")
-        )
-    }
-    env["PATH"] = os.pathsep.join([str(bindir), rust_free_path()])
-    env["PYTHONNOUSERSITE"] = "1"
-    env["MPLBACKEND"] = "Agg"
-    env["PIP_DISABLE_PIP_VERSION_CHECK"] = "1"
+    path = rust_free_path()
     for tool in ("cargo", "rustc", "rustup"):
-        assert shutil.which(tool, path=env["PATH"]) is None, f"{tool} is still on PATH"
+        assert shutil.which(tool, path=path) is None, f"{tool} is still on PATH"
     # --only-binary: nothing may be compiled, the wheel and its dependencies install as they are.
-    subprocess.run(
-        [
-            str(bindir / "python"),
-            "-m",
-            "pip",
-            "install",
-            "-q",
-            "--only-binary",
-            ":all:",
-            str(wheel),
-        ],
-        env=env,
-        cwd=root,
-        check=True,
+    yield install_in_fresh_venv(
+        tmp_path_factory.mktemp("wheel-venv"),
+        ["--only-binary", ":all:", str(wheel)],
+        drop=("CARGO", "RUSTUP", "RUSTC", "PYO3", "MATURIN", "VIRTUAL_ENV", "PYTHON"),
+        path=([], path),
         timeout=600,
     )
-    yield bindir, env
 
 
 def test_wheel_is_abi3_and_carries_the_lab(wheel: Path) -> None:
