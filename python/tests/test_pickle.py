@@ -67,6 +67,15 @@ def _derive(kind: str) -> Any:
     return d.questions()[0]
 
 
+def _experiments() -> Any:
+    return pytest.importorskip("poinsot.experiments")
+
+
+def _a_sense() -> str:
+    """The first entry of the catalogue that compares a sense (a word, not a number)."""
+    return next(e.name for e in _experiments().catalogue() if not any(map(str.isdigit, e.measured)))
+
+
 def _unit_figure() -> Any:
     from poinsot.plots.unit import UNIT_FIGURES
 
@@ -208,6 +217,12 @@ CASES: dict[str, list[tuple[Callable[[], Any], Callable[[Any], Any]]]] = {
     "Erratum": [(lambda: _derive("Erratum"), lambda e: str(e.derived))],
     "Question": [(lambda: _derive("Question"), lambda q: q.number)],
     "UnitFigure": [(_unit_figure, lambda u: sorted(u.arguments()))],
+    "Experiment": [(lambda: _experiments().get("reich-1831"), lambda e: e.parsed_inputs())],
+    "Source": [(lambda: _experiments().get("reich-1831").sources[0], lambda s: s.to_dict())],
+    "ExperimentResult": [
+        (lambda: _experiments().run("reich-1831"), lambda r: (r.predicted_si, r.sigma)),
+        (lambda: _experiments().run(_a_sense()), lambda r: (r.predicted, r.verdict)),
+    ],
 }
 
 #: The public exceptions and warnings, read from the package (a new one is covered unasked).
