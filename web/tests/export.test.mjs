@@ -13,10 +13,8 @@ import { mkdtempSync, rmSync, statSync, mkdirSync } from "node:fs";
 import { tmpdir } from "node:os";
 import path from "node:path";
 import { pathToFileURL } from "node:url";
-import { chromium } from "playwright-core";
-import { repo, startLab, open as openServed } from "./harness.mjs";
+import { repo, startLab, open as openServed, launchChromium, collectErrors, pixels } from "./harness.mjs";
 
-const BENIGN_WARNING = /GL Driver Message \(OpenGL, Performance, [A-Z_]+, High\): GPU stall due to ReadPixels/;
 const python = process.env.PYTHON ?? path.join(repo, ".venv/bin/python");
 const dir = mkdtempSync(path.join(tmpdir(), "poinsot-export-"));
 const folder = path.join(dir, "für die Klasse");
@@ -28,12 +26,7 @@ const fileUrl = pathToFileURL(file).href;
 const shots = process.env.SHOTS;
 const shoot = async (page, name) => { if (shots) await page.screenshot({ path: path.join(shots, `export-${name}.png`) }); };
 
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
-  headless: true,
-  args: ["--headless", "--no-sandbox", "--disable-gpu", "--enable-unsafe-swiftshader",
-    "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run"],
-});
+const browser = await launchChromium();
 await startLab();
 after(async () => {
   await browser.close();
@@ -45,13 +38,8 @@ after(async () => {
 async function openFile(query = "", { viewport = { width: 1200, height: 800 }, beforeLoad } = {}) {
   const page = await browser.newPage({ viewport });
   if (beforeLoad) await page.addInitScript(beforeLoad);
-  const problems = [];
+  const problems = collectErrors(page);
   const requests = [];
-  page.on("console", (m) => {
-    if (m.type() === "warning" && BENIGN_WARNING.test(m.text())) return;
-    if (m.type() === "error" || m.type() === "warning") problems.push(`${m.type()}: ${m.text()}`);
-  });
-  page.on("pageerror", (e) => problems.push(`pageerror: ${e.message}`));
   page.on("request", (r) => { if (!/^(file|data|blob):/.test(r.url())) requests.push(r.url()); });
   await page.goto(fileUrl + query);
   await page.waitForFunction(() => window.__lab?.ready && window.__lab.frames > 3, null, { timeout: 30000 });
@@ -75,17 +63,7 @@ test("every scene of the exported lab loads from file:// with no error and no re
     assert.equal(s.scene, id);
     assert.equal(s.error, null, `${id}: ${s.error}`);
     // it draws: the canvas is not the bare background
-    const busy = await page.evaluate(() => {
-      const src = document.querySelector("#view canvas");
-      const c = document.createElement("canvas");
-      c.width = 32; c.height = 32;
-      const g = c.getContext("2d");
-      g.drawImage(src, 0, 0, 32, 32);
-      const d = g.getImageData(0, 0, 32, 32).data;
-      let n = 0;
-      for (let k = 0; k < d.length; k += 4) if (Math.abs(d[k] - 0x10) + Math.abs(d[k + 1] - 0x14) + Math.abs(d[k + 2] - 0x18) > 24) n++;
-      return n / 1024;
-    });
+    const { busy } = await pixels(page);
     assert.ok(busy > 0.01, `${id}: the view is empty (${busy})`);
     await shoot(page, `scene-${id}`);
   }

@@ -38,16 +38,33 @@ export async function startLab() {
       setTimeout(() => reject(new Error(`poinsot lab did not start: ${text}`)), 20000);
     });
   }
-  browser = await chromium.launch({
-    executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
-    headless: true,
-    args: ["--headless", "--no-sandbox", "--disable-gpu", "--enable-unsafe-swiftshader",
-      "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run"],
-  });
+  browser = await launchChromium();
   after(async () => {
     await browser?.close();
     server?.kill();
   });
+}
+
+/** Debian's chromium (or CHROMIUM), headless, WebGL through SwiftShader, no background traffic:
+ * the browser of every browser test (the lab's, the exported file's, the widget's). */
+export const launchChromium = () => chromium.launch({
+  executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
+  headless: true,
+  args: ["--headless", "--no-sandbox", "--disable-gpu", "--enable-unsafe-swiftshader",
+    "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run"],
+});
+
+/** The console errors and warnings and the uncaught exceptions of `page` from now on, collected
+ * into the array returned. */
+export function collectErrors(page) {
+  const errors = [];
+  page.on("console", (msg) => {
+    // The tests' own pixel read-back makes SwiftShader log a performance note; anything else counts.
+    if (msg.type() === "warning" && BENIGN_WARNING.test(msg.text())) return;
+    if (msg.type() === "error" || msg.type() === "warning") errors.push(`${msg.type()}: ${msg.text()}`);
+  });
+  page.on("pageerror", (e) => errors.push(`pageerror: ${e.message}`));
+  return errors;
 }
 
 /** The page's URL for a query such as `?scene=top&paused=1`. */
@@ -59,23 +76,18 @@ export const urlFor = (query) => new URL(query, base).href;
 export async function open(query, viewport = { width: 1200, height: 800 }, { beforeLoad, reducedMotion } = {}) {
   const page = await browser.newPage({ viewport, ...(reducedMotion ? { reducedMotion } : {}) });
   if (beforeLoad) await page.addInitScript(beforeLoad);
-  const errors = [];
-  page.on("console", (msg) => {
-    // The tests' own pixel read-back makes SwiftShader log a performance note; anything else counts.
-    if (msg.type() === "warning" && BENIGN_WARNING.test(msg.text())) return;
-    if (msg.type() === "error" || msg.type() === "warning") errors.push(`${msg.type()}: ${msg.text()}`);
-  });
-  page.on("pageerror", (e) => errors.push(`pageerror: ${e.message}`));
+  const errors = collectErrors(page);
   await page.goto(urlFor(query));
   await page.waitForFunction(() => window.__lab?.ready && window.__lab.frames > 3, null, { timeout: 30000 });
   return { page, errors };
 }
 
-/** Distinct colours on a 32×32 grid of the WebGL canvas, and the fraction of non-background cells
- * (optionally of the region `x0..x1` of the canvas width, as fractions). */
-export async function pixels(page, x0 = 0, x1 = 1) {
-  return page.evaluate(([a, b]) => {
-    const src = document.querySelector("#view canvas");
+/** Distinct colours on a 32×32 grid of the WebGL canvas (the lab's, or the one `canvas` selects),
+ * and the fraction of non-background cells (optionally of the region `x0..x1` of the canvas
+ * width, as fractions). */
+export async function pixels(page, x0 = 0, x1 = 1, canvas = "#view canvas") {
+  return page.evaluate(([a, b, selector]) => {
+    const src = document.querySelector(selector);
     const c = document.createElement("canvas");
     c.width = 32; c.height = 32;
     const g = c.getContext("2d");
@@ -88,7 +100,7 @@ export async function pixels(page, x0 = 0, x1 = 1) {
       if (Math.abs(d[i] - 0x10) + Math.abs(d[i + 1] - 0x14) + Math.abs(d[i + 2] - 0x18) > 24) busy++;
     }
     return { colours: colours.size, busy: busy / (d.length / 4) };
-  }, [x0, x1]);
+  }, [x0, x1, canvas]);
 }
 
 /** The scene's readouts at full precision, by key. */

@@ -8,12 +8,10 @@ import http from "node:http";
 import fs from "node:fs";
 import path from "node:path";
 import { execFileSync } from "node:child_process";
-import { chromium } from "playwright-core";
-import { repo } from "./harness.mjs";
+import { repo, launchChromium, collectErrors, pixels as canvasPixels } from "./harness.mjs";
 
 const STATIC = path.join(repo, "python/poinsot/widgets/static");
 const SHOTS = process.env.WIDGET_SHOTS; // a folder: screenshots of each scene for a person to look at
-const BENIGN_WARNING = /GL Driver Message \(OpenGL, Performance, [A-Z_]+, High\): GPU stall due to ReadPixels/;
 
 const PAGE = `<!doctype html><meta charset="utf-8"><link rel="stylesheet" href="/widget.css">
 <body style="margin:0;background:#fff"><div id="cell" style="width:960px"></div>
@@ -53,12 +51,7 @@ before(async () => {
   });
   await new Promise((r) => server.listen(0, "127.0.0.1", r));
   base = `http://127.0.0.1:${server.address().port}/`;
-  browser = await chromium.launch({
-    executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
-    headless: true,
-    args: ["--headless", "--no-sandbox", "--disable-gpu", "--enable-unsafe-swiftshader",
-      "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run"],
-  });
+  browser = await launchChromium();
 });
 after(async () => {
   await browser?.close();
@@ -67,12 +60,7 @@ after(async () => {
 
 async function mount(scene, params = {}) {
   const page = await browser.newPage({ viewport: { width: 1000, height: 600 } });
-  const errors = [];
-  page.on("console", (m) => {
-    if (m.type() === "warning" && BENIGN_WARNING.test(m.text())) return;
-    if (m.type() === "error" || m.type() === "warning") errors.push(`${m.type()}: ${m.text()}`);
-  });
-  page.on("pageerror", (e) => errors.push(`pageerror: ${e.message}`));
+  const errors = collectErrors(page);
   await page.goto(base);
   await page.evaluate(([s, p]) => window.mount(s, p), [scene, params]);
   await page.waitForFunction(() => window.handle?.frames > 5, null, { timeout: 30000 });
@@ -80,21 +68,7 @@ async function mount(scene, params = {}) {
 }
 
 /** Distinct colours and the non-background fraction of the widget's WebGL canvas (32×32 grid). */
-const pixels = (page) => page.evaluate(() => {
-  const src = document.querySelector(".poinsot-widget .view canvas");
-  const c = document.createElement("canvas");
-  c.width = 32; c.height = 32;
-  const g = c.getContext("2d");
-  g.drawImage(src, 0, 0, 32, 32);
-  const d = g.getImageData(0, 0, 32, 32).data;
-  const colours = new Set();
-  let busy = 0;
-  for (let i = 0; i < d.length; i += 4) {
-    colours.add((d[i] << 16) | (d[i + 1] << 8) | d[i + 2]);
-    if (Math.abs(d[i] - 0x10) + Math.abs(d[i + 1] - 0x14) + Math.abs(d[i + 2] - 0x18) > 24) busy++;
-  }
-  return { colours: colours.size, busy: busy / 1024 };
-});
+const pixels = (page) => canvasPixels(page, 0, 1, ".poinsot-widget .view canvas");
 
 const pythonParams = JSON.parse(execFileSync(process.env.PYTHON ?? path.join(repo, ".venv/bin/python"), ["-c",
   "import json, dataclasses; from poinsot.widgets import SCENE_PARAMS as S; " +
