@@ -8,7 +8,8 @@ The public API (the README and the docs/ pages describe each part; ARCHITECTURE.
 * mass properties: :class:`RigidBody` (inertia tensor, principal axes, kind, L, T);
 * moving frames: :class:`MovingFrame` (eqs. 2.1–2.28), :func:`simulate_particle`;
 * the rotating Earth: :class:`Earth` (effective gravity, Coriolis, the falling body of
-  eq. 2.42, projectiles, the Foucault pendulum, inertial oscillations);
+  eq. 2.42, projectiles, the Foucault pendulum, inertial oscillations); :class:`RigidEarth`
+  (the Earth as a rigid top: Euler's period, the Chandler period, precession, nutation);
 * rigid-body dynamics: :func:`simulate` (Euler's equations 2.71 with torques; exact flow,
   Lie–Poisson splitting, RK4, DOP853), :func:`simulate_batch`, :class:`FreeSymmetricTop`
   (2.77–2.97), :class:`FreeRigidBody` (the exact asymmetric top), :func:`axis_stability`;
@@ -42,6 +43,8 @@ from .free import *  # noqa: F403
 from .free import __all__ as _free_all
 from .limits import *  # noqa: F403
 from .limits import __all__ as _limits_all
+from .rigid_earth import *  # noqa: F403
+from .rigid_earth import __all__ as _rigid_earth_all
 from .rotation import *  # noqa: F403
 from .rotation import __all__ as _rotation_all
 from .top import *  # noqa: F403
@@ -54,6 +57,7 @@ __all__ = [
     *_body_all,
     *_frames_all,
     *_earth_all,
+    *_rigid_earth_all,
     *_dynamics_all,
     *_free_all,
     *_top_all,

@@ -63,6 +63,11 @@ class _Earth(TypedDict):
     radius: float
     g: float
 
+class _RigidEarth(TypedDict):
+    dynamical_flattening: float
+    rotation_rate: float
+    obliquity: float
+
 class _SolarDay(TypedDict):
     radius: float
     g: float
@@ -149,6 +154,7 @@ _Defaults = TypedDict(
         "simulate_particle": _Particle,
         "Earth.__init__": _Earth,
         "Earth.solar_day": _SolarDay,
+        "RigidEarth.__init__": _RigidEarth,
         "Earth.drop": _Fall,
         "Earth.projectile": _Projectile,
         "Earth.foucault": _Foucault,
@@ -612,6 +618,40 @@ SIDEREAL_RATE: float
 SOLAR_DAY_RATE: float
 MEAN_RADIUS: float
 STANDARD_GRAVITY: float
+
+# ---- the rigid Earth (rigid_earth.rs) ----
+# A checked core RigidEarth; poinsot.RigidEarth (rigid_earth.py) holds one. SI units, radians.
+
+@final
+class RigidEarthCore:
+    def __new__(
+        cls, dynamical_flattening: float, rotation_rate: float, obliquity: float
+    ) -> RigidEarthCore: ...
+    def __reduce__(self) -> tuple[type[RigidEarthCore], tuple[float, float, float]]: ...
+    @property
+    def dynamical_flattening(self) -> float: ...
+    @property
+    def rotation_rate(self) -> float: ...
+    @property
+    def obliquity(self) -> float: ...
+    @property
+    def euler_rate(self) -> float: ...
+    @property
+    def euler_period(self) -> float: ...
+    @property
+    def precession_rate(self) -> float: ...
+    @property
+    def precession_parts(self) -> tuple[float, float]: ...
+    @property
+    def precession_period(self) -> float: ...
+    @property
+    def nutation_amplitudes(self) -> tuple[float, float]: ...
+    def chandler_period(self, k2: float, ks: float) -> float: ...
+
+DYNAMICAL_FLATTENING: float
+OBLIQUITY_J2000: float
+IAU2006_PRECESSION_RATE: float
+IAU2000A_PRINCIPAL_NUTATION: tuple[float, float]
 
 # ---- special (special.rs) ----
 def special_jacobi(u: NDArray[np.float64], m: float) -> NDArray[np.float64]: ...

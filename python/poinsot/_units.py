@@ -50,7 +50,7 @@ DIMENSIONS: dict[str, tuple[str, str, str]] = {
 _D = {
     "angle": (
         "theta phi psi theta0 latitude latitudes azimuth elevation angle angles course tilt "
-        "spin_axis_angle"
+        "spin_axis_angle obliquity"
     ),
     "angular rate": (
         "omega omega0 omega3 omega_3 omega_body rates phi_dot theta_dot psi_dot rotation_rate "
@@ -71,7 +71,10 @@ _D = {
     "angular momentum": "p_phi p_psi angular_momentum",
     "density": "density",
     "stiffness": "stiffness",
-    "number": "rtol atol R R_3 V_3 rotation attitude attitude0 q p u m n s axis low high",
+    "number": (
+        "rtol atol R R_3 V_3 rotation attitude attitude0 q p u m n s axis low high "
+        "dynamical_flattening k2 ks"
+    ),
 }
 
 #: The dimension of every argument a public function takes a quantity for, by its name. ``t`` is

@@ -187,6 +187,9 @@ CASES: dict[str, list[tuple[Callable[[], Any], Callable[[Any], Any]]]] = {
         )
     ],
     "Earth": [(lambda: ps.Earth(radius=6.0e6), lambda e: e.effective_gravity(0.7))],
+    "RigidEarth": [
+        (lambda: ps.RigidEarth(0.004, 7e-5, 0.3), lambda e: (e.euler_period, e.precession_rate))
+    ],
     "Fall": [(lambda: _earth().drop(100.0, 0.7, samples=5), lambda f: f.first_order_east)],
     "Flight": [(lambda: _earth().projectile(50.0, 0.7, 0.2, 0.5, samples=5), lambda f: f.position)],
     "FoucaultRun": [

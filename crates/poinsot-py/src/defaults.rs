@@ -106,6 +106,10 @@ fn calls() -> Vec<(&'static str, Row)> {
             "rotation_rate" => d::SIDEREAL_RATE, "radius" => d::MEAN_RADIUS, "g" => d::STANDARD_GRAVITY,
         }),
         ("Earth.solar_day", row! { "radius" => d::MEAN_RADIUS, "g" => d::STANDARD_GRAVITY }),
+        ("RigidEarth.__init__", row! {
+            "dynamical_flattening" => d::DYNAMICAL_FLATTENING, "rotation_rate" => d::SIDEREAL_RATE,
+            "obliquity" => d::OBLIQUITY_J2000,
+        }),
         ("Earth.drop", drop()),
         ("Earth.projectile", projectile),
         ("Earth.foucault", with(row! {

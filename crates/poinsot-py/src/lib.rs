@@ -56,6 +56,7 @@ mod errors;
 mod frames;
 mod heavy_top;
 mod inertia;
+mod rigid_earth;
 mod rotation;
 mod special;
 mod sweep;
@@ -130,6 +131,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     inertia::register(m)?;
     frames::register(m)?;
     earth::register(m)?;
+    rigid_earth::register(m)?;
     special::register(m)?;
     analytic::register(m)?;
     dynamics::register(m)?;

@@ -1,6 +1,8 @@
 //! The rotating Earth seen from a local frame on its surface (the unit's eqs. 2.29–2.42):
 //! effective gravity, the Coriolis force, the falling body, projectiles, the Foucault
-//! pendulum, inertial oscillations and the flow into a low.
+//! pendulum, inertial oscillations and the flow into a low; and the Earth as a rigid body
+//! (`rigid`: Euler's free nutation, the Chandler period, the luni-solar precession and the
+//! principal nutation).
 //!
 //! The local frame is ENU: x east, y north, z up; latitude λ is north-positive and the
 //! Earth's angular velocity there is ω = ω (0, cos λ, sin λ) (eq. 2.33). The default rate
@@ -11,6 +13,7 @@ mod pendulum;
 mod pendulum_measurement;
 mod pendulum_theory;
 mod planet;
+mod rigid;
 mod runs;
 mod winds;
 
@@ -25,6 +28,11 @@ pub use pendulum_theory::{FoucaultModes, FoucaultTheory, LinearSwing};
 pub use planet::{
     check_latitude, Earth, EffectiveGravity, MEAN_RADIUS, SIDEREAL_RATE, SOLAR_DAY_RATE,
     STANDARD_GRAVITY,
+};
+pub use rigid::{
+    MeanOrbit, RigidEarth, ASTRONOMICAL_UNIT, DYNAMICAL_FLATTENING, GM_EARTH, GM_SUN,
+    IAU2000A_PRINCIPAL_NUTATION, IAU2006_PRECESSION_RATE, MOON_EARTH_MASS_RATIO, MOON_ORBIT,
+    OBLIQUITY_J2000, SUN_ORBIT,
 };
 pub use runs::{
     foucault_stretches, parcel_ring, FoucaultSwing, InertialSwing, LowFlow, LowSetup, DROP_SAMPLES,

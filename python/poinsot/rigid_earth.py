@@ -1,0 +1,168 @@
+"""The Earth as a rigid body: an oblate symmetric top (the unit's free top, 2.77–2.97, and its
+torque theory) spinning once a sidereal day, torqued by the Sun and the Moon.
+
+:class:`RigidEarth` gives Euler's free nutation (the unit's Ω of 2.83), the Chandler period of
+the elastic Earth, the luni-solar precession of the equinoxes from the orbit-averaged
+gravity-gradient torque, and the principal (18.6-year) nutation. The constants and their
+sources are documented in the core (``crates/poinsot/src/earth/rigid.rs``): H = (C − A)/C =
+0.003273795 (IERS Conventions 2010, Table 1.1), the sidereal rate 7.292115e-5 rad/s, the
+obliquity at J2000 84381.406″ (IAU 2006), the mean orbits of the Sun and the Moon.
+
+SI units and radians: periods in s, rates in rad/s, amplitudes in rad.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from . import _core
+from ._props import core_property
+from ._validate import as_angle, as_scalar
+from .earth import SIDEREAL_RATE
+
+__all__ = [
+    "DYNAMICAL_FLATTENING",
+    "IAU2000A_PRINCIPAL_NUTATION",
+    "IAU2006_PRECESSION_RATE",
+    "OBLIQUITY_J2000",
+    "RigidEarth",
+]
+
+#: H = (C − A)/C, the Earth's dynamical flattening: 0.003273795 (IERS Conventions 2010,
+#: Table 1.1).
+DYNAMICAL_FLATTENING: float = _core.DYNAMICAL_FLATTENING
+#: ε₀, the obliquity of the ecliptic at J2000.0 (rad): 84381.406″ (IAU 2006).
+OBLIQUITY_J2000: float = _core.OBLIQUITY_J2000
+#: The IAU 2006 luni-solar precession rate ψ̇_A (rad/s, westward positive): 5038.481507″ per
+#: Julian century (Capitaine et al. 2003).
+IAU2006_PRECESSION_RATE: float = _core.IAU2006_PRECESSION_RATE
+#: The IAU 2000A principal nutation (Δψ₀, Δε₀) (rad): (−17.2064161″, 9.2052331″), the
+#: coefficients of sin Ω and cos Ω (IERS Conventions 2010, Tables 5.3a/b).
+IAU2000A_PRINCIPAL_NUTATION: tuple[float, float] = _core.IAU2000A_PRINCIPAL_NUTATION
+
+
+class RigidEarth:
+    """The Earth as a rigid symmetric top (A = B < C), torqued by the Sun and the Moon.
+
+    Parameters
+    ----------
+    dynamical_flattening:
+        H = (C − A)/C, in (0, 1); default 0.003273795 (IERS Conventions 2010). ``0`` (a sphere:
+        no bulge, no torque, no free wobble) is refused.
+    rotation_rate:
+        ω (rad/s, > 0); default the sidereal rate 7.292115e-5.
+    obliquity:
+        ε, the tilt of the equator to the ecliptic (rad, or degrees with ``degrees=True``), in
+        [0, π/2); default 84381.406″ = 23.4393°, the J2000 value (IAU 2006).
+    degrees:
+        Whether a plain-number ``obliquity`` is in degrees.
+
+    Examples
+    --------
+    >>> import poinsot as ps
+    >>> e = ps.RigidEarth()
+    >>> round(e.euler_period / (2 * 3.141592653589793 / e.rotation_rate), 1)  # sidereal days
+    304.5
+    >>> round(e.chandler_period(0.30, 0.938) / 86400)                         # days
+    446
+    """
+
+    __slots__ = ("_core",)
+
+    def __init__(
+        self,
+        dynamical_flattening: float = DYNAMICAL_FLATTENING,
+        rotation_rate: float = SIDEREAL_RATE,
+        obliquity: float = OBLIQUITY_J2000,
+        degrees: bool = False,
+    ) -> None:
+        # The core's RigidEarth, checked when made (the errors name the three).
+        self._core = _core.RigidEarthCore(
+            as_scalar(dynamical_flattening, "dynamical_flattening"),
+            as_scalar(rotation_rate, "rotation_rate"),
+            as_angle(obliquity, "obliquity", degrees),
+        )
+
+    dynamical_flattening: float = core_property("dynamical_flattening", "H = (C − A)/C.")
+    rotation_rate: float = core_property("rotation_rate", "ω (rad/s).")
+    obliquity: float = core_property("obliquity", "ε (rad).")
+
+    def __repr__(self) -> str:
+        c = self._core
+        return (
+            f"RigidEarth(dynamical_flattening={c.dynamical_flattening!r}, "
+            f"rotation_rate={c.rotation_rate!r}, obliquity={c.obliquity!r})"
+        )
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, RigidEarth):
+            return NotImplemented
+        a, b = self._core, other._core
+        return (a.dynamical_flattening, a.rotation_rate, a.obliquity) == (
+            b.dynamical_flattening,
+            b.rotation_rate,
+            b.obliquity,
+        )
+
+    def __hash__(self) -> int:
+        c = self._core
+        return hash((RigidEarth, c.dynamical_flattening, c.rotation_rate, c.obliquity))
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        c = self._core
+        return (RigidEarth, (c.dynamical_flattening, c.rotation_rate, c.obliquity))
+
+    @property
+    def euler_rate(self) -> float:
+        """The unit's Ω of eq. 2.83 applied to the Earth, Ω = (I₁ − I₃) ω₃ / I₁ = −H/(1 − H) ω
+        (rad/s). Negative: the equatorial part of ω turns about the figure axis at −Ω > 0, in
+        the sense of the rotation (prograde), as seen in the body."""
+        return float(self._core.euler_rate)
+
+    @property
+    def euler_period(self) -> float:
+        """Euler's free-nutation period 2π/|Ω| (s), Ω of eq. 2.83: A/(C − A) = (1 − H)/H
+        sidereal days — about 304.5 sidereal days (303.6 days) for the IERS H."""
+        return float(self._core.euler_period)
+
+    def chandler_period(self, k2: float, ks: float) -> float:
+        """The elastic Earth's free wobble (s): T_C = T_E · ks/(ks − k2) (Munk & MacDonald
+        1960; Smith & Dahlen 1981), Euler's period lengthened by the yielding of the mantle.
+
+        ``k2`` is the Love number, ``ks`` the secular (fluid) Love number, 0 < k2 < ks. With
+        k2 = 0.30 and ks = 0.938 it is about 446 days against the observed 433: the oceans'
+        pole tide, the fluid core and the mantle's anelasticity account for the rest."""
+        return float(self._core.chandler_period(as_scalar(k2, "k2"), as_scalar(ks, "ks")))
+
+    @property
+    def precession_parts(self) -> tuple[float, float]:
+        """The Sun's and the Moon's parts of :attr:`precession_rate` (rad/s, both negative):
+        −(3/2) (GM/(a³(1 − e²)^{3/2})) (H/ω) cos ε each, the Moon's times (1 − (3/2) sin² i)
+        for its inclined, regressing orbit; the Moon's is about 2.16 times the Sun's."""
+        sun, moon = self._core.precession_parts
+        return float(sun), float(moon)
+
+    @property
+    def precession_rate(self) -> float:
+        """The luni-solar precession rate (rad/s): the signed angular velocity of the spin axis
+        about the ecliptic pole, from the orbit-averaged gravity-gradient torque of the Sun and
+        the Moon on the bulge. Negative (retrograde, westward): −5040.03″ per Julian century for
+        the defaults; its magnitude is within 0.03 % of the IAU 2006 ψ̇_A, 5038.481507″/cy
+        (:data:`IAU2006_PRECESSION_RATE`), which also holds the geodesic precession (−1.92″/cy)
+        and the planetary and second-order terms."""
+        return float(self._core.precession_rate)
+
+    @property
+    def precession_period(self) -> float:
+        """2π/|:attr:`precession_rate`| (s): about 25,714 Julian years for the defaults."""
+        return float(self._core.precession_period)
+
+    @property
+    def nutation_amplitudes(self) -> tuple[float, float]:
+        """The principal (18.6-year) nutation driven by the regression of the Moon's node
+        (rad): (Δψ₀, Δε₀) of Δψ = Δψ₀ sin Ω, Δε = Δε₀ cos Ω (Ω the longitude of the Moon's node),
+        in the IAU convention. For the defaults −17.281″ and 9.227″, 0.43 % and 0.23 % above the
+        non-rigid IAU 2000A terms −17.2064161″ and 9.2052331″
+        (:data:`IAU2000A_PRINCIPAL_NUTATION`). Refused at ``obliquity`` 0."""
+        dpsi, deps = self._core.nutation_amplitudes
+        return float(dpsi), float(deps)
