@@ -67,6 +67,8 @@ def test_problems_finds_a_missing_page_and_a_bad_unit() -> None:
     no_page = dataclasses.replace(e.sources[0], page=" ")
     found = x.problems(_reich(sources=(no_page,), measured="28.4 parsec_line"))
     assert "sources[0].page is empty" in found
+    todo = dataclasses.replace(e.sources[0], page="TODO-verify")
+    assert "sources[0].page is a placeholder: 'TODO-verify'" in x.problems(_reich(sources=(todo,)))
     assert any(p.startswith("measured:") for p in found)
     assert any("topic" in p for p in x.problems(_reich(topic="astrology")))
     assert any("why" in p for p in x.problems(_reich(expect="disagree", why="")))

@@ -214,7 +214,7 @@ class Experiment:
 
 def problems(e: Experiment) -> list[str]:
     """What is missing or malformed in an entry (empty for a complete one): every source needs
-    who, where, when, publication and page; the topic is one of :data:`TOPICS`; the measured
+    who, where, when, publication and page (none a "TODO" placeholder); the topic is one of :data:`TOPICS`; the measured
     value, its uncertainty and the inputs read in pint; ``expect`` is ``"agree"`` or
     ``"disagree"`` (with ``why``)."""
     out = []
@@ -226,8 +226,11 @@ def problems(e: Experiment) -> list[str]:
         out.append("no source")
     for i, s in enumerate(e.sources):
         for key in ("who", "where", "when", "publication", "page"):
-            if not str(getattr(s, key)).strip():
+            text = str(getattr(s, key)).strip()
+            if not text:
                 out.append(f"sources[{i}].{key} is empty")
+            elif "TODO" in text.upper():
+                out.append(f"sources[{i}].{key} is a placeholder: {text!r}")
     if e.expect not in ("agree", "disagree"):
         out.append(f"expect {e.expect!r} is not 'agree' or 'disagree'")
     if e.expect == "disagree" and not e.why.strip():
