@@ -3,7 +3,6 @@
 //! class is `poinsot.RigidEarth` (python/poinsot/rigid_earth.py), which holds one. The core
 //! names every argument as the caller knows it, so no error is renamed here.
 use poinsot::earth::{self as ea, RigidEarth};
-use poinsot_py_macros::export;
 use pyo3::prelude::*;
 use pyo3::types::PyType;
 
