@@ -470,6 +470,102 @@ mod tests {
         );
     }
 
+    /// ŝ′ = (3 GM/r⁵)(H/ω)(ŝ·r)(r × ŝ) (the instantaneous gravity-gradient torque over Cω),
+    /// averaged over one Kepler orbit of `orbit` with its node at `node` and its perigee
+    /// `perigee` from the node, by the trapezoid rule in the eccentric anomaly E (weight
+    /// dM = (1 − e cos E) dE), in ecliptic axes (x to the equinox); ŝ the pole of `earth`.
+    fn orbit_averaged_spin_rate(
+        earth: &RigidEarth,
+        orbit: &MeanOrbit,
+        node: f64,
+        perigee: f64,
+    ) -> crate::Vec3 {
+        use crate::Vec3;
+        let (a, e) = (orbit.semi_major_axis, orbit.eccentricity);
+        let (se, ce) = earth.obliquity.sin_cos();
+        let s = Vec3::new(0.0, se, ce);
+        let turn = |v: Vec3, angle: f64, axis: usize| {
+            let (sn, cs) = angle.sin_cos();
+            match axis {
+                0 => Vec3::new(v.x, cs * v.y - sn * v.z, sn * v.y + cs * v.z),
+                _ => Vec3::new(cs * v.x - sn * v.y, sn * v.x + cs * v.y, v.z),
+            }
+        };
+        let n = 4000;
+        let mut sum = Vec3::zeros();
+        for k in 0..n {
+            let big_e = TAU * k as f64 / n as f64;
+            let p = Vec3::new(
+                a * (big_e.cos() - e),
+                a * (1.0 - e * e).sqrt() * big_e.sin(),
+                0.0,
+            );
+            let r = turn(turn(turn(p, perigee, 2), orbit.inclination, 0), node, 2);
+            let rn = r.norm();
+            let rate =
+                3.0 * orbit.gm / rn.powi(5) * earth.dynamical_flattening / earth.rotation_rate;
+            sum += rate * s.dot(&r) * r.cross(&s) * (1.0 - e * big_e.cos());
+        }
+        sum / n as f64
+    }
+
+    #[test]
+    fn the_orbit_average_of_the_instantaneous_torque_is_the_closed_form() {
+        // The precession: ŝ′ averaged over the orbit and over the node (trapezoid in Ω too),
+        // projected on k̂ × ŝ, is precession_rate_of — the (1 − e²)^{-3/2} and the
+        // (1 − 3/2 sin² i) of the derivation, checked numerically with an exaggerated orbit.
+        let earth = RigidEarth::default();
+        let k_cross_s = crate::Vec3::new(-earth.obliquity.sin(), 0.0, 0.0);
+        for orbit in [
+            SUN_ORBIT,
+            MOON_ORBIT,
+            MeanOrbit {
+                eccentricity: 0.4,
+                inclination: 0.5,
+                ..MOON_ORBIT
+            },
+        ] {
+            let m = 64;
+            let mut mean = crate::Vec3::zeros();
+            for j in 0..m {
+                let node = TAU * j as f64 / m as f64;
+                mean += orbit_averaged_spin_rate(&earth, &orbit, node, 0.7) / m as f64;
+            }
+            let rate = mean.dot(&k_cross_s) / k_cross_s.norm_squared();
+            let want = earth.precession_rate_of(&orbit);
+            assert!((rate / want - 1.0).abs() < 1e-9, "{rate} vs {want}");
+            // Nothing but the precession survives the average: no mean nodding.
+            assert!(mean.y.abs() < 1e-9 * want.abs() && mean.z.abs() < 1e-9 * want.abs());
+        }
+        // The nutation: ε′ = ŝ′·∂ŝ/∂ε over the node has the Fourier coefficient
+        // K sin i cos i cos ε at sin Ω (ν Δε₀ of nutation_amplitudes), and ψ′ sin ε = ŝ′·∂ŝ/∂ψ
+        // has −ν Δψ₀ sin ε at cos Ω.
+        let moon = MOON_ORBIT;
+        let (se, ce) = earth.obliquity.sin_cos();
+        let d_eps = crate::Vec3::new(0.0, ce, -se);
+        let d_psi = crate::Vec3::new(se, 0.0, 0.0);
+        let m = 64;
+        let (mut c_eps, mut c_psi) = (0.0, 0.0);
+        for j in 0..m {
+            let node = TAU * j as f64 / m as f64;
+            let v = orbit_averaged_spin_rate(&earth, &moon, node, 0.7);
+            c_eps += 2.0 / m as f64 * v.dot(&d_eps) * node.sin();
+            c_psi += 2.0 / m as f64 * v.dot(&d_psi) / se * node.cos();
+        }
+        let nu = TAU / moon.node_period;
+        let (dpsi, deps) = earth.nutation_amplitudes().unwrap();
+        assert!(
+            (c_eps / (nu * deps) - 1.0).abs() < 1e-9,
+            "{c_eps} vs {}",
+            nu * deps
+        );
+        assert!(
+            (c_psi / (-nu * dpsi * se) - 1.0).abs() < 1e-9,
+            "{c_psi} vs {}",
+            -nu * dpsi * se
+        );
+    }
+
     proptest! {
         #[test]
         fn euler_period_scales_as_one_minus_h_over_h(
