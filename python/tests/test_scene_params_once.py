@@ -76,3 +76,22 @@ def test_the_lab_scenes_import_the_json_and_restate_no_parameter():
         src = (ROOT / f"web/src/scenes/{scene}.ts").read_text(encoding="utf-8")
         assert re.search(rf'params: sceneParams\("{scene}"', src), scene
         assert not re.search(r'kind: "(number|choice)"', src), f"{scene}.ts restates a parameter"
+
+
+def test_angles_are_degrees_and_the_earlier_radian_keys_map_onto_degree_sliders():
+    # One angle unit per lab (issue 23 item 4): no slider of a shared scene is an angle in
+    # radians; each earlier key in radians (kept for old share links and notebooks) names a
+    # current slider in degrees that has another name.
+    data = json.loads(widgets.SCENES_JSON.read_text(encoding="utf-8"))
+    for scene in SCENES:
+        units = {s["key"]: s.get("unit") for s in data[scene]["params"]}
+        assert "rad" not in units.values(), f"{scene}: a slider in radians"
+        for old, spec in data[scene].get("legacyParams", {}).items():
+            assert spec["unit"] == "rad" and old not in units, (scene, old)
+            assert units[spec["key"]] == "°", (scene, old, spec)
+    assert data["heavytop"]["legacyParams"] == {"theta0": {"key": "tilt", "unit": "rad"}}
+    assert data["frames"]["legacyParams"] == {"direction": {"key": "launchAngle", "unit": "rad"}}
+    # The lab reads the same table (params.ts legacyParams), converting by 180/π.
+    if (ROOT / "web" / "src").is_dir():
+        shared = (ROOT / "web/src/scenes/params.ts").read_text(encoding="utf-8")
+        assert "legacyParams" in shared and "1 / DEG" in shared

@@ -4,6 +4,7 @@ the synced parameters, refusals); the front end is tested in chromium by web/tes
 from __future__ import annotations
 
 import importlib
+import math
 import re
 import sys
 
@@ -37,7 +38,7 @@ def test_assigning_a_top_writes_the_params_and_reads_back_the_same_top():
     assert w.params == {
         "preset": "custom",
         "w3": 15.0,
-        "theta0": 0.7,
+        "tilt": math.degrees(0.7),  # the lab's slider: degrees
         "phiDot0": 0.9,
         "thetaDot0": -0.4,
         "mgl": 2.1,
@@ -63,7 +64,7 @@ def test_params_from_the_front_end_move_w_top():
     s = top.initial_state
     assert s["phi_dot"] == 0.0 and s["theta_dot"] == 0.0
     assert top.p_psi == pytest.approx(0.8 * 20.0, rel=1e-15)
-    assert min(top.turning_points) == pytest.approx(0.87, rel=1e-12)
+    assert min(top.turning_points) == pytest.approx(math.radians(50), rel=1e-12)  # tilt 50°
 
 
 def test_presets_follow_the_cores_steady_precession():
@@ -71,7 +72,7 @@ def test_presets_follow_the_cores_steady_precession():
     top = w.top
     # Released at the slow steady rate (2.116): theta does not move.
     assert top.turning_points[1] - top.turning_points[0] == pytest.approx(0.0, abs=1e-9)
-    slow = HeavyTop.steady_precession(1.0, 0.5, 1.5, 0.87, 12.0).slow
+    slow = HeavyTop.steady_precession(1.0, 0.5, 1.5, math.radians(50), 12.0).slow
     assert top.initial_state["phi_dot"] == pytest.approx(slow, rel=1e-15)
     w.params = {**w.params, "preset": "loops"}
     assert w.top.initial_state["phi_dot"] == pytest.approx(-0.5 * slow, rel=1e-15)
@@ -107,6 +108,36 @@ def test_params_are_checked_by_key():
         w.params = {"launch": "sideways"}
     w.params = {"omega": -1.5}
     assert w.params["omega"] == -1.5 and w.params["r0"] == 0.8  # completed with the defaults
+
+
+def test_angles_in_params_are_the_labs_degrees_and_the_objects_radians():
+    # One angle unit per lab: the synced params hold the slider's degrees; w.top is SI.
+    w = widgets.HeavyTopWidget(preset="cusps", tilt=30.0)
+    assert w.params["tilt"] == 30.0
+    assert w.top.initial_state["theta"] == math.radians(30.0) == 30.0 * (math.pi / 180)
+    assert widgets.SCENE_PARAMS["heavytop"]["tilt"].unit == "°"
+    assert widgets.SCENE_PARAMS["frames"]["launchAngle"].unit == "°"
+    # No slider of any widget is an angle in radians (rates in rad/s are not angles).
+    units = {
+        s.unit for p in widgets.SCENE_PARAMS.values() for s in p.values() if hasattr(s, "unit")
+    }
+    assert "rad" not in units, units
+
+
+def test_the_earlier_keys_in_radians_are_converted_not_misread():
+    # theta0 = 0.52 rad (the earlier key) is a 29.8° tilt, not 0.52°.
+    w = widgets.HeavyTopWidget(preset="cusps", theta0=0.52)
+    assert "theta0" not in w.params
+    assert w.params["tilt"] == pytest.approx(math.degrees(0.52), rel=1e-15)
+    assert w.top.initial_state["theta"] == pytest.approx(0.52, rel=1e-15)
+    f = widgets.FramesWidget(direction=-1.0)
+    assert f.params["launchAngle"] == pytest.approx(math.degrees(-1.0), rel=1e-15)
+    with pytest.raises(PoinsotError, match=r"params: give tilt \(degrees\) or theta0"):
+        widgets.HeavyTopWidget(theta0=0.5, tilt=30.0)
+    with pytest.raises(PoinsotError, match=r"params: tilt = 171.8\d* \(°\) is outside"):
+        widgets.HeavyTopWidget(theta0=3.0)  # 171.9°: the slider's range is checked after
+    with pytest.raises(PoinsotError, match=r"params: direction must be a finite number"):
+        widgets.FramesWidget(direction="north")
 
 
 def test_poinsot_body_round_trip_uses_the_cores_box():

@@ -49,7 +49,7 @@ interface LabHandle {
   /** The scene's named points on the screen (page pixels), e.g. a mark's centre. */
   probes(): Record<string, { x: number; y: number }>;
   /** The record of the readouts over time: its CSV, and the series of one column (record.ts). */
-  record(): { csv: string; series(key: string): { t: number[]; v: number[] } };
+  record(): { csv: string; series(key: string): { t: number[]; v: number[]; scale: number } };
 }
 
 const PHYSICS_WINDOW = 120;
@@ -132,10 +132,16 @@ async function main(): Promise<void> {
   // --- URL <-> state --------------------------------------------------------------------
   function paramsFromUrl(d: SceneDef, q: URLSearchParams): Params {
     const p: Params = {};
+    // A link of an earlier lab: its angle in radians read into the slider now in degrees.
+    const legacy = new Map<string, number>();
+    for (const [old, { key, factor }] of Object.entries(d.legacyParams ?? {})) {
+      const raw = q.get(old);
+      if (raw !== null && q.get(key) === null && raw.trim() !== "") legacy.set(key, Number(raw) * factor);
+    }
     for (const spec of d.params) {
       const raw = q.get(spec.key);
       if (spec.kind === "number") {
-        const x = raw === null ? NaN : Number(raw);
+        const x = raw === null ? (legacy.get(spec.key) ?? NaN) : Number(raw);
         p[spec.key] = Number.isFinite(x) ? Math.min(spec.max, Math.max(spec.min, x)) : spec.value;
       } else {
         p[spec.key] = raw !== null && spec.options.includes(raw) ? raw : spec.value;

@@ -11,20 +11,24 @@ const REDRAW_MS = 120;
 
 interface Column {
   key: string;
-  /** The readout's label, with the component's index for a vector ("φ, θ, ψ (rad) [2]"). */
+  /** The readout's label, with the component's index for a vector ("r′ fixed frame (m) [2]"). */
   label: string;
+  /** The factor from the readout's value to the column's (Readout.unitScale). */
+  scale: number;
 }
 
 /** A readout's numeric columns and their values: a number, or each number of a vector — named
- * by its own name where the label lists one per component ("φ, θ, ψ (rad)" → "θ (rad)"), else
+ * by its own name where the label lists one per component ("φ, θ, ψ (°)" → "θ (°)"), else
  * by its place ("r′ fixed frame (m) [2]"). */
-function numbers(r: Readout): { key: string; label: string; value: number }[] {
-  if (typeof r.value === "number") return [{ key: r.key, label: r.label, value: r.value }];
+function numbers(r: Readout): { key: string; label: string; value: number; scale: number }[] {
+  // In the unit the label names (an angle in degrees), as the readout's text.
+  const k = r.unitScale ?? 1;
+  if (typeof r.value === "number") return [{ key: r.key, label: r.label, value: r.value * k, scale: k }];
   if (!Array.isArray(r.value)) return [];
   const m = /^([^(]*?)\s*(\(.*\))?$/.exec(r.label);
   const names = m ? m[1].split(", ") : [];
   const own = names.length === r.value.length && names.every((n) => n && !n.includes(" "));
-  return r.value.map((v, i) => ({ key: `${r.key}[${i}]`, label: own ? `${names[i]}${m![2] ? ` ${m![2]}` : ""}` : `${r.label} [${i + 1}]`, value: v }));
+  return r.value.map((v, i) => ({ key: `${r.key}[${i}]`, label: own ? `${names[i]}${m![2] ? ` ${m![2]}` : ""}` : `${r.label} [${i + 1}]`, value: v * k, scale: k }));
 }
 
 export class Recorder {
@@ -97,7 +101,7 @@ export class Recorder {
         let i = this.index.get(c.key);
         if (i === undefined) {
           i = this.columns.length;
-          this.columns.push({ key: c.key, label: c.label });
+          this.columns.push({ key: c.key, label: c.label, scale: c.scale });
           this.index.set(c.key, i);
           added = true;
         }
@@ -132,10 +136,11 @@ export class Recorder {
     if (want && this.index.has(want)) this.select.value = want;
   }
 
-  /** The recorded series of a column: times (s) and values. */
-  series(key: string): { t: number[]; v: number[] } {
+  /** The recorded series of a column: times (s), values (in the unit its label names) and the
+   * factor from the readout's value to them. */
+  series(key: string): { t: number[]; v: number[]; scale: number } {
     const i = this.index.get(key);
-    if (i === undefined) return { t: [], v: [] };
+    if (i === undefined) return { t: [], v: [], scale: 1 };
     const t: number[] = [], v: number[] = [];
     this.rows.forEach((row, k) => {
       if (Number.isFinite(row[i])) {
@@ -143,7 +148,7 @@ export class Recorder {
         v.push(row[i]);
       }
     });
-    return { t, v };
+    return { t, v, scale: this.columns[i].scale };
   }
 
   /** The record as CSV: a header (t (s), then each column's label) and one row per time, full precision. */

@@ -5,7 +5,8 @@
 //
 // How numbers are shown (docs/lab.md, "Readouts"): one format for every number of the page
 // (`fmt`), a value within a few ε of the scale of the quantities it was computed from shown as 0,
-// and one angle unit per scene (`AngleUnit`), that of its sliders.
+// and one angle unit for the whole lab, degrees (`angles`): sliders, readouts and share links;
+// rates keep their scene's unit (`RateUnit`), the core stays in radians.
 import type * as THREE from "three";
 import type { Labels } from "./view";
 
@@ -52,6 +53,9 @@ export interface Readout {
   pin?: boolean;
   /** More detail (the core's own sentence, say), shown as the cell's tooltip. */
   detail?: string;
+  /** The factor from `value` (SI: rad, rad/s) to the unit its label names (180/π for an angle
+   * shown in degrees), by which the record's plot and CSV give it; 1 without it. */
+  unitScale?: number;
   /** A check of the computation (a residual, a drift, a conserved quantity recomputed), not a
    * result: listed under "Checks" below the headline readouts. */
   check?: boolean;
@@ -120,9 +124,10 @@ export interface SceneInstance {
   probes?(camera: THREE.PerspectiveCamera, viewport: Rect): Record<string, { x: number; y: number }>;
 }
 
-/** One angle unit per scene: the unit of its angle sliders, of every angle it shows, and (per
- * second or hour) of every rate of an angle and angular velocity it shows. */
-export type AngleUnit = "°" | "rad";
+/** The angle unit of a scene's rates: "°" (°/s, °/h: the slow turns of the Earth scenes, the
+ * Euler-angle rates) or "rad" (rad/s: spins and angular velocities, the core's unit). Angles
+ * themselves are in degrees in every scene (the lab's one angle unit). */
+export type RateUnit = "°" | "rad";
 
 export interface SceneDef {
   id: string;
@@ -131,8 +136,12 @@ export interface SceneDef {
   short: string;
   blurb: string;
   params: Param[];
-  /** The scene's angle unit. */
-  angleUnit: AngleUnit;
+  /** The angle unit of the scene's rates (its angles are in degrees, as in every scene). */
+  rateUnit: RateUnit;
+  /** Share-link parameters of an earlier lab, read when the link lacks the current key: the old
+   * name, the key it became and the factor from the old value to the new (`theta0` in rad →
+   * `tilt` in degrees: 180/π). */
+  legacyParams?: Record<string, { key: string; factor: number }>;
   /** The keys of the three or four readouts pinned on the canvas (for the current parameters). */
   pinned: string[] | ((p: Params) => string[]);
   /** What the 3-D view shows, for the canvas's aria-label. */
@@ -196,20 +205,30 @@ export function fmtStep(x: number, step: number): string {
 
 export const DEG = Math.PI / 180;
 
-/** Angles in a scene's unit: `angle(rad)` and `rate(rad/s)` as text, and the unit's names. */
-export function angles(unit: AngleUnit) {
-  const k = unit === "°" ? 1 / DEG : 1;
+/** Angles and rates as a scene shows them: every angle in degrees (the lab's one angle unit),
+ * rates in the scene's `rateUnit` per second or hour. Values stay in radians (the core's SI);
+ * only the text is converted. */
+export function angles(rateUnit: RateUnit) {
+  const k = rateUnit === "°" ? 1 / DEG : 1;
   return {
-    unit,
-    /** "°" or "rad". */
-    name: unit,
+    /** The angle unit: "°". */
+    name: "°",
+    /** The factors from the core's rad, rad/s and rad/s to what is shown (`Readout.unitScale`). */
+    angleScale: 1 / DEG,
+    rateScale: k,
+    perHourScale: k * 3600,
     /** "°/s" or "rad/s". */
-    perSecond: `${unit}/s`,
+    perSecond: `${rateUnit}/s`,
     /** "°/h" or "rad/h". */
-    perHour: `${unit}/h`,
-    angle: (x: number, digits = 5, scale = 0) => fmt(x * k, digits, scale * k),
+    perHour: `${rateUnit}/h`,
+    /** An angle (rad) in degrees. */
+    angle: (x: number, digits = 5, scale = 0) => fmt(x / DEG, digits, scale / DEG),
+    /** Angles (rad) in degrees. */
+    vec: (v: ArrayLike<number>, digits = 5, scale?: number) => fmtVec(Array.from(v, (x) => x / DEG), digits, scale === undefined ? undefined : scale / DEG),
+    /** A rate (rad/s) in the scene's rate unit. */
     rate: (x: number, digits = 5, scale = 0) => fmt(x * k, digits, scale * k),
+    /** Rates (rad/s) in the scene's rate unit. */
+    rates: (v: ArrayLike<number>, digits = 5, scale?: number) => fmtVec(Array.from(v, (x) => x * k), digits, scale === undefined ? undefined : scale * k),
     perHourRate: (x: number, digits = 5) => fmt(x * k * 3600, digits),
-    vec: (v: ArrayLike<number>, digits = 5, scale?: number) => fmtVec(Array.from(v, (x) => x * k), digits, scale === undefined ? undefined : scale * k),
   };
 }

@@ -9,7 +9,7 @@
 // nearest value the core accepts (I₃ down with I₁, the amplitude down with the length); when it
 // names the moved slider, the moved slider stops at the last value the core accepts. Both are
 // searched by bisection on the sliders' grids (a handful of tries).
-import { DEG, fmt, fmtStep, type NumberParam, type Param, type Params } from "./scene";
+import { fmtStep, type NumberParam, type Param, type Params } from "./scene";
 
 /** Revolutions per minute in 1 rad/s. */
 export const RPM_PER_RAD_S = 60 / (2 * Math.PI);
@@ -77,7 +77,6 @@ export function fromInput(spec: NumberParam, position: string): number {
 export function valueText(spec: NumberParam, x: number): string {
   const s = spec.scale === "log" ? plain(x) : fmtStep(x, spec.step);
   if (spec.unit === "rad/s" && Math.abs(x) >= 10) return `${s} (${rpm(x)} rpm)`;
-  if (spec.unit === "rad") return `${s} (${fmt(x / DEG, 3)}°)`;
   return s;
 }
 
@@ -95,7 +94,6 @@ function plain(x: number): string {
 /** Units in words, for a screen reader (aria-valuetext). */
 const UNIT_WORDS: Record<string, [string, string]> = {
   "°": ["degree", "degrees"],
-  rad: ["radian", "radians"],
   "rad/s": ["radian per second", "radians per second"],
   "rad/s²": ["radian per second squared", "radians per second squared"],
   "°/s": ["degree per second", "degrees per second"],
@@ -116,8 +114,7 @@ export function ariaValueText(spec: NumberParam, x: number): string {
   const n = (spec.scale === "log" ? plain(x) : fmtStep(x, spec.step)).replace("−", "minus ");
   const words = UNIT_WORDS[spec.unit];
   const unit = words ? words[Math.abs(x) === 1 ? 0 : 1] : spec.unit;
-  const said = (y: number) => fmt(y, 3).replace("−", "minus ");
-  const beside = spec.unit === "rad/s" && Math.abs(x) >= 10 ? ` (${rpm(x).replace("−", "minus ")} rpm)` : spec.unit === "rad" ? ` (${said(x / DEG)} degrees)` : "";
+  const beside = spec.unit === "rad/s" && Math.abs(x) >= 10 ? ` (${rpm(x).replace("−", "minus ")} rpm)` : "";
   return `${n} ${unit}${beside}`.trim();
 }
 

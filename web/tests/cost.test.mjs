@@ -10,7 +10,7 @@ import { open, sceneIds, startLab } from "./harness.mjs";
 await startLab();
 const SCENES = await sceneIds();
 /** A 0.2 kg disk of radius 5 cm, 10 cm from its pivot, at 1500 rpm, tilted 30° (0.52 rad). */
-const TABLETOP = "scene=heavytop&preset=waves&w3=157&I1=0.002125&I3=0.00025&mgl=0.196&theta0=0.52";
+const TABLETOP = "scene=heavytop&preset=waves&w3=157&I1=0.002125&I3=0.00025&mgl=0.196&tilt=30";
 
 async function cost(query) {
   const { page, errors } = await open(`?${query}&paused=1`);

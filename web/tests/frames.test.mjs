@@ -4,7 +4,7 @@
 //   cd web && PYTHON=$PWD/../.venv/bin/python node --test --test-concurrency=1 tests/frames.test.mjs
 import { test } from "node:test";
 import assert from "node:assert/strict";
-import { startLab, open, pixels, readouts } from "./harness.mjs";
+import { startLab, open, pixels, readouts, state } from "./harness.mjs";
 
 await startLab();
 
@@ -54,7 +54,7 @@ test("both halves of the canvas are drawn, each with its own content", async () 
 test("the four terms sum to the fixed-frame acceleration F/m at round-off, and follow 2.21", async () => {
   const cases = [
     { t: "2.5" },
-    { omega: "-1.5", omegaDot: "0.3", stiffness: "2", r0: "0.6", speed: "0.4", direction: "1.55", launch: "rotating frame", t: "6.25" },
+    { omega: "-1.5", omegaDot: "0.3", stiffness: "2", r0: "0.6", speed: "0.4", launchAngle: "89", launch: "rotating frame", t: "6.25" },
     { omega: "2", omegaDot: "-0.5", stiffness: "4", t: "7.9" },
   ];
   for (const c of cases) {
@@ -104,10 +104,10 @@ test("with ω = 0 the Coriolis, centripetal and Euler terms vanish (negative con
 });
 
 test("free particle: straight at constant speed when seen fixed, Jacobi integral kept only while ω̇ = 0", async () => {
-  // r0 = (0.8, 0, 0), v0' = 0.6 (cos 2.6, sin 2.6, 0) in the fixed frame (the direction in rad,
-  // the scene's angle unit): it reaches the table's rim, where the loop restarts, at 2.66 s.
-  const v0 = [0.6 * Math.cos(2.6), 0.6 * Math.sin(2.6), 0];
-  const { page } = await open(query({ direction: "2.6", t: "0" }));
+  // r0 = (0.8, 0, 0), v0' = 0.6 (cos 150°, sin 150°, 0) in the fixed frame (the launch direction
+  // in degrees, the lab's angle unit): it reaches the table's rim, where the loop restarts, at 2.68 s.
+  const v0 = [0.6 * Math.cos((150 * Math.PI) / 180), 0.6 * Math.sin((150 * Math.PI) / 180), 0];
+  const { page } = await open(query({ launchAngle: "150", t: "0" }));
   const jacobi = [];
   for (const t of [0, 1.25, 2.0, 2.6]) {
     await page.evaluate((x) => window.__lab.seek(x), t);
@@ -149,4 +149,19 @@ test("seek shows the state at t, the same as opening the page at t", async () =>
   await page.evaluate(() => window.__lab.seek(0.5));
   assert.deepEqual(await readouts(page), before);
   await page.close();
+});
+
+test("the launch direction is in degrees; a link of the earlier lab (direction in rad) still opens at the same launch", async () => {
+  const { page, errors } = await open(query({ launchAngle: "90", t: "0" }));
+  const r = await readouts(page);
+  // Launched along +y in the fixed frame at 0.6 m/s (cos 90° = 6e-17 is round-off).
+  assert.ok(Math.abs(r.velocityFixed[0]) < 1e-12 && Math.abs(r.velocityFixed[1] - 0.6) < 1e-12, JSON.stringify(r.velocityFixed));
+  assert.match(await page.locator("#controls label[data-key=launchAngle]").innerText(), /launch direction \(°\)\s*90\b/);
+  const old = await open(query({ direction: "2.6", t: "0" }));
+  assert.ok(Math.abs((await state(old.page)).params.launchAngle - (2.6 * 180) / Math.PI) < 1e-12);
+  const v = (await readouts(old.page)).velocityFixed;
+  assert.ok(Math.abs(v[0] - 0.6 * Math.cos(2.6)) < 1e-12 && Math.abs(v[1] - 0.6 * Math.sin(2.6)) < 1e-12, JSON.stringify(v));
+  assert.deepEqual([...errors, ...old.errors], []);
+  await page.close();
+  await old.page.close();
 });

@@ -66,7 +66,7 @@ for (const preset of PRESETS) {
     if (preset === "cusps") {
       // Released at rest in θ and φ: φ̇₀ = θ̇₀ = 0, θ₀ the upper turning point.
       assert.deepEqual(r.initialRates.slice(0, 2), [0, 0]);
-      assert.ok(Math.abs(th1 - s.params.theta0) < 1e-15); // θ₀ in rad, the scene's angle unit
+      assert.ok(Math.abs(th1 - s.params.tilt * (Math.PI / 180)) < 1e-15); // the tilt slider's degrees, in rad
     }
     if (preset === "sleeping") assert.equal(r.sleepsStably, true);
     assert.deepEqual(errors, []);
@@ -100,7 +100,7 @@ test("heavytop: θ(t) stays within the turning points over a seek sweep and reac
 
 test("heavytop: the energy recomputed from the state is E to round-off; a perturbed state is not", async () => {
   for (const preset of ["loops", "cusps", "custom"]) {
-    const { page, errors } = await open(q(preset, "&theta0=1.75&phiDot0=-1.2&thetaDot0=0.7"));
+    const { page, errors } = await open(q(preset, "&tilt=100&phiDot0=-1.2&thetaDot0=0.7"));
     const p = Object.fromEntries(Object.entries((await state(page)).params).map(([k, v]) => [k, Number(v)]));
     let checked = 0;
     for (const t of [0, 0.37, 1.9, 4.25, 11.5, 27.3]) {
@@ -163,4 +163,54 @@ test("heavytop: a spin below the minimum for steady precession shows the core's 
   assert.deepEqual([...errors, ...ok.errors], []);
   await ok.page.close();
   await page.close();
+});
+
+test("heavytop: the precession period is one turn of the axis at the mean rate, in words; none where the axis does not turn", async () => {
+  // Steady precession: φ̇ = the core's slow rate, constant; one turn every 2π/|φ̇| s, and φ turns
+  // a quarter turn in a quarter period (read from the state shown, independently of the period).
+  const { page, errors } = await open(q("steady precession", "&t=0"));
+  const r = await readouts(page);
+  const rate = Math.abs(r.meanPrecessionRate);
+  assert.ok(rate > 0);
+  assert.ok(Math.abs(r.precessionPeriod - (2 * Math.PI) / rate) <= 1e-12 * r.precessionPeriod, `${r.precessionPeriod}`);
+  await page.evaluate((tt) => window.__lab.seek(tt), r.precessionPeriod / 4);
+  const phi = (await readouts(page)).angles[0];
+  assert.ok(Math.abs(Math.abs(phi) - Math.PI / 2) < 1e-9, `φ after a quarter period: ${phi}`);
+  const cell = page.locator("#readouts dd[data-key=precessionPeriod], #pinned dd[data-key=precessionPeriod]").first();
+  const text = await cell.innerText();
+  assert.match(text, /^one turn every [\d.]+ s$/, text);
+  assert.equal(Number(text.match(/[\d.]+/)[0]), Number(r.precessionPeriod.toPrecision(3)));
+  assert.equal(await page.locator("#pinned dd[data-key=precessionPeriod]").count(), 1, "the period is pinned on the view");
+  // A sleeping top: the axis stays upright, no turn: "—" with the reason, never a number or ∞.
+  const sleeping = await open(q("sleeping"));
+  const s = await readouts(sleeping.page);
+  assert.equal(s.precessionPeriod, "Infinity");
+  const none = await sleeping.page.locator("#readouts dd[data-key=precessionPeriod], #pinned dd[data-key=precessionPeriod]").first().innerText();
+  assert.match(none, /^— \(the axis does not turn on average/, none);
+  assert.deepEqual([...errors, ...sleeping.errors], []);
+  await sleeping.page.close();
+  await page.close();
+});
+
+test("heavytop: the tilt is in degrees on its slider, readouts and link; a link of the earlier lab (theta0 in rad) still opens", async () => {
+  const { page, errors } = await open(q("cusps", "&tilt=30"));
+  const label = await page.locator("#controls label[data-key=tilt]").innerText();
+  assert.match(label, /tilt θ₀ \(°\)\s*30\b/, label);
+  assert.ok(!/rad\b(?!\/)/.test(label), label);
+  const r = await readouts(page);
+  assert.ok(Math.abs(r.turningPoints[0] - Math.PI / 6) < 1e-15, `θ₁ = ${r.turningPoints[0]} rad for a 30° tilt`);
+  const tp = await page.locator("#readouts dd[data-key=turningPoints], #pinned dd[data-key=turningPoints]").first().innerText();
+  assert.equal(Number(tp.split(",")[0]), 30, tp);
+  assert.match(await page.evaluate(() => location.search), /[?&]tilt=30(&|$)/);
+  // The earlier lab's link: theta0=0.52 rad is a 29.79° tilt (not 0.52°), and the link written
+  // back says tilt in degrees; a link with both keys takes tilt.
+  const old = await open(q("cusps", "&theta0=0.52"));
+  const p = (await state(old.page)).params;
+  assert.ok(Math.abs(p.tilt - (0.52 * 180) / Math.PI) < 1e-12, `tilt ${p.tilt}`);
+  assert.ok(Math.abs((await readouts(old.page)).turningPoints[0] - 0.52) < 1e-15);
+  assert.match(await old.page.evaluate(() => location.search), /[?&]tilt=29\.79/);
+  const both = await open(q("cusps", "&theta0=0.52&tilt=40"));
+  assert.equal((await state(both.page)).params.tilt, 40);
+  assert.deepEqual([...errors, ...old.errors, ...both.errors], []);
+  for (const x of [page, old.page, both.page]) await x.close();
 });

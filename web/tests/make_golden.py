@@ -155,7 +155,7 @@ def frames_case(params: dict[str, Any], t: float) -> dict[str, Any]:
     w, wd, k = params["omega"], params["omegaDot"], params["stiffness"]
     frame0 = poinsot.MovingFrame(angular_velocity=[0.0, 0.0, w], angular_acceleration=[0.0, 0.0, wd])
     r0 = np.array([params["r0"], 0.0, 0.0])
-    d = params["direction"]  # rad, the scene's angle unit
+    d = math.radians(params["launchAngle"])  # the slider's degrees (the lab's angle unit) in rad
     launch = np.array([params["speed"] * math.cos(d), params["speed"] * math.sin(d), 0.0])
 
     def accel(x: np.ndarray) -> np.ndarray:
@@ -225,7 +225,7 @@ def frames_case(params: dict[str, Any], t: float) -> dict[str, Any]:
     return {"scene": "frames", "params": params, "t": t, "readouts": readouts}
 
 
-FRAMES = {"omega": 1, "omegaDot": 0, "stiffness": 0, "r0": 0.8, "speed": 0.6, "direction": 2.6,
+FRAMES = {"omega": 1, "omegaDot": 0, "stiffness": 0, "r0": 0.8, "speed": 0.6, "launchAngle": 149,
           "launch": "fixed frame"}
 
 INERTIA_MOTIONS = ("Chasles", "Euler")
@@ -343,7 +343,7 @@ def heavytop_case(params: dict[str, Any], t: float) -> dict[str, Any]:
     """The heavy top (2.102–2.121): the page's preset → initial state (θ̇₀ = 0 and φ̇₀ a fraction of
     the slow steady-precession rate; sleeping: θ₀ = 0; custom: the sliders), then the readouts."""
     i1, i3, mgl, w3 = params["I1"], params["I3"], params["mgl"], params["w3"]
-    theta0 = params["theta0"]  # rad, the scene's angle unit
+    theta0 = math.radians(params["tilt"])  # the slider's degrees (the lab's angle unit) in rad
     preset = params["preset"]
     theta_dot0, phi_dot0 = 0.0, 0.0
     if preset == "sleeping":
@@ -372,6 +372,8 @@ def heavytop_case(params: dict[str, Any], t: float) -> dict[str, Any]:
         "turningPoints": list(top.turning_points),
         "nutationPeriod": top.nutation_period,
         "meanPrecessionRate": top.mean_precession_rate,
+        # inf where the axis does not turn on average: the page's value is then the string.
+        "precessionPeriod": top.precession_period if math.isfinite(top.precession_period) else "Infinity",
         "steadyRates": steady,
         "minSpin": min_spin,
         "sleepingThreshold": poinsot.HeavyTop.sleeping_threshold(i1, i3, mgl),
@@ -388,7 +390,7 @@ def heavytop_case(params: dict[str, Any], t: float) -> dict[str, Any]:
     return {"scene": "heavytop", "params": params, "t": t, "readouts": readouts}
 
 
-HEAVYTOP = {"preset": "loops", "w3": 9, "theta0": 0.87, "phiDot0": 0.5, "thetaDot0": 0, "mgl": 1.5,
+HEAVYTOP = {"preset": "loops", "w3": 9, "tilt": 50, "phiDot0": 0.5, "thetaDot0": 0, "mgl": 1.5,
             "I1": 1, "I3": 0.5}
 
 
@@ -416,7 +418,7 @@ def cases() -> list[dict[str, Any]]:
         frames_case(FRAMES, 2.5),  # free particle: straight when fixed, curved when rotating
         # Spinning up (Euler term) with a spring, launched across the table in its own frame.
         frames_case({**FRAMES, "omega": -1.5, "omegaDot": 0.3, "stiffness": 2, "r0": 0.6, "speed": 0.4,
-                     "direction": 1.55, "launch": "rotating frame"}, 6.25),
+                     "launchAngle": 89, "launch": "rotating frame"}, 6.25),
         frames_case({**FRAMES, "omega": 0, "stiffness": 1}, 1.7),  # no rotation: no fictitious terms
         inertia_case(INERTIA, 1.7),  # asymmetric top, mid-screw
         inertia_case({**INERTIA, "shape": "cone", "a": 0.5, "b": 1.5, "mass": 3.3}, 3.25),  # CM off the origin
@@ -428,11 +430,11 @@ def cases() -> list[dict[str, Any]]:
         poinsot_case({**POINSOT, "axis": "smallest", "eps": 0.3, "a": 0.1, "b": 0.3, "c": 0.18}, 40.0),
         poinsot_case({**POINSOT, "axis": "largest", "eps": 0.8, "spin": 2.5}, 0.0),
         heavytop_case(HEAVYTOP, 3.7),  # loops
-        heavytop_case({**HEAVYTOP, "preset": "cusps", "w3": 12, "theta0": 0.52}, 5.25),
+        heavytop_case({**HEAVYTOP, "preset": "cusps", "w3": 12, "tilt": 30}, 5.25),
         heavytop_case({**HEAVYTOP, "preset": "waves", "mgl": 2, "I1": 1.2, "I3": 0.7}, 1.1),
-        heavytop_case({**HEAVYTOP, "preset": "steady precession", "theta0": 2.09}, 2.0),
+        heavytop_case({**HEAVYTOP, "preset": "steady precession", "tilt": 120}, 2.0),
         heavytop_case({**HEAVYTOP, "preset": "sleeping", "w3": 7}, 1.0),
-        heavytop_case({**HEAVYTOP, "preset": "custom", "theta0": 1.75, "phiDot0": -1.2, "thetaDot0": 0.7}, 4.0),
+        heavytop_case({**HEAVYTOP, "preset": "custom", "tilt": 100, "phiDot0": -1.2, "thetaDot0": 0.7}, 4.0),
     ]
 
 

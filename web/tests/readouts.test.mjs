@@ -8,7 +8,7 @@
 import { test } from "node:test";
 import assert from "node:assert/strict";
 import { open, readouts, sceneIds, startLab, state } from "./harness.mjs";
-import { angleUnits, numberFormatProblems, numbersIn, signProblems } from "./view_checks.mjs";
+import { angleUnits, numberFormatProblems, numbersIn, radianAngles, signProblems } from "./view_checks.mjs";
 
 await startLab();
 const SCENES = await sceneIds();
@@ -24,7 +24,10 @@ const shown = (page) =>
   });
 /** The labels of the visible controls and their values. */
 const controls = (page) =>
-  page.evaluate(() => [...document.querySelectorAll("#controls label:not([hidden])")].map((l) => ({ key: l.dataset.key, label: l.firstElementChild.textContent, out: l.querySelector("output")?.textContent ?? "" })));
+  page.evaluate(() => [...document.querySelectorAll("#controls label:not([hidden])")].map((l) => ({
+    key: l.dataset.key, label: l.firstElementChild.textContent, out: l.querySelector("output")?.textContent ?? "",
+    said: l.querySelector("input")?.getAttribute("aria-valuetext") ?? "",
+  })));
 
 /** Scene states whose readouts are checked besides the defaults: gimbal lock, an equator, a
  * lamina, a spring, the tumbling box, a warning, a southern latitude, the custom top. */
@@ -33,10 +36,10 @@ const STATES = [
   "scene=euler&theta=0", "scene=euler&seq=zyx&theta=90", "scene=foucault&latitude=0", "scene=foucault&latitude=-60&length=80",
   "scene=low&latitude=-30", "scene=low&latitude=0", "scene=inertia&shape=disk&motion=Euler", "scene=inertia&motion=Chasles",
   "scene=frames&stiffness=2&omegaDot=0.3", "scene=poinsot&view=tumbling+box&axis=smallest", "scene=drop&latitude=-33",
-  "scene=heavytop&preset=custom&theta0=1.75&phiDot0=-1.2&thetaDot0=0.7",
+  "scene=heavytop&preset=custom&tilt=100&phiDot0=-1.2&thetaDot0=0.7",
 ];
 
-test("every readout uses the one number format, each scene one angle unit, and signs agree with the values", async () => {
+test("every readout uses the one number format, every angle is in degrees (no slider or readout in radians), and signs agree with the values", async () => {
   for (const q of STATES) {
     const { page, errors } = await open(`?${q}&paused=1&t=2.5`);
     const cells = await shown(page);
@@ -47,8 +50,8 @@ test("every readout uses the one number format, each scene one angle unit, and s
       assert.deepEqual(signProblems(c.key, c.value, c.text), [], `${q} ${c.key}`);
     }
     for (const c of ctl) assert.deepEqual(numberFormatProblems(c.out), [], `${q} slider ${c.key}`);
-    const units = angleUnits([...cells.flatMap((c) => [c.label, c.text]), ...ctl.map((c) => c.label)]);
-    assert.ok(units.length <= 1, `${q}: angles in ${units.join(" and ")}`);
+    // One angle unit for the lab, degrees: "rad" only in a rate (rad/s, rad/s²), never an angle.
+    assert.deepEqual(radianAngles([...cells.flatMap((c) => [c.label, c.text]), ...ctl.flatMap((c) => [c.label, c.out, c.said])]), [], q);
     assert.deepEqual(errors, [], q);
     await page.close();
   }
@@ -63,6 +66,10 @@ test("negative controls: mixed formats, two angle units and a flipped sign are c
   assert.deepEqual(numbersIn("−1.554×10⁻¹⁵").map((n) => n.value), [-1.554e-15]);
   assert.deepEqual(angleUnits(["φ, θ, ψ (rad)", "θ₁, θ₂ (°)"]), ["rad", "°"]);
   assert.deepEqual(angleUnits(["radius (m)", "θ₁ (rad)"]), ["rad"]);
+  // The earlier heavy top's tilt slider and readouts, and the rotating frames' launch direction.
+  assert.deepEqual(radianAngles(["tilt θ₀ (rad)", "0.87 (49.8°)", "0.87 radians (49.8 degrees)", "θ₁, θ₂ (rad)", "launch direction (rad)"]),
+    ["tilt θ₀ (rad)", "0.87 radians (49.8 degrees)", "θ₁, θ₂ (rad)", "launch direction (rad)"]);
+  assert.deepEqual(radianAngles(["ω₃ (rad/s, 2.99)", "table ω̇ (rad/s²)", "157 radians per second (1499 rpm)", "θ₁, θ₂ (°)", "radius (m)"]), []);
   assert.equal(signProblems("foucaultRate", -5.1563e-5, "−5.15630×10⁻⁵ (10.64)").length, 1);
   assert.deepEqual(signProblems("energyNow", 0.66, "0.66 (rel. drift −2.1×10⁻¹⁶)"), []);
   assert.equal(signProblems("v", [1, -2], "(1, 2)").length, 1);

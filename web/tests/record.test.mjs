@@ -24,7 +24,8 @@ for (const scene of SCENES) {
     const want = /\[(\d+)\]$/.test(key) ? now[Number(key.match(/\[(\d+)\]$/)[1])] : now;
     assert.equal(series.t.length, 41, `${scene}: ${series.t.length} times recorded`);
     assert.equal(series.t[40], 1);
-    assert.equal(series.v[40], want, `${scene}: the record's last value is the readout's`);
+    // In the unit the readout's label names (degrees for an angle, whose value is in rad).
+    assert.equal(series.v[40], want * series.scale, `${scene}: the record's last value is the readout's`);
     await page.evaluate(() => document.getElementById("record-key").dispatchEvent(new Event("change")));
     assert.equal(await page.locator("#record-plot").getAttribute("data-points"), "41");
     assert.match(await page.locator("#record-plot").getAttribute("aria-label"), / against time t \(s\), 41 points$/);
@@ -55,10 +56,18 @@ test("sliders say their value with its unit; a spin in rpm beside rad/s", async 
   const { page, errors } = await open("?scene=heavytop&paused=1");
   const said = (name) => page.locator(`input[name=${name}]`).getAttribute("aria-valuetext");
   assert.equal(await said("w3"), "9 radians per second");
-  assert.equal(await said("theta0"), "0.87 radians (49.8 degrees)");
+  assert.equal(await said("tilt"), "50 degrees");
   assert.equal(await said("I1"), "1 kilogram square metre");
   // A vector readout's components are plotted by their own names.
-  assert.equal(await page.locator('#record-key option[value="angles[1]"]').textContent(), "θ (rad)");
+  // In the unit its label names, as the readout's text: θ in degrees (the lab's angle unit), not
+  // the radians of the value the core gives.
+  assert.equal(await page.locator('#record-key option[value="angles[1]"]').textContent(), "θ (°)");
+  await page.evaluate(() => { for (let k = 1; k <= 4; k++) window.__lab.seek(k / 4); });
+  const theta = await page.evaluate(() => window.__lab.record().series("angles[1]").v.at(-1));
+  const rad = (await readouts(page)).angles[1];
+  assert.ok(Math.abs(theta - (rad * 180) / Math.PI) < 1e-12 * theta, `θ recorded ${theta} for ${rad} rad`);
+  const omega3 = await page.evaluate(() => window.__lab.record().series("omega3").v.at(-1));
+  assert.equal(omega3, 9); // a rate stays in rad/s, as its label
   await page.evaluate(() => {
     const input = document.querySelector("input[name=w3]");
     input.value = input.max;

@@ -65,6 +65,12 @@ export function angleUnits(texts) {
   return [...units].sort();
 }
 
+/** The texts that show an angle in radians: "rad" or "radian(s)" not followed by a "per" ("/s",
+ * "/s²", " per second"): a rate in rad/s is not an angle. The lab's one angle unit is degrees. */
+export function radianAngles(texts) {
+  return texts.filter((t) => /\brad\b(?!\s*\/)|\bradians?\b(?!\s+per\b)/.test(t));
+}
+
 /** Whether a readout's numbers have the signs of its value: a number, or an array shown as as
  * many numbers in order. A number shown as 0 (below the precision) has no sign to check; numbers
  * after "drift" or "change" are differences shown beside the value, not the value. */

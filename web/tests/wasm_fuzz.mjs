@@ -30,6 +30,7 @@ export const INFINITE = {
   "FreeRigidBody.flipInterval": "half the period, infinite on the separatrix",
   "Screw.pitch": "a pure translation (angle 0)",
   "HeavyTop.nutationPeriod": "θ never returns (an unstable sleeping top)",
+  "HeavyTop.precessionPeriod": "the axis does not turn on average (a sleeping or hanging top)",
   "HeavyTop.cubicRoots": "the third root u₃ when m g l = 0",
   "HeavyTop.effectivePotential": "V(θ) at a pole where its numerator does not vanish",
   "HeavyTop.effectivePotentialDerivative": "dV/dθ at a pole where V is infinite",

@@ -180,6 +180,14 @@ impl HeavyTop {
     pub fn nutation_period(&self) -> f64 {
         self.inner.nutation_period().unwrap_or(f64::INFINITY)
     }
+    /// The precession period 2π/|⟨φ̇⟩| (s): one turn of the axis about the vertical at the mean
+    /// precession rate (for steady precession exactly the time φ takes to advance by 2π);
+    /// `Infinity` where the axis does not turn on average (a sleeping or hanging top), as in
+    /// Python.
+    #[wasm_bindgen(getter, js_name = precessionPeriod)]
+    pub fn precession_period(&self) -> f64 {
+        self.inner.precession_period().unwrap_or(f64::INFINITY)
+    }
 
     /// Angles and rates at one time `t` (s): `[φ, θ, ψ, φ̇, θ̇, ψ̇]`.
     pub fn state(
@@ -414,6 +422,27 @@ mod tests {
         }
         assert_eq!(top.initial_state()[1], 0.7);
         assert!(top.nutation_period().is_finite());
+        assert_eq!(top.precession_period(), core.precession_period().unwrap());
+    }
+
+    #[test]
+    fn precession_period_is_one_turn_at_the_mean_rate_and_infinite_when_the_axis_does_not_turn() {
+        // Steady precession: φ advances by 2π in exactly one period.
+        let (i1, i3, mgl, theta0, w3) = (1.0, 0.5, 1.5, 0.87, 12.0);
+        let slow = an::steady_precession(i1, i3, mgl, theta0, w3).unwrap().slow;
+        let top = HeavyTop::from_spin(i1, i3, mgl, 0.0, theta0, 0.0, slow, 0.0, w3).unwrap();
+        let period = top.precession_period();
+        assert!((period - 2.0 * std::f64::consts::PI / slow.abs()).abs() < ROUND_OFF * period);
+        // φ turns at that rate: a quarter turn in a quarter period.
+        let phi = top.state(period / 4.0).unwrap()[0];
+        assert!((phi - slow * period / 4.0).abs() < 1e-9, "{phi}");
+        assert!(
+            (phi.abs() - std::f64::consts::FRAC_PI_2).abs() < 1e-9,
+            "{phi}"
+        );
+        // A sleeping top: the axis stays upright, no turn, no period (Infinity, not NaN).
+        let sleeping = HeavyTop::from_spin(i1, i3, mgl, 0.0, 0.0, 0.0, 0.0, 0.0, 7.0).unwrap();
+        assert_eq!(sleeping.precession_period(), f64::INFINITY);
     }
 
     #[test]

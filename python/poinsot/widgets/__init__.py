@@ -5,7 +5,11 @@ Each widget is an `anywidget <https://anywidget.dev>`_ whose front end
 scene on the same WebAssembly core as the lab; no physics runs in JavaScript or in this module.
 The scene's parameters are the synced trait ``params`` (a dict, in the units of the scene's
 sliders): moving a slider changes ``w.params`` in Python, assigning ``w.params`` (or a property
-below) moves the scene and its sliders.
+below) moves the scene and its sliders. Angles in ``params`` are in degrees, as on every slider of
+the lab (its one angle unit: ``tilt``, ``launchAngle``); rates are in rad/s. The objects the
+properties build (``w.top``, ``w.body``) are the Python API's, in SI units (radians): the
+conversion happens once, here, as in the lab where a scene calls the core. The keys of an earlier
+version, ``theta0`` and ``direction`` in radians, are still accepted and converted to degrees.
 
 - :class:`HeavyTopWidget` — the heavy symmetric top (the unit's 2.102–2.121); ``w.top`` is a
   :class:`poinsot.HeavyTop`.
@@ -93,6 +97,12 @@ BOX_MASS: float = _SCENES["poinsot"]["boxMass"]
 #: The heavy top's presets released at a fraction of the core's slow steady precession at θ₀:
 #: that fraction, by preset (the lab's).
 _PRECESSION_FACTORS: dict[str, float] = _SCENES["heavytop"]["precessionFactors"]
+#: The parameters of an earlier version, by scene: an angle in radians whose slider is now in
+#: degrees (``theta0`` -> ``tilt``, ``direction`` -> ``launchAngle``), still accepted.
+_LEGACY: dict[str, dict[str, str]] = {
+    scene: {old: spec["key"] for old, spec in _SCENES[scene].get("legacyParams", {}).items()}
+    for scene in ("heavytop", "poinsot", "frames")
+}
 #: The Poinsot scene's names of the spun axis, by the rank of its moment.
 _RANKS = ("smallest", "intermediate", "largest")
 #: Relative tolerance of the round trip object -> params -> object (a few roundings).
@@ -107,6 +117,18 @@ def _check_params(scene: str, given: Any, name: str) -> dict[str, Any]:
         raise PoinsotError(
             f"{name}: must be a dict of the scene's parameters, got {type(given).__name__}"
         )
+    legacy = {old: new for old, new in _LEGACY[scene].items() if old in given}
+    if legacy:
+        given = dict(given)
+        for old, new in legacy.items():
+            if new in given:
+                raise PoinsotError(
+                    f"{name}: give {new} (degrees) or {old} (radians, the earlier key), not both"
+                )
+            v = given.pop(old)
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+                raise PoinsotError(f"{name}: {old} must be a finite number (radians), got {v!r}")
+            given[new] = math.degrees(v)
     unknown = sorted(set(given) - set(spec))
     if unknown:
         raise PoinsotError(
@@ -165,8 +187,9 @@ class HeavyTopWidget(_SceneWidget):
         The top to show (``w.top = top``); the lab's default top (the "loops" preset) if None.
     **params
         Or the scene's parameters by key (see ``SCENE_PARAMS["heavytop"]``): ``preset``, ``w3``
-        (spin ω₃, rad/s), ``theta0`` (rad), ``phiDot0``, ``thetaDot0`` (rad/s; the "custom"
-        preset), ``mgl`` (N·m), ``I1``, ``I3`` (kg·m²).
+        (spin ω₃, rad/s), ``tilt`` (θ₀ in degrees, as the lab's slider), ``phiDot0``,
+        ``thetaDot0`` (rad/s; the "custom" preset), ``mgl`` (N·m), ``I1``, ``I3`` (kg·m²).
+        ``theta0`` (radians, the earlier key) is accepted and converted to ``tilt``.
 
     Raises
     ------
@@ -194,11 +217,13 @@ class HeavyTopWidget(_SceneWidget):
     @property
     def top(self) -> HeavyTop:
         """The top the scene shows now, built by :meth:`HeavyTop.from_spin` from ``params`` as
-        the scene builds it (a preset's initial rates from the core's steady precession, 2.116);
-        assigning a :class:`HeavyTop` sets ``params`` (preset "custom")."""
+        the scene builds it (θ₀ = ``tilt`` in radians; a preset's initial rates from the core's
+        steady precession, 2.116); assigning a :class:`HeavyTop` sets ``params`` (preset
+        "custom", ``tilt`` in degrees)."""
         p = self.params
         I1, I3, mgl, w3 = p["I1"], p["I3"], p["mgl"], p["w3"]
-        preset, theta0 = p["preset"], p["theta0"]
+        # The slider's degrees to the core's radians, as the scene does (x * pi/180).
+        preset, theta0 = p["preset"], math.radians(p["tilt"])
         # The scene's presets (web/src/scenes/heavytop.ts, initialState): initial conditions, not
         # physics; loops/waves/steady are released at a fraction of the core's slow rate
         # (scenes.json's precessionFactors).
@@ -227,7 +252,7 @@ class HeavyTopWidget(_SceneWidget):
         params = {
             "preset": "custom",
             "w3": top.omega3,
-            "theta0": s["theta"],
+            "tilt": math.degrees(s["theta"]),
             "phiDot0": s["phi_dot"],
             "thetaDot0": s["theta_dot"],
             "mgl": top.mgl,
@@ -345,8 +370,9 @@ class FramesWidget(_SceneWidget):
     ----------
     **params
         The scene's parameters (``SCENE_PARAMS["frames"]``): ``omega`` (rad/s), ``omegaDot``
-        (rad/s²), ``stiffness`` (N/m, m = 1 kg), ``r0`` (m), ``speed`` (m/s), ``direction``
-        (rad), ``launch`` ("fixed frame" or "rotating frame").
+        (rad/s²), ``stiffness`` (N/m, m = 1 kg), ``r0`` (m), ``speed`` (m/s), ``launchAngle``
+        (degrees, as the lab's slider; ``direction`` in radians, the earlier key, is accepted and
+        converted), ``launch`` ("fixed frame" or "rotating frame").
 
     Raises
     ------

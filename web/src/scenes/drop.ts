@@ -21,7 +21,7 @@ export const dropScene: SceneDef = {
   id: "drop",
   title: "Falling body",
   short: "Fall",
-  angleUnit: "°",
+  rateUnit: "°",
   pinned: ["east", "eastFirstOrder", "ratio", "foucaultRate"],
   describe: "a tower on the ground of the rotating Earth, a ball dropped from its top, and where it lands east of the plumb line (exact, white ring; the unit's 2.42, yellow dot); east, north and up are labelled and a compass lies on the ground",
   blurb:
@@ -170,7 +170,7 @@ export const dropScene: SceneDef = {
           { key: "north", label: "north, exact (m)", value: fall.north, text: fmt(fall.north, 6) },
           { key: "eastFirstOrder", label: "east, 2.42 (m)", value: firstOrder, text: fmt(firstOrder, 6) },
           { key: "ratio", label: "exact / 2.42", value: ratio, text: fmt(ratio, 10) },
-          { key: "foucaultRate", label: `Foucault rate −Ω sin λ (${A.perHour})`, value: foucault, text: A.perHourRate(foucault) },
+          { key: "foucaultRate", label: `Foucault rate −Ω sin λ (${A.perHour})`, unitScale: A.perHourScale, value: foucault, text: A.perHourRate(foucault) },
           ...(drawing ? [drawing] : []),
         ];
       },

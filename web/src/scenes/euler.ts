@@ -19,7 +19,7 @@ export const eulerScene: SceneDef = {
   id: "euler",
   title: "Euler angles",
   short: "Euler",
-  angleUnit: "°",
+  rateUnit: "°",
   pinned: ["angles", "angle", "axis", "gimbalLock"],
   describe: "a plate with a fin turned by three Euler angles, the three rotation discs of a gimbal and the dashed line of nodes; the fixed axes x, y, z and the body axes 1, 2, 3 are labelled",
   blurb:
@@ -114,7 +114,7 @@ export const eulerScene: SceneDef = {
         let ratesValue: number[] | string;
         try {
           ratesValue = Array.from(eulerRates(angles, omega, seq, intrinsic));
-          ratesText = A.vec(ratesValue, 4);
+          ratesText = A.rates(ratesValue, 4);
         } catch (e) {
           // The core's error, in full in the value and the tooltip; in a few words on the page.
           const err = e as Error;
@@ -126,15 +126,15 @@ export const eulerScene: SceneDef = {
         state = {
           angles, rates, R,
           readouts: [
-            { key: "angles", label: `angles (${A.name})`, value: angles, text: A.vec(angles, 5, 1) },
+            { key: "angles", label: `angles (${A.name})`, unitScale: A.angleScale, value: angles, text: A.vec(angles, 5, 1) },
             { key: "R", label: "R (rows)", value: Array.from(R), text: [0, 1, 2].map((i) => fmtVec(R.subarray(3 * i, 3 * i + 3), 4, 1)).join(" ") },
             { key: "axis", label: "rotation axis", value: [ax, ay, az], text: fmtVec([ax, ay, az], 4, 1) },
-            { key: "angle", label: `rotation angle (${A.name})`, value: angle, text: A.angle(angle, 6) },
-            { key: "recovered", label: `angles from R (${A.name})`, value: recovered, text: A.vec(recovered, 5, 1) },
+            { key: "angle", label: `rotation angle (${A.name})`, unitScale: A.angleScale, value: angle, text: A.angle(angle, 6) },
+            { key: "recovered", label: `angles from R (${A.name})`, unitScale: A.angleScale, value: recovered, text: A.vec(recovered, 5, 1) },
             { key: "gimbalLock", label: "gimbal lock", value: lock, text: lock ? "yes: only a sum/difference of the outer angles is defined" : "no", warn: lock },
-            { key: "discSeparation", label: `disc 1 ∠ disc 3 (${A.name})`, value: sep, text: A.angle(sep, 4), warn: lock },
-            { key: "omegaBody", label: `ω body (${A.perSecond}, 2.99)`, value: Array.from(omega), text: A.vec(omega, 5) },
-            { key: "ratesFromOmega", label: `rates from ω (${A.perSecond})`, value: ratesValue, text: ratesText, detail: ratesDetail, warn: typeof ratesValue === "string" },
+            { key: "discSeparation", label: `disc 1 ∠ disc 3 (${A.name})`, unitScale: A.angleScale, value: sep, text: A.angle(sep, 4), warn: lock },
+            { key: "omegaBody", label: `ω body (${A.perSecond}, 2.99)`, unitScale: A.rateScale, value: Array.from(omega), text: A.rates(omega, 5) },
+            { key: "ratesFromOmega", label: `rates from ω (${A.perSecond})`, unitScale: A.rateScale, value: ratesValue, text: ratesText, detail: ratesDetail, warn: typeof ratesValue === "string" },
           ],
         };
       },

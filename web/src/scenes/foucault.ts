@@ -59,7 +59,7 @@ export const foucaultScene: SceneDef = {
   id: "foucault",
   title: "Foucault pendulum",
   short: "Foucault",
-  angleUnit: "°",
+  rateUnit: "°",
   pinned: ["tau", "precessionRate", "expectedRate", "sense"],
   describe: "a pendulum hanging from a beam over a round floor, its trace on the floor and its swing plane (white); east, north and up are labelled and a compass lies around the floor",
   blurb:
@@ -227,10 +227,10 @@ export const foucaultScene: SceneDef = {
         out = [
           { key: "tau", label: "t in the run (s)", value: tau, text: fmt(tau, 5) },
           { key: "position", label: "bob (x, y, z) (m)", value: Array.from(s.subarray(0, 3)), text: fmtVec(s.subarray(0, 3)) },
-          { key: "expectedRate", label: `−Ω sin λ (${A.perSecond})`, value: expected, text: A.rate(expected, 6), warn: !holds },
+          { key: "expectedRate", label: `−Ω sin λ (${A.perSecond})`, unitScale: A.rateScale, value: expected, text: A.rate(expected, 6), warn: !holds },
           { key: "regime", label: "regime", value: regime, text: REGIMES[regime] ?? regime, detail: run.regimeNote, warn: regime !== "precessing" && regime !== "still" },
-          { key: "precessionRate", label: `fitted rate (${A.perSecond})`, value: fitted ?? "undefined", text: rateText(fitted) },
-          { key: "theoryRate", label: `small-swing theory (${A.perSecond})`, value: theory ?? "undefined", text: rateText(theory) },
+          { key: "precessionRate", label: `fitted rate (${A.perSecond})`, unitScale: A.rateScale, value: fitted ?? "undefined", text: rateText(fitted) },
+          { key: "theoryRate", label: `small-swing theory (${A.perSecond})`, unitScale: A.rateScale, value: theory ?? "undefined", text: rateText(theory) },
           {
             key: "unitRate", label: "does −Ω sin λ apply?", value: holds,
             text: unitRate, detail: run.unitRateNote, warn: !holds, pin: !holds,

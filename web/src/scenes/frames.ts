@@ -7,9 +7,9 @@
 // (read from the core's path), so that it never leaves the table.
 import * as THREE from "three";
 import { MovingFrame, SpringParticle, sampleTimes, simulateParticle } from "../core";
-import { fmt, fmtVec, type Params, type Readout, type Rect, type SceneDef } from "../scene";
+import { DEG, fmt, fmtVec, type Params, type Readout, type Rect, type SceneDef } from "../scene";
 import { Arrow, axisLabels, bufferLine, disposeTree, fixedAxes, Labels, matrix4, projectBox, vec } from "../view";
-import { sceneParams } from "./params";
+import { legacyParams, sceneParams } from "./params";
 
 /** Drawn radius of the turntable (m). */
 const TABLE = 1;
@@ -73,7 +73,7 @@ export const framesScene: SceneDef = {
   id: "frames",
   title: "Rotating frames",
   short: "Frames",
-  angleUnit: "rad",
+  rateUnit: "rad",
   pinned: ["tau", "speedFixed", "speedRotating", "omegaNow"],
   describe: "a turntable and a particle seen side by side from the fixed frame (left, the table turns) and from the table's own frame (right, the table at rest), with its path and the arrows of its acceleration and of the forces per mass; the fixed axes x′, y′ and the table's axes x, y are labelled",
   blurb:
@@ -82,6 +82,7 @@ export const framesScene: SceneDef = {
     "a free particle (k = 0) runs straight on the left and curves on the right. Arrows on the right: the relative acceleration and the forces per mass that make it. " +
     "Primed axes (x′, y′) are fixed, unprimed ones (x, y) turn with the table; the loop restarts when the particle reaches the rim.",
   params: sceneParams("frames"),
+  legacyParams: legacyParams("frames"),
   create(ctx) {
     const root = new THREE.Group();
     ctx.scene.add(root);
@@ -238,7 +239,7 @@ export const framesScene: SceneDef = {
 
         // At t = 0 the frames coincide; the launch velocity is given in one of them (polar input).
         r0 = Float64Array.of(Number(p.r0), 0, 0);
-        const dir = Number(p.direction);
+        const dir = Number(p.launchAngle) * DEG; // the slider's degrees → the core's radians
         const launch = Float64Array.of(Number(p.speed) * Math.cos(dir), Number(p.speed) * Math.sin(dir), 0);
         let v0fixed: Float64Array;
         if (p.launch === "rotating frame") {

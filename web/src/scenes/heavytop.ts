@@ -6,9 +6,9 @@
 // the steady-precession roots used by the presets, and the energy recomputed from the state at t.
 import * as THREE from "three";
 import { eulerToMatrix, HeavyTop } from "../core";
-import { angles, fmt, type Params, type Readout, type SceneDef } from "../scene";
+import { angles, DEG, fmt, type Params, type Readout, type SceneDef } from "../scene";
 import { axisLabels, bufferLine, disposeTree, fixedAxes, matrix4 } from "../view";
-import { choiceOptions, PRECESSION_FACTORS, sceneParams } from "./params";
+import { choiceOptions, legacyParams, PRECESSION_FACTORS, sceneParams } from "./params";
 
 export const PRESETS = choiceOptions("heavytop", "preset");
 
@@ -22,17 +22,18 @@ const TRAIL_CAPACITY = 4000;
 /** The trail's finest time step (s): at most 8 new points per 60 Hz frame of motion, however
  * fast the top nutates (a 1500 rpm tabletop top nods tens of times a second). */
 const MIN_TRAIL_DT = 1 / 480;
-/** The scene's angle unit: radians, as its rate sliders (rad/s) and the unit's equations. */
+/** Angles in degrees (the lab's one angle unit), rates in rad/s as the spin slider (rpm beside). */
 const A = angles("rad");
 /** Below this stage width (CSS px) the V(θ) inset starts folded, so that it does not cover the top. */
 const NARROW_STAGE = 600;
 
-/** The initial state a preset starts from: θ₀ (rad), θ̇₀, φ̇₀ (rad/s), given the spin ω₃ (the
+/** The initial state a preset starts from: θ₀ (rad, from the tilt slider's degrees: the one
+ * conversion to the core's radians), θ̇₀, φ̇₀ (rad/s), given the spin ω₃ (the
  * steady-precession root comes from the core). Choosing initial conditions is not physics:
  * each preset is a fraction of the core's slow steady-precession rate at θ₀. */
 function initialState(p: Params): { theta0: number; thetaDot0: number; phiDot0: number } {
   const I1 = Number(p.I1), I3 = Number(p.I3), mgl = Number(p.mgl), w3 = Number(p.w3);
-  const theta0 = Number(p.theta0);
+  const theta0 = Number(p.tilt) * DEG;
   const preset = String(p.preset);
   if (preset === "sleeping") return { theta0: 0, thetaDot0: 0, phiDot0: 0 };
   if (preset === "custom") return { theta0, thetaDot0: Number(p.thetaDot0), phiDot0: Number(p.phiDot0) };
@@ -43,6 +44,15 @@ function initialState(p: Params): { theta0: number; thetaDot0: number; phiDot0: 
   s.free();
   const factor = PRECESSION_FACTORS[preset];
   return { theta0, thetaDot0: 0, phiDot0: factor * slow };
+}
+
+/** The precession period 2π/|⟨φ̇⟩| from the core, in words: "one turn every 1.08 s", or "—" with
+ * the reason where the axis does not turn on average (the core's Infinity). */
+export function precessionPeriodReadout(period: number, meanRate: number): Readout {
+  const label = "precession period 2π/|⟨φ̇⟩| (s)";
+  if (Number.isFinite(period)) return { key: "precessionPeriod", label, value: period, text: `one turn every ${fmt(period, 3)} s` };
+  const why = meanRate === 0 ? "the axis does not turn on average: ⟨φ̇⟩ = 0" : "too slow a turn to time";
+  return { key: "precessionPeriod", label, value: String(period), text: `— (${why})` };
 }
 
 /** A latitude circle θ = const on the sphere of radius R_TIP. */
@@ -343,10 +353,11 @@ export const heavyTopScene: SceneDef = {
   id: "heavytop",
   title: "Heavy top",
   short: "Heavy top",
-  angleUnit: "rad",
-  pinned: ["motionClass", "turningPoints", "nutationPeriod", "meanPrecessionRate"],
+  rateUnit: "rad",
+  pinned: ["motionClass", "turningPoints", "nutationPeriod", "precessionPeriod"],
   // The core's names of the sliders' arguments (HeavyTop.fromSpin, steadyPrecession).
-  argumentKeys: { omega3: "w3", theta: "theta0", phi_dot: "phiDot0", theta_dot: "thetaDot0" },
+  argumentKeys: { omega3: "w3", theta: "tilt", theta0: "tilt", phi_dot: "phiDot0", theta_dot: "thetaDot0" },
+  legacyParams: legacyParams("heavytop"),
   describe: "a spinning top on a pivot under gravity, the tip of its axis moving on a translucent sphere between two dashed turning circles, with its trail; an inset plots the effective potential V(θ); the axes x, y, z are labelled",
   blurb:
     "A symmetric top on a pivot under gravity, exactly (θ by Jacobi's sn, φ and ψ by elliptic integrals; 2.102–2.121). " +
@@ -355,7 +366,7 @@ export const heavyTopScene: SceneDef = {
     "Presets start at θ₀ with θ̇₀ = 0 and φ̇₀ a fraction of the slow steady precession (loops −½, cusps 0, waves ½, steady 1); " +
     "“sleeping” stands the top upright (θ₀ = 0); “custom” uses the φ̇₀, θ̇₀ sliders.",
   params: sceneParams("heavytop", {
-    theta0: (p) => p.preset !== "sleeping",
+    tilt: (p) => p.preset !== "sleeping",
     phiDot0: (p) => p.preset === "custom",
     thetaDot0: (p) => p.preset === "custom",
   }),
@@ -473,14 +484,15 @@ export const heavyTopScene: SceneDef = {
         const init = Array.from(top.initialState);
         fixed = [
           { key: "motionClass", label: "motion", value: top.motionClass, text: top.motionClass },
-          { key: "initialRates", label: `φ̇₀, θ̇₀, ψ̇₀ (${A.perSecond})`, value: init.slice(3), text: A.vec(init.slice(3)) },
-          { key: "omega3", label: `ω₃ (${A.perSecond}, 2.99)`, value: top.omega3, text: A.rate(top.omega3, 6) },
-          { key: "turningPoints", label: `θ₁, θ₂ (${A.name})`, value: [th1, th2], text: `${A.angle(th1, 5)}, ${A.angle(th2, 5)}` },
+          { key: "initialRates", label: `φ̇₀, θ̇₀, ψ̇₀ (${A.perSecond})`, unitScale: A.rateScale, value: init.slice(3), text: A.rates(init.slice(3)) },
+          { key: "omega3", label: `ω₃ (${A.perSecond}, 2.99)`, unitScale: A.rateScale, value: top.omega3, text: A.rate(top.omega3, 6) },
+          { key: "turningPoints", label: `θ₁, θ₂ (${A.name})`, unitScale: A.angleScale, value: [th1, th2], text: `${A.angle(th1, 5)}, ${A.angle(th2, 5)}` },
           { key: "nutationPeriod", label: "nutation period (s)", value: top.nutationPeriod, text: fmt(top.nutationPeriod) },
-          { key: "meanPrecessionRate", label: `⟨φ̇⟩ (${A.perSecond})`, value: top.meanPrecessionRate, text: A.rate(top.meanPrecessionRate) },
-          { key: "steadyRates", label: `steady φ̇ at θ₀ (${A.perSecond}, 2.116)`, value: steady, text: steadyText },
-          { key: "minSpin", label: `min spin at θ₀ (${A.perSecond}, 2.119)`, value: minSpin, text: A.rate(minSpin) },
-          { key: "sleepingThreshold", label: `sleeping threshold (${A.perSecond})`, value: sleepAt, text: A.rate(sleepAt) },
+          { key: "meanPrecessionRate", label: `⟨φ̇⟩ (${A.perSecond})`, unitScale: A.rateScale, value: top.meanPrecessionRate, text: A.rate(top.meanPrecessionRate) },
+          precessionPeriodReadout(top.precessionPeriod, top.meanPrecessionRate),
+          { key: "steadyRates", label: `steady φ̇ at θ₀ (${A.perSecond}, 2.116)`, unitScale: A.rateScale, value: steady, text: steadyText },
+          { key: "minSpin", label: `min spin at θ₀ (${A.perSecond}, 2.119)`, unitScale: A.rateScale, value: minSpin, text: A.rate(minSpin) },
+          { key: "sleepingThreshold", label: `sleeping threshold (${A.perSecond})`, unitScale: A.rateScale, value: sleepAt, text: A.rate(sleepAt) },
           {
             key: "sleepsStably", label: "upright top sleeps", value: stable,
             text: stable ? "stably (ω₃² > 4mglI₁/I₃²)" : "no: it would fall (ω₃² ≤ 4mglI₁/I₃²)", warn: !stable,
@@ -506,8 +518,8 @@ export const heavyTopScene: SceneDef = {
         const rel = (a: number, b: number) => fmt(b !== 0 ? (a - b) / Math.abs(b) : a - b, 2, 1);
         out = [
           { key: "t", label: "t (s)", value: t, text: fmt(t, 5) },
-          { key: "angles", label: `φ, θ, ψ (${A.name})`, value: [phi, theta, psi], text: A.vec([phi, theta, psi], 5, 1) },
-          { key: "rates", label: `φ̇, θ̇, ψ̇ (${A.perSecond})`, value: [phiDot, thetaDot, psiDot], text: A.vec([phiDot, thetaDot, psiDot]) },
+          { key: "angles", label: `φ, θ, ψ (${A.name})`, unitScale: A.angleScale, value: [phi, theta, psi], text: A.vec([phi, theta, psi], 5, 1) },
+          { key: "rates", label: `φ̇, θ̇, ψ̇ (${A.perSecond})`, unitScale: A.rateScale, value: [phiDot, thetaDot, psiDot], text: A.rates([phiDot, thetaDot, psiDot]) },
           ...fixed,
           { key: "energy", label: "E (J, 2.105), conserved", value: E, text: fmt(E, 10) },
           { check: true, key: "energyNow", label: "E(t) from the state", value: eNow, text: `${fmt(eNow, 10)} (rel. drift ${rel(eNow, E)})` },

@@ -96,7 +96,7 @@ export const inertiaScene: SceneDef = {
   id: "inertia",
   title: "Inertia",
   short: "Inertia",
-  angleUnit: "°",
+  rateUnit: "°",
   pinned: (p) =>
     p.motion === "Chasles" ? ["screwAngle", "screwSlide", "screwPitch", "s"] : p.motion === "Euler" ? ["eulerAngle", "eulerAxis", "s"] : ["mass", "principalMoments", "kind"],
   describe: "a solid with its principal axes and ellipsoid of inertia, or, for a displacement, the solid carried from a grey ghost to an orange ghost along its screw axis (yellow); the x, y and z axes are labelled",
@@ -387,12 +387,12 @@ export const inertiaScene: SceneDef = {
             { key: "R", label: "R (rows)", value: Array.from(R), text: rows(R) },
             { key: "translation", label: "t (m)", value: T, text: fmtVec(T) },
             { key: "eulerAxis", label: "Euler axis of R", value: [ax, ay, az], text: fmtVec([ax, ay, az], 5, 1) },
-            { key: "eulerAngle", label: `Euler angle (${A.name})`, value: angle, text: A.angle(angle, 6) },
+            { key: "eulerAngle", label: `Euler angle (${A.name})`, unitScale: A.angleScale, value: angle, text: A.angle(angle, 6) },
             { key: "screwAxis", label: "screw axis", value: Array.from(screw.axis), text: fmtVec(screw.axis, 5, 1) },
             { key: "screwPoint", label: "screw point (m)", value: Array.from(screw.point), text: fmtVec(screw.point, 5, tScale) },
-            { key: "screwAngle", label: `screw angle (${A.name})`, value: screw.angle, text: A.angle(screw.angle, 6) },
+            { key: "screwAngle", label: `screw angle (${A.name})`, unitScale: A.angleScale, value: screw.angle, text: A.angle(screw.angle, 6) },
             { key: "screwSlide", label: "slide (m)", value: screw.slide, text: fmt(screw.slide, 6, tScale) },
-            { key: "screwPitch", label: `pitch (m/${A.name})`, value: screw.pitch, text: fmt(screw.pitch * DEG, 6, tScale * DEG) },
+            { key: "screwPitch", label: `pitch (m/${A.name})`, unitScale: DEG, value: screw.pitch, text: fmt(screw.pitch * DEG, 6, tScale * DEG) },
             { check: true, key: "residual", label: "check |D(1) − (R, t)|∞", value: residual, text: fmt(residual, 3, tScale), warn: residual > 1e-12 * tScale },
           );
         }

@@ -28,7 +28,7 @@ export const lowScene: SceneDef = {
   id: "low",
   title: "Flow into a low",
   short: "Low",
-  angleUnit: "°",
+  rateUnit: "°",
   pinned: ["tau", "sense", "circulation", "inertialPeriod"],
   describe: "a round map around a low-pressure centre with isobars, eight parcels of air with their tracks and winds, and the dashed circle of an inertial oscillation; east, north and up are labelled, a compass and a scale bar lie on the map",
   blurb:
@@ -198,7 +198,7 @@ export const lowScene: SceneDef = {
           { key: "sense", label: "sense (from the run)", value: sense, text: sense === "none" ? "none (no turning)" : `${sense} (seen from above)` },
           { key: "coriolis", label: "f = 2Ω sin λ (1/s)", value: f, text: fmt(f, 6) },
           { key: "inertialPeriod", label: "inertial period (h)", value: period, text: Number.isFinite(period) ? fmt(period / 3600, 6) : "∞ (no inertial circle)" },
-          { key: "inertialTurning", label: `inertial turning (${A.perHour})`, value: turning, text: A.perHourRate(turning, 6) },
+          { key: "inertialTurning", label: `inertial turning (${A.perHour})`, unitScale: A.perHourScale, value: turning, text: A.perHourRate(turning, 6) },
           { key: "energy", label: "energy ½v²+½kr² (J/kg)", value: energy, text: fmt(energy, 8) },
           { key: "dissipated", label: "friction's work (J/kg)", value: lostMean, text: fmt(lostMean, 8) },
           { check: true, key: "budgetDrift", label: "budget |E+W−E₀|/E₀", value: worst, text: fmt(worst, 3, 1), warn: worst > 1e-8 },

@@ -3,7 +3,7 @@
 // here and by poinsot.widgets (its SCENE_PARAMS), so that the lab and the widgets cannot differ.
 // The file lives in the Python package so that the widgets read it without a build.
 import data from "../../../python/poinsot/widgets/scenes.json";
-import type { ChoiceParam, Param, Params } from "../scene";
+import { DEG, type ChoiceParam, type Param, type Params } from "../scene";
 
 /** The scenes whose parameters live in scenes.json. */
 export type SharedScene = "heavytop" | "poinsot" | "frames";
@@ -25,6 +25,18 @@ export function choiceOptions(scene: SharedScene, key: string): string[] {
   const param = sceneParams(scene).find((p): p is ChoiceParam => p.kind === "choice" && p.key === key);
   if (!param) throw new Error(`scenes.json: ${scene} has no choice ${key}`);
   return param.options;
+}
+
+/** The share-link parameters of an earlier lab that the scene still reads (an angle in radians
+ * whose slider is now in degrees: `theta0` → `tilt`), as `SceneDef.legacyParams`. */
+export function legacyParams(scene: SharedScene): Record<string, { key: string; factor: number }> {
+  const legacy = (data[scene] as { legacyParams?: Record<string, { key: string; unit: string }> }).legacyParams ?? {};
+  const out: Record<string, { key: string; factor: number }> = {};
+  for (const [old, { key, unit }] of Object.entries(legacy)) {
+    if (unit !== "rad") throw new Error(`scenes.json: ${scene}.${old}: unknown legacy unit ${unit}`);
+    out[old] = { key, factor: 1 / DEG };
+  }
+  return out;
 }
 
 /** The heavy top's presets released at a fraction of the core's slow steady precession at θ₀:

@@ -133,7 +133,7 @@ export const poinsotScene: SceneDef = {
   id: "poinsot",
   title: "Poinsot & tumbling box",
   short: "Poinsot",
-  angleUnit: "rad",
+  rateUnit: "rad",
   pinned: ["regime", "separatrix", "spinComponent", "flipInterval"],
   describe: "either the inertia ellipsoid rolling on the invariable plane below it, with the polhode (orange) and the herpolhode (white), or a box tumbling about its centre with the arrows of ω (white) and L (blue); the body axes 1, 2, 3 and the fixed axes x, y, z are labelled",
   blurb:
