@@ -180,6 +180,10 @@ VALID: dict[str, Any] = {
     "m": 0.5,
     "n": 0.3,
     "bytes": 4 * 2**30,
+    "dynamical_flattening": 0.003273795,
+    "obliquity": 0.409,
+    "k2": 0.30,
+    "ks": 0.938,
 }
 
 VALID_FOR: dict[str, dict[str, Any]] = {
@@ -330,6 +334,7 @@ INSTANCES: dict[str, Callable[[], Any]] = {
         FRAME, [1.0, 0, 0], [0, 1.0, 0], 1.0, samples=11
     ),
     "Earth": lambda: ps.Earth(),
+    "RigidEarth": lambda: ps.RigidEarth(),
     "Trajectory": lambda: ps.simulate([1.0, 2.0, 3.0], [1.0, 0.1, 1.0], 1.0, samples=11),
     "FreeSymmetricTop": lambda: ps.FreeSymmetricTop(1.0, 2.0, [0.3, 0.0, 1.0]),
     "FreeRigidBody": lambda: ps.FreeRigidBody([1.0, 2.0, 3.0], [1.0, 0.1, 1.0]),
