@@ -37,7 +37,7 @@ OBLIQUITY_J2000: float = _core.OBLIQUITY_J2000
 #: Julian century (Capitaine et al. 2003).
 IAU2006_PRECESSION_RATE: float = _core.IAU2006_PRECESSION_RATE
 #: The IAU 2000A principal nutation (Δψ₀, Δε₀) (rad): (−17.2064161″, 9.2052331″), the
-#: coefficients of sin Ω and cos Ω (IERS Conventions 2010, Tables 5.3a/b).
+#: coefficients of sin Ω and cos Ω (the first luni-solar term of ERFA's ``nut00a``).
 IAU2000A_PRINCIPAL_NUTATION: tuple[float, float] = _core.IAU2000A_PRINCIPAL_NUTATION
 
 

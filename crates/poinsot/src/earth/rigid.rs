@@ -12,22 +12,24 @@
 //! * ω, the sidereal rotation rate: [`SIDEREAL_RATE`](super::SIDEREAL_RATE) = 7.292115e-5 rad/s,
 //!   the "nominal mean angular velocity of the Earth" of IERS 2010 Table 1.1 (the GRS80 value).
 //! * ε₀, the obliquity of the ecliptic at J2000.0: [`OBLIQUITY_J2000`] = 84381.406″, the IAU 2006
-//!   precession (Capitaine, Wallace & Chapront 2003, A&A 412, 567, Table 3; IERS 2010 Table 1.1).
+//!   precession (Capitaine, Wallace & Chapront 2003, A&A 412, 567, the P03 solution; IERS 2010
+//!   Table 1.1).
 //! * The Sun's mean orbit [`SUN_ORBIT`] and the Moon's [`MOON_ORBIT`], with GM_⊙
 //!   ([`GM_SUN`]) and GM_⊕ ([`GM_EARTH`]) from IERS 2010 Table 1.1 (the IAU 2009 system), the
 //!   Moon/Earth mass ratio ([`MOON_EARTH_MASS_RATIO`]) from the same table (the IAU 2009 value,
 //!   Pitjeva & Standish 2009; DE430's EMRAT 81.30056907 agrees to 1e-10), the astronomical unit
 //!   ([`ASTRONOMICAL_UNIT`], IAU 2012 Resolution B2), the Earth's orbital eccentricity at J2000
-//!   (Simon et al. 1994, A&A 282, 663, §3.5; Meeus, *Astronomical Algorithms*, 2nd ed. 1998,
+//!   (Simon et al. 1994, A&A 282, 663; Meeus, *Astronomical Algorithms*, 2nd ed. 1998,
 //!   eq. 25.4, p. 163: e = 0.016708634 − …), and the Moon's mean elements of JPL's Horizons
 //!   physical-data sheet for the Moon (301): a = 384400 km, e = 0.05490, i = 5.145°, nodal period
 //!   6798.38 d (the period of the fundamental argument Ω in the IERS 2010 / Simon et al. 1994
 //!   series, 18.613 Julian years).
 //! * The references the results are compared with: the IAU 2006 luni-solar precession rate
-//!   [`IAU2006_PRECESSION_RATE`] (ψ_A = 5038.481507″ t, Capitaine et al. 2003, Table 3; IERS 2010
-//!   eq. 5.39) and the IAU 2000A principal nutation term [`IAU2000A_PRINCIPAL_NUTATION`]
-//!   (−17.2064161″ sin Ω, 9.2052331″ cos Ω: Mathews, Herring & Buffett 2002; IERS 2010
-//!   Tables 5.3a and 5.3b, first lines; SOFA's `iauNut00a`).
+//!   [`IAU2006_PRECESSION_RATE`] (ψ_A = 5038.481507″ t, Capitaine et al. 2003; IERS 2010
+//!   chapter 5; ERFA's `p06e`) and the IAU 2000A principal nutation term
+//!   [`IAU2000A_PRINCIPAL_NUTATION`]
+//!   (−17.2064161″ sin Ω, 9.2052331″ cos Ω: Mathews, Herring & Buffett 2002, the MHB2000
+//!   model; the first luni-solar term of SOFA's `iauNut00a`, ERFA's `nut00a`).
 //!
 //! # Signs
 //!
@@ -54,7 +56,7 @@ const DAY: f64 = 86_400.0;
 /// Conventions (2010), Table 1.1, p. 18 (fitted to the observed precession rate).
 pub const DYNAMICAL_FLATTENING: f64 = 3.273_795e-3;
 /// ε₀, the obliquity of the ecliptic at J2000.0 (rad): 84381.406″, IAU 2006 (Capitaine et al.
-/// 2003, Table 3; IERS Conventions (2010), Table 1.1).
+/// 2003; IERS Conventions (2010), Table 1.1).
 pub const OBLIQUITY_J2000: f64 = 84_381.406 * ARCSECOND;
 /// GM_⊙, the heliocentric gravitational constant (m³/s²): 1.32712442099e20, TCB-compatible,
 /// IERS Conventions (2010), Table 1.1 (the IAU 2009 system).
@@ -94,7 +96,7 @@ impl MeanOrbit {
 }
 
 /// The Sun's mean geocentric orbit: GM_⊙; a = 1 au (IAU 2012 B2); e = 0.0167086 (Simon et al.
-/// 1994 §3.5; Meeus 1998 eq. 25.4, p. 163, at J2000); the ecliptic itself (i = 0, no node).
+/// 1994; Meeus 1998 eq. 25.4, p. 163, at J2000); the ecliptic itself (i = 0, no node).
 pub const SUN_ORBIT: MeanOrbit = MeanOrbit {
     gm: GM_SUN,
     semi_major_axis: ASTRONOMICAL_UNIT,
@@ -117,13 +119,14 @@ pub const MOON_ORBIT: MeanOrbit = MeanOrbit {
 };
 
 /// The IAU 2006 luni-solar precession rate ψ̇_A at J2000 (rad/s, positive westward):
-/// 5038.481507″ per Julian century (Capitaine et al. 2003, Table 3; IERS Conventions (2010),
-/// eq. 5.39). It contains, besides the first-order luni-solar term of this module, the geodesic
-/// precession (−1.92″/cy), planetary and second-order terms (Capitaine et al. 2003, §4).
+/// 5038.481507″ per Julian century (Capitaine et al. 2003; IERS Conventions (2010),
+/// chapter 5; ERFA's `p06e`, which test_rigid_earth.py differentiates). It contains, besides
+/// the first-order luni-solar term of this module, the geodesic precession (−1.92″/cy),
+/// planetary and second-order terms (Capitaine et al. 2003).
 pub const IAU2006_PRECESSION_RATE: f64 = 5_038.481_507 * ARCSECOND / JULIAN_CENTURY;
 /// The IAU 2000A principal (18.6-year) nutation term (rad): (Δψ, Δε) = (−17.2064161″ sin Ω,
-/// 9.2052331″ cos Ω), the first lines of IERS Conventions (2010) Tables 5.3a and 5.3b (MHB2000,
-/// Mathews, Herring & Buffett 2002), non-rigid Earth.
+/// 9.2052331″ cos Ω), the first luni-solar term of the IAU 2000A series (SOFA's `iauNut00a`;
+/// MHB2000, Mathews, Herring & Buffett 2002), non-rigid Earth.
 pub const IAU2000A_PRINCIPAL_NUTATION: (f64, f64) =
     (-17.206_416_1 * ARCSECOND, 9.205_233_1 * ARCSECOND);
 
@@ -222,15 +225,15 @@ impl RigidEarth {
     ///
     /// T_C = T_E · ks/(ks − k2).
     ///
-    /// Derivation (Munk & MacDonald 1960, *The Rotation of the Earth*, §6.4; Smith & Dahlen
-    /// 1981, Geophys. J. R. astr. Soc. 64, 223, eq. 1): a wobble of the rotation axis by m
+    /// Derivation (Munk & MacDonald 1960, *The Rotation of the Earth*; Smith & Dahlen
+    /// 1981, Geophys. J. R. astr. Soc. 64, 223): a wobble of the rotation axis by m
     /// tilts the centrifugal potential, whose degree-2 part raises a bulge that yields with
     /// the Love number k2: the products of inertia follow the axis by (k2/ks) of the way a
     /// fluid Earth's would (ks = 3G(C − A)/(ω² a⁵) being the fluid, secular, response that
     /// made the bulge). In Euler's (Liouville's) linearised equations the restoring C − A is
     /// so reduced to (C − A)(1 − k2/ks), and the frequency σ_E = (C − A)/A ω to σ_E(1 − k2/ks):
     /// the period grows by ks/(ks − k2). With k2 ≈ 0.30 and ks ≈ 0.938 (Lambeck 1980, *The
-    /// Earth's Variable Rotation*, §3.3), 445 days against the observed 433: the oceans'
+    /// Earth's Variable Rotation*), 445 days against the observed 433: the oceans'
     /// pole tide, the fluid core (which does not follow the mantle, lowering the effective A)
     /// and the mantle's anelasticity make up the rest.
     pub fn chandler_period(&self, k2: f64, ks: f64) -> Result<f64> {
