@@ -348,6 +348,8 @@ DOCUMENTED_INF = {
     ("Screw", "pitch"),
     ("Earth.inertial_period", ""),  # no inertial oscillation at the equator
     ("Earth.inertial_oscillation", "period"),
+    ("Earth.foucault", "full_turn_period"),  # a swing plane that does not turn
+    ("Earth.foucault", "expected_full_turn_period"),  # ω sin λ = 0 at the equator
     ("FreeRigidBody", "period"),  # on the separatrix the motion is asymptotic
     ("FreeRigidBody", "flip_interval"),
     ("FreeRigidBody", "max_time"),  # never 2^42 rad within the doubles (omega0 ~ 1e-300)
