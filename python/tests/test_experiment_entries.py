@@ -96,6 +96,53 @@ def _euler(i: Mapping[str, Any]) -> float:
     return 2 * math.pi / OMEGA * (1 - h) / h
 
 
+# The rigid Earth's entries: the test's own constants (IERS Conventions 2010 Table 1.1; the
+# Moon's mean orbit from JPL Horizons' Moon sheet), the torque theory written out again.
+GM_SUN = 1.32712442099e20
+GM_MOON = 0.0123000371 * 3.986004418e14
+AU = 1.495978707e11
+ARCSEC = math.pi / 648000
+YEAR = 365.25 * DAY
+
+
+def _mean_motion_sq(gm: float, a: float, e: float) -> float:
+    """GM/(a³ (1 − e²)^{3/2}): the orbit average of GM/r³ (s⁻²)."""
+    return gm / (a**3 * (1 - e * e) ** 1.5)
+
+
+def _lunisolar(i: Mapping[str, Any]) -> float:
+    """|ψ̇| = (3/2)(H/ω) cos ε [n²_⊙ + n²_☾ (1 − (3/2) sin² i)] (rad/s, westward)."""
+    h = _si(i, "dynamical_flattening", "dimensionless")
+    eps = _si(i, "obliquity", "rad")
+    sun = _mean_motion_sq(GM_SUN, AU, 0.0167086)
+    moon = _mean_motion_sq(GM_MOON, 3.844e8, 0.0549) * (
+        1 - 1.5 * math.sin(math.radians(5.145)) ** 2
+    )
+    return 1.5 * h / OMEGA * math.cos(eps) * (sun + moon)
+
+
+def _nutation(i: Mapping[str, Any]) -> tuple[float, float]:
+    """(Δψ₀, Δε₀): the Moon's torque on the pole, first order in its inclination i, with the
+    node regressing once in 6798.38 d: K sin i cos i/ν times (−cos 2ε/sin ε, cos ε)."""
+    h = _si(i, "dynamical_flattening", "dimensionless")
+    eps = _si(i, "obliquity", "rad")
+    k = 1.5 * _mean_motion_sq(GM_MOON, 3.844e8, 0.0549) * h / OMEGA
+    inc, nu = math.radians(5.145), 2 * math.pi / (6798.38 * DAY)
+    base = k * math.sin(inc) * math.cos(inc) / nu
+    return -base * math.cos(2 * eps) / math.sin(eps), base * math.cos(eps)
+
+
+def _chandler(i: Mapping[str, Any]) -> float:
+    """(1 − H)/H sidereal days times ks/(ks − k2) (s)."""
+    k2 = _si(i, "k2", "dimensionless")
+    ks = _si(i, "ks", "dimensionless")
+    return _euler_h(_si(i, "dynamical_flattening", "dimensionless")) * ks / (ks - k2)
+
+
+def _euler_h(h: float) -> float:
+    return 2 * math.pi / OMEGA * (1 - h) / h
+
+
 #: Each entry's reference (inputs as pint quantities → SI value, or the sense) and the relative
 #: tolerance of poinsot's prediction against it. An entry without one fails the test below.
 REFERENCES: dict[str, tuple[Callable[[Mapping[str, Any]], Any], float]] = {
@@ -114,6 +161,10 @@ REFERENCES: dict[str, tuple[Callable[[Mapping[str, Any]], Any], float]] = {
     "wgs84-gravity": (_gravity_step, 1e-9),
     "wgs84-plumb-line": (_plumb, 1e-9),
     "chandler-1891": (_euler, 1e-9),
+    "capitaine-2003": (_lunisolar, 1e-9),
+    "mathews-2002-longitude": (lambda i: _nutation(i)[0], 1e-9),
+    "mathews-2002-obliquity": (lambda i: _nutation(i)[1], 1e-9),
+    "vicente-wilson-1997": (_chandler, 1e-9),
 }
 
 
@@ -333,3 +384,42 @@ def test_benzenbergs_scatter_is_quoted_from_gauss_but_not_made_a_standard_error(
     assert "31 Versuchen" in gauss.page and "18 Linien" in gauss.page
     assert e.uncertainty is None and "none stated" in e.uncertainty_kind
     assert "Fehlergrenze" in e.uncertainty_kind
+
+
+def test_the_rigid_earth_precesses_within_half_a_percent_of_iau_2006() -> None:
+    r = x.run("capitaine-2003")
+    e = x.get("capitaine-2003")
+    # the measured value is the IAU 2006 ψ̇_A, 5038.481507″ per Julian century, in ″ per year
+    assert r.measured_si == pytest.approx(5038.481507 * ARCSEC / (100 * YEAR), rel=1e-12)
+    assert abs(r.predicted_si / r.measured_si - 1) < 0.005
+    assert r.predicted_si > 0  # shown westward: the rate's sign flipped, not its size
+    assert (
+        "A&A" in e.sources[0].publication or "Astronomy & Astrophysics" in e.sources[0].publication
+    )
+    assert "412" in e.sources[0].publication and "567" in e.sources[0].publication
+    # the Moon does about twice the Sun's share (a negative control on the sum's parts)
+    i = e.parsed_inputs()
+    h, eps = _si(i, "dynamical_flattening", "dimensionless"), _si(i, "obliquity", "rad")
+    sun = 1.5 * h / OMEGA * math.cos(eps) * _mean_motion_sq(GM_SUN, AU, 0.0167086)
+    assert 2.0 < r.predicted_si / sun - 1 < 2.3
+
+
+def test_the_principal_nutation_against_iau_2000a() -> None:
+    lon, obl = x.run("mathews-2002-longitude"), x.run("mathews-2002-obliquity")
+    assert lon.measured_si == pytest.approx(-17.2064161 * ARCSEC, rel=1e-12)
+    assert obl.measured_si == pytest.approx(9.2052331 * ARCSEC, rel=1e-12)
+    assert 0 < lon.predicted_si / lon.measured_si - 1 < 0.005
+    assert 0 < obl.predicted_si / obl.measured_si - 1 < 0.005
+    assert "Mathews" in x.get("mathews-2002-longitude").sources[0].who
+
+
+def test_the_elastic_chandler_period_is_446_days_against_433_observed() -> None:
+    r = x.run("vicente-wilson-1997")
+    assert r.predicted_si / DAY == pytest.approx(446.4, abs=0.5)
+    assert r.measured_si / DAY == pytest.approx(433.1)
+    assert r.uncertainty_si / DAY == pytest.approx(1.7)
+    assert not r.agrees and r.sigma is not None and r.sigma < -2  # longer than observed
+    e = x.get("vicente-wilson-1997")
+    assert "oceans" in e.why and "core" in e.why
+    # the elastic period lies between the rigid Euler period and the observed one's far side
+    assert x.run("chandler-1891").predicted_si < r.measured_si < r.predicted_si
