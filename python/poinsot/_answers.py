@@ -298,3 +298,34 @@ def inertia(data: dict[str, Any]) -> str:
         f"{num(i2)} and {num(i3)} kg·m² about its centre of mass; it is "
         f"{_KINDS.get(kind, kind)}."
     )
+
+
+def rigid_earth(data: dict[str, Any]) -> str:
+    """``poinsot earth``: Euler's and Chandler's periods, the precession of the equinoxes and
+    the principal nutation, each beside its measured value where the catalogue has one (only
+    unit changes: s → days or years, rad → ″)."""
+    measured = data.get("measured") or {}
+
+    def beside(key: str, unit: str, what: str, digits: int = DIGITS) -> str:
+        m = measured.get(key)
+        return f" ({what} {num(m['value'], digits)}{unit})" if m else ""
+
+    dpsi, deps = data["nutation_amplitudes_arcsec"]
+    nut = ""
+    if measured.get("nutation_longitude") and measured.get("nutation_obliquity"):
+        nut = (
+            f" (IAU 2000A: {num(measured['nutation_longitude']['value'])}″, "
+            f"{num(measured['nutation_obliquity']['value'])}″)"
+        )
+    return (
+        f"As a rigid top, the Earth's axis of rotation would circle its axis of figure in "
+        f"{num(data['euler_period_sidereal_days'])} sidereal days (Euler's free wobble); with "
+        f"k2 = {given(data['k2'])} and ks = {given(data['ks'])} the elastic Earth's takes "
+        f"{num(data['chandler_period_days'])} days"
+        f"{beside('chandler_period', ' days', 'observed')}. The Sun and the Moon turn the axis "
+        f"westward by {num(data['precession_rate_arcsec_per_year'], 4)}″ a year"
+        f"{beside('precession_rate', '″', 'IAU 2006:', 4)}, once in "
+        f"{num(data['precession_period_years'])} years, the Moon doing "
+        f"{num(data['moon_to_sun'])} times the Sun's share; the 18.6-year nutation swings it "
+        f"by {num(dpsi)}″ in longitude and {num(deps)}″ in obliquity{nut}."
+    )

@@ -1923,6 +1923,182 @@ def derive(name: str | None, list_all: bool, as_latex: bool, as_markdown: bool) 
     click.echo(one.latex() if as_latex else one.markdown() if as_markdown else one.text())
 
 
+# -- poinsot earth: the Earth as a rigid top (poinsot.RigidEarth, issue 25) ----------------------
+
+#: The Love numbers ``poinsot earth`` uses by default for the Chandler period: k2 = 0.30 (the
+#: elastic Earth's) and ks = 0.938 (the secular, fluid one), the inputs of the catalogue's
+#: ``vicente-wilson-1997`` entry (a test holds the two equal).
+CHANDLER_LOVE_NUMBERS = (0.30, 0.938)
+
+#: The catalogue entries whose measured values ``poinsot earth`` prints beside its numbers:
+#: key of ``data["measured"]`` → (entry name, the unit as pint reads it, as it is printed).
+EARTH_MEASURED = {
+    "chandler_period": ("vicente-wilson-1997", "day", "d"),
+    "precession_rate": ("capitaine-2003", "arcsec / julian_year", "″/yr"),
+    "nutation_longitude": ("mathews-2002-longitude", "arcsec", "″"),
+    "nutation_obliquity": ("mathews-2002-obliquity", "arcsec", "″"),
+}
+
+_ARCSEC = math.pi / 648_000
+_JULIAN_YEAR = 365.25 * 86_400.0
+
+
+def _earth_measured() -> dict[str, Any] | None:
+    """The measured values of :data:`EARTH_MEASURED`, read from the experiments catalogue (in
+    the units printed, with the uncertainty the source states and its citation); None without
+    pint (the catalogue needs it)."""
+    try:
+        from . import experiments as x
+    except ImportError:
+        return None
+    out: dict[str, Any] = {}
+    for key, (name, unit, shown) in EARTH_MEASURED.items():
+        e = x.get(name)
+        u = None if e.uncertainty is None else float(x.parse(e.uncertainty).to(unit).magnitude)
+        s = e.sources[0]
+        out[key] = {
+            "value": float(x.parse(e.measured).to(unit).magnitude),
+            "uncertainty": u,
+            "uncertainty_kind": e.uncertainty_kind,
+            "unit": shown,
+            "experiment": name,
+            "source": s.publication,
+        }
+    return out
+
+
+@main.command()
+@_number(
+    "--k2",
+    "The Love number k2 of the elastic Earth.",
+    default=CHANDLER_LOVE_NUMBERS[0],
+    show_default=True,
+)
+@_number(
+    "--ks",
+    "The secular (fluid) Love number ks.",
+    default=CHANDLER_LOVE_NUMBERS[1],
+    show_default=True,
+)
+@_number(
+    "--dynamical-flattening",
+    "dynamical_flattening",
+    "H = (C − A)/C, in (0, 1); default IERS 2010.",
+    call="RigidEarth.__init__",
+)
+@_number(
+    "--obliquity",
+    "The tilt of the equator to the ecliptic (rad, or with a unit: 23.44deg); default J2000.",
+    call="RigidEarth.__init__",
+)
+@_JSON
+def earth(
+    k2: float, ks: float, dynamical_flattening: float, obliquity: float, as_json: bool
+) -> None:
+    """The Earth as a rigid top: its free wobble and the precession of the equinoxes.
+
+    Euler's free wobble of the rigid Earth (the unit's eq. 2.83) and the elastic Earth's
+    Chandler period for the Love numbers --k2 and --ks; the luni-solar precession from the Sun's
+    and the Moon's torques on the bulge, averaged over their orbits, with its two parts; the
+    principal (18.6-year) nutation. Each beside its measured value from the experiments
+    catalogue (poinsot experiments NAME: the source and what the rigid model leaves out; they
+    need pint). --plot is not offered yet.
+
+    \b
+    Examples:
+      poinsot earth
+      poinsot earth --k2 0.35 --json
+      poinsot earth --obliquity 22.1deg
+    """
+    from .rigid_earth import RigidEarth
+
+    e = RigidEarth(dynamical_flattening=dynamical_flattening, obliquity=obliquity)
+    sidereal_day = 2 * math.pi / e.rotation_rate
+    sun, moon = e.precession_parts
+    dpsi, deps = e.nutation_amplitudes
+    euler, chandler = e.euler_period, e.chandler_period(k2, ks)
+    rate, period = e.precession_rate, e.precession_period
+    measured = _earth_measured()
+    data: dict[str, Any] = {
+        "dynamical_flattening": e.dynamical_flattening,
+        "rotation_rate": e.rotation_rate,
+        "obliquity": e.obliquity,
+        "k2": k2,
+        "ks": ks,
+        "euler_period": euler,
+        "euler_period_days": euler / 86_400,
+        "euler_period_sidereal_days": euler / sidereal_day,
+        "chandler_period": chandler,
+        "chandler_period_days": chandler / 86_400,
+        "precession_rate": rate,
+        "precession_rate_arcsec_per_year": -rate * _JULIAN_YEAR / _ARCSEC,
+        "precession_parts": [sun, moon],
+        "precession_parts_arcsec_per_year": [-p * _JULIAN_YEAR / _ARCSEC for p in (sun, moon)],
+        "moon_to_sun": moon / sun,
+        "precession_period": period,
+        "precession_period_years": period / _JULIAN_YEAR,
+        "nutation_amplitudes": [dpsi, deps],
+        "nutation_amplitudes_arcsec": [dpsi / _ARCSEC, deps / _ARCSEC],
+        "measured": measured,
+    }
+    require_finite(data)
+    data["summary"] = _answers.rigid_earth(data)
+    m = measured or {}
+
+    def beside(key: str) -> str:
+        """The measured value (± the stated uncertainty) and its entry, or "—"."""
+        if key not in m:
+            return "—"
+        v = m[key]
+        text = f"{v['value']:.10g}" + (f" ± {v['uncertainty']:.3g}" if v["uncertainty"] else "")
+        return f"{text} {v['unit']} ({v['experiment']})"
+
+    def g(x: float) -> str:
+        return f"{x:.6g}"
+
+    parts = data["precession_parts_arcsec_per_year"]
+    nutation = data["nutation_amplitudes_arcsec"]
+    rows = [
+        (
+            "Euler's free wobble (rigid)",
+            f"{g(data['euler_period_sidereal_days'])} sidereal d = "
+            f"{g(data['euler_period_days'])} d",
+            "— (the Earth is not rigid)",
+        ),
+        (
+            f"Chandler period (k2 = {k2:g}, ks = {ks:g})",
+            f"{g(data['chandler_period_days'])} d",
+            beside("chandler_period"),
+        ),
+        (
+            "luni-solar precession (westward)",
+            f"{g(data['precession_rate_arcsec_per_year'])} ″/yr",
+            beside("precession_rate"),
+        ),
+        ("  the Sun's part", f"{g(parts[0])} ″/yr", "—"),
+        ("  the Moon's part", f"{g(parts[1])} ″/yr", "—"),
+        ("precession period", f"{g(data['precession_period_years'])} yr", "—"),
+        ("nutation in longitude Δψ₀", f"{g(nutation[0])} ″", beside("nutation_longitude")),
+        ("nutation in obliquity Δε₀", f"{g(nutation[1])} ″", beside("nutation_obliquity")),
+    ]
+    notes = [
+        f"inputs: H = {e.dynamical_flattening:.9g}, ω = {e.rotation_rate:.9g} rad/s, "
+        f"ε = {math.degrees(e.obliquity):.7g}°"
+    ]
+    if measured is None:
+        notes.append("the measured values need pint: pip install 'poinsot[units]'")
+    else:
+        sources: dict[str, list[str]] = {}
+        for v in measured.values():
+            sources.setdefault(v["source"], []).append(v["experiment"])
+        notes += [_esc(f"{', '.join(names)}: {source}") for source, names in sources.items()]
+        notes.append(
+            "poinsot experiments NAME: each comparison, and what the rigid model leaves out."
+        )
+    title = "the Earth as a rigid top"
+    _report(data, as_json, title, ("quantity", "poinsot", "measured"), rows, notes=notes)
+
+
 # -- poinsot experiments: the unit against the world (poinsot.experiments, the units extra) -------
 @main.command()
 @click.argument("name", required=False)
