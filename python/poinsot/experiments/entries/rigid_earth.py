@@ -307,10 +307,10 @@ ENTRIES = [
         ),
         expect="disagree",
         why=(
-            "the elastic mantle alone lengthens Euler's period too much: the oceans' pole "
-            "tide lengthens it further, but the fluid core, which does not follow the mantle's "
-            "wobble, shortens it by more, and the mantle's anelasticity adds a few days "
-            "(Smith & Dahlen 1981)"
+            "the model is the whole Earth yielding elastically: the fluid core, which does not "
+            "follow the mantle's wobble, shortens the period, the oceans' pole tide lengthens "
+            "it, and the mantle's anelasticity adds a few days; Smith & Dahlen (1981) model the "
+            "three (their numbers not read here)"
         ),
         unit="day",
     ),
