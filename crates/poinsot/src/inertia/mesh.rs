@@ -300,22 +300,25 @@ fn checked_arrays<I: FaceIndex>(vertices: &[f64], faces: &[I]) -> Result<Vec<[u3
             format!("at most {MAX_VERTICES} vertices are supported, got {nv}"),
         ));
     }
-    // Indices: u32::MAX marks an index out of range (or negative).
-    let tris: Vec<[u32; 3]> = faces
-        .par_chunks_exact(3)
-        .with_min_len(CHUNK)
-        .map(|f| {
+    // Indices, converted and checked in one pass: u32::MAX marks an index out of range (or
+    // negative).
+    let mut tris = vec![[0u32; 3]; nf];
+    let any_bad = tris
+        .par_chunks_mut(CHUNK)
+        .zip(faces.par_chunks(3 * CHUNK))
+        .map(|(out, fs)| {
             let ix = |v: I| match v.to_index() {
                 Some(i) if i < nv => i as u32,
                 _ => u32::MAX,
             };
-            [ix(f[0]), ix(f[1]), ix(f[2])]
+            let mut bad = false;
+            for (t, f) in out.iter_mut().zip(fs.chunks_exact(3)) {
+                *t = [ix(f[0]), ix(f[1]), ix(f[2])];
+                bad |= t.contains(&u32::MAX);
+            }
+            bad
         })
-        .collect();
-    let any_bad = tris
-        .par_iter()
-        .with_min_len(CHUNK)
-        .any(|t| t.contains(&u32::MAX));
+        .reduce(|| false, |a, b| a || b);
     if let Some(k) = any_bad
         .then(|| tris.iter().position(|t| t.contains(&u32::MAX)))
         .flatten()
@@ -1363,6 +1366,30 @@ mod tests {
         f.extend(f.clone().iter().map(|t| t.map(|i| i + n)));
         let (parts, ok) = fused(&v2, &f);
         assert!(parts.len() == 2 && !ok);
+    }
+
+    /// The indices are converted and checked in one pass by chunks: the first index out of
+    /// range (or negative) is named with its face and corner wherever it lies, also in a
+    /// later chunk and in the last, partial one.
+    #[test]
+    fn bad_indices_are_named_in_any_chunk() {
+        let (v, f) = wound_sphere(60, 80, 1.0);
+        assert!(f.len() > 2 * CHUNK);
+        let nv = v.len() as i64;
+        let flat: Vec<i64> = f.as_flattened().iter().map(|&i| i64::from(i)).collect();
+        for (k, j, bad) in [(2 * CHUNK + 5, 1, nv), (f.len() - 1, 2, -1), (0, 0, nv + 7)] {
+            let mut g = flat.clone();
+            g[3 * k + j] = bad;
+            let later = (k + 1..f.len()).next().map(|m| 3 * m);
+            if let Some(m) = later {
+                g[m] = -5; // a later bad index: the first is named
+            }
+            let e = mesh_mass_properties(v.as_flattened(), &g, 1.0).unwrap_err();
+            assert_eq!(e.argument, "faces");
+            let want = format!("index {bad} at face {k} (corner {j}) is out of range");
+            assert!(e.message.contains(&want), "{}", e.message);
+        }
+        assert!(mesh_mass_properties(v.as_flattened(), &flat, 1.0).is_ok());
     }
 
     #[test]
