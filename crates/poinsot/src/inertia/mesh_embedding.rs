@@ -19,9 +19,8 @@
 //!    the edge they share. A star that fails (a fold, a pinch, a fan winding twice, a face of
 //!    zero area) leaves its pairs to the narrow phase, which handles faces sharing a vertex
 //!    or an edge exactly as any others.
-//!    Before all that, a mesh of one component is tried as **star-shaped** about the centre
-//!    of the box of its vertices (in the integrals' pass over the faces: [`StarProof`]), then
-//!    about its centre of mass ([`star_shaped_about`]): when every face faces away from that
+//!    Before all that, a mesh of one component is tried as **star-shaped** about its centre
+//!    of mass ([`star_shaped_about`]): when every face faces away from that
 //!    point and every vertex's fan winds once about it, the radial projection onto a sphere
 //!    is one to one (a covering of the sphere), which proves the surface embedded in one pass
 //!    over the faces, without the hierarchy or any pair (a convex or blobby solid; a torus or
@@ -1541,11 +1540,10 @@ pub(crate) fn star_shaped_about(
     Ok(ok.is_ok() && proof.proved())
 }
 
-/// [`star_shaped_about`] face by face, for a pass that reads every face anyway (the mesh
-/// integrals): [`StarProof::face`] for each face of the component in any order and on any
-/// thread, then [`StarProof::proved`]. The same answer as [`star_shaped_about`] on the same
-/// faces (the per-vertex flags are set atomically; any second hold fails the proof).
-pub(crate) struct StarProof {
+/// The state of [`star_shaped_about`]: [`StarProof::face`] for each face, in any order and on
+/// any thread (the per-vertex flags are set atomically; any second hold fails the proof), then
+/// [`StarProof::proved`].
+struct StarProof {
     /// Per vertex: a wedge around it holds the reference direction.
     held: Vec<AtomicBool>,
     /// Set once a face fails: the proof is refused and later faces are not examined.
@@ -1556,7 +1554,7 @@ pub(crate) struct StarProof {
 impl StarProof {
     /// A proof about `c` for a mesh of `nv` vertices; `None` when `c` is outside the envelope
     /// of the float filters ([`FAST_COORD_MAX`]).
-    pub(crate) fn new(nv: usize, c: P3) -> Option<Self> {
+    fn new(nv: usize, c: P3) -> Option<Self> {
         c.iter().all(|x| x.abs() <= FAST_COORD_MAX).then(|| Self {
             held: (0..nv).map(|_| AtomicBool::new(false)).collect(),
             failed: AtomicBool::new(false),
@@ -1567,7 +1565,7 @@ impl StarProof {
     /// Takes the face `t` with corners `p` (the points of `t`) into the proof; `false` once
     /// the proof has failed (by this face or an earlier one).
     #[inline]
-    pub(crate) fn face(&self, t: &[u32; 3], p: [P3; 3]) -> bool {
+    fn face(&self, t: &[u32; 3], p: [P3; 3]) -> bool {
         if self.failed.load(Ordering::Relaxed) {
             return false;
         }
@@ -1585,7 +1583,7 @@ impl StarProof {
     }
 
     /// Whether every face taken in passed: the surface they form is embedded.
-    pub(crate) fn proved(&self) -> bool {
+    fn proved(&self) -> bool {
         !self.failed.load(Ordering::Relaxed)
     }
 }
