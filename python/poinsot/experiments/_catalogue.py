@@ -235,15 +235,16 @@ def problems(e: Experiment) -> list[str]:
         out.append(f"expect {e.expect!r} is not 'agree' or 'disagree'")
     if e.expect == "disagree" and not e.why.strip():
         out.append("expect='disagree' without why")
-    for label, text in [
+    fields: list[tuple[str, str | None]] = [
         ("measured", e.measured),
         ("uncertainty", e.uncertainty),
         *e.inputs.items(),
-    ]:
-        if text is None:
+    ]
+    for label, value in fields:
+        if value is None:
             continue
         try:
-            parse(text)
+            parse(value)
         except PoinsotError as exc:
             out.append(f"{label}: {exc}")
     if not e.story.strip():
