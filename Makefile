@@ -139,8 +139,10 @@ sdist: lab-build
 # Installs that sdist into a fresh virtual environment with plain `pip install` (build isolation:
 # maturin from the index or pip's cache), checks its file list, that no web tool was called, and
 # that `poinsot fall` and the API answer as this checkout does (python/tests/test_sdist.py). The
-# cargo target dir is kept (target/sdist) so that a second run compiles only what changed.
+# cargo target dir (target/sdist) starts empty each run: the sdist's files carry the archive's
+# mtimes, so cargo would take an earlier checkout's build as fresh and install a stale core.
 test-sdist: sdist
+	rm -rf target/sdist
 	CARGO_TARGET_DIR=$(abspath target/sdist) POINSOT_SDIST="$$(ls dist/poinsot-*.tar.gz)" \
 		$(PY) -m pytest -q -m sdist python/tests/test_sdist.py
 
