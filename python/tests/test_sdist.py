@@ -14,7 +14,6 @@ maturin, numpy, click and rich).
 from __future__ import annotations
 
 import os
-import shutil
 import subprocess
 import sys
 import tarfile
@@ -128,14 +127,9 @@ def installed(
     root = tmp_path_factory.mktemp("sdist-venv")
     log = root / "web-tools.log"
     _shims(root / "shims", log)
-    # pip caches the wheel it builds from a local archive under the archive's address: an sdist
-    # of the same name at the same path would install the wheel of an earlier checkout. A copy
-    # at this run's own path is always built.
-    here = root / sdist.name
-    shutil.copyfile(sdist, here)
     bindir, env = install_in_fresh_venv(
         root,
-        [str(here)],
+        [str(sdist)],
         drop=("PYO3", "MATURIN", "VIRTUAL_ENV", "PYTHON"),
         path=([str(root / "shims")], os.environ["PATH"]),
         timeout=1800,
