@@ -6,13 +6,8 @@ torque-free motion) for the Earth's moments, spinning once per sidereal day, wit
 of the axis; the closed form is the symmetric top's 2π / |Ω|, Ω = (C − A)/A ω₃
 (:class:`poinsot.FreeSymmetricTop`, the unit's eqs. 2.85–2.88).
 
-The tennis-racket flip of a real object is not in the catalogue yet: no published measurement
-of a flip period with the object's measured moments was found. Peterson and Schwalm (Am. J.
-Phys. 89, 349 (2021)) model the T-handle filmed in orbit; the notebook that accompanies their
-paper says they "made no attempt to adjust the model to fit the period", the handle's moments
-being unknown. Wheatland et al. (Am. J. Phys. 89, 342 (2021), arXiv:2011.02024) recorded a
-tossed phone's flip with its own gyroscope; only the abstract was read here, so its moments and
-flip times are not in the catalogue.
+The tennis-racket flip of a real object, timed against its measured moments, is
+:mod:`.racket` (bubbar-zhu-2025); that module says which other measurements were looked for.
 """
 
 from __future__ import annotations

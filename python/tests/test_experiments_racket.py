@@ -1,0 +1,58 @@
+"""The tennis racket's entry (bubbar-zhu-2025): the published moments as printed, why the
+prediction takes the racquet flat, and how little the moments' uncertainties move it."""
+
+from __future__ import annotations
+
+import pytest
+from poinsot import FreeRigidBody, InvalidInertiaError
+from poinsot import experiments as x
+
+#: The report's table (g·m²) and its stated one-sigma uncertainties, typed here from the page.
+I1, I2, I3 = 20.7, 18.8, 1.391
+S1, S2, S3 = 3.8, 5.7, 0.076
+
+
+def test_the_published_central_moments_are_not_a_bodys_and_poinsot_refuses_them() -> None:
+    assert I2 + I3 < I1  # by 0.509 g·m², 2.5 % of I1
+    e = x.get("bubbar-zhu-2025")
+    w = [
+        float(e.parsed_inputs()[f"omega_{k}"].to("rad/s").magnitude)
+        for k in ("primary", "intermediate", "tertiary")
+    ]
+    with pytest.raises(InvalidInertiaError, match="moments"):
+        FreeRigidBody([I1 * 1e-3, I2 * 1e-3, I3 * 1e-3], w)
+
+
+def test_the_flat_racquets_intermediate_moment_is_within_the_published_one() -> None:
+    flat = I1 - I3
+    assert abs(flat - I2) / S2 < 0.1
+    e = x.get("bubbar-zhu-2025")
+    i = e.parsed_inputs()
+    assert i["moment_primary"].to("g*m**2").magnitude == pytest.approx(I1)
+    assert i["moment_tertiary"].to("g*m**2").magnitude == pytest.approx(I3)
+    assert "flat" in " ".join(e.assumptions)
+
+
+def test_the_moments_uncertainties_move_the_prediction_by_a_few_percent_only() -> None:
+    base = x.run("bubbar-zhu-2025").predicted_si
+    assert base == pytest.approx(0.9238, abs=1e-4)
+    for d1 in (-S1, S1):
+        for d3 in (-S3, S3):
+            r = x.run(
+                "bubbar-zhu-2025",
+                moment_primary=f"{I1 + d1} g*m**2",
+                moment_tertiary=f"{I3 + d3} g*m**2",
+            )
+            assert r.predicted_si is not None
+            assert abs(r.predicted_si / base - 1) < 0.03
+
+
+def test_the_measured_period_and_its_stated_spread_give_the_verdict_in_sigma() -> None:
+    r = x.run("bubbar-zhu-2025")
+    assert r.measured_si == pytest.approx(0.9690)
+    assert r.uncertainty_si == pytest.approx(0.0507)
+    assert r.sigma == pytest.approx((0.9690 - r.predicted_si) / 0.0507)
+    assert r.agrees and 0.5 < r.sigma < 1.2
+    assert "σ" in r.verdict and "no uncertainty stated" not in r.verdict
+    assert r.sources[0].url == "https://doi.org/10.14288/1.0448943"
+    assert all("first-hand" in s.note for s in r.sources)
