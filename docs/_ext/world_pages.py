@@ -164,6 +164,8 @@ def page_markdown(entry: Any, r: Any) -> str:
         text = f"- **{role}.** {s.who}, {s.where}, {s.when}. {s.publication}, {s.page}."
         if s.url:
             text += f" <{s.url}>"
+        if s.reading:
+            text += f" *({s.reading})*"
         if s.note:
             text += f" {s.note}"
         lines.append(text)

@@ -24,7 +24,7 @@ from poinsot.cli import main  # noqa: E402
 ROOT = Path(__file__).resolve().parents[2]
 
 # The interface the entries are written against (the brief of issue 24): names and order.
-SOURCE_FIELDS = ["who", "where", "when", "publication", "page", "url", "note"]
+SOURCE_FIELDS = ["who", "where", "when", "publication", "page", "url", "note", "first_hand"]
 EXPERIMENT_FIELDS = [
     "name", "title", "topic", "sources", "inputs", "quantity", "measured", "uncertainty",
     "uncertainty_kind", "predict", "closed_form", "assumptions", "story", "misquoted", "expect",

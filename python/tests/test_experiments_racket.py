@@ -56,3 +56,41 @@ def test_the_measured_period_and_its_stated_spread_give_the_verdict_in_sigma() -
     assert "σ" in r.verdict and "no uncertainty stated" not in r.verdict
     assert r.sources[0].url == "https://doi.org/10.14288/1.0448943"
     assert all("first-hand" in s.note for s in r.sources)
+
+
+# ---- how each source was read, and the verdict without a stated uncertainty ---------------------
+
+
+def test_a_source_records_whether_it_was_read_first_hand_and_keeps_it_through_json() -> None:
+    import json
+
+    from poinsot.experiments import Source
+
+    r = x.run("bubbar-zhu-2025")
+    back = type(r).from_dict(json.loads(json.dumps(r.to_dict())))
+    assert [s.first_hand for s in back.sources] == [True, True]
+    assert back.sources[0].reading == "read first-hand"
+    assert Source("w", "x", "y", "z", "p", first_hand=False).reading == "second-hand"
+    assert Source("w", "x", "y", "z", "p").reading == ""  # not recorded
+    reich = x.get("reich-1831").sources
+    assert reich[0].first_hand is False and reich[1].first_hand is True
+
+
+def test_the_docs_page_says_how_each_source_was_read() -> None:
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "docs" / "_ext"))
+    import world_pages
+
+    e = x.get("reich-1831")
+    page = world_pages.page_markdown(e, x.run("reich-1831"))
+    assert page.count("*(second-hand)*") == 1 and page.count("*(read first-hand)*") == 3
+
+
+def test_without_a_stated_uncertainty_the_verdict_names_the_five_percent_rule() -> None:
+    r = x.run("foucault-1851")
+    assert r.uncertainty is None and r.sigma is None
+    assert (
+        "no uncertainty stated" in r.verdict and f"within {x.AGREE_RELATIVE * 100:g} %" in r.verdict
+    )

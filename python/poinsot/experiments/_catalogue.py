@@ -107,6 +107,10 @@ class Source:
         A stable link (archive.org, a DOI) when there is one.
     note:
         How it was checked, or the secondary source used.
+    first_hand:
+        Whether this publication itself was read (its text, a facsimile or a faithful
+        transcription): ``True``; ``False`` when its figures are taken from the sources that
+        quote it (``note`` says which); ``None``: not recorded.
     """
 
     who: str
@@ -116,12 +120,21 @@ class Source:
     page: str
     url: str | None = None
     note: str = ""
+    first_hand: bool | None = None
+
+    @property
+    def reading(self) -> str:
+        """``"read first-hand"``, ``"second-hand"`` or ``""`` (not recorded), for a citation."""
+        if self.first_hand is None:
+            return ""
+        return "read first-hand" if self.first_hand else "second-hand"
 
     def to_dict(self) -> dict[str, Any]:
         """The source as plain JSON values."""
         return {k: getattr(self, k) for k in ("who", "where", "when", "publication", "page")} | {
             "url": self.url,
             "note": self.note,
+            "first_hand": self.first_hand,
         }
 
 

@@ -301,7 +301,11 @@ def run_entry(e: Experiment, changes: dict[str, Any] | None = None) -> Experimen
         else:
             agrees = abs(relative) <= AGREE_RELATIVE
             pct = num(abs(relative) * 100, 2)
-            text = f"{'agrees within' if agrees else 'differs by'} {pct} % (no uncertainty stated)"
+            rule = num(AGREE_RELATIVE * 100, 2)
+            text = (
+                f"{'agrees within' if agrees else 'differs by'} {pct} % "
+                f"(no uncertainty stated; agreement means within {rule} %)"
+            )
     expected = e.expect == "agree"
     as_expected = agrees == expected
     if not agrees and not expected:

@@ -60,6 +60,7 @@ _OLBERS = (
 _HALL_SOURCES = (
     Source(
         who="Edwin H. Hall",
+        first_hand=False,
         where="tower of the Jefferson Physical Laboratory, Harvard, Cambridge, Mass.",
         when="1902–1903",
         publication=(
@@ -77,6 +78,7 @@ _HALL_SOURCES = (
     ),
     Source(
         who="Edwin H. Hall",
+        first_hand=True,
         where="Jefferson Physical Laboratory, Harvard",
         when="1903",
         publication=(
@@ -93,6 +95,7 @@ _HALL_SOURCES = (
     ),
     Source(
         who="Tikalon blog (author not checked)",
+        first_hand=True,
         where="(secondary account)",
         when="2011",
         publication="'Towers', Tikalon blog, 2011",
@@ -106,6 +109,7 @@ _HALL_SOURCES = (
     ),
     Source(
         who="Indiana Public Media, A Moment of Science (author not named on the page)",
+        first_hand=True,
         where="(secondary account)",
         when="(undated web page)",
         publication=(
@@ -130,6 +134,7 @@ ENTRIES = [
         sources=(
             Source(
                 who="Giovanni Battista Guglielmini",
+                first_hand=False,
                 where="Torre degli Asinelli, Bologna",
                 when="1791",
                 publication=(
@@ -191,6 +196,7 @@ ENTRIES = [
         sources=(
             Source(
                 who="Johann Friedrich Benzenberg",
+                first_hand=True,
                 where="tower of St. Michaelis church, Hamburg",
                 when="1802",
                 publication=_BENZENBERG_1845,
@@ -209,6 +215,7 @@ ENTRIES = [
             ),
             Source(
                 who="Wilhelm Olbers (the computation, for Benzenberg)",
+                first_hand=True,
                 where="Bremen",
                 when="1802",
                 publication=_OLBERS,
@@ -218,6 +225,7 @@ ENTRIES = [
             ),
             Source(
                 who="Carl Friedrich Gauss (letter to Olbers)",
+                first_hand=True,
                 where="Braunschweig",
                 when="1 March 1803 or 1808 (the OCR reads 1808)",
                 publication=(
@@ -279,6 +287,7 @@ ENTRIES = [
         sources=(
             Source(
                 who="Johann Friedrich Benzenberg",
+                first_hand=True,
                 where="shaft 'zur alten Rosskunst', Schlebusch coal mine, County of Mark (Ruhr)",
                 when="1804",
                 publication=_BENZENBERG_1845,
@@ -326,6 +335,7 @@ ENTRIES = [
         sources=(
             Source(
                 who="Ferdinand Reich",
+                first_hand=False,
                 where="Drei-Brüder-Schacht, Freiberg, Saxony",
                 when="1831",
                 publication=(
@@ -347,6 +357,7 @@ ENTRIES = [
             ),
             Source(
                 who="(author not named on the page), Album der Natuur",
+                first_hand=True,
                 where="(a Dutch popular-science journal)",
                 when="1854",
                 publication="Album der Natuur, 1854 en 1855",
@@ -364,6 +375,7 @@ ENTRIES = [
             ),
             Source(
                 who="(a German textbook of physical geography, title not shown on the page)",
+                first_hand=True,
                 where="(secondary account)",
                 when="19th century",
                 publication=(
@@ -384,6 +396,7 @@ ENTRIES = [
             ),
             Source(
                 who="(a German encyclopaedia, article 'Erde'; title not shown on the page)",
+                first_hand=True,
                 where="(secondary account)",
                 when="19th century",
                 publication="article 'Erde', digitised by the TIB Hannover, PPN 857072099",

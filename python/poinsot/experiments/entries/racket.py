@@ -57,6 +57,7 @@ def _closed_flip_period(inputs: Mapping[str, Any]) -> Any:
 
 _REPORT = Source(
     who="Felix Bubbar and Leo Zhu (Science One, University of British Columbia)",
+    first_hand=True,
     where="Vancouver, British Columbia",
     when="2025 (the toss: 14 February 2025)",
     publication=(
@@ -79,6 +80,7 @@ _REPORT = Source(
 
 _TRIAL = Source(
     who="Felix Bubbar and Leo Zhu (the data and analysis the report points to)",
+    first_hand=True,
     where="Vancouver, British Columbia",
     when="2025-02-14 (the record 'Gyroscope rotation rate 2025-02-14 09-35-02')",
     publication=(

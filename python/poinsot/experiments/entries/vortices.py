@@ -44,6 +44,7 @@ ENTRIES = [
         sources=(
             Source(
                 who="Ascher H. Shapiro",
+                first_hand=False,
                 where="Watertown, Massachusetts (MIT, for the film 'Vorticity')",
                 when="1962",
                 publication="Shapiro, A. H. (1962), 'Bath-tub vortex', Nature 196, 1080–1081",
@@ -88,6 +89,7 @@ ENTRIES = [
         sources=(
             Source(
                 who="L. M. Trefethen, R. W. Bilger, P. T. Fink, R. E. Luxton, R. I. Tanner",
+                first_hand=True,
                 where="Sydney, Australia",
                 when="1965",
                 publication=(
