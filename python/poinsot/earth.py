@@ -278,6 +278,8 @@ class InertialOscillation:
     turning_rate:
         Rate at which the velocity turns, measured from the run (rad/s, counterclockwise
         positive); the theory says −2ω sin λ.
+    measured_period:
+        The period measured from the run, 2π/|turning_rate| (s; inf where it does not turn).
     period:
         The inertial period π/(ω |sin λ|) (s; inf at the equator).
     sense:
@@ -292,6 +294,7 @@ class InertialOscillation:
     turning_rate: float = 0.0
     period: float = float("inf")
     sense: str = "none"
+    measured_period: float = float("inf")
 
 
 @dataclass(frozen=True)
@@ -444,6 +447,20 @@ class Earth:
         line leans towards the equator, by at most about 0.1° near 45°."""
         lat, shape = as_flat(latitude, "latitude", degrees)
         dev = self._core.effective_gravity(lat)[2]
+        return shaped(np.degrees(dev) if as_flag(degrees, "degrees") else dev, shape)
+
+    def centrifugal_magnitude(self, latitude: Any, degrees: bool = False) -> Any:
+        """|ω × (ω × r)| = ω²R |cos λ| (m/s²) in closed form, the length of
+        :meth:`centrifugal_acceleration` by a second route; shape ``latitude.shape``."""
+        lat, shape = as_flat(latitude, "latitude", degrees)
+        return shaped(self._core.centrifugal_magnitude(lat), shape)
+
+    def plumb_line_deviation_closed(self, latitude: Any, degrees: bool = False) -> Any:
+        """:meth:`plumb_line_deviation` (rad, or degrees with ``degrees=True``) in closed form,
+        tan δ = q sin λ cos λ / (1 − q cos² λ) with q = ω²R/g: a second route beside the
+        effective-gravity vector; shape ``latitude.shape``."""
+        lat, shape = as_flat(latitude, "latitude", degrees)
+        dev = self._core.plumb_line_deviation_closed(lat)
         return shaped(np.degrees(dev) if as_flag(degrees, "degrees") else dev, shape)
 
     def centrifugal_acceleration(self, latitude: Any, degrees: bool = False) -> FloatArray:

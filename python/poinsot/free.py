@@ -208,6 +208,13 @@ class FreeSymmetricTop(show.Displayed):
         np.asarray,
     )
 
+    precession_period = core_property(
+        "precession_period",
+        """2π/|Ω| (s): the period of ω's precession about the symmetry axis in the body (2.83),
+        in closed form. Raises PoinsotError (naming ``omega0``) where Ω = 0.""",
+        float,
+    )
+
     body_cone_angle = core_property(
         "body_cone_angle",
         "Half-angle of the body cone, tan α_b = A / ω₃ (2.90), rad.",
@@ -399,6 +406,12 @@ class FreeRigidBody(show.Displayed):
         np.asarray,
     )
 
+    angular_momentum_magnitude = core_property(
+        "angular_momentum_magnitude",
+        "|L|, conserved (kg·m²/s), formed without overflow on the way.",
+        float,
+    )
+
     period = core_property(
         "period",
         "The period of ω(t) (s); inf when ω is constant or on the separatrix.",
@@ -521,6 +534,12 @@ class FreeRigidBody(show.Displayed):
         """``samples`` points of the polhode — ω over one period in body components (rad/s),
         shape (samples, 3); on the separatrix the branch from t = −12/λ to 12/λ."""
         return np.asarray(self._core.polhode(_samples(samples)))
+
+    def axis_stability(self) -> tuple[AxisStability, AxisStability, AxisStability]:
+        """The stability of steady rotation about each principal axis at this body's spin |ω₀|
+        (rad/s): :func:`axis_stability` of its moments and |ω₀|, three :class:`AxisStability`."""
+        a, b, c = (AxisStability(str(k), float(r)) for k, r in self._core.axis_stability())
+        return a, b, c
 
     def herpolhode(self, t: Any) -> FloatArray:
         """ω(t) in space components (rad/s), shape t.shape + (3,): its tip traces the herpolhode

@@ -166,3 +166,14 @@ class RigidEarth:
         (:data:`IAU2000A_PRINCIPAL_NUTATION`). Refused at ``obliquity`` 0."""
         dpsi, deps = self._core.nutation_amplitudes
         return float(dpsi), float(deps)
+
+    @property
+    def nutation_amplitudes_by_precession(self) -> tuple[float, float]:
+        """(Δψ₀, Δε₀) (rad) of :attr:`nutation_amplitudes` by a second route, in closed form
+        from the Moon's part of :attr:`precession_parts`: the Moon alone turns the pole about
+        its orbit's normal, which circles the ecliptic pole once a node period (18.6 years), so
+        Δψ₀ = −K sin i cos i cos 2ε/(ν sin ε) and Δε₀ = K sin i cos i cos ε/ν with
+        K = −moon_part/(cos ε (1 − (3/2) sin² i)), i the Moon's inclination and ν = 2π/T_node.
+        Equal to :attr:`nutation_amplitudes` to round-off. Refused at ``obliquity`` 0."""
+        dpsi, deps = self._core.nutation_amplitudes_by_precession
+        return float(dpsi), float(deps)

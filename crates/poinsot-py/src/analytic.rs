@@ -54,6 +54,8 @@ core_export! {
         energy -> f64;
         angular_momentum_magnitude -> f64;
         angular_momentum.map(Vector) -> Vector;
+        /// 2π/|Ω| (s), the body-frame precession period.
+        precession_period -> f64;
     }
 
     #[new]
@@ -136,6 +138,8 @@ core_export! {
     fallible {
         energy -> f64;
         angular_momentum.map(Vector) -> Vector;
+        /// |L| (kg·m²/s).
+        angular_momentum_magnitude -> f64;
         frequency -> f64;
         period -> f64;
         flip_interval -> f64;
@@ -204,6 +208,16 @@ core_export! {
     fn contact_polhode(&self, py: Python<'_>, samples: usize) -> PyResult<Rows<3>> {
         Ok(run(py, None, || self.inner.contact_polhode(samples))?
             .into_iter()
+            .collect())
+    }
+    /// The stability of steady rotation about each axis at this body's |ω₀|: [(kind, rate)] × 3.
+    fn axis_stability(&self) -> PyResult<Vec<(&'static str, f64)>> {
+        Ok(self
+            .inner
+            .axis_stability()
+            .py()?
+            .iter()
+            .map(|a| (a.stability.as_str(), a.rate))
             .collect())
     }
 }

@@ -137,6 +137,7 @@ pub struct PyInertialRun {
     position: Py<PyArray2<f64>>,
     velocity: Py<PyArray2<f64>>,
     turning_rate: f64,
+    measured_period: f64,
     period: f64,
     sense: &'static str,
 }
@@ -359,6 +360,10 @@ earth_export! {
         foucault_rate;
         /// π/(ω |sin λ|) (s; inf where ω sin λ = 0) at (N,) latitudes.
         inertial_period;
+        /// ω² R cos λ (m/s²) at (N,) latitudes, in closed form.
+        centrifugal_magnitude;
+        /// The plumb line's deviation (rad) at (N,) latitudes, in closed form.
+        plumb_line_deviation_closed;
     }
     per_height {
         /// The first-order eastward deflection 2.42 (m) for (N,) heights and latitudes.
@@ -570,6 +575,7 @@ earth_export! {
             velocity: columns::<4, 2>(py, &swing.run.states, 2)?,
             t: values(py, swing.run.t),
             turning_rate: swing.run.turning_rate,
+            measured_period: swing.run.measured_period,
             period: swing.period,
             sense: swing.sense.name(),
         })

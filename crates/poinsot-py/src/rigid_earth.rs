@@ -32,6 +32,8 @@ core_export! {
         precession_period -> f64;
         /// (Δψ₀, Δε₀) of the principal nutation (rad, IAU convention).
         nutation_amplitudes -> (f64, f64);
+        /// The same (Δψ₀, Δε₀) in closed form from the Moon's precession part (rad).
+        nutation_amplitudes_by_precession -> (f64, f64);
     }
 
     /// The rigid Earth of dynamical flattening H ∈ (0, 1), rate ω > 0 (rad/s) and obliquity

@@ -307,6 +307,30 @@ impl FreeRigidBody {
         )?;
         Ok(self.l_space_hat.map(|c| ldexp(c, k)))
     }
+    /// |L|, conserved (kg·m²/s): the length of [`Self::angular_momentum`], formed on the
+    /// scaled vector so that it does not overflow on the way. Errors as
+    /// [`Self::angular_momentum`].
+    pub fn angular_momentum_magnitude(&self) -> Result<f64> {
+        representable(
+            "omega0",
+            "the angular momentum |L|",
+            "kg·m²/s",
+            self.l_space_hat.norm(),
+            self.scale.e_i + self.scale.e_w,
+        )
+    }
+    /// The stability of steady rotation about each principal axis ([`super::axis_stability`])
+    /// at this body's spin |ω₀| (rad/s, formed without overflow on the way).
+    pub fn axis_stability(&self) -> Result<[super::AxisStability; 3]> {
+        let w = self.omega0;
+        let big = w.amax();
+        let spin = if big == 0.0 {
+            0.0
+        } else {
+            big * (w / big).norm()
+        };
+        super::axis_stability(self.moments, spin)
+    }
     /// Which motion this is.
     pub fn regime(&self) -> FreeRegime {
         self.regime

@@ -309,6 +309,26 @@ impl FreeSymmetricTop {
         self.sym.big_omega * self.scale.s_w
     }
 
+    /// The period 2π/|Ω| (s) of ω's precession about the symmetry axis in the body (2.83–2.88),
+    /// in closed form. Refused, naming `omega0`, where Ω = 0 (a sphere, or ω₃ = 0: ω does not
+    /// move in the body) or where the period is outside the normal double range.
+    pub fn precession_period(&self) -> Result<f64> {
+        let rate = self.sym.big_omega.abs();
+        if rate == 0.0 {
+            return Err(Error::invalid(
+                "omega0",
+                "the body-frame precession has no period where Ω = (I₁ − I₃) ω₃ / I₁ = 0 (a sphere, or ω₃ = 0: ω stays put in the body)",
+            ));
+        }
+        representable(
+            "omega0",
+            "the precession period 2π/|Ω|",
+            "s",
+            std::f64::consts::TAU / rate,
+            -self.scale.e_w,
+        )
+    }
+
     /// A = (ω₁² + ω₂²)^½, the constant magnitude of ω across the symmetry axis (2.85–2.88)
     /// (rad/s).
     pub fn amplitude(&self) -> f64 {

@@ -118,6 +118,37 @@ impl Earth {
         }
     }
 
+    /// The magnitude of the centrifugal acceleration, ω² R cos λ (m/s²), in closed form (the
+    /// length of [`Self::centrifugal_acceleration`] by a second route): ω² R at the equator, 0
+    /// at the poles. Refused, naming `rotation_rate`, where it overflows.
+    pub fn centrifugal_magnitude(&self, latitude: f64) -> Result<f64> {
+        check_latitude(latitude)?;
+        let a = self.rotation_rate * self.rotation_rate * self.radius * latitude.cos().abs();
+        if a.is_finite() {
+            Ok(a)
+        } else {
+            Err(self.overflow("the centrifugal acceleration ω² R cos λ", latitude))
+        }
+    }
+
+    /// The deviation of the plumb line from the radius (rad) in closed form, a second route
+    /// beside [`Self::effective_gravity`]'s vector: with q = ω² R / g,
+    ///
+    /// tan δ = q sin λ cos λ / (1 − q cos² λ)
+    ///
+    /// (the centrifugal acceleration's northward part over what is left of gravity along the
+    /// radius; δ ≈ (q/2) sin 2λ to first order in q, 0.1° at 45° on the Earth). Refused, naming
+    /// `rotation_rate`, where q overflows.
+    pub fn plumb_line_deviation_closed(&self, latitude: f64) -> Result<f64> {
+        check_latitude(latitude)?;
+        let q = self.rotation_rate * self.rotation_rate * self.radius / self.g;
+        if !q.is_finite() {
+            return Err(self.overflow("the ratio ω² R / g", latitude));
+        }
+        let (s, c) = latitude.sin_cos();
+        Ok((q * s * c).atan2(1.0 - q * c * c))
+    }
+
     /// ω² R cos λ (0, −sin λ, cos λ) on mantissas (±inf where a component overflows).
     fn centrifugal_unchecked(&self, latitude: f64) -> Vec3 {
         if self.rotation_rate == 0.0 {

@@ -346,6 +346,39 @@ impl RigidEarth {
         )?;
         Ok((dpsi, base * ce))
     }
+
+    /// The principal nutation (Δψ₀, Δε₀) (rad) by a second route, in closed form from the
+    /// Moon's part of the precession ([`Self::precession_parts`]): the Moon alone turns the
+    /// pole about its own orbit's normal, and the normal circles the ecliptic pole once a node
+    /// period T_node, so with ν = 2π/T_node
+    ///
+    /// Δψ₀ = −K sin i cos i cos 2ε/(ν sin ε),  Δε₀ = K sin i cos i cos ε/ν,
+    /// K = −P_☾/(cos ε (1 − (3/2) sin² i)),
+    ///
+    /// P_☾ the Moon's precession part (the Moon's constant K_☾ read back off it). Equal to
+    /// [`Self::nutation_amplitudes`] to round-off; the experiment catalogue shows it as the
+    /// closed-form column. Refused, naming `obliquity`, at ε = 0 or where it overflows.
+    pub fn nutation_amplitudes_by_precession(&self) -> Result<(f64, f64)> {
+        if self.obliquity == 0.0 {
+            return Err(Error::invalid(
+                "obliquity",
+                "must be > 0 for the nutation in longitude (a longitude of the pole is undefined when the equator lies in the ecliptic), got 0 rad",
+            ));
+        }
+        let (_, moon_part) = self.precession_parts();
+        let (si, ci) = self.moon.inclination.sin_cos();
+        let (se, ce) = self.obliquity.sin_cos();
+        let nu = TAU / self.moon.node_period;
+        let k = -moon_part / (ce * (1.0 - 1.5 * si * si));
+        let base = k * si * ci / nu;
+        let dpsi = finite_result(
+            "obliquity",
+            "the nutation in longitude",
+            -base * (2.0 * self.obliquity).cos() / se,
+        )?;
+        let deps = finite_result("obliquity", "the nutation in obliquity", base * ce)?;
+        Ok((dpsi, deps))
+    }
 }
 
 #[cfg(test)]
@@ -416,6 +449,21 @@ mod tests {
         let want = -1.5 * h / w * eps.cos() * (n2s + n2m * (1.0 - 1.5 * im.sin().powi(2)));
         let got = RigidEarth::default().precession_rate();
         assert!((got / want - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn nutation_by_precession_equals_the_direct_closed_form() {
+        for e in [
+            RigidEarth::default(),
+            RigidEarth::new(0.01, 1e-4, 0.3).unwrap(),
+        ] {
+            let (a, b) = e.nutation_amplitudes().unwrap();
+            let (c, d) = e.nutation_amplitudes_by_precession().unwrap();
+            assert!((c / a - 1.0).abs() < 1e-13 && (d / b - 1.0).abs() < 1e-13);
+        }
+        let flat = RigidEarth::new(0.01, 1e-4, 0.0).unwrap();
+        let err = flat.nutation_amplitudes_by_precession().unwrap_err();
+        assert!(err.to_string().contains("obliquity"));
     }
 
     #[test]

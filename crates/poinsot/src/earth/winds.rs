@@ -16,6 +16,9 @@ pub struct InertialRun {
     /// positive), measured as the integrated turning angle divided by the duration; the
     /// theory says −f = −2 ω sin λ.
     pub turning_rate: f64,
+    /// The period measured from the run, 2π/|turning_rate| (s; infinite where the velocity
+    /// does not turn): the theory says π/(ω |sin λ|).
+    pub measured_period: f64,
 }
 
 /// Parcels flowing into a low-pressure centre.
@@ -104,11 +107,17 @@ impl Earth {
             0.0
         };
         check_outputs(scan.y.iter().flatten().chain([&turning_rate]))?;
+        let measured_period = if turning_rate == 0.0 {
+            f64::INFINITY
+        } else {
+            std::f64::consts::TAU / turning_rate.abs()
+        };
         let states = scan.y.iter().map(|s| [s[0], s[1], s[2], s[3]]).collect();
         Ok(InertialRun {
             t: scan.t,
             states,
             turning_rate,
+            measured_period,
         })
     }
 

@@ -9,7 +9,6 @@ the flattening itself (the equatorial bulge and the pole's nearness to the centr
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from typing import Any
 
@@ -32,8 +31,8 @@ def _closed_gravity_step(inputs: Mapping[str, Any]) -> Any:
     """The centrifugal acceleration's magnitude ω²R cos λ at the equator minus at the pole (the
     sphere's whole difference: its attraction is the same everywhere)."""
     e = Earth()
-    pole = math.hypot(*e.centrifugal_acceleration(inputs["pole_latitude"]))
-    equator = math.hypot(*e.centrifugal_acceleration(inputs["equator_latitude"]))
+    pole = e.centrifugal_magnitude(inputs["pole_latitude"])
+    equator = e.centrifugal_magnitude(inputs["equator_latitude"])
     return ureg.Quantity(equator - pole, "m/s^2")
 
 
@@ -43,9 +42,9 @@ def _plumb(inputs: Mapping[str, Any]) -> Any:
 
 
 def _closed_plumb(inputs: Mapping[str, Any]) -> Any:
-    """The same angle from the effective-gravity vector (eq. 2.31): atan(g_north / g_up)."""
-    g = Earth().effective_gravity(inputs["latitude"])
-    return ureg.Quantity(math.atan2(abs(float(g[1])), abs(float(g[2]))), "rad")
+    """The same angle in closed form, tan δ = q sin λ cos λ / (1 − q cos² λ) with q = ω²R/g
+    (Earth.plumb_line_deviation_closed)."""
+    return ureg.Quantity(Earth().plumb_line_deviation_closed(inputs["latitude"]), "rad")
 
 
 _TR8350 = Source(

@@ -8,11 +8,11 @@ are given clockwise seen from above, positive (the way the 1851 observers report
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from typing import Any
 
 from poinsot import Earth, PoinsotError
+from poinsot.earth import FoucaultRun
 
 from .._catalogue import Experiment, Source, ureg
 
@@ -22,19 +22,29 @@ __all__ = ["ENTRIES"]
 _DURATION = 3600.0
 
 
-def _swing(inputs: Mapping[str, Any]) -> float:
-    """The fitted rate of turn of the swing plane, clockwise seen from above (rad/s); a
-    pendulum of :data:`_UNPUBLISHED_LENGTH` where the source gives no length."""
+def _swing(inputs: Mapping[str, Any]) -> FoucaultRun:
+    """The pendulum of the entry swung for :data:`_DURATION` (a pendulum of
+    :data:`_UNPUBLISHED_LENGTH` where the source gives no length); refused where it shows no
+    steady turn. The run of each (latitude, length) is kept, so the prediction and the closed
+    form of one entry swing it once."""
     length = inputs.get("length", _UNPUBLISHED_LENGTH)
-    run = Earth().foucault(
-        inputs["latitude"],
-        length=length,
-        amplitude=length * _AMPLITUDE_RATIO,
-        duration=_DURATION,
-    )
+    key = (float(inputs["latitude"].to("rad").magnitude), float(length.to("m").magnitude))
+    run = _RUNS.get(key)
+    if run is None:
+        run = Earth().foucault(
+            inputs["latitude"],
+            length=length,
+            amplitude=length * _AMPLITUDE_RATIO,
+            duration=_DURATION,
+        )
+        _RUNS[key] = run
     if run.precession_rate is None:
         raise PoinsotError(f"the pendulum shows no steady turn: {run.regime_note}")
-    return -run.precession_rate
+    return run
+
+
+#: The runs swung so far, by (latitude in rad, length in m): a handful (one per entry).
+_RUNS: dict[tuple[float, float], FoucaultRun] = {}
 
 
 #: The release's distance from rest as a fraction of the length: a small swing (the sources do
@@ -47,7 +57,7 @@ _UNPUBLISHED_LENGTH = ureg.Quantity(10.0, "m")
 
 def _rate(inputs: Mapping[str, Any]) -> Any:
     """The swing plane's rate of turn from the integrated pendulum (clockwise positive)."""
-    return ureg.Quantity(_swing(inputs), "rad/s")
+    return ureg.Quantity(-_swing(inputs).precession_rate, "rad/s")
 
 
 def _closed_rate(inputs: Mapping[str, Any]) -> Any:
@@ -56,13 +66,14 @@ def _closed_rate(inputs: Mapping[str, Any]) -> Any:
 
 
 def _turn_time(inputs: Mapping[str, Any]) -> Any:
-    """The time the swing plane takes to turn once, from the integrated pendulum's rate."""
-    return ureg.Quantity(2 * math.pi / abs(_swing(inputs)), "s")
+    """The time the swing plane takes to turn once, from the integrated pendulum's rate
+    (FoucaultRun.full_turn_period)."""
+    return ureg.Quantity(_swing(inputs).full_turn_period, "s")
 
 
 def _closed_turn_time(inputs: Mapping[str, Any]) -> Any:
-    """2π / (ω sin λ)."""
-    return ureg.Quantity(2 * math.pi / abs(Earth().foucault_rate(inputs["latitude"])), "s")
+    """2π / |ω sin λ| (FoucaultRun.expected_full_turn_period)."""
+    return ureg.Quantity(_swing(inputs).expected_full_turn_period, "s")
 
 
 _HANDBOOK = Source(

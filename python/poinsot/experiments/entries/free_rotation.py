@@ -12,7 +12,6 @@ The tennis-racket flip of a real object, timed against its measured moments, is
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from typing import Any
 
@@ -46,10 +45,10 @@ def _euler_period(inputs: Mapping[str, Any]) -> Any:
 
 
 def _closed_euler_period(inputs: Mapping[str, Any]) -> Any:
-    """2π / |Ω|, Ω = (C − A)/A ω₃ (the symmetric top's body-frame precession)."""
+    """2π / |Ω|, Ω = (C − A)/A ω₃ (FreeSymmetricTop.precession_period, the symmetric top's
+    body-frame precession in closed form)."""
     a, c = _moments(inputs)
-    top = FreeSymmetricTop(a, c, _omega0())
-    return ureg.Quantity(2 * math.pi / abs(top.precession_rate), "s")
+    return ureg.Quantity(FreeSymmetricTop(a, c, _omega0()).precession_period, "s")
 
 
 ENTRIES = [

@@ -8,7 +8,6 @@ the period from the rate at which its velocity turns in the run; the closed form
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from typing import Any
 
@@ -20,9 +19,10 @@ __all__ = ["ENTRIES"]
 
 
 def _period(inputs: Mapping[str, Any]) -> Any:
-    """2π over the rate at which the integrated parcel's velocity turns."""
+    """The period measured from the integrated parcel, 2π over the rate at which its velocity
+    turns (InertialOscillation.measured_period)."""
     run = Earth().inertial_oscillation(inputs["latitude"])
-    return ureg.Quantity(2 * math.pi / abs(run.turning_rate), "s")
+    return ureg.Quantity(run.measured_period, "s")
 
 
 def _closed_period(inputs: Mapping[str, Any]) -> Any:

@@ -10,7 +10,6 @@ motion. ``poinsot earth`` prints these entries' measured values beside RigidEart
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from typing import Any
 
@@ -38,13 +37,6 @@ def _precession_parts(inputs: Mapping[str, Any]) -> Any:
     return ureg.Quantity(-(sun + moon), "rad/s")
 
 
-#: The Moon's mean inclination to the ecliptic (rad) and its node's regression period (s), the
-#: core's values (JPL Horizons' physical-data sheet of the Moon, 301: 5.145°, 6798.38 d); not
-#: parameters of RigidEarth, so not inputs of the entries.
-_MOON_INCLINATION = math.radians(5.145)
-_NODE_PERIOD = 6798.38 * 86400.0
-
-
 def _nutation(index: int) -> Any:
     def predict(inputs: Mapping[str, Any]) -> Any:
         return ureg.Quantity(_earth(inputs).nutation_amplitudes[index], "rad")
@@ -54,23 +46,13 @@ def _nutation(index: int) -> Any:
 
 
 def _nutation_by_precession(index: int) -> Any:
-    """The principal nutation from the Moon's precession part: the Moon alone turns the pole
-    about its own orbit's normal, and the normal circles the ecliptic pole once a node period,
-    so Δψ₀ = −K sin i cos i cos 2ε/(ν sin ε), Δε₀ = K sin i cos i cos ε/ν with
-    K = −moon_part/(cos ε (1 − (3/2) sin² i)) (the Moon's constant, read off RigidEarth's part)."""
-
     def closed(inputs: Mapping[str, Any]) -> Any:
-        e = _earth(inputs)
-        _, moon = e.precession_parts
-        eps = e.obliquity
-        incl = _MOON_INCLINATION
-        nu = 2 * math.pi / _NODE_PERIOD
-        k = -moon / (math.cos(eps) * (1 - 1.5 * math.sin(incl) ** 2))
-        base = k * math.sin(incl) * math.cos(incl) / nu
-        values = (-base * math.cos(2 * eps) / math.sin(eps), base * math.cos(eps))
-        return ureg.Quantity(values[index], "rad")
+        return ureg.Quantity(_earth(inputs).nutation_amplitudes_by_precession[index], "rad")
 
-    closed.__doc__ = _nutation_by_precession.__doc__
+    closed.__doc__ = (
+        f"RigidEarth.nutation_amplitudes_by_precession[{index}] (rad): the closed form from "
+        "the Moon's precession part."
+    )
     return closed
 
 
