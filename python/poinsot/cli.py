@@ -1254,7 +1254,7 @@ def free(
     from .dynamics import simulate
 
     _check_pictures(plot_path, animate_path)
-    from .free import FreeRigidBody, axis_stability
+    from .free import FreeRigidBody
 
     exact = FreeRigidBody(moments, omega)
     show_bar = (
@@ -1285,7 +1285,7 @@ def free(
     q_err = float(
         min(np.linalg.norm(tr.attitude[-1] - q_end), np.linalg.norm(tr.attitude[-1] + q_end))
     )
-    stab = axis_stability(moments, float(np.linalg.norm(omega)))
+    stab = exact.axis_stability()
     data = {
         "moments": list(moments),
         "omega0": list(omega),
@@ -1303,9 +1303,7 @@ def free(
         "flip_interval": exact.flip_interval,
         "energy": exact.energy,
         "angular_momentum": exact.angular_momentum,
-        "angular_momentum_magnitude": float(
-            np.hypot(np.hypot(*exact.angular_momentum[:2]), exact.angular_momentum[2])
-        ),
+        "angular_momentum_magnitude": exact.angular_momentum_magnitude,
         "max_energy_error": float(tr.energy_error().max()),
         "max_momentum_error": float(tr.momentum_error().max()),
         "omega_final": tr.omega[-1],
