@@ -94,3 +94,14 @@ def test_without_a_stated_uncertainty_the_verdict_names_the_five_percent_rule() 
     assert (
         "no uncertainty stated" in r.verdict and f"within {x.AGREE_RELATIVE * 100:g} %" in r.verdict
     )
+
+
+def test_every_source_says_whether_it_was_read_and_problems_flags_one_that_does_not() -> None:
+    import dataclasses
+
+    for e in x.catalogue():
+        assert all(s.first_hand is not None for s in e.sources), e.name
+    e = x.get("reich-1831")
+    blank = dataclasses.replace(e.sources[0], first_hand=None)
+    bad = dataclasses.replace(e, sources=(blank, *e.sources[1:]))
+    assert x.problems(bad) == ["sources[0].first_hand is not recorded (was it read first-hand?)"]

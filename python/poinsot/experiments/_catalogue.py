@@ -227,7 +227,8 @@ class Experiment:
 
 def problems(e: Experiment) -> list[str]:
     """What is missing or malformed in an entry (empty for a complete one): every source needs
-    who, where, when, publication and page (none a "TODO" placeholder); the topic is one of :data:`TOPICS`; the measured
+    who, where, when, publication and page (none a "TODO" placeholder) and says whether it was
+    read first-hand; the topic is one of :data:`TOPICS`; the measured
     value, its uncertainty and the inputs read in pint; ``expect`` is ``"agree"`` or
     ``"disagree"`` (with ``why``)."""
     out = []
@@ -244,6 +245,8 @@ def problems(e: Experiment) -> list[str]:
                 out.append(f"sources[{i}].{key} is empty")
             elif "TODO" in text.upper():
                 out.append(f"sources[{i}].{key} is a placeholder: {text!r}")
+        if s.first_hand is None:
+            out.append(f"sources[{i}].first_hand is not recorded (was it read first-hand?)")
     if e.expect not in ("agree", "disagree"):
         out.append(f"expect {e.expect!r} is not 'agree' or 'disagree'")
     if e.expect == "disagree" and not e.why.strip():

@@ -49,6 +49,7 @@ def _closed_plumb(inputs: Mapping[str, Any]) -> Any:
 
 _TR8350 = Source(
     who="National Imagery and Mapping Agency (NIMA)",
+    first_hand=False,
     where="(the WGS 84 reference ellipsoid, from satellite and surface gravimetry)",
     when="2000",
     publication=(
@@ -112,6 +113,7 @@ ENTRIES = [
         sources=(
             Source(
                 who="George H. Kaplan (U.S. Naval Observatory)",
+                first_hand=True,
                 where="(the WGS 84 ellipsoid's flattening)",
                 when="2005",
                 publication=(

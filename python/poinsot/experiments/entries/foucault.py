@@ -78,6 +78,7 @@ def _closed_turn_time(inputs: Mapping[str, Any]) -> Any:
 
 _HANDBOOK = Source(
     who="(compiled from the 1851 reports)",
+    first_hand=True,
     where="Paris, Bristol, Dublin, Aberdeen, New York, Ceylon",
     when="1851",
     publication=(
@@ -99,6 +100,7 @@ ENTRIES = [
         sources=(
             Source(
                 who="Léon Foucault",
+                first_hand=True,
                 where="Panthéon, Paris (first at the Observatoire, salle de la Méridienne)",
                 when="1851",
                 publication=(
@@ -165,6 +167,7 @@ ENTRIES = [
         sources=(
             Source(
                 who="Joseph Galbraith and Samuel Haughton",
+                first_hand=False,
                 where=(
                     "engine factory of the Dublin & Kingstown Railway, Grand Canal Basin, "
                     "Ringsend, Dublin"
@@ -219,6 +222,7 @@ ENTRIES = [
         sources=(
             Source(
                 who="observers in Ceylon (not named in the source found)",
+                first_hand=False,
                 where="Ceylon (latitude 7° N as the source gives it)",
                 when="1851",
                 publication=_HANDBOOK.publication,

@@ -59,6 +59,7 @@ ENTRIES = [
         sources=(
             Source(
                 who="Seth Carlo Chandler",
+                first_hand=False,
                 where="Cambridge, Massachusetts (latitude series of many observatories)",
                 when="1891",
                 publication=(
@@ -75,6 +76,7 @@ ENTRIES = [
             ),
             Source(
                 who="Simon Newcomb",
+                first_hand=False,
                 where="Washington",
                 when="1891",
                 publication=(
@@ -91,6 +93,7 @@ ENTRIES = [
             ),
             Source(
                 who="G. Petit and B. Luzum (eds.), IERS Conventions Centre",
+                first_hand=False,
                 where="Bureau International des Poids et Mesures, Sèvres / US Naval Observatory",
                 when="2010",
                 publication=(

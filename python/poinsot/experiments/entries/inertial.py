@@ -38,6 +38,7 @@ ENTRIES = [
         sources=(
             Source(
                 who="Torsten Gustafson and Börje Kullenberg",
+                first_hand=False,
                 where="the Baltic Sea (position: see the note)",
                 when="August 1936 (published 1936)",
                 publication=(
@@ -59,6 +60,7 @@ ENTRIES = [
             ),
             Source(
                 who="V. Walfrid Ekman",
+                first_hand=True,
                 where="(review)",
                 when="c. 1939",
                 publication=(
@@ -73,6 +75,7 @@ ENTRIES = [
             ),
             Source(
                 who="Rutgers University, Physical Oceanography course (Fall 2000)",
+                first_hand=True,
                 where="(teaching material)",
                 when="2000",
                 publication="Physical Oceanography, Problem #9, due October 23, 2000",

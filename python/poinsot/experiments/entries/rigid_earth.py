@@ -72,6 +72,7 @@ def _chandler_closed(inputs: Mapping[str, Any]) -> Any:
 
 _IERS = Source(
     who="G. Petit and B. Luzum (eds.), IERS Conventions Centre",
+    first_hand=False,
     where="Bureau International des Poids et Mesures, Sèvres / US Naval Observatory",
     when="2010",
     publication=(
@@ -89,6 +90,7 @@ _IERS = Source(
 
 _MHB = Source(
     who="P. M. Mathews, T. A. Herring and B. A. Buffett",
+    first_hand=False,
     where="VLBI nutation series (IERS), the MHB2000 model adopted as IAU 2000A",
     when="2002",
     publication=(
@@ -116,6 +118,7 @@ ENTRIES = [
         sources=(
             Source(
                 who="N. Capitaine, P. T. Wallace and J. Chapront",
+                first_hand=False,
                 where="Observatoire de Paris (from VLBI and lunar laser ranging)",
                 when="2003",
                 publication=(
@@ -225,6 +228,7 @@ ENTRIES = [
         sources=(
             Source(
                 who="R. O. Vicente and C. R. Wilson",
+                first_hand=False,
                 where="Lisbon and Austin (polar motion series 1846 to the early 1990s)",
                 when="1997",
                 publication=(
@@ -247,6 +251,7 @@ ENTRIES = [
             ),
             Source(
                 who="M. L. Smith and F. A. Dahlen",
+                first_hand=False,
                 where="Princeton",
                 when="1981",
                 publication=(
