@@ -1,5 +1,5 @@
-import { readFileSync } from "node:fs";
 import { defineConfig, type Plugin } from "vite";
+import { wasmBase64 } from "./vite.wasm-base64";
 
 // The lab as ONE self-contained HTML file (`poinsot lab --export FILE.html`, issue 23 item 2): the
 // page of vite.config.ts with its script, stylesheet and WebAssembly core inside the HTML, so that
@@ -11,28 +11,15 @@ import { defineConfig, type Plugin } from "vite";
 /** The glue's default location of the core (a fetch of a relative file, refused under file://)
  * becomes the core's bytes, decoded from base64 inlined in the bundle: `init()` fetches nothing. */
 function wasmInline(): Plugin {
-  return {
-    name: "poinsot-export-wasm",
-    enforce: "pre",
-    load(id) {
-      if (!id.endsWith(".wasm?base64")) return null;
-      const file = id.slice(0, -"?base64".length);
-      this.addWatchFile(file);
-      return `export default ${JSON.stringify(readFileSync(file).toString("base64"))};`;
-    },
-    transform(code, id) {
-      if (!id.endsWith("/wasm/poinsot_wasm.js")) return null;
-      const at = "new URL('poinsot_wasm_bg.wasm', import.meta.url)";
-      if (!code.includes(at)) this.error(`${id}: the glue no longer loads ${at}; update vite.export.config.ts`);
-      const bytes =
-        "(() => { const s = atob(__poinsotCore); const b = new Uint8Array(s.length); " +
-        "for (let i = 0; i < s.length; i++) b[i] = s.charCodeAt(i); return b; })()";
-      return {
-        code: `import __poinsotCore from "./poinsot_wasm_bg.wasm?base64";\n${code.replace(at, bytes)}`,
-        map: null,
-      };
-    },
-  };
+  const bytes =
+    "(() => { const s = atob(__poinsotCore); const b = new Uint8Array(s.length); " +
+    "for (let i = 0; i < s.length; i++) b[i] = s.charCodeAt(i); return b; })()";
+  return wasmBase64(
+    "poinsot-export-wasm",
+    "vite.export.config.ts",
+    bytes,
+    'import __poinsotCore from "./poinsot_wasm_bg.wasm?base64";\n',
+  );
 }
 
 /** What the file may load: its own inline script, styles and WebAssembly, data: and blob: images

@@ -1,26 +1,15 @@
-import { readFileSync } from "node:fs";
 import { defineConfig, type Plugin } from "vite";
+import { wasmBase64 } from "./vite.wasm-base64";
 
-/** `import b64 from "./x.wasm?base64"`: the file's bytes as a base64 string, in the bundle. */
+/** `import b64 from "./x.wasm?base64"`: the file's bytes as a base64 string, in the bundle. The
+ * glue's default location of the module (used only when init() is given nothing) would be inlined
+ * a second time: the widget always passes the bytes, so the glue gets none. */
 function base64Wasm(): Plugin {
-  return {
-    name: "poinsot-wasm-base64",
-    enforce: "pre",
-    load(id) {
-      if (!id.endsWith(".wasm?base64")) return null;
-      const file = id.slice(0, -"?base64".length);
-      this.addWatchFile(file);
-      return `export default ${JSON.stringify(readFileSync(file).toString("base64"))};`;
-    },
-    // The glue's default location of the module (used only when init() is given nothing) would be
-    // inlined a second time: the widget always passes the bytes, so the glue gets none.
-    transform(code, id) {
-      if (!id.endsWith("/wasm/poinsot_wasm.js")) return null;
-      const at = "new URL('poinsot_wasm_bg.wasm', import.meta.url)";
-      if (!code.includes(at)) this.error(`${id}: the glue no longer loads ${at}; update vite.widget.config.ts`);
-      return { code: code.replace(at, "(() => { throw new Error('poinsot widget: the core is passed as bytes'); })()"), map: null };
-    },
-  };
+  return wasmBase64(
+    "poinsot-wasm-base64",
+    "vite.widget.config.ts",
+    "(() => { throw new Error('poinsot widget: the core is passed as bytes'); })()",
+  );
 }
 
 // The notebook widget (src/widget.ts): ONE ES module, the WebAssembly core inlined in it, and its
