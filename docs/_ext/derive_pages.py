@@ -17,6 +17,8 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from page_files import write_folder, write_page  # docs/_ext/, on the path beside this module
+
 DOCS = Path(__file__).resolve().parent.parent
 ROOT = DOCS.parent
 DERIVATIONS = DOCS / "derivations.md"
@@ -196,26 +198,13 @@ def derivation_pages() -> dict[Path, str]:
     return out
 
 
-def _write(path: Path, text: str) -> bool:
-    if path.exists() and path.read_text(encoding="utf-8") == text:
-        return False
-    path.write_text(text, encoding="utf-8")
-    return True
-
-
 def write_pages(app: Any = None, config: Any = None) -> None:
     """The Sphinx hook (``config-inited``): both pages, rewritten only when they change."""
-    _write(DERIVATIONS, derivations_markdown())
-    PAGES.mkdir(exist_ok=True)
-    pages = derivation_pages()
-    for stale in PAGES.glob("*.md"):
-        if stale not in pages:
-            stale.unlink()
-    for path, text in pages.items():
-        _write(path, text)
-    _write(ERRATA, errata_markdown())
+    write_page(DERIVATIONS, derivations_markdown())
+    write_folder(PAGES, derivation_pages())
+    write_page(ERRATA, errata_markdown())
 
 
 if __name__ == "__main__":  # `make errata-page`
-    changed = _write(ERRATA, errata_markdown())
+    changed = write_page(ERRATA, errata_markdown())
     sys.stdout.write(f"{ERRATA.relative_to(ROOT)}: {'rewritten' if changed else 'unchanged'}\n")

@@ -22,6 +22,8 @@ import textwrap
 from pathlib import Path
 from typing import Any
 
+from page_files import write_folder  # docs/_ext/, on the path beside this module
+
 DOCS = Path(__file__).resolve().parent.parent
 WORLD = DOCS / "world"
 FIGURES = DOCS / "_generated" / "world"
@@ -196,20 +198,9 @@ def pages(draw: bool = True) -> dict[Path, str]:
     return out
 
 
-def _write(path: Path, text: str) -> None:
-    if not path.exists() or path.read_text(encoding="utf-8") != text:
-        path.write_text(text, encoding="utf-8")
-
-
 def write_pages(app: Any = None, config: Any = None) -> None:
     """The Sphinx hook (``config-inited``): the chapter's pages, stale ones removed."""
-    WORLD.mkdir(exist_ok=True)
-    written = pages()
-    for stale in WORLD.glob("*.md"):
-        if stale not in written:
-            stale.unlink()
-    for path, text in written.items():
-        _write(path, text)
+    write_folder(WORLD, pages())
 
 
 def setup(app: Any) -> dict[str, Any]:
