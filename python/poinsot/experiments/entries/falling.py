@@ -15,6 +15,7 @@ smaller.
 from __future__ import annotations
 
 from collections.abc import Mapping
+from functools import partial
 from typing import Any
 
 from poinsot import Earth
@@ -126,11 +127,21 @@ _HALL_SOURCES = (
 )
 _HALL_INPUTS = {"height": "75 foot", "latitude": "42 deg + 23 arcmin"}
 
+#: The fields every falling-body entry shares (the topic and the model's assumptions), and an
+#: eastward entry's quantity and two routes besides.
+_falling = partial(
+    Experiment,
+    topic="falling bodies",
+    assumptions=("vacuum", "uniform gravity", "spherical Earth", "sidereal rotation"),
+)
+_eastward = partial(
+    _falling, quantity="eastward deflection", predict=_drop_east, closed_form=_closed_east
+)
+
 ENTRIES = [
-    Experiment(
+    _eastward(
         name="guglielmini-1791",
         title="Guglielmini in Bologna",
-        topic="falling bodies",
         sources=(
             Source(
                 who="Giovanni Battista Guglielmini",
@@ -160,13 +171,9 @@ ENTRIES = [
             ),
         ),
         inputs={"height": "241 paris_foot", "latitude": "44 deg + 30 arcmin"},
-        quantity="eastward deflection",
         measured="7.4 paris_line",
         uncertainty=None,
         uncertainty_kind="none stated (16 drops, as later accounts give it; only the mean found)",
-        predict=_drop_east,
-        closed_form=_closed_east,
-        assumptions=("vacuum", "uniform gravity", "spherical Earth", "sidereal rotation"),
         story=(
             "The first drops long enough to show the Earth's rotation were Guglielmini's, "
             "in 1791, from the Torre degli Asinelli in Bologna, where Riccioli had once "
@@ -189,10 +196,9 @@ ENTRIES = [
         ),
         unit="paris_line",
     ),
-    Experiment(
+    _eastward(
         name="benzenberg-1802",
         title="Benzenberg in Hamburg",
-        topic="falling bodies",
         sources=(
             Source(
                 who="Johann Friedrich Benzenberg",
@@ -248,7 +254,6 @@ ENTRIES = [
             ),
         ),
         inputs={"height": "235 paris_foot", "latitude": "53 deg + 33 arcmin"},
-        quantity="eastward deflection",
         measured="3.997 paris_line",
         uncertainty=None,
         uncertainty_kind=(
@@ -256,9 +261,6 @@ ENTRIES = [
             "to Olbers, reports 31 drops with a 'Fehlergrenze' of 18 lines, not knowing "
             "whether range or largest departure from the mean is meant)"
         ),
-        predict=_drop_east,
-        closed_form=_closed_east,
-        assumptions=("vacuum", "uniform gravity", "spherical Earth", "sidereal rotation"),
         story=(
             "In 1802 the young Johann Friedrich Benzenberg opened the trap doors of the floors "
             "in the tower of Hamburg's St. Michaelis church and dropped lead balls 235 Paris "
@@ -280,10 +282,9 @@ ENTRIES = [
         ),
         unit="paris_line",
     ),
-    Experiment(
+    _eastward(
         name="benzenberg-1804",
         title="Benzenberg at Schlebusch",
-        topic="falling bodies",
         sources=(
             Source(
                 who="Johann Friedrich Benzenberg",
@@ -306,13 +307,9 @@ ENTRIES = [
             ),
         ),
         inputs={"height": "262 paris_foot", "latitude": "51 deg + 25 arcmin"},
-        quantity="eastward deflection",
         measured="5.06 paris_line",
         uncertainty=None,
         uncertainty_kind="none stated (28 drops; only their mean is printed on the pages found)",
-        predict=_drop_east,
-        closed_form=_closed_east,
-        assumptions=("vacuum", "uniform gravity", "spherical Earth", "sidereal rotation"),
         story=(
             "Wind and the tower's uneven warmth had troubled the Hamburg drops, so in the "
             "winter of 1803–04 Benzenberg moved to a disused shaft of the Schlebusch coal mine "
@@ -328,10 +325,9 @@ ENTRIES = [
         ),
         unit="paris_line",
     ),
-    Experiment(
+    _eastward(
         name="reich-1831",
         title="Reich at Freiberg",
-        topic="falling bodies",
         sources=(
             Source(
                 who="Ferdinand Reich",
@@ -410,16 +406,12 @@ ENTRIES = [
             ),
         ),
         inputs={"height": "158.5 m", "latitude": "50 deg + 55 arcmin"},
-        quantity="eastward deflection",
         measured="28.4 mm",
         uncertainty="1 mm",
         uncertainty_kind=(
             "the secondary source's statement that the deflection was not determinable to "
             "within one millimetre (Reich's own probable error not seen)"
         ),
-        predict=_drop_east,
-        closed_form=_closed_east,
-        assumptions=("vacuum", "uniform gravity", "spherical Earth", "sidereal rotation"),
         story=(
             "In 1831 Ferdinand Reich, professor at the Freiberg mining academy, with the "
             "mechanic Brendel, dropped balls 158.5 m down the Drei-Brüder-Schacht, a nearly "
@@ -434,10 +426,9 @@ ENTRIES = [
         ),
         unit="mm",
     ),
-    Experiment(
+    _falling(
         name="hall-1902",
         title="Hall at Harvard",
-        topic="falling bodies",
         sources=_HALL_SOURCES,
         inputs=_HALL_INPUTS,
         quantity="southward deflection",
@@ -446,7 +437,6 @@ ENTRIES = [
         uncertainty_kind="about the experimental error, as the secondary account puts it",
         predict=_drop_south,
         closed_form=_closed_south,
-        assumptions=("vacuum", "uniform gravity", "spherical Earth", "sidereal rotation"),
         story=(
             "A century after Benzenberg, Edwin Hall (of the Hall effect) took up the old "
             "question whether a falling ball swerves south. He dropped 948 bronze balls an "
@@ -463,22 +453,17 @@ ENTRIES = [
         ),
         unit="mm",
     ),
-    Experiment(
+    _eastward(
         name="hall-1902-east",
         title="Hall at Harvard, eastward",
-        topic="falling bodies",
         sources=_HALL_SOURCES,
         inputs=_HALL_INPUTS,
-        quantity="eastward deflection",
         measured="0.149 cm",
         uncertainty=None,
         uncertainty_kind=(
             "none stated in the sources read (the mean of 948 drops; the secondary account "
             "calls it correct 'within the experimental error' without giving that error)"
         ),
-        predict=_drop_east,
-        closed_form=_closed_east,
-        assumptions=("vacuum", "uniform gravity", "spherical Earth", "sidereal rotation"),
         story=(
             "Hall's drops, made to look for a southward swerve, measured the eastward one on "
             "the way: the 948 balls, released without jiggle or spin inside a cloth tube that "

@@ -9,6 +9,7 @@ are given clockwise seen from above, positive (the way the 1851 observers report
 from __future__ import annotations
 
 from collections.abc import Mapping
+from functools import partial
 from typing import Any
 
 from poinsot import Earth, PoinsotError
@@ -92,11 +93,31 @@ _HANDBOOK = Source(
     note="secondary; the book's title was not shown on the page read",
 )
 
+#: The fields every pendulum entry shares (the topic; no uncertainty stated in the 1851 reports;
+#: the model's assumptions, which an entry may replace), and a rate entry's quantity and two
+#: routes besides.
+_pendulum = partial(
+    Experiment,
+    topic="Foucault pendulums",
+    uncertainty=None,
+    assumptions=(
+        "spherical pendulum, small swing",
+        "no air drag",
+        "spherical Earth",
+        "sidereal rotation",
+    ),
+)
+_rate_entry = partial(
+    _pendulum,
+    quantity="rate of turn of the swing plane (clockwise seen from above)",
+    predict=_rate,
+    closed_form=_closed_rate,
+)
+
 ENTRIES = [
-    Experiment(
+    _rate_entry(
         name="foucault-1851",
         title="Foucault's Panthéon",
-        topic="Foucault pendulums",
         sources=(
             Source(
                 who="Léon Foucault",
@@ -128,18 +149,8 @@ ENTRIES = [
             _HANDBOOK,
         ),
         inputs={"latitude": "48 deg + 50 arcmin + 46 arcsec", "length": "67 m"},
-        quantity="rate of turn of the swing plane (clockwise seen from above)",
         measured="11 deg/hour",
-        uncertainty=None,
         uncertainty_kind="none stated (the hourly figure is given to the whole degree)",
-        predict=_rate,
-        closed_form=_closed_rate,
-        assumptions=(
-            "spherical pendulum, small swing",
-            "no air drag",
-            "spherical Earth",
-            "sidereal rotation",
-        ),
         story=(
             "In February 1851 Léon Foucault told the Académie des sciences that the plane "
             "of a freely hung pendulum turns from east to west, by the Earth's own turn times "
@@ -160,10 +171,9 @@ ENTRIES = [
         ),
         unit="deg/hour",
     ),
-    Experiment(
+    _pendulum(
         name="galbraith-haughton-1851",
         title="The Dublin pendulum",
-        topic="Foucault pendulums",
         sources=(
             Source(
                 who="Joseph Galbraith and Samuel Haughton",
@@ -196,16 +206,9 @@ ENTRIES = [
         inputs={"latitude": "53 deg + 20 arcmin", "length": "35.4 ft"},
         quantity="time for the swing plane to turn once",
         measured="28 hour + 26 minute",
-        uncertainty=None,
         uncertainty_kind="none stated (one full turn timed; the azimuth was read every 20 min)",
         predict=_turn_time,
         closed_form=_closed_turn_time,
-        assumptions=(
-            "spherical pendulum, small swing",
-            "no air drag",
-            "spherical Earth",
-            "sidereal rotation",
-        ),
         story=(
             "Within weeks of Foucault's announcement two fellows of Trinity College Dublin, "
             "Joseph Galbraith and Samuel Haughton, hung a pendulum 35.4 feet (10.8 m) long "
@@ -215,10 +218,9 @@ ENTRIES = [
         ),
         unit="hour",
     ),
-    Experiment(
+    _rate_entry(
         name="ceylon-1851",
         title="The pendulum in Ceylon",
-        topic="Foucault pendulums",
         sources=(
             Source(
                 who="observers in Ceylon (not named in the source found)",
@@ -236,12 +238,8 @@ ENTRIES = [
             ),
         ),
         inputs={"latitude": "7 deg"},
-        quantity="rate of turn of the swing plane (clockwise seen from above)",
         measured="1.8 deg/hour",
-        uncertainty=None,
         uncertainty_kind="none stated (the hourly figure is given to a tenth of a degree)",
-        predict=_rate,
-        closed_form=_closed_rate,
         assumptions=(
             "spherical pendulum, small swing, 10 m long (the source gives no length)",
             "no air drag",

@@ -110,6 +110,29 @@ _MHB = Source(
     ),
 )
 
+
+def _nutation_entry(index: int, **fields: Any) -> Experiment:
+    """An entry of the principal nutation's term ``index`` (0: Δψ₀ in longitude, 1: Δε₀ in
+    obliquity): the fields the two entries share (sources, inputs, routes, assumptions) and
+    ``fields``, the entry's own."""
+    return Experiment(
+        topic="the Earth's rotation",
+        sources=(_MHB, _IERS),
+        inputs={"dynamical_flattening": "3273795e-9", "obliquity": "84381.406 arcsec"},
+        uncertainty=None,
+        uncertainty_kind="none stated in the sources read (a conventional model's coefficient)",
+        predict=_nutation(index),
+        closed_form=_nutation_by_precession(index),
+        assumptions=(
+            "rigid symmetric Earth (A = B)",
+            "the Moon on a Kepler orbit whose node regresses uniformly in 18.6 years",
+            "first order in the Moon's inclination",
+        ),
+        unit="arcsec",
+        **fields,
+    )
+
+
 ENTRIES = [
     Experiment(
         name="capitaine-2003",
@@ -166,23 +189,12 @@ ENTRIES = [
         ),
         unit="arcsec / julian_year",
     ),
-    Experiment(
+    _nutation_entry(
+        0,
         name="mathews-2002-longitude",
         title="The principal nutation in longitude",
-        topic="the Earth's rotation",
-        sources=(_MHB, _IERS),
-        inputs={"dynamical_flattening": "3273795e-9", "obliquity": "84381.406 arcsec"},
         quantity="amplitude Δψ₀ of the 18.6-year nutation in longitude (of sin Ω)",
         measured="-17.2064161 arcsec",
-        uncertainty=None,
-        uncertainty_kind="none stated in the sources read (a conventional model's coefficient)",
-        predict=_nutation(0),
-        closed_form=_nutation_by_precession(0),
-        assumptions=(
-            "rigid symmetric Earth (A = B)",
-            "the Moon on a Kepler orbit whose node regresses uniformly in 18.6 years",
-            "first order in the Moon's inclination",
-        ),
         story=(
             "James Bradley found in 1748, after twenty years of observing the star γ Draconis, "
             "that the Earth's axis nods around its precession cone with the period of the "
@@ -193,25 +205,13 @@ ENTRIES = [
             "non-rigid IAU 2000A model, whose fluid core and elastic mantle answer a little "
             "less than a rigid body."
         ),
-        unit="arcsec",
     ),
-    Experiment(
+    _nutation_entry(
+        1,
         name="mathews-2002-obliquity",
         title="The principal nutation in obliquity",
-        topic="the Earth's rotation",
-        sources=(_MHB, _IERS),
-        inputs={"dynamical_flattening": "3273795e-9", "obliquity": "84381.406 arcsec"},
         quantity="amplitude Δε₀ of the 18.6-year nutation in obliquity (of cos Ω)",
         measured="9.2052331 arcsec",
-        uncertainty=None,
-        uncertainty_kind="none stated in the sources read (a conventional model's coefficient)",
-        predict=_nutation(1),
-        closed_form=_nutation_by_precession(1),
-        assumptions=(
-            "rigid symmetric Earth (A = B)",
-            "the Moon on a Kepler orbit whose node regresses uniformly in 18.6 years",
-            "first order in the Moon's inclination",
-        ),
         story=(
             "Bradley's nutation rocks the obliquity as well as the longitude: when the Moon's "
             "ascending node is at the equinox (Ω = 0) the Moon's orbit is tilted furthest from "
@@ -219,7 +219,6 @@ ENTRIES = [
             "amplitudes, cos 2ε/(sin ε cos ε) for the rigid top, makes the pole trace a small "
             "ellipse, not a circle, about its mean place."
         ),
-        unit="arcsec",
     ),
     Experiment(
         name="vicente-wilson-1997",

@@ -10,6 +10,7 @@ is the sign of the Coriolis parameter f = 2ω sin λ, :meth:`poinsot.Earth.corio
 from __future__ import annotations
 
 from collections.abc import Mapping
+from functools import partial
 from typing import Any
 
 from poinsot import Earth
@@ -36,11 +37,27 @@ _STORY_COMMON = (
     "the sense of an ordinary bath's vortex. "
 )
 
+#: The fields both vortex entries share: the topic, the quantity (a sense), the two routes and
+#: the model's assumptions.
+_vortex = partial(
+    Experiment,
+    topic="vortices",
+    quantity="sense of the drain vortex, seen from above",
+    uncertainty=None,
+    uncertainty_kind="a sense (repeated runs after the water had settled)",
+    predict=_sense,
+    closed_form=_closed_sense,
+    assumptions=(
+        "water at rest before it drains",
+        "Coriolis force the only asymmetry",
+        "no friction at the scale of the tank",
+    ),
+)
+
 ENTRIES = [
-    Experiment(
+    _vortex(
         name="shapiro-1962",
         title="Shapiro's bath vortex",
-        topic="vortices",
         sources=(
             Source(
                 who="Ascher H. Shapiro",
@@ -59,17 +76,7 @@ ENTRIES = [
             ),
         ),
         inputs={"latitude": "42 deg + 22 arcmin"},
-        quantity="sense of the drain vortex, seen from above",
         measured="counterclockwise",
-        uncertainty=None,
-        uncertainty_kind="a sense (repeated runs after the water had settled)",
-        predict=_sense,
-        closed_form=_closed_sense,
-        assumptions=(
-            "water at rest before it drains",
-            "Coriolis force the only asymmetry",
-            "no friction at the scale of the tank",
-        ),
         story=(
             _STORY_COMMON + "Ascher Shapiro at MIT filled a circular tank six feet across "
             "with a clockwise swirl, covered it, kept the room at one temperature and waited "
@@ -82,10 +89,9 @@ ENTRIES = [
             "it holds only for water left still for many hours in a symmetric tank."
         ),
     ),
-    Experiment(
+    _vortex(
         name="trefethen-1965",
         title="Sydney's bath vortex",
-        topic="vortices",
         sources=(
             Source(
                 who="L. M. Trefethen, R. W. Bilger, P. T. Fink, R. E. Luxton, R. I. Tanner",
@@ -107,17 +113,7 @@ ENTRIES = [
             ),
         ),
         inputs={"latitude": "-(33 deg + 52 arcmin)"},
-        quantity="sense of the drain vortex, seen from above",
         measured="clockwise",
-        uncertainty=None,
-        uncertainty_kind="a sense (repeated runs after the water had settled)",
-        predict=_sense,
-        closed_form=_closed_sense,
-        assumptions=(
-            "water at rest before it drains",
-            "Coriolis force the only asymmetry",
-            "no friction at the scale of the tank",
-        ),
         story=(
             _STORY_COMMON + "Three years after Shapiro, five engineers in Sydney repeated "
             "his experiment on the other side of the equator. Once the water had settled, it "
