@@ -161,12 +161,27 @@ def derivations_markdown() -> str:
             f"| [{_cell(d.title)}](derivations/{d.name}.md) | {span} | {len(d.steps)} "
             f"| {', '.join(unit)}{more} |"
         )
+    applied = [derive.derivation(n) for n in derive.applied()]
+    if applied:
+        lines += [
+            "",
+            "The unit's theory applied beyond its equations (its results keyed by name; "
+            "each checked against poinsot's core in `python/tests/test_derive_<name>.py`):",
+            "",
+            "| derivation | steps | derives |",
+            "|---|---|---|",
+        ]
+        for d in applied:
+            lines.append(
+                f"| [{_cell(d.title)}](derivations/{d.name}.md) | {len(d.steps)} "
+                f"| {', '.join(d.result)} |"
+            )
     lines += [
         "",
         "```{toctree}",
         ":hidden:",
         "",
-        *[f"derivations/{d.name}" for d in derive.derivations()],
+        *[f"derivations/{d.name}" for d in [*derive.derivations(), *applied]],
         "derivations/questions",
         "```",
         "",
@@ -180,7 +195,7 @@ def derivation_pages() -> dict[Path, str]:
     from poinsot.derive.questions import render
 
     out = {}
-    for d in derive.derivations():
+    for d in [*derive.derivations(), *(derive.derivation(n) for n in derive.applied())]:
         head = f"<!-- Written by docs/_ext/derive_pages.py from poinsot.derive.derivation({d.name!r}). -->"
         out[PAGES / f"{d.name}.md"] = f"{d.markdown(heading='#')}\n\n{head}\n"
     out[PAGES / "questions.md"] = "\n".join(

@@ -1889,7 +1889,7 @@ def derive(name: str | None, list_all: bool, as_latex: bool, as_markdown: bool) 
     if list_all:
         if name is not None:
             raise click.UsageError("--list lists every derivation: give it without NAME")
-        for one in d.derivations():
+        for one in [*d.derivations(), *(d.derivation(n) for n in d.applied())]:
             click.echo(f"{one.name:<16} {one.title}")
             click.echo(f"{'':<16} derives {', '.join(one.result)}")
         click.echo(f"{'questions':<16} The unit's question bank, answered from the package")
@@ -1900,10 +1900,9 @@ def derive(name: str | None, list_all: bool, as_latex: bool, as_markdown: bool) 
             "NAME: missing; give a derivation (poinsot derive --list shows them), "
             "'questions' or 'errata'"
         )
-    if name not in d.names() and name not in special:
-        raise click.UsageError(
-            f"NAME: no derivation '{name}'; give one of {', '.join(d.names() + list(special))}"
-        )
+    if name not in d.names() + d.applied() and name not in special:
+        known = d.names() + d.applied() + list(special)
+        raise click.UsageError(f"NAME: no derivation '{name}'; give one of {', '.join(known)}")
     if name == "questions":
         if as_latex:
             raise click.UsageError("--latex: the question bank is written as text or Markdown")

@@ -7,7 +7,8 @@ Entry points
 :func:`derivations`
     Every derivation, in the unit's order.
 :func:`derivation`
-    One derivation by name (:func:`names` lists them).
+    One derivation by name (:func:`names` lists the unit's, :func:`applied` those that apply
+    the unit's theory beyond its equations, e.g. ``"rigid_earth"``).
 :func:`errata`
     The unit's equations as printed (transcribed once, :func:`printed`) that do not follow from
     the derivations, each with its derived form. Found by computation, not by hand.
@@ -45,6 +46,7 @@ __all__ = [
     "Printed",
     "Erratum",
     "names",
+    "applied",
     "derivations",
     "derivation",
     "printed",
@@ -65,14 +67,26 @@ _TOPICS: dict[str, str] = {
     "heavy_top": "heavy_top",  # 2.102–2.121
 }
 
+#: The unit's theory applied beyond its equations: name → module (issue 25: the Earth as a
+#: rigid body). Not among :func:`names` (the unit's topics); :func:`derivation` builds them too.
+_APPLIED: dict[str, str] = {
+    "rigid_earth": "rigid_earth",  # 2.83 and the torque theory: Euler's period, the precession
+}
+
 
 def names() -> list[str]:
     """The derivations' names, in the unit's order."""
     return list(_TOPICS)
 
 
+def applied() -> list[str]:
+    """The names of the derivations that apply the unit's theory beyond its equations (the
+    rigid Earth's free nutation and precession); :func:`derivation` builds them."""
+    return list(_APPLIED)
+
+
 def _module(name: str) -> Any:
-    return importlib.import_module(f".{_TOPICS[name]}", __name__)
+    return importlib.import_module(f".{_TOPICS.get(name) or _APPLIED[name]}", __name__)
 
 
 @cache
@@ -80,8 +94,9 @@ def derivation(name: str) -> Derivation:
     """The derivation called ``name`` (built and checked on first use, then shared).
 
     Raises :class:`~poinsot.PoinsotError` naming ``name`` when there is no such derivation."""
-    if not isinstance(name, str) or name not in _TOPICS:
-        raise PoinsotError(f"name: no derivation {name!r}; one of {', '.join(_TOPICS)}")
+    if not isinstance(name, str) or (name not in _TOPICS and name not in _APPLIED):
+        known = ", ".join([*_TOPICS, *_APPLIED])
+        raise PoinsotError(f"name: no derivation {name!r}; one of {known}")
     d: Derivation = _module(name).derive()
     return d
 
