@@ -2182,3 +2182,80 @@ def _esc(text: str) -> str:
     from rich.markup import escape
 
     return escape(text)
+
+
+# -- poinsot exercises / poinsot check: problem sets for teachers (poinsot.exercises) -------------
+def _exercises_module() -> Any:
+    try:
+        from . import exercises as x
+    except ImportError as exc:
+        raise Refused(f"{exc}") from exc
+    return x
+
+
+@main.command(short_help="Problem sets with checked answers.")
+@click.argument("topics", nargs=-1, required=True)
+@click.option("--n", "n", type=int, default=30, show_default=True, help="Number of problems.")
+@click.option("--seed", type=int, default=2026, show_default=True, help="The set's seed.")
+@click.option(
+    "--format",
+    "fmt",
+    type=click.Choice(["markdown", "latex", "pdf", "gift", "moodle-xml", "json"]),
+    default="markdown",
+    show_default=True,
+    help="Sheets (markdown, latex, pdf), a Moodle quiz (gift, moodle-xml) or json.",
+)
+@click.option("--out", type=click.Path(file_okay=False), default=None, help="Folder to write to.")
+def exercises(topics: tuple[str, ...], n: int, seed: int, fmt: str, out: str | None) -> None:
+    """Problem sets with checked answers.
+
+    TOPIC is a topic (earth, "rigid bodies", "free tops", "euler angles", "heavy top"), a
+    template's name, or all. Each problem is a seeded variant whose answer poinsot computed by
+    two independent routes; the solution sheet has worked steps from poinsot.derive. The same
+    seed gives the same files on every machine. Without --out the files are printed (pdf needs
+    --out and a TeX engine: apt install texlive-latex-base latexmk).
+
+    \b
+    Examples:
+      poinsot exercises earth --n 5 --seed 2026
+      poinsot exercises all --n 30 --format moodle-xml --out quiz/
+      poinsot exercises dropped-ball top-min-spin --format latex --out sheets/
+    """
+    x = _exercises_module()
+    variants = x.generate(list(topics), n=n, seed=seed)
+    if out is None and fmt == "pdf":
+        raise click.UsageError("--format pdf: give --out DIR for the PDF files")
+    if out is not None:
+        for path in x.write(variants, fmt, out):
+            click.echo(str(path))
+        return
+    for name, text in x.render(variants, fmt).items():
+        if len(x.FORMATS[fmt]) > 1:
+            click.echo(f"<!-- {name} -->" if fmt == "markdown" else f"% {name}")
+        click.echo(text)
+
+
+@main.command(short_help="Checks an answer to an exercise.")
+@click.argument("template")
+@click.option("--seed", type=int, required=True, help="The seed printed with the problem.")
+@click.option("--answer", required=True, help="Your answer: a number in the unit asked, or 12mm.")
+@_JSON
+def check(template: str, seed: int, answer: str, as_json: bool) -> None:
+    """Checks an answer to an exercise.
+
+    Says whether ANSWER to the problem TEMPLATE --seed N (as printed on the sheet) is right,
+    how far off it is, and, when it is what a common mistake gives (a Coriolis sign, degrees
+    for radians, the solar for the sidereal day, a misprint of the unit), which step of the
+    worked solution to look at.
+
+    \b
+    Examples:
+      poinsot check dropped-ball --seed 123456 --answer 64.6
+      poinsot check dropped-ball --seed 123456 --answer 6.46cm --json
+    """
+    x = _exercises_module()
+    result = x.check(template, seed, answer)
+    if as_json:
+        emit_json(result.to_dict())
+        return
+    click.echo(result.verdict)

@@ -226,7 +226,23 @@ CASES: dict[str, list[tuple[Callable[[], Any], Callable[[Any], Any]]]] = {
         (lambda: _experiments().run("reich-1831"), lambda r: (r.predicted_si, r.sigma)),
         (lambda: _experiments().run(_a_sense()), lambda r: (r.predicted, r.verdict)),
     ],
+    "Template": [(lambda: _exercises().template("dropped-ball"), lambda t: t.variant(1).answer)],
+    "Variant": [(lambda: _exercises().template("top-nutation").variant(4), lambda v: v.to_dict())],
+    "Check": [(lambda: _exercises().check("dropped-ball", 1, 3.0), lambda c: c.to_dict())],
+    "Param": [(lambda: _exercises().Param("h", "m", 1, 9, 0.5), lambda p: p.draw(_rng()))],
+    "SolutionStep": [
+        (lambda: _exercises().template("dropped-ball").variant(1).steps[1], lambda s: s.plain())
+    ],
 }
+
+
+def _exercises() -> Any:
+    return pytest.importorskip("poinsot.exercises")
+
+
+def _rng() -> Any:
+    return np.random.default_rng(5)
+
 
 #: The public exceptions and warnings, read from the package (a new one is covered unasked).
 ERRORS_AND_WARNINGS = {

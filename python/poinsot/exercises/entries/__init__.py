@@ -1,0 +1,1 @@
+"""The templates, one module per part of the unit; each holds ``ENTRIES``."""

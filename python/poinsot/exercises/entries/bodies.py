@@ -1,0 +1,331 @@
+"""Templates of rigid bodies (the unit's eqs. 2.43–2.66): the inertia of a composite body and its
+principal moments, the rotating dumbbell's kinetic energy and holding torque."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from ...body import RigidBody
+from .._template import Derived, Mistake, Param, Plain, Template
+
+# ---- a composite body: a rod with a ball on its end (parallel axes; L 8) --------------------------
+
+
+def _lollipop(v: Any) -> RigidBody:
+    rod = RigidBody.thin_rod(v.rod_mass, v.length).translated([0.0, 0.0, v.length / 2])
+    ball = RigidBody.solid_sphere(v.ball_mass, v.radius).translated([0.0, 0.0, v.length + v.radius])
+    return RigidBody.combine([rod, ball])
+
+
+def _lollipop_hand(v: Any, parallel: bool = True, ball_spread: bool = True) -> float:
+    """I about the centre of mass, perpendicular to the rod, by the parallel-axis theorem."""
+    m, M, L, R = v.rod_mass, v.ball_mass, v.length, v.radius
+    zc = (m * L / 2 + M * (L + R)) / (m + M)
+    own = m * L**2 / 12 + (0.4 * M * R**2 if ball_spread else 0.0)
+    return own + (m * (L / 2 - zc) ** 2 + M * (L + R - zc) ** 2 if parallel else 0.0)
+
+
+COMPOSITE = Template(
+    name="composite-inertia",
+    topic="rigid bodies",
+    difficulty=2,
+    title="A rod with a ball on its end",
+    params=(
+        Param("rod_mass", "g", 50, 500, 10),
+        Param("length", "cm", 10, 60, 1),
+        Param("ball_mass", "g", 100, 1000, 10),
+        Param("radius", "cm", 2, 8, 0.5),
+    ),
+    text="A thin uniform rod of mass {rod_mass} and length {length} carries on one end a solid "
+    "ball of mass {ball_mass} and radius {radius}, its centre on the rod's line, the ball "
+    "touching the rod's end.",
+    question="What is the body's moment of inertia about an axis through its centre of mass "
+    "perpendicular to the rod, in kg·cm²?",
+    unit="kg*cm**2",
+    answer=lambda v: float(_lollipop(v).principal_moments[-1]),
+    check=_lollipop_hand,
+    agree=1e-9,
+    agree_why="the core's composition of tensors against the parallel-axis theorem by hand",
+    steps=(
+        Plain(
+            "The centre of mass, from the rod's free end",
+            r"\frac{{m\,L/2 + M\,(L + R)}}{{m + M}}",
+            lambda v: (
+                (v.rod_mass * v.length / 2 + v.ball_mass * (v.length + v.radius))
+                / (v.rod_mass + v.ball_mass)
+            ),
+            "cm",
+            "z_c",
+        ),
+        Derived(
+            "The rod about its own centre",
+            "rigid_body",
+            "thin_rod",
+            ("rod_mass", "length"),
+            "I_{rod}",
+            "kg*cm**2",
+            component=0,
+        ),
+        Derived(
+            "The ball about its own centre",
+            "rigid_body",
+            "solid_sphere",
+            ("ball_mass", "radius"),
+            "I_{ball}",
+            "kg*cm**2",
+            component=0,
+        ),
+        Plain(
+            "Both moved to the common centre (parallel axes, eq. 2.65)",
+            r"I_{{rod}} + m d_1^2 + I_{{ball}} + M d_2^2",
+            _lollipop_hand,
+            "kg*cm**2",
+            "I",
+        ),
+    ),
+    mistakes=(
+        Mistake(
+            "no parallel-axis terms",
+            "added the two moments about their own centres",
+            5,
+            lambda v: _lollipop_hand(v, parallel=False),
+        ),
+        Mistake(
+            "ball as a point",
+            "took the ball as a point mass at its centre",
+            4,
+            lambda v: _lollipop_hand(v, ball_spread=False),
+        ),
+        Mistake(
+            "about the free end",
+            "took the moments about the rod's free end, not the centre of mass",
+            2,
+            lambda v: (
+                v.rod_mass * v.length**2 / 3
+                + 0.4 * v.ball_mass * v.radius**2
+                + v.ball_mass * (v.length + v.radius) ** 2
+            ),
+        ),
+    ),
+    answer_range=(1.0, 1e3),
+)
+
+
+# ---- point masses: the inertia tensor and its principal moments (2.51–2.60) ----------------------
+
+
+def _points(v: Any) -> tuple[np.ndarray, np.ndarray]:
+    masses = np.array([v.m1, v.m2, v.m3])
+    positions = np.array([[v.x1, 0.0, 0.0], [0.0, v.y2, 0.0], [v.x3, v.y3, 0.0]])
+    return masses, positions
+
+
+def _tensor(v: Any, about_cm: bool = True) -> np.ndarray:
+    """The unit's I = Σ m (r² 1 − r rᵀ) (eqs. 2.55–2.57: products of inertia negated), about the
+    centre of mass (or the origin)."""
+    m, r = _points(v)
+    if about_cm:
+        r = r - (m @ r) / m.sum()
+    return np.einsum(
+        "a,aij->ij", m, (r**2).sum(1)[:, None, None] * np.eye(3) - r[:, :, None] * r[:, None, :]
+    )
+
+
+POINT_MASSES = Template(
+    name="principal-moments",
+    topic="rigid bodies",
+    difficulty=3,
+    title="The principal moments of three point masses",
+    params=(
+        Param("m1", "kg", 1, 5, 0.5),
+        Param("x1", "cm", 10, 50, 1),
+        Param("m2", "kg", 1, 5, 0.5),
+        Param("y2", "cm", 10, 50, 1),
+        Param("m3", "kg", 1, 5, 0.5),
+        Param("x3", "cm", 10, 50, 1),
+        Param("y3", "cm", 10, 50, 1),
+    ),
+    text="Three small balls are fixed on a light frame in the xy plane: {m1} at ({x1}, 0), {m2} "
+    "at (0, {y2}) and {m3} at ({x3}, {y3}).",
+    question="What is the smallest principal moment of inertia about the centre of mass, in kg·m²?",
+    unit="kg*m**2",
+    answer=lambda v: float(RigidBody.from_point_masses(*_points(v)).principal_moments[0]),
+    check=lambda v: float(np.linalg.eigvalsh(_tensor(v))[0]),
+    agree=1e-9,
+    agree_why="the core's tensor and eigen-solver against numpy's eigvalsh of the unit's 2.55",
+    steps=(
+        Plain(
+            "The centre of mass, then the tensor about it: I_xx = Σm y², I_yy = Σm x², "
+            "I_zz = I_xx + I_yy, I_xy = −Σm x y (eqs. 2.55–2.57)",
+            r"I_{{xy}} = -\sum m\,x\,y",
+            lambda v: float(_tensor(v)[0, 1]),
+            "kg*m**2",
+            "I_{xy}",
+        ),
+        Plain(
+            "The principal moments are the eigenvalues of I (eq. 2.60): the smallest",
+            r"\tfrac12 (I_{{xx}} + I_{{yy}}) - \sqrt{{\tfrac14 (I_{{xx}} - I_{{yy}})^2 + I_{{xy}}^2}}",
+            lambda v: float(np.linalg.eigvalsh(_tensor(v))[0]),
+            "kg*m**2",
+            "I_1",
+        ),
+    ),
+    mistakes=(
+        Mistake(
+            "about the origin",
+            "took the moments about the origin, not the centre of mass",
+            2,
+            lambda v: float(np.linalg.eigvalsh(_tensor(v, about_cm=False))[0]),
+        ),
+        Mistake(
+            "smallest diagonal entry",
+            "gave the smallest of I_xx, I_yy: the axes x, y are not principal",
+            3,
+            lambda v: float(min(_tensor(v)[0, 0], _tensor(v)[1, 1])),
+        ),
+        Mistake(
+            "cm for m",
+            "left the positions in cm",
+            1,
+            lambda v: float(np.linalg.eigvalsh(_tensor(v))[0]) * 1e4,
+        ),
+    ),
+    answer_range=(1e-6, 10.0),
+)
+
+
+# ---- the rotating dumbbell: T and the holding torque (2.43–2.50, the unit's example) -------------
+
+
+def _dumbbell(v: Any) -> RigidBody:
+    u = np.array([math.sin(v.tilt), 0.0, math.cos(v.tilt)]) * v.arm
+    return RigidBody.from_point_masses([v.mass, v.mass], [u, -u])
+
+
+def _torque(v: Any) -> float:
+    return float(np.linalg.norm(_dumbbell(v).holding_torque([0.0, 0.0, v.rate])))
+
+
+def _energy(v: Any) -> float:
+    return float(_dumbbell(v).kinetic_energy([0.0, 0.0, v.rate]))
+
+
+_DUMBBELL_PARAMS = (
+    Param("mass", "g", 50, 500, 10),
+    Param("arm", "cm", 5, 30, 1),
+    Param("tilt", "deg", 10, 80, 1),
+    Param("rate", "rpm", 60, 1200, 30),
+)
+_DUMBBELL_TEXT = (
+    "Two small balls of {mass} each sit on a light rod, {arm} either side of its midpoint. "
+    "The rod turns at {rate} about a fixed axis through its midpoint, making a constant angle "
+    "{tilt} with the axis."
+)
+
+DUMBBELL_TORQUE = Template(
+    name="dumbbell-torque",
+    topic="rigid bodies",
+    difficulty=2,
+    title="The torque that holds a rotating dumbbell",
+    params=_DUMBBELL_PARAMS,
+    text=_DUMBBELL_TEXT,
+    question="What torque must the bearings exert to keep it turning, in N·m?",
+    unit="N*m",
+    answer=_torque,
+    check=lambda v: abs(
+        Derived(
+            "",
+            "rigid_body",
+            "dumbbell_torque",
+            ("mass", "mass", "arm", "arm", "tilt", "rate"),
+            "",
+            component=1,
+        ).evaluate(v)
+    ),
+    agree=1e-12,
+    agree_why="the core's ω×L against the derivation's dumbbell torque",
+    steps=(
+        Derived(
+            "The torque ω × L for ω along the axis",
+            "rigid_body",
+            "dumbbell_torque",
+            ("mass", "mass", "arm", "arm", "tilt", "rate"),
+            "N_y",
+            "N*m",
+            component=1,
+        ),
+        Plain("The torque is along −y, of magnitude |N_y|", r"|N_y|", _torque, "N*m", "N"),
+    ),
+    mistakes=(
+        Mistake(
+            "rpm as rad/s",
+            "used the rate in rpm as if in rad/s (1 rpm = 2π/60 rad/s)",
+            1,
+            lambda v: _torque(v) * (60 / (2 * math.pi)) ** 2,
+        ),
+        Mistake(
+            "sin for sin 2α",
+            "took the lever as sin α: the torque is m r² ω² sin 2α = 2 m r² ω² sin α cos α",
+            2,
+            lambda v: 2 * v.mass * v.arm**2 * v.rate**2 * math.sin(v.tilt),
+        ),
+        Mistake(
+            "one ball",
+            "counted one ball only",
+            2,
+            lambda v: _torque(v) / 2,
+        ),
+    ),
+    answer_range=(1e-5, 1e3),
+)
+
+DUMBBELL_ENERGY = Template(
+    name="dumbbell-energy",
+    topic="rigid bodies",
+    difficulty=1,
+    title="The kinetic energy of a rotating dumbbell",
+    params=_DUMBBELL_PARAMS,
+    text=_DUMBBELL_TEXT,
+    question="What is its kinetic energy, in J?",
+    unit="J",
+    answer=_energy,
+    check=lambda v: v.mass * (v.arm * math.sin(v.tilt) * v.rate) ** 2,
+    agree=1e-12,
+    agree_why="the core's ½ω·I·ω against ½ Σ m v² with v = ω r sin α by hand",
+    steps=(
+        Plain(
+            "Each ball moves on a circle of radius r sin α at speed ω r sin α",
+            r"{arm} \sin({tilt})\,{rate}",
+            lambda v: v.arm * math.sin(v.tilt) * v.rate,
+            "m/s",
+            "v",
+        ),
+        Plain(
+            "T = ½ ω·I·ω = 2 · ½ m v² (eq. 2.50)",
+            r"{mass}\,v^2",
+            _energy,
+            "J",
+            "T",
+        ),
+    ),
+    mistakes=(
+        Mistake(
+            "rpm as rad/s",
+            "used the rate in rpm as if in rad/s",
+            1,
+            lambda v: _energy(v) * (60 / (2 * math.pi)) ** 2,
+        ),
+        Mistake(
+            "cos for sin",
+            "took the distance from the axis as r cos α",
+            2,
+            lambda v: v.mass * (v.arm * math.cos(v.tilt) * v.rate) ** 2,
+        ),
+    ),
+    answer_range=(1e-6, 1e3),
+)
+
+ENTRIES = (COMPOSITE, POINT_MASSES, DUMBBELL_TORQUE, DUMBBELL_ENERGY)
