@@ -47,10 +47,10 @@ class RigidEarth:
     Parameters
     ----------
     dynamical_flattening:
-        H = (C − A)/C, in (0, 1); default 0.003273795 (IERS Conventions 2010). ``0`` (a sphere:
+        H = (C − A)/C (dimensionless, a float), in (0, 1); default 0.003273795 (IERS Conventions 2010). ``0`` (a sphere:
         no bulge, no torque, no free wobble) is refused.
     rotation_rate:
-        ω (rad/s, > 0); default the sidereal rate 7.292115e-5.
+        ω (rad/s, a float > 0); default the sidereal rate 7.292115e-5.
     obliquity:
         ε, the tilt of the equator to the ecliptic (rad, or degrees with ``degrees=True``), in
         [0, π/2); default 84381.406″ = 23.4393°, the J2000 value (IAU 2006).
@@ -83,7 +83,9 @@ class RigidEarth:
             as_angle(obliquity, "obliquity", degrees),
         )
 
-    dynamical_flattening: float = core_property("dynamical_flattening", "H = (C − A)/C.")
+    dynamical_flattening: float = core_property(
+        "dynamical_flattening", "H = (C − A)/C (dimensionless)."
+    )
     rotation_rate: float = core_property("rotation_rate", "ω (rad/s).")
     obliquity: float = core_property("obliquity", "ε (rad).")
 
@@ -129,9 +131,11 @@ class RigidEarth:
         """The elastic Earth's free wobble (s): T_C = T_E · ks/(ks − k2) (Munk & MacDonald
         1960; Smith & Dahlen 1981), Euler's period lengthened by the yielding of the mantle.
 
-        ``k2`` is the Love number, ``ks`` the secular (fluid) Love number, 0 < k2 < ks. With
-        k2 = 0.30 and ks = 0.938 it is about 446 days against the observed 433: the oceans'
-        pole tide, the fluid core and the mantle's anelasticity account for the rest."""
+        ``k2`` is the Love number, ``ks`` the secular (fluid) Love number (both dimensionless
+        floats), 0 < k2 < ks; the period is returned in s (a float). With k2 = 0.30 and
+        ks = 0.938 it is about 446 days against the observed 433: the oceans' pole tide, the
+        fluid core and the mantle's anelasticity account for the rest. Raises PoinsotError
+        naming ``k2`` or ``ks`` outside that range."""
         return float(self._core.chandler_period(as_scalar(k2, "k2"), as_scalar(ks, "ks")))
 
     @property

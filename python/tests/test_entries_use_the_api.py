@@ -86,3 +86,23 @@ def test_free_body_closed_forms() -> None:
     spin = float(np.linalg.norm([0.3, 2.0, -0.5]))
     ref = [s.rate for s in axis_stability([1.0, 2.0, 3.0], spin)]
     assert mine == pytest.approx(ref, rel=1e-15)
+
+
+def test_public_functions_document_their_parameters_and_returns() -> None:
+    """Every public function of poinsot.experiments (and RigidEarth.chandler_period) names each
+    of its parameters in its docstring and says what it returns."""
+    import inspect
+
+    from poinsot import experiments
+
+    funcs = [getattr(experiments, n) for n in experiments.__all__]
+    funcs = [f for f in funcs if inspect.isfunction(f)]
+    funcs += [RigidEarth.chandler_period, experiments.Experiment.run]
+    assert len(funcs) >= 9
+    for f in funcs:
+        doc = inspect.getdoc(f) or ""
+        for p in inspect.signature(f).parameters:
+            if p != "self":
+                assert f"``{p}``" in doc, f"{f.__qualname__}: {p}"
+        said = doc.lower()
+        assert any(w in said for w in ("return", "a tuple", "a list", "a string")), f.__qualname__

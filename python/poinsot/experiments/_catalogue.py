@@ -73,7 +73,10 @@ Quantity = ureg.Quantity
 def parse(text: str) -> Any:
     """A published value as a quantity of :data:`ureg` (``"158.5 m"``, ``"50 deg + 55 arcmin"``,
     ``"12.6 paris_line"``, ``"3"`` dimensionless), or the text itself for a word (a sense,
-    ``"counterclockwise"``: no digit in it). :class:`PoinsotError` naming the text otherwise."""
+    ``"counterclockwise"``: no digit in it). :class:`PoinsotError` naming the text otherwise.
+
+    ``text`` is a string; the quantity returned keeps the text's own unit (convert with ``.to(...)``;
+    a plain number is dimensionless), a scalar."""
     text = text.strip()
     if not re.search(r"\d", text):
         return text
@@ -215,22 +218,25 @@ class Experiment:
         return 0
 
     def parsed_inputs(self) -> dict[str, Any]:
-        """The inputs as quantities of :data:`ureg` (words stay strings)."""
+        """The inputs as quantities of :data:`ureg`, name → a scalar quantity in the published
+        unit (words stay strings)."""
         return {k: parse(v) for k, v in self.inputs.items()}
 
     def run(self, **inputs: Any) -> Any:
-        """:func:`poinsot.experiments.run` of this entry (``inputs`` as there)."""
+        """:func:`poinsot.experiments.run` of this entry (``inputs`` as there: name → a pint
+        string or quantity with its unit); returns an :class:`ExperimentResult`."""
         from ._result import run_entry
 
         return run_entry(self, inputs)
 
 
 def problems(e: Experiment) -> list[str]:
-    """What is missing or malformed in an entry (empty for a complete one): every source needs
+    """What is missing or malformed in the entry ``e`` (an :class:`Experiment`; empty for a
+    complete one): every source needs
     who, where, when, publication and page (none a "TODO" placeholder) and says whether it was
     read first-hand; the topic is one of :data:`TOPICS`; the measured
     value, its uncertainty and the inputs read in pint; ``expect`` is ``"agree"`` or
-    ``"disagree"`` (with ``why``)."""
+    ``"disagree"`` (with ``why``). A list of sentences (strings), one per problem."""
     out = []
     if not re.fullmatch(r"[a-z0-9]+(-[a-z0-9]+)*", e.name):
         out.append(f"name {e.name!r} is not kebab-case")
@@ -291,18 +297,19 @@ def _collect() -> tuple[Experiment, ...]:
 
 
 def catalogue() -> tuple[Experiment, ...]:
-    """Every entry, in the unit's order of topics (:data:`TOPICS`), then by year."""
+    """Every entry (a tuple of :class:`Experiment`), in the unit's order of topics
+    (:data:`TOPICS`), then by year."""
     return _collect()
 
 
 def names() -> list[str]:
-    """The entries' names, in catalogue order."""
+    """The entries' names (a list of strings), in catalogue order."""
     return [e.name for e in _collect()]
 
 
 def get(name: str) -> Experiment:
-    """The entry named ``name``; :class:`PoinsotError` naming it, with the close names, when
-    there is none."""
+    """The entry (an :class:`Experiment`) named ``name`` (a string, ``"reich-1831"``);
+    :class:`PoinsotError` naming it, with the close names, when there is none."""
     for e in _collect():
         if e.name == name:
             return e

@@ -19,8 +19,10 @@ __all__ = ["plot"]
 def plot(result: ExperimentResult, *, style: str = "paper", ax: Any = None) -> Figure:
     """Measured (with bars at 1 σ and :data:`AGREE_SIGMA` σ of its stated uncertainty) against
     poinsot's prediction and the closed form, along the quantity's axis in ``result.unit``; for a
-    sense, the measured and the predicted sense of turning as arrows. ``ax``: draw into these
-    axes instead of a new figure. Returns the figure."""
+    sense, the measured and the predicted sense of turning as arrows. ``result``: an
+    :class:`ExperimentResult`; ``style``: ``"paper"`` or ``"slides"``, as the other plots;
+    ``ax``: matplotlib axes to draw into instead of a new figure. Returns the matplotlib figure
+    (the quantities on its axis in ``result.unit``)."""
     with figure_style(style) as style:
         if ax is None:
             fig, ax = subplots(style, 4.5 if result.is_sense else 7.0, 2.4)

@@ -57,9 +57,10 @@ class ExperimentResult(show.Displayed):
     measured_si, uncertainty_si, predicted_si, closed_form_si:
         The same in SI units (``si_unit``) as floats (``None`` for words).
     sigma:
-        (measured − predicted) / uncertainty (``None`` without a number or an uncertainty).
+        (measured − predicted) / uncertainty, a dimensionless float (``None`` without a number
+        or an uncertainty).
     relative:
-        (measured − predicted) / predicted (``None`` for a sense).
+        (measured − predicted) / predicted, a dimensionless float (``None`` for a sense).
     agrees:
         abs(sigma) ≤ :data:`AGREE_SIGMA` (abs(relative) ≤ :data:`AGREE_RELATIVE` without an
         uncertainty; the same word for a sense).
@@ -260,8 +261,9 @@ def _si(q: Any) -> tuple[float | None, str]:
 
 
 def run_entry(e: Experiment, changes: dict[str, Any] | None = None) -> ExperimentResult:
-    """Run one entry: its inputs parsed (with ``changes``, name → a pint string or quantity,
-    in place of the published ones), its prediction and closed form computed."""
+    """Run one entry (an :class:`Experiment`): its inputs parsed (with ``changes``, name → a
+    pint string or quantity with its unit, in place of the published ones), its prediction
+    and closed form computed. Returns an :class:`ExperimentResult`."""
     inputs = e.parsed_inputs()
     for key, value in (changes or {}).items():
         if key not in inputs:
@@ -354,15 +356,19 @@ def run(name: str, **inputs: Any) -> ExperimentResult:
 
     ``inputs`` replace published inputs by name, as pint strings or quantities
     (``run("reich-1831", height="160 m")``): what the prediction would have been had the
-    experimenter measured the set-up differently. ``inputs`` shows the ones used."""
+    experimenter measured the set-up differently. ``inputs`` shows the ones used.
+
+    Returns an :class:`ExperimentResult`: the quantities as pint scalars in the entry's
+    ``unit`` and as floats in SI (``*_si``, in ``si_unit``)."""
     if not isinstance(name, str):
         raise PoinsotError(f"name: expected an experiment's name (a string), got {name!r}")
     return run_entry(get(name), inputs)
 
 
 def run_all(progress: bool | None = None) -> tuple[ExperimentResult, ...]:
-    """Run every entry, in catalogue order; a progress bar on stderr when it is a terminal and
-    the runs take over a second (``progress=False``: never)."""
+    """Run every entry, in catalogue order: a tuple of :class:`ExperimentResult`, one per
+    entry. A progress bar on stderr when it is a terminal and the runs take over a second
+    (``progress``, a bool or ``None`` for that default; ``False``: never)."""
     entries = catalogue()
     show_bar = stderr_interactive() if progress is None else bool(progress)
     out = []
@@ -374,8 +380,9 @@ def run_all(progress: bool | None = None) -> tuple[ExperimentResult, ...]:
 
 
 def catalogue_summary(results: tuple[ExperimentResult, ...] | list[ExperimentResult]) -> str:
-    """The catalogue's results in one or two plain sentences (how many agree, how many
-    disagree as expected, and any that does not do what its entry expects)."""
+    """The catalogue's ``results`` (a sequence of :class:`ExperimentResult`, as :func:`run_all`
+    gives) in one or two plain sentences, a string: how many agree, how many disagree as
+    expected, and any that does not do what its entry expects."""
     n = len(results)
     agree = sum(r.agrees for r in results)
     expected_off = [r for r in results if not r.agrees and r.as_expected]
