@@ -63,6 +63,7 @@ UNITS: dict[str, tuple[str, str]] = {
     "m": ("m", r"\mathrm{m}"),
     "cm": ("cm", r"\mathrm{cm}"),
     "mm": ("mm", r"\mathrm{mm}"),
+    "um": ("µm", r"\mu\mathrm{m}"),
     "km": ("km", r"\mathrm{km}"),
     "g": ("g", r"\mathrm{g}"),
     "kg": ("kg", r"\mathrm{kg}"),
@@ -231,7 +232,12 @@ class Derived:
             f"{self.symbol} = {sp.latex(expr)} = {sp.latex(expr.xreplace(numbers))}"
             f" = {sig(value)}\\,{UNITS[self.unit][1]}"
         )
-        text = f"{self.text} (the unit's eq. {self.number}, poinsot.derive '{self.topic}')"
+        where = (
+            f"the unit's eq. {self.number}"
+            if re.fullmatch(r"\d+\.\d+", self.number)
+            else f"result {self.number!r}"
+        )
+        text = f"{self.text} ({where}, poinsot.derive '{self.topic}')"
         return SolutionStep(text, tex, value, self.unit)
 
 

@@ -485,4 +485,124 @@ G_EFFECTIVE = Template(
     answer_range=(9.77, 9.81),
 )
 
-ENTRIES = (DROPPED_BALL, TRAIN, RIVER, FOUCAULT, PLUMB, G_EFFECTIVE)
+
+# ---- the southward deflection, second order in ω (2.42c) -----------------------------------------
+
+
+def _south(v: Any, rate: float = SIDEREAL_RATE) -> float:
+    return float(_earth(rate).southward_deflection(v.height, v.latitude))
+
+
+SOUTHWARD = Template(
+    name="southward-deflection",
+    topic="earth",
+    difficulty=3,
+    title="The southward deflection of a dropped ball",
+    params=(
+        Param("height", "m", 50, 500, 10),
+        Param("latitude", "deg", 10, 80, 1),
+    ),
+    text="A ball is dropped from rest from a height of {height} at latitude {latitude} N, in "
+    "uniform gravity and without air." + _DATA,
+    question="How far south of the foot of the plumb line does it land, to second order in ω, "
+    "in µm?",
+    unit="um",
+    answer=_south,
+    check=lambda v: Derived(
+        "", "earth", "2.42c", ("omega", "height", "latitude", "g"), ""
+    ).evaluate(v),
+    agree=1e-12,
+    agree_why="the core's ¾ω² sin 2λ h²/g against the derivation's 2.42c",
+    steps=(
+        Derived("Time of fall", "earth", "2.41", ("height", "g"), "T", "s"),
+        Derived(
+            "Coriolis on the eastward drift and the centrifugal change with height, second order",
+            "earth",
+            "2.42c",
+            ("omega", "height", "latitude", "g"),
+            "y_S",
+            "um",
+        ),
+    ),
+    mistakes=(
+        Mistake(
+            "Coriolis only",
+            "kept only the Coriolis part (⅓ of ¾): the centrifugal force changes with height too",
+            3,
+            lambda v: _south(v) * 4 / 9,
+        ),
+        Mistake("solar day", "used the solar day for ω", 3, lambda v: _south(v, SOLAR_DAY_RATE)),
+        Mistake(
+            "sin λ for sin 2λ",
+            "wrote sin λ where the product sin λ cos λ = ½ sin 2λ appears",
+            3,
+            lambda v: _south(v) * math.sin(v.latitude) / math.sin(2 * v.latitude),
+        ),
+    ),
+    constants=_EARTH,
+    answer_range=(0.0, 1e3),
+)
+
+
+# ---- inertial oscillations: an ocean current left to itself ----------------------------------------
+
+
+def _inertial_hours(v: Any, rate: float = SIDEREAL_RATE) -> float:
+    return float(_earth(rate).inertial_period(v.latitude))
+
+
+INERTIAL = Template(
+    name="inertial-period",
+    topic="earth",
+    difficulty=2,
+    title="The period of inertial oscillations",
+    params=(Param("latitude", "deg", 10, 80, 1),),
+    text="After a storm, the surface water of a calm sea at latitude {latitude} N keeps moving, "
+    "free of forces but for the Coriolis force, on circles (inertial oscillations). "
+    "ω = 7.2921150×10⁻⁵ rad/s.",
+    question="How long does one circle take, in hours?",
+    unit="h",
+    answer=_inertial_hours,
+    check=lambda v: math.pi / (v.omega * abs(math.sin(v.latitude))),
+    agree=1e-12,
+    agree_why="the core's π/(ω |sin λ|) against the same by hand",
+    steps=(
+        Derived(
+            "The horizontal Coriolis acceleration of a horizontal velocity: its east part",
+            "earth",
+            "2.30",
+            ("omega", "latitude", "vx", "one", "vz"),
+            r"f = a_E / v",
+            "rad/s",
+            component=0,
+        ),
+        Plain(
+            "v turns at the Coriolis parameter f = 2ω sin λ: one circle takes 2π/f",
+            r"\frac{{2\pi}}{{f}}",
+            _inertial_hours,
+            "h",
+            "T_i",
+        ),
+    ),
+    mistakes=(
+        Mistake(
+            "Foucault's period",
+            "took 2π/(ω sin λ), the Foucault period: the velocity turns at 2ω sin λ",
+            3,
+            lambda v: 2 * _inertial_hours(v),
+        ),
+        Mistake(
+            "solar day", "used the solar day for ω", 3, lambda v: _inertial_hours(v, SOLAR_DAY_RATE)
+        ),
+        Mistake(
+            "cos for sin",
+            "used cos λ: the vertical part ω sin λ turns horizontal motion",
+            2,
+            lambda v: _inertial_hours(v) * math.sin(v.latitude) / math.cos(v.latitude),
+        ),
+    ),
+    constants=_EARTH | {"vx": 0.0, "vz": 0.0, "one": 1.0},
+    answer_range=(12.0, 72.0),
+)
+
+ENTRIES = (DROPPED_BALL, SOUTHWARD, TRAIN, RIVER, FOUCAULT, INERTIAL, PLUMB, G_EFFECTIVE)
