@@ -1988,9 +1988,19 @@ def _earth_measured() -> dict[str, Any] | None:
     "The tilt of the equator to the ecliptic (rad, or with a unit: 23.44deg); default J2000.",
     call="RigidEarth.__init__",
 )
+@_picture_options(
+    "Save a picture of the precession cone and of each prediction against its measured value "
+    "to this file."
+)
 @_JSON
 def earth(
-    k2: float, ks: float, dynamical_flattening: float, obliquity: float, as_json: bool
+    k2: float,
+    ks: float,
+    dynamical_flattening: float,
+    obliquity: float,
+    plot_path: str | None,
+    style: str,
+    as_json: bool,
 ) -> None:
     """The Earth as a rigid top: its free wobble and the precession of the equinoxes.
 
@@ -1999,15 +2009,19 @@ def earth(
     and the Moon's torques on the bulge, averaged over their orbits, with its two parts; the
     principal (18.6-year) nutation. Each beside its measured value from the experiments
     catalogue (poinsot experiments NAME: the source and what the rigid model leaves out; they
-    need pint). --plot is not offered yet.
+    need pint). --plot FILE draws the pole's precession cone and each prediction's difference
+    from its measured value.
 
     \b
     Examples:
       poinsot earth
       poinsot earth --k2 0.35 --json
       poinsot earth --obliquity 22.1deg
+      poinsot earth --plot earth.png
     """
     from .rigid_earth import RigidEarth
+
+    _check_pictures(plot_path)
 
     e = RigidEarth(dynamical_flattening=dynamical_flattening, obliquity=obliquity)
     sidereal_day = 2 * math.pi / e.rotation_rate
@@ -2092,6 +2106,12 @@ def earth(
         notes.append(
             "poinsot experiments NAME: each comparison, and what the rigid model leaves out."
         )
+    chandler = m.get("chandler_period")
+    observed = None
+    if chandler is not None and chandler["unit"] in ("d", "day", "days"):
+        observed = (chandler["value"], chandler["uncertainty"] or 0.0)
+    draw = "earth.plot_rigid_earth"
+    _keep_picture(data, plot_path, draw, e, k2=k2, ks=ks, chandler_observed=observed, style=style)
     title = "the Earth as a rigid top"
     _report(data, as_json, title, ("quantity", "poinsot", "measured"), rows, notes=notes)
 

@@ -161,3 +161,39 @@ def test_bad_input_is_one_line_naming_the_option(args: list[str], code: int, fla
     lines = err.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("error: ") and flag in lines[0], err
     assert "Traceback" not in err
+
+
+def test_plot_saves_the_precession_cone_and_the_comparison(
+    tmp_path: pytest.TempPathFactory,
+) -> None:
+    """--plot FILE (issue 25): the figure is written, listed in the JSON and on the table, and
+    its two panels show the precession circle of radius ε and one bar per measured value (the
+    Chandler period's from the catalogue)."""
+    pytest.importorskip("matplotlib")
+    from poinsot import plots
+
+    path = tmp_path / "earth.png"  # type: ignore[operator]
+    d = _json("--plot", str(path))
+    assert path.is_file() and path.stat().st_size > 10_000
+    assert d["plots"] == [str(path)]
+    code, out, _ = _run("--plot", str(path), "--style", "slides")
+    assert code == 0 and f"saved {path}" in out
+    fig = plots.plot_rigid_earth(ps.RigidEarth(), chandler_observed=(433.1, 1.7))
+    sky, bars = fig.axes
+    x, _ = sky.lines[0].get_data()
+    assert float(max(abs(x))) == pytest.approx(math.degrees(ps.OBLIQUITY_J2000), rel=1e-3)
+    assert len(bars.patches) == 4  # precession, Δψ₀, Δε₀, Chandler
+    widths = [p.get_width() for p in bars.patches]
+    assert widths[0] == pytest.approx(
+        100 * (d["precession_rate"] / -ps.IAU2006_PRECESSION_RATE - 1)
+    )
+    assert widths[3] == pytest.approx(100 * (d["chandler_period_days"] / 433.1 - 1))
+    # negative control: without an observed Chandler period there is no Chandler bar
+    assert len(plots.plot_rigid_earth().axes[1].patches) == 3
+
+
+def test_plot_to_a_missing_directory_is_refused_naming_plot(
+    tmp_path: pytest.TempPathFactory,
+) -> None:
+    code, _, err = _run("--plot", str(tmp_path / "nowhere" / "earth.png"))  # type: ignore[operator]
+    assert code == 2 and "--plot" in err

@@ -81,6 +81,9 @@ BUILD: dict[str, Callable[..., Any]] = {
     ),
     "plot_foucault_rosette": lambda style: plots.plot_foucault_rosette(_foucault(), style=style),
     "plot_inertial_circles": lambda style: plots.plot_inertial_circles(EARTH, style=style),
+    "plot_rigid_earth": lambda style: plots.plot_rigid_earth(
+        ps.RigidEarth(), chandler_observed=(433.1, 1.7), style=style
+    ),
     "animate_foucault": lambda style: plots.animate_foucault(
         _foucault(), frames=FRAMES, style=style
     ),

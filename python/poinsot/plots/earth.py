@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ..earth import Earth, Fall, Flight, FoucaultRun
+from ..rigid_earth import IAU2000A_PRINCIPAL_NUTATION, IAU2006_PRECESSION_RATE, RigidEarth
 from ._axes import few_ticks, label_3d
 from ._mpl import figure_style, func_animation, line_width, new_figure, save_animation, subplots
 
@@ -25,6 +26,7 @@ __all__ = [
     "plot_foucault_rosette",
     "plot_inertial_circles",
     "animate_foucault",
+    "plot_rigid_earth",
 ]
 
 
@@ -344,3 +346,106 @@ def animate_foucault(
     if path is not None:
         save_animation(anim, path, fps, progress=progress)
     return anim
+
+
+def plot_rigid_earth(
+    earth: RigidEarth | None = None,
+    *,
+    k2: float = 0.30,
+    ks: float = 0.938,
+    chandler_observed: tuple[float, float] | None = None,
+    style: str = "paper",
+) -> Figure:
+    """The Earth as a rigid top, two panels. Left: the precession cone — the celestial pole's
+    track around the ecliptic pole (a circle of radius ε, degrees), marked every 4000 years
+    from J2000 at :attr:`RigidEarth.precession_rate`. Right: each prediction against its
+    measured value, (poinsot − measured)/measured in %: the luni-solar precession against
+    IAU 2006, the principal nutation (Δψ₀, Δε₀) against IAU 2000A and, when
+    ``chandler_observed`` = (period, uncertainty) in days is given, the elastic Chandler period
+    for ``k2``, ``ks`` (the rigid model leaves the oceans and the core out: it is expected to
+    miss). ``style``: ``"paper"`` (default) or ``"slides"``."""
+    with figure_style(style) as style:
+        earth = earth or RigidEarth()
+        fig, (sky, bars) = subplots(style, 10.0, 4.6, 1, 2, width_ratios=(1.0, 1.15))
+        eps = np.degrees(earth.obliquity)
+        year = 365.25 * 86_400.0
+        full = np.linspace(0, 2 * np.pi, 361)
+        sky.plot(eps * np.sin(full), -eps * np.cos(full), lw=line_width())
+        sky.plot([0], [0], "k+", ms=10)
+        sky.annotate(
+            "ecliptic pole",
+            (0, 0),
+            xytext=(0, 6),
+            textcoords="offset points",
+            ha="center",
+            va="bottom",
+        )
+        years = np.arange(-12_000, 12_001, 4_000)
+        psi = earth.precession_rate * years * year  # the pole's longitude from J2000 (rad)
+        x, y = eps * np.sin(-psi), -eps * np.cos(-psi)
+        sky.plot(x, y, "o", ms=4)
+        for yr, xi, yi in zip(years, x, y):
+            label = "J2000" if yr == 0 else f"{yr:+,d}".replace(",", " ")
+            sky.annotate(
+                label, (xi, yi), xytext=(4, 4), textcoords="offset points", fontsize="small"
+            )
+        sky.set_aspect("equal", adjustable="datalim")
+        few_ticks(sky, 5)
+        sky.set_xlabel("from the ecliptic pole, x (deg)")
+        sky.set_ylabel("y (deg)")
+        period = earth.precession_period / year
+        sky.set_title(f"the pole's precession: one turn in {period:,.0f} yr".replace(",", " "))
+
+        rows: list[tuple[str, float, float]] = []
+        rate = -earth.precession_rate
+        rows.append(("precession vs IAU 2006", rate / IAU2006_PRECESSION_RATE - 1, 0.0))
+        dpsi, deps = earth.nutation_amplitudes
+        rows.append(("nutation Δψ₀ vs IAU 2000A", dpsi / IAU2000A_PRINCIPAL_NUTATION[0] - 1, 0.0))
+        rows.append(("nutation Δε₀ vs IAU 2000A", deps / IAU2000A_PRINCIPAL_NUTATION[1] - 1, 0.0))
+        if chandler_observed is not None:
+            observed, sigma = chandler_observed
+            chandler = earth.chandler_period(k2, ks) / 86_400.0
+            rows.append(
+                (
+                    f"Chandler period (k2 = {k2:g}) vs observed",
+                    chandler / observed - 1,
+                    sigma / observed,
+                )
+            )
+        names = [r[0] for r in rows]
+        values = np.array([100 * r[1] for r in rows])
+        errors = np.array([100 * r[2] for r in rows])
+        pos = np.arange(len(rows))
+        bars.barh(pos, values, xerr=errors if errors.any() else None, height=0.55)
+        bars.axvline(0.0, color="k", lw=line_width() * 0.6)
+        for p_, v, err in zip(pos, values, errors):
+            end = v + err if v >= 0 else v - err
+            bars.annotate(
+                f"{v:+.2f} %",
+                (end, p_),
+                xytext=(4 if v >= 0 else -4, 0),
+                textcoords="offset points",
+                va="center",
+                ha="left" if v >= 0 else "right",
+                fontsize="small",
+            )
+        # the names above their bars (a category axis has no unit to label)
+        bars.set_yticks([])
+        for p_, name in zip(pos, names):
+            bars.text(
+                0.02,
+                p_ - 0.32,
+                name,
+                transform=bars.get_yaxis_transform(),
+                va="bottom",
+                fontsize="small",
+            )
+        bars.set_ylim(len(rows) - 0.5, -0.9)
+        lo, hi = min(0.0, values.min()), max(0.0, values.max())
+        span = hi - lo or 1.0
+        bars.set_xlim(lo - 0.35 * span, hi + 0.45 * span)
+        few_ticks(bars, 5)
+        bars.set_yticks([])
+        bars.set_xlabel("poinsot − measured (%)")
+        bars.set_title("rigid Earth vs measured")
+    return fig
