@@ -446,6 +446,49 @@ def _fast_top(con: Console) -> None:
     )
 
 
+@section(
+    "The Earth as a rigid body: Euler's free wobble (eq. 2.83) and the precession of the equinoxes"
+)
+def _rigid_earth(con: Console) -> None:
+    e = ps.RigidEarth()
+    h, day = e.dynamical_flattening, 2 * np.pi / e.rotation_rate
+    arcsec, year = np.pi / 648_000, 365.25 * 86_400.0
+    con.print(
+        f"The Earth is the unit's symmetric top: H = (C − A)/C = {h:.9g} (IERS 2010), one turn "
+        "a sidereal day, torqued by the Sun and the Moon on its bulge."
+    )
+    table = Table(show_header=True)
+    table.add_column("quantity")
+    table.add_column("poinsot", justify="right")
+    table.add_column("check / measured", justify="right")
+    table.add_row(
+        "Euler: 2π/|Ω| (2.83)",
+        f"{e.euler_period / day:.6g} sidereal d",
+        f"(1 − H)/H = {(1 - h) / h:.6g}",
+    )
+    try:  # the observed period from the catalogue (vicente-wilson-1997; needs pint)
+        from poinsot import experiments as x
+
+        seen = x.parse(x.get("vicente-wilson-1997").measured).to("day").magnitude
+        observed = f"{seen:.4g} d (Vicente & Wilson)"
+    except ImportError:
+        observed = "— (needs pint)"
+    k2, ks = 0.30, 0.938  # the elastic and the fluid Love numbers (Lambeck 1980)
+    chandler = e.chandler_period(k2, ks) / 86_400
+    table.add_row(f"Chandler, k2 {k2:g}", f"{chandler:.4g} d", observed)
+    rate = -e.precession_rate * year / arcsec
+    iau = ps.IAU2006_PRECESSION_RATE * year / arcsec
+    table.add_row("precession (westward)", f"{rate:.3f} ″/yr", f"IAU 2006 {iau:.3f} ″/yr")
+    dpsi, deps = (x / arcsec for x in e.nutation_amplitudes)
+    ref = [x / arcsec for x in ps.IAU2000A_PRINCIPAL_NUTATION]
+    table.add_row("nutation Δψ₀, Δε₀", f"{dpsi:.4g}″, {deps:.4g}″", f"{ref[0]:.5g}″, {ref[1]:.5g}″")
+    con.print(table)
+    con.print(
+        "  the Chandler wobble is slower than Euler's (the mantle yields; the oceans and the "
+        "core do the rest); `poinsot earth --plot FILE`, `poinsot derive rigid_earth`"
+    )
+
+
 @section("The unit against the world: published measurements, reproduced (poinsot.experiments)")
 def _experiments(con: Console) -> None:
     try:
@@ -505,7 +548,8 @@ def run_tour(console: Console | None = None) -> None:
     con.rule()
     con.print("More, all installed with poinsot: every command's --help (`poinsot --help` lists")
     con.print("them), the lab in your browser (`poinsot lab`), the teaching notebooks")
-    con.print("(`poinsot notebooks DIR` copies them out). The documentation, with the gallery:")
+    con.print("(`poinsot notebooks DIR` copies them out), problem sets with checked answers for")
+    con.print("teachers (`poinsot exercises TOPIC`, `poinsot check`). The documentation:")
     con.print(docs_url(), markup=False, highlight=False, soft_wrap=True)
 
 
