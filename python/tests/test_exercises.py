@@ -13,6 +13,7 @@ import dataclasses
 import json
 import math
 import re
+from pathlib import Path
 from xml.etree import ElementTree as ET
 
 import pytest
@@ -394,3 +395,35 @@ def test_the_command_line(tmp_path) -> None:
 
 PINNED_SEED = 540785455
 PINNED_DRAW: dict[str, float] = {"height": 285.0, "latitude": 49.0}
+
+
+# ---- the docs page "For teachers" -------------------------------------------------------------------
+
+DOCS = Path(__file__).resolve().parents[2] / "docs" / "teachers.md"
+
+
+def test_the_teachers_page_runs_and_lists_every_template() -> None:
+    from poinsot.exercises._formats import catalogue_markdown
+
+    text = DOCS.read_text(encoding="utf-8")
+    namespace: dict[str, object] = {}
+    for block in re.findall(r"```python\n(.*?)```", text, re.S):
+        exec(compile(block, str(DOCS), "exec"), namespace)
+    begin = text.index("-->\n", text.index("<!-- templates: generated")) + 4
+    section = text[begin : text.index("<!-- templates: end -->")]
+    assert section.strip() == catalogue_markdown(2026).strip(), (
+        "docs/teachers.md is stale: write catalogue_markdown(2026) between its markers"
+    )
+    assert all(f"**`{name}`**" in section for name in NAMES)
+
+
+def test_the_teachers_pages_console_answers() -> None:
+    from click.testing import CliRunner
+    from poinsot.cli import main
+
+    text = DOCS.read_text(encoding="utf-8")
+    shown = re.findall(r"\$ poinsot (check [^\n]+)\n([^$`]+)", text)
+    assert len(shown) == 2
+    for command, printed in shown:
+        res = CliRunner().invoke(main, command.split())
+        assert res.exit_code == 0 and res.stdout.strip() == printed.strip(), command

@@ -18,7 +18,7 @@ from xml.etree import ElementTree as ET
 from ..errors import PoinsotError
 from ._template import UNITS, Variant, latex_text, sig
 
-__all__ = ["FORMATS", "render", "write"]
+__all__ = ["FORMATS", "catalogue_markdown", "render", "write"]
 
 #: The formats, each with the files it makes.
 FORMATS: dict[str, tuple[str, ...]] = {
@@ -249,3 +249,27 @@ def write(variants: Sequence[Variant], format: str, out: str | os.PathLike[str])
             path.write_text(content, encoding="utf-8")
         paths.append(path)
     return paths
+
+
+def catalogue_markdown(seed: int = 2026) -> str:
+    """The templates as a Markdown section for the docs' "For teachers" page: each with its
+    topic, difficulty, routes and a sample (variant 0 of a set made with ``seed``)."""
+    from ._issue import TOPICS, templates
+    from ._template import variant_seed
+
+    out = []
+    for topic in TOPICS:
+        out += [f"### {topic[0].upper()}{topic[1:]}", ""]
+        for t in templates(topic):
+            v = t.variant(variant_seed(seed, t.name, 0))
+            out += [
+                f"**`{t.name}`** — {t.title} (difficulty {t.difficulty}). "
+                f"Second route: {t.agree_why}.",
+                "",
+                f"> {v.statement}",
+                ">",
+                f"> Answer: {sig(v.answer)} {_unit(v)} (± {v.tolerance:.2g}); "
+                f"`{_check_code(v).replace('VALUE', sig(v.answer))}`",
+                "",
+            ]
+    return "\n".join(out)
