@@ -41,6 +41,7 @@ SUBMODULES = [
     "poinsot.derive",
     "poinsot.sweep",
     "poinsot.experiments",
+    "poinsot.exercises",
 ]
 
 
