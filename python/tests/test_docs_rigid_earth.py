@@ -1,0 +1,66 @@
+"""docs/rigid_earth.md, the chapter "The Earth as a rigid body" (issue 25): its numbers are
+computed when the site is built (myst-nb's glue), so every value the prose shows is glued by the
+page's own hidden cell — which is run here with a stand-in for ``glue`` — and the values are
+RigidEarth's and the catalogue's. Negative control: a key the cell does not glue is reported."""
+
+from __future__ import annotations
+
+import math
+import re
+from pathlib import Path
+from typing import Any
+
+import poinsot as ps
+import pytest
+
+PAGE = Path(__file__).resolve().parents[2] / "docs" / "rigid_earth.md"
+USED = re.compile(r"\{glue:text\}`([A-Za-z_0-9]+)(?::[^`]*)?`")
+CELL = re.compile(r"```\{code-cell\} python\n:tags: \[remove-cell\]\n(.*?)```", re.S)
+
+
+def _glued() -> dict[str, Any]:
+    pytest.importorskip("pint")
+    pytest.importorskip("myst_nb")
+    text = PAGE.read_text(encoding="utf-8")
+    (source,) = CELL.findall(text)
+    values: dict[str, Any] = {}
+    code = source.replace("from myst_nb import glue\n", "")
+
+    def glue(name: str, value: Any, display: bool = True) -> None:
+        assert not display, name
+        values[name] = value
+
+    exec(compile(code, str(PAGE), "exec"), {"glue": glue, "__name__": "page"})
+    return values
+
+
+def missing(text: str, values: dict[str, Any]) -> list[str]:
+    """The glue keys the prose shows that the cell does not glue."""
+    return sorted(set(USED.findall(text)) - set(values))
+
+
+def test_every_number_the_prose_shows_is_glued_and_finite() -> None:
+    values = _glued()
+    text = PAGE.read_text(encoding="utf-8")
+    assert len(USED.findall(text)) >= 25
+    assert missing(text, values) == []
+    assert all(math.isfinite(float(v)) for v in values.values())
+
+
+def test_the_glued_values_are_rigid_earths_and_the_catalogues() -> None:
+    v = _glued()
+    e = ps.RigidEarth()
+    h = e.dynamical_flattening
+    assert v["euler_sidereal"] == pytest.approx((1 - h) / h, rel=1e-12)
+    assert v["chandler_days"] == pytest.approx(e.chandler_period(0.30, 0.938) / 86400)
+    assert v["chandler_obs"] == pytest.approx(433.1) and v["chandler_sigma"] == pytest.approx(1.7)
+    year, arcsec = 365.25 * 86400, math.pi / 648000
+    assert v["rate"] == pytest.approx(-e.precession_rate * year / arcsec, rel=1e-12)
+    assert v["sun_rate"] + v["moon_rate"] == pytest.approx(v["rate"], rel=1e-12)
+    assert abs(v["rate_off_pct"]) < 0.5  # the issue's bound against IAU 2006
+    assert v["dpsi"] == pytest.approx(e.nutation_amplitudes[0] / arcsec, rel=1e-12)
+
+
+def test_negative_control_an_unglued_key_is_reported() -> None:
+    values = _glued()
+    assert missing("{glue:text}`not_a_key:.2f`", values) == ["not_a_key"]
