@@ -2106,10 +2106,10 @@ def earth(
         notes.append(
             "poinsot experiments NAME: each comparison, and what the rigid model leaves out."
         )
-    chandler = m.get("chandler_period")
+    seen = m.get("chandler_period")
     observed = None
-    if chandler is not None and chandler["unit"] in ("d", "day", "days"):
-        observed = (chandler["value"], chandler["uncertainty"] or 0.0)
+    if seen is not None and seen["unit"] == "d":
+        observed = (float(seen["value"]), float(seen["uncertainty"] or 0.0))
     draw = "earth.plot_rigid_earth"
     _keep_picture(data, plot_path, draw, e, k2=k2, ks=ks, chandler_observed=observed, style=style)
     title = "the Earth as a rigid top"
