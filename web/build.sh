@@ -30,6 +30,9 @@ wasm-bindgen --target web --experimental-reset-state-function --out-dir web/src/
 if [[ "${1:-all}" == "wasm" ]]; then exit 0; fi
 cd "$here"
 if [[ ! -d node_modules ]]; then npm ci --no-audit --no-fund; fi
+# The real pole's path for the scene "The Earth as a top" (a decimated copy of the package's
+# attributed IERS extract, into src/generated, git-ignored).
+node tools/pole_path.mjs
 npx tsc --noEmit
 npx vite build
 npx vite build -c vite.widget.config.ts

@@ -17,7 +17,7 @@ export const {
   version, start, errorClasses, eulerToMatrix, matrixToEuler, rotationAxis, screwAxis, bodyAngularVelocity,
   eulerRates, axisStability, simulateParticle, sampleTimes,
   AxisStability, Earth, EulerAngles, Fall, FixedMotion, FoucaultRun, FreeRigidBody, FreeSymmetricTop, HeavyTop,
-  InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, Screw, SpringParticle, SteadyPrecession,
+  InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, RigidEarth, Screw, SpringParticle, SteadyPrecession,
 } = core;
 export type AxisStability = raw.AxisStability;
 export type Earth = raw.Earth;
@@ -33,6 +33,7 @@ export type LowFlow = raw.LowFlow;
 export type MovingFrame = raw.MovingFrame;
 export type RelativeMotion = raw.RelativeMotion;
 export type RigidBody = raw.RigidBody;
+export type RigidEarth = raw.RigidEarth;
 export type Screw = raw.Screw;
 export type SpringParticle = raw.SpringParticle;
 export type SteadyPrecession = raw.SteadyPrecession;
@@ -42,7 +43,7 @@ const exported = {
   version, start, errorClasses, eulerToMatrix, matrixToEuler, rotationAxis, screwAxis, bodyAngularVelocity,
   eulerRates, axisStability, simulateParticle, sampleTimes,
   AxisStability, Earth, EulerAngles, Fall, FixedMotion, FoucaultRun, FreeRigidBody, FreeSymmetricTop, HeavyTop,
-  InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, Screw, SpringParticle, SteadyPrecession,
+  InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, RigidEarth, Screw, SpringParticle, SteadyPrecession,
 };
 type Unlisted = Exclude<keyof typeof raw, keyof typeof exported | "default" | "initSync" | "__wbg_reset_state">;
 export const everyExportListed: [Unlisted] extends [never] ? true : Unlisted = true;

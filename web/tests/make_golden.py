@@ -390,6 +390,43 @@ def heavytop_case(params: dict[str, Any], t: float) -> dict[str, Any]:
     return {"scene": "heavytop", "params": params, "t": t, "readouts": readouts}
 
 
+#: A Julian year (s), the clock of the Earth-as-a-top scene; the Moon's node regresses in
+#: 6798.38 days (JPL Horizons, Moon 301; the core's MOON_ORBIT.node_period, which the scene reads).
+YEAR = 365.25 * 86400.0
+MOON_NODE_PERIOD = 6798.38 * 86400.0
+ARCSEC = math.pi / 648000
+
+
+def earthtop_case(params: dict[str, Any], t: float) -> dict[str, Any]:
+    """The rigid Earth's rates from the Python API, and the axis at the lab's time t (s, each
+    second ``yearsPerSecond`` years): longitude ψ = |ψ̇| t + Δψ₀ sin Ω, obliquity ε + Δε₀ cos Ω,
+    Ω = −2π t / T_node, the real (not exaggerated) nod."""
+    e = poinsot.RigidEarth(dynamical_flattening=params["flattening"], obliquity=params["obliquity"], degrees=True)
+    years = t * params["yearsPerSecond"]
+    ts = years * YEAR
+    dpsi, deps = e.nutation_amplitudes
+    node = -2 * math.pi * ts / MOON_NODE_PERIOD
+    psi = abs(e.precession_rate) * ts + dpsi * math.sin(node)
+    eps = params["obliquity"] * DEG + deps * math.cos(node)
+    readouts = {
+        "years": years,
+        "precessionPeriod": e.precession_period,
+        "precessionRate": e.precession_rate,
+        "precessionParts": list(e.precession_parts),
+        "iau2006": -poinsot.IAU2006_PRECESSION_RATE,
+        "nutation": [dpsi, deps],
+        "eulerPeriod": e.euler_period,
+        "chandlerPeriod": e.chandler_period(0.3, 0.938),
+        "poleLongitude": math.radians(math.degrees(psi) % 360),
+        "obliquityNow": eps,
+        "node": math.radians(math.degrees(node) % 360),
+    }
+    return {"scene": "earthtop", "params": params, "t": t, "readouts": readouts}
+
+
+EARTHTOP = {"flattening": 0.003273795, "obliquity": 23.44, "yearsPerSecond": 1000, "nod": "1000"}
+
+
 HEAVYTOP = {"preset": "loops", "w3": 9, "tilt": 50, "phiDot0": 0.5, "thetaDot0": 0, "mgl": 1.5,
             "I1": 1, "I3": 0.5}
 
@@ -435,6 +472,9 @@ def cases() -> list[dict[str, Any]]:
         heavytop_case({**HEAVYTOP, "preset": "steady precession", "tilt": 120}, 2.0),
         heavytop_case({**HEAVYTOP, "preset": "sleeping", "w3": 7}, 1.0),
         heavytop_case({**HEAVYTOP, "preset": "custom", "tilt": 100, "phiDot0": -1.2, "thetaDot0": 0.7}, 4.0),
+        earthtop_case(EARTHTOP, 0.0),
+        earthtop_case(EARTHTOP, 7.25),  # 7250 years: a quarter turn of the axis and more
+        earthtop_case({**EARTHTOP, "flattening": 0.0121, "obliquity": 60, "yearsPerSecond": 3.5, "nod": "1"}, 2.5),
     ]
 
 

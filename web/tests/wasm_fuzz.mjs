@@ -147,6 +147,7 @@ function worker({ seed, calls, deadlineMs }) {
       [() => core.HeavyTop.steadyPrecession(1, 0.5, 1.5, 0.7, 8), names()],
       [FRAME, names()],
       [() => new core.SpringParticle(1, 2), names()],
+      [() => new core.RigidEarth(3.273795e-3, 7.292115e-5, 0.409), names()],
       [() => core.RigidBody.cuboid(1, [1, 2, 3]), names()],
       [() => core.matrixToEuler(ROTATION, "zxz", true), names()],
       [() => core.screwAxis(ROTATION, [1, 2, 3]), names()],

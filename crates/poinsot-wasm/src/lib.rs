@@ -35,6 +35,7 @@ pub mod frames;
 pub mod free;
 pub mod heavy_top;
 pub mod inertia;
+pub mod rigid_earth;
 pub mod rotation;
 
 pub use convert::Failure;

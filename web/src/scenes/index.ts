@@ -1,4 +1,4 @@
-// The lab's scenes, in the order of the tabs (and of the number keys 1–9): the unit's order.
+// The lab's scenes, in the order of the tabs (and of the number keys 1–9; the tenth by its tab): the unit's order.
 import type { SceneDef } from "../scene";
 import { framesScene } from "./frames";
 import { dropScene } from "./drop";
@@ -9,7 +9,8 @@ import { eulerScene } from "./euler";
 import { freeTopScene } from "./freetop";
 import { poinsotScene } from "./poinsot";
 import { heavyTopScene } from "./heavytop";
+import { earthTopScene } from "./earthtop";
 
 export const SCENES: SceneDef[] = [
-  framesScene, dropScene, foucaultScene, lowScene, inertiaScene, eulerScene, freeTopScene, poinsotScene, heavyTopScene,
+  framesScene, dropScene, foucaultScene, lowScene, inertiaScene, eulerScene, freeTopScene, poinsotScene, heavyTopScene, earthTopScene,
 ];
