@@ -1,6 +1,6 @@
 """The topic chapters' formulas are LaTeX, and good LaTeX (issue 13: "Formulas in LaTeX").
 
-The six chapters of the unit (docs/frames.md … docs/heavy_top.md) write their formulas as MyST
+The chapters of the unit (docs/frames.md … docs/heavy_top.md, docs/rigid_earth.md) write their formulas as MyST
 math: ``$…$`` inline, ``$$…$$`` or an amsmath environment (``\\begin{align*}``) on display, the
 unit's number as ``\\tag{2.NN}``. Parsed with the site's own MyST parser and configuration
 (docs/conf.py), every formula must
@@ -56,6 +56,7 @@ CHAPTERS = (
     "docs/dynamics.md",
     "docs/rotation.md",
     "docs/heavy_top.md",
+    "docs/rigid_earth.md",
 )
 
 MATH_TOKENS = frozenset(
