@@ -318,6 +318,20 @@ def test_json_markdown_and_latex(sheet: list) -> None:
     assert tex["problems.tex"].count(r"\item \textbf") == len(sheet)
 
 
+#: What pdflatex with \\usepackage[utf8]{inputenc} reads: ASCII and the accented letters of the
+#: city names; any other Unicode (a Greek letter, a subscript, a combining dot) stops the build.
+TEX_SAFE = set(map(chr, range(32, 127))) | set("\néíóáüöäàèçñÉ–—")
+
+
+def test_the_latex_holds_only_what_pdflatex_reads(sheet: list) -> None:
+    # every template's statement, steps and mistakes, so no TeX engine is needed to catch one
+    tex = x.render(x.generate(["all"], n=2 * len(NAMES), seed=5), "latex")
+    for name, text in tex.items():
+        assert set(text) <= TEX_SAFE, (name, sorted(set(text) - TEX_SAFE))
+    # negative control: the plain statements are full of Unicode the check would catch
+    assert set("".join(v.statement for v in sheet)) - TEX_SAFE
+
+
 def test_pdf_builds_where_tex_is_installed(tmp_path) -> None:
     few = x.generate(["earth"], n=2, seed=1)
     if tex_engine() is None:

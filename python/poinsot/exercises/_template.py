@@ -598,7 +598,7 @@ def _si_unit(unit: str) -> str:
 
 _GREEK = dict(
     zip(
-        "αβγδεθλμνπρστφχψωΩΦΨΘΛΔ",
+        "αβγδεθλμνπρστφχψωΩΦΨΘΛΔΣ",
         [
             r"\alpha",
             r"\beta",
@@ -623,39 +623,60 @@ _GREEK = dict(
             r"\Theta",
             r"\Lambda",
             r"\Delta",
+            r"\Sigma",
         ],
     )
 )
 _SUB = dict(zip("₀₁₂₃₄₅₆₇₈₉", "0123456789"))
 _SUP = dict(zip("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789"))
 _POWER = re.compile("([" + "".join(_SUP) + "]+)")
-_DOTTED = re.compile(r"([A-Za-z" + "".join(_GREEK) + "])\u0307")
-_SYMBOL = re.compile(r"([A-Za-z" + "".join(_GREEK) + r"])([₀-₉]+)|([" + "".join(_GREEK) + "])")
+_LETTER = "[A-Za-z" + "".join(_GREEK) + "]"
+_DOTTED = re.compile(f"({_LETTER})\u0307([₀-₉]*)")
+_SYMBOL = re.compile(f"({_LETTER})([₀-₉]+)|([" + "".join(_GREEK) + "])")
+#: Other Unicode of the statements and steps, as LaTeX (pdflatex's utf8 input knows none of it).
+_OTHER = {
+    "°": r"$^\circ$",
+    "′": "'",
+    "−": "$-$",
+    "×": r"$\times$",
+    "≈": r"$\approx$",
+    "½": r"$\frac12$",
+    "⅓": r"$\frac13$",
+    "¾": r"$\frac34$",
+    "↔": r"$\leftrightarrow$",
+    "→": r"$\to$",
+    "µ": r"$\mu$",
+    "√": r"$\surd$",
+    "≤": r"$\le$",
+    "≥": r"$\ge$",
+    "§": r"\S{}",
+}
+
+
+def _sub(digits: str) -> str:
+    return f"_{{{''.join(_SUB[c] for c in digits)}}}" if digits else ""
 
 
 def latex_text(text: str) -> str:
-    """Unicode statement text as LaTeX text: specials escaped, Greek letters and subscripted
-    symbols (I₁, θ₀, ω₃) set in math, ° and ² as LaTeX."""
+    """Unicode statement text as LaTeX text: specials escaped, Greek letters, dotted and
+    subscripted symbols (I₁, θ₀, ω̇₁) set in math, powers (10⁻⁵), ° and the other signs of
+    :data:`_OTHER` as LaTeX."""
     for a, b in (("\\", r"\textbackslash{}"), ("%", r"\%"), ("&", r"\&"), ("#", r"\#")):
         text = text.replace(a, b)
     text = text.replace("_", r"\_").replace("²", r"$^2$").replace("·", r"$\cdot$")
 
-    def math_(m: re.Match[str]) -> str:
+    def dotted(m: re.Match[str]) -> str:
+        return r"$\dot{" + _GREEK.get(m.group(1), m.group(1)) + "}" + _sub(m.group(2)) + "$"
+
+    def symbol(m: re.Match[str]) -> str:
         if m.group(3):
             return f"${_GREEK[m.group(3)]}$"
-        base = _GREEK.get(m.group(1), m.group(1))
-        return f"${base}_{{{''.join(_SUB[c] for c in m.group(2))}}}$"
+        return f"${_GREEK.get(m.group(1), m.group(1))}{_sub(m.group(2))}$"
 
-    text = _DOTTED.sub(lambda m: "$\\dot{" + _GREEK.get(m.group(1), m.group(1)) + "}$", text)
-    text = _SYMBOL.sub(math_, text)
+    text = _DOTTED.sub(dotted, text)
+    text = _SYMBOL.sub(symbol, text)
     text = _POWER.sub(lambda m: "$^{" + "".join(_SUP[c] for c in m.group(1)) + "}$", text)
-    for a, b in (
-        ("°", r"$^\circ$"),
-        ("′", "'"),
-        ("−", "$-$"),
-        ("×", r"$\times$"),
-        ("≈", r"$\approx$"),
-    ):
+    for a, b in _OTHER.items():
         text = text.replace(a, b)
     return text
 
