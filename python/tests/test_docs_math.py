@@ -2,8 +2,8 @@
 
 The chapters of the unit (docs/frames.md … docs/heavy_top.md, docs/rigid_earth.md) write their
 formulas as MyST math: ``$…$`` inline, ``$$…$$`` or an amsmath environment
-(``\\begin{align*}``) on display, the unit's number as ``\\tag{2.NN}``. Parsed with the site's own MyST parser and configuration
-(docs/conf.py), every formula must
+(``\\begin{align*}``) on display, the unit's number as ``\\tag{2.NN}``. Parsed with the site's
+own MyST parser and configuration (docs/conf.py), every formula must
 
 * render with matplotlib's mathtext (the check of the equation index, ``latex_problem``: balanced
   braces and environments, aligned lines and matrix cells rendered one by one), after the
