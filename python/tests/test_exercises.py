@@ -417,7 +417,7 @@ DOCS = Path(__file__).resolve().parents[2] / "docs" / "teachers.md"
 
 
 def test_the_teachers_page_runs_and_lists_every_template() -> None:
-    from poinsot.exercises._formats import catalogue_markdown
+    from poinsot.exercises._formats import catalogue_markdown, sample_sheet_markdown
 
     text = DOCS.read_text(encoding="utf-8")
     namespace: dict[str, object] = {}
@@ -429,6 +429,11 @@ def test_the_teachers_page_runs_and_lists_every_template() -> None:
         "docs/teachers.md is stale: write catalogue_markdown(2026) between its markers"
     )
     assert all(f"**`{name}`**" in section for name in NAMES)
+    begin = text.index("-->\n", text.index("<!-- sheet: generated")) + 4
+    sheet = text[begin : text.index("<!-- sheet: end -->")]
+    assert sheet.strip() == sample_sheet_markdown(2026, 3).strip(), (
+        "docs/teachers.md is stale: write sample_sheet_markdown(2026, 3) between its markers"
+    )
 
 
 def test_the_teachers_pages_console_answers() -> None:

@@ -18,7 +18,7 @@ from xml.etree import ElementTree as ET
 from ..errors import PoinsotError
 from ._template import UNITS, Variant, latex_text, sig
 
-__all__ = ["FORMATS", "catalogue_markdown", "render", "write"]
+__all__ = ["FORMATS", "catalogue_markdown", "render", "sample_sheet_markdown", "write"]
 
 #: The formats, each with the files it makes.
 FORMATS: dict[str, tuple[str, ...]] = {
@@ -273,3 +273,13 @@ def catalogue_markdown(seed: int = 2026) -> str:
                 "",
             ]
     return "\n".join(out)
+
+
+def sample_sheet_markdown(seed: int = 2026, n: int = 3) -> str:
+    """A sample sheet for the docs: the Markdown problem and solution sheets of ``n`` variants of
+    ``all`` made with ``seed``, their headings two levels down."""
+    from ._issue import generate
+
+    files = _markdown(generate(["all"], n=n, seed=seed))
+    text = files["problems.md"] + "\n" + files["solutions.md"]
+    return "\n".join("##" + line if line.startswith("#") else line for line in text.splitlines())
