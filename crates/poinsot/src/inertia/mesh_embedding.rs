@@ -1591,6 +1591,13 @@ impl StarProof {
 /// For the face `t` seen from `c` ([`star_shaped_about`]): `None` unless it is positively
 /// oriented (and within the envelope of the predicates); else, for each corner, whether its
 /// wedge holds the corner's reference tangent direction.
+///
+/// The float filters bound each product's permanent by the corners' largest differences from
+/// `c` (`m_i = max_k |p_i,k − c_k|`: `|u_j w_l| + |u_l w_j| ≤ 2 m_u m_w`, and rounding is
+/// monotone, so the bound is at least the permanent the filter was derived for): a coarser
+/// filter, never a wrong sign, without the nine absolute permanents per face; and only the
+/// components of the cross products that a corner's test reads are computed (the corners
+/// unrolled), about half of the instructions of the proof.
 #[inline]
 fn radial_wedges(p: [P3; 3], c: P3) -> Option<[bool; 3]> {
     if !fast(&p) {
@@ -1606,24 +1613,21 @@ fn radial_wedges(p: [P3; 3], c: P3) -> Option<[bool; 3]> {
         return None;
     }
     let d = p.map(|x| [x[0] - c[0], x[1] - c[1], x[2] - c[2]]);
-    // x[i] = d[i] × d[i + 1] and its permanent (per component).
-    let cross = |u: P3, w: P3| {
-        let l = [u[1] * w[2], u[2] * w[0], u[0] * w[1]];
-        let r = [u[2] * w[1], u[0] * w[2], u[1] * w[0]];
-        (
-            [l[0] - r[0], l[1] - r[1], l[2] - r[2]],
-            [
-                l[0].abs() + r[0].abs(),
-                l[1].abs() + r[1].abs(),
-                l[2].abs() + r[2].abs(),
-            ],
-        )
+    let a = d.map(|x| x.map(f64::abs));
+    let m = a.map(|x| max2(max2(x[0], x[1]), x[2]));
+    // Component k of d[i] × d[j].
+    let cross = |i: usize, j: usize, k: usize| {
+        let (u, w) = (&d[i], &d[j]);
+        match k {
+            0 => u[1] * w[2] - u[2] * w[1],
+            1 => u[2] * w[0] - u[0] * w[2],
+            _ => u[0] * w[1] - u[1] * w[0],
+        }
     };
-    let x = [cross(d[0], d[1]), cross(d[1], d[2]), cross(d[2], d[0])];
-    // Condition 1: det[d₀, d₁, d₂] = d₀ · (d₁ × d₂) > 0.
-    let (n, na) = x[1];
-    let det = d[0][0] * n[0] + d[0][1] * n[1] + d[0][2] * n[2];
-    let perm = d[0][0].abs() * na[0] + d[0][1].abs() * na[1] + d[0][2].abs() * na[2];
+    // Condition 1: det[d₀, d₁, d₂] = d₀ · (d₁ × d₂) > 0; the permanent is at most
+    // 3 · m₀ · 2 m₁ m₂ (8: a power of two above 6, exact).
+    let det = d[0][0] * cross(1, 2, 0) + d[0][1] * cross(1, 2, 1) + d[0][2] * cross(1, 2, 2);
+    let perm = 8.0 * (m[0] * (m[1] * m[2]));
     let positive = if det.abs() > O3_FILTER * perm + FILTER_SLACK {
         det > 0.0
     } else {
@@ -1632,41 +1636,49 @@ fn radial_wedges(p: [P3; 3], c: P3) -> Option<[bool; 3]> {
     if !positive {
         return None;
     }
-    // The sign of component k of (p[i] − c) × (p[j] − c), from x[m] = d[i] × d[j].
-    let comp = |m: usize, k: usize, i: usize, j: usize| {
-        let (n, na) = x[m];
-        if n[k].abs() > O2_FILTER * na[k] + FILTER_SLACK {
-            sign(n[k])
+    // The sign of component k of (p[i] − c) × (p[j] − c).
+    let comp = |i: usize, j: usize, k: usize| {
+        let n = cross(i, j, k);
+        if n.abs() > O2_FILTER * (2.0 * (m[i] * m[j])) + FILTER_SLACK {
+            sign(n)
         } else {
             o2(c, p[i], p[j], k as u8)
         }
     };
-    let mut holds = [false; 3];
-    for (i, h) in holds.iter_mut().enumerate() {
-        let (a, b) = ((i + 1) % 3, (i + 2) % 3);
-        let dv = d[i];
-        // The axis along which v − c is shortest (ties: the lowest); v − c ≠ 0 by condition 1,
-        // so e_k is not along it.
-        let m = dv.map(f64::abs);
-        let k = if m[0] <= m[1] && m[0] <= m[2] {
+    #[inline(always)]
+    fn corner(
+        i: usize,
+        a: usize,
+        b: usize,
+        abs: P3,
+        comp: &impl Fn(usize, usize, usize) -> i8,
+        tie: impl FnOnce(usize) -> bool,
+    ) -> bool {
+        // The axis along which v − c is shortest (ties: the lowest); v − c ≠ 0 by condition
+        // 1, so e_k is not along it.
+        let k = if abs[0] <= min2(abs[1], abs[2]) {
             0
-        } else if m[1] <= m[2] {
+        } else if abs[1] <= abs[2] {
             1
         } else {
             2
         };
-        // det[v − c, a − c, e_k] = ((v − c) × (a − c))_k = x[i]_k.
-        let sa = comp(i, k, i, a);
-        *h = if sa == 0 {
+        // det[v − c, a − c, e_k] = ((v − c) × (a − c))_k.
+        let sa = comp(i, a, k);
+        if sa == 0 {
             // t along ±(tangent towards a): held iff the same ray, i.e. (v − c) × e_k and
             // (v − c) × (a − c) (parallel: e_k lies in their plane) point the same way.
-            same_ray(c, p[i], p[a], dv, k)
+            tie(k)
         } else {
-            // det[v − c, e_k, b − c] = ((b − c) × (v − c))_k = x[b]_k (x[b] = d[b] × d[i]).
-            sa == 1 && comp(b, k, b, i) == 1
-        };
+            // det[v − c, e_k, b − c] = ((b − c) × (v − c))_k.
+            sa == 1 && comp(b, i, k) == 1
+        }
     }
-    Some(holds)
+    Some([
+        corner(0, 1, 2, a[0], &comp, |k| same_ray(c, p[0], p[1], d[0], k)),
+        corner(1, 2, 0, a[1], &comp, |k| same_ray(c, p[1], p[2], d[1], k)),
+        corner(2, 0, 1, a[2], &comp, |k| same_ray(c, p[2], p[0], d[2], k)),
+    ])
 }
 
 /// For `det[v − c, a − c, e_k] = 0` ([`radial_wedges`]): do `(v − c) × e_k` and
@@ -2099,6 +2111,98 @@ mod tests {
         stopped.cancel();
         let (v, f) = outward_sphere(n, m, 0, 0.0);
         assert!(star_shaped_about(Points::new(&v), &f, |_| false, [0.0; 3], &stopped).is_err());
+    }
+
+    /// [`radial_wedges`] with every sign by the exact predicates (no float filter): the
+    /// reference for its filters.
+    fn radial_wedges_exact(p: [P3; 3], c: P3) -> Option<[bool; 3]> {
+        let extent = (0..3).fold(0.0f64, |m, k| {
+            let (lo, hi) = (
+                p[0][k].min(p[1][k]).min(p[2][k]),
+                p[0][k].max(p[1][k]).max(p[2][k]),
+            );
+            m.max(hi - lo)
+        });
+        if !fast(&p) || !well_scaled(extent) {
+            return None;
+        }
+        if robust::orient3d(c3(p[0]), c3(p[1]), c3(p[2]), c3(c)) <= 0.0 {
+            return None;
+        }
+        Some([0, 1, 2].map(|i| {
+            let (a, b) = ((i + 1) % 3, (i + 2) % 3);
+            let dv = [p[i][0] - c[0], p[i][1] - c[1], p[i][2] - c[2]];
+            let m = dv.map(f64::abs);
+            let k = if m[0] <= m[1] && m[0] <= m[2] {
+                0
+            } else if m[1] <= m[2] {
+                1
+            } else {
+                2
+            };
+            match o2(c, p[i], p[a], k as u8) {
+                0 => same_ray(c, p[i], p[a], dv, k),
+                sa => sa == 1 && o2(c, p[b], p[i], k as u8) == 1,
+            }
+        }))
+    }
+
+    /// The filtered [`radial_wedges`] (coarse permanents from the corners' largest
+    /// differences, only the components it reads) answers as the exact predicates do, on
+    /// random faces about random points, faces nearly through the point or along its axes
+    /// (ties of the shortest axis, zero components, the exact fall-backs), tiny and huge
+    /// scales (products that overflow: the exact path), and faces outside the envelope.
+    #[test]
+    fn radial_wedges_filters_agree_with_exact_signs() {
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut rnd = || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((state >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
+        };
+        let (mut some, mut none, mut held) = (0, 0, 0);
+        for n in 0..40_000 {
+            let scale = [1.0, 1e-9, 1e9, 1e40, 1e70, 1e-70, 3e-17][n % 7];
+            let c = [rnd(), rnd(), rnd()].map(|x| x * scale);
+            let mut p = [[0.0; 3]; 3];
+            for q in p.iter_mut() {
+                *q = [rnd(), rnd(), rnd()].map(|x| x * scale);
+            }
+            match n % 5 {
+                // Corners snapped to grid values: equal coordinates, ties of |v − c|.
+                1 => {
+                    for q in p.iter_mut() {
+                        for (x, y) in q.iter_mut().zip(c) {
+                            *x = y + (4.0 * (*x - y) / scale).round() * 0.25 * scale;
+                        }
+                    }
+                }
+                // The third corner in the plane through c and the first two, up to rounding.
+                2 => {
+                    let t = rnd();
+                    p[2] = [0, 1, 2].map(|k| c[k] + t * (p[0][k] - c[k]) + 0.7 * (p[1][k] - c[k]));
+                }
+                // A corner on the ray from c through another (a tie of the wedge).
+                3 => p[1] = [0, 1, 2].map(|k| c[k] + 2.0 * (p[0][k] - c[k])),
+                _ => {}
+            }
+            for q in [p, [p[0], p[2], p[1]]] {
+                let got = radial_wedges(q, c);
+                assert_eq!(got, radial_wedges_exact(q, c), "{q:?} about {c:?}");
+                match got {
+                    Some(h) => {
+                        some += 1;
+                        held += h.iter().filter(|&&x| x).count();
+                    }
+                    None => none += 1,
+                }
+            }
+        }
+        assert!(
+            some > 10_000 && none > 10_000 && held > 1_000,
+            "{some} {none} {held}"
+        );
     }
 
     /// A fan of many faces (the poles of a UV sphere of 100 meridians) is proved too (it was
