@@ -148,7 +148,7 @@ def check(name: str, seed: int, answer: Any) -> Check:
     v = template(name).variant(seed)
     given = _answer(answer, v.unit)
     off = given - v.answer
-    rel = off / abs(v.answer) if v.answer else math.inf
+    rel = off / abs(v.answer)  # an issued answer is never 0: its tolerance is a share of it
     right = abs(off) <= v.tolerance
     match = None
     if not right:

@@ -383,7 +383,7 @@ class Template:
             scale = max(abs(a), abs(b))
             if math.isfinite(a) and math.isfinite(b) and abs(a - b) <= self.agree * scale:
                 tolerance = self.tolerance(v, a)
-                if tolerance <= self.max_rtol * abs(a):
+                if 0 < tolerance <= self.max_rtol * abs(a):  # finite, and an answer can be graded
                     return Variant(self, seed, drawn, labels, v, a, b, tolerance)
                 worst = f"ill-conditioned: tolerance {tolerance:.3g} of answer {a:.3g}"
                 continue
