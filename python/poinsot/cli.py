@@ -2219,14 +2219,14 @@ def _exercises_module() -> Any:
 @click.option("--seed", type=int, default=2026, show_default=True, help="The set's seed.")
 @click.option(
     "--format",
-    "fmt",
+    "format",
     type=click.Choice(["markdown", "latex", "pdf", "gift", "moodle-xml", "json"]),
     default="markdown",
     show_default=True,
     help="Sheets (markdown, latex, pdf), a Moodle quiz (gift, moodle-xml) or json.",
 )
 @click.option("--out", type=click.Path(file_okay=False), default=None, help="Folder to write to.")
-def exercises(topics: tuple[str, ...], n: int, seed: int, fmt: str, out: str | None) -> None:
+def exercises(topics: tuple[str, ...], n: int, seed: int, format: str, out: str | None) -> None:
     """Problem sets with checked answers.
 
     TOPIC is a topic (earth, "rigid bodies", "free tops", "euler angles", "heavy top"), a
@@ -2243,15 +2243,15 @@ def exercises(topics: tuple[str, ...], n: int, seed: int, fmt: str, out: str | N
     """
     x = _exercises_module()
     variants = x.generate(list(topics), n=n, seed=seed)
-    if out is None and fmt == "pdf":
+    if out is None and format == "pdf":
         raise click.UsageError("--format pdf: give --out DIR for the PDF files")
     if out is not None:
-        for path in x.write(variants, fmt, out):
+        for path in x.write(variants, format, out):
             click.echo(str(path))
         return
-    for name, text in x.render(variants, fmt).items():
-        if len(x.FORMATS[fmt]) > 1:
-            click.echo(f"<!-- {name} -->" if fmt == "markdown" else f"% {name}")
+    for name, text in x.render(variants, format).items():
+        if len(x.FORMATS[format]) > 1:
+            click.echo(f"<!-- {name} -->" if format == "markdown" else f"% {name}")
         click.echo(text)
 
 

@@ -421,6 +421,10 @@ def test_the_command_line(tmp_path) -> None:
     ):
         res = run(main, args)
         assert res.exit_code != 0 and named in res.output, (args, res.output)
+    if tex_engine() is None:  # the PDF refused naming the option and the Debian packages
+        res = run(main, ["exercises", "earth", "--format", "pdf", "--out", str(tmp_path)])
+        assert res.exit_code != 0 and "--format: 'pdf'" in res.output
+        assert "texlive-latex-base latexmk" in res.output
 
 
 PINNED_SEED = 540785455
