@@ -3,7 +3,9 @@
 //! flow, the Lie–Poisson splitting (orders 2, 4, 6), RK4 and DOP853 — for one body or many.
 
 mod batch;
+mod carried;
 mod equations;
+mod gyrocompass;
 mod lanes;
 mod model;
 mod simulate;
@@ -11,7 +13,9 @@ mod splitting;
 mod torque;
 
 pub use batch::{simulate_batch, BatchResult};
+pub use carried::{simulate_carried, CarriedTorque, CarriedTrajectory, Carrier, Carrying, Load};
 pub use equations::{angular_acceleration, angular_acceleration_principal, power, quaternion_rate};
+pub use gyrocompass::{CompassRun, Gyrocompass, Ship, VISCOUS_FACTOR};
 pub use model::BodyInertia;
 pub use simulate::{default_step, simulate, Method, SimulateOptions, Trajectory};
 pub use splitting::{free_steps, kicked_step, FreeStrang, SplitState};
