@@ -34,8 +34,8 @@ const MOON_AT = 2.3;
 const BULGE = 100;
 const MAX_FLATTENING = 0.45;
 /** Samples of the axis's recent path (its tail), and how many node periods it spans. */
-const TAIL = 1500;
-const TAIL_NODES = 100;
+const TAIL = 3200;
+const TAIL_NODES = 450;
 /** The elastic Earth's Love numbers for the Chandler period (the core's documented example). */
 const K2 = 0.3;
 const KS = 0.938;
@@ -221,6 +221,7 @@ export const earthTopScene: SceneDef = {
     const tailPos = new Float32Array(3 * TAIL);
     const tail = bufferLine(tailPos, 0xf2b84b);
     root.add(tail);
+    const tailLabel = ctx.labels.add("the axis's path, nodding", new THREE.Vector3(), { className: "label3d mark", color: "#f2b84b" });
     const coneLabel = ctx.labels.add("precession cone", new THREE.Vector3(), { className: "label3d mark", color: "#f2b84b" });
 
     // The Sun and the Moon, drawn at a solstice (where their pull on the bulge is largest),
@@ -253,7 +254,7 @@ export const earthTopScene: SceneDef = {
     ctx.overlay.append(column);
     new PolePlot(column, ctx.overlay.clientWidth >= NARROW_STAGE);
 
-    ctx.camera.position.set(4.2, -7.4, 3.2);
+    ctx.camera.position.set(3.4, -6.4, 5.2);
     ctx.target.set(0, 0, 0);
 
     let p: Params = {};
@@ -341,6 +342,9 @@ export const earthTopScene: SceneDef = {
         }
         (tail.geometry.getAttribute("position") as THREE.BufferAttribute).needsUpdate = true;
         tail.geometry.setDrawRange(0, span > 0 ? TAIL : 0);
+        const mid = 3 * Math.floor(TAIL / 3);
+        ctx.labels.move(tailLabel, new THREE.Vector3(tailPos[mid], tailPos[mid + 1], tailPos[mid + 2]).multiplyScalar(1.12));
+        tailLabel.hidden = span <= 0;
         // The solstice direction: the axis's lean, projected on the ecliptic.
         const lean = new THREE.Vector3(now.dir.x, now.dir.y, 0).normalize();
         const sunAt = lean.clone().multiplyScalar(SUN_AT);
@@ -366,7 +370,7 @@ export const earthTopScene: SceneDef = {
         const nMoon = dir.clone().multiplyScalar(Math.abs(parts[1]) * scale);
         sunTorque.set(nSun, tip);
         moonTorque.set(nMoon, tip.clone().add(nSun));
-        ctx.labels.move(torqueLabel, tip.clone().add(nSun).add(nMoon.clone().multiplyScalar(1.25)).add(new THREE.Vector3(0, 0, 0.12)));
+        ctx.labels.move(torqueLabel, tip.clone().add(nSun).add(nMoon).add(dir.clone().multiplyScalar(0.3)).add(new THREE.Vector3(0, 0, 0.1)));
         clock.textContent = `${Math.floor(years)} years from the start (1 s = ${Number(p.yearsPerSecond)} years)`;
 
         const real = axisAt(years, 1);
