@@ -103,7 +103,7 @@ def test_the_derived_steps_substitute_the_variants_numbers() -> None:
     v = x.template("dropped-ball").fixed(height=100, latitude=45)
     derived = [s for s in v.steps if "poinsot.derive" in s.text]
     assert [s.text.split("eq. ")[1][:4] for s in derived] == ["2.41", "2.42"]
-    assert "100.0" in derived[0].latex and r"\cos" in derived[1].latex
+    assert r"\frac{100}{9.807}" in derived[0].latex and r"\cos" in derived[1].latex
     assert math.isclose(derived[0].value, math.sqrt(2 * 100 / 9.80665), rel_tol=1e-12)
 
 
@@ -349,14 +349,17 @@ def test_the_latex_holds_only_what_pdflatex_reads(sheet: list) -> None:
 
 
 def test_pdf_builds_where_tex_is_installed(tmp_path) -> None:
-    few = x.generate(["earth"], n=2, seed=1)
+    every = x.generate(["all"], n=len(NAMES), seed=1)  # every template's LaTeX, once
     if tex_engine() is None:
         with pytest.raises(PoinsotError, match=r"^format: .*texlive-latex-base"):
-            x.render(few, "pdf")
+            x.render(every, "pdf")
         pytest.skip("no TeX engine (latexmk, pdflatex): apt install texlive-latex-base latexmk")
-    paths = x.write(few, "pdf", tmp_path)
+    paths = x.write(every, "pdf", tmp_path / "a")
     assert [p.name for p in paths] == ["problems.pdf", "solutions.pdf"]
     assert all(p.read_bytes().startswith(b"%PDF") for p in paths)
+    # the same set, the same bytes: no date and no trailer id in the PDF
+    tex = x.render(every, "latex")["problems.tex"]
+    assert r"\pdfinfoomitdate=1" in tex and r"\pdftrailerid{}" in tex
 
 
 # ---- bad input is refused by name ------------------------------------------------------------------

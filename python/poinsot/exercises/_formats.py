@@ -114,11 +114,12 @@ def _latex(variants: Sequence[Variant]) -> dict[str, str]:
 
 def tex_engine() -> list[str] | None:
     """The command that builds a PDF from a .tex file, or ``None`` where no TeX engine is
-    installed (``latexmk -pdf``, else ``pdflatex``)."""
-    if shutil.which("latexmk"):
-        return ["latexmk", "-pdf", "-interaction=nonstopmode", "-quiet"]
+    installed: ``pdflatex`` (one pass: the sheets have no cross-references), else
+    ``latexmk -pdf``."""
     if shutil.which("pdflatex"):
         return ["pdflatex", "-interaction=nonstopmode", "-halt-on-error"]
+    if shutil.which("latexmk"):
+        return ["latexmk", "-pdf", "-interaction=nonstopmode", "-quiet"]
     return None
 
 

@@ -23,6 +23,7 @@ from typing import Any
 
 import numpy as np
 import pint
+import sympy as sp
 
 from ..errors import PoinsotError
 
@@ -220,14 +221,9 @@ class Derived:
         return [float(x) for x in np.asarray(f(*(getattr(v, a) for a in self.args))).ravel()]
 
     def solve(self, v: Any) -> SolutionStep:
-        import sympy as sp
-
         expr, symbols = self.formula()
         value = self.evaluate(v) / si_factor(self.unit)
-        numbers = {
-            s: sp.UnevaluatedExpr(sp.Float(getattr(v, a), CARRIED_DIGITS))
-            for s, a in zip(symbols, self.args)
-        }
+        numbers = {s: _number_symbol(getattr(v, a)) for s, a in zip(symbols, self.args)}
         tex = (
             f"{self.symbol} = {sp.latex(expr)} = {sp.latex(expr.xreplace(numbers))}"
             f" = {sig(value)}\\,{UNITS[self.unit][1]}"
@@ -241,12 +237,30 @@ class Derived:
         return SolutionStep(text, tex, value, self.unit)
 
 
+class _Number(sp.Symbol):
+    """A number shown in a worked step: a sympy atom whose name is its LaTeX."""
+
+    def _latex(self, printer: Any) -> str:
+        return self.name
+
+
+def _number_symbol(value: float) -> Any:
+    """``value`` to :data:`CARRIED_DIGITS` figures as a sympy atom that prints as that number
+    in LaTeX, in parentheses where it has a power of ten or a sign (so that a square of it is
+    ``(7.292 \\cdot 10^{-5})^{2}``, not a double superscript)."""
+    text = sig(value)
+    mantissa, _, exponent = text.partition("e")
+    if exponent:
+        text = f"{mantissa} \\cdot 10^{{{int(exponent)}}}"
+    if exponent or value < 0:
+        text = f"\\left({text}\\right)"
+    return _Number(text)
+
+
 @cache
 def _derived(topic: str, number: str, component: int | None) -> tuple[Any, tuple[Any, ...], Any]:
     """The result ``number`` of the derivation ``topic``: (expression, symbols, its numpy
     function), built once per process."""
-    import sympy as sp
-
     from .. import derive
 
     expr, symbols = derive.derivation(topic).functions[number]
