@@ -725,10 +725,9 @@ fn integrate_parts(
             }
         }
     }
-    let vertex = |i: u32| {
-        let k = 3 * i as usize;
-        [vertices[k], vertices[k + 1], vertices[k + 2]]
-    };
+    // As rows: one bounds check per vertex read.
+    let rows = vertices.as_chunks::<3>().0;
+    let vertex = |i: u32| rows[i as usize];
     let parts = (0..ncomp)
         .into_par_iter()
         .map(|k| {

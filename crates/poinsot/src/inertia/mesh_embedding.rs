@@ -59,15 +59,18 @@ use crate::error::Result;
 /// A point.
 type P3 = [f64; 3];
 
-/// The vertices (flat, `3·n`).
+/// The vertices, as rows (one bounds check per point read, not three).
 #[derive(Clone, Copy)]
 pub(crate) struct Points<'a> {
-    v: &'a [f64],
+    v: &'a [[f64; 3]],
 }
 
 impl<'a> Points<'a> {
+    /// The points of flat coordinates (`3·n`; a trailing partial row is left out).
     pub(crate) fn new(v: &'a [f64]) -> Self {
-        Self { v }
+        Self {
+            v: v.as_chunks::<3>().0,
+        }
     }
 
     /// Vertex `i`.
@@ -78,8 +81,7 @@ impl<'a> Points<'a> {
 
     #[inline]
     fn p(&self, i: u32) -> P3 {
-        let k = 3 * i as usize;
-        [self.v[k], self.v[k + 1], self.v[k + 2]]
+        self.v[i as usize]
     }
 
     #[inline]
@@ -886,8 +888,8 @@ impl<'a> Index<'a> {
         // coarsens the order: the speed of the join, not its result).
         let Bounds { lo, hi } = pts
             .v
-            .par_chunks(3 * FACE_CHUNK)
-            .map(|c| Bounds::of(c.chunks_exact(3).map(|p| [p[0], p[1], p[2]])))
+            .par_chunks(FACE_CHUNK)
+            .map(|c| Bounds::of(c.iter().copied()))
             .reduce(|| Bounds::EMPTY, Bounds::union);
         let cells = f64::from(1u32 << MORTON_BITS);
         let scale = [0, 1, 2].map(|k| {
@@ -1329,7 +1331,7 @@ fn crossing(t: &[P3; 3], p: P3) -> Option<i8> {
 /// edge check's counting sort ([`super::mesh::file_by_vertex`]); then each vertex is tested
 /// on its own. Stops once `cancel` is set.
 fn stars(pts: Points<'_>, tris: &[[u32; 3]], used: &[bool], cancel: &Cancel) -> Result<Vec<bool>> {
-    let nv = pts.v.len() / 3;
+    let nv = pts.v.len();
     // Each face's wedge (the next two corners, in its orientation) under each of its corners;
     // a face that takes no part files `NOT_USED`.
     let (start, list) = super::mesh::file_by_vertex(nv, tris, cancel, |f, t| {
@@ -1518,7 +1520,7 @@ pub(crate) fn star_shaped_about(
     c: P3,
     cancel: &Cancel,
 ) -> Result<bool> {
-    let Some(proof) = StarProof::new(pts.v.len() / 3, c) else {
+    let Some(proof) = StarProof::new(pts.v.len(), c) else {
         return Ok(false);
     };
     let ok = tris
@@ -1616,14 +1618,7 @@ fn radial_wedges(p: [P3; 3], c: P3) -> Option<[bool; 3]> {
     let a = d.map(|x| x.map(f64::abs));
     let m = a.map(|x| max2(max2(x[0], x[1]), x[2]));
     // Component k of d[i] × d[j].
-    let cross = |i: usize, j: usize, k: usize| {
-        let (u, w) = (&d[i], &d[j]);
-        match k {
-            0 => u[1] * w[2] - u[2] * w[1],
-            1 => u[2] * w[0] - u[0] * w[2],
-            _ => u[0] * w[1] - u[1] * w[0],
-        }
-    };
+    let cross = |i: usize, j: usize, k: usize| cross_k(&d[i], &d[j], k);
     // Condition 1: det[d₀, d₁, d₂] = d₀ · (d₁ × d₂) > 0; the permanent is at most
     // 3 · m₀ · 2 m₁ m₂ (8: a power of two above 6, exact).
     let det = d[0][0] * cross(1, 2, 0) + d[0][1] * cross(1, 2, 1) + d[0][2] * cross(1, 2, 2);
@@ -1642,7 +1637,7 @@ fn radial_wedges(p: [P3; 3], c: P3) -> Option<[bool; 3]> {
         if n.abs() > O2_FILTER * (2.0 * (m[i] * m[j])) + FILTER_SLACK {
             sign(n)
         } else {
-            o2(c, p[i], p[j], k as u8)
+            o2_cold(c, p[i], p[j], k as u8)
         }
     };
     #[inline(always)]
@@ -1679,6 +1674,23 @@ fn radial_wedges(p: [P3; 3], c: P3) -> Option<[bool; 3]> {
         corner(1, 2, 0, a[1], &comp, |k| same_ray(c, p[1], p[2], d[1], k)),
         corner(2, 0, 1, a[2], &comp, |k| same_ray(c, p[2], p[0], d[2], k)),
     ])
+}
+
+/// [`o2`] out of line (the rare fall-back of a float filter in a hot loop).
+#[cold]
+#[inline(never)]
+fn o2_cold(a: P3, b: P3, c: P3, k: u8) -> i8 {
+    o2(a, b, c, k)
+}
+
+/// Component `k` of `u × w`.
+#[inline(always)]
+fn cross_k(u: &P3, w: &P3, k: usize) -> f64 {
+    match k {
+        0 => u[1] * w[2] - u[2] * w[1],
+        1 => u[2] * w[0] - u[0] * w[2],
+        _ => u[0] * w[1] - u[1] * w[0],
+    }
 }
 
 /// For `det[v − c, a − c, e_k] = 0` ([`radial_wedges`]): do `(v − c) × e_k` and
