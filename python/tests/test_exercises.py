@@ -332,6 +332,8 @@ def test_json_markdown_and_latex(sheet: list) -> None:
         assert body.count("$") % 2 == 0, name
         assert tex[name].rstrip().endswith(r"\end{document}")
     assert tex["problems.tex"].count(r"\item \textbf") == len(sheet)
+    # the worked steps are numbered 1., 2., ... as the mistakes' "look at step N" counts them
+    assert r"\renewcommand{\labelenumii}{\arabic{enumii}.}" in tex["solutions.tex"]
 
 
 #: What pdflatex with \\usepackage[utf8]{inputenc} reads: ASCII and the accented letters of the

@@ -74,6 +74,7 @@ _PREAMBLE = r"""\documentclass[11pt]{article}
 \usepackage[margin=2.2cm]{geometry}
 \pdfinfoomitdate=1
 \pdftrailerid{}
+\renewcommand{\labelenumii}{\arabic{enumii}.}
 \begin{document}
 """
 
