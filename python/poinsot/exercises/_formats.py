@@ -55,7 +55,7 @@ def _markdown(variants: Sequence[Variant]) -> dict[str, str]:
         for j, s in enumerate(v.steps, 1):
             solutions.append(f"{j}. {s.text}")
             if s.latex:
-                solutions += ["", f"   $$ {s.latex} $$", ""]
+                solutions += ["", f"   $$ \\begin{{aligned}} {s.latex} \\end{{aligned}} $$", ""]
         if v.mistakes:
             solutions += ["", "Common mistakes:", ""]
             solutions += [
@@ -99,7 +99,7 @@ def _latex(variants: Sequence[Variant]) -> dict[str, str]:
         for s in v.steps:
             solutions.append(rf"\item {latex_text(s.text)}")
             if s.latex:
-                solutions.append(rf"\[ {s.latex} \]")
+                solutions.append(rf"\begin{{align*}} {s.latex} \end{{align*}}")
         solutions.append(r"\end{enumerate}")
         if v.mistakes:
             solutions.append(r"Common mistakes: \begin{itemize}")

@@ -153,7 +153,8 @@ class Param:
 
 @dataclass(frozen=True)
 class SolutionStep:
-    """One step of a worked solution: a sentence, its equation in LaTeX (numbers substituted,
+    """One step of a worked solution: a sentence, its equation in LaTeX (the body of an amsmath
+    ``aligned`` block: lines joined by ``\\\\``, aligned at ``&=``; the numbers substituted;
     empty where there is none), and the value it gives in ``unit``."""
 
     text: str
@@ -183,10 +184,10 @@ class Plain:
 
     def solve(self, v: Any) -> SolutionStep:
         value = float(self.value(v)) / si_factor(self.unit)
-        numbers = {k: sig(x) for k, x in vars(v).items() if isinstance(x, float)}
+        numbers = {k: number_latex(x, True) for k, x in vars(v).items() if isinstance(x, float)}
         tex = self.formula.format(**numbers)
         if self.symbol:
-            tex = f"{self.symbol} = {tex} = {sig(value)}\\,{UNITS[self.unit][1]}"
+            tex = f"{self.symbol} &= {tex} = {number_latex(value)}\\,{UNITS[self.unit][1]}"
         return SolutionStep(self.text, tex, value, self.unit)
 
 
@@ -224,9 +225,9 @@ class Derived:
         expr, symbols = self.formula()
         value = self.evaluate(v) / si_factor(self.unit)
         numbers = {s: _number_symbol(getattr(v, a)) for s, a in zip(symbols, self.args)}
-        tex = (
-            f"{self.symbol} = {sp.latex(expr)} = {sp.latex(expr.xreplace(numbers))}"
-            f" = {sig(value)}\\,{UNITS[self.unit][1]}"
+        tex = (  # the formula, the numbers substituted, the value: one line each
+            f"{self.symbol} &= {sp.latex(expr)} \\\\ &= {sp.latex(expr.xreplace(numbers))}"
+            f" \\\\ &= {number_latex(value)}\\,{UNITS[self.unit][1]}"
         )
         where = (
             f"the unit's eq. {self.number}"
@@ -244,17 +245,22 @@ class _Number(sp.Symbol):
         return self.name
 
 
-def _number_symbol(value: float) -> Any:
-    """``value`` to :data:`CARRIED_DIGITS` figures as a sympy atom that prints as that number
-    in LaTeX, in parentheses where it has a power of ten or a sign (so that a square of it is
-    ``(7.292 \\cdot 10^{-5})^{2}``, not a double superscript)."""
+def number_latex(value: float, grouped: bool = False) -> str:
+    """``value`` to :data:`CARRIED_DIGITS` figures in LaTeX (``7.292 \\cdot 10^{-5}``); with
+    ``grouped``, in parentheses where it has a power of ten or a sign (a factor or a base)."""
     text = sig(value)
     mantissa, _, exponent = text.partition("e")
     if exponent:
         text = f"{mantissa} \\cdot 10^{{{int(exponent)}}}"
-    if exponent or value < 0:
+    if grouped and (exponent or value < 0):
         text = f"\\left({text}\\right)"
-    return _Number(text)
+    return text
+
+
+def _number_symbol(value: float) -> Any:
+    """``value`` as a sympy atom that prints as :func:`number_latex` (grouped: a square of it
+    is ``(7.292 \\cdot 10^{-5})^{2}``, not a double superscript)."""
+    return _Number(number_latex(value, grouped=True))
 
 
 @cache

@@ -298,7 +298,7 @@ DUMBBELL_ENERGY = Template(
     steps=(
         Plain(
             "Each ball moves on a circle of radius r sin α at speed ω r sin α",
-            r"{arm} \sin({tilt})\,{rate}",
+            r"{arm} \sin {tilt}\,{rate}",
             lambda v: v.arm * math.sin(v.tilt) * v.rate,
             "m/s",
             "v",

@@ -317,7 +317,7 @@ FOUCAULT = Template(
     steps=(
         Plain(
             "The plane turns at the vertical part of the Earth's rate, ω sin λ",
-            r"\omega \sin\lambda = {omega} \sin({latitude})",
+            r"\omega \sin\lambda = {omega} \sin {latitude}",
             lambda v: v.omega * abs(math.sin(v.latitude)),
             "rad/s",
             r"\Omega_F",
