@@ -41,6 +41,8 @@ from .frames import *  # noqa: F403
 from .frames import __all__ as _frames_all
 from .free import *  # noqa: F403
 from .free import __all__ as _free_all
+from .gyrocompass import *  # noqa: F403
+from .gyrocompass import __all__ as _gyrocompass_all
 from .limits import *  # noqa: F403
 from .limits import __all__ as _limits_all
 from .rigid_earth import *  # noqa: F403
@@ -59,6 +61,7 @@ __all__ = [
     *_earth_all,
     *_rigid_earth_all,
     *_dynamics_all,
+    *_gyrocompass_all,
     *_free_all,
     *_top_all,
     *_limits_all,

@@ -839,6 +839,94 @@ def dynamics_simulate_batch(
     progress: Callable[[float], Any] | None,
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], int]: ...
 
+# ---- carried bodies and the gyrocompass (gyrocompass.rs) ----
+# python/poinsot/gyrocompass.py prepares the arguments; angles in rad, SI units.
+
+_GyroArgs: TypeAlias = tuple[float, float, float, float, tuple[float, float, float], float, float, float]
+
+@final
+class GyrocompassCore:
+    def __new__(
+        cls,
+        latitude: float,
+        angular_momentum: float,
+        pendulosity: float,
+        damping: float,
+        inertia: tuple[float, float, float],
+        rotation_rate: float,
+        radius: float,
+        g: float,
+    ) -> GyrocompassCore: ...
+    @classmethod
+    def schuler_tuned(
+        cls,
+        latitude: float,
+        pendulosity: float,
+        damping: float,
+        inertia: tuple[float, float, float],
+        rotation_rate: float,
+        radius: float,
+        g: float,
+    ) -> GyrocompassCore: ...
+    @staticmethod
+    def schuler_period(rotation_rate: float, radius: float, g: float) -> float: ...
+    def __reduce__(self) -> tuple[type[GyrocompassCore], _GyroArgs]: ...
+    @property
+    def args(self) -> _GyroArgs: ...
+    @property
+    def period(self) -> float: ...
+    @property
+    def natural_frequency(self) -> float: ...
+    @property
+    def damping_coefficient(self) -> float: ...
+    @property
+    def viscous_coefficient(self) -> float: ...
+    @property
+    def ground_speed(self) -> float: ...
+    @property
+    def settle(self) -> tuple[float, float]: ...
+    def speed_error(self, speed: float, course: float) -> float: ...
+    def speed_error_small_angle(self, speed: float, course: float) -> float: ...
+    def simulate(
+        self,
+        duration: float,
+        heading0: float,
+        tilt0: float,
+        speed: float,
+        course: float,
+        method: str,
+        samples: int,
+        rtol: float,
+        atol: float,
+        max_steps: int,
+        progress: Callable[[float], Any] | None,
+    ) -> tuple[
+        NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]
+    ]: ...
+
+def dynamics_simulate_carried(
+    inertia: NDArray[np.float64],
+    omega0: NDArray[np.float64],
+    attitude0: NDArray[np.float64] | None,
+    duration: float,
+    kind: str,
+    frame: NDArray[np.float64],
+    frame_attitude: NDArray[np.float64],
+    pivot: NDArray[np.float64],
+    gravity: NDArray[np.float64],
+    earth: tuple[float, float, float],
+    latitude: float,
+    mass_moment: NDArray[np.float64],
+    torque_kind: str,
+    torque_vector: NDArray[np.float64],
+    method: str,
+    samples: int,
+    rtol: float,
+    atol: float,
+    max_steps: int,
+    progress: Callable[[float], Any] | None,
+) -> tuple[TrajectoryCore, NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]: ...
+
 # ---- heavy top (heavy_top.rs) ----
 # Angles in rad, rates in rad/s, times in s; arrays C-contiguous float64 (N,); python/poinsot/top.py
 # prepares them and wraps HeavyTopCore in the public poinsot.HeavyTop.

@@ -296,6 +296,9 @@ def simulate(
     atol: float = _DEFAULTS["simulate"]["atol"],
     max_steps: int = _DEFAULTS["simulate"]["max_steps"],
     progress: Callable[[float], Any] | None = None,
+    carried_by: Any = None,
+    pivot: Any = None,
+    gravity: Any = None,
 ) -> Trajectory:
     """Simulates a rigid body turning under a torque (Euler's equations 2.71 with the attitude).
 
@@ -333,6 +336,24 @@ def simulate(
         Optional ``progress(fraction)``, called at most every 20 ms of wall-clock time with the
         fraction done and once with 1.0 at the end. An exception it raises stops the run and
         propagates.
+    carried_by:
+        None, or the frame carrying the body's pivot: a :class:`MovingFrame` (its state at
+        t = 0, continued steadily: a turntable) or a :class:`Place` on the rotating Earth
+        (Foucault's gyroscope). The attitude is then integrated in the inertial frame with the
+        pivot's acceleration acting as the translational fictitious force (2.5) at the centre
+        of mass (on the Earth: the effective gravity, 2.29); the body is a :class:`RigidBody`
+        pivoted at its coordinate origin (inertia about it, centre of mass from it) or moments
+        / a tensor about a pivot at the centre of mass; ``omega0`` and ``attitude0`` are
+        **relative to the carrying frame** (0: at rest on it), whose axes are the fixed axes at
+        t = 0; ``torque`` only None, :class:`BodyTorque` or :class:`SpaceTorque`; no ``dt``.
+        Returns a :class:`CarriedTrajectory` (inertial attributes plus
+        ``relative_attitude``, ``frame_attitude``, ``relative_omega``).
+    pivot:
+        With a :class:`MovingFrame`: the pivot in the frame's components (m, (3,); default the
+        frame's origin).
+    gravity:
+        With a :class:`MovingFrame`: uniform gravity in fixed components (m/s², (3,); default
+        (0, 0, −9.80665)).
 
     Notes
     -----
@@ -352,6 +373,28 @@ def simulate(
         The motion diverged (naming ``duration``, and the time it failed; ``torque`` when a
         callable returned NaN).
     """
+    if carried_by is not None or pivot is not None or gravity is not None:
+        from .gyrocompass import _simulate_carried
+
+        if carried_by is None:
+            raise PoinsotError("carried_by: pivot and gravity need a carrying frame")
+        return _simulate_carried(
+            body,
+            omega0,
+            duration,
+            carried_by=carried_by,
+            pivot=pivot,
+            gravity=gravity,
+            attitude0=attitude0,
+            torque=torque,
+            method=method,
+            dt=dt,
+            samples=samples,
+            rtol=rtol,
+            atol=atol,
+            max_steps=max_steps,
+            progress=progress,
+        )
     kind, vec, scalar, fn = _torque_spec(torque, body)
     inertia = np.ascontiguousarray(_inertia_of(body, torque), dtype=np.float64)
     w0 = np.ascontiguousarray(as_float_array(omega0, "omega0", finite=False), dtype=np.float64)

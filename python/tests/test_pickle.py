@@ -211,6 +211,21 @@ CASES: dict[str, list[tuple[Callable[[], Any], Callable[[Any], Any]]]] = {
             lambda r: (r.total_energy, r.rotation().as_quat()),
         )
     ],
+    "CarriedTrajectory": [
+        (
+            lambda: ps.simulate(
+                [1.0, 1.0, 1.5], [0, 0, 1.0], 1.0, carried_by=ps.Place(0.5), samples=3
+            ),
+            lambda r: (r.relative_attitude, r.frame_attitude, r.relative_omega, r.attitude),
+        )
+    ],
+    "Place": [(lambda: ps.Place(0.5), lambda p: (p.latitude, p.earth.g))],
+    "Gyrocompass": [
+        (lambda: ps.Gyrocompass(0.8), lambda c: (c.period, c.settle_error, c.speed_error(9.0, 0.3)))
+    ],
+    "CompassRun": [
+        (lambda: ps.Gyrocompass(0.8).simulate(5.0, 0.1, samples=3), lambda r: (r.heading, r.tilt))
+    ],
     "AxisStability": [(lambda: ps.axis_stability([1.0, 2.0, 3.0])[1], lambda a: a.rate)],
     "SteadyPrecession": [
         (lambda: ps.HeavyTop.steady_precession(1.0, 0.5, 1.0, 0.8, 20.0), lambda s: s.slow)

@@ -89,7 +89,7 @@ pub struct PyTrajectory {
 }
 
 impl PyTrajectory {
-    fn new(py: Python<'_>, tr: Trajectory) -> PyResult<Self> {
+    pub(crate) fn new(py: Python<'_>, tr: Trajectory) -> PyResult<Self> {
         Ok(Self {
             t: PyArray1::from_vec(py, tr.t).unbind(),
             omega: rows_into(py, tr.omega)?.unbind(),

@@ -54,6 +54,7 @@ mod dynamics;
 mod earth;
 mod errors;
 mod frames;
+mod gyrocompass;
 mod heavy_top;
 mod inertia;
 mod rigid_earth;
@@ -135,6 +136,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     special::register(m)?;
     analytic::register(m)?;
     dynamics::register(m)?;
+    gyrocompass::register(m)?;
     heavy_top::register(m)?;
     sweep::register(m)?;
     Ok(())

@@ -1,0 +1,321 @@
+//! Bindings of `poinsot::dynamics::{simulate_carried, Gyrocompass}` (conversion and error
+//! mapping only). `GyrocompassCore` holds a checked core value; the public, documented class is
+//! `poinsot.Gyrocompass` (python/poinsot/gyrocompass.py). The carrying frame travels as a kind
+//! ("frame" or "earth"), the frame's 15 numbers (origin, velocity, acceleration, ω, ω̇) and
+//! attitude (3, 3), the pivot and gravity (3,), and the Earth's (Ω, R, g) and latitude.
+use numpy::{PyArray1, PyReadonlyArray1, PyReadonlyArray2};
+use poinsot::dynamics::{
+    simulate_carried, BodyInertia, Carrier, Gyrocompass, Load, Method, Ship, SimulateOptions,
+    TorqueKind,
+};
+use poinsot::earth::Earth;
+use poinsot::frames::MovingFrame;
+use poinsot::{Mat3, Vec3};
+use poinsot_py_macros::export;
+use pyo3::prelude::*;
+use pyo3::types::PyType;
+
+use crate::control::run;
+use crate::convert::{mat3, matrix, opt_quat, parse, rows_into, vec_in, vector};
+use crate::dynamics::PyTrajectory;
+use crate::errors::{invalid, IntoPy};
+
+/// The options of a compass or carried run: samples, rtol, atol, max_steps.
+fn options(
+    method: &str,
+    samples: usize,
+    rtol: f64,
+    atol: f64,
+    max_steps: usize,
+) -> PyResult<SimulateOptions> {
+    Ok(SimulateOptions {
+        method: Method::parse(method).py()?,
+        dt: None,
+        samples,
+        rtol,
+        atol,
+        max_steps,
+    })
+}
+
+/// A pendulous gyrocompass (private; use `poinsot.Gyrocompass`): the core's `Gyrocompass`,
+/// checked when made.
+#[pyclass(module = "poinsot._core", name = "GyrocompassCore", frozen)]
+pub struct PyGyrocompass {
+    inner: Gyrocompass,
+}
+
+type Args = (f64, f64, f64, f64, [f64; 3], f64, f64, f64);
+
+#[export]
+impl PyGyrocompass {
+    /// latitude (rad), H (kg·m²/s), P = m g l (N·m), damping ratio ζ, inertia (3,) (kg·m²),
+    /// and the Earth's Ω (rad/s), R (m), g (m/s²); errors name them.
+    #[new]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        latitude: f64,
+        angular_momentum: f64,
+        pendulosity: f64,
+        damping: f64,
+        inertia: [f64; 3],
+        rotation_rate: f64,
+        radius: f64,
+        g: f64,
+    ) -> PyResult<Self> {
+        let earth = Earth::new(rotation_rate, radius, g).py()?;
+        Ok(Self {
+            inner: Gyrocompass::new(
+                latitude,
+                angular_momentum,
+                pendulosity,
+                damping,
+                inertia,
+                earth,
+            )
+            .py()?,
+        })
+    }
+
+    /// The compass whose period is Schuler's (H chosen); arguments as the constructor less H.
+    #[classmethod]
+    #[allow(clippy::too_many_arguments)]
+    fn schuler_tuned(
+        _cls: &Bound<'_, PyType>,
+        latitude: f64,
+        pendulosity: f64,
+        damping: f64,
+        inertia: [f64; 3],
+        rotation_rate: f64,
+        radius: f64,
+        g: f64,
+    ) -> PyResult<Self> {
+        let earth = Earth::new(rotation_rate, radius, g).py()?;
+        Ok(Self {
+            inner: Gyrocompass::schuler_tuned(latitude, pendulosity, damping, inertia, earth)
+                .py()?,
+        })
+    }
+
+    /// 2π √(R/g) (s).
+    #[staticmethod]
+    fn schuler_period(rotation_rate: f64, radius: f64, g: f64) -> PyResult<f64> {
+        Ok(Gyrocompass::schuler_period(
+            &Earth::new(rotation_rate, radius, g).py()?,
+        ))
+    }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> (Bound<'py, PyType>, Args) {
+        let c = slf.get().inner;
+        (
+            slf.get_type(),
+            (
+                c.latitude,
+                c.angular_momentum,
+                c.pendulosity,
+                c.damping,
+                c.inertia,
+                c.earth.rotation_rate,
+                c.earth.radius,
+                c.earth.g,
+            ),
+        )
+    }
+
+    /// The constructor's arguments, in order.
+    #[getter]
+    fn args(&self) -> Args {
+        let c = self.inner;
+        (
+            c.latitude,
+            c.angular_momentum,
+            c.pendulosity,
+            c.damping,
+            c.inertia,
+            c.earth.rotation_rate,
+            c.earth.radius,
+            c.earth.g,
+        )
+    }
+
+    /// 2π √(H/(P Ω cos λ)) (s).
+    #[getter]
+    fn period(&self) -> PyResult<f64> {
+        self.inner.period().py()
+    }
+
+    /// ω_n (rad/s).
+    #[getter]
+    fn natural_frequency(&self) -> f64 {
+        self.inner.natural_frequency()
+    }
+
+    /// D (N·m/rad).
+    #[getter]
+    fn damping_coefficient(&self) -> f64 {
+        self.inner.damping_coefficient()
+    }
+
+    /// k (N·m·s).
+    #[getter]
+    fn viscous_coefficient(&self) -> f64 {
+        self.inner.viscous_coefficient()
+    }
+
+    /// Ω R cos λ (m/s).
+    #[getter]
+    fn ground_speed(&self) -> f64 {
+        self.inner.ground_speed()
+    }
+
+    /// (latitude error, tilt) of the settled compass (rad).
+    #[getter]
+    fn settle(&self) -> PyResult<(f64, f64)> {
+        self.inner.settle().py()
+    }
+
+    /// δ (rad) for speed (m/s) and course (rad).
+    fn speed_error(&self, speed: f64, course: f64) -> PyResult<f64> {
+        self.inner.speed_error(speed, course).py()
+    }
+
+    /// V cos C / (Ω R cos λ) (rad).
+    fn speed_error_small_angle(&self, speed: f64, course: f64) -> PyResult<f64> {
+        self.inner.speed_error_small_angle(speed, course).py()
+    }
+
+    /// (t, heading, tilt, latitude) arrays (s, rad) of the full model's run.
+    #[pyo3(signature = (duration, heading0, tilt0, speed, course, method, samples, rtol, atol, max_steps, progress))]
+    #[allow(clippy::too_many_arguments)]
+    fn simulate<'py>(
+        &self,
+        py: Python<'py>,
+        duration: f64,
+        heading0: f64,
+        tilt0: f64,
+        speed: f64,
+        course: f64,
+        method: &str,
+        samples: usize,
+        rtol: f64,
+        atol: f64,
+        max_steps: usize,
+        progress: Option<Bound<'py, PyAny>>,
+    ) -> PyResult<(
+        Bound<'py, PyArray1<f64>>,
+        Bound<'py, PyArray1<f64>>,
+        Bound<'py, PyArray1<f64>>,
+        Bound<'py, PyArray1<f64>>,
+    )> {
+        let opts = options(method, samples, rtol, atol, max_steps)?;
+        let ship = Ship::new(speed, course).py()?;
+        let c = self.inner;
+        let out = run(py, progress.as_ref(), || {
+            c.simulate(duration, heading0, tilt0, Some(ship), &opts)
+        })?;
+        Ok((
+            PyArray1::from_vec(py, out.t),
+            PyArray1::from_vec(py, out.heading),
+            PyArray1::from_vec(py, out.tilt),
+            PyArray1::from_vec(py, out.latitude),
+        ))
+    }
+}
+
+/// A carried body's run: the inertial trajectory, and the relative attitude (N, 4), the frame's
+/// attitude (N, 4) and the relative ω (N, 3).
+type CarriedOut<'py> = (
+    PyTrajectory,
+    Bound<'py, numpy::PyArray2<f64>>,
+    Bound<'py, numpy::PyArray2<f64>>,
+    Bound<'py, numpy::PyArray2<f64>>,
+);
+
+/// Simulates a body carried by a moving frame (see `poinsot.simulate(..., carried_by=...)`).
+#[export]
+#[pyo3(signature = (inertia, omega0, attitude0, duration, kind, frame, frame_attitude, pivot, gravity, earth, latitude, mass_moment, torque_kind, torque_vector, method, samples, rtol, atol, max_steps, progress))]
+#[allow(clippy::too_many_arguments)]
+fn dynamics_simulate_carried<'py>(
+    py: Python<'py>,
+    inertia: PyReadonlyArray2<'py, f64>,
+    omega0: PyReadonlyArray1<'py, f64>,
+    attitude0: Option<PyReadonlyArray1<'py, f64>>,
+    duration: f64,
+    kind: &str,
+    frame: PyReadonlyArray1<'py, f64>,
+    frame_attitude: PyReadonlyArray2<'py, f64>,
+    pivot: PyReadonlyArray1<'py, f64>,
+    gravity: PyReadonlyArray1<'py, f64>,
+    earth: (f64, f64, f64),
+    latitude: f64,
+    mass_moment: PyReadonlyArray1<'py, f64>,
+    torque_kind: &str,
+    torque_vector: PyReadonlyArray1<'py, f64>,
+    method: &str,
+    samples: usize,
+    rtol: f64,
+    atol: f64,
+    max_steps: usize,
+    progress: Option<Bound<'py, PyAny>>,
+) -> PyResult<CarriedOut<'py>> {
+    let body = BodyInertia::from_tensor(&matrix("body", &inertia)?).py()?;
+    let w0 = vector("omega0", &omega0)?;
+    let q0 = opt_quat("attitude0", &attitude0)?;
+    let carrier = match kind {
+        "frame" => {
+            let s = vec_in(&frame);
+            if s.len() != 15 {
+                return Err(invalid(
+                    "carried_by",
+                    format!("must hold 15 numbers, got {}", s.len()),
+                ));
+            }
+            let v = |i: usize| Vec3::new(s[i], s[i + 1], s[i + 2]);
+            let att = mat3("carried_by", &frame_attitude)?;
+            let state = MovingFrame::new(v(0), v(3), v(6), v(9), v(12))
+                .py()?
+                .with_attitude(Mat3::from_fn(|i, j| att[i][j]))
+                .py()?;
+            Carrier::frame(
+                state,
+                vector("pivot", &pivot)?,
+                vector("gravity", &gravity)?,
+            )
+            .py()?
+        }
+        "earth" => {
+            let e = Earth::new(earth.0, earth.1, earth.2).py()?;
+            Carrier::earth(e, latitude).py()?
+        }
+        other => {
+            return Err(invalid(
+                "carried_by",
+                format!("must be 'frame' or 'earth', got {other:?}"),
+            ))
+        }
+    };
+    let load = Load {
+        mass_moment: vector("body", &mass_moment)?,
+        rotor: Vec3::zeros(),
+    };
+    let mut torque = parse::<TorqueKind>(torque_kind)?
+        .torque(vector("torque", &torque_vector)?, 0.0)
+        .py()?;
+    let opts = options(method, samples, rtol, atol, max_steps)?;
+    let out = run(py, progress.as_ref(), || {
+        simulate_carried(&body, w0, q0, duration, &carrier, load, &mut torque, &opts)
+    })?;
+    Ok((
+        PyTrajectory::new(py, out.inertial)?,
+        rows_into(py, out.relative_attitude)?,
+        rows_into(py, out.frame_attitude)?,
+        rows_into(py, out.relative_omega)?,
+    ))
+}
+
+/// Registers this file's class and function on the module.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<PyGyrocompass>()?;
+    add_functions!(m; dynamics_simulate_carried);
+    Ok(())
+}

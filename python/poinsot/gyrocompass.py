@@ -1,0 +1,564 @@
+"""Tops on the turning Earth: a rigid body carried by a moving frame (Foucault's gyroscope, a top
+on a turntable) and the pendulous gyrocompass (issue 26).
+
+* :class:`Place` — a place on the rotating :class:`~poinsot.Earth`, to give as
+  ``poinsot.simulate(..., carried_by=Place(latitude))``; a :class:`~poinsot.MovingFrame` (its
+  state at t = 0, continued steadily) is the other carrier.
+* :class:`CarriedTrajectory` — what :func:`poinsot.simulate` returns for a carried body: the
+  inertial :class:`~poinsot.Trajectory` plus the attitude seen from the carrying frame.
+* :class:`Gyrocompass` — period (Schuler tuning), speed (steaming) error, latitude (damping)
+  error, and the full nonlinear simulation on a ship.
+
+Sign conventions (CONVENTIONS.md, "Gyrocompass"): local frame ENU (x east, y north, z up); a
+*heading* is clockwise (east) from true north; the *tilt* is the north end's elevation; an
+*error* is what the compass reads minus the truth (positive: reads high, its north lies west of
+true north). Angles in radians, or pint quantities (``50 * ureg.deg``, ``20 * ureg.knot``).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from . import _core
+from . import _display as show
+from ._units import is_quantity
+from ._validate import FloatArray, as_callable, as_count, as_float_array, as_scalar, as_vector3
+from .dynamics import DEFAULT_MAX_STEPS, Trajectory
+from .errors import ArgumentTypeError, PoinsotError
+
+__all__ = ["Place", "CarriedTrajectory", "Gyrocompass", "CompassRun"]
+
+#: Defaults of :class:`Gyrocompass`: H (kg·m²/s), P = m g l (N·m), ζ, moments (kg·m²).
+DEFAULT_ANGULAR_MOMENTUM = 40.0
+DEFAULT_PENDULOSITY = 1.2
+DEFAULT_DAMPING = 0.3
+DEFAULT_INERTIA = (0.5, 1.0, 1.0)
+
+
+def _si(value: Any, name: str, unit: str) -> float:
+    """``value`` as a float in ``unit`` (SI): a pint quantity converted, else taken as is."""
+    if is_quantity(value):
+        try:
+            value = value.to(unit).magnitude
+        except Exception:
+            raise PoinsotError(f"{name}: expected a quantity in {unit}, got {value:~P}") from None
+    return as_scalar(value, name)
+
+
+def _earth_args(earth: Any) -> tuple[float, float, float]:
+    from .earth import Earth
+
+    if earth is None:
+        earth = Earth()
+    if not isinstance(earth, Earth):
+        raise ArgumentTypeError(f"earth: must be a poinsot.Earth, got {type(earth).__name__}")
+    return (earth.rotation_rate, earth.radius, earth.g)
+
+
+class Place:
+    """A place at ``latitude`` (rad, north-positive) on the rotating ``earth`` (default
+    :class:`~poinsot.Earth`), as a carrier for :func:`poinsot.simulate`: the local ENU frame
+    turning at ω = Ω (0, cos λ, sin λ) (2.33), the pivot at the place, the specific force the
+    effective (plumb-line) gravity −g ẑ (2.29–2.31) turning with the ground. The fixed axes of
+    the simulation are the local ENU axes at t = 0."""
+
+    __slots__ = ("latitude", "_earth")
+
+    def __init__(self, latitude: Any, earth: Any = None) -> None:
+        lat = _si(latitude, "latitude", "radian")
+        if not abs(lat) <= np.pi / 2:
+            raise PoinsotError(f"latitude: must be in [-pi/2, pi/2] rad, got {lat}")
+        self.latitude: float = lat
+        self._earth = _earth_args(earth)
+
+    @property
+    def earth(self) -> Any:
+        """The :class:`~poinsot.Earth`."""
+        from .earth import Earth
+
+        return Earth(*self._earth)
+
+    def __repr__(self) -> str:
+        return f"Place(latitude={self.latitude!r}, earth={self.earth!r})"
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return (Place, (self.latitude, self.earth))
+
+    def __eq__(self, other: object) -> bool:
+        return (
+            isinstance(other, Place)
+            and other.latitude == self.latitude
+            and other._earth == self._earth
+        )
+
+    __hash__ = None  # type: ignore[assignment]
+
+
+class CarriedTrajectory(Trajectory):
+    """A :class:`~poinsot.Trajectory` of a body carried by a moving frame (returned by
+    :func:`poinsot.simulate` with ``carried_by``): the inherited attributes are **inertial**
+    (``omega`` body components, ``attitude`` body → fixed, ``angular_momentum`` fixed
+    components; ``potential_energy`` is −m c·f, the potential of the specific force at that
+    instant), and in addition:
+
+    Attributes
+    ----------
+    relative_attitude:
+        [w, x, y, z] (N, 4): body → carrying frame, the attitude seen from the frame.
+    frame_attitude:
+        [w, x, y, z] (N, 4): the carrying frame's axes, carrying frame → fixed.
+    relative_omega:
+        ω relative to the carrying frame, body components (rad/s), (N, 3).
+    """
+
+    def __init__(self, core: Any, relative: Any, frame: Any, relative_omega: Any) -> None:
+        super().__init__(core)
+        self.relative_attitude: FloatArray = np.asarray(relative)
+        self.frame_attitude: FloatArray = np.asarray(frame)
+        self.relative_omega: FloatArray = np.asarray(relative_omega)
+
+    def _rows(self) -> list[show.Row]:
+        return [
+            *super()._rows(),
+            show.samples(
+                "relative_attitude",
+                "attitude seen from the carrying frame",
+                "q_rel",
+                self.relative_attitude,
+            ),
+            show.samples("frame_attitude", "carrying frame → fixed", "A", self.frame_attitude),
+            show.samples(
+                "relative_omega",
+                "angular velocity relative to the frame, body axes",
+                "ω_rel",
+                self.relative_omega,
+                "rad/s",
+            ),
+        ]
+
+
+def _simulate_carried(
+    body: Any,
+    omega0: Any,
+    duration: Any,
+    *,
+    carried_by: Any,
+    pivot: Any,
+    gravity: Any,
+    attitude0: Any,
+    torque: Any,
+    method: str,
+    dt: Any,
+    samples: Any,
+    rtol: Any,
+    atol: Any,
+    max_steps: Any,
+    progress: Any,
+) -> CarriedTrajectory:
+    """:func:`poinsot.simulate` with ``carried_by`` (see its docstring)."""
+    from .dynamics import BodyTorque, SpaceTorque, _method
+    from .frames import MovingFrame
+    from .free import _quat
+
+    if dt is not None:
+        raise PoinsotError("dt: the carried body is integrated by 'exact' or 'dop853' (no dt)")
+    if isinstance(carried_by, Place):
+        kind = "earth"
+        if pivot is not None or gravity is not None:
+            name = "pivot" if pivot is not None else "gravity"
+            raise PoinsotError(
+                f"{name}: a Place sets the pivot (the place) and gravity (the Earth's); "
+                "give them with a MovingFrame only"
+            )
+        frame, attitude = np.zeros(15), np.eye(3)
+        pivot_v, gravity_v = np.zeros(3), np.zeros(3)
+        earth, lat = carried_by._earth, carried_by.latitude
+    elif isinstance(carried_by, MovingFrame):
+        kind = "frame"
+        frame = np.ascontiguousarray(carried_by._state)
+        attitude = np.ascontiguousarray(carried_by._attitude)
+        pivot_v = np.zeros(3) if pivot is None else as_vector3(pivot, "pivot")
+        gravity_v = (
+            np.array([0.0, 0.0, -_core.DEFAULTS["GravityTorque.__init__"]["g"]])
+            if gravity is None
+            else as_vector3(gravity, "gravity")
+        )
+        earth, lat = (0.0, 1.0, 1.0), 0.0
+    else:
+        raise ArgumentTypeError(
+            "carried_by: must be a poinsot.MovingFrame or a poinsot.Place, got "
+            f"{type(carried_by).__name__}"
+        )
+    if hasattr(body, "inertia") and hasattr(body, "mass"):
+        inertia = np.asarray(body.inertia_about(np.zeros(3)))
+        mass_moment = float(body.mass) * np.asarray(body.center_of_mass, dtype=float)
+    else:
+        arr = as_float_array(body, "body", finite=False)
+        if arr.shape == (3,):
+            inertia = np.diag(arr)
+        elif arr.shape == (3, 3):
+            inertia = arr
+        else:
+            raise PoinsotError(
+                "body: must be a RigidBody, principal moments (3,) or an inertia tensor (3, 3), "
+                f"got shape {arr.shape}"
+            )
+        mass_moment = np.zeros(3)
+    if torque is None:
+        tkind, tvec = "none", np.zeros(3)
+    elif isinstance(torque, (BodyTorque, SpaceTorque)):
+        tkind, tvec, _ = torque._spec(body)
+    else:
+        raise ArgumentTypeError(
+            "torque: with carried_by, only None, BodyTorque or SpaceTorque (gravity and the "
+            f"frame's forces come from the carrier), got {type(torque).__name__}"
+        )
+    w0 = np.ascontiguousarray(as_float_array(omega0, "omega0", finite=False), dtype=np.float64)
+    if w0.shape != (3,):
+        raise PoinsotError(f"omega0: must have shape (3,), got {w0.shape}")
+    core, rel, frame_q, rel_w = _core.dynamics_simulate_carried(
+        np.ascontiguousarray(inertia, dtype=np.float64),
+        w0,
+        _quat(attitude0, "attitude0"),
+        as_scalar(duration, "duration"),
+        kind,
+        np.ascontiguousarray(frame, dtype=np.float64),
+        np.ascontiguousarray(attitude, dtype=np.float64),
+        np.ascontiguousarray(pivot_v, dtype=np.float64),
+        np.ascontiguousarray(gravity_v, dtype=np.float64),
+        earth,
+        lat,
+        np.ascontiguousarray(mass_moment, dtype=np.float64),
+        tkind,
+        np.ascontiguousarray(tvec, dtype=np.float64),
+        _method(method),
+        as_count(samples, "samples", 2),
+        as_scalar(rtol, "rtol"),
+        as_scalar(atol, "atol"),
+        as_count(max_steps, "max_steps", 1),
+        as_callable(progress, "progress"),
+    )
+    return CarriedTrajectory(core, rel, frame_q, rel_w)
+
+
+class CompassRun(show.Displayed):
+    """A gyrocompass's simulated motion (:meth:`Gyrocompass.simulate`).
+
+    Attributes
+    ----------
+    t:
+        Times (s), (N,).
+    heading:
+        Heading of the spin axis's north end, clockwise from true north (rad), (N,); minus the
+        compass's error.
+    tilt:
+        Elevation of the north end above the horizontal (rad), (N,).
+    latitude:
+        The compass's (ship's) latitude (rad), (N,).
+    """
+
+    def __init__(self, t: Any, heading: Any, tilt: Any, latitude: Any) -> None:
+        self.t: FloatArray = np.asarray(t)
+        self.heading: FloatArray = np.asarray(heading)
+        self.tilt: FloatArray = np.asarray(tilt)
+        self.latitude: FloatArray = np.asarray(latitude)
+
+    def _rows(self) -> list[show.Row]:
+        return [
+            show.scalar("samples", "samples", "N", len(self.t)),
+            show.span("t", "time", "t", self.t[0], self.t[-1], "s"),
+            show.samples(
+                "heading",
+                "heading of the spin axis (east of north)",
+                "α",
+                self.heading,
+                "rad",
+                brief=True,
+            ),
+            show.samples("tilt", "tilt of the north end", "θ", self.tilt, "rad"),
+            show.samples("latitude", "latitude", "λ", self.latitude, "rad"),
+        ]
+
+
+def _restore(*args: Any) -> Gyrocompass:
+    out = Gyrocompass.__new__(Gyrocompass)
+    out._core = _core.GyrocompassCore(*args)
+    return out
+
+
+class Gyrocompass(show.Displayed):
+    """A pendulous (gravity-controlled) gyrocompass at ``latitude`` on the rotating Earth.
+
+    A rotor of angular momentum ``angular_momentum`` H along the spin axis, in a sensitive
+    element hanging below its pivot (pendulosity P = m g l), optionally damped by a torque
+    about its vertical proportional to the tilt (Sperry's damping; Arnold & Maunder,
+    *Gyrodynamics and its Engineering Applications*, 1961, ch. 11). Linearised (Ω_c = Ω cos λ,
+    Ω_s = Ω sin λ, heading α, tilt θ, D the damping coefficient)::
+
+        dα/dt = Ω_s − (P/H + Ω_c) θ,    dθ/dt = Ω_c α − (D/H) θ,
+
+    the spin axis oscillates about the meridian with the period 2π √(H/(P Ω cos λ)).
+
+    Parameters
+    ----------
+    latitude:
+        λ (rad, north-positive; or a pint angle), not at a pole (no meridian there).
+    angular_momentum:
+        H (kg·m²/s, > 0; default 40: a 0.02 kg·m² rotor at 20,000 rpm). Zero spin is refused.
+    pendulosity:
+        P = m g l (N·m, > 0; default 1.2: with the default H, Schuler-tuned near 45°).
+    damping:
+        Damping ratio ζ ∈ [0, 1) of the settling oscillation (default 0.3: the swing shrinks
+        about 2.7 times per half period); D = 2 ζ ω_n H.
+    inertia:
+        Moments of the sensitive element about the pivot (kg·m², (spin axis, horizontal, up);
+        default (0.5, 1, 1)): they set only the fast nutation H/I of :meth:`simulate`.
+    earth:
+        A :class:`~poinsot.Earth` (Ω, R, g); default the sidereal rate, mean radius, standard g.
+
+    Examples
+    --------
+    >>> import poinsot as ps
+    >>> c = ps.Gyrocompass.schuler_tuned(0.8)
+    >>> round(c.period / 60, 1)    # Schuler's 84.4 min
+    84.4
+    """
+
+    __slots__ = ("_core",)
+
+    def __init__(
+        self,
+        latitude: Any,
+        angular_momentum: Any = DEFAULT_ANGULAR_MOMENTUM,
+        pendulosity: Any = DEFAULT_PENDULOSITY,
+        *,
+        damping: Any = DEFAULT_DAMPING,
+        inertia: Any = DEFAULT_INERTIA,
+        earth: Any = None,
+    ) -> None:
+        self._core = _core.GyrocompassCore(
+            _si(latitude, "latitude", "radian"),
+            _si(angular_momentum, "angular_momentum", "kilogram * meter ** 2 / second"),
+            _si(pendulosity, "pendulosity", "joule"),
+            _si(damping, "damping", "dimensionless"),
+            _moments(inertia),
+            *_earth_args(earth),
+        )
+
+    @classmethod
+    def schuler_tuned(
+        cls,
+        latitude: Any,
+        pendulosity: Any = DEFAULT_PENDULOSITY,
+        *,
+        damping: Any = DEFAULT_DAMPING,
+        inertia: Any = DEFAULT_INERTIA,
+        earth: Any = None,
+    ) -> Gyrocompass:
+        """The compass whose period is Schuler's 2π √(R/g) (84.4 min on the default Earth):
+        H = P Ω cos λ R / g. Arguments as the constructor."""
+        out = cls.__new__(cls)
+        out._core = _core.GyrocompassCore.schuler_tuned(
+            _si(latitude, "latitude", "radian"),
+            _si(pendulosity, "pendulosity", "joule"),
+            _si(damping, "damping", "dimensionless"),
+            _moments(inertia),
+            *_earth_args(earth),
+        )
+        return out
+
+    @staticmethod
+    def schuler_period(earth: Any = None) -> float:
+        """2π √(R/g) (s): 5063.5 s = 84.4 min on the default Earth."""
+        return float(_core.GyrocompassCore.schuler_period(*_earth_args(earth)))
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return (_restore, tuple(self._core.args))
+
+    # -- parameters ---------------------------------------------------------------------------
+    @property
+    def latitude(self) -> float:
+        """λ (rad)."""
+        return float(self._core.args[0])
+
+    @property
+    def angular_momentum(self) -> float:
+        """H (kg·m²/s)."""
+        return float(self._core.args[1])
+
+    @property
+    def pendulosity(self) -> float:
+        """P = m g l (N·m)."""
+        return float(self._core.args[2])
+
+    @property
+    def damping(self) -> float:
+        """ζ."""
+        return float(self._core.args[3])
+
+    @property
+    def inertia(self) -> FloatArray:
+        """Moments of the sensitive element (kg·m²), (3,)."""
+        return np.array(self._core.args[4])
+
+    @property
+    def earth(self) -> Any:
+        """The :class:`~poinsot.Earth`."""
+        from .earth import Earth
+
+        return Earth(*self._core.args[5:])
+
+    # -- results ------------------------------------------------------------------------------
+    @property
+    def period(self) -> float:
+        """The undamped period of the settling oscillation about the meridian,
+        2π √(H/(P Ω cos λ)) (s), from the linearised equations (the exact linear ω_n² =
+        Ω_c (P/H + Ω_c) differs by the relative Ω_c H/(2P), 7e-4 for the defaults). Raises
+        naming ``rotation_rate`` on a still Earth."""
+        return float(self._core.period)
+
+    @property
+    def natural_frequency(self) -> float:
+        """ω_n = √(Ω_c (P/H + Ω_c)) (rad/s) of the linearised equations."""
+        return float(self._core.natural_frequency)
+
+    @property
+    def damping_coefficient(self) -> float:
+        """D = 2 ζ ω_n H (N·m/rad): the damping torque about the vertical per radian of tilt."""
+        return float(self._core.damping_coefficient)
+
+    @property
+    def ground_speed(self) -> float:
+        """The ground's eastward speed Ω R cos λ (m/s)."""
+        return float(self._core.ground_speed)
+
+    @property
+    def settle_error(self) -> float:
+        """The latitude (damping) error (rad): what the settled, damped compass at rest reads
+        minus true north — negative (reads low, its north settled east of true north) in the
+        north. From the full model's steady state, sin α = D θ/(H Ω cos λ) with tan θ =
+        H Ω sin λ/(P + H Ω cos λ cos α); small-angle form −D tan λ/(P + H Ω cos λ). Zero
+        when undamped."""
+        return float(self._core.settle[0])
+
+    @property
+    def settle_tilt(self) -> float:
+        """The settled tilt of the north end (rad): tan θ ≈ H Ω sin λ/(P + H Ω cos λ)."""
+        return float(self._core.settle[1])
+
+    def speed_error(self, speed: Any, course: Any) -> float:
+        """The speed (steaming) error δ = atan(V cos C / (Ω R cos λ + V sin C)) (rad): the
+        compass settles on the horizontal part of the local frame's angular velocity (the
+        Earth's plus the ship's over the curved Earth); positive: it reads high, its north
+        lies δ west of true north (northerly courses).
+
+        ``speed`` V (m/s, ≥ 0, or a pint speed: ``20 * ureg.knot``), ``course`` C (rad,
+        clockwise from north). Refused, naming ``speed``, when Ω R cos λ + V sin C ≤ 0: a ship
+        going west at the ground's own speed or faster has no northward horizontal rotation
+        to seek."""
+        return float(
+            self._core.speed_error(
+                _si(speed, "speed", "meter / second"), _si(course, "course", "radian")
+            )
+        )
+
+    def speed_error_small_angle(self, speed: Any, course: Any) -> float:
+        """The manufacturers' small-angle form V cos C / (Ω R cos λ) (rad) — in degrees with
+        V in knots, about V cos C / (5π cos λ). It parts from :meth:`speed_error` at second
+        order in V/(Ω R cos λ): by 0.8° at 50 knots due north at 81°. Same refusals."""
+        return float(
+            self._core.speed_error_small_angle(
+                _si(speed, "speed", "meter / second"), _si(course, "course", "radian")
+            )
+        )
+
+    def simulate(
+        self,
+        duration: Any,
+        heading0: Any = 0.0,
+        *,
+        tilt0: Any = None,
+        speed: Any = 0.0,
+        course: Any = 0.0,
+        method: str = "dop853",
+        samples: int = 1001,
+        rtol: float = 1e-10,
+        atol: float = 1e-12,
+        max_steps: int = DEFAULT_MAX_STEPS,
+        progress: Callable[[float], Any] | None = None,
+    ) -> CompassRun:
+        """Integrates the compass as a rigid gyrostat carried by the local frame (the full
+        nonlinear equations of :func:`poinsot.simulate` with ``carried_by``; not the
+        linearised ones), from rest relative to the ground.
+
+        Parameters
+        ----------
+        duration:
+            Simulated time (s, > 0).
+        heading0:
+            Starting heading of the spin axis, clockwise from north (rad).
+        tilt0:
+            Starting tilt (rad); None: the settled tilt :attr:`settle_tilt`.
+        speed, course:
+            The ship's speed (m/s, ≥ 0) and course (rad, clockwise from north), kept constant:
+            a rhumb line from the compass's latitude (the ship's acceleration over the curved,
+            turning Earth acts on the pendulous element). 0: at rest.
+        method, samples, rtol, atol, max_steps, progress:
+            As :func:`poinsot.simulate` ("dop853" or "rk4" — no fixed step is taken by
+            "rk4" here: use "dop853").
+
+        The element's nutation (at H/I, 40 rad/s for the defaults) sets the steps: about
+        10⁵ per simulated hour.
+        """
+        tilt = self.settle_tilt if tilt0 is None else _si(tilt0, "tilt0", "radian")
+        t, heading, tilt_out, lat = self._core.simulate(
+            as_scalar(duration, "duration")
+            if not is_quantity(duration)
+            else _si(duration, "duration", "second"),
+            _si(heading0, "heading0", "radian"),
+            tilt,
+            _si(speed, "speed", "meter / second"),
+            _si(course, "course", "radian"),
+            method if isinstance(method, str) else str(method),
+            as_count(samples, "samples", 2),
+            as_scalar(rtol, "rtol"),
+            as_scalar(atol, "atol"),
+            as_count(max_steps, "max_steps", 1),
+            as_callable(progress, "progress"),
+        )
+        return CompassRun(t, heading, tilt_out, lat)
+
+    def _rows(self) -> list[show.Row]:
+        rows = [
+            show.scalar("latitude", "latitude", "λ", self.latitude, "rad"),
+            show.scalar(
+                "angular_momentum", "rotor angular momentum", "H", self.angular_momentum, "kg·m²/s"
+            ),
+            show.scalar("pendulosity", "pendulosity", "m g l", self.pendulosity, "N·m"),
+            show.scalar("damping", "damping ratio", "ζ", self.damping),
+        ]
+        try:
+            rows.append(show.scalar("period", "settling period", "T", self.period, "s"))
+        except PoinsotError:
+            pass
+        rows.append(
+            show.scalar(
+                "settle_error",
+                "latitude (damping) error",
+                "δ_λ",
+                self.settle_error,
+                "rad",
+                brief=False,
+            )
+        )
+        return rows
+
+
+def _moments(inertia: Any) -> tuple[float, float, float]:
+    arr = as_float_array(inertia, "inertia")
+    if arr.shape != (3,):
+        raise PoinsotError(f"inertia: must be 3 moments (kg·m²), got shape {arr.shape}")
+    return (float(arr[0]), float(arr[1]), float(arr[2]))

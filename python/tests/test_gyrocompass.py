@@ -1,0 +1,141 @@
+"""poinsot.Gyrocompass (issue 26): the period against 2π√(H/(P Ω cos λ)) and Schuler's 84.4
+min, the speed error against its closed form (written here) and the full simulation, the
+latitude error against the settled simulation, the negative control, refusals by name."""
+
+from __future__ import annotations
+
+import math
+import pickle
+
+import numpy as np
+import poinsot as ps
+import pytest
+
+OMEGA = 7.2921150e-5
+R = 6.371e6
+G = 9.80665
+
+
+def test_period_closed_form_and_schuler():
+    c = ps.Gyrocompass(math.radians(50), 40.0, 1.2)
+    assert c.period == pytest.approx(
+        2 * math.pi * math.sqrt(40.0 / (1.2 * OMEGA * math.cos(math.radians(50)))), rel=1e-14
+    )
+    s = ps.Gyrocompass.schuler_tuned(math.radians(50))
+    assert s.period / 60 == pytest.approx(84.4, abs=0.05)
+    assert s.period == pytest.approx(2 * math.pi * math.sqrt(R / G), rel=1e-13)
+    assert ps.Gyrocompass.schuler_period() == pytest.approx(s.period, rel=1e-13)
+
+
+def _closed(v: float, c: float, lat: float) -> float:
+    return math.atan(v * math.cos(c) / (OMEGA * R * math.cos(lat) + v * math.sin(c)))
+
+
+def test_speed_error_closed_form_small_angle_and_signs():
+    lat = math.radians(50)
+    c = ps.Gyrocompass(lat)
+    for v, course in [
+        (10.0, 0.0),
+        (15.0, math.radians(45)),
+        (8.0, math.radians(200)),
+        (12.0, math.radians(-80)),
+    ]:
+        assert c.speed_error(v, course) == pytest.approx(_closed(v, course, lat), abs=1e-15)
+        assert c.speed_error_small_angle(v, course) == pytest.approx(
+            v * math.cos(course) / (OMEGA * R * math.cos(lat)), rel=1e-14
+        )
+    assert c.speed_error(10.0, 0.0) > 0  # northerly course: reads high (north settles west)
+    assert c.speed_error(10.0, math.pi) < 0
+    # 50 knots due north at 81°: the two forms part by about 0.8°.
+    hi = ps.Gyrocompass(math.radians(81))
+    v = 50 * 1852 / 3600
+    gap = math.degrees(hi.speed_error_small_angle(v, 0.0) - hi.speed_error(v, 0.0))
+    assert 0.7 < gap < 0.9
+
+
+def test_speed_error_matches_the_full_simulation():
+    # Undamped: the settled heading is the mean over one period of the swing about it.
+    c = ps.Gyrocompass.schuler_tuned(math.radians(45), damping=0.0)
+    v, course = 10.0, math.radians(20)
+    delta = c.speed_error(v, course)
+    n = 1001
+    run = c.simulate(
+        c.period, -delta + math.radians(0.05), speed=v, course=course, samples=n, rtol=1e-9
+    )
+    h = run.heading
+    mean = (h.sum() - 0.5 * (h[0] + h[-1])) / (n - 1)
+    mid = ps.Gyrocompass.schuler_tuned(run.latitude[n // 2], damping=0.0)
+    assert math.degrees(mean + mid.speed_error(v, course)) == pytest.approx(0.0, abs=0.01)
+
+
+def test_simulated_settling_period_within_one_percent():
+    c = ps.Gyrocompass.schuler_tuned(math.radians(50), damping=0.0)
+    run = c.simulate(2.2 * c.period, math.radians(0.5), samples=2201, rtol=1e-9)
+    h = run.heading
+    k = np.nonzero((h[:-1] < 0) & (h[1:] >= 0))[0]
+    ups = run.t[k] + (run.t[k + 1] - run.t[k]) * (-h[k]) / (h[k + 1] - h[k])
+    assert len(ups) >= 2
+    assert (ups[1] - ups[0]) / c.period == pytest.approx(1.0, abs=0.01)
+
+
+def test_damped_compass_settles_on_the_latitude_error():
+    c = ps.Gyrocompass.schuler_tuned(math.radians(40), damping=0.5)
+    err = c.settle_error
+    # Small-angle form, written here: −D tan λ / (P + H Ω cos λ).
+    lat = math.radians(40)
+    small = (
+        -c.damping_coefficient
+        * math.tan(lat)
+        / (c.pendulosity + c.angular_momentum * OMEGA * math.cos(lat))
+    )
+    assert err == pytest.approx(small, rel=2e-3)
+    run = c.simulate(4 * c.period, -err + math.radians(0.3), samples=11, rtol=1e-9)
+    assert math.degrees(run.heading[-1] + err) == pytest.approx(0.0, abs=0.01)
+    assert err < 0
+
+
+def test_negative_control_no_earth_rotation_no_north_seeking():
+    still = ps.Earth(rotation_rate=0.0)
+    c = ps.Gyrocompass(math.radians(50), 40.0, 1.2, damping=0.0, earth=still)
+    run = c.simulate(3000.0, 0.3, tilt0=0.0, samples=11, rtol=1e-9)
+    np.testing.assert_allclose(run.heading, 0.3, atol=1e-9)
+    with pytest.raises(ps.PoinsotError, match="^rotation_rate"):
+        c.period
+    turning = ps.Gyrocompass(math.radians(50), 40.0, 1.2, damping=0.0)
+    run = turning.simulate(3000.0, 0.3, tilt0=0.0, samples=11, rtol=1e-9)
+    assert abs(run.heading[-1] - 0.3) > 0.1
+
+
+def test_units_pickle_and_repr():
+    pint = pytest.importorskip("pint")
+    u = pint.UnitRegistry()
+    c = ps.Gyrocompass(50 * u.deg)
+    assert c.latitude == pytest.approx(math.radians(50))
+    assert c.speed_error(20 * u.knot, 45 * u.deg) == pytest.approx(
+        c.speed_error(20 * 1852 / 3600, math.radians(45)), rel=1e-12
+    )
+    back = pickle.loads(pickle.dumps(c))
+    assert back.period == c.period and back.settle_error == c.settle_error
+    assert repr(c).startswith("Gyrocompass(")
+    with pytest.raises(ps.PoinsotError, match="^latitude"):
+        ps.Gyrocompass(3 * u.m)
+
+
+def test_bad_input_refused_by_name():
+    with pytest.raises(ps.PoinsotError, match="^latitude.*pole"):
+        ps.Gyrocompass(math.pi / 2)
+    with pytest.raises(ps.PoinsotError, match="^angular_momentum"):
+        ps.Gyrocompass(0.5, 0.0)
+    with pytest.raises(ps.PoinsotError, match="^pendulosity"):
+        ps.Gyrocompass(0.5, 40.0, -1.0)
+    with pytest.raises(ps.PoinsotError, match="^damping"):
+        ps.Gyrocompass(0.5, damping=1.0)
+    c = ps.Gyrocompass(math.radians(60))
+    with pytest.raises(ps.PoinsotError, match="^speed.*westward"):
+        c.speed_error(c.ground_speed, -math.pi / 2)
+    with pytest.raises(ps.PoinsotError, match="^speed"):
+        c.speed_error(-1.0, 0.0)
+    with pytest.raises(ps.PoinsotError, match="^heading0"):
+        c.simulate(10.0, float("nan"))
+    with pytest.raises(ps.PoinsotError, match="^duration"):
+        c.simulate(-1.0)
