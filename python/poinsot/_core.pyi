@@ -68,6 +68,11 @@ class _RigidEarth(TypedDict):
     rotation_rate: float
     obliquity: float
 
+class _RigidEarthSimulate(TypedDict):
+    samples: int
+    moon_node: float
+    max_steps: int
+
 class _SolarDay(TypedDict):
     radius: float
     g: float
@@ -155,6 +160,7 @@ _Defaults = TypedDict(
         "Earth.__init__": _Earth,
         "Earth.solar_day": _SolarDay,
         "RigidEarth.__init__": _RigidEarth,
+        "RigidEarth.simulate": _RigidEarthSimulate,
         "Earth.drop": _Fall,
         "Earth.projectile": _Projectile,
         "Earth.foucault": _Foucault,
@@ -655,6 +661,17 @@ class RigidEarthCore:
     @property
     def nutation_amplitudes_by_precession(self) -> tuple[float, float]: ...
     def chandler_period(self, k2: float, ks: float) -> float: ...
+    def simulate(
+        self, duration: float, samples: int, moon_node: float, mean_pole: bool, max_steps: int
+    ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], float, float]: ...
+
+def fit_pole(
+    t: NDArray[np.float64],
+    longitude: NDArray[np.float64],
+    obliquity: NDArray[np.float64],
+    moon_node: float,
+    node_rate: float,
+) -> tuple[float, float, float, float, float]: ...
 
 DYNAMICAL_FLATTENING: float
 OBLIQUITY_J2000: float

@@ -13,11 +13,14 @@ SI units and radians: periods in s, rates in rad/s, amplitudes in rad.
 
 from __future__ import annotations
 
+from dataclasses import dataclass, field
 from typing import Any
+
+import numpy as np
 
 from . import _core
 from ._props import core_property
-from ._validate import as_angle, as_scalar
+from ._validate import FloatArray, as_angle, as_count, as_flag, as_scalar
 from .earth import SIDEREAL_RATE
 
 __all__ = [
@@ -25,8 +28,12 @@ __all__ = [
     "IAU2000A_PRINCIPAL_NUTATION",
     "IAU2006_PRECESSION_RATE",
     "OBLIQUITY_J2000",
+    "PoleFit",
+    "PoleRun",
     "RigidEarth",
 ]
+
+_SIMULATE = _core.DEFAULTS["RigidEarth.simulate"]
 
 #: H = (C − A)/C, the Earth's dynamical flattening: 0.003273795 (IERS Conventions 2010,
 #: Table 1.1).
@@ -39,6 +46,88 @@ IAU2006_PRECESSION_RATE: float = _core.IAU2006_PRECESSION_RATE
 #: The IAU 2000A principal nutation (Δψ₀, Δε₀) (rad): (−17.2064161″, 9.2052331″), the
 #: coefficients of sin Ω and cos Ω (the first luni-solar term of ERFA's ``nut00a``).
 IAU2000A_PRINCIPAL_NUTATION: tuple[float, float] = _core.IAU2000A_PRINCIPAL_NUTATION
+
+
+@dataclass(frozen=True)
+class PoleFit:
+    """The mean precession and the principal nutation read off a :class:`PoleRun` by least
+    squares (:meth:`PoleRun.fit`): the longitude and the obliquity each fitted to a line plus
+    the terms in sin Ω and cos Ω of the Moon's node Ω(t).
+
+    Attributes
+    ----------
+    precession_rate:
+        The mean rate of the longitude (rad/s): negative (retrograde); compare with
+        :attr:`RigidEarth.precession_rate`.
+    mean_obliquity:
+        The mean obliquity at t = 0 (rad).
+    obliquity_rate:
+        The mean rate of the obliquity (rad/s): about 0 for a rigid Earth under a fixed ecliptic.
+    nutation_longitude, nutation_obliquity:
+        Δψ₀ and Δε₀ (rad), the coefficients of sin Ω in ψ = −longitude and of cos Ω in the
+        obliquity: the IAU convention of :attr:`RigidEarth.nutation_amplitudes`.
+    """
+
+    precession_rate: float
+    mean_obliquity: float
+    obliquity_rate: float
+    nutation_longitude: float
+    nutation_obliquity: float
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class PoleRun:
+    """The Earth's spin axis integrated under the Sun's and the Moon's torques
+    (:meth:`RigidEarth.simulate`), in ecliptic axes (x to the initial equinox).
+
+    Attributes
+    ----------
+    t:
+        Sample times (s), (N,), from 0 to the duration.
+    longitude:
+        The ecliptic longitude of the equinox (the node of the equator on the ecliptic)
+        counted from the initial equinox (rad, unwrapped), (N,): the pole's own ecliptic
+        longitude less π/2, −ψ of the IAU. It falls at the precession rate.
+    obliquity:
+        The angle of the spin axis from the ecliptic's pole (rad), (N,).
+    moon_node:
+        Ω₀, the ecliptic longitude of the Moon's ascending node at t = 0 (rad).
+    node_rate:
+        Ω′, the rate of the Moon's node (rad/s): −2π/(18.6 years), regressing.
+    """
+
+    t: FloatArray = field(repr=False)
+    longitude: FloatArray = field(repr=False)
+    obliquity: FloatArray = field(repr=False)
+    moon_node: float
+    node_rate: float
+
+    def __repr__(self) -> str:
+        years = float(self.t[-1]) / (365.25 * 86400.0)
+        return (
+            f"PoleRun({len(self.t)} samples over {years:.6g} Julian years, "
+            f"moon_node={self.moon_node!r}, node_rate={self.node_rate!r})"
+        )
+
+    def fit(self) -> PoleFit:
+        """The mean precession rate and the principal nutation fitted to the run (the core's
+        least squares: a line plus the sin Ω and cos Ω terms of the Moon's node, in the
+        longitude and in the obliquity). The run must span at least one node period
+        (18.6 years), or ``t`` is refused.
+
+        Returns
+        -------
+        PoleFit
+            rates in rad/s, angles in rad.
+        """
+        got = _core.fit_pole(
+            np.ascontiguousarray(self.t, dtype=np.float64),
+            np.ascontiguousarray(self.longitude, dtype=np.float64),
+            np.ascontiguousarray(self.obliquity, dtype=np.float64),
+            float(self.moon_node),
+            float(self.node_rate),
+        )
+        return PoleFit(*(float(x) for x in got))
 
 
 class RigidEarth:
@@ -137,6 +226,59 @@ class RigidEarth:
         fluid core and the mantle's anelasticity account for the rest. Raises PoinsotError
         naming ``k2`` or ``ks`` outside that range."""
         return float(self._core.chandler_period(as_scalar(k2, "k2"), as_scalar(ks, "ks")))
+
+    def simulate(
+        self,
+        duration: Any,
+        *,
+        samples: int = _SIMULATE["samples"],
+        moon_node: Any = _SIMULATE["moon_node"],
+        mean_pole: bool = False,
+        degrees: bool = False,
+        max_steps: int = _SIMULATE["max_steps"],
+    ) -> PoleRun:
+        """The spin axis integrated for ``duration`` under the gravity-gradient torques of the
+        Sun and the Moon moving along their Kepler orbits — not the averaged formula — so that
+        :attr:`precession_rate` and :attr:`nutation_amplitudes` are checked (:meth:`PoleRun.fit`).
+
+        The equations are the symmetric top's for its angular momentum L = Cω₃k̂ + A k̂ × k̂′
+        and figure axis k̂ in space, L′ = (3GM/r⁵)(C − A)(r·k̂)(r × k̂) (MacCullagh): exact
+        for A = B, the free (Euler) nutation kept, the daily spin not resolved (the torque does
+        not depend on it); DOP853 with steps of a quarter of a day, about 0.2 s of computing per
+        century. The Sun moves on its ecliptic orbit, the Moon on its orbit inclined 5.145° with
+        the node regressing in 18.6 years (the core's mean orbits); each starts at its perigee.
+
+        Parameters
+        ----------
+        duration:
+            Simulated time (s, > 0; or a pint quantity: ``400 * ureg.year``).
+        samples:
+            Number of evenly spaced samples, both ends included (≥ 2).
+        moon_node:
+            Ω₀, the ecliptic longitude of the Moon's ascending node at the start (rad, or
+            degrees with ``degrees=True``).
+        mean_pole:
+            Start on the true pole about the mean pole (obliquity ε, longitude 0), displaced by
+            the principal nutation (Δψ₀ sin Ω₀, Δε₀ cos Ω₀), so that the run nods about the mean
+            pole; by default the axis starts at obliquity ε, longitude 0.
+        degrees:
+            Whether a plain-number ``moon_node`` is in degrees.
+        max_steps:
+            Step limit: a run needing more (duration / a quarter day) is refused at once.
+
+        Returns
+        -------
+        PoleRun
+            ``t`` (s), ``longitude`` and ``obliquity`` (rad) of the axis, and the Moon's node.
+        """
+        t, lon, obl, node0, node_rate = self._core.simulate(
+            as_scalar(duration, "duration"),
+            as_count(samples, "samples"),
+            as_angle(moon_node, "moon_node", degrees),
+            as_flag(mean_pole, "mean_pole"),
+            as_count(max_steps, "max_steps"),
+        )
+        return PoleRun(t, lon, obl, float(node0), float(node_rate))
 
     @property
     def precession_parts(self) -> tuple[float, float]:

@@ -110,6 +110,10 @@ fn calls() -> Vec<(&'static str, Row)> {
             "dynamical_flattening" => d::DYNAMICAL_FLATTENING, "rotation_rate" => d::SIDEREAL_RATE,
             "obliquity" => d::OBLIQUITY_J2000,
         }),
+        ("RigidEarth.simulate", row! {
+            "samples" => d::POLE_SAMPLES, "moon_node" => d::POLE_MOON_NODE,
+            "max_steps" => d::POLE_MAX_STEPS,
+        }),
         ("Earth.drop", drop()),
         ("Earth.projectile", projectile),
         ("Earth.foucault", with(row! {

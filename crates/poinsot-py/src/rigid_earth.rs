@@ -2,10 +2,13 @@
 //! rigid symmetric top. `RigidEarthCore` holds a checked core value; the public, documented
 //! class is `poinsot.RigidEarth` (python/poinsot/rigid_earth.py), which holds one. The core
 //! names every argument as the caller knows it, so no error is renamed here.
+use numpy::{PyArray1, PyReadonlyArray1};
 use poinsot::earth::{self as ea, RigidEarth};
 use pyo3::prelude::*;
 use pyo3::types::PyType;
 
+use crate::control::run;
+use crate::convert::vec_in;
 use crate::errors::IntoPy;
 
 /// The Earth as a rigid symmetric top (private; use `poinsot.RigidEarth`): the core's
@@ -75,11 +78,76 @@ core_export! {
     fn chandler_period(&self, k2: f64, ks: f64) -> PyResult<f64> {
         self.inner.chandler_period(k2, ks).py()
     }
+
+    /// The spin axis integrated for `duration` (s) under the Sun's and the Moon's torques
+    /// along their orbits (`RigidEarth::simulate`; the GIL released, Ctrl-C polled): (t (s),
+    /// longitude (rad), obliquity (rad), moon_node (rad), node_rate (rad/s)).
+    #[allow(clippy::type_complexity)]
+    fn simulate<'py>(
+        &self,
+        py: Python<'py>,
+        duration: f64,
+        samples: usize,
+        moon_node: f64,
+        mean_pole: bool,
+        max_steps: usize,
+    ) -> PyResult<(
+        Bound<'py, PyArray1<f64>>,
+        Bound<'py, PyArray1<f64>>,
+        Bound<'py, PyArray1<f64>>,
+        f64,
+        f64,
+    )> {
+        let earth = self.inner;
+        let options = ea::SimulateOptions {
+            samples,
+            moon_node,
+            mean_pole,
+            max_steps,
+        };
+        let r = run(py, None, move || earth.simulate(duration, &options))?;
+        Ok((
+            PyArray1::from_vec(py, r.t),
+            PyArray1::from_vec(py, r.longitude),
+            PyArray1::from_vec(py, r.obliquity),
+            r.moon_node,
+            r.node_rate,
+        ))
+    }
+}
+
+/// The mean precession rate and the principal nutation fitted to a simulated pole
+/// (`poinsot::earth::fit_pole`): (precession_rate (rad/s), mean_obliquity (rad),
+/// obliquity_rate (rad/s), nutation_longitude (rad), nutation_obliquity (rad)).
+#[pyfunction]
+fn fit_pole(
+    t: PyReadonlyArray1<'_, f64>,
+    longitude: PyReadonlyArray1<'_, f64>,
+    obliquity: PyReadonlyArray1<'_, f64>,
+    moon_node: f64,
+    node_rate: f64,
+) -> PyResult<(f64, f64, f64, f64, f64)> {
+    let f = ea::fit_pole(
+        &vec_in(&t),
+        &vec_in(&longitude),
+        &vec_in(&obliquity),
+        moon_node,
+        node_rate,
+    )
+    .py()?;
+    Ok((
+        f.precession_rate,
+        f.mean_obliquity,
+        f.obliquity_rate,
+        f.nutation_longitude,
+        f.nutation_obliquity,
+    ))
 }
 
 /// Registers this file's class and the constants of the rigid Earth on the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyRigidEarth>()?;
+    m.add_function(wrap_pyfunction!(fit_pole, m)?)?;
     m.add("DYNAMICAL_FLATTENING", ea::DYNAMICAL_FLATTENING)?;
     m.add("OBLIQUITY_J2000", ea::OBLIQUITY_J2000)?;
     m.add("IAU2006_PRECESSION_RATE", ea::IAU2006_PRECESSION_RATE)?;
