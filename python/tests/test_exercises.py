@@ -25,7 +25,8 @@ x = pytest.importorskip("poinsot.exercises")
 
 from poinsot import PoinsotError  # noqa: E402
 from poinsot.exercises._formats import tex_engine  # noqa: E402
-from poinsot.exercises._template import MAX_REDRAWS, UNITS, si_factor  # noqa: E402
+from poinsot.exercises._template import MAX_REDRAWS  # noqa: E402
+from poinsot.exercises._text import UNITS, si_factor  # noqa: E402
 
 NAMES = x.names()
 SEEDS = st.integers(0, 2**32 - 1)

@@ -31,7 +31,8 @@ except ImportError as exc:  # pragma: no cover - both are installed in the test 
 
 from ._formats import FORMATS, render, write
 from ._issue import TOPICS, Check, check, generate, names, template, templates
-from ._template import Param, SolutionStep, Template, Variant, variant_seed
+from ._steps import SolutionStep
+from ._template import Param, Template, Variant, variant_seed
 
 __all__ = [
     "FORMATS",

@@ -16,7 +16,8 @@ from pathlib import Path
 from xml.etree import ElementTree as ET
 
 from ..errors import PoinsotError
-from ._template import UNITS, Variant, latex_text, sig
+from ._template import Variant
+from ._text import UNITS, latex_text, sig
 
 __all__ = ["FORMATS", "catalogue_markdown", "render", "sample_sheet_markdown", "write"]
 

@@ -8,7 +8,8 @@ from typing import Any
 
 from .._units import parse as parse_suffixed
 from ..errors import PoinsotError
-from ._template import Template, Variant, register, registry, si_factor, variant_seed
+from ._template import Template, Variant, register, registry, variant_seed
+from ._text import si_factor, ureg
 from .entries import bodies, earth, tops
 
 __all__ = ["TOPICS", "Check", "check", "generate", "names", "template", "templates"]
@@ -123,8 +124,6 @@ def _answer(answer: Any, unit: str) -> float:
 
 def _with_unit(text: str, unit: str) -> float:
     """``text`` with a unit, in ``unit``: read by pint, else by the CLI's suffixes."""
-    from ._template import ureg
-
     try:
         q: Any = ureg.Quantity(text)
     except Exception:  # pint raises several kinds for text it cannot read

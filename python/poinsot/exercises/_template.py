@@ -15,27 +15,22 @@ from __future__ import annotations
 import math
 import re
 import zlib
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from functools import cache
 from types import SimpleNamespace
 from typing import Any
 
 import numpy as np
-import pint
-import sympy as sp
 
 from ..errors import PoinsotError
+from ._steps import Derived, Mistake, Plain, SolutionStep
+from ._text import CARRIED_DIGITS, UNITS, latex_text, shown, si_factor, si_unit, sig
 
 __all__ = [
     "ANSWER_RTOL",
-    "CARRIED_DIGITS",
     "MAX_REDRAWS",
-    "Derived",
-    "Mistake",
+    "MAX_RTOL",
     "Param",
-    "Plain",
-    "SolutionStep",
     "Template",
     "Variant",
     "register",
@@ -45,8 +40,6 @@ __all__ = [
 
 #: Draws tried for one variant before its template is refused (two routes that disagree).
 MAX_REDRAWS = 20
-#: Significant figures a student is expected to carry through the working.
-CARRIED_DIGITS = 4
 #: The least relative tolerance of a graded answer (half a unit of the 4th significant figure
 #: of a number near 5000 is 1e-4; one per mille leaves room for honest rounding, and still tells
 #: the solar day from the sidereal one, 2.7e-3 apart).
@@ -56,70 +49,6 @@ ANSWER_RTOL = 1e-3
 MAX_RTOL = 0.02
 #: Relative change of each input when the answer's conditioning is measured.
 _CARRY = 0.5 * 10.0 ** (1 - CARRIED_DIGITS)
-
-ureg: pint.UnitRegistry = pint.UnitRegistry()
-
-#: How each unit is printed: pint's spelling → (plain text, LaTeX math).
-UNITS: dict[str, tuple[str, str]] = {
-    "m": ("m", r"\mathrm{m}"),
-    "cm": ("cm", r"\mathrm{cm}"),
-    "mm": ("mm", r"\mathrm{mm}"),
-    "um": ("µm", r"\mu\mathrm{m}"),
-    "km": ("km", r"\mathrm{km}"),
-    "g": ("g", r"\mathrm{g}"),
-    "kg": ("kg", r"\mathrm{kg}"),
-    "tonne": ("t", r"\mathrm{t}"),
-    "deg": ("°", r"^\circ"),
-    "arcmin": ("′", r"'"),
-    "rad": ("rad", r"\mathrm{rad}"),
-    "rpm": ("rpm", r"\mathrm{rpm}"),
-    "rad/s": ("rad/s", r"\mathrm{rad/s}"),
-    "deg/s": ("°/s", r"^\circ/\mathrm{s}"),
-    "km/h": ("km/h", r"\mathrm{km/h}"),
-    "m/s": ("m/s", r"\mathrm{m/s}"),
-    "m/s**2": ("m/s²", r"\mathrm{m/s^2}"),
-    "s": ("s", r"\mathrm{s}"),
-    "min": ("min", r"\mathrm{min}"),
-    "h": ("h", r"\mathrm{h}"),
-    "N": ("N", r"\mathrm{N}"),
-    "kN": ("kN", r"\mathrm{kN}"),
-    "N*m": ("N·m", r"\mathrm{N\,m}"),
-    "mN*m": ("mN·m", r"\mathrm{mN\,m}"),
-    "J": ("J", r"\mathrm{J}"),
-    "mJ": ("mJ", r"\mathrm{mJ}"),
-    "kg*m**2": ("kg·m²", r"\mathrm{kg\,m^2}"),
-    "kg*cm**2": ("kg·cm²", r"\mathrm{kg\,cm^2}"),
-    "g*cm**2": ("g·cm²", r"\mathrm{g\,cm^2}"),
-    "kg*m**2/s": ("kg·m²/s", r"\mathrm{kg\,m^2/s}"),
-    "": ("", ""),
-}
-
-
-def si_factor(unit: str) -> float:
-    """The SI value of one ``unit`` (``"cm"`` → 0.01, ``"rpm"`` → 2π/60, ``"deg"`` → π/180)."""
-    if unit == "":
-        return 1.0
-    return float(ureg.Quantity(1.0, unit).to_base_units().magnitude)
-
-
-def shown(value: float, unit: str, latex: bool = False) -> str:
-    """``value`` (in ``unit``) with its unit, as printed in a statement."""
-    plain, tex = UNITS[unit]
-    number = _number(value)
-    if latex:
-        return f"${number}\\,{tex}$" if tex and not tex.startswith("^") else f"${number}{tex}$"
-    return f"{number}{plain}" if plain in ("°", "′") else f"{number} {plain}".rstrip()
-
-
-def _number(value: float) -> str:
-    """A number printed exactly as drawn (a grid value): no trailing zeros, no exponent."""
-    text = f"{value:.6f}".rstrip("0").rstrip(".")
-    return "0" if text in ("-0", "") else text
-
-
-def sig(value: float, digits: int = CARRIED_DIGITS) -> str:
-    """``value`` to ``digits`` significant figures (for answers and worked steps)."""
-    return f"{value:.{digits}g}"
 
 
 # ---- a template's parts ---------------------------------------------------------------------------
@@ -149,141 +78,6 @@ class Param:
         count = round((self.high - self.low) / self.step)
         value = self.low + self.step * int(rng.integers(count + 1))
         return float(round(value, 9)), ""
-
-
-@dataclass(frozen=True)
-class SolutionStep:
-    """One step of a worked solution: a sentence, its equation in LaTeX (the body of an amsmath
-    ``aligned`` block: lines joined by ``\\\\``, aligned at ``&=``; the numbers substituted;
-    empty where there is none), and the value it gives in ``unit``."""
-
-    text: str
-    latex: str
-    value: float | None = None
-    unit: str = ""
-
-    def plain(self) -> str:
-        """The step as one line of text."""
-        tail = (
-            f" = {sig(self.value)} {UNITS[self.unit][0]}".rstrip() if self.value is not None else ""
-        )
-        return self.text + tail
-
-
-@dataclass(frozen=True)
-class Plain:
-    """A worked step where no derivation of :mod:`poinsot.derive` gives the formula: a sentence,
-    its formula in LaTeX with ``{name}`` placeholders (the variant's numbers in SI), and the
-    value (SI) it gives, shown in ``unit``."""
-
-    text: str
-    formula: str
-    value: Callable[[Any], float]
-    unit: str = ""
-    symbol: str = ""
-
-    def solve(self, v: Any) -> SolutionStep:
-        value = float(self.value(v)) / si_factor(self.unit)
-        numbers = {k: number_latex(x, True) for k, x in vars(v).items() if isinstance(x, float)}
-        tex = self.formula.format(**numbers)
-        if self.symbol:
-            tex = f"{self.symbol} &= {tex} = {number_latex(value)}\\,{UNITS[self.unit][1]}"
-        return SolutionStep(self.text, tex, value, self.unit)
-
-
-@dataclass(frozen=True)
-class Derived:
-    """A worked step whose formula is a result of a :mod:`poinsot.derive` derivation (``topic``,
-    the unit's equation ``number``), evaluated with the variant's numbers: ``args`` name the
-    variant's values (SI) in the order of the derivation's symbols; ``component`` picks one of a
-    vector result; the value is shown in ``unit`` with the LaTeX ``symbol``."""
-
-    text: str
-    topic: str
-    number: str
-    args: tuple[str, ...]
-    symbol: str
-    unit: str = ""
-    component: int | None = None
-
-    def formula(self) -> tuple[Any, tuple[Any, ...]]:
-        """The derived expression (the component asked for) and its symbols (sympy)."""
-        expr, symbols, _ = _derived(self.topic, self.number, self.component)
-        return expr, symbols
-
-    def evaluate(self, v: Any) -> float:
-        """The derived formula at the variant's values (SI): the derive-substituted route."""
-        _, _, f = _derived(self.topic, self.number, self.component)
-        return float(f(*(getattr(v, a) for a in self.args)))
-
-    def evaluate_vector(self, v: Any) -> list[float]:
-        """A vector result at the variant's values (SI), as a list."""
-        _, _, f = _derived(self.topic, self.number, None)
-        return [float(x) for x in np.asarray(f(*(getattr(v, a) for a in self.args))).ravel()]
-
-    def solve(self, v: Any) -> SolutionStep:
-        expr, symbols = self.formula()
-        value = self.evaluate(v) / si_factor(self.unit)
-        numbers = {s: _number_symbol(getattr(v, a)) for s, a in zip(symbols, self.args)}
-        tex = (  # the formula, the numbers substituted, the value: one line each
-            f"{self.symbol} &= {sp.latex(expr)} \\\\ &= {sp.latex(expr.xreplace(numbers))}"
-            f" \\\\ &= {number_latex(value)}\\,{UNITS[self.unit][1]}"
-        )
-        where = (
-            f"the unit's eq. {self.number}"
-            if re.fullmatch(r"\d+\.\d+", self.number)
-            else f"result {self.number!r}"
-        )
-        text = f"{self.text} ({where}, poinsot.derive '{self.topic}')"
-        return SolutionStep(text, tex, value, self.unit)
-
-
-class _Number(sp.Symbol):
-    """A number shown in a worked step: a sympy atom whose name is its LaTeX."""
-
-    def _latex(self, printer: Any) -> str:
-        return self.name
-
-
-def number_latex(value: float, grouped: bool = False) -> str:
-    """``value`` to :data:`CARRIED_DIGITS` figures in LaTeX (``7.292 \\cdot 10^{-5}``); with
-    ``grouped``, in parentheses where it has a power of ten or a sign (a factor or a base)."""
-    text = sig(value)
-    mantissa, _, exponent = text.partition("e")
-    if exponent:
-        text = f"{mantissa} \\cdot 10^{{{int(exponent)}}}"
-    if grouped and (exponent or value < 0):
-        text = f"\\left({text}\\right)"
-    return text
-
-
-def _number_symbol(value: float) -> Any:
-    """``value`` as a sympy atom that prints as :func:`number_latex` (grouped: a square of it
-    is ``(7.292 \\cdot 10^{-5})^{2}``, not a double superscript)."""
-    return _Number(number_latex(value, grouped=True))
-
-
-@cache
-def _derived(topic: str, number: str, component: int | None) -> tuple[Any, tuple[Any, ...], Any]:
-    """The result ``number`` of the derivation ``topic``: (expression, symbols, its numpy
-    function), built once per process."""
-    from .. import derive
-
-    expr, symbols = derive.derivation(topic).functions[number]
-    if component is not None:
-        expr = expr[component]
-    return expr, symbols, sp.lambdify(symbols, expr, "numpy")
-
-
-@dataclass(frozen=True)
-class Mistake:
-    """A common mistake: what it is (``text``), the step of the worked solution to look at
-    (1-based), and the wrong answer it produces (SI) from the variant's values."""
-
-    name: str
-    text: str
-    step: int
-    wrong: Callable[[Any], float]
 
 
 # ---- the template -----------------------------------------------------------------------------
@@ -549,7 +343,7 @@ class Variant:
         """The worked solution: the data in SI, then the template's steps with this variant's
         numbers (from :mod:`poinsot.derive` where a derivation exists)."""
         data = ", ".join(
-            f"{p.name} = {sig(getattr(self.values, p.name))} {UNITS[_si_unit(p.unit)][0]}".rstrip()
+            f"{p.name} = {sig(getattr(self.values, p.name))} {UNITS[si_unit(p.unit)][0]}".rstrip()
             for p in self.template.params
         )
         first = SolutionStep(f"The data in SI units: {data}.", "")
@@ -599,108 +393,6 @@ class Variant:
         }
 
 
-def _si_unit(unit: str) -> str:
-    """The SI unit (a key of :data:`UNITS`) of values given in ``unit``."""
-    base = str(ureg.Quantity(1.0, unit).to_base_units().units) if unit else ""
-    return {
-        "meter": "m",
-        "kilogram": "kg",
-        "radian": "rad",
-        "radian / second": "rad/s",
-        "meter / second": "m/s",
-        "second": "s",
-        "kilogram * meter ** 2": "kg*m**2",
-        "dimensionless": "",
-    }.get(base, "")
-
-
-# ---- LaTeX text ------------------------------------------------------------------------------------
-
-_GREEK = dict(
-    zip(
-        "αβγδεθλμνπρστφχψωΩΦΨΘΛΔΣ",
-        [
-            r"\alpha",
-            r"\beta",
-            r"\gamma",
-            r"\delta",
-            r"\varepsilon",
-            r"\theta",
-            r"\lambda",
-            r"\mu",
-            r"\nu",
-            r"\pi",
-            r"\rho",
-            r"\sigma",
-            r"\tau",
-            r"\phi",
-            r"\chi",
-            r"\psi",
-            r"\omega",
-            r"\Omega",
-            r"\Phi",
-            r"\Psi",
-            r"\Theta",
-            r"\Lambda",
-            r"\Delta",
-            r"\Sigma",
-        ],
-    )
-)
-_SUB = dict(zip("₀₁₂₃₄₅₆₇₈₉", "0123456789"))
-_SUP = dict(zip("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789"))
-_POWER = re.compile("([" + "".join(_SUP) + "]+)")
-_LETTER = "[A-Za-z" + "".join(_GREEK) + "]"
-_DOTTED = re.compile(f"({_LETTER})\u0307([₀-₉]*)")
-_SYMBOL = re.compile(f"({_LETTER})([₀-₉]+)|([" + "".join(_GREEK) + "])")
-#: Other Unicode of the statements and steps, as LaTeX (pdflatex's utf8 input knows none of it).
-_OTHER = {
-    "°": r"$^\circ$",
-    "′": "'",
-    "−": "$-$",
-    "×": r"$\times$",
-    "≈": r"$\approx$",
-    "½": r"$\frac12$",
-    "⅓": r"$\frac13$",
-    "¾": r"$\frac34$",
-    "↔": r"$\leftrightarrow$",
-    "→": r"$\to$",
-    "µ": r"$\mu$",
-    "√": r"$\surd$",
-    "≤": r"$\le$",
-    "≥": r"$\ge$",
-    "§": r"\S{}",
-}
-
-
-def _sub(digits: str) -> str:
-    return f"_{{{''.join(_SUB[c] for c in digits)}}}" if digits else ""
-
-
-def latex_text(text: str) -> str:
-    """Unicode statement text as LaTeX text: specials escaped, Greek letters, dotted and
-    subscripted symbols (I₁, θ₀, ω̇₁) set in math, powers (10⁻⁵), ° and the other signs of
-    :data:`_OTHER` as LaTeX."""
-    for a, b in (("\\", r"\textbackslash{}"), ("%", r"\%"), ("&", r"\&"), ("#", r"\#")):
-        text = text.replace(a, b)
-    text = text.replace("_", r"\_").replace("²", r"$^2$").replace("·", r"$\cdot$")
-
-    def dotted(m: re.Match[str]) -> str:
-        return r"$\dot{" + _GREEK.get(m.group(1), m.group(1)) + "}" + _sub(m.group(2)) + "$"
-
-    def symbol(m: re.Match[str]) -> str:
-        if m.group(3):
-            return f"${_GREEK[m.group(3)]}$"
-        return f"${_GREEK.get(m.group(1), m.group(1))}{_sub(m.group(2))}$"
-
-    text = _DOTTED.sub(dotted, text)
-    text = _SYMBOL.sub(symbol, text)
-    text = _POWER.sub(lambda m: "$^{" + "".join(_SUP[c] for c in m.group(1)) + "}$", text)
-    for a, b in _OTHER.items():
-        text = text.replace(a, b)
-    return text
-
-
 # ---- the registry ------------------------------------------------------------------------------
 
 _REGISTRY: dict[str, Template] = {}
@@ -721,8 +413,3 @@ def _registered(name: str) -> Template:
 def registry() -> Mapping[str, Template]:
     """Every registered template by name."""
     return _REGISTRY
-
-
-def steps_text(steps: Sequence[SolutionStep]) -> list[str]:
-    """The worked steps as numbered lines of text."""
-    return [f"{k}. {s.plain()}" for k, s in enumerate(steps, 1)]

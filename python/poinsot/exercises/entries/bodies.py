@@ -9,7 +9,8 @@ from typing import Any
 import numpy as np
 
 from ...body import RigidBody
-from .._template import Derived, Mistake, Param, Plain, Template
+from .._steps import Derived, Mistake, Plain
+from .._template import Param, Template
 
 # ---- a composite body: a rod with a ball on its end (parallel axes; L 8) --------------------------
 

@@ -9,7 +9,8 @@ from typing import Any
 import numpy as np
 
 from ...earth import SIDEREAL_RATE, SOLAR_DAY_RATE, Earth
-from .._template import Derived, Mistake, Param, Plain, Template
+from .._steps import Derived, Mistake, Plain
+from .._template import Param, Template
 
 #: The unit's printed value of the Earth's rate, 2π/(24·3600) "= 7.25e-5 rad/s" (its arithmetic
 #: slip: 2π/86400 is 7.272e-5; seed-errata.md, "Earth's rate").

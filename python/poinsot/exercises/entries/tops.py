@@ -14,7 +14,8 @@ from ...dynamics import simulate
 from ...free import FreeRigidBody, FreeSymmetricTop
 from ...rotation import body_angular_velocity
 from ...top import HeavyTop
-from .._template import Derived, Mistake, Param, Plain, Template
+from .._steps import Derived, Mistake, Plain
+from .._template import Param, Template
 
 _G = 9.80665
 
