@@ -10,6 +10,8 @@ The public API (the README and the docs/ pages describe each part; ARCHITECTURE.
 * the rotating Earth: :class:`Earth` (effective gravity, Coriolis, the falling body of
   eq. 2.42, projectiles, the Foucault pendulum, inertial oscillations); :class:`RigidEarth`
   (the Earth as a rigid top: Euler's period, the Chandler period, precession, nutation);
+  :func:`polar_motion` (the IERS pole, 1962 to now) and :func:`fit_wobble` (its Chandler and
+  annual wobbles);
 * rigid-body dynamics: :func:`simulate` (Euler's equations 2.71 with torques; exact flow,
   Lie–Poisson splitting, RK4, DOP853), :func:`simulate_batch`, :class:`FreeSymmetricTop`
   (2.77–2.97), :class:`FreeRigidBody` (the exact asymmetric top), :func:`axis_stability`;
@@ -45,6 +47,8 @@ from .gyrocompass import *  # noqa: F403
 from .gyrocompass import __all__ as _gyrocompass_all
 from .limits import *  # noqa: F403
 from .limits import __all__ as _limits_all
+from .polar import *  # noqa: F403
+from .polar import __all__ as _polar_all
 from .rigid_earth import *  # noqa: F403
 from .rigid_earth import __all__ as _rigid_earth_all
 from .rotation import *  # noqa: F403
@@ -60,6 +64,7 @@ __all__ = [
     *_frames_all,
     *_earth_all,
     *_rigid_earth_all,
+    *_polar_all,
     *_dynamics_all,
     *_gyrocompass_all,
     *_free_all,

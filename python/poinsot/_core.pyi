@@ -1079,3 +1079,16 @@ def sweep_projectile(
     check_only: bool,
     progress: Callable[[float], Any] | None = None,
 ) -> dict[str, NDArray[Any]] | None: ...
+
+# ---- the real pole's wobble (wobble.rs) ----
+ANNUAL_PERIOD: float
+CHANDLER_SEARCH: tuple[float, float]
+
+def fit_wobble(
+    t: NDArray[np.float64],
+    x: NDArray[np.float64],
+    y: NDArray[np.float64],
+    chandler_period: float | None = None,
+    chandler_band: tuple[float, float] | None = None,
+    annual_period: float = ...,
+) -> dict[str, Any]: ...

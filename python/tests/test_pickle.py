@@ -56,6 +56,11 @@ def _earth() -> ps.Earth:
     return ps.Earth()
 
 
+def _wobble() -> ps.WobbleFit:
+    pm = ps.polar_motion("shipped")
+    return ps.fit_wobble(pm.dates, pm.x, pm.y, chandler_period=433.0 * 86400.0)
+
+
 def _derive(kind: str) -> Any:
     d = pytest.importorskip("poinsot.derive")
     if kind == "Step":
@@ -190,6 +195,9 @@ CASES: dict[str, list[tuple[Callable[[], Any], Callable[[Any], Any]]]] = {
     "RigidEarth": [
         (lambda: ps.RigidEarth(0.004, 7e-5, 0.3), lambda e: (e.euler_period, e.precession_rate))
     ],
+    "PolarMotion": [(lambda: ps.polar_motion("shipped"), lambda p: (p.t, p.x, p.y, p.dates))],
+    "WobbleFit": [(lambda: _wobble(), lambda f: (f.chandler.amplitude, f.drift, str(f)))],
+    "WobbleTerm": [(lambda: _wobble().annual_prograde, lambda w: (w.phase, w.period_days))],
     "Fall": [(lambda: _earth().drop(100.0, 0.7, samples=5), lambda f: f.first_order_east)],
     "Flight": [(lambda: _earth().projectile(50.0, 0.7, 0.2, 0.5, samples=5), lambda f: f.position)],
     "FoucaultRun": [

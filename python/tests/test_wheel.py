@@ -204,6 +204,13 @@ def test_wheel_carries_the_notebooks(wheel: Path) -> None:
         assert f"poinsot/notebooks/{nb.name}" in names, nb.name
 
 
+def test_wheel_carries_the_polar_motion_extract(wheel: Path) -> None:
+    # poinsot.polar_motion("shipped") reads it as package data (issue 25)
+    extract = NOTEBOOKS.parent / "data" / "eop_c04_polar_motion.csv"
+    with zipfile.ZipFile(wheel) as zf:
+        assert zf.read("poinsot/data/eop_c04_polar_motion.csv") == extract.read_bytes()
+
+
 def test_notebooks_and_docs_url_from_the_installed_wheel(
     installed: tuple[Path, dict[str, str]],
 ) -> None:

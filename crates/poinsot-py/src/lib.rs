@@ -61,6 +61,7 @@ mod rigid_earth;
 mod rotation;
 mod special;
 mod sweep;
+mod wobble;
 
 use poinsot_py_macros::export;
 use pyo3::prelude::*;
@@ -139,5 +140,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     gyrocompass::register(m)?;
     heavy_top::register(m)?;
     sweep::register(m)?;
+    wobble::register(m)?;
     Ok(())
 }

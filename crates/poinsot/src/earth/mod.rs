@@ -17,6 +17,7 @@ mod rigid;
 mod rigid_simulate;
 mod runs;
 mod winds;
+mod wobble;
 
 pub use fall::{Fall, FallModel, Flight, Gravity};
 pub use pendulum::{fit_precession_rate, FoucaultRun};
@@ -49,3 +50,6 @@ pub use runs::{
     LOW_SAMPLES, LOW_TOLERANCES, SENSE_THRESHOLD,
 };
 pub use winds::{InertialRun, LowRun};
+pub use wobble::{
+    fit_wobble, ChandlerPeriod, WobbleFit, WobbleTerm, ANNUAL_PERIOD, CHANDLER_SEARCH,
+};
