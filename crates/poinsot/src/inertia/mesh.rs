@@ -741,7 +741,7 @@ fn integrate_parts(
                 .into_par_iter()
                 .map(|c| {
                     let mut b = Bounds::EMPTY;
-                    faces.each(c, |f| b = b.union(Bounds::of(tris[f].map(vertex))));
+                    faces.each(c, |f| b = b.with(tris[f].map(vertex)));
                     b
                 })
                 .reduce(|| Bounds::EMPTY, Bounds::union);

@@ -239,7 +239,14 @@ impl Bounds {
 
     /// The box of `points`.
     pub(crate) fn of(points: impl IntoIterator<Item = [f64; 3]>) -> Self {
-        points.into_iter().fold(Self::EMPTY, |mut b, p| {
+        Self::EMPTY.with(points)
+    }
+
+    /// The box of these and `points` (one comparison per coordinate and side: no box of the
+    /// points alone to unite).
+    #[inline]
+    pub(crate) fn with(self, points: impl IntoIterator<Item = [f64; 3]>) -> Self {
+        points.into_iter().fold(self, |mut b, p| {
             for (k, &x) in p.iter().enumerate() {
                 b.lo[k] = min2(b.lo[k], x);
                 b.hi[k] = max2(b.hi[k], x);
