@@ -1164,29 +1164,7 @@ mod tests {
     #[test]
     fn same_bits_on_any_number_of_threads() {
         // A UV sphere of 100 × 200 quads split in two: 39,800 faces, ten chunks.
-        let (n, m) = (100usize, 200usize);
-        let mut v = vec![[0.0, 0.0, 1.0]];
-        for k in 1..n {
-            let th = std::f64::consts::PI * k as f64 / n as f64;
-            for j in 0..m {
-                let ph = 2.0 * std::f64::consts::PI * j as f64 / m as f64;
-                v.push([th.sin() * ph.cos(), th.sin() * ph.sin(), th.cos()]);
-            }
-        }
-        v.push([0.0, 0.0, -1.0]);
-        let ring = |k: usize, j: usize| (1 + (k - 1) * m + j % m) as u32;
-        let south = (1 + (n - 1) * m) as u32;
-        let mut f = Vec::new();
-        for j in 0..m {
-            f.push([0, ring(1, j), ring(1, j + 1)]);
-            for k in 1..n - 1 {
-                let (a, b) = (ring(k, j), ring(k, j + 1));
-                let (c, d) = (ring(k + 1, j + 1), ring(k + 1, j));
-                f.push([a, d, c]);
-                f.push([a, c, b]);
-            }
-            f.push([south, ring(n - 1, j + 1), ring(n - 1, j)]);
-        }
+        let (v, f) = wound_sphere(100, 200, 1.0);
         assert!(f.len() > 8 * CHUNK);
         let on = |threads: usize| {
             rayon::ThreadPoolBuilder::new()

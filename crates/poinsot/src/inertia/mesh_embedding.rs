@@ -2010,20 +2010,7 @@ mod tests {
             let index = Index::new(pts, &f, |_| false, &cancel).unwrap();
             skipped_some |= index.faces.iter().any(|f| f.proved != 0);
             let got = index.intersections(&cancel).unwrap();
-            let mut count = 0u64;
-            let mut first = None;
-            for i in 0..f.len() {
-                for j in i + 1..f.len() {
-                    let (p, q) = (pts.tri(&f[i]), pts.tri(&f[j]));
-                    let (Some(kp), Some(kq)) = (drop_axis(&p), drop_axis(&q)) else {
-                        continue;
-                    };
-                    if faces_cross(&p, &q, &f[i], &f[j], kp, kq) {
-                        count += 1;
-                        first.get_or_insert((i as u32, j as u32));
-                    }
-                }
-            }
+            let (count, first) = all_pairs(&v, &f);
             found_some |= count > 0;
             assert_eq!(got, (count, first), "seed {seed}, amplitude {amp}");
         }
