@@ -294,24 +294,31 @@ impl Orbiter {
 
     /// The geocentric position (m) at time `t` (s), in ecliptic axes.
     fn position(&self, t: f64) -> Vec3 {
-        let m = self.n * t;
+        let m = (self.n * t).rem_euclid(TAU);
         let e = self.e;
-        // Kepler's equation E − e sin E = M by Newton's method from E = M + e sin M.
-        let mut big_e = m + e * m.sin();
-        for _ in 0..8 {
-            let (s, c) = big_e.sin_cos();
+        // Kepler's equation E − e sin E = M by Newton's method from E = M + e sin M, to a
+        // correction below 1e-9 rad (the next would be below 1e-17: quadratic convergence); the
+        // sine and cosine of E then follow from the last ones turned by that correction.
+        let (mut s, mut c) = m.sin_cos();
+        let mut big_e = m + e * s;
+        for _ in 0..50 {
+            (s, c) = big_e.sin_cos();
             let d = (big_e - e * s - m) / (1.0 - e * c);
             big_e -= d;
-            if d.abs() < 1e-15 * (1.0 + m.abs()) {
+            if d.abs() < 1e-9 {
+                (s, c) = (s - c * d, c + s * d);
                 break;
             }
         }
-        let (s, c) = big_e.sin_cos();
         // In the orbit's plane, x to the perigee (on the node), then tilted by i about the
         // node line, then turned by Ω about the ecliptic pole.
         let (x, y) = (self.a * (c - e), self.b * s);
         let (y, z) = (y * self.cos_i, y * self.sin_i);
-        let (sn, cn) = (self.node0 + self.node_rate * t).sin_cos();
+        let (sn, cn) = if self.node_rate == 0.0 {
+            self.node0.sin_cos()
+        } else {
+            (self.node0 + self.node_rate * t).sin_cos()
+        };
         Vec3::new(cn * x - sn * y, sn * x + cn * y, z)
     }
 
@@ -350,7 +357,7 @@ fn check_orbit(body: &str, orbit: &MeanOrbit) -> Result<()> {
         ));
     }
     check_finite(&name("inclination"), &[orbit.inclination])?;
-    if !(orbit.node_period > 0.0) {
+    if orbit.node_period.is_nan() || orbit.node_period <= 0.0 {
         return Err(Error::invalid(
             name("node_period"),
             format!(
@@ -456,5 +463,42 @@ impl RigidEarth {
             node_rate: moon.node_rate,
             stats: scan.stats,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::earth::MOON_ORBIT;
+
+    #[test]
+    fn the_kepler_orbit_has_its_distance_range_and_its_mean_inverse_cube() {
+        // An exaggerated orbit (e = 0.6) so that Newton's method has work to do: the distance
+        // stays in [a(1 − e), a(1 + e)], the time average of 1/r³ over a period is
+        // 1/(a³(1 − e²)^{3/2}) (MeanOrbit::mean_inverse_cube), and the node turns the orbit.
+        let orbit = MeanOrbit {
+            eccentricity: 0.6,
+            ..MOON_ORBIT
+        };
+        let earth = RigidEarth::default();
+        let body = Orbiter::new(&orbit, GM_EARTH + orbit.gm, &earth, 0.3);
+        let (a, e) = (orbit.semi_major_axis, orbit.eccentricity);
+        let period = TAU / body.n;
+        let n = 20_000;
+        let mut mean = 0.0;
+        for j in 0..n {
+            let r = body.position(period * (j as f64 + 0.5) / n as f64);
+            let d = r.norm();
+            assert!(d >= a * (1.0 - e) * (1.0 - 1e-12) && d <= a * (1.0 + e) * (1.0 + 1e-12));
+            mean += orbit.gm / (d * d * d) / n as f64;
+        }
+        assert!(
+            (mean / orbit.mean_inverse_cube() - 1.0).abs() < 1e-9,
+            "{mean}"
+        );
+        // Perigee at t = 0 on the node: along (cos Ω₀, sin Ω₀, 0) at a(1 − e).
+        let p = body.position(0.0);
+        let want = a * (1.0 - e) * Vec3::new(0.3_f64.cos(), 0.3_f64.sin(), 0.0);
+        assert!((p - want).norm() < 1e-6 * a);
     }
 }
