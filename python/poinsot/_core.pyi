@@ -73,6 +73,12 @@ class _RigidEarthSimulate(TypedDict):
     moon_node: float
     max_steps: int
 
+class _PolarMotion(TypedDict):
+    source: str
+
+class _FitWobble(TypedDict):
+    annual_period: float
+
 class _SolarDay(TypedDict):
     radius: float
     g: float
@@ -161,6 +167,8 @@ _Defaults = TypedDict(
         "Earth.solar_day": _SolarDay,
         "RigidEarth.__init__": _RigidEarth,
         "RigidEarth.simulate": _RigidEarthSimulate,
+        "polar_motion": _PolarMotion,
+        "fit_wobble": _FitWobble,
         "Earth.drop": _Fall,
         "Earth.projectile": _Projectile,
         "Earth.foucault": _Foucault,

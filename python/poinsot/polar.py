@@ -49,6 +49,10 @@ CHANDLER_SEARCH: tuple[float, float] = tuple(_core.CHANDLER_SEARCH)  # type: ign
 #: to within the minute between UTC and TT, nothing at the wobble's scale).
 J2000 = np.datetime64("2000-01-01T12:00:00", "s")
 
+#: The core's defaults of the two calls (poinsot._core.DEFAULTS).
+_FIT = _core.DEFAULTS["fit_wobble"]
+_READ = _core.DEFAULTS["polar_motion"]
+
 _ARCSEC = math.pi / 648_000.0
 _DAY = 86_400.0
 #: MJD 0 as a date.
@@ -151,7 +155,7 @@ def _iers() -> PolarMotion:
     )
 
 
-def polar_motion(source: str = "auto") -> PolarMotion:
+def polar_motion(source: str = _READ["source"]) -> PolarMotion:
     """The Earth's polar motion from the IERS EOP C04 series, 1962 to the data's last day.
 
     Parameters
@@ -306,7 +310,7 @@ def fit_wobble(
     y: Any,
     *,
     chandler_period: Any = None,
-    annual_period: Any = ANNUAL_PERIOD,
+    annual_period: Any = _FIT["annual_period"],
 ) -> WobbleFit:
     """Fits the pole's motion to a trend, the prograde Chandler circle and the annual circles.
 

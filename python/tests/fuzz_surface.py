@@ -83,6 +83,10 @@ CUBE_F = np.array(
 
 _TOP = ps.HeavyTop(1.0, 0.5, 1.0, 0.5, psi_dot=6.0)
 
+_POLE_T = np.arange(0.0, 30 * 365.25, 20.0) * 86400.0
+_POLE_X = 1e-6 * np.cos(2 * np.pi * _POLE_T / (433 * 86400.0)) + 4e-7 * np.cos(2e-7 * _POLE_T)
+_POLE_Y = -1e-6 * np.sin(2 * np.pi * _POLE_T / (433 * 86400.0)) + 1e-8 * np.sin(_POLE_T)
+
 #: Valid example arguments by parameter name; ``VALID_FOR`` overrides by "Qualified.name".
 VALID: dict[str, Any] = {
     "angles": [0.1, 0.2, 0.3],
@@ -187,6 +191,9 @@ VALID: dict[str, Any] = {
 }
 
 VALID_FOR: dict[str, dict[str, Any]] = {
+    # The real pole: 30 years every 20 days of a 433-day and an annual circle (issue 25).
+    "fit_wobble": {"t": _POLE_T, "x": _POLE_X, "y": _POLE_Y, "chandler_period": None},
+    "polar_motion": {"source": "shipped"},
     # The sweeps: the model's own keywords (passed as **keywords) and small grids.
     "sweep.heavy_top": {
         "samples": None,
@@ -323,6 +330,9 @@ RESULT_TYPES = {
     "Trajectory",
     "AxisStability",
     "SteadyPrecession",
+    "PolarMotion",
+    "WobbleFit",
+    "WobbleTerm",
 }
 
 #: Valid instances whose methods and properties are fuzzed, by class name.
@@ -335,6 +345,8 @@ INSTANCES: dict[str, Callable[[], Any]] = {
     ),
     "Earth": lambda: ps.Earth(),
     "RigidEarth": lambda: ps.RigidEarth(),
+    "PolarMotion": lambda: ps.polar_motion("shipped"),
+    "WobbleTerm": lambda: ps.fit_wobble(_POLE_T, _POLE_X, _POLE_Y).chandler,
     "Trajectory": lambda: ps.simulate([1.0, 2.0, 3.0], [1.0, 0.1, 1.0], 1.0, samples=11),
     "FreeSymmetricTop": lambda: ps.FreeSymmetricTop(1.0, 2.0, [0.3, 0.0, 1.0]),
     "FreeRigidBody": lambda: ps.FreeRigidBody([1.0, 2.0, 3.0], [1.0, 0.1, 1.0]),

@@ -114,6 +114,8 @@ fn calls() -> Vec<(&'static str, Row)> {
             "samples" => d::POLE_SAMPLES, "moon_node" => d::POLE_MOON_NODE,
             "max_steps" => d::POLE_MAX_STEPS,
         }),
+        ("polar_motion", row! { "source" => d::POLAR_MOTION_SOURCE }),
+        ("fit_wobble", row! { "annual_period" => d::ANNUAL_PERIOD }),
         ("Earth.drop", drop()),
         ("Earth.projectile", projectile),
         ("Earth.foucault", with(row! {

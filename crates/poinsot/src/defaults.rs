@@ -8,6 +8,7 @@
 //! [`crate::earth`], the particle's in [`crate::frames`]) and are re-exported here.
 
 pub use crate::analytic::EulerState;
+pub use crate::earth::{ANNUAL_PERIOD, POLAR_MOTION_SOURCE};
 pub use crate::earth::{
     DROP_SAMPLES, DROP_TOLERANCES, DYNAMICAL_FLATTENING, FOUCAULT_AMPLITUDE, FOUCAULT_AZIMUTH,
     FOUCAULT_DURATION, FOUCAULT_LENGTH, FOUCAULT_SAMPLES, FOUCAULT_TOLERANCES, INERTIAL_SAMPLES,

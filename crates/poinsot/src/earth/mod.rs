@@ -52,4 +52,5 @@ pub use runs::{
 pub use winds::{InertialRun, LowRun};
 pub use wobble::{
     fit_wobble, ChandlerPeriod, WobbleFit, WobbleTerm, ANNUAL_PERIOD, CHANDLER_SEARCH,
+    POLAR_MOTION_SOURCE,
 };

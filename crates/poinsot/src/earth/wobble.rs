@@ -31,6 +31,11 @@ const DAY: f64 = 86_400.0;
 /// (Laskar 1986; the seasons of the atmosphere and oceans that drive it).
 pub const ANNUAL_PERIOD: f64 = 365.242_190 * DAY;
 
+/// Where `polar_motion` reads the pole by default: `"auto"`, the daily IERS C04 file of the
+/// `astropy-iers-data` package when it is installed, else the extract shipped with the package
+/// (the other choices: `"iers"`, `"shipped"`).
+pub const POLAR_MOTION_SOURCE: &str = "auto";
+
 /// The default band of the Chandler period search (s): 380 to 500 days, around the observed
 /// 433 days (and the 445 of an oceanless elastic Earth, [`crate::earth::RigidEarth`]), and
 /// clear of the annual period by more than the resolution of a 30-year record.
