@@ -57,6 +57,7 @@ GALLERY_ORDER = [
     "heavy_top.py",
     "steady_precession.py",
     "heavy_top_phase_diagram.py",
+    "chandler_wobble.py",
 ]
 
 
