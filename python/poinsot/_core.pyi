@@ -142,6 +142,14 @@ class _HeavyTop(_FromSpin):
 class _FromBody(_FromSpin):
     g: float
 
+class _CompassTuned(TypedDict):
+    pendulosity: float
+    damping: float
+    inertia: tuple[float, float, float]
+
+class _Compass(_CompassTuned):
+    angular_momentum: float
+
 _Defaults = TypedDict(
     "_Defaults",
     {
@@ -177,6 +185,9 @@ _Defaults = TypedDict(
         "GravityTorque.__init__": _G,
         "simulate": _Simulate,
         "simulate_batch": _Batch,
+        "Gyrocompass.__init__": _Compass,
+        "Gyrocompass.schuler_tuned": _CompassTuned,
+        "Gyrocompass.simulate": _Simulate,
         "FreeRigidBody.contact_point": _Frame,
         "FreeRigidBody.contact_polhode": _Samples,
         "FreeRigidBody.polhode": _Samples,

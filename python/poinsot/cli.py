@@ -2279,3 +2279,68 @@ def check(template: str, seed: int, answer: str, as_json: bool) -> None:
         emit_json(result.to_dict())
         return
     click.echo(result.verdict)
+
+
+# -- poinsot gyrocompass: the pendulous gyrocompass (issue 26) -----------------------------------
+@main.command()
+@_number("--latitude", "The compass's latitude, north-positive (rad, or with a unit: 50deg).")
+@_number("--speed", "The ship's speed (m/s, or with a unit: 20kn); 0: at rest.", default=0.0)
+@_number("--course", "The ship's course, clockwise from north (rad, or 45deg).", default=0.0)
+@_JSON
+def gyrocompass(latitude: float, speed: float, course: float, as_json: bool) -> None:
+    """The gyrocompass: its period and its errors.
+
+    A pendulous gyrocompass (poinsot.Gyrocompass with its default rotor, pendulosity and
+    damping) at --latitude: the period of its settling swing about the meridian,
+    2π √(H/(m g l Ω cos λ)), beside Schuler's 2π √(R/g) = 84.4 min and the rotor momentum that
+    tunes it to that; the latitude (damping) error of the settled compass; and, for a ship at
+    --speed on --course, the speed (steaming) error atan(V cos C / (Ω R cos λ + V sin C)) beside
+    the manufacturers' small-angle form. Errors are what the compass reads minus the truth
+    (positive: reads high).
+
+    \b
+    Examples:
+      poinsot gyrocompass --latitude 50deg
+      poinsot gyrocompass --latitude 50deg --speed 20kn --course 0deg --json
+    """
+    from .gyrocompass import Gyrocompass
+
+    c = Gyrocompass(latitude)
+    tuned = Gyrocompass.schuler_tuned(latitude)
+    data: dict[str, Any] = {
+        "latitude": c.latitude,
+        "angular_momentum": c.angular_momentum,
+        "pendulosity": c.pendulosity,
+        "damping": c.damping,
+        "period": c.period,
+        "schuler_period": Gyrocompass.schuler_period(),
+        "schuler_angular_momentum": tuned.angular_momentum,
+        "settle_error": c.settle_error,
+        "settle_tilt": c.settle_tilt,
+        "speed": speed,
+        "course": course,
+        "speed_error": c.speed_error(speed, course),
+        "speed_error_small_angle": c.speed_error_small_angle(speed, course),
+    }
+    require_finite(data)
+    deg = math.degrees
+    data["summary"] = (
+        f"At {deg(c.latitude):.4g}° the compass swings about the meridian with a period of "
+        f"{c.period / 60:.4g} min (Schuler's {data['schuler_period'] / 60:.4g} min needs "
+        f"H = {tuned.angular_momentum:.4g} kg·m²/s); it settles {deg(c.settle_error):+.3g}° "
+        f"off (latitude error), and on this course {deg(data['speed_error']):+.3g}° more "
+        "(speed error)."
+    )
+    rows = [
+        ("settling period", f"{c.period / 60:.6g} min"),
+        ("Schuler period 2π√(R/g)", f"{data['schuler_period'] / 60:.6g} min"),
+        ("H for Schuler tuning", f"{tuned.angular_momentum:.6g} kg·m²/s"),
+        ("latitude (damping) error", f"{deg(c.settle_error):+.6g}°"),
+        ("speed error", f"{deg(data['speed_error']):+.6g}°"),
+        ("speed error, small-angle form", f"{deg(data['speed_error_small_angle']):+.6g}°"),
+    ]
+    notes = [
+        f"H = {c.angular_momentum:g} kg·m²/s, m g l = {c.pendulosity:g} N·m, ζ = {c.damping:g}; "
+        "errors: reading minus truth (positive reads high)."
+    ]
+    _report(data, as_json, "the gyrocompass", ("quantity", "value"), rows, notes=notes)

@@ -26,16 +26,13 @@ from . import _core
 from . import _display as show
 from ._units import is_quantity
 from ._validate import FloatArray, as_callable, as_count, as_float_array, as_scalar, as_vector3
-from .dynamics import DEFAULT_MAX_STEPS, Trajectory
+from .dynamics import Trajectory
 from .errors import ArgumentTypeError, PoinsotError
 
 __all__ = ["Place", "CarriedTrajectory", "Gyrocompass", "CompassRun"]
 
-#: Defaults of :class:`Gyrocompass`: H (kg·m²/s), P = m g l (N·m), ζ, moments (kg·m²).
-DEFAULT_ANGULAR_MOMENTUM = 40.0
-DEFAULT_PENDULOSITY = 1.2
-DEFAULT_DAMPING = 0.3
-DEFAULT_INERTIA = (0.5, 1.0, 1.0)
+_D = _core.DEFAULTS["Gyrocompass.__init__"]
+_RUN = _core.DEFAULTS["Gyrocompass.simulate"]
 
 
 def _si(value: Any, name: str, unit: str) -> float:
@@ -308,6 +305,7 @@ class Gyrocompass(show.Displayed):
         λ (rad, north-positive; or a pint angle), not at a pole (no meridian there).
     angular_momentum:
         H (kg·m²/s, > 0; default 40: a 0.02 kg·m² rotor at 20,000 rpm). Zero spin is refused.
+        Defaults come from the core (``poinsot._core.DEFAULTS["Gyrocompass.__init__"]``).
     pendulosity:
         P = m g l (N·m, > 0; default 1.2: with the default H, Schuler-tuned near 45°).
     damping:
@@ -332,11 +330,11 @@ class Gyrocompass(show.Displayed):
     def __init__(
         self,
         latitude: Any,
-        angular_momentum: Any = DEFAULT_ANGULAR_MOMENTUM,
-        pendulosity: Any = DEFAULT_PENDULOSITY,
+        angular_momentum: Any = _D["angular_momentum"],
+        pendulosity: Any = _D["pendulosity"],
         *,
-        damping: Any = DEFAULT_DAMPING,
-        inertia: Any = DEFAULT_INERTIA,
+        damping: Any = _D["damping"],
+        inertia: Any = _D["inertia"],
         earth: Any = None,
     ) -> None:
         self._core = _core.GyrocompassCore(
@@ -352,10 +350,10 @@ class Gyrocompass(show.Displayed):
     def schuler_tuned(
         cls,
         latitude: Any,
-        pendulosity: Any = DEFAULT_PENDULOSITY,
+        pendulosity: Any = _D["pendulosity"],
         *,
-        damping: Any = DEFAULT_DAMPING,
-        inertia: Any = DEFAULT_INERTIA,
+        damping: Any = _D["damping"],
+        inertia: Any = _D["inertia"],
         earth: Any = None,
     ) -> Gyrocompass:
         """The compass whose period is Schuler's 2π √(R/g) (84.4 min on the default Earth):
@@ -478,16 +476,16 @@ class Gyrocompass(show.Displayed):
     def simulate(
         self,
         duration: Any,
-        heading0: Any = 0.0,
+        heading0: Any,
         *,
         tilt0: Any = None,
-        speed: Any = 0.0,
-        course: Any = 0.0,
-        method: str = "dop853",
-        samples: int = 1001,
-        rtol: float = 1e-10,
-        atol: float = 1e-12,
-        max_steps: int = DEFAULT_MAX_STEPS,
+        speed: Any = None,
+        course: Any = None,
+        method: str = _RUN["method"],
+        samples: int = _RUN["samples"],
+        rtol: float = _RUN["rtol"],
+        atol: float = _RUN["atol"],
+        max_steps: int = _RUN["max_steps"],
         progress: Callable[[float], Any] | None = None,
     ) -> CompassRun:
         """Integrates the compass as a rigid gyrostat carried by the local frame (the full
@@ -505,7 +503,7 @@ class Gyrocompass(show.Displayed):
         speed, course:
             The ship's speed (m/s, ≥ 0) and course (rad, clockwise from north), kept constant:
             a rhumb line from the compass's latitude (the ship's acceleration over the curved,
-            turning Earth acts on the pendulous element). 0: at rest.
+            turning Earth acts on the pendulous element). None: at rest.
         method, samples, rtol, atol, max_steps, progress:
             As :func:`poinsot.simulate` ("dop853" or "rk4" — no fixed step is taken by
             "rk4" here: use "dop853").
@@ -520,8 +518,8 @@ class Gyrocompass(show.Displayed):
             else _si(duration, "duration", "second"),
             _si(heading0, "heading0", "radian"),
             tilt,
-            _si(speed, "speed", "meter / second"),
-            _si(course, "course", "radian"),
+            0.0 if speed is None else _si(speed, "speed", "meter / second"),
+            0.0 if course is None else _si(course, "course", "radian"),
             method if isinstance(method, str) else str(method),
             as_count(samples, "samples", 2),
             as_scalar(rtol, "rtol"),

@@ -138,4 +138,23 @@ def test_bad_input_refused_by_name():
     with pytest.raises(ps.PoinsotError, match="^heading0"):
         c.simulate(10.0, float("nan"))
     with pytest.raises(ps.PoinsotError, match="^duration"):
-        c.simulate(-1.0)
+        c.simulate(-1.0, 0.0)
+
+
+def test_cli_gyrocompass_json_and_refusal():
+    import json
+
+    from click.testing import CliRunner
+    from poinsot.cli import main
+
+    res = CliRunner().invoke(
+        main, ["gyrocompass", "--latitude", "50deg", "--speed", "20kn", "--json"]
+    )
+    assert res.exit_code == 0, res.output
+    data = json.loads(res.stdout)
+    c = ps.Gyrocompass(math.radians(50))
+    assert data["speed_error"] == pytest.approx(c.speed_error(20 * 1852 / 3600, 0.0), rel=1e-12)
+    assert data["period"] == pytest.approx(c.period, rel=1e-12)
+    assert data["settle_error"] == pytest.approx(c.settle_error, rel=1e-12)
+    res = CliRunner().invoke(main, ["gyrocompass", "--latitude", "90deg"])
+    assert res.exit_code == 1 and "latitude" in res.output

@@ -134,6 +134,17 @@ fn calls() -> Vec<(&'static str, Row)> {
             "method" => d::SIMULATE_METHOD, "samples" => d::SIMULATE_SAMPLES,
         }, d::SIMULATE_TOLERANCES)),
         ("simulate_batch", batch()),
+        ("Gyrocompass.__init__", row! {
+            "angular_momentum" => d::COMPASS_ANGULAR_MOMENTUM, "pendulosity" => d::COMPASS_PENDULOSITY,
+            "damping" => d::COMPASS_DAMPING, "inertia" => d::COMPASS_INERTIA,
+        }),
+        ("Gyrocompass.schuler_tuned", row! {
+            "pendulosity" => d::COMPASS_PENDULOSITY, "damping" => d::COMPASS_DAMPING,
+            "inertia" => d::COMPASS_INERTIA,
+        }),
+        ("Gyrocompass.simulate", with(row! {
+            "method" => d::COMPASS_METHOD, "samples" => d::COMPASS_SAMPLES,
+        }, d::COMPASS_TOLERANCES)),
         ("FreeRigidBody.contact_point", row! { "frame" => d::CONTACT_POINT_FRAME }),
         ("FreeRigidBody.contact_polhode", polhode()),
         ("FreeRigidBody.polhode", polhode()),

@@ -47,6 +47,14 @@ pub struct PyGyrocompass {
 
 type Args = (f64, f64, f64, f64, [f64; 3], f64, f64, f64);
 
+/// A compass run's (t, heading, tilt, latitude) arrays (s, rad).
+type CompassArrays<'py> = (
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<f64>>,
+);
+
 #[export]
 impl PyGyrocompass {
     /// latitude (rad), H (kg·m²/s), P = m g l (N·m), damping ratio ζ, inertia (3,) (kg·m²),
@@ -201,12 +209,7 @@ impl PyGyrocompass {
         atol: f64,
         max_steps: usize,
         progress: Option<Bound<'py, PyAny>>,
-    ) -> PyResult<(
-        Bound<'py, PyArray1<f64>>,
-        Bound<'py, PyArray1<f64>>,
-        Bound<'py, PyArray1<f64>>,
-        Bound<'py, PyArray1<f64>>,
-    )> {
+    ) -> PyResult<CompassArrays<'py>> {
         let opts = options(method, samples, rtol, atol, max_steps)?;
         let ship = Ship::new(speed, course).py()?;
         let c = self.inner;

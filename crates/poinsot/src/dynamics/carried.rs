@@ -36,6 +36,8 @@ pub trait Carrying {
 
 /// A carrying frame: a steadily moving frame with the pivot fixed in it, or a place on the
 /// rotating Earth.
+// One carrier per run, passed by reference: the size of the steady frame's variant is no cost.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Carrier {
     /// A frame in steady motion ([`SteadyMotion`] from its state at `t = 0`), the pivot fixed

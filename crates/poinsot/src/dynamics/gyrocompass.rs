@@ -39,6 +39,26 @@ use crate::error::{check_finite, check_positive, num, Error, Result};
 use crate::rotation::quaternion_to_mat3_unchecked;
 use crate::{Mat3, Vec3};
 
+/// The default rotor angular momentum H (kg·m²/s): a 0.02 kg·m² rotor at 20,000 rpm.
+pub const COMPASS_ANGULAR_MOMENTUM: f64 = 40.0;
+/// The default pendulosity P = m g l (N·m): with the default H, Schuler-tuned near 45°.
+pub const COMPASS_PENDULOSITY: f64 = 1.2;
+/// The default damping ratio ζ: the swing shrinks about 2.7 times per half period.
+pub const COMPASS_DAMPING: f64 = 0.3;
+/// The default moments of the sensitive element about its pivot (kg·m², (spin, horizontal,
+/// up)): the nutation H/I is then 40 rad/s, about 10⁵ DOP853 steps per simulated hour.
+pub const COMPASS_INERTIA: [f64; 3] = [0.5, 1.0, 1.0];
+/// The default method of [`Gyrocompass::simulate`]: DOP853.
+pub const COMPASS_METHOD: &str = "dop853";
+/// The default samples of [`Gyrocompass::simulate`].
+pub const COMPASS_SAMPLES: usize = 1001;
+/// The default tolerances of [`Gyrocompass::simulate`] (as `simulate`'s).
+pub const COMPASS_TOLERANCES: crate::integrate::Tolerances = crate::integrate::Tolerances {
+    rtol: 1e-10,
+    atol: 1e-12,
+    max_steps: crate::limits::DEFAULT_MAX_STEPS,
+};
+
 /// A pendulous gyrocompass at a latitude on the Earth.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Gyrocompass {

@@ -15,7 +15,10 @@ mod torque;
 pub use batch::{simulate_batch, BatchResult};
 pub use carried::{simulate_carried, CarriedTorque, CarriedTrajectory, Carrier, Carrying, Load};
 pub use equations::{angular_acceleration, angular_acceleration_principal, power, quaternion_rate};
-pub use gyrocompass::{CompassRun, Gyrocompass, Ship, VISCOUS_FACTOR};
+pub use gyrocompass::{
+    CompassRun, Gyrocompass, Ship, COMPASS_ANGULAR_MOMENTUM, COMPASS_DAMPING, COMPASS_INERTIA,
+    COMPASS_METHOD, COMPASS_PENDULOSITY, COMPASS_SAMPLES, COMPASS_TOLERANCES, VISCOUS_FACTOR,
+};
 pub use model::BodyInertia;
 pub use simulate::{default_step, simulate, Method, SimulateOptions, Trajectory};
 pub use splitting::{free_steps, kicked_step, FreeStrang, SplitState};
