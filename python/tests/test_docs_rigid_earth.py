@@ -34,7 +34,7 @@ def _glued() -> dict[str, Any]:
 
     namespace: dict[str, Any] = {"glue": glue, "__name__": "page"}
     for source in CELL.findall(text):  # the page's cells in order, as the build runs them
-        code = source.replace("from myst_nb import glue\n", "")
+        code = source.replace("from myst_nb import glue\n", "").replace("%matplotlib inline\n", "")
         exec(compile(code, str(PAGE), "exec"), namespace)
     import matplotlib.pyplot as plt
 
@@ -73,6 +73,13 @@ def test_the_glued_values_are_rigid_earths_and_the_catalogues() -> None:
     assert v["sim_deps"] == pytest.approx(v["deps"], rel=0.02)
     # the real pole's Chandler period, near the catalogue's observed one
     assert abs(v["fit_period"] - v["chandler_obs"]) < 5.0
+
+
+def test_the_page_shows_its_figures_under_the_agg_backend() -> None:
+    """make test and make docs run with MPLBACKEND=Agg, under which a kernel shows no figure
+    unless the inline backend is asked for first (the built page had none without it)."""
+    first = CELL.findall(PAGE.read_text(encoding="utf-8"))[0]
+    assert first.startswith("%matplotlib inline\n")
 
 
 def test_negative_control_an_unglued_key_is_reported() -> None:
