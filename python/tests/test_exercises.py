@@ -472,3 +472,58 @@ def test_the_teachers_pages_console_answers() -> None:
     for command, printed in shown:
         res = CliRunner().invoke(main, command.split())
         assert res.exit_code == 0 and res.stdout.strip() == printed.strip(), command
+
+
+# ---- the unit's long questions with a numeric answer each have a template --------------------------
+
+#: The unit's long questions (seed/unit-2-moving-frames-and-rigid-bodies.md, "Long Questions")
+#: that have a numeric answer, and the templates that ask them (L 6, Euler's theorem, has none).
+LONG_QUESTIONS = {
+    1: ["car-plumb-bob"],  # coordinates with relative translational motion
+    2: ["turntable-bug"],  # rotating coordinate systems: velocity and acceleration
+    3: ["train-coriolis", "river-tilt"],  # the Coriolis force
+    4: ["plumb-line", "g-effective"],  # the motion of the Earth
+    5: ["dropped-ball", "southward-deflection"],  # the freely falling particle
+    7: ["dumbbell-energy", "dumbbell-torque"],  # angular momentum and kinetic energy
+    8: ["composite-inertia", "principal-moments"],  # the inertia tensor
+    9: ["euler-power"],  # Euler's equations; the work of the torque and dT/dt
+    10: ["free-top-precession", "free-top-cones"],  # torque-free motion
+    11: ["euler-rates"],  # Euler's angles
+    12: ["top-slow-precession", "top-fast-precession", "top-min-spin", "top-nutation"],
+}
+
+
+def test_every_long_question_with_a_numeric_answer_has_a_template() -> None:
+    missing = {q: n for q, names in LONG_QUESTIONS.items() for n in names if n not in NAMES}
+    assert not missing, missing
+    assert "moving frames" in x.TOPICS and x.TOPICS.index("moving frames") == 0
+
+
+@pytest.mark.parametrize(
+    ("name", "drawn", "expected"),
+    [
+        # 100 km/h in 10 s: a = 2.778 m/s², tan α = a/g: 15.815° (worked by hand)
+        ("car-plumb-bob", {"speed": 100, "time": 10}, 15.81501),
+        # 30 rpm = π rad/s, r = 10 cm, u = 5 cm/s: √((π²·0.1)² + (2π·0.05)²) = 1.03575 m/s²
+        ("turntable-bug", {"rate": 30, "speed": 5, "radius": 10}, 1.035754),
+        # ω·N = 2·10 − 3·20 + 4·30 = 80 mW, whatever the moments (2.75–2.76)
+        (
+            "euler-power",
+            {"I1": 100, "I2": 200, "I3": 300, "w1": 2, "w2": 3, "w3": 4}
+            | {"N1": 10, "N2": -20, "N3": 30},
+            80.0,
+        ),
+    ],
+)
+def test_the_long_questions_templates_hand_worked_numbers(
+    name: str, drawn: dict, expected: float
+) -> None:
+    v = x.template(name).fixed(**drawn)
+    assert v.answer == pytest.approx(expected, rel=1e-6)
+
+
+def test_the_turntable_bugs_missing_coriolis_term_is_a_known_mistake() -> None:
+    v = x.generate(["turntable-bug"], n=1, seed=7)[0]
+    centripetal = v.values.rate**2 * v.values.radius  # m/s², the answer without 2ω×u
+    c = x.check("turntable-bug", v.seed, centripetal)
+    assert not c.right and c.mistake == "no Coriolis term" and c.step == 3

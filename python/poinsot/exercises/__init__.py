@@ -2,7 +2,7 @@
 worked solutions from :mod:`poinsot.derive`, and files for a printed sheet or a quiz::
 
     from poinsot import exercises
-    exercises.names()                                   # ['dropped-ball', ...]
+    exercises.names()                                   # ['car-plumb-bob', ...]
     sheet = exercises.generate(["earth"], n=30, seed=2026)
     sheet[0].statement, sheet[0].answer, sheet[0].tolerance, sheet[0].steps
     files = exercises.render(sheet, "moodle-xml")      # {"quiz.xml": "..."}

@@ -10,17 +10,24 @@ from .._units import parse as parse_suffixed
 from ..errors import PoinsotError
 from ._template import Template, Variant, register, registry, variant_seed
 from ._text import si_factor, ureg
-from .entries import bodies, earth, tops
+from .entries import bodies, earth, frames, tops
 
 __all__ = ["TOPICS", "Check", "check", "generate", "names", "template", "templates"]
 
 #: The topics, in the order of the course unit.
-TOPICS: tuple[str, ...] = ("earth", "rigid bodies", "free tops", "euler angles", "heavy top")
+TOPICS: tuple[str, ...] = (
+    "moving frames",
+    "earth",
+    "rigid bodies",
+    "free tops",
+    "euler angles",
+    "heavy top",
+)
 
 #: The most variants one set may hold.
 MAX_VARIANTS = 2000
 
-register(*earth.ENTRIES, *bodies.ENTRIES, *tops.ENTRIES)
+register(*frames.ENTRIES, *earth.ENTRIES, *bodies.ENTRIES, *tops.ENTRIES)
 
 
 def names() -> list[str]:

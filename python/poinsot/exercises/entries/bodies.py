@@ -1,5 +1,6 @@
-"""Templates of rigid bodies (the unit's eqs. 2.43–2.66): the inertia of a composite body and its
-principal moments, the rotating dumbbell's kinetic energy and holding torque."""
+"""Templates of rigid bodies (the unit's eqs. 2.43–2.76): the inertia of a composite body and its
+principal moments, the rotating dumbbell's kinetic energy and holding torque, and the power of a
+torque by Euler's equations (L 9)."""
 
 from __future__ import annotations
 
@@ -329,4 +330,109 @@ DUMBBELL_ENERGY = Template(
     answer_range=(1e-6, 1e3),
 )
 
-ENTRIES = (COMPOSITE, POINT_MASSES, DUMBBELL_TORQUE, DUMBBELL_ENERGY)
+# ---- Euler's equations and the work of the torque (2.72, 2.75–2.76; L 9) ---------------------------
+
+_EULER_ARGS = ("I1", "I2", "I3", "w1", "w2", "w3")
+
+
+def _euler_extra(v: Any) -> dict[str, float]:
+    """ω̇ (rad/s²) from Euler's equations (2.72) of the derivation, for the steps and the answer."""
+    args = (*_EULER_ARGS, "N1", "N2", "N3")
+    return {
+        f"wdot{i + 1}": Derived("", "euler_equations", "2.72", args, "", component=i).evaluate(v)
+        for i in range(3)
+    }
+
+
+def _power(v: Any) -> float:
+    """dT/dt = Σ Iᵢ ωᵢ ω̇ᵢ (W): the derivation's 2.76 with ω̇ from Euler's equations 2.72."""
+    args = (*_EULER_ARGS, "wdot1", "wdot2", "wdot3")
+    return Derived("", "euler_equations", "2.76", args, "").evaluate(v)
+
+
+def _dot_wn(v: Any) -> float:
+    return v.w1 * v.N1 + v.w2 * v.N2 + v.w3 * v.N3
+
+
+EULER_POWER = Template(
+    name="euler-power",
+    topic="rigid bodies",
+    difficulty=2,
+    title="The power of a torque, by Euler's equations",
+    params=(
+        Param("I1", "kg*cm**2", 50, 500, 10),
+        Param("I2", "kg*cm**2", 50, 500, 10),
+        Param("I3", "kg*cm**2", 50, 500, 10),
+        Param("w1", "rad/s", 1, 10, 0.5),
+        Param("w2", "rad/s", 1, 10, 0.5),
+        Param("w3", "rad/s", 1, 10, 0.5),
+        Param("N1", "mN*m", -50, 50, 5),
+        Param("N2", "mN*m", -50, 50, 5),
+        Param("N3", "mN*m", -50, 50, 5),
+    ),
+    text="A rigid body has principal moments of inertia I₁ = {I1}, I₂ = {I2}, I₃ = {I3}. At one "
+    "instant it turns with ω = ({w1}, {w2}, {w3}) along its principal axes, and a torque with "
+    "components N₁ = {N1}, N₂ = {N2}, N₃ = {N3} along the same axes acts on it.",
+    question="At what rate is its kinetic energy changing at that instant, in mW?",
+    unit="mW",
+    answer=_power,
+    check=_dot_wn,
+    agree=1e-9,
+    agree_why="ω̇ from Euler's equations (2.72) and dT/dt = Σ Iᵢωᵢω̇ᵢ (2.76), both from the "
+    "derivation, against the energy theorem ω·N (2.75) by hand",
+    steps=(
+        Derived(
+            "ω̇₁ from Euler's first equation",
+            "euler_equations",
+            "2.72",
+            (*_EULER_ARGS, "N1", "N2", "N3"),
+            r"\dot\omega_1",
+            "rad/s**2",
+            component=0,
+        ),
+        Derived(
+            "ω̇₂ from Euler's second equation",
+            "euler_equations",
+            "2.72",
+            (*_EULER_ARGS, "N1", "N2", "N3"),
+            r"\dot\omega_2",
+            "rad/s**2",
+            component=1,
+        ),
+        Derived(
+            "ω̇₃ from Euler's third equation",
+            "euler_equations",
+            "2.72",
+            (*_EULER_ARGS, "N1", "N2", "N3"),
+            r"\dot\omega_3",
+            "rad/s**2",
+            component=2,
+        ),
+        Derived(
+            "dT/dt = ω·I·ω̇; the gyroscopic terms cancel, leaving ω·N (2.75–2.76)",
+            "euler_equations",
+            "2.76",
+            (*_EULER_ARGS, "wdot1", "wdot2", "wdot3"),
+            r"\frac{dT}{dt}",
+            "mW",
+        ),
+    ),
+    mistakes=(
+        Mistake(
+            "half the power",
+            "took dT/dt = ½ ω·N from T = ½ ω·I·ω: the derivative of the square gives a factor 2",
+            5,
+            lambda v: _dot_wn(v) / 2,
+        ),
+        Mistake(
+            "one axis only",
+            "kept only the first axis, I₁ω₁ω̇₁",
+            5,
+            lambda v: v.I1 * v.w1 * v.wdot1,
+        ),
+    ),
+    extra=_euler_extra,
+    answer_range=(-1e4, 1e4),
+)
+
+ENTRIES = (COMPOSITE, POINT_MASSES, DUMBBELL_TORQUE, DUMBBELL_ENERGY, EULER_POWER)
