@@ -2229,11 +2229,11 @@ def _exercises_module() -> Any:
 def exercises(topics: tuple[str, ...], n: int, seed: int, format: str, out: str | None) -> None:
     """Problem sets with checked answers.
 
-    TOPIC is a topic (earth, "rigid bodies", "free tops", "euler angles", "heavy top"), a
-    template's name, or all. Each problem is a seeded variant whose answer poinsot computed by
-    two independent routes; the solution sheet has worked steps from poinsot.derive. The same
-    seed gives the same files on every machine. Without --out the files are printed (pdf needs
-    --out and a TeX engine: apt install texlive-latex-base latexmk).
+    TOPIC is a topic ("moving frames", earth, "rigid bodies", "free tops", "euler angles",
+    "heavy top"), a template's name, or all. Each problem is a seeded variant whose answer
+    poinsot computed by two independent routes; the solution sheet has worked steps from
+    poinsot.derive. The same seed gives the same files on every machine. Without --out the files
+    are printed (pdf needs --out and a TeX engine: apt install texlive-latex-base latexmk).
 
     \b
     Examples:
