@@ -94,6 +94,11 @@ ARRAY_CALLS: dict[str, tuple[str, str]] = {
         _SPHERE.format(n=1000, m=2600),
         "ps.RigidBody.from_mesh(v, f, density=1.0, merge_vertices=True)",
     ),
+    # the real pole: each trial period a least-squares pass over the samples, some 200 passes
+    "fit_wobble": (
+        "t = np.linspace(0.0, 2e9, 2 * 10**6)\nx = np.cos(1.68e-7 * t)\ny = -np.sin(1.68e-7 * t)",
+        "ps.fit_wobble(t, x, y)",
+    ),
     "free_body_states": (
         _PTS.format(n=10**6) + "\nI = np.ones((len(x), 3)) * [1.0, 2.0, 3.0]",
         "ps.free_body_states(I, x + [0.1, 0.2, 0.3], np.linspace(0.0, 1.0, 2))",
