@@ -109,4 +109,3 @@ else:
     source = "the markdown sheet (matplotlib)"
 fig.savefig(png, dpi=80)
 print(f"wrote {png}: the first page of the problem sheet, from {source}")
-plt.show()
