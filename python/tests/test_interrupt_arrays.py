@@ -69,6 +69,10 @@ GIL_CALLS = {
         "b.polhode(3 * 10**6)",
     ),
     "special.jacobi": ("t = np.linspace(0.0, 100.0, 3 * 10**6)", "ps.special.jacobi(t, 0.7)"),
+    "fit_wobble": (
+        "t = np.linspace(0.0, 2e9, 2 * 10**4)\nx = np.cos(1.68e-7 * t)\ny = -np.sin(1.68e-7 * t)",
+        "ps.fit_wobble(t, x, y)",
+    ),
     "Earth.effective_gravity": (
         "e = ps.Earth()\nt = np.linspace(0, 1, 3 * 10**6)",
         "e.effective_gravity(t)",
