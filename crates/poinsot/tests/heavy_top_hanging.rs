@@ -271,14 +271,15 @@ proptest! {
         let r = a.euler_rates(0.0).unwrap();
         let scale = phd.abs().max(psd.abs()).max(1.0);
         prop_assert!((r[0] - phd).abs() < 1e-12 * scale, "phi_dot {} vs {}", r[0], phd);
-        // θ̇ comes back from θ̇² (the energy's turning-point form), whose round-off is that of the
-        // swing's largest θ̇², w2 (bounded here by the given θ̇ plus the pendulum's and the rates'
-        // scale over the amplitude χ0): near a turning point (|θ̇| ≪ √w2) the error of √ is
-        // ε·w2/|θ̇|, the conditioning of the square root, not a loss of the state.
+        // θ̇ to round-off of the swing's scale χ0, and next to a turning point (|θ̇| ≪ χ0 × 1/s)
+        // to round-off of θ̇ itself: the phase's small sn² or cn² is taken from θ̇₀, not from a
+        // difference of nearly equal w's (which left θ̇ the error ε·w2/|θ̇|, w2 the swing's
+        // largest θ̇²: 1.1e-13 at θ̇ = 3.2e-10, δ = 1e-3, the regressions file's second case).
         let thd = thd_rel * chi0;
-        let w2 = thd * thd + 4.0 * chi0 * chi0 * (1.0 + phd * phd + psd * psd);
-        let tol = 1e-12 * chi0.max(thd.abs()) + 16.0 * f64::EPSILON * w2 / thd.abs();
-        prop_assert!((r[1] - thd).abs() <= tol, "theta_dot {:e} vs {:e}", r[1], thd);
+        prop_assert!((r[1] - thd).abs() <= 1e-12 * chi0.max(thd.abs()), "theta_dot {:e} vs {:e}", r[1], thd);
+        if thd_rel.abs() < 1e-2 {
+            prop_assert!((r[1] - thd).abs() <= 1e-12 * thd.abs(), "theta_dot {:e} vs {:e} (turning point)", r[1], thd);
+        }
         prop_assert!((r[2] - psd).abs() < 1e-12 * scale, "psi_dot {} vs {}", r[2], psd);
         let x = a.euler_angles(t).unwrap();
         let y = a.euler_angles_carlson(t).unwrap();

@@ -420,7 +420,7 @@ impl HeavyTop {
             }
         } else {
             // Built in the time unit 1/σ, then carried to seconds (exactly: σ = 2ᵏ).
-            let mut n = Nutation::new(i1, i3, r, turning, start, from_state)?;
+            let mut n = Nutation::new(i1, i3, r, turning, start, from_state, ts.sigma)?;
             n.rescale_time(ts.sigma);
             Motion::Nutating(Box::new(n))
         };

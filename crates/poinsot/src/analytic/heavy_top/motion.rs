@@ -144,6 +144,42 @@ struct Integrals {
     nv: f64,
 }
 
+/// sn²τ₀ and cn²τ₀ next to a turning point. There the smaller is a difference of nearly equal
+/// w's (w₀ − w₁ or w₂ − w₀), known only to ε w/(w₂ − w₁) absolutely, and θ̇₀ ∝ sn cn would
+/// come back with the error ε w/(w₂ − w₁)/(sn cn)² relatively; `g` = sn² cn² dn² from θ̇₀
+/// itself (no cancellation) gives the smaller one to a few ε relatively: s(1 − s)(1 − m s) = g
+/// for sn² = s, c(1 − c)(1 − m + m c) = g for cn² = c (each solved by a few steps of a
+/// contraction, the second as the quadratic m c² + (1 − m) c = g/(1 − c)). Away from a turning
+/// point (the smaller above 1/4), or where `g` is not a usable number, the w's are kept.
+fn near_turning_point(s2: f64, c2: f64, m: f64, mc: f64, g: f64) -> (f64, f64) {
+    if !(g.is_finite() && g >= 0.0) || s2.min(c2) > 0.25 {
+        return (s2, c2);
+    }
+    // A value outside [0, 1/2] (θ̇₀ and the cubic's roots not of one motion to round-off)
+    // keeps the w's.
+    let usable = |x: f64| (0.0..=0.5).contains(&x);
+    if s2 <= c2 {
+        let mut s = s2;
+        for _ in 0..4 {
+            s = g / ((1.0 - s) * (1.0 - m * s));
+            if !usable(s) {
+                return (s2, c2);
+            }
+        }
+        (s, 1.0 - s)
+    } else {
+        let mut c = c2;
+        for _ in 0..4 {
+            let h = g / (1.0 - c);
+            c = 2.0 * h / (mc + (mc * mc + 4.0 * m * h).sqrt());
+            if !usable(c) {
+                return (s2, c2);
+            }
+        }
+        (1.0 - c, c)
+    }
+}
+
 impl Nutation {
     pub(crate) fn new(
         i1: f64,
@@ -152,6 +188,7 @@ impl Nutation {
         t: &Turning,
         start: &EulerState,
         from_state: bool,
+        sigma: f64,
     ) -> Result<Self> {
         let (p, pc) = r.p_and_complement(t);
         if p.is_nan() || p <= 0.0 {
@@ -188,6 +225,12 @@ impl Nutation {
             } else {
                 (0.0, 1.0)
             };
+            let (s2, c2) = near_turning_point(s2, c2, m, mc, {
+                // sn² cn² dn² from θ̇₀ (`rates_at`: θ̇ = −2κ (w₂ − w₁) dn cn sn/√(w v)), θ̇₀ in
+                // the time unit 1/σ in which κ is.
+                let q = (start.theta_dot / sigma) * (w0 * v0).sqrt() / (2.0 * kappa * t.spread());
+                q * q
+            });
             // Nearer θ₁ (cn² < sn²): the offset v₀ = K − |τ₀| itself, from sn²v₀ = c²/(1 − m + m c²)
             // (cn(K − v) = k' sd v): v₀ = F(arcsin √x | m) = √x R_F(1 − x, 1 − m x, 1) with
             // 1 − x = (1 − m) s²/D, 1 − m x = (1 − m)/D, D = 1 − m + m c²: no cancellation.
