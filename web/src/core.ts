@@ -15,9 +15,9 @@ export const coreStatus = core.coreStatus;
 
 export const {
   version, start, errorClasses, eulerToMatrix, matrixToEuler, rotationAxis, screwAxis, bodyAngularVelocity,
-  eulerRates, axisStability, simulateParticle, sampleTimes,
+  eulerRates, axisStability, simulateParticle, sampleTimes, fitWobble,
   AxisStability, Earth, EulerAngles, Fall, FixedMotion, FoucaultRun, FreeRigidBody, FreeSymmetricTop, HeavyTop,
-  InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, RigidEarth, Screw, SpringParticle, SteadyPrecession,
+  InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, RigidEarth, Screw, SpringParticle, SteadyPrecession, WobbleFit, WobbleTerm,
 } = core;
 export type AxisStability = raw.AxisStability;
 export type Earth = raw.Earth;
@@ -37,13 +37,15 @@ export type RigidEarth = raw.RigidEarth;
 export type Screw = raw.Screw;
 export type SpringParticle = raw.SpringParticle;
 export type SteadyPrecession = raw.SteadyPrecession;
+export type WobbleFit = raw.WobbleFit;
+export type WobbleTerm = raw.WobbleTerm;
 
 // A new export of the binding must be listed above: tsc fails here until it is.
 const exported = {
   version, start, errorClasses, eulerToMatrix, matrixToEuler, rotationAxis, screwAxis, bodyAngularVelocity,
-  eulerRates, axisStability, simulateParticle, sampleTimes,
+  eulerRates, axisStability, simulateParticle, sampleTimes, fitWobble,
   AxisStability, Earth, EulerAngles, Fall, FixedMotion, FoucaultRun, FreeRigidBody, FreeSymmetricTop, HeavyTop,
-  InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, RigidEarth, Screw, SpringParticle, SteadyPrecession,
+  InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, RigidEarth, Screw, SpringParticle, SteadyPrecession, WobbleFit, WobbleTerm,
 };
 type Unlisted = Exclude<keyof typeof raw, keyof typeof exported | "default" | "initSync" | "__wbg_reset_state">;
 export const everyExportListed: [Unlisted] extends [never] ? true : Unlisted = true;

@@ -132,6 +132,27 @@ test("earthtop: the axis turns westward about the ecliptic pole at the core's ra
   await page.close();
 });
 
+test("earthtop: the observed Chandler period is the core's fit of the path shown, as Python's fit_wobble gives it", async () => {
+  const script = `
+import json, numpy as np, poinsot
+p = json.load(open("web/src/generated/pole_path.json")); a = np.pi / 648000
+m = np.array(p["mjd"], float)
+f = poinsot.fit_wobble((m - m[0]) * 86400, np.array(p["x"]) * a, np.array(p["y"]) * a)
+print(json.dumps([f.chandler.period, f.chandler.period_sigma]))`;
+  const py = process.env.PYTHON ?? path.join(repo, ".venv/bin/python");
+  const [period, sigma] = JSON.parse(execFileSync(py, ["-c", script], { encoding: "utf8", cwd: repo }));
+  const { page, errors } = await open("?scene=earthtop&paused=1");
+  const r = await readouts(page);
+  // The period is a golden-section optimum: the two builds agree to its tolerance, not to ε.
+  assert.ok(Math.abs(r.chandlerObserved / period - 1) < 1e-8, `page ${r.chandlerObserved}, python ${period}`);
+  assert.equal(await shown(page, "chandlerObserved"), `${Math.round(period / 86400)} d`);
+  // Near the 433 days of the literature, well below the 446 of the oceanless elastic Earth.
+  assert.ok(Math.abs(period / 86400 - 433) < 3 && sigma / 86400 < 2, `${period / 86400} ± ${sigma / 86400} d`);
+  assert.ok(r.chandlerPeriod - r.chandlerObserved > 10 * 86400);
+  assert.deepEqual(errors, []);
+  await page.close();
+});
+
 test("earthtop: the view says what it exaggerates and the inset draws the real pole with its source", async () => {
   const { page, errors } = await open("?scene=earthtop&paused=1&t=3", { width: 1280, height: 800 });
   const note = await page.locator(".earthtop-note").innerText();

@@ -148,6 +148,13 @@ function worker({ seed, calls, deadlineMs }) {
       [FRAME, names()],
       [() => new core.SpringParticle(1, 2), names()],
       [() => new core.RigidEarth(3.273795e-3, 7.292115e-5, 0.409), names()],
+      [() => {
+        // Thirty years of a pole on a 433-day and an annual circle, every 30 days (the core needs
+        // the beat of the band's shortest period, 380 d, with the annual one: 25.7 years).
+        const t = Array.from({ length: 366 }, (_, i) => i * 30 * 86400);
+        const w = (p) => (2 * Math.PI) / (p * 86400);
+        return core.fitWobble(t, t.map((s) => 1e-6 * Math.cos(w(433) * s) + 4e-7 * Math.cos(w(365.24) * s)), t.map((s) => -1e-6 * Math.sin(w(433) * s)));
+      }, names("t", "x", "y")],
       [() => core.RigidBody.cuboid(1, [1, 2, 3]), names()],
       [() => core.matrixToEuler(ROTATION, "zxz", true), names()],
       [() => core.screwAxis(ROTATION, [1, 2, 3]), names()],

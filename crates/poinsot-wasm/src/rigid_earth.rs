@@ -2,9 +2,12 @@
 //! rigid symmetric top — Euler's free nutation, the Chandler period of the elastic Earth, the
 //! luni-solar precession of the equinoxes and the principal (18.6-year) nutation. SI units,
 //! radians; the core names every argument as the caller knows it, so no error is renamed here.
+//! With it, the fit of the real pole's wobble (`fitWobble`), which the lab's scene "The Earth as
+//! a top" runs on the pole path it shows.
 
-use crate::calls;
+use crate::args::{numbers, Numbers};
 use crate::convert::{getters, Out};
+use crate::{calls, fields};
 use poinsot::earth as ea;
 use wasm_bindgen::prelude::wasm_bindgen;
 
@@ -93,4 +96,91 @@ impl RigidEarth {
         let (dpsi, deps) = self.inner.nutation_amplitudes()?;
         Ok(vec![dpsi, deps])
     }
+}
+
+/// One circle of a fitted wobble (`poinsot.WobbleTerm` in Python): period (s), radius (rad) and
+/// phase at t = 0 (rad), each with its 1-σ uncertainty (0 for a quantity held fixed).
+#[wasm_bindgen]
+#[derive(Debug, Clone)]
+pub struct WobbleTerm {
+    inner: ea::WobbleTerm,
+}
+
+fields!(WobbleTerm {
+    " Period (s)."
+    period period -> number(period);
+    " Its 1-σ uncertainty (s); 0 when the period was held fixed."
+    periodSigma period_sigma -> number(period_sigma);
+    " Radius of the circle (rad)."
+    amplitude amplitude -> number(amplitude);
+    " Its 1-σ uncertainty (rad)."
+    amplitudeSigma amplitude_sigma -> number(amplitude_sigma);
+    " φ at t = 0 (rad, in (−π, π]): the term is A e^{i(±ωt + φ)} in p = x − i y."
+    phase phase -> number(phase);
+    " Its 1-σ uncertainty (rad)."
+    phaseSigma phase_sigma -> number(phase_sigma);
+    " Whether the circle turns prograde (with the Earth's rotation)."
+    prograde prograde -> flag(prograde);
+});
+
+/// The real pole fitted to a trend, the prograde Chandler circle and the annual circles
+/// (`poinsot.WobbleFit` in Python): the core's `fit_wobble`.
+#[wasm_bindgen]
+#[derive(Debug, Clone)]
+pub struct WobbleFit {
+    inner: ea::WobbleFit,
+}
+
+fields!(WobbleFit {
+    " RMS of the residuals over x and y (rad)."
+    residualRms residual_rms -> number(residual_rms);
+    " The chance that noise alone gives a Chandler amplitude this large."
+    chandlerFalseAlarm chandler_false_alarm -> number(chandler_false_alarm);
+    " √((1 + ρ)/(1 − ρ)), the factor by which the formal uncertainties were widened."
+    sigmaInflation sigma_inflation -> number(sigma_inflation);
+});
+
+#[wasm_bindgen]
+impl WobbleFit {
+    /// The prograde Chandler circle.
+    #[wasm_bindgen(getter)]
+    pub fn chandler(&self) -> WobbleTerm {
+        WobbleTerm {
+            inner: self.inner.chandler,
+        }
+    }
+    /// The prograde annual circle.
+    #[wasm_bindgen(getter, js_name = annualPrograde)]
+    pub fn annual_prograde(&self) -> WobbleTerm {
+        WobbleTerm {
+            inner: self.inner.annual_prograde,
+        }
+    }
+    /// The retrograde annual circle.
+    #[wasm_bindgen(getter, js_name = annualRetrograde)]
+    pub fn annual_retrograde(&self) -> WobbleTerm {
+        WobbleTerm {
+            inner: self.inner.annual_retrograde,
+        }
+    }
+    /// Number of samples.
+    #[wasm_bindgen(getter)]
+    pub fn samples(&self) -> f64 {
+        self.inner.samples as f64
+    }
+}
+
+/// Fits the pole (x, y) (rad; x towards Greenwich, y towards 90° W) sampled at times `t` (s,
+/// strictly increasing) to a trend, the prograde Chandler circle (its period searched over the
+/// core's band, 380–500 days) and the annual circles (one tropical year), as Python's
+/// `poinsot.fit_wobble(t, x, y)` with its defaults. Errors name `t`, `x` or `y`.
+#[wasm_bindgen(js_name = fitWobble)]
+pub fn fit_wobble(
+    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] t: Numbers,
+    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] x: Numbers,
+    #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] y: Numbers,
+) -> Out<WobbleFit> {
+    let (t, x, y) = (numbers("t", &t)?, numbers("x", &x)?, numbers("y", &y)?);
+    let inner = ea::fit_wobble(&t, &x, &y, ea::ChandlerPeriod::default(), ea::ANNUAL_PERIOD)?;
+    Ok(WobbleFit { inner })
 }

@@ -12,7 +12,7 @@
 // node Ω(t) = −2π t / T_node (the core's period of the Moon's node), t counted from the start
 // (not a date). The drawing exaggerates, and says so on the view: the bulge, the nod, the time.
 import * as THREE from "three";
-import { Earth, RigidEarth } from "../core";
+import { Earth, fitWobble, RigidEarth } from "../core";
 import { angles, DEG, fmt, type Params, type Readout, type SceneDef } from "../scene";
 import { Arrow, bufferLine, cone, disposeTree } from "../view";
 import pole from "../generated/pole_path.json";
@@ -150,7 +150,7 @@ export const earthTopScene: SceneDef = {
   title: "The Earth as a top",
   short: "Earth top",
   rateUnit: "°",
-  pinned: ["precessionPeriod", "eulerPeriod", "chandlerPeriod", "nutation"],
+  pinned: ["precessionPeriod", "eulerPeriod", "chandlerPeriod", "chandlerObserved"],
   describe:
     "the Earth drawn as a flattened spinning top, its spin axis (white) sweeping a cone (yellow) about the ecliptic pole with a wavy tail where it nods; " +
     "the Sun and the Moon on the ecliptic pull on the equatorial bulge (arrows), and their torques (arrows at the tip of the axis) turn the axis; an inset plots the real pole's path from the IERS data",
@@ -253,6 +253,13 @@ export const earthTopScene: SceneDef = {
     column.append(note);
     ctx.overlay.append(column);
     new PolePlot(column, ctx.overlay.clientWidth >= NARROW_STAGE);
+    // The observed Chandler period: the core's fit of the path the inset shows (a trend, the
+    // prograde Chandler circle, its period searched over 380–500 days, and the annual circles).
+    const fit = fitWobble(POLE.mjd.map((m) => (m - POLE.mjd[0]) * 86400), POLE.x.map((v) => v * ARCSEC), POLE.y.map((v) => v * ARCSEC));
+    const observed = fit.chandler;
+    const [chandlerObserved, chandlerSigma] = [observed.period, observed.periodSigma];
+    observed.free();
+    fit.free();
 
     ctx.camera.position.set(3.4, -6.4, 5.2);
     ctx.target.set(0, 0, 0);
@@ -385,6 +392,7 @@ export const earthTopScene: SceneDef = {
           { key: "nutation", label: "nutation Δψ₀, Δε₀ (″, 18.6 years)", unitScale: 1 / ARCSEC, value: nut, text: `${fmt(nut[0] / ARCSEC, 4)}, ${fmt(nut[1] / ARCSEC, 4)}` },
           { key: "eulerPeriod", label: "Euler period (rigid Earth, 2.83)", value: euler, text: `${fmt(euler / (2 * Math.PI / Earth.siderealRate()), 3)} sidereal days` },
           { key: "chandlerPeriod", label: `Chandler (elastic: k₂ ${fmt(K2, 2)}, kₛ ${fmt(KS, 3)})`, value: chandler, text: `${fmt(chandler / 86400, 3)} d` },
+          { key: "chandlerObserved", label: "Chandler (observed)", value: chandlerObserved, detail: `the core's fit of the pole path in the inset (IERS EOP 20 C04): 1-σ ${fmt(chandlerSigma / 86400, 2)} d`, text: `${fmt(chandlerObserved / 86400, 3)} d` },
           { key: "poleLongitude", label: `axis longitude ψ (${A.name}, westward)`, unitScale: A.angleScale, value: lon * DEG, text: A.angle(lon * DEG, 5) },
           { key: "obliquityNow", label: `obliquity ε(t) (${A.name})`, unitScale: A.angleScale, value: real.eps, text: A.angle(real.eps, 7) },
           { key: "node", label: `Moon's node Ω (${A.name})`, unitScale: A.angleScale, value: nodeDeg * DEG, text: A.angle(nodeDeg * DEG, 4) },
