@@ -324,10 +324,12 @@ export const earthTopScene: SceneDef = {
         ctx.labels.move(coneLabel, new THREE.Vector3(-AXIS * Math.sin(eps0) * 1.15, -0.2, AXIS * Math.cos(eps0)));
         tailYears = NaN;
         const drawn = f / Number(p.flattening);
-        exaggeration.textContent =
-          `Bulge drawn ×${Math.round(drawn)} (the real Earth: 1/298 flatter at the poles); ` +
-          (nod === 1 ? "the nod to scale (too small to see); " : `the 18.6-year nod drawn ×${nod}; `) +
-          "the Sun and the Moon drawn at a solstice, where they pull hardest";
+        // A phone's view is small: the same facts, in fewer words.
+        exaggeration.textContent = ctx.overlay.clientWidth >= NARROW_STAGE
+          ? `Bulge drawn ×${Math.round(drawn)} (the real Earth: 1/298 flatter at the poles); ` +
+            (nod === 1 ? "the nod to scale (too small to see); " : `the 18.6-year nod drawn ×${nod}; `) +
+            "the Sun and the Moon drawn at a solstice, where they pull hardest"
+          : `Drawn: bulge ×${Math.round(drawn)}, ` + (nod === 1 ? "nod to scale" : `18.6-year nod ×${nod}`) + "; Sun, Moon at a solstice";
       },
       step(t) {
         if (!earth) return;
