@@ -110,10 +110,12 @@ fn negative_controls_no_inclination_no_nod_no_bulge_no_precession() {
     };
     // The Moon in the ecliptic: the node means nothing, the 18.6-year nod is gone, and the
     // Moon's part of the precession loses its (1 − (3/2) sin² i).
-    let mut flat = RigidEarth::default();
-    flat.moon = poinsot::earth::MeanOrbit {
-        inclination: 0.0,
-        ..MOON_ORBIT
+    let flat = RigidEarth {
+        moon: poinsot::earth::MeanOrbit {
+            inclination: 0.0,
+            ..MOON_ORBIT
+        },
+        ..RigidEarth::default()
     };
     let fit = flat.simulate(40.0 * YEAR, &options).unwrap().fit().unwrap();
     let (_, deps) = RigidEarth::default().nutation_amplitudes().unwrap();
