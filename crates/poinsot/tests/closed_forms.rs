@@ -14,7 +14,7 @@ fn rel(a: f64, b: f64) -> f64 {
 #[test]
 fn centrifugal_magnitude_and_plumb_line_in_closed_form() {
     let e = Earth::default();
-    for lat in [0.0_f64, 0.3, 0.7854, 1.2, -0.9, std::f64::consts::FRAC_PI_2] {
+    for lat in [0.0_f64, 0.3, 0.8, 1.2, -0.9, std::f64::consts::FRAC_PI_2] {
         let c = e.centrifugal_acceleration(lat).unwrap();
         let m = e.centrifugal_magnitude(lat).unwrap();
         assert!((m - c.norm()).abs() <= 1e-15 * (e.rotation_rate.powi(2) * e.radius));
@@ -22,9 +22,9 @@ fn centrifugal_magnitude_and_plumb_line_in_closed_form() {
         let closed = e.plumb_line_deviation_closed(lat).unwrap();
         assert!((closed - dev).abs() <= 1e-15, "{lat}: {closed} vs {dev}");
     }
-    // The plumb line leans about 0.1° at 45° on the unit's Earth (q/2 sin 2λ to first order).
+    // The plumb line leans about 0.1° near 45° on the unit's Earth (q/2 sin 2λ to first order).
     let q = e.rotation_rate.powi(2) * e.radius / e.g;
-    assert!(rel(e.plumb_line_deviation_closed(0.7854).unwrap(), q / 2.0) < 1e-2);
+    assert!(rel(e.plumb_line_deviation_closed(0.8).unwrap(), q / 2.0) < 1e-2);
     let fast = Earth::new(1e160, 6.4e6, 9.8).unwrap();
     let err = fast.centrifugal_magnitude(0.3).unwrap_err();
     assert_eq!(err.argument, "rotation_rate");
