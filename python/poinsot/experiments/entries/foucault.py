@@ -58,7 +58,9 @@ _UNPUBLISHED_LENGTH = ureg.Quantity(10.0, "m")
 
 def _rate(inputs: Mapping[str, Any]) -> Any:
     """The swing plane's rate of turn from the integrated pendulum (clockwise positive)."""
-    return ureg.Quantity(-_swing(inputs).precession_rate, "rad/s")
+    rate = _swing(inputs).precession_rate
+    assert rate is not None  # _swing refuses a run without a steady turn
+    return ureg.Quantity(-rate, "rad/s")
 
 
 def _closed_rate(inputs: Mapping[str, Any]) -> Any:
