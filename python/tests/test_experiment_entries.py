@@ -162,6 +162,13 @@ def _racket(i: Mapping[str, Any]) -> float:
     return float(t_up[1] - t_up[0])
 
 
+def _speed_error(i: Mapping[str, Any]) -> float:
+    """The settled gyrocompass's speed error: the horizontal part of the local frame's rotation,
+    the Earth's Ω cos λ north plus the ship's V/R about the horizontal normal to its track."""
+    lat, v, c = _si(i, "latitude", "rad"), _si(i, "speed", "m/s"), _si(i, "course", "rad")
+    return math.atan2(v * math.cos(c), OMEGA * R * math.cos(lat) + v * math.sin(c))
+
+
 #: Each entry's reference (inputs as pint quantities → SI value, or the sense) and the relative
 #: tolerance of poinsot's prediction against it. An entry without one fails the test below.
 REFERENCES: dict[str, tuple[Callable[[Mapping[str, Any]], Any], float]] = {
@@ -185,6 +192,8 @@ REFERENCES: dict[str, tuple[Callable[[Mapping[str, Any]], Any], float]] = {
     "mathews-2002-obliquity": (lambda i: _nutation(i)[1], 1e-9),
     "vicente-wilson-1997": (_chandler, 1e-9),
     "bubbar-zhu-2025": (_racket, 1e-6),
+    "plath-1998-20-knots": (_speed_error, 1e-6),
+    "plath-1998-50-knots": (_speed_error, 1e-6),
 }
 
 
@@ -443,3 +452,19 @@ def test_the_elastic_chandler_period_is_446_days_against_433_observed() -> None:
     assert "oceans" in e.why and "core" in e.why
     # the elastic period lies between the rigid Euler period and the observed one's far side
     assert x.run("chandler-1891").predicted_si < r.measured_si < r.predicted_si
+
+
+def test_the_speed_error_table_is_the_arcsine_form_and_parts_from_the_settled_one() -> None:
+    ground = OMEGA * 6378137.0 * math.cos(math.radians(81))
+    for name in ("plath-1998-20-knots", "plath-1998-50-knots"):
+        e, r = x.get(name), x.run(name)
+        v = _si(e.parsed_inputs(), "speed", "m/s")
+        # the printed value is the arcsine form with the equatorial radius, to its 0.1°
+        printed = math.degrees(r.measured_si)
+        assert math.degrees(math.asin(v / ground)) == pytest.approx(printed, abs=0.05)
+        assert "printed table" in e.uncertainty_kind and "not a measurement" in e.uncertainty_kind
+    gap = x.run("plath-1998-50-knots").measured_si - x.run("plath-1998-50-knots").predicted_si
+    assert math.degrees(gap) == pytest.approx(1.2, abs=0.05)  # the issue's 1.2° at 50 kn, 81°
+    # a negative control: the small-angle form the table does not use misses 20.7° by 0.4°
+    small = math.degrees(50 * 1852 / 3600 / ground)
+    assert abs(small - 20.7) > 0.3
