@@ -58,6 +58,7 @@ GALLERY_ORDER = [
     "steady_precession.py",
     "heavy_top_phase_diagram.py",
     "chandler_wobble.py",
+    "gyrocompass.py",
     "exercise_sheet.py",  # after the unit: a problem sheet made from all of it
 ]
 
