@@ -266,6 +266,14 @@ VALID_FOR: dict[str, dict[str, Any]] = {
     "Earth.projectile": {"height": 0.0, "rotation": True},
     "Earth.drop": {"height": 100.0, "rotation": True},
     "Earth.foucault": {"duration": 30.0, "samples": 11, "max_steps": 100_000, "progress": False},
+    "Gyrocompass.speed_error": {"speed": 10.0, "course": 0.3},
+    "Gyrocompass.speed_error_small_angle": {"speed": 10.0, "course": 0.3},
+    "Gyrocompass.simulate": {
+        "duration": 5.0,
+        "heading0": 0.1,
+        "samples": 5,
+        "max_steps": 100_000,
+    },
     "Earth.inertial_oscillation": {"velocity": (10.0, 0.0), "duration": None},
     "Earth.flow_into_low": {"radius": 5e5, "duration": 3600.0, "samples": 11},
     "Earth.jacobi_integral": {"position": [1.0, 2.0, 3.0], "velocity": [0.5, 0.0, 0.1]},
@@ -333,6 +341,8 @@ RESULT_TYPES = {
     "PolarMotion",
     "WobbleFit",
     "WobbleTerm",
+    "CarriedTrajectory",
+    "CompassRun",
 }
 
 #: Valid instances whose methods and properties are fuzzed, by class name.
@@ -352,6 +362,12 @@ INSTANCES: dict[str, Callable[[], Any]] = {
     "FreeRigidBody": lambda: ps.FreeRigidBody([1.0, 2.0, 3.0], [1.0, 0.1, 1.0]),
     "HeavyTop": lambda: ps.HeavyTop(1.0, 0.5, 1.0, 0.5, psi_dot=6.0),
     "SpringParticle": lambda: ps.SpringParticle(2.0, 3.0),
+    "Place": lambda: ps.Place(0.7),
+    "Gyrocompass": lambda: ps.Gyrocompass(0.7),
+    "CarriedTrajectory": lambda: ps.simulate(
+        [1.0, 1.0, 1.5], [0.0, 0.0, 1.0], 1.0, carried_by=ps.Place(0.7), samples=5
+    ),
+    "CompassRun": lambda: ps.Gyrocompass(0.7).simulate(5.0, 0.1, samples=5),
 }
 
 #: Numbers that may be infinite by documented design, as (qualified name, field).

@@ -126,6 +126,8 @@ def test_bad_input_refused_by_name():
         ps.Gyrocompass(math.pi / 2)
     with pytest.raises(ps.PoinsotError, match="^angular_momentum"):
         ps.Gyrocompass(0.5, 0.0)
+    with pytest.raises(ps.PoinsotError, match="^angular_momentum"):
+        ps.Gyrocompass(0.5, 5e-324)  # P/H beyond the doubles: refused, never an infinity
     with pytest.raises(ps.PoinsotError, match="^pendulosity"):
         ps.Gyrocompass(0.5, 40.0, -1.0)
     with pytest.raises(ps.PoinsotError, match="^damping"):

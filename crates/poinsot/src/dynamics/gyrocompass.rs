@@ -274,14 +274,35 @@ impl Gyrocompass {
             }
         }
         BodyInertia::from_moments(inertia).map_err(|e| Error::invalid("inertia", e.message))?;
-        Ok(Self {
+        let out = Self {
             latitude,
             angular_momentum,
             pendulosity,
             damping,
             inertia,
             earth,
-        })
+        };
+        // Every derived rate must be a double: P/H, ω_n, D, k and the period.
+        let period = 2.0 * PI * (angular_momentum / (pendulosity * out.omega_c())).sqrt();
+        let derived = [
+            pendulosity / angular_momentum,
+            out.natural_frequency(),
+            out.damping_coefficient(),
+            out.viscous_coefficient(),
+        ];
+        let period_ok = earth.rotation_rate == 0.0 || (period.is_finite() && period > 0.0);
+        if !(derived.iter().all(|x| x.is_finite()) && period_ok) {
+            return Err(Error::invalid(
+                "angular_momentum",
+                format!(
+                    "H = {} kg·m²/s against the pendulosity P = {} N·m gives rates (P/H, the \
+                     period, the damping torque) beyond the doubles",
+                    num(angular_momentum),
+                    num(pendulosity)
+                ),
+            ));
+        }
+        Ok(out)
     }
 
     /// The compass whose period is Schuler's, 2π √(R/g) (84.4 min on the default Earth): H =
@@ -423,6 +444,12 @@ impl Gyrocompass {
                 break;
             }
         }
+        if !(alpha.is_finite() && theta.is_finite()) {
+            return Err(Error::invalid(
+                "damping",
+                "the steady state is not representable for these parameters",
+            ));
+        }
         Ok((-alpha, theta))
     }
 
@@ -563,6 +590,11 @@ mod tests {
         assert_eq!(pole.unwrap_err().argument, "latitude");
         let still = Gyrocompass::new(0.5, 0.0, 1.0, 0.0, [1.0; 3], Earth::default());
         assert_eq!(still.unwrap_err().argument, "angular_momentum");
+        // Rates beyond the doubles are refused, not returned as infinities.
+        let tiny = Gyrocompass::new(0.5, 5e-324, 1.2, 0.3, [1.0; 3], Earth::default());
+        assert_eq!(tiny.unwrap_err().argument, "angular_momentum");
+        let huge = Gyrocompass::new(0.5, 1e300, 1e-300, 0.3, [1.0; 3], Earth::default());
+        assert_eq!(huge.unwrap_err().argument, "angular_momentum");
     }
 
     #[test]
