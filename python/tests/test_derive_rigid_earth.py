@@ -39,7 +39,7 @@ def d() -> Derivation:
 
 def test_builds_every_step_holds_and_is_registered_apart_from_the_unit(d: Derivation) -> None:
     assert d.name == "rigid_earth" and d.title.startswith("The Earth as a rigid body")
-    assert derive.applied() == ["rigid_earth"] and "rigid_earth" not in derive.names()
+    assert "rigid_earth" in derive.applied() and "rigid_earth" not in derive.names()
     checked = [s for s in d.steps if not s.text.startswith("Given")]
     assert len(checked) >= 10
     for s in checked:

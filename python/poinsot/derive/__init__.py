@@ -71,6 +71,7 @@ _TOPICS: dict[str, str] = {
 #: rigid body). Not among :func:`names` (the unit's topics); :func:`derivation` builds them too.
 _APPLIED: dict[str, str] = {
     "rigid_earth": "rigid_earth",  # 2.83 and the torque theory: Euler's period, the precession
+    "gyrocompass": "gyrocompass",  # issue 26: the rotating frame and torque law, linearised
 }
 
 
@@ -81,7 +82,8 @@ def names() -> list[str]:
 
 def applied() -> list[str]:
     """The names of the derivations that apply the unit's theory beyond its equations (the
-    rigid Earth's free nutation and precession); :func:`derivation` builds them."""
+    rigid Earth's free nutation and precession, the linearised gyrocompass);
+    :func:`derivation` builds them."""
     return list(_APPLIED)
 
 
