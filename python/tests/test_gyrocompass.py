@@ -55,7 +55,10 @@ def test_speed_error_closed_form_small_angle_and_signs():
 
 def test_speed_error_matches_the_full_simulation():
     # Undamped: the settled heading is the mean over one period of the swing about it.
-    c = ps.Gyrocompass.schuler_tuned(math.radians(45), damping=0.0)
+    # At 30°: the simulation settles 0.006° off the formula (0.009° at 45°), about what the
+    # Coriolis force on the tilted pendulous element, which the kinematic formula leaves
+    # out, is estimated to move it (2 Ω sin λ V_N m l θ / (H Ω cos λ)).
+    c = ps.Gyrocompass.schuler_tuned(math.radians(30), damping=0.0)
     v, course = 10.0, math.radians(20)
     delta = c.speed_error(v, course)
     n = 1001
