@@ -57,6 +57,7 @@ CHAPTERS = (
     "docs/rotation.md",
     "docs/heavy_top.md",
     "docs/rigid_earth.md",
+    "docs/gyrocompass.md",
 )
 
 MATH_TOKENS = frozenset(
