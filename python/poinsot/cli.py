@@ -2286,8 +2286,35 @@ def check(template: str, seed: int, answer: str, as_json: bool) -> None:
 @_number("--latitude", "The compass's latitude, north-positive (rad, or with a unit: 50deg).")
 @_number("--speed", "The ship's speed (m/s, or with a unit: 20kn); 0: at rest.", default=0.0)
 @_number("--course", "The ship's course, clockwise from north (rad, or 45deg).", default=0.0)
+@_number(
+    "--angular-momentum",
+    "angular_momentum",
+    "The rotor's angular momentum H (kg·m²/s, > 0).",
+    call="Gyrocompass.__init__",
+)
+@_number("--pendulosity", "The pendulosity m g l (N·m, > 0).", call="Gyrocompass.__init__")
+@_number(
+    "--damping",
+    "The damping ratio ζ of the settling swing, in [0, 1).",
+    call="Gyrocompass.__init__",
+)
+@_picture_options(
+    "Save a picture of the settling heading and tilt against time (the full simulation, three "
+    "periods from 10° east of north, on --course at --speed) with the linearised settled "
+    "heading and envelope to this file."
+)
 @_JSON
-def gyrocompass(latitude: float, speed: float, course: float, as_json: bool) -> None:
+def gyrocompass(
+    latitude: float,
+    speed: float,
+    course: float,
+    angular_momentum: float,
+    pendulosity: float,
+    damping: float,
+    plot_path: str | None,
+    style: str,
+    as_json: bool,
+) -> None:
     """The gyrocompass: its period and its errors.
 
     A pendulous gyrocompass (poinsot.Gyrocompass with its default rotor, pendulosity and
@@ -2302,11 +2329,13 @@ def gyrocompass(latitude: float, speed: float, course: float, as_json: bool) -> 
     Examples:
       poinsot gyrocompass --latitude 50deg
       poinsot gyrocompass --latitude 50deg --speed 20kn --course 0deg --json
+      poinsot gyrocompass --latitude 50deg --damping 0.5 --plot compass.png
     """
     from .gyrocompass import Gyrocompass
 
-    c = Gyrocompass(latitude)
-    tuned = Gyrocompass.schuler_tuned(latitude)
+    _check_pictures(plot_path)
+    c = Gyrocompass(latitude, angular_momentum, pendulosity, damping=damping)
+    tuned = Gyrocompass.schuler_tuned(latitude, pendulosity, damping=damping)
     data: dict[str, Any] = {
         "latitude": c.latitude,
         "angular_momentum": c.angular_momentum,
@@ -2329,7 +2358,7 @@ def gyrocompass(latitude: float, speed: float, course: float, as_json: bool) -> 
         f"{c.period / 60:.4g} min (Schuler's {data['schuler_period'] / 60:.4g} min needs "
         f"H = {tuned.angular_momentum:.4g} kg·m²/s); it settles {deg(c.settle_error):+.3g}° "
         f"off (latitude error), and on this course {deg(data['speed_error']):+.3g}° more "
-        "(speed error)."
+        f"(speed error; {deg(data['speed_error_small_angle']):+.3g}° in the small-angle form)."
     )
     rows = [
         ("settling period", f"{c.period / 60:.6g} min"),
@@ -2343,4 +2372,6 @@ def gyrocompass(latitude: float, speed: float, course: float, as_json: bool) -> 
         f"H = {c.angular_momentum:g} kg·m²/s, m g l = {c.pendulosity:g} N·m, ζ = {c.damping:g}; "
         "errors: reading minus truth (positive reads high)."
     ]
+    draw = "gyrocompass.plot_gyrocompass"
+    _keep_picture(data, plot_path, draw, c, speed=speed, course=course, style=style)
     _report(data, as_json, "the gyrocompass", ("quantity", "value"), rows, notes=notes)

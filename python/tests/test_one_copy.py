@@ -45,7 +45,7 @@ def test_plots_read_one_line_width() -> None:
 
 def test_plots_all_is_the_modules_lists() -> None:
     """The package lists the drawing functions its modules list (unit's helpers left out)."""
-    modules = (plots.inertia, plots.free, plots.top, plots.earth, plots.unit)
+    modules = (plots.inertia, plots.free, plots.top, plots.earth, plots.gyrocompass, plots.unit)
     listed = [name for m in modules for name in m.__all__]
     assert set(plots.__all__) <= set(listed)
     assert [n for n in listed if n in plots.__all__] == plots.__all__

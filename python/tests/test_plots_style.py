@@ -87,6 +87,9 @@ BUILD: dict[str, Callable[..., Any]] = {
     "animate_foucault": lambda style: plots.animate_foucault(
         _foucault(), frames=FRAMES, style=style
     ),
+    "plot_gyrocompass": lambda style: plots.plot_gyrocompass(
+        ps.Gyrocompass(0.8), ps.Gyrocompass(0.8).simulate(600.0, 0.1, samples=50), style=style
+    ),
     # the unit's own figures (plots/unit.py, docs/figures.md), with their classroom defaults
     "plot_translating_frame": lambda style: plots.plot_translating_frame(style=style),
     "plot_rotating_frame": lambda style: plots.plot_rotating_frame(style=style),

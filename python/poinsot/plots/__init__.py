@@ -7,6 +7,7 @@
   precession, the animation;
 * :mod:`poinsot.plots.earth` — the rotating Earth: deflection, trajectories, the Foucault
   rosette, inertial circles, the pendulum's animation;
+* :mod:`poinsot.plots.gyrocompass` — the gyrocompass settling on the meridian;
 * :mod:`poinsot.plots.unit` — the unit's own Figs. 2.1–2.15 from poinsot's numbers, by number:
   :func:`unit_figure` and the registry :data:`UNIT_FIGURES` (importable from here, not in
   ``__all__``, which lists the drawing functions; docs/figures.md lists them).
@@ -19,9 +20,10 @@ rest of poinsot; these functions only draw. matplotlib is imported when a pictur
 
 from __future__ import annotations
 
-from . import earth, free, inertia, top, unit
+from . import earth, free, gyrocompass, inertia, top, unit
 from .earth import *  # noqa: F403 - each module's drawing functions, listed in its __all__
 from .free import *  # noqa: F403
+from .gyrocompass import *  # noqa: F403
 from .inertia import *  # noqa: F403
 from .top import *  # noqa: F403
 from .unit import *  # noqa: F403
@@ -35,5 +37,6 @@ __all__ = [  # the drawing functions, as their modules list them
     *free.__all__,
     *top.__all__,
     *earth.__all__,
+    *gyrocompass.__all__,
     *(name for name in unit.__all__ if name not in _UNIT_HELPERS),
 ]
