@@ -343,6 +343,8 @@ RESULT_TYPES = {
     "WobbleTerm",
     "CarriedTrajectory",
     "CompassRun",
+    "PoleRun",
+    "PoleFit",
 }
 
 #: Valid instances whose methods and properties are fuzzed, by class name.
@@ -368,6 +370,8 @@ INSTANCES: dict[str, Callable[[], Any]] = {
         [1.0, 1.0, 1.5], [0.0, 0.0, 1.0], 1.0, carried_by=ps.Place(0.7), samples=5
     ),
     "CompassRun": lambda: ps.Gyrocompass(0.7).simulate(5.0, 0.1, samples=5),
+    # 19 Julian years: PoleRun.fit needs one node period (18.6 years)
+    "PoleRun": lambda: ps.RigidEarth().simulate(19 * 365.25 * 86400.0, samples=50),
 }
 
 #: Numbers that may be infinite by documented design, as (qualified name, field).
@@ -376,6 +380,7 @@ DOCUMENTED_INF = {
     ("Screw", "pitch"),
     ("Earth.inertial_period", ""),  # no inertial oscillation at the equator
     ("Earth.inertial_oscillation", "period"),
+    ("Earth.inertial_oscillation", "measured_period"),  # a velocity that does not turn
     ("Earth.foucault", "full_turn_period"),  # a swing plane that does not turn
     ("Earth.foucault", "expected_full_turn_period"),  # ω sin λ = 0 at the equator
     ("FreeRigidBody", "period"),  # on the separatrix the motion is asymptotic

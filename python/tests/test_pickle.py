@@ -61,6 +61,11 @@ def _wobble() -> ps.WobbleFit:
     return ps.fit_wobble(pm.dates, pm.x, pm.y, chandler_period=433.0 * 86400.0)
 
 
+def _pole_run() -> ps.PoleRun:
+    # 19 Julian years: a fit needs one node period (18.6 years)
+    return ps.RigidEarth().simulate(19 * 365.25 * 86400.0, samples=50)
+
+
 def _derive(kind: str) -> Any:
     d = pytest.importorskip("poinsot.derive")
     if kind == "Step":
@@ -194,6 +199,10 @@ CASES: dict[str, list[tuple[Callable[[], Any], Callable[[Any], Any]]]] = {
     "Earth": [(lambda: ps.Earth(radius=6.0e6), lambda e: e.effective_gravity(0.7))],
     "RigidEarth": [
         (lambda: ps.RigidEarth(0.004, 7e-5, 0.3), lambda e: (e.euler_period, e.precession_rate))
+    ],
+    "PoleRun": [(lambda: _pole_run(), lambda r: (r.t, r.longitude, r.obliquity, r.fit()))],
+    "PoleFit": [
+        (lambda: _pole_run().fit(), lambda f: (f.precession_rate, f.nutation_longitude, repr(f)))
     ],
     "PolarMotion": [(lambda: ps.polar_motion("shipped"), lambda p: (p.t, p.x, p.y, p.dates))],
     "WobbleFit": [(lambda: _wobble(), lambda f: (f.chandler.amplitude, f.drift, str(f)))],

@@ -320,12 +320,15 @@ impl FreeSymmetricTop {
                 "the body-frame precession has no period where Ω = (I₁ − I₃) ω₃ / I₁ = 0 (a sphere, or ω₃ = 0: ω stays put in the body)",
             ));
         }
+        // 2π/|Ω| as a mantissa 2π/(|Ω| 2^-e) in (π, 2π] and the power 2^(-e - e_w): the scaled
+        // rate may be tiny (ω₃ ≪ |ω|), and 2π divided by it overflows before it is rescaled.
+        let e = exponent(rate);
         representable(
             "omega0",
             "the precession period 2π/|Ω|",
             "s",
-            std::f64::consts::TAU / rate,
-            -self.scale.e_w,
+            std::f64::consts::TAU / ldexp(rate, -e),
+            -e - self.scale.e_w,
         )
     }
 
