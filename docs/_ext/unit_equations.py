@@ -168,12 +168,14 @@ _RANGE_SEP = re.compile(r"^\s*(?:[–—‑-]|to)\s*$")
 #: equation ("Carlson (1995) eq. (2.19)"), an assigned, compared, negative or reported value.
 _NOT_EQ_BEFORE = re.compile(
     r"(?:(?i:\bfig(?:ure)?s?)\.?\s*|§\s*|\(\d{4}\)\s*eqs?\.[^;\n]*|[=≤≥<>≈~]\s*|[-−]"
-    r"|\bgot(?:\s+\w+)?\s+)$"
+    r"|\bgot(?:\s+\w+)?\s+|--[a-z][\w-]*[ =]\s*)$"
 )
 #: A number followed by a unit or a sign like these is a quantity: "2.2°", "2.6 µs", "2.4 ε",
-#: and in LaTeX "2.2\times 10^{-308}", "2.5\,\mathrm{m}".
+#: "2.8 ′", "2.3 m/s²" (an exercise's answer), and in LaTeX "2.2\times 10^{-308}",
+#: "2.5\,\mathrm{m}".
 _UNIT_AFTER = re.compile(
-    r"^(?:\s*[°%×ε]|\s+(?:[µmn]?s|[KMG]iB|[kMG]B)\b|\s*\\(?:times|cdot|mathrm|text)\b|\s*\\[,;])"
+    r"^(?:\s*[°%×ε′″]|\s+[ck]?m/s|\s+(?:[µmn]?s|[KMG]iB|[kMG]B)\b"
+    r"|\s*\\(?:times|cdot|mathrm|text)\b|\s*\\[,;])"
 )
 _PLAIN_NUMBER_BEFORE = re.compile(r"([\d.⁰¹²³⁴⁵⁶⁷⁸⁹]+)\s*[,/]\s*$")
 _PLAIN_NUMBER_AFTER = re.compile(r"^\s*(?:[×%]|[/,–—-]\s*(\d[\d.]*))")

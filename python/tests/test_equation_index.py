@@ -387,7 +387,9 @@ def test_negative_control_a_fake_citation_is_missing_from_the_table(tmp_path: Pa
         encoding="utf-8",
     )
     (tmp_path / "docs" / "page.md").write_text(
-        "Solving 2.112 is hard (Figs. 2.5–2.7).\n\n```python\nspin = 2.5  # eq. 2.119\n```\n",
+        "Solving 2.112 is hard (Figs. 2.5–2.7).\n\n```python\nspin = 2.5  # eq. 2.119\n```\n"
+        # an exercise's answers (docs/teachers.md): quantities and a command's option value
+        "Answer: 2.355 m/s², 2.867 cm/s, 2.788 ′; `poinsot check x --answer 2.788 --seed 2`\n",
         encoding="utf-8",
     )
     found = scan(tmp_path)
