@@ -446,6 +446,65 @@ def _fast_top(con: Console) -> None:
     )
 
 
+def _axis_heading(q: np.ndarray) -> np.ndarray:
+    """Heading (rad, clockwise from north) of body z under the attitudes ``q`` [w, x, y, z]
+    (N, 4), body → local ENU."""
+    w, x, y, z = np.asarray(q, dtype=float).T
+    return np.arctan2(2 * (x * z + w * y), 2 * (y * z - w * x))
+
+
+@section("Tops on the turning Earth: Foucault's gyroscope (1852) and the gyrocompass")
+def _turning_earth(con: Console) -> None:
+    paris = np.radians(48.8566)
+    omega = ps.Earth().rotation_rate
+    north = [np.cos(np.pi / 4), -np.sin(np.pi / 4), 0.0, 0.0]  # body z along local north
+    span = 60.0  # s: the drift's first minute (later the axis rises on its cone about the pole)
+    run = ps.simulate(
+        [1.0, 1.0, 2.0],
+        [0.0, 0.0, 1000.0],
+        span,
+        carried_by=ps.Place(paris),
+        attitude0=north,
+        method="exact",
+        samples=2,
+    )
+    assert isinstance(run, ps.CarriedTrajectory)
+    drift = np.degrees(np.diff(_axis_heading(run.relative_attitude))[0]) * 3600 / span
+    con.print(
+        "Foucault's free gyroscope in Paris (48.86° N), its axis level toward north: seen "
+        "from the ground it turns clockwise, like his pendulum; in space it stays put. "
+        "Anschütz's gyrocompass (1908) hangs the rotor like a pendulum so that gravity "
+        "torques it onto the meridian."
+    )
+    tuned = ps.Gyrocompass.schuler_tuned(np.radians(50.0))
+    schuler = ps.Gyrocompass.schuler_period()
+    knot, lat50 = 1852 / 3600, np.radians(50.0)
+    compass = ps.Gyrocompass(lat50)
+    exact = np.degrees(compass.speed_error(20 * knot, 0.0))
+    small = np.degrees(compass.speed_error_small_angle(20 * knot, 0.0))
+    table = Table(show_header=True)
+    table.add_column("quantity")
+    table.add_column("poinsot", justify="right")
+    table.add_column("check", justify="right")
+    table.add_row(
+        "Foucault's gyroscope, drift",
+        f"{drift:.3f} °/h",
+        f"Ω sin λ = {np.degrees(omega * np.sin(paris)) * 3600:.3f} °/h",
+    )
+    table.add_row(
+        "Schuler-tuned compass, 50° N",
+        f"{tuned.period / 60:.4g} min",
+        f"2π√(R/g) = {schuler / 60:.4g} min",
+    )
+    table.add_row("speed error, 20 kn north, 50° N", f"{exact:+.3f}°", f"small-angle {small:+.3f}°")
+    con.print(table)
+    con.print(
+        "  a ship steaming north carries the compass's horizontal rotation west of north: it "
+        "reads high; `poinsot gyrocompass --latitude 50deg --speed 20kn --plot FILE`, "
+        "`poinsot derive gyrocompass`"
+    )
+
+
 @section(
     "The Earth as a rigid body: Euler's free wobble (eq. 2.83) and the precession of the equinoxes"
 )
