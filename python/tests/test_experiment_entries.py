@@ -169,6 +169,12 @@ def _speed_error(i: Mapping[str, Any]) -> float:
     return math.atan2(v * math.cos(c), OMEGA * R * math.cos(lat) + v * math.sin(c))
 
 
+def _gyroscope_sense(i: Mapping[str, Any]) -> str:
+    """The ground turns counterclockwise under a free axis in the north (Ω sin λ > 0): the axis
+    seems to turn clockwise seen from above."""
+    return "clockwise" if _si(i, "latitude", "rad") > 0 else "counterclockwise"
+
+
 #: Each entry's reference (inputs as pint quantities → SI value, or the sense) and the relative
 #: tolerance of poinsot's prediction against it. An entry without one fails the test below.
 REFERENCES: dict[str, tuple[Callable[[Mapping[str, Any]], Any], float]] = {
@@ -192,6 +198,7 @@ REFERENCES: dict[str, tuple[Callable[[Mapping[str, Any]], Any], float]] = {
     "mathews-2002-obliquity": (lambda i: _nutation(i)[1], 1e-9),
     "vicente-wilson-1997": (_chandler, 1e-9),
     "bubbar-zhu-2025": (_racket, 1e-6),
+    "foucault-1852-gyroscope": (_gyroscope_sense, 0.0),
     "plath-1998-20-knots": (_speed_error, 1e-6),
     "plath-1998-50-knots": (_speed_error, 1e-6),
 }
@@ -468,3 +475,12 @@ def test_the_speed_error_table_is_the_arcsine_form_and_parts_from_the_settled_on
     # a negative control: the small-angle form the table does not use misses 20.7° by 0.4°
     small = math.degrees(50 * 1852 / 3600 / ground)
     assert abs(small - 20.7) > 0.3
+
+
+def test_foucaults_gyroscope_turns_the_other_way_in_the_south() -> None:
+    e = x.get("foucault-1852-gyroscope")
+    assert x.run("foucault-1852-gyroscope").predicted == "clockwise"
+    south = x.run("foucault-1852-gyroscope", latitude="-33.9 deg")  # Sydney: a negative control
+    assert south.predicted == south.closed_form == "counterclockwise" and not south.agrees
+    assert e.sources[0].first_hand is False and e.sources[1].first_hand is True
+    assert "de l'est à l'ouest" in e.sources[1].page
