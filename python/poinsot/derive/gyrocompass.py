@@ -63,6 +63,7 @@ from ._core import (
 from ._core import add as _add
 from ._core import eq as _eq
 from ._core import mul as _mul
+from ._core import power as _pow
 
 __all__ = ["derive", "PRINTED"]
 
@@ -91,6 +92,7 @@ W, W_ship, L, N_P, N_D, E = (Vec(n) for n in ("omega", "omega_ship", "L", "N_P",
 x_hat, y_hat, z_hat, s_hat, d_hat = (Unit(n) for n in ("x", "y", "z", "s", "d"))
 
 TWO_PI = _mul(2, sp.pi)
+HALF = sp.Rational(1, 2)
 
 
 def _frac(n: Any, den: Any) -> Any:
@@ -284,13 +286,13 @@ def derive() -> Derivation:
     )
     kappa = _frac(_mul(Om_c, H), P)
     d.step(
-        "The Earth's rate is tiny beside the pendulous rate P/H (Ω_c H/P ≈ 7e-4 for a ship's "
-        "compass): 2π/ω_n = T (1 + Ω_c H/P)^(−1/2), and to leading order the period is "
-        "T = 2π √(H/(m g l Ω cos λ)) (s).",
-        [
-            _eq(_frac(TWO_PI, w_n), _mul(T_n, sp.Pow(_add(1, kappa), -sp.Rational(1, 2)))),
-            _eq(T_n, _mul(TWO_PI, sp.sqrt(_frac(H, _mul(m, g, l, Om, sp.cos(lat)))))),
-        ],
+        "The swing's period 2π/ω_n is T (1 + Ω_c H/P)^(−1/2), and the Earth's rate is tiny "
+        "beside the pendulous rate P/H (Ω_c H/P ≈ 7e-4 for a ship's compass), ...",
+        _eq(_frac(TWO_PI, w_n), _mul(T_n, sp.Pow(_add(1, kappa), -HALF))),
+    )
+    d.step(
+        "... so to leading order the period is T (s), the one Gyrocompass.period gives.",
+        _eq(T_n, _mul(TWO_PI, _pow(_frac(H, _mul(m, g, l, Om, sp.cos(lat))), HALF))),
         "period",
     )
     d.function(
@@ -327,13 +329,18 @@ def derive() -> Derivation:
         "the compass lands on its new settle point without swinging — for Schuler's "
         "H_S = m g l R Ω cos λ/g (kg·m²/s).",
         _eq(_frac(_mul(P, dV), _mul(H_S, g)), _frac(dV, _mul(Om, R, sp.cos(lat)))),
+    )
+    d.step(
+        "Schuler's rotor (kg·m²/s): more momentum the stronger the pendulum, less toward the "
+        "poles.",
+        _eq(H_S, _frac(_mul(m, g, l, R, Om, sp.cos(lat)), g)),
         "Schuler tuning",
     )
     d.function("Schuler tuning", P * R * Om * sp.cos(lat) / g, (P, Om, R, g, lat))
     d.step(
         "Its period is the Schuler period 2π √(R/g) (s), 84.4 min on the Earth, whatever the "
         "latitude: the period of a pendulum as long as the Earth's radius.",
-        _eq(_mul(TWO_PI, sp.sqrt(_frac(H_S, _mul(P, Om, sp.cos(lat))))), T_S),
+        _eq(_mul(TWO_PI, _pow(_frac(H_S, _mul(P, Om, sp.cos(lat))), HALF)), T_S),
         "Schuler period",
     )
     d.function("Schuler period", 2 * sp.pi * sp.sqrt(R / g), (R, g))
