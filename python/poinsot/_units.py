@@ -67,13 +67,13 @@ _D = {
     "speed": "velocity velocity_enu speed",
     "acceleration": "acceleration g gravity pull",
     "moment of inertia": "I1 I3 inertia moments",
-    "energy": "mgl energy torque",
+    "energy": "mgl energy torque pendulosity",
     "angular momentum": "p_phi p_psi angular_momentum",
     "density": "density",
     "stiffness": "stiffness",
     "number": (
         "rtol atol R R_3 V_3 rotation attitude attitude0 q p u m n s axis low high "
-        "dynamical_flattening k2 ks"
+        "dynamical_flattening k2 ks damping"
     ),
 }
 

@@ -69,6 +69,9 @@ def test_the_rotor_and_the_damping_reach_the_api() -> None:
     undamped = _json("--latitude", "0.6", "--damping", "0")
     assert undamped["settle_error"] == 0.0
     assert undamped["period"] == ps.Gyrocompass(0.6).period  # ζ leaves the period
+    # units as typed: the pendulosity as an energy (N·m = J), the rotor's momentum as one
+    typed = _json("--latitude", "0.6", "--pendulosity", "1500mJ", "--angular-momentum", "25")
+    assert typed["pendulosity"] == pytest.approx(1.5, rel=1e-12)
 
 
 def test_the_table_says_it_in_words_first() -> None:
