@@ -329,3 +329,30 @@ def rigid_earth(data: dict[str, Any]) -> str:
         f"{num(data['moon_to_sun'])} times the Sun's share; the 18.6-year nutation swings it "
         f"by {num(dpsi)}″ in longitude and {num(deps)}″ in obliquity{nut}."
     )
+
+
+def gyrocompass(data: dict[str, Any]) -> str:
+    """``poinsot gyrocompass``: the settling period beside Schuler's and the rotor that tunes
+    to it, the latitude (damping) error, and on a moving ship the speed error beside its
+    small-angle form (only unit changes: s → min, rad → °; errors are reading minus truth)."""
+    minutes = num(data["period"] / 60, 4)
+    schuler = num(data["schuler_period"] / 60, 4)
+    settle = data["settle_error"]
+    text = (
+        f"At {degrees(data['latitude'])} the compass swings about the meridian once in "
+        f"{minutes} min (Schuler's {schuler} min needs H = "
+        f"{num(data['schuler_angular_momentum'], 4)} kg·m²/s) and settles reading "
+        f"{degrees(abs(settle))} {'low' if settle < 0 else 'high'} (latitude error)"
+        if settle != 0
+        else f"At {degrees(data['latitude'])} the compass swings about the meridian once in "
+        f"{minutes} min (Schuler's {schuler} min needs H = "
+        f"{num(data['schuler_angular_momentum'], 4)} kg·m²/s) and, undamped, settles on it"
+    )
+    if data["speed"] == 0:
+        return text + "; the ship is at rest: no speed error."
+    speed = data["speed_error"]
+    return (
+        f"{text}; steaming at {num(data['speed'])} m/s the speed error makes it read "
+        f"{degrees(abs(speed))} {'high' if speed >= 0 else 'low'} besides (small-angle form: "
+        f"{degrees(abs(data['speed_error_small_angle']))})."
+    )

@@ -2353,13 +2353,7 @@ def gyrocompass(
     }
     require_finite(data)
     deg = math.degrees
-    data["summary"] = (
-        f"At {deg(c.latitude):.4g}° the compass swings about the meridian with a period of "
-        f"{c.period / 60:.4g} min (Schuler's {data['schuler_period'] / 60:.4g} min needs "
-        f"H = {tuned.angular_momentum:.4g} kg·m²/s); it settles {deg(c.settle_error):+.3g}° "
-        f"off (latitude error), and on this course {deg(data['speed_error']):+.3g}° more "
-        f"(speed error; {deg(data['speed_error_small_angle']):+.3g}° in the small-angle form)."
-    )
+    data["summary"] = _answers.gyrocompass(data)
     rows = [
         ("settling period", f"{c.period / 60:.6g} min"),
         ("Schuler period 2π√(R/g)", f"{data['schuler_period'] / 60:.6g} min"),

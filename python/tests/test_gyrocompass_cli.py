@@ -129,3 +129,16 @@ def test_bad_input_is_refused_naming_the_option(
     code, _, err = _run(*args)
     assert code != 0
     assert option in err and reason in err, err
+
+
+def test_the_sentence_is_worded_from_the_json() -> None:
+    from poinsot import _answers
+
+    d = _json("--latitude", "50deg", "--speed", "20kn")
+    assert d["summary"] == _answers.gyrocompass({k: v for k, v in d.items() if k != "summary"})
+    assert "1.62° low (latitude error)" in d["summary"]
+    assert "1.97° high" in d["summary"] and "small-angle form: 1.97°" in d["summary"]
+    rest = _json("--latitude", "50deg", "--damping", "0")["summary"]
+    assert "undamped, settles on it" in rest and "no speed error" in rest
+    south = _json("--latitude", "-50deg", "--speed", "20kn", "--course", "180deg")["summary"]
+    assert "1.62° high (latitude error)" in south and "1.97° low" in south
