@@ -116,11 +116,11 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 fig, (ax, ax2) = plt.subplots(1, 2, figsize=(11.5, 4.8), constrained_layout=True)
-for k, (lat, (printed, exact, small)) in enumerate(rows.items()):
+for k, (lat, (table_row, exact_row, small_row)) in enumerate(rows.items()):
     color = f"C{k}"
-    ax.plot(SPEEDS_KN, printed, "o", color=color, label=f"{lat}° printed (Plath 1998)")
-    ax.plot(SPEEDS_KN, exact, "-", color=color, label=f"{lat}° speed_error (exact)")
-    ax.plot(SPEEDS_KN, small, "--", color=color, lw=1)
+    ax.plot(SPEEDS_KN, table_row, "o", color=color, label=f"{lat}° printed (Plath 1998)")
+    ax.plot(SPEEDS_KN, exact_row, "-", color=color, label=f"{lat}° speed_error (exact)")
+    ax.plot(SPEEDS_KN, small_row, "--", color=color, lw=1)
 ax.plot([], [], "--", color="0.4", lw=1, label="small-angle V / (ΩR cos λ)")
 ax.set_xlabel("speed due north (kn)")
 ax.set_ylabel("speed error δ (deg)")

@@ -467,10 +467,13 @@ def test_the_speed_error_table_is_the_arcsine_form_and_parts_from_the_settled_on
         e, r = x.get(name), x.run(name)
         v = _si(e.parsed_inputs(), "speed", "m/s")
         # the printed value is the arcsine form with the equatorial radius, to its 0.1°
+        assert r.measured_si is not None
         printed = math.degrees(r.measured_si)
         assert math.degrees(math.asin(v / ground)) == pytest.approx(printed, abs=0.05)
         assert "printed table" in e.uncertainty_kind and "not a measurement" in e.uncertainty_kind
-    gap = x.run("plath-1998-50-knots").measured_si - x.run("plath-1998-50-knots").predicted_si
+    fifty = x.run("plath-1998-50-knots")
+    assert fifty.measured_si is not None and fifty.predicted_si is not None
+    gap = fifty.measured_si - fifty.predicted_si
     assert math.degrees(gap) == pytest.approx(1.2, abs=0.05)  # the 1.2° at 50 kn, 81°
     # a negative control: the small-angle form the table does not use misses 20.7° by 0.4°
     small = math.degrees(50 * 1852 / 3600 / ground)
