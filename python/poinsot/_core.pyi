@@ -440,9 +440,7 @@ class EarthCore:
     def foucault_rate(self, latitude: NDArray[np.float64]) -> NDArray[np.float64]: ...
     def inertial_period(self, latitude: NDArray[np.float64]) -> NDArray[np.float64]: ...
     def centrifugal_magnitude(self, latitude: NDArray[np.float64]) -> NDArray[np.float64]: ...
-    def plumb_line_deviation_closed(
-        self, latitude: NDArray[np.float64]
-    ) -> NDArray[np.float64]: ...
+    def plumb_line_deviation_closed(self, latitude: NDArray[np.float64]) -> NDArray[np.float64]: ...
     def fall_time(self, height: float) -> float: ...
     def eastward_deflection(
         self, height: NDArray[np.float64], latitude: NDArray[np.float64]
@@ -878,7 +876,9 @@ def dynamics_simulate_batch(
 # ---- carried bodies and the gyrocompass (gyrocompass.rs) ----
 # python/poinsot/gyrocompass.py prepares the arguments; angles in rad, SI units.
 
-_GyroArgs: TypeAlias = tuple[float, float, float, float, tuple[float, float, float], float, float, float]
+_GyroArgs: TypeAlias = tuple[
+    float, float, float, float, tuple[float, float, float], float, float, float
+]
 
 @final
 class GyrocompassCore:
@@ -1103,6 +1103,30 @@ def sweep_projectile(
 ANNUAL_PERIOD: float
 CHANDLER_SEARCH: tuple[float, float]
 
+class _WobbleTerm(TypedDict):
+    period: float
+    period_sigma: float
+    amplitude: float
+    amplitude_sigma: float
+    phase: float
+    phase_sigma: float
+    prograde: bool
+
+class _WobbleFit(TypedDict):
+    chandler: _WobbleTerm
+    annual_prograde: _WobbleTerm
+    annual_retrograde: _WobbleTerm
+    offset: tuple[float, float]
+    offset_sigma: tuple[float, float]
+    drift: tuple[float, float]
+    drift_sigma: tuple[float, float]
+    residual_rms: float
+    serial_correlation: float
+    sigma_inflation: float
+    chandler_false_alarm: float
+    chandler_significant: bool
+    samples: int
+
 def fit_wobble(
     t: NDArray[np.float64],
     x: NDArray[np.float64],
@@ -1110,4 +1134,4 @@ def fit_wobble(
     chandler_period: float | None = None,
     chandler_band: tuple[float, float] | None = None,
     annual_period: float = ...,
-) -> dict[str, Any]: ...
+) -> _WobbleFit: ...

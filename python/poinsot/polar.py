@@ -384,10 +384,19 @@ def fit_wobble(
         pa,
     )
     return WobbleFit(
-        chandler=WobbleTerm(**out.pop("chandler")),
-        annual_prograde=WobbleTerm(**out.pop("annual_prograde")),
-        annual_retrograde=WobbleTerm(**out.pop("annual_retrograde")),
-        **out,
+        chandler=WobbleTerm(**out["chandler"]),
+        annual_prograde=WobbleTerm(**out["annual_prograde"]),
+        annual_retrograde=WobbleTerm(**out["annual_retrograde"]),
+        offset=out["offset"],
+        offset_sigma=out["offset_sigma"],
+        drift=out["drift"],
+        drift_sigma=out["drift_sigma"],
+        residual_rms=out["residual_rms"],
+        serial_correlation=out["serial_correlation"],
+        sigma_inflation=out["sigma_inflation"],
+        chandler_false_alarm=out["chandler_false_alarm"],
+        chandler_significant=out["chandler_significant"],
+        samples=out["samples"],
     )
 
 
