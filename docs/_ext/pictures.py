@@ -40,6 +40,7 @@ SCENES = {
     "poinsot": "Poinsot's construction: the inertia ellipsoid rolling on the invariable plane",
     "heavytop": "Heavy top: the tip of the axis nodding between its turning circles",
     "earthtop": "The Earth as a top: the spin axis sweeping its precession cone under the Sun's and the Moon's pull, beside the real pole's path",
+    "gyrocompass": "Gyrocompass: the spin axis of a compass on a ship swinging about north and settling there once a Schuler period",
 }
 # The gallery's examples in the unit's order (2.1 onward); an example missing here sorts last,
 # alphabetically, and the build says so.

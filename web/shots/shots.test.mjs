@@ -12,7 +12,7 @@ import { startLab, open, repo } from "../tests/harness.mjs";
 
 const OUT = process.env.LAB_SHOTS ?? path.join(repo, "docs/_generated/lab");
 // The tabs' order (web/src/scenes/index.ts); a test below checks the page agrees.
-const SCENES = ["frames", "drop", "foucault", "low", "inertia", "euler", "freetop", "poinsot", "heavytop", "earthtop"];
+const SCENES = ["frames", "drop", "foucault", "low", "inertia", "euler", "freetop", "poinsot", "heavytop", "earthtop", "gyrocompass"];
 
 await startLab();
 mkdirSync(OUT, { recursive: true });

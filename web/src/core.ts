@@ -15,11 +15,12 @@ export const coreStatus = core.coreStatus;
 
 export const {
   version, start, errorClasses, eulerToMatrix, matrixToEuler, rotationAxis, screwAxis, bodyAngularVelocity,
-  eulerRates, axisStability, simulateParticle, sampleTimes, fitWobble,
-  AxisStability, Earth, EulerAngles, Fall, FixedMotion, FoucaultRun, FreeRigidBody, FreeSymmetricTop, HeavyTop,
+  eulerRates, axisStability, simulateParticle, sampleTimes, fitWobble, freeGyroscope,
+  AxisStability, CompassRun, Earth, EulerAngles, Fall, FixedMotion, FoucaultRun, FreeRigidBody, FreeSymmetricTop, Gyrocompass, HeavyTop,
   InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, RigidEarth, Screw, SpringParticle, SteadyPrecession, WobbleFit, WobbleTerm,
 } = core;
 export type AxisStability = raw.AxisStability;
+export type CompassRun = raw.CompassRun;
 export type Earth = raw.Earth;
 export type EulerAngles = raw.EulerAngles;
 export type Fall = raw.Fall;
@@ -27,6 +28,7 @@ export type FixedMotion = raw.FixedMotion;
 export type FoucaultRun = raw.FoucaultRun;
 export type FreeRigidBody = raw.FreeRigidBody;
 export type FreeSymmetricTop = raw.FreeSymmetricTop;
+export type Gyrocompass = raw.Gyrocompass;
 export type HeavyTop = raw.HeavyTop;
 export type InertialOscillation = raw.InertialOscillation;
 export type LowFlow = raw.LowFlow;
@@ -43,8 +45,8 @@ export type WobbleTerm = raw.WobbleTerm;
 // A new export of the binding must be listed above: tsc fails here until it is.
 const exported = {
   version, start, errorClasses, eulerToMatrix, matrixToEuler, rotationAxis, screwAxis, bodyAngularVelocity,
-  eulerRates, axisStability, simulateParticle, sampleTimes, fitWobble,
-  AxisStability, Earth, EulerAngles, Fall, FixedMotion, FoucaultRun, FreeRigidBody, FreeSymmetricTop, HeavyTop,
+  eulerRates, axisStability, simulateParticle, sampleTimes, fitWobble, freeGyroscope,
+  AxisStability, CompassRun, Earth, EulerAngles, Fall, FixedMotion, FoucaultRun, FreeRigidBody, FreeSymmetricTop, Gyrocompass, HeavyTop,
   InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, RigidEarth, Screw, SpringParticle, SteadyPrecession, WobbleFit, WobbleTerm,
 };
 type Unlisted = Exclude<keyof typeof raw, keyof typeof exported | "default" | "initSync" | "__wbg_reset_state">;

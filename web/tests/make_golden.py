@@ -427,6 +427,36 @@ def earthtop_case(params: dict[str, Any], t: float) -> dict[str, Any]:
 EARTHTOP = {"flattening": 0.003273795, "obliquity": 23.44, "yearsPerSecond": 1000, "nod": "1000"}
 
 
+#: The gyrocompass scene's element (kg·m²): ten times the core's default moments (the scene's
+#: LAB_INERTIA), and a knot (m/s).
+GYRO_INERTIA = (5.0, 10.0, 10.0)
+KNOT = 1852 / 3600
+
+
+def gyrocompass_case(params: dict[str, Any]) -> dict[str, Any]:
+    """The Schuler-tuned compass's closed forms from the Python API, at t = 0 (the heading the
+    run starts from; the run itself is the core's integration, checked to 1e-7 rad in
+    web/tests/gyrocompass.test.mjs since wasm's and the native libm's round-offs part over 10⁴
+    steps)."""
+    c = poinsot.Gyrocompass.schuler_tuned(params["latitude"] * DEG, damping=params["damping"], inertia=GYRO_INERTIA)
+    v, course = params["speed"] * KNOT, params["course"] * DEG
+    readouts = {
+        "hours": 0.0,
+        "heading": params["heading0"] * DEG,
+        "period": c.period,
+        "schulerPeriod": poinsot.Gyrocompass.schuler_period(),
+        "speedError": c.speed_error(v, course),
+        "speedErrorSmallAngle": c.speed_error_small_angle(v, course),
+        "settleError": c.settle_error,
+        "groundSpeed": c.ground_speed,
+    }
+    return {"scene": "gyrocompass", "params": params, "t": 0.0, "readouts": readouts}
+
+
+GYROCOMPASS = {"view": "compass", "latitude": 50, "heading0": 30, "speed": 0, "course": 0, "damping": 0.3,
+               "minutesPerSecond": 20}
+
+
 HEAVYTOP = {"preset": "loops", "w3": 9, "tilt": 50, "phiDot0": 0.5, "thetaDot0": 0, "mgl": 1.5,
             "I1": 1, "I3": 0.5}
 
@@ -475,6 +505,9 @@ def cases() -> list[dict[str, Any]]:
         earthtop_case(EARTHTOP, 0.0),
         earthtop_case(EARTHTOP, 7.25),  # 7250 years: a quarter turn of the axis and more
         earthtop_case({**EARTHTOP, "flattening": 0.0121, "obliquity": 60, "yearsPerSecond": 3.5, "nod": "1"}, 2.5),
+        gyrocompass_case(GYROCOMPASS),
+        gyrocompass_case({**GYROCOMPASS, "latitude": 81, "speed": 50, "course": 0, "heading0": -20}),
+        gyrocompass_case({**GYROCOMPASS, "latitude": -35, "speed": 12, "course": 250, "damping": 0.5}),
     ]
 
 

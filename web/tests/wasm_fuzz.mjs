@@ -148,6 +148,7 @@ function worker({ seed, calls, deadlineMs }) {
       [FRAME, names()],
       [() => new core.SpringParticle(1, 2), names()],
       [() => new core.RigidEarth(3.273795e-3, 7.292115e-5, 0.409), names()],
+      [() => core.Gyrocompass.schulerTuned(0.87, 1.2, 0.3, [5, 10, 10]), names()],
       [() => {
         // Thirty years of a pole on a 433-day and an annual circle, every 30 days (the core needs
         // the beat of the band's shortest period, 380 d, with the annual one: 25.7 years).

@@ -141,7 +141,7 @@ test("negative controls: an unknown scene is refused by name; a blank canvas rea
   const page = await browser.newPage();
   await page.goto(base);
   const message = await page.evaluate(() => window.mount("spinning-plate", {}).then(() => "rendered", (e) => e.message));
-  assert.match(message, /no scene "spinning-plate" \(the scenes: frames, .*heavytop, earthtop\)/);
+  assert.match(message, /no scene "spinning-plate" \(the scenes: frames, .*heavytop, earthtop, gyrocompass\)/);
   await page.evaluate(() => {
     const v = document.createElement("div");
     v.className = "poinsot-widget";

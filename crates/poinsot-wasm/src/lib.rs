@@ -33,6 +33,7 @@ pub mod convert;
 pub mod earth;
 pub mod frames;
 pub mod free;
+pub mod gyrocompass;
 pub mod heavy_top;
 pub mod inertia;
 pub mod rigid_earth;

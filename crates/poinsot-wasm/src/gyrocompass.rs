@@ -1,0 +1,301 @@
+//! Bindings of `poinsot::dynamics::{Gyrocompass, simulate_carried}` (conversion and error
+//! mapping only): the pendulous gyrocompass at a latitude on the rotating Earth — its settling
+//! period, Schuler tuning, the steaming (speed) error exact and small-angle, the latitude
+//! (damping) error, and its full simulation as a rigid gyrostat carried by the local frame of a
+//! ship — and Foucault's free gyroscope, a torque-free rotor carried by a place on the Earth.
+//! SI units, radians; the core names every argument as the caller knows it. The Earth is the
+//! core's default (sidereal rate, mean radius, standard gravity), as Python's default `earth`.
+
+use crate::args::{count, let_numbers, numbers, Count, Number, Numbers};
+use crate::convert::{Failure, Out};
+use poinsot::dynamics::{
+    self as dy, simulate_carried, BodyInertia, Carrier, Load, Method, Ship, SimulateOptions, Torque,
+};
+use poinsot::earth::Earth;
+use poinsot::rotation::{axis_angle_to_matrix, matrix_to_quaternion};
+use poinsot::Vec3;
+use std::f64::consts::FRAC_PI_2;
+use wasm_bindgen::prelude::wasm_bindgen;
+
+/// The browser's step limit for a compass run (the core's tolerances; the default moments take
+/// about 10⁵ steps per simulated hour, the lab's ten times heavier element 10⁴): a longer run is
+/// refused naming `duration`.
+const BROWSER_MAX_STEPS: usize = 1_000_000;
+
+/// Bytes kept per sample of a run (the inertial trajectory's state, the relative attitude and
+/// the headings): the samples' budget.
+const BYTES_PER_SAMPLE: usize = 320;
+
+fn step_limit(mut e: poinsot::Error) -> Failure {
+    if e.argument == "max_steps" {
+        e.message = format!("too long for the step limit of the browser: {}", e.message);
+        e.argument = "duration".into();
+    }
+    Failure::from(e)
+}
+
+fn moments(inertia: &Numbers) -> Out<[f64; 3]> {
+    let v = numbers("inertia", inertia)?;
+    v.as_slice().try_into().map_err(|_| {
+        Failure::invalid(
+            "inertia",
+            &format!("must hold 3 moments (kg·m²), got {}", v.len()),
+        )
+    })
+}
+
+fn options(samples: &Count) -> Out<SimulateOptions> {
+    let t = dy::COMPASS_TOLERANCES;
+    Ok(SimulateOptions {
+        method: Method::Dop853,
+        samples: count("samples", samples, BYTES_PER_SAMPLE)?,
+        rtol: t.rtol,
+        atol: t.atol,
+        max_steps: BROWSER_MAX_STEPS,
+        ..SimulateOptions::default()
+    })
+}
+
+/// A pendulous gyrocompass at a latitude (`poinsot.Gyrocompass` in Python).
+#[wasm_bindgen]
+#[derive(Debug, Clone)]
+pub struct Gyrocompass {
+    inner: dy::Gyrocompass,
+}
+
+/// The sampled motion of a compass (`poinsot.CompassRun`): times (s), heading of the spin axis
+/// clockwise from true north (rad), its tilt above the horizontal (rad), the ship's latitude.
+#[wasm_bindgen]
+#[derive(Debug, Clone)]
+pub struct CompassRun {
+    inner: dy::CompassRun,
+}
+
+#[wasm_bindgen]
+impl Gyrocompass {
+    /// A compass at `latitude` λ (rad; not a pole) with rotor momentum `angular_momentum` H
+    /// (kg·m²/s, > 0), pendulosity `pendulosity` P = m g l (N·m), damping ratio `damping` ζ in
+    /// [0, 1) and the element's moments `inertia` (kg·m², 3 numbers) on the default Earth.
+    #[wasm_bindgen(constructor)]
+    pub fn new(
+        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] angular_momentum: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] pendulosity: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] damping: Number,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] inertia: Numbers,
+    ) -> Out<Gyrocompass> {
+        let_numbers!(latitude, angular_momentum, pendulosity, damping);
+        let inertia = moments(&inertia)?;
+        let inner = dy::Gyrocompass::new(
+            latitude,
+            angular_momentum,
+            pendulosity,
+            damping,
+            inertia,
+            Earth::default(),
+        )?;
+        Ok(Gyrocompass { inner })
+    }
+
+    /// The compass whose period is Schuler's 2π √(R/g) (84.4 min): H = P Ω cos λ R / g
+    /// (`Gyrocompass.schuler_tuned`).
+    #[wasm_bindgen(js_name = schulerTuned)]
+    pub fn schuler_tuned(
+        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] pendulosity: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] damping: Number,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] inertia: Numbers,
+    ) -> Out<Gyrocompass> {
+        let_numbers!(latitude, pendulosity, damping);
+        let inertia = moments(&inertia)?;
+        let inner = dy::Gyrocompass::schuler_tuned(
+            latitude,
+            pendulosity,
+            damping,
+            inertia,
+            Earth::default(),
+        )?;
+        Ok(Gyrocompass { inner })
+    }
+
+    /// Schuler's period 2π √(R/g) (s) of the default Earth: 5063.5 s = 84.4 min.
+    #[wasm_bindgen(js_name = schulerPeriod)]
+    pub fn schuler_period() -> f64 {
+        dy::Gyrocompass::schuler_period(&Earth::default())
+    }
+
+    /// The core's default pendulosity P (N·m).
+    #[wasm_bindgen(js_name = defaultPendulosity)]
+    pub fn default_pendulosity() -> f64 {
+        dy::COMPASS_PENDULOSITY
+    }
+
+    /// The core's default damping ratio ζ.
+    #[wasm_bindgen(js_name = defaultDamping)]
+    pub fn default_damping() -> f64 {
+        dy::COMPASS_DAMPING
+    }
+
+    /// Latitude λ (rad).
+    #[wasm_bindgen(getter)]
+    pub fn latitude(&self) -> f64 {
+        self.inner.latitude
+    }
+    /// The rotor's angular momentum H (kg·m²/s).
+    #[wasm_bindgen(getter, js_name = angularMomentum)]
+    pub fn angular_momentum(&self) -> f64 {
+        self.inner.angular_momentum
+    }
+    /// The undamped period of the settling oscillation, 2π √(H/(P Ω cos λ)) (s).
+    #[wasm_bindgen(getter)]
+    pub fn period(&self) -> Out<f64> {
+        Ok(self.inner.period()?)
+    }
+    /// ω_n of the linearised equations (rad/s).
+    #[wasm_bindgen(getter, js_name = naturalFrequency)]
+    pub fn natural_frequency(&self) -> f64 {
+        self.inner.natural_frequency()
+    }
+    /// The damping torque's coefficient D = 2 ζ ω_n H (N·m/rad).
+    #[wasm_bindgen(getter, js_name = dampingCoefficient)]
+    pub fn damping_coefficient(&self) -> f64 {
+        self.inner.damping_coefficient()
+    }
+    /// The ground's eastward speed Ω R cos λ (m/s).
+    #[wasm_bindgen(getter, js_name = groundSpeed)]
+    pub fn ground_speed(&self) -> f64 {
+        self.inner.ground_speed()
+    }
+    /// The latitude (damping) error of the settled compass at rest (rad; what it reads minus
+    /// true north): `Gyrocompass.settle_error`.
+    #[wasm_bindgen(getter, js_name = settleError)]
+    pub fn settle_error(&self) -> Out<f64> {
+        Ok(self.inner.settle()?.0)
+    }
+    /// The settled spin axis's tilt (rad): `Gyrocompass.settle_tilt`.
+    #[wasm_bindgen(getter, js_name = settleTilt)]
+    pub fn settle_tilt(&self) -> Out<f64> {
+        Ok(self.inner.settle()?.1)
+    }
+
+    /// The steaming error δ = atan(V cos C / (Ω R cos λ + V sin C)) (rad; positive: reads
+    /// high) for `speed` V (m/s) and `course` C (rad, clockwise from north).
+    #[wasm_bindgen(js_name = speedError)]
+    pub fn speed_error(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] speed: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] course: Number,
+    ) -> Out<f64> {
+        let_numbers!(speed, course);
+        Ok(self.inner.speed_error(speed, course)?)
+    }
+
+    /// The manufacturers' small-angle form V cos C / (Ω R cos λ) (rad).
+    #[wasm_bindgen(js_name = speedErrorSmallAngle)]
+    pub fn speed_error_small_angle(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] speed: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] course: Number,
+    ) -> Out<f64> {
+        let_numbers!(speed, course);
+        Ok(self.inner.speed_error_small_angle(speed, course)?)
+    }
+
+    /// The compass integrated as a rigid gyrostat carried by the ship's local frame for
+    /// `duration` s from heading `heading0` and tilt `tilt0` (rad), at rest on a ship of `speed`
+    /// (m/s) on `course` (rad), `samples` evenly spaced times; DOP853 with the core's
+    /// tolerances (`Gyrocompass.simulate`). A run beyond the browser's step limit is refused
+    /// naming `duration`.
+    pub fn simulate(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] duration: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] heading0: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] tilt0: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] speed: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] course: Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] samples: Count,
+    ) -> Out<CompassRun> {
+        let_numbers!(duration, heading0, tilt0, speed, course);
+        let opts = options(&samples)?;
+        let ship = Ship::new(speed, course)?;
+        let inner = self
+            .inner
+            .simulate(duration, heading0, tilt0, Some(ship), &opts)
+            .map_err(step_limit)?;
+        Ok(CompassRun { inner })
+    }
+}
+
+#[wasm_bindgen]
+impl CompassRun {
+    /// The sample times (s).
+    #[wasm_bindgen(getter)]
+    pub fn times(&self) -> Vec<f64> {
+        self.inner.t.clone()
+    }
+    /// The spin axis's heading at each sample, clockwise from true north (rad, (−π, π]).
+    #[wasm_bindgen(getter)]
+    pub fn heading(&self) -> Vec<f64> {
+        self.inner.heading.clone()
+    }
+    /// The spin axis's tilt above the horizontal at each sample (rad).
+    #[wasm_bindgen(getter)]
+    pub fn tilt(&self) -> Vec<f64> {
+        self.inner.tilt.clone()
+    }
+    /// The ship's latitude at each sample (rad).
+    #[wasm_bindgen(getter)]
+    pub fn latitude(&self) -> Vec<f64> {
+        self.inner.latitude.clone()
+    }
+}
+
+/// Foucault's free gyroscope (1852): a symmetric rotor (moments `[2, 1, 1]` kg·m², pivot at its
+/// centre of mass, no torque) spinning at `spin` (rad/s) about its axis, the axis starting at
+/// heading `heading0` (rad, clockwise from north) and tilt `tilt0` (rad, above the horizontal)
+/// at rest relative to the ground, carried by the place at `latitude` (rad) on the default Earth
+/// for `duration` s: the core's `simulate_carried` (exact flow), `samples` evenly spaced times.
+/// Returns the rotor's attitude relative to the ground at each sample, `[w, x, y, z, ...]`
+/// (body → ENU; the spin axis is body axis 1, x). Errors name `latitude`, `heading0`, `tilt0`,
+/// `spin`, `duration` or `samples`.
+#[wasm_bindgen(js_name = freeGyroscope)]
+pub fn free_gyroscope(
+    #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
+    #[wasm_bindgen(unchecked_param_type = "number")] heading0: Number,
+    #[wasm_bindgen(unchecked_param_type = "number")] tilt0: Number,
+    #[wasm_bindgen(unchecked_param_type = "number")] spin: Number,
+    #[wasm_bindgen(unchecked_param_type = "number")] duration: Number,
+    #[wasm_bindgen(unchecked_param_type = "number")] samples: Count,
+) -> Out<Vec<f64>> {
+    let_numbers!(latitude, heading0, tilt0, spin, duration);
+    for (name, value) in [("heading0", heading0), ("tilt0", tilt0), ("spin", spin)] {
+        if !value.is_finite() {
+            return Err(Failure::invalid(
+                name,
+                &format!("must be finite, got {value}"),
+            ));
+        }
+    }
+    let place = Carrier::earth(Earth::default(), latitude)?;
+    let rotor = BodyInertia::from_moments([2.0, 1.0, 1.0])?;
+    // Body → ENU: a turn by −tilt0 about y (the x axis up), then by π/2 − heading0 about up.
+    let rel = axis_angle_to_matrix(&Vec3::z(), FRAC_PI_2 - heading0)?
+        * axis_angle_to_matrix(&Vec3::y(), -tilt0)?;
+    let q0 = matrix_to_quaternion(&rel)?;
+    let opts = SimulateOptions {
+        method: Method::Exact,
+        samples: count("samples", &samples, BYTES_PER_SAMPLE)?,
+        ..SimulateOptions::default()
+    };
+    let run = simulate_carried(
+        &rotor,
+        Vec3::new(spin, 0.0, 0.0),
+        Some(q0),
+        duration,
+        &place,
+        Load::default(),
+        &mut Torque::None,
+        &opts,
+    )?;
+    Ok(run.relative_attitude.into_iter().flatten().collect())
+}
