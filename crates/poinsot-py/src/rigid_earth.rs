@@ -4,6 +4,7 @@
 //! names every argument as the caller knows it, so no error is renamed here.
 use numpy::{PyArray1, PyReadonlyArray1};
 use poinsot::earth::{self as ea, RigidEarth};
+use poinsot_py_macros::export;
 use pyo3::prelude::*;
 use pyo3::types::PyType;
 
@@ -119,7 +120,7 @@ core_export! {
 /// The mean precession rate and the principal nutation fitted to a simulated pole
 /// (`poinsot::earth::fit_pole`): (precession_rate (rad/s), mean_obliquity (rad),
 /// obliquity_rate (rad/s), nutation_longitude (rad), nutation_obliquity (rad)).
-#[pyfunction]
+#[export]
 fn fit_pole(
     t: PyReadonlyArray1<'_, f64>,
     longitude: PyReadonlyArray1<'_, f64>,

@@ -8,6 +8,10 @@
 //! [`crate::earth`], the particle's in [`crate::frames`]) and are re-exported here.
 
 pub use crate::analytic::EulerState;
+pub use crate::dynamics::{
+    COMPASS_ANGULAR_MOMENTUM, COMPASS_DAMPING, COMPASS_INERTIA, COMPASS_METHOD,
+    COMPASS_PENDULOSITY, COMPASS_SAMPLES, COMPASS_TOLERANCES,
+};
 pub use crate::earth::{ANNUAL_PERIOD, POLAR_MOTION_SOURCE};
 pub use crate::earth::{
     DROP_SAMPLES, DROP_TOLERANCES, DYNAMICAL_FLATTENING, FOUCAULT_AMPLITUDE, FOUCAULT_AZIMUTH,
@@ -18,10 +22,6 @@ pub use crate::earth::{
 };
 pub use crate::earth::{POLE_MAX_STEPS, POLE_MOON_NODE, POLE_SAMPLES};
 pub use crate::frames::{PARTICLE_MASS, PARTICLE_SAMPLES, PARTICLE_TOLERANCES};
-pub use crate::dynamics::{
-    COMPASS_ANGULAR_MOMENTUM, COMPASS_DAMPING, COMPASS_INERTIA, COMPASS_METHOD, COMPASS_PENDULOSITY,
-    COMPASS_SAMPLES, COMPASS_TOLERANCES,
-};
 pub use crate::inertia::{CubatureOptions, DEFAULT_KIND_RTOL};
 use crate::integrate::Tolerances;
 pub use crate::limits::DEFAULT_MAX_STEPS;

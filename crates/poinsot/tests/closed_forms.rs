@@ -60,7 +60,12 @@ fn symmetric_top_period_and_free_body_magnitudes() {
     let skew = FreeSymmetricTop::new(1.0, 2.0, Vec3::new(1e308, 0.0, 1.0), None).unwrap();
     assert!(rel(skew.precession_period().unwrap(), std::f64::consts::TAU) < 1e-15);
     let tiny = FreeSymmetricTop::new(1.0, 2.0, Vec3::new(1e-300, 0.0, 1e-300), None).unwrap();
-    assert!(rel(tiny.precession_period().unwrap(), std::f64::consts::TAU * 1e300) < 1e-15);
+    assert!(
+        rel(
+            tiny.precession_period().unwrap(),
+            std::f64::consts::TAU * 1e300
+        ) < 1e-15
+    );
 
     let b = FreeRigidBody::new([1.0, 2.0, 3.0], Vec3::new(0.3, 2.0, -0.5), None).unwrap();
     let l = b.angular_momentum().unwrap();
