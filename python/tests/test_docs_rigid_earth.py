@@ -8,43 +8,19 @@ from __future__ import annotations
 
 import functools
 import math
-import re
 from pathlib import Path
 from typing import Any
 
 import poinsot as ps
 import pytest
+from _glued_page import CELL, USED, glued, missing
 
 PAGE = Path(__file__).resolve().parents[2] / "docs" / "rigid_earth.md"
-USED = re.compile(r"\{glue:text\}`([A-Za-z_0-9]+)(?::[^`]*)?`")
-CELL = re.compile(r"```\{code-cell\} python\n(?::tags: \[remove-cell\]\n)?(.*?)```", re.S)
 
 
 @functools.cache
 def _glued() -> dict[str, Any]:
-    pytest.importorskip("pint")
-    pytest.importorskip("myst_nb")
-    pytest.importorskip("matplotlib")
-    text = PAGE.read_text(encoding="utf-8")
-    values: dict[str, Any] = {}
-
-    def glue(name: str, value: Any, display: bool = True) -> None:
-        assert not display, name
-        values[name] = value
-
-    namespace: dict[str, Any] = {"glue": glue, "__name__": "page"}
-    for source in CELL.findall(text):  # the page's cells in order, as the build runs them
-        code = source.replace("from myst_nb import glue\n", "").replace("%matplotlib inline\n", "")
-        exec(compile(code, str(PAGE), "exec"), namespace)
-    import matplotlib.pyplot as plt
-
-    plt.close("all")
-    return values
-
-
-def missing(text: str, values: dict[str, Any]) -> list[str]:
-    """The glue keys the prose shows that the cell does not glue."""
-    return sorted(set(USED.findall(text)) - set(values))
+    return glued(PAGE)
 
 
 def test_every_number_the_prose_shows_is_glued_and_finite() -> None:
