@@ -119,8 +119,18 @@ test("gyrocompass: Foucault's view shows the drift at Ω sin λ; a pole latitude
   const r = await readouts(page);
   assert.ok(Math.abs(r.driftRate / r.unitDriftRate - 1) < 1e-2, `${r.driftRate} vs ${r.unitDriftRate}`);
   assert.ok(Math.abs(r.unitDriftRate - 7.292115e-5 * Math.sin(49 * DEG)) < 1e-18);
+  assert.ok(Math.abs(r.headingRate / r.unitDriftRate - 1) < 1e-2, "at the start the axis is horizontal");
   assert.deepEqual(errors, []);
   await page.close();
+  // Half a sidereal day on, the axis (fixed among the stars) has risen off the horizontal and its
+  // heading turns at another rate; the drift readout stays the horizontal axis's Ω sin λ.
+  const later = await open("?scene=gyrocompass&view=Foucault%27s%20gyroscope&latitude=49&heading0=0&paused=1&minutesPerSecond=60&t=11.967");
+  const q = await readouts(later.page);
+  assert.ok(q.hours > 0.49 * 86164 && q.hours < 0.51 * 86164, `at ${q.hours} s`);
+  assert.ok(Math.abs(q.driftRate / q.unitDriftRate - 1) < 1e-2, `${q.driftRate} vs ${q.unitDriftRate}`);
+  assert.ok(Math.abs(q.headingRate / q.unitDriftRate - 1) > 0.05, `heading turns at ${q.headingRate} now`);
+  assert.deepEqual(later.errors, []);
+  await later.page.close();
   const { raw } = await loadCore();
   assert.throws(() => raw.Gyrocompass.schulerTuned(-Math.PI / 2, 1.2, 0.3, INERTIA), (x) => /^latitude: -90 degrees is a pole/.test(x.message));
 });

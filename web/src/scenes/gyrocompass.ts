@@ -268,7 +268,10 @@ export const gyrocompassScene: SceneDef = {
         g.strokeStyle = `rgba(242, 184, 75, ${alpha})`;
         g.lineWidth = 1.5 * k;
         g.beginPath();
-        pts.filter((q) => q.t <= upTo).forEach((q, i) => (i ? g.lineTo(px(q.h), py(q.v)) : g.moveTo(px(q.h), py(q.v))));
+        // A heading that wraps through ±180° starts a new piece of line (no stroke across the plot).
+        pts
+          .filter((q) => q.t <= upTo)
+          .forEach((q, i, all) => (i && Math.abs(q.h - all[i - 1].h) <= 180 ? g.lineTo(px(q.h), py(q.v)) : g.moveTo(px(q.h), py(q.v))));
         g.stroke();
       }
       const now = at(tNow);
@@ -364,20 +367,27 @@ export const gyrocompassScene: SceneDef = {
         axisLabel.hidden = false;
         drawPlot();
         if (gyro) {
-          // The drift against the ground: the heading's rate from the core's samples (a centred
-          // difference over 4 min), beside the unit's Ω sin λ.
+          // The heading's rate from the core's samples (a centred difference over 4 min). The
+          // unit's Ω sin λ is the drift of a HORIZONTAL axis: the rate over the first 4 minutes,
+          // while the axis still lies flat; later the axis rises off the horizontal (it stays fixed
+          // among the stars) and its heading turns at another rate.
           const h = 120;
-          const a = headingOf(gyroAxis(Math.max(0, seconds - h))), b = headingOf(gyroAxis(Math.min(duration, seconds + h)));
-          let d = b - a;
-          if (d > Math.PI) d -= 2 * Math.PI;
-          if (d < -Math.PI) d += 2 * Math.PI;
-          const rate = d / (Math.min(duration, seconds + h) - Math.max(0, seconds - h));
+          const rateAt = (s: number): number => {
+            const t0 = Math.max(0, s - h), t1 = Math.min(duration, s + h);
+            let d = headingOf(gyroAxis(t1)) - headingOf(gyroAxis(t0));
+            if (d > Math.PI) d -= 2 * Math.PI;
+            if (d < -Math.PI) d += 2 * Math.PI;
+            return d / (t1 - t0);
+          };
+          const rate = rateAt(seconds);
+          const startRate = rateAt(0);
           const unit = Earth.siderealRate() * Math.sin(lat);
           out = [
             { key: "hours", label: "time (h from the start)", unitScale: 1 / 3600, value: seconds, text: fmt(seconds / 3600, 5) },
             { key: "gyroHeading", label: `axis heading (${A.name}, clockwise from north)`, unitScale: A.angleScale, value: now.heading, text: A.angle(now.heading, 5) },
             { key: "gyroTilt", label: `axis tilt (${A.name})`, unitScale: A.angleScale, value: now.tilt, text: A.angle(now.tilt, 5) },
-            { key: "driftRate", label: `drift against the ground (${A.perHour}, clockwise +)`, unitScale: A.perHourScale, value: rate, text: A.perHourRate(rate, 4) },
+            { key: "driftRate", label: `drift of the horizontal axis, first 4 min (${A.perHour}, clockwise +)`, unitScale: A.perHourScale, value: startRate, text: A.perHourRate(startRate, 4) },
+            { key: "headingRate", label: `the axis's heading turning now (${A.perHour}, clockwise +)`, unitScale: A.perHourScale, value: rate, text: A.perHourRate(rate, 4) },
             { key: "unitDriftRate", label: `the unit's Ω sin λ (${A.perHour})`, unitScale: A.perHourScale, value: unit, text: A.perHourRate(unit, 5) },
           ];
         } else {
