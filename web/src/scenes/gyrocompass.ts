@@ -397,9 +397,9 @@ export const gyrocompassScene: SceneDef = {
             { key: "tilt", label: `tilt (${A.name})`, unitScale: A.angleScale, value: now.tilt, text: A.angle(now.tilt, 4) },
             { key: "period", label: "period of the settling swing", value: period, text: `settles in one swing every ${fmt(period / 60, 3)} min` },
             { key: "schulerPeriod", label: "Schuler's period 2π√(R/g)", value: Gyrocompass.schulerPeriod(), text: `${fmt(Gyrocompass.schulerPeriod() / 60, 4)} min` },
-            { key: "speedError", label: `steaming error, exact (${A.name}; + reads high)`, unitScale: A.angleScale, value: speedError, text: A.angle(speedError, 4, Math.PI) },
+            { key: "speedError", label: `steaming error (${A.name}, + high)`, unitScale: A.angleScale, value: speedError, text: A.angle(speedError, 4, Math.PI) },
             { key: "speedErrorSmallAngle", label: `small-angle form V cos C/(ΩR cos λ) (${A.name})`, unitScale: A.angleScale, value: smallAngle, text: A.angle(smallAngle, 4, Math.PI) },
-            { key: "settleError", label: `latitude (damping) error (${A.name})`, unitScale: A.angleScale, value: settleError, text: A.angle(settleError, 4, Math.PI) },
+            { key: "settleError", label: `latitude error (${A.name})`, unitScale: A.angleScale, value: settleError, text: A.angle(settleError, 4, Math.PI) },
             { key: "groundSpeed", label: "the ground's speed ΩR cos λ (kn)", unitScale: 1 / KNOT, value: groundSpeed, text: fmt(groundSpeed / KNOT, 4) },
             { check: true, key: "speedErrorForms", label: `exact − small-angle (${A.name})`, unitScale: A.angleScale, value: speedError - smallAngle, text: A.angle(speedError - smallAngle, 3, Math.PI) },
           ];
