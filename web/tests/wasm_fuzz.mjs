@@ -149,6 +149,8 @@ function worker({ seed, calls, deadlineMs }) {
       [() => new core.SpringParticle(1, 2), names()],
       [() => new core.RigidEarth(3.273795e-3, 7.292115e-5, 0.409), names()],
       [() => core.Gyrocompass.schulerTuned(0.87, 1.2, 0.3, [5, 10, 10]), names()],
+      // A short run (ten minutes, 11 samples) of the compass started 5° off north on a ship.
+      [() => core.Gyrocompass.schulerTuned(0.87, 1.2, 0.3, [5, 10, 10]).simulate(600, 0.087, 0, 5, 0.3, 11), names("duration", "heading0", "tilt0", "speed", "course", "samples")],
       [() => {
         // Thirty years of a pole on a 433-day and an annual circle, every 30 days (the core needs
         // the beat of the band's shortest period, 380 d, with the annual one: 25.7 years).
