@@ -19,10 +19,12 @@ from __future__ import annotations
 import inspect
 import re
 import shutil
+import sys
 from pathlib import Path
 from typing import Any
 
 import derive_pages  # docs/_ext/, on the path beside this module
+from sphinx.pycode import ModuleAnalyzer
 
 DOCS = Path(__file__).resolve().parent.parent
 ROOT = DOCS.parent
@@ -199,8 +201,34 @@ def _escape_bars(app: Any, what: str, name: str, obj: Any, options: Any, lines: 
             lines[i] = _BAR.sub(r"\\|", line)
 
 
+def _data_docs(app: Any, what: str, name: str, obj: Any, options: Any, lines: list[str]) -> None:
+    """A module constant re-exported by the package (``poinsot.J2000``, ``poinsot.exercises.FORMATS``)
+    has no docstring of its own: autodoc would show its type's (numpy's ``datetime64``, ``dict``'s),
+    which is not about it. Its ``#:`` comment in the module that defines it is shown instead."""
+    if what != "data" or not name.startswith("poinsot."):
+        return
+    short = name.rsplit(".", 1)[1]
+    for modname, module in sorted(sys.modules.items()):
+        if not modname.startswith("poinsot") or getattr(module, short, None) is not obj:
+            continue
+        try:
+            docs = ModuleAnalyzer.for_module(modname).find_attr_docs()
+        except Exception:  # a compiled module: no source to read
+            continue
+        if ("", short) in docs:
+            lines[:] = list(docs[("", short)])
+            return
+    if (
+        lines
+        and type(obj).__doc__
+        and inspect.cleandoc(type(obj).__doc__).startswith(lines[0].strip())
+    ):
+        lines[:] = []
+
+
 def setup(app: Any) -> dict[str, Any]:
     app.connect("autodoc-process-docstring", _escape_bars, priority=400)
+    app.connect("autodoc-process-docstring", _data_docs, priority=300)
     app.connect("config-inited", _copy_mathjax)
     app.connect("config-inited", _write_api)
     app.connect("config-inited", _copy_notebooks)

@@ -127,8 +127,10 @@ class Flight(show.Displayed):
         Landing displacement along the launch azimuth (m).
     drift:
         Landing displacement across the launch azimuth, positive to the right (m).
-    t, position, velocity:
-        Samples of the flight: (N,), (N, 3), (N, 3).
+    t:
+        Sample times of the flight (s), shape (N,).
+    position, velocity:
+        The flight's samples (m, m/s, ENU), shape (N, 3).
     """
 
     time: float
@@ -161,8 +163,10 @@ class FoucaultRun(show.Displayed):
 
     Attributes
     ----------
-    t, position, velocity:
-        Samples (N,), (N, 3), (N, 3): the bob in ENU, origin at the point of suspension.
+    t:
+        Sample times (s), shape (N,).
+    position, velocity:
+        The bob's samples (m, m/s) in ENU, origin at the point of suspension, shape (N, 3).
     turn_times, turn_angles:
         The turning points of the swing — the bob's largest distances from its rest position —
         and the bob's direction from its rest position there, counterclockwise from east seen
