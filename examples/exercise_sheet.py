@@ -48,7 +48,7 @@ for v in sheet:
 # ---------
 #
 # Markdown always; LaTeX built to PDF where a TeX engine is installed (on Debian or Ubuntu:
-# ``apt install texlive-latex-extra``; without one the example says so and writes markdown only).
+# ``apt install texlive-latex-base latexmk``; without one the example says so and writes markdown only).
 # The problem sheet and the solution sheet are separate files.
 
 written = exercises.write(sheet, "markdown", out)
@@ -57,7 +57,7 @@ if shutil.which("pdflatex") or shutil.which("latexmk"):  # what exercises looks 
 else:
     print("no TeX engine (pdflatex or latexmk) is installed: markdown only, no PDF")
 for path in written:
-    print(f"wrote {path}")
+    print(f"wrote {Path(path).name}")
 
 # %%
 # The first page of the problem sheet
@@ -108,4 +108,4 @@ else:
     )
     source = "the markdown sheet (matplotlib)"
 fig.savefig(png, dpi=80)
-print(f"wrote {png}: the first page of the problem sheet, from {source}")
+print(f"wrote {png.name}: the first page of the problem sheet, from {source}")
