@@ -20,12 +20,35 @@ $(PY):
 
 # Build the Rust core + bindings (maturin, release) and install poinsot editable with all extras.
 setup: $(PY)
-	$(PY) -m pip install -q -e '.[all,test,docs,notebook,parallel]'
+	@if [[ -z "$(POINSOT_SET_UP)" ]]; then set -x; $(PY) -m pip install -q -e '.[all,test,docs,notebook,parallel]'; fi
 
 demo: setup
 	$(VENV)/bin/poinsot tour
 
-test: setup test-rust lint msrv test-python examples test-web test-docs test-wheel test-sdist
+# Every test, in an order that keeps both cores busy where one step uses only one: pytest runs
+# beside the web tooling's install (wasm-bindgen-cli takes minutes to build) and the MSRV check,
+# and the documentation (Sphinx runs the gallery and the notebooks one by one) beside the source
+# distribution's build and test. The browser lab's tests, which time the cost of a frame, run
+# alone. The examples are run by the documentation build (sphinx-gallery executes every file of
+# examples/ and stops the build on an error: docs/conf.py), so `make examples` is not repeated here.
+test: setup test-rust lint python-beside-tooling test-web docs-beside-sdist test-wheel
+
+# Two makes side by side, the second at a lower priority (nice), so that the first keeps a core
+# for itself (its tests time how fast a call answers Ctrl-C); the second's log is printed after
+# both end, and the step fails if either does. POINSOT_SET_UP and POINSOT_LAB_BUILT say what is
+# done already (the set-up; the lab, which two makes must not build at once).
+BESIDE = mkdir -p target; \
+	nice -n 10 $(MAKE) --no-print-directory POINSOT_SET_UP=1 POINSOT_LAB_BUILT=$(3) $(2) > target/beside.log 2>&1 & pid=$$!; \
+	$(MAKE) --no-print-directory POINSOT_SET_UP=1 POINSOT_LAB_BUILT=$(3) $(1); rc1=$$?; \
+	wait $$pid; rc2=$$?; echo "== make $(2) (ran beside make $(1)), exit $$rc2:"; cat target/beside.log; \
+	exit $$(( rc1 != 0 || rc2 != 0 ))
+
+.PHONY: python-beside-tooling docs-beside-sdist
+python-beside-tooling: setup
+	@$(call BESIDE,test-python,web-setup msrv,)
+
+docs-beside-sdist: setup lab-build
+	@$(call BESIDE,test-docs,test-sdist,1)
 
 test-rust:
 	cargo test -p poinsot --release
@@ -103,7 +126,7 @@ test-docs: site
 	cd docs && node --test --test-concurrency=1 tests/
 
 lab-build: setup web-setup
-	bash web/build.sh
+	@if [[ -z "$(POINSOT_LAB_BUILT)" ]]; then set -x; bash web/build.sh; fi
 
 # One screenshot of each scene of the built lab (web/shots/shots.test.mjs, Debian's chromium) into
 # docs/_generated/lab/ (git-ignored), for the pages that show the lab (docs/_ext/pictures.py).
