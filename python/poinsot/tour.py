@@ -36,6 +36,15 @@ def _vec(v: np.ndarray, digits: int = 6) -> str:
     return "(" + ", ".join(f"{x: .{digits}g}" for x in v) + ")"
 
 
+def _table(*columns: str, title: str | None = None, left: int = 1) -> Table:
+    """A table of the tour: the first ``left`` columns (names) left-justified, the others
+    (numbers) right-justified."""
+    table = Table(title=title)
+    for i, name in enumerate(columns):
+        table.add_column(name, justify="left" if i < left else "right")
+    return table
+
+
 @section("Moving frames: the acceleration seen from a turning, accelerating frame (eqs. 2.20–2.24)")
 def _moving_frames(con: Console) -> None:
     frame = ps.MovingFrame(
@@ -48,10 +57,7 @@ def _moving_frames(con: Console) -> None:
     con.print(
         "a particle at r = (3, 0, 0) m moving with ṙ = (0, 1, 0) m/s, r̈ = (0.1, 0, 0) m/s² in it:"
     )
-    table = Table(show_header=True)
-    table.add_column("term of eq. 2.21")
-    table.add_column("poinsot (m/s²)", justify="right")
-    table.add_column("by hand", justify="right")
+    table = _table("term of eq. 2.21", "poinsot (m/s²)", "by hand")
     hand = {
         "relative": "(0.1, 0, 0)",
         "origin": "(0, 0, 1)",
@@ -74,11 +80,13 @@ def _moving_frames(con: Console) -> None:
 def _earth_numbers(con: Console) -> None:
     solar = ps.Earth.solar_day(radius=6.4e6, g=9.81)
     sidereal = ps.Earth(radius=6.4e6)
-    table = Table(title="r = 6.4e6 m as in the unit")
-    table.add_column("quantity")
-    table.add_column("the unit", justify="right")
-    table.add_column("poinsot, solar day", justify="right")
-    table.add_column("poinsot, sidereal (default)", justify="right")
+    table = _table(
+        "quantity",
+        "the unit",
+        "poinsot, solar day",
+        "poinsot, sidereal (default)",
+        title="r = 6.4e6 m as in the unit",
+    )
     table.add_row(
         "ω (rad/s)",
         "7.25e-5 (misprint: 7.27e-5)",
@@ -112,11 +120,13 @@ def _earth_numbers(con: Console) -> None:
 
 @section("The falling body: deflected east (eqs. 2.32–2.42)")
 def _falling_body(con: Console) -> None:
-    table = Table(title="a body dropped from rest from 100 m at latitude 45°")
-    table.add_column("model")
-    table.add_column("east (m)", justify="right")
-    table.add_column("south (m)", justify="right")
-    table.add_column("time (s)", justify="right")
+    table = _table(
+        "model",
+        "east (m)",
+        "south (m)",
+        "time (s)",
+        title="a body dropped from rest from 100 m at latitude 45°",
+    )
     solar = ps.Earth.solar_day(g=9.81)
     table.add_row("the unit (2.42)", "1.55e-2", "—", "√(2h/g)")
     table.add_row(
@@ -228,9 +238,9 @@ def _standard_solids(con: Console) -> None:
         ("thin disk", ps.RigidBody.thin_disk(m, r), "¼ m r², ½ m r²"),
         ("thin ring", ps.RigidBody.thin_ring(m, r), "½ m r², m r²"),
     ]
-    table = Table(title=f"m = {m} kg, r = {r} m, h = l = {h} m")
-    table.add_column("body")
-    table.add_column("principal moments (kg·m²)", justify="right")
+    table = _table(
+        "body", "principal moments (kg·m²)", title=f"m = {m} kg, r = {r} m, h = l = {h} m"
+    )
     table.add_column("textbook")
     table.add_column("kind")
     for name, body, formula in rows:
@@ -244,10 +254,7 @@ def _standard_solids(con: Console) -> None:
 def _free_symmetric_top(con: Console) -> None:
     top = ps.FreeSymmetricTop(2.0, 1.0, [0.3, 0.4, 2.0])
     con.print("A prolate top, I₁ = I₂ = 2, I₃ = 1 kg·m², ω₀ = (0.3, 0.4, 2) rad/s, no torque:")
-    table = Table()
-    table.add_column("quantity (the unit's eq.)")
-    table.add_column("closed form", justify="right")
-    table.add_column("integrated (DOP853)", justify="right")
+    table = _table("quantity (the unit's eq.)", "closed form", "integrated (DOP853)")
     tr = ps.simulate(
         [2.0, 2.0, 1.0], [0.3, 0.4, 2.0], 10.0, method="dop853", rtol=1e-12, atol=1e-14, samples=101
     )
@@ -311,12 +318,14 @@ def _free_asymmetric_top(con: Console) -> None:
         f"{flip.flip_interval:.4f} s (Dzhanibekov's wing nut)"
     )
     w_exact, _q_exact = body.state(1000.0)
-    table = Table(title="reaching t = 1000 s")
-    table.add_column("method")
-    table.add_column("step (s)", justify="right")
-    table.add_column("|Δω| at t = 1000", justify="right")
-    table.add_column("max |ΔE/E|", justify="right")
-    table.add_column("max |Δ|L|/|L||", justify="right")
+    table = _table(
+        "method",
+        "step (s)",
+        "|Δω| at t = 1000",
+        "max |ΔE/E|",
+        "max |Δ|L|/|L||",
+        title="reaching t = 1000 s",
+    )
     for method, dt in (("exact", None), ("splitting6", 0.01), ("splitting2", 0.01), ("rk4", 0.01)):
         tr = ps.simulate(
             [1.0, 2.0, 3.0], [1.0, 0.1, 1.0], 1000.0, method=method, dt=dt, samples=201
@@ -363,11 +372,11 @@ def _euler_rates(con: Console) -> None:
 )
 def _heavy_top(con: Console) -> None:
     i1, i3, mgl = 1.0, 0.5, 1.0
-    table = Table(
+    table = _table(
+        "quantity",
         title=f"I₁ = {i1} kg·m², I₃ = {i3} kg·m², m g l = {mgl} N·m, θ₀ = 0.8 rad, ω₃ = 6 rad/s, "
-        "released with θ̇₀ = 0"
+        "released with θ̇₀ = 0",
     )
-    table.add_column("quantity")
     tops = []
     for phi_dot in (0.5, 0.0, -0.5):
         tops.append(ps.HeavyTop.from_spin(i1, i3, mgl, 0.8, 6.0, phi_dot=phi_dot))
@@ -412,15 +421,16 @@ def _fast_top(con: Console) -> None:
         f"I₁ = {i1}, I₃ = {i3}, m g l = {mgl}, θ₀ = {theta0} rad: minimum spin (2.119) "
         f"ω₃ = (2/I₃)√(m g l I₁ cos θ₀) = {w_min:.6f} rad/s"
     )
-    table = Table(
-        title="steady precession rates φ̇ (rad/s): the two roots of 2.116 and the fast-top formulas"
+    table = _table(
+        "ω₃ (rad/s)",
+        "slow, exact",
+        "m g l/p_ψ (2.121)",
+        "fast, exact",
+        "p_ψ/(I₁ cos θ₀) (2.120, corrected)",
+        "p_ψ/(2 I₁ cos θ₀) (2.120 as printed)",
+        title="steady precession rates φ̇ (rad/s): the two roots of 2.116 and the fast-top formulas",
+        left=0,
     )
-    table.add_column("ω₃ (rad/s)", justify="right")
-    table.add_column("slow, exact", justify="right")
-    table.add_column("m g l/p_ψ (2.121)", justify="right")
-    table.add_column("fast, exact", justify="right")
-    table.add_column("p_ψ/(I₁ cos θ₀) (2.120, corrected)", justify="right")
-    table.add_column("p_ψ/(2 I₁ cos θ₀) (2.120 as printed)", justify="right")
     for w3 in (1.01 * w_min, 5.0, 10.0, 40.0, 200.0):
         s = ps.HeavyTop.steady_precession(i1, i3, mgl, theta0, w3)
         table.add_row(
@@ -482,10 +492,7 @@ def _turning_earth(con: Console) -> None:
     compass = ps.Gyrocompass(lat50)
     exact = np.degrees(compass.speed_error(20 * knot, 0.0))
     small = np.degrees(compass.speed_error_small_angle(20 * knot, 0.0))
-    table = Table(show_header=True)
-    table.add_column("quantity")
-    table.add_column("poinsot", justify="right")
-    table.add_column("check", justify="right")
+    table = _table("quantity", "poinsot", "check")
     table.add_row(
         "Foucault's gyroscope, drift",
         f"{drift:.3f} °/h",
@@ -516,10 +523,7 @@ def _rigid_earth(con: Console) -> None:
         f"The Earth is the unit's symmetric top: H = (C − A)/C = {h:.9g} (IERS 2010), one turn "
         "a sidereal day, torqued by the Sun and the Moon on its bulge."
     )
-    table = Table(show_header=True)
-    table.add_column("quantity")
-    table.add_column("poinsot", justify="right")
-    table.add_column("check / measured", justify="right")
+    table = _table("quantity", "poinsot", "check / measured")
     table.add_row(
         "Euler: 2π/|Ω| (2.83)",
         f"{e.euler_period / day:.6g} sidereal d",
@@ -564,10 +568,7 @@ def _experiments(con: Console) -> None:
         "recomputed through poinsot's public API from its inputs as published (Paris feet and "
         "lines read by pint); the first of each topic:"
     )
-    table = Table(show_header=True)
-    table.add_column("experiment")
-    table.add_column("measured", justify="right")
-    table.add_column("poinsot", justify="right")
+    table = _table("experiment", "measured", "poinsot")
     table.add_column("verdict")
     for r in results:
         table.add_row(
