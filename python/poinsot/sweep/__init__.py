@@ -214,6 +214,18 @@ _SIMULATE = Model(
 )
 
 _LAT = Key("latitude", "latitude, north-positive", "rad", angle="angle")
+
+
+def _landing(run: str, origin: str) -> tuple[Output, Output, Output]:
+    """The first outputs of a run to the ground (``run``: "fall", "flight"): its time and the
+    landing point east and north of ``origin``."""
+    return (
+        Output("time", f"time of {run}", "s"),
+        Output("east", f"landing point east of {origin}", "m"),
+        Output("north", f"landing point north of {origin}", "m"),
+    )
+
+
 _DROP_MODEL = Model(
     "drop",
     "Earth.drop",
@@ -222,9 +234,7 @@ _DROP_MODEL = Model(
         {"height": Key("height", "release height above the ground", "m"), "latitude": _LAT},
     ),
     (
-        Output("time", "time of fall", "s"),
-        Output("east", "landing point east of the plumb line", "m"),
-        Output("north", "landing point north of the plumb line", "m"),
+        *_landing("fall", "the plumb line"),
         Output("first_order_east", "eastward deflection to first order in ω (2.42)", "m"),
         Output("second_order_south", "southward deflection to second order in ω", "m"),
     ),
@@ -248,9 +258,7 @@ _PROJECTILE = Model(
         },
     ),
     (
-        Output("time", "time of flight", "s"),
-        Output("east", "landing point east of the launch", "m"),
-        Output("north", "landing point north of the launch", "m"),
+        *_landing("flight", "the launch"),
         Output("range", "horizontal distance from launch to landing", "m"),
         Output("downrange", "landing displacement along the launch azimuth", "m"),
         Output("drift", "landing displacement to the right of the azimuth", "m"),
