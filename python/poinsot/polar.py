@@ -383,21 +383,11 @@ def fit_wobble(
         band,
         pa,
     )
-    return WobbleFit(
-        chandler=WobbleTerm(**out["chandler"]),
-        annual_prograde=WobbleTerm(**out["annual_prograde"]),
-        annual_retrograde=WobbleTerm(**out["annual_retrograde"]),
-        offset=out["offset"],
-        offset_sigma=out["offset_sigma"],
-        drift=out["drift"],
-        drift_sigma=out["drift_sigma"],
-        residual_rms=out["residual_rms"],
-        serial_correlation=out["serial_correlation"],
-        sigma_inflation=out["sigma_inflation"],
-        chandler_false_alarm=out["chandler_false_alarm"],
-        chandler_significant=out["chandler_significant"],
-        samples=out["samples"],
-    )
+    # The core's fields are the dataclass's, the three circles as dicts of WobbleTerm's fields.
+    fields: dict[str, Any] = dict(out)
+    for circle in ("chandler", "annual_prograde", "annual_retrograde"):
+        fields[circle] = WobbleTerm(**out[circle])
+    return WobbleFit(**fields)
 
 
 def _write_extract(path: Path, every: int = 5) -> int:
