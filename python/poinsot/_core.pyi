@@ -6,6 +6,9 @@ from typing import Any, TypeAlias, TypedDict, final
 import numpy as np
 from numpy.typing import NDArray
 
+# A long call's progress callback: called with the fraction done, in [0, 1].
+_Progress: TypeAlias = Callable[[float], Any] | None
+
 __version__: str
 DEFAULT_MAX_STEPS: int
 DEFAULT_MEMORY_BUDGET: int
@@ -473,7 +476,7 @@ class EarthCore:
         rtol: float,
         atol: float,
         max_steps: int,
-        progress: Callable[[float], Any] | None = None,
+        progress: _Progress = None,
     ) -> FoucaultRunCore: ...
     def inertial_swing(
         self,
@@ -812,7 +815,7 @@ def free_body_states(
     attitude0: NDArray[np.float64] | None,
     t: NDArray[np.float64],
     per_body: bool,
-    progress: Callable[[float], Any] | None,
+    progress: _Progress,
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]: ...
 
 # ---- dynamics (dynamics.rs) ----
@@ -858,7 +861,7 @@ def dynamics_simulate(
     rtol: float,
     atol: float,
     max_steps: int,
-    progress: Callable[[float], Any] | None,
+    progress: _Progress,
 ) -> TrajectoryCore: ...
 
 # A batch's settings, as dynamics._batch_settings makes them: duration (s), the torque's kind,
@@ -870,7 +873,7 @@ def dynamics_simulate_batch(
     omega0: NDArray[np.float64],
     attitude0: NDArray[np.float64] | None,
     settings: _BatchSettings,
-    progress: Callable[[float], Any] | None,
+    progress: _Progress,
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], int]: ...
 
 # ---- carried bodies and the gyrocompass (gyrocompass.rs) ----
@@ -935,7 +938,7 @@ class GyrocompassCore:
         rtol: float,
         atol: float,
         max_steps: int,
-        progress: Callable[[float], Any] | None,
+        progress: _Progress,
     ) -> tuple[
         NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]
     ]: ...
@@ -960,7 +963,7 @@ def dynamics_simulate_carried(
     rtol: float,
     atol: float,
     max_steps: int,
-    progress: Callable[[float], Any] | None,
+    progress: _Progress,
 ) -> tuple[TrajectoryCore, NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]: ...
 
 # ---- heavy top (heavy_top.rs) ----
@@ -1061,43 +1064,42 @@ SWEEP_SIMULATE_KEYWORDS: list[str]
 SWEEP_DROP_KEYWORDS: list[str]
 SWEEP_PROJECTILE_KEYWORDS: list[str]
 
+# A sweep's grid (dims, columns) and its results (None when check_only).
+_Dims: TypeAlias = Sequence[tuple[str, int, int, str]]
+_Columns: TypeAlias = Sequence[tuple[str, NDArray[np.float64], int | None]]
+_Swept: TypeAlias = dict[str, NDArray[Any]] | None
+
 def sweep_categories() -> dict[str, list[str]]: ...
-def sweep_check_memory(dims: Sequence[tuple[str, int, int, str]], bytes_each: int) -> None: ...
+def sweep_check_memory(dims: _Dims, bytes_each: int) -> None: ...
 def sweep_heavy_top(
-    dims: Sequence[tuple[str, int, int, str]],
-    columns: Sequence[tuple[str, NDArray[np.float64], int | None]],
-    check_only: bool,
-    progress: Callable[[float], Any] | None = None,
-) -> dict[str, NDArray[Any]] | None: ...
+    dims: _Dims, columns: _Columns, check_only: bool, progress: _Progress = None
+) -> _Swept: ...
 def sweep_free_body(
-    dims: Sequence[tuple[str, int, int, str]],
-    columns: Sequence[tuple[str, NDArray[np.float64], int | None]],
-    check_only: bool,
-    progress: Callable[[float], Any] | None = None,
-) -> dict[str, NDArray[Any]] | None: ...
+    dims: _Dims, columns: _Columns, check_only: bool, progress: _Progress = None
+) -> _Swept: ...
 def sweep_simulate(
-    dims: Sequence[tuple[str, int, int, str]],
-    columns: Sequence[tuple[str, NDArray[np.float64], int | None]],
+    dims: _Dims,
+    columns: _Columns,
     settings: _BatchSettings,
     check_only: bool,
-    progress: Callable[[float], Any] | None = None,
-) -> dict[str, NDArray[Any]] | None: ...
+    progress: _Progress = None,
+) -> _Swept: ...
 def sweep_drop(
-    dims: Sequence[tuple[str, int, int, str]],
-    columns: Sequence[tuple[str, NDArray[np.float64], int | None]],
+    dims: _Dims,
+    columns: _Columns,
     earth: EarthCore,
     model: FallModel,
     check_only: bool,
-    progress: Callable[[float], Any] | None = None,
-) -> dict[str, NDArray[Any]] | None: ...
+    progress: _Progress = None,
+) -> _Swept: ...
 def sweep_projectile(
-    dims: Sequence[tuple[str, int, int, str]],
-    columns: Sequence[tuple[str, NDArray[np.float64], int | None]],
+    dims: _Dims,
+    columns: _Columns,
     earth: EarthCore,
     model: FallModel,
     check_only: bool,
-    progress: Callable[[float], Any] | None = None,
-) -> dict[str, NDArray[Any]] | None: ...
+    progress: _Progress = None,
+) -> _Swept: ...
 
 # ---- the real pole's wobble (wobble.rs) ----
 ANNUAL_PERIOD: float
