@@ -90,9 +90,7 @@ class Fall(show.Displayed):
 
     def _rows(self) -> list[show.Row]:
         return [
-            show.scalar("time", "time of fall", "t", self.time, "s"),
-            show.scalar("east", "landing point east of the plumb line", "x", self.east, "m"),
-            show.scalar("north", "landing point north of the plumb line", "y", self.north, "m"),
+            *_landing(self, "fall", "the plumb line"),
             show.scalar(
                 "first_order_east",
                 "eastward deflection, first order (2.42)",
@@ -145,9 +143,7 @@ class Flight(show.Displayed):
 
     def _rows(self) -> list[show.Row]:
         return [
-            show.scalar("time", "time of flight", "t", self.time, "s"),
-            show.scalar("east", "landing point east of the launch", "x", self.east, "m"),
-            show.scalar("north", "landing point north of the launch", "y", self.north, "m"),
+            *_landing(self, "flight", "the launch"),
             show.scalar("range", "horizontal distance to the landing point", "", self.range, "m"),
             show.scalar(
                 "downrange", "displacement along the launch azimuth", "", self.downrange, "m"
@@ -258,6 +254,16 @@ class FoucaultRun(show.Displayed):
                 "turn_angles", "directions at the turning points", "", self.turn_angles, "rad"
             ),
         ]
+
+
+def _landing(run: Fall | Flight, what: str, origin: str) -> list[show.Row]:
+    """The rows of a run to the ground (``what``: "fall", "flight"): its time and its landing
+    point east and north of ``origin`` (the sweeps' outputs say the same: ``sweep._landing``)."""
+    return [
+        show.scalar("time", f"time of {what}", "t", run.time, "s"),
+        show.scalar("east", f"landing point east of {origin}", "x", run.east, "m"),
+        show.scalar("north", f"landing point north of {origin}", "y", run.north, "m"),
+    ]
 
 
 def _sampled(t: FloatArray, position: FloatArray, velocity: FloatArray) -> list[show.Row]:
