@@ -24,6 +24,7 @@ import numpy as np
 
 from . import _core
 from . import _display as show
+from ._props import core_property
 from ._units import is_quantity
 from ._validate import FloatArray, as_callable, as_count, as_float_array, as_scalar, as_vector3
 from .dynamics import Trajectory
@@ -286,6 +287,12 @@ def _restore(*args: Any) -> Gyrocompass:
     return out
 
 
+def _item(name: str, index: int, doc: str) -> Any:
+    """A read-only property: entry ``index`` of the core compass's tuple ``name`` (``args``,
+    its constructor's arguments; ``settle``) as a float, documented by ``doc``."""
+    return property(lambda self: float(getattr(self._core, name)[index]), doc=doc)
+
+
 class Gyrocompass(show.Displayed):
     """A pendulous (gravity-controlled) gyrocompass at ``latitude`` on the rotating Earth.
 
@@ -377,25 +384,10 @@ class Gyrocompass(show.Displayed):
         return (_restore, tuple(self._core.args))
 
     # -- parameters ---------------------------------------------------------------------------
-    @property
-    def latitude(self) -> float:
-        """λ (rad)."""
-        return float(self._core.args[0])
-
-    @property
-    def angular_momentum(self) -> float:
-        """H (kg·m²/s)."""
-        return float(self._core.args[1])
-
-    @property
-    def pendulosity(self) -> float:
-        """P = m g l (N·m)."""
-        return float(self._core.args[2])
-
-    @property
-    def damping(self) -> float:
-        """ζ."""
-        return float(self._core.args[3])
+    latitude: float = _item("args", 0, "λ (rad).")
+    angular_momentum: float = _item("args", 1, "H (kg·m²/s).")
+    pendulosity: float = _item("args", 2, "P = m g l (N·m).")
+    damping: float = _item("args", 3, "ζ.")
 
     @property
     def inertia(self) -> FloatArray:
@@ -410,42 +402,41 @@ class Gyrocompass(show.Displayed):
         return Earth(*self._core.args[5:])
 
     # -- results ------------------------------------------------------------------------------
-    @property
-    def period(self) -> float:
+    period = core_property(
+        "period",
         """The undamped period of the settling oscillation about the meridian,
         2π √(H/(P Ω cos λ)) (s), from the linearised equations (the exact linear ω_n² =
         Ω_c (P/H + Ω_c) differs by the relative Ω_c H/(2P), 7e-4 for the defaults). Raises
-        naming ``rotation_rate`` on a still Earth."""
-        return float(self._core.period)
-
-    @property
-    def natural_frequency(self) -> float:
-        """ω_n = √(Ω_c (P/H + Ω_c)) (rad/s) of the linearised equations."""
-        return float(self._core.natural_frequency)
-
-    @property
-    def damping_coefficient(self) -> float:
-        """D = 2 ζ ω_n H (N·m/rad): the damping torque about the vertical per radian of tilt."""
-        return float(self._core.damping_coefficient)
-
-    @property
-    def ground_speed(self) -> float:
-        """The ground's eastward speed Ω R cos λ (m/s)."""
-        return float(self._core.ground_speed)
-
-    @property
-    def settle_error(self) -> float:
+        naming ``rotation_rate`` on a still Earth.""",
+        float,
+    )
+    natural_frequency = core_property(
+        "natural_frequency",
+        "ω_n = √(Ω_c (P/H + Ω_c)) (rad/s) of the linearised equations.",
+        float,
+    )
+    damping_coefficient = core_property(
+        "damping_coefficient",
+        "D = 2 ζ ω_n H (N·m/rad): the damping torque about the vertical per radian of tilt.",
+        float,
+    )
+    ground_speed = core_property(
+        "ground_speed", "The ground's eastward speed Ω R cos λ (m/s).", float
+    )
+    settle_error: float = _item(
+        "settle",
+        0,
         """The latitude (damping) error (rad): what the settled, damped compass at rest reads
         minus true north — negative (reads low, its north settled east of true north) in the
         north. From the full model's steady state, sin α = D θ/(H Ω cos λ) with tan θ =
         H Ω sin λ/(P + H Ω cos λ cos α); small-angle form −D tan λ/(P + H Ω cos λ). Zero
-        when undamped."""
-        return float(self._core.settle[0])
-
-    @property
-    def settle_tilt(self) -> float:
-        """The settled tilt of the north end (rad): tan θ ≈ H Ω sin λ/(P + H Ω cos λ)."""
-        return float(self._core.settle[1])
+        when undamped.""",
+    )
+    settle_tilt: float = _item(
+        "settle",
+        1,
+        "The settled tilt of the north end (rad): tan θ ≈ H Ω sin λ/(P + H Ω cos λ).",
+    )
 
     def speed_error(self, speed: Any, course: Any) -> float:
         """The speed (steaming) error δ = atan(V cos C / (Ω R cos λ + V sin C)) (rad): the
