@@ -145,6 +145,19 @@ def as_flag(value: Any, name: str) -> bool:
     raise ArgumentTypeError(f"{name}: must be True or False, got {type(value).__name__} {value!r}")
 
 
+def tolerances(rtol: Any, atol: Any, max_steps: Any) -> tuple[float, float, int]:
+    """An integration's tolerances and step limit (≥ 1), each checked naming its keyword."""
+    return as_scalar(rtol, "rtol"), as_scalar(atol, "atol"), as_count(max_steps, "max_steps", 1)
+
+
+def run_settings(
+    samples: Any, rtol: Any, atol: Any, max_steps: Any
+) -> tuple[int, float, float, int]:
+    """A run's sample count (≥ 2), then :func:`tolerances`: the settings the core's runs take
+    in this order (``samples, rtol, atol, max_steps``)."""
+    return (as_count(samples, "samples", 2), *tolerances(rtol, atol, max_steps))
+
+
 def as_choice(value: Any, name: str, choices: tuple[str, ...]) -> str:
     """``value`` as one of the strings ``choices``; :class:`ArgumentTypeError` for a
     non-string, :class:`PoinsotError` for another string, both naming ``name``."""

@@ -27,7 +27,9 @@ from ._validate import (
     as_float_array,
     as_scalar,
     in_degrees,
+    run_settings,
     shaped,
+    tolerances,
 )
 from .errors import PoinsotError
 
@@ -360,20 +362,8 @@ def _fall_model(
         as_choice(gravity, "gravity", _GRAVITY),
         as_flag(rotation, "rotation"),
         as_flag(centrifugal, "centrifugal"),
-        *_tolerances(rtol, atol, max_steps),
+        *tolerances(rtol, atol, max_steps),
     )
-
-
-def _tolerances(rtol: Any, atol: Any, max_steps: Any) -> tuple[float, float, int]:
-    """An integration's tolerances and step limit (≥ 1), each checked naming its keyword."""
-    return as_scalar(rtol, "rtol"), as_scalar(atol, "atol"), as_count(max_steps, "max_steps", 1)
-
-
-def _run_settings(
-    samples: Any, rtol: Any, atol: Any, max_steps: Any
-) -> tuple[int, float, float, int]:
-    """A run's sample count (≥ 2), then :func:`_tolerances`."""
-    return (as_count(samples, "samples", 2), *_tolerances(rtol, atol, max_steps))
 
 
 class Earth:
@@ -698,7 +688,7 @@ class Earth:
         lat = as_angle(latitude, "latitude", degrees)
         az = as_angle(azimuth, "azimuth", degrees)
         dur = as_scalar(duration, "duration")
-        settings = _run_settings(samples, rtol, atol, max_steps)
+        settings = run_settings(samples, rtol, atol, max_steps)
         progress = as_flag(progress, "progress")
         length = as_scalar(length, "length")
         amp = as_scalar(amplitude, "amplitude")
@@ -750,7 +740,7 @@ class Earth:
         if v.shape != (2,):
             raise PoinsotError(f"velocity: must have shape (2,) [v_east, v_north], got {v.shape}")
         dur = None if duration is None else as_scalar(duration, "duration")
-        settings = _run_settings(samples, rtol, atol, max_steps)
+        settings = run_settings(samples, rtol, atol, max_steps)
         r = self._core.inertial_swing(lat, np.ascontiguousarray(v), dur, *settings)
         return _result(InertialOscillation, r)
 
@@ -790,6 +780,6 @@ class Earth:
             as_scalar(pull, "pull"),
             as_scalar(friction, "friction"),
             as_scalar(duration, "duration"),
-            *_run_settings(samples, rtol, atol, max_steps),
+            *run_settings(samples, rtol, atol, max_steps),
         )
         return _result(LowFlow, r)

@@ -26,7 +26,14 @@ from . import _core
 from . import _display as show
 from ._props import core_property
 from ._units import is_quantity
-from ._validate import FloatArray, as_callable, as_count, as_float_array, as_scalar, as_vector3
+from ._validate import (
+    FloatArray,
+    as_callable,
+    as_float_array,
+    as_scalar,
+    as_vector3,
+    run_settings,
+)
 from .dynamics import Trajectory
 from .errors import ArgumentTypeError, PoinsotError
 
@@ -233,10 +240,7 @@ def _simulate_carried(
         tkind,
         np.ascontiguousarray(tvec, dtype=np.float64),
         _method(method),
-        as_count(samples, "samples", 2),
-        as_scalar(rtol, "rtol"),
-        as_scalar(atol, "atol"),
-        as_count(max_steps, "max_steps", 1),
+        *run_settings(samples, rtol, atol, max_steps),
         as_callable(progress, "progress"),
     )
     return CarriedTrajectory(core, rel, frame_q, rel_w)
@@ -512,10 +516,7 @@ class Gyrocompass(show.Displayed):
             0.0 if speed is None else _si(speed, "speed", "meter / second"),
             0.0 if course is None else _si(course, "course", "radian"),
             method if isinstance(method, str) else str(method),
-            as_count(samples, "samples", 2),
-            as_scalar(rtol, "rtol"),
-            as_scalar(atol, "atol"),
-            as_count(max_steps, "max_steps", 1),
+            *run_settings(samples, rtol, atol, max_steps),
             as_callable(progress, "progress"),
         )
         return CompassRun(t, heading, tilt_out, lat)
