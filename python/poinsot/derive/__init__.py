@@ -69,6 +69,7 @@ _TOPICS: dict[str, str] = {
 
 #: The unit's theory applied beyond its equations: name → module (issue 25: the Earth as a
 #: rigid body). Not among :func:`names` (the unit's topics); :func:`derivation` builds them too.
+#: They have no ``PRINTED``: the unit, which stops at the heavy top, prints none of their equations.
 _APPLIED: dict[str, str] = {
     "rigid_earth": "rigid_earth",  # 2.83 and the torque theory: Euler's period, the precession
     "gyrocompass": "gyrocompass",  # issue 26: the rotating frame and torque law, linearised

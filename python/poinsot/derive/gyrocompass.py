@@ -54,7 +54,6 @@ from ._core import (
     Derivation,
     Dot,
     DtRot,
-    Printed,
     Unit,
     Vec,
     VectorModel,
@@ -65,10 +64,7 @@ from ._core import eq as _eq
 from ._core import mul as _mul
 from ._core import power as _pow
 
-__all__ = ["derive", "PRINTED"]
-
-#: No printed equation of the unit belongs here (the unit stops at the heavy top).
-PRINTED: tuple[Printed, ...] = ()
+__all__ = ["derive"]
 
 # ---- the notation --------------------------------------------------------------------------
 

@@ -358,14 +358,22 @@ def needed_to_hold(body: Any, omega: Any, rtol: float = 1e-6) -> tuple[str, ...]
 
 _TOPS = ("spherical top", "symmetrical top", "asymmetrical top", "rotator")
 
+#: A question's kind by the prefix of its number ("MC 14a", "S 4", "L 10").
+_KIND_OF_PREFIX = dict(zip(("MC", "S", "L"), KINDS))
+
+
+def _ask(number: str, *fields: Any, **named: Any) -> Question:
+    """The :class:`Question` numbered ``number``, of the kind its prefix says; ``fields`` and
+    ``named`` are the rest of its fields (``text`` first), as :class:`Question` takes them."""
+    return Question(number, _KIND_OF_PREFIX[number.split()[0]], *fields, **named)
+
 
 def _mc_kind(number: str, condition: str, text: str, note: str) -> Question:
     word = answer_kind(condition)
     desc, example = _examples()[condition]
     pkg = {v: k for k, v in UNIT_KIND.items()}[word]
-    return Question(
+    return _ask(
         number,
-        "multiple choice",
         text,
         _TOPS,
         f"{_choice(_TOPS, word)}: poinsot classifies every body with {condition} as {pkg!r}.",
@@ -384,9 +392,8 @@ def _mc17() -> Question:
     if len(const) != 1:
         raise PoinsotError(f"MC 17: the constant quantities are {const}, not exactly one")
     spread = ", ".join(f"{k} {_sci(v, 1)}" for k, v in var.items())
-    return Question(
+    return _ask(
         "MC 17",
-        "multiple choice",
         "In a torque free motion of a rigid body, the ____ of the body is a constant vector",
         _MC17,
         f"{_choice(_MC17, const[0])}: of the four, only it stays fixed in space while a "
@@ -414,9 +421,8 @@ def _mc18() -> Question:
     req = holding_requirements(body, spin)
     principal = body.principal_axes[:, 2] * 2.0
     free = needed_to_hold(body, principal)
-    return Question(
+    return _ask(
         "MC 18",
-        "multiple choice",
         "____ must be applied to maintain the rotation of the system about given axis",
         _MC18,
         f"{_choice(_MC18, need[0])}: L turns with the body, so dL/dt = N ≠ 0 must be supplied "
@@ -449,9 +455,8 @@ def _s4() -> Question:
     sidereal = ps.Earth()
     solar = ps.Earth.solar_day()
     ws, wd = sidereal.rotation_rate, solar.rotation_rate
-    return Question(
+    return _ask(
         "S 4",
-        "short",
         "Find the angular velocity of the earth",
         answer=(
             f"ω = 2π / (one turn): with the sidereal day ({2 * np.pi / ws:.1f} s) "
@@ -476,9 +481,8 @@ def _s9() -> Question:
     axis = body.principal_axes[:, 2] * 2.0
     along = float(body.momentum_angle(axis, degrees=True))
     along = 0.0 if abs(along) < 1e-9 else along  # round-off of an exact 0 reads 0
-    return Question(
+    return _ask(
         "S 9",
-        "short",
         "Show that the directions of the angular velocity and the angular momentum are different",
         answer=(
             "L = I·ω (2.63): turning about z, L = (I_xz ω, I_yz ω, I_zz ω) (2.57), which has "
@@ -611,9 +615,8 @@ def _questions() -> tuple[Question, ...]:
         _mc18(),
     ]
     short = [
-        Question(
+        _ask(
             "S 1",
-            "short",
             "Define rigid body",
             answer="A system of particles whose mutual distances never change, "
             "|r_a − r_b| = constant: its motion is a translation of one point plus a rotation "
@@ -621,9 +624,8 @@ def _questions() -> tuple[Question, ...]:
             how="poinsot.RigidBody: mass, centre of mass and inertia tensor are all of a rigid "
             "body that its motion needs; docs/inertia.md.",
         ),
-        Question(
+        _ask(
             "S 2",
-            "short",
             "Define frame of reference",
             answer="A set of coordinate axes with an origin (and a clock) from which positions, "
             "velocities and accelerations are measured; the unit uses a fixed (primed) and a "
@@ -631,9 +633,8 @@ def _questions() -> tuple[Question, ...]:
             how="poinsot.MovingFrame (a moving frame's origin, velocity, acceleration, ω, ω̇ and "
             "attitude relative to the fixed one); docs/frames.md.",
         ),
-        Question(
+        _ask(
             "S 3",
-            "short",
             "Define inertial and non-inertial frame of reference",
             answer="An inertial frame is one in which Newton's laws hold as they stand (a free "
             "particle moves uniformly); every frame moving at constant velocity relative to one "
@@ -644,18 +645,16 @@ def _questions() -> tuple[Question, ...]:
             derivation="frames",
         ),
         _s4(),
-        Question(
+        _ask(
             "S 5",
-            "short",
             "State the Euler's theorem",
             answer="Any displacement of a rigid body with one point fixed is a rotation about "
             "some axis through that fixed point.",
             how="poinsot.rotation_axis(R) gives that axis and angle for any rotation matrix; "
             "docs/rotation.md ('Euler's theorem').",
         ),
-        Question(
+        _ask(
             "S 6",
-            "short",
             "State the Chasles' theorem",
             answer="The most general displacement of a rigid body is a translation plus a "
             "rotation about some axis; choosing the translation along that axis makes it a "
@@ -663,9 +662,8 @@ def _questions() -> tuple[Question, ...]:
             how="poinsot.screw_axis(R, t) gives the screw (axis, point, angle, slide) of any "
             "displacement x ↦ R x + t; docs/rotation.md ('Chasles' theorem').",
         ),
-        Question(
+        _ask(
             "S 7",
-            "short",
             "Write the expressions of components of angular momentum",
             answer="L_x = I_xx ω_x + I_xy ω_y + I_xz ω_z, L_y = I_yx ω_x + I_yy ω_y + I_yz ω_z, "
             "L_z = I_zx ω_x + I_zy ω_y + I_zz ω_z (2.50), i.e. L_i = Σ_j I_ij ω_j (2.51, summed "
@@ -675,9 +673,8 @@ def _questions() -> tuple[Question, ...]:
             derivation="rigid_body",
             results=("2.51",),
         ),
-        Question(
+        _ask(
             "S 8",
-            "short",
             "Derive the expression of kinetic energy of rotation of rigid body",
             answer="T = Σ ½ m v² with v = ω × r gives T = ½ ω·L = ½ Σ_ij I_ij ω_i ω_j "
             "(2.52–2.55); in principal axes T = ½(I₁ω₁² + I₂ω₂² + I₃ω₃²) (2.66, the unit "
@@ -688,26 +685,23 @@ def _questions() -> tuple[Question, ...]:
             results=("2.66",),
         ),
         _s9(),
-        Question(
+        _ask(
             "S 10",
-            "short",
             "Define spherical top and asymmetric top",
             answer="A spherical top has its three principal moments equal, I₁ = I₂ = I₃; an "
             "asymmetric top has all three different.",
             how=_s10_s11_how("spherical top", "asymmetric top"),
         ),
-        Question(
+        _ask(
             "S 11",
-            "short",
             "Define symmetrical top and rigid rotator",
             answer="A symmetrical top has two equal principal moments, I₁ = I₂ ≠ I₃ (axis 3 is "
             "its symmetry axis); a rigid rotator has I₁ = I₂ and I₃ = 0, all its mass on one "
             "line, like a diatomic molecule.",
             how=_s10_s11_how("symmetric top", "rotor"),
         ),
-        Question(
+        _ask(
             "S 12",
-            "short",
             "What you mean by torque free motion",
             answer="The motion of a rigid body on which the net external torque is zero: its "
             "angular momentum L is constant in space (2.67 with N = 0) and so is its kinetic "
@@ -716,9 +710,8 @@ def _questions() -> tuple[Question, ...]:
             "poinsot.simulate without torque; docs/dynamics.md.",
             derivation="torque_free_top",
         ),
-        Question(
+        _ask(
             "S 13",
-            "short",
             "Define precessional velocity",
             answer="The angular velocity with which the axis of a spinning body turns about "
             "another direction: for the heavy top φ̇ (with θ̇ = 0), the rate at which axis 3 goes "
@@ -731,9 +724,8 @@ def _questions() -> tuple[Question, ...]:
         ),
     ]
     long = [
-        Question(
+        _ask(
             "L 1",
-            "long",
             "Explain the coordinates with relative translational motion",
             answer="With the frame O(x, y, z) translating relative to the fixed O′(x′, y′, z′), "
             "R = O′O: r′ = R + r (2.1), ṙ′ = Ṙ + ṙ and r̈′ = R̈ + r̈ (2.2–2.3; the scan lost "
@@ -744,9 +736,8 @@ def _questions() -> tuple[Question, ...]:
             derivation="frames",
             results=("2.3", "2.5"),
         ),
-        Question(
+        _ask(
             "L 2",
-            "long",
             "Discuss the rotating coordinate systems and derive the expressions of velocity and "
             "acceleration of the particle.",
             answer="A vector's rate seen from fixed and turning axes differ by the turning of "
@@ -758,9 +749,8 @@ def _questions() -> tuple[Question, ...]:
             derivation="frames",
             results=("2.20", "2.21"),
         ),
-        Question(
+        _ask(
             "L 3",
-            "long",
             "Write note on Coriolis force",
             answer="In a frame turning with ω, a particle moving with velocity v_r relative to "
             "it feels the Coriolis force −2m ω × v_r (2.26, 2.30): perpendicular to ω and v_r, "
@@ -771,9 +761,8 @@ def _questions() -> tuple[Question, ...]:
             "poinsot.Earth.coriolis_acceleration, Earth.foucault; docs/frames.md, docs/earth.md.",
             derivation="frames",
         ),
-        Question(
+        _ask(
             "L 4",
-            "long",
             "Explain the motion of the earth with necessary diagrams",
             answer=_l4_answer(),
             how="poinsot.Earth: effective_gravity, centrifugal_acceleration, "
@@ -782,9 +771,8 @@ def _questions() -> tuple[Question, ...]:
             derivation="earth",
             results=("2.30",),
         ),
-        Question(
+        _ask(
             "L 5",
-            "long",
             "Discuss the effect of Coriolis force on a freely falling particle",
             answer=_l5_answer(),
             how="poinsot.Earth.eastward_deflection (2.42), Earth.drop (the exact motion); "
@@ -792,9 +780,8 @@ def _questions() -> tuple[Question, ...]:
             derivation="earth",
             results=("2.42",),
         ),
-        Question(
+        _ask(
             "L 6",
-            "long",
             "State and prove Euler's theorem",
             answer="Any displacement of a rigid body with one point fixed is a rotation about an "
             "axis through that point. Proof: the displacement is a matrix R with RᵀR = 1 and "
@@ -803,9 +790,8 @@ def _questions() -> tuple[Question, ...]:
             "points on the line along n stay put (the unit proves it with two bisecting planes).",
             how=_l6_how(),
         ),
-        Question(
+        _ask(
             "L 7",
-            "long",
             "Derive the expressions of angular momentum and kinetic energy",
             answer="With v_a = ω × r_a (2.43), L = Σ m_a r_a × (ω × r_a) = Σ m_a (r_a² ω − "
             "(r_a·ω) r_a) (2.44), i.e. L_i = Σ_j I_ij ω_j (2.51) with I_xx = Σ m (y² + z²), "
@@ -816,9 +802,8 @@ def _questions() -> tuple[Question, ...]:
             derivation="rigid_body",
             results=("2.51", "2.66"),
         ),
-        Question(
+        _ask(
             "L 8",
-            "long",
             "Discuss the inertia tensor of rigid body",
             answer="The nine I_ij form a symmetric rank-2 tensor (six independent components, "
             "2.60), I_xx = ∫ρ(r² − x²)dτ, I_xy = −∫ρ x y dτ (2.61–2.62), with L = I·ω and "
@@ -830,9 +815,8 @@ def _questions() -> tuple[Question, ...]:
             "from_density, the standard solids; docs/inertia.md.",
             derivation="rigid_body",
         ),
-        Question(
+        _ask(
             "L 9",
-            "long",
             "Derive the Euler's equations of the motion and find the relation between the rate "
             "at which work done by the torque and the rate of change of kinetic energy",
             answer="(dL/dt)_fix = N (2.67) with the operator 2.68 gives N = (dL/dt)_rot + ω × L "
@@ -844,9 +828,8 @@ def _questions() -> tuple[Question, ...]:
             derivation="euler_equations",
             results=("2.72", "2.76"),
         ),
-        Question(
+        _ask(
             "L 10",
-            "long",
             "Discuss the torque free motion of a rigid body and derive the expression "
             "A² = (L² − 2I₃T)/(I₁(I₁ − I₃))",
             answer=_l10_answer(),
@@ -857,9 +840,8 @@ def _questions() -> tuple[Question, ...]:
             "restored from eq. 2.96.",
             results=("2.96",),
         ),
-        Question(
+        _ask(
             "L 11",
-            "long",
             "Discuss the Euler's angles of the rigid body with neat diagrams",
             answer="Three successive rotations take the fixed axes XYZ to the body axes 123: φ "
             "about Z (X goes to the line of nodes ξ), θ about ξ, ψ about the new axis ζ = 3; "
@@ -872,9 +854,8 @@ def _questions() -> tuple[Question, ...]:
             derivation="euler_angles",
             results=("2.99",),
         ),
-        Question(
+        _ask(
             "L 12",
-            "long",
             "Discuss the motion of a symmetrical top and derive the expressions of its total "
             "energy and precessional velocity",
             answer=_l12_answer(),

@@ -59,7 +59,6 @@ from ._core import (
     Derivation,
     Dot,
     DtFix,
-    Printed,
     Unit,
     Vec,
     VectorModel,
@@ -73,10 +72,7 @@ from ._core import mul as _mul
 from ._core import power as _pow
 from .euler_equations import _Cross, _trig_reduce
 
-__all__ = ["derive", "PRINTED"]
-
-#: No printed equation of the unit belongs here (the unit stops at the heavy top).
-PRINTED: tuple[Printed, ...] = ()
+__all__ = ["derive"]
 
 # ---- the notation --------------------------------------------------------------------------
 

@@ -87,6 +87,15 @@ def parse(text: str) -> Any:
     return value if isinstance(value, ureg.Quantity) else ureg.Quantity(value)
 
 
+def sense(counterclockwise: float) -> str:
+    """The word of a turning seen from above for a rate or circulation ``counterclockwise``
+    (any unit, counterclockwise positive): ``"counterclockwise"``, ``"clockwise"`` or ``"none"``
+    (exactly zero). The entries' routes compare senses as words (``measured`` of a sense)."""
+    if counterclockwise > 0:
+        return "counterclockwise"
+    return "clockwise" if counterclockwise < 0 else "none"
+
+
 # ---- the data ------------------------------------------------------------------------------------
 
 
@@ -164,7 +173,8 @@ class Experiment:
         The measured result, a pint string (``"28.4 mm"``), or a word for a sense
         (``"counterclockwise"``).
     uncertainty:
-        One standard deviation (or the stated scatter) as a pint string; ``None`` for a sense.
+        One standard deviation (or the stated scatter) as a pint string; ``None`` for a sense
+        or where none is stated.
     uncertainty_kind:
         What the uncertainty is (``"stated probable error"``, ``"scatter of the drops"``).
     predict:

@@ -68,11 +68,14 @@ def pyplot() -> Any:
     return plt
 
 
-def func_animation(fig: Any, update: Any, **kwargs: Any) -> Any:
-    """``matplotlib.animation.FuncAnimation(fig, update, **kwargs)`` that also plays inline in
-    Jupyter: its ``_repr_html_`` is an HTML5 video where ffmpeg is installed, else JavaScript
-    frames (``to_jshtml``, no external tool); matplotlib's own returns nothing by default."""
-    return _inline_animation_class()(fig, update, **kwargs)
+def func_animation(fig: Any, update: Any, frames: int, fps: float) -> Any:
+    """The animation of ``frames`` frames at ``fps`` frames per second drawn by
+    ``update(k)`` (returning the artists it changed, blitted) on ``fig``, its first frame
+    drawn now: a ``matplotlib.animation.FuncAnimation`` that also plays inline in Jupyter (its
+    ``_repr_html_`` is an HTML5 video where ffmpeg is installed, else JavaScript frames,
+    ``to_jshtml``, no external tool; matplotlib's own returns nothing by default)."""
+    update(0)
+    return _inline_animation_class()(fig, update, frames=frames, interval=1000 / fps, blit=True)
 
 
 @cache

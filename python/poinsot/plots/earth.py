@@ -341,8 +341,7 @@ def animate_foucault(
             text.set_text(f"t = {run.t[i]:.0f} s")
             return plane, tr, bob, text
 
-        update(0)
-        anim = func_animation(fig, update, frames=len(idx), interval=1000 / fps, blit=True)
+        anim = func_animation(fig, update, len(idx), fps)
     if path is not None:
         save_animation(anim, path, fps, progress=progress)
     return anim

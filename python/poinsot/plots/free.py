@@ -422,8 +422,7 @@ def animate_tumbling_box(
             text.set_text(f"t = {t[i]:5.2f} s")
             return poly, text
 
-        update(0)
-        anim = func_animation(fig, update, frames=frames, interval=1000 / fps, blit=True)
+        anim = func_animation(fig, update, frames, fps)
     if path is not None:
         save_animation(anim, path, fps, progress=progress)
     return anim
@@ -515,8 +514,7 @@ def animate_free_body(
             text.set_text(f"t = {t[k]:.2f} s")
             return (*axes_lines, *rings, omega_line, omega_trail, text)
 
-        update(0)
-        anim = func_animation(fig, update, frames=frames, interval=1000 / fps, blit=True)
+        anim = func_animation(fig, update, frames, fps)
     if path is not None:
         save_animation(anim, path, fps, progress=progress)
     return anim

@@ -288,8 +288,7 @@ def animate_top(
             text.set_text(f"t = {t[k]:.2f} s")
             return stick, ring, mark, trail_line, text
 
-        update(0)
-        anim = func_animation(fig, update, frames=len(t), interval=1000 / fps, blit=True)
+        anim = func_animation(fig, update, len(t), fps)
     if path is not None:
         save_animation(anim, path, fps, progress=progress)
     return anim

@@ -293,11 +293,28 @@ def _arc(axis: Any, start: Any, angle: float, radius: float, n: int = 40) -> Any
     return radius * rotate_vectors(mats, v / np.linalg.norm(v))
 
 
-def _info(
-    ax: Any, side: Any, lines: list[str], gid: str, key: list[tuple[str, str]] | None = None
+def _line_of_nodes(ax: Any, xi: Any, span: tuple[float, float], label_at: float, lw: float) -> None:
+    """The line of nodes ξ (unit vector ``xi``) dashed grey from ``span[0]`` to ``span[1]``
+    times ``xi`` (gid ``"line-of-nodes"``), labelled ξ at ``label_at`` times ``xi``; ``lw``
+    the style's line width (points)."""
+    ax.plot(
+        *np.stack([span[0] * xi, span[1] * xi]).T,
+        color="0.5",
+        ls="--",
+        lw=0.6 * lw,
+        gid="line-of-nodes",
+    )
+    _label3d(ax, label_at * xi, "ξ", "xi-label", color="0.5")
+
+
+def _caption(
+    ax: Any, side: Any, title: str, lines: list[str], key: list[tuple[str, str]] | None = None
 ) -> Any:
-    """The numbers of a picture (and a colour ``key``: (colour, meaning) pairs): in the side
-    panel when there is one, else in the upper left corner of the (3-D) axes."""
+    """The title and the numbers of a 3-D picture (with a colour ``key``: (colour, meaning)
+    pairs). With a side panel: the numbers in it (gid ``"info"``), the key at its foot and the
+    title over the whole figure (a 3-D axes' own title is not kept inside the figure by the
+    layout); without: the numbers in the upper left corner of the axes and the axes' title.
+    Returns the numbers' text."""
     text = "\n".join(lines)
     if side is None:
         t = ax.text2D(0.02, 0.98, text, transform=ax.transAxes, ha="left", va="top")
@@ -307,17 +324,12 @@ def _info(
         )
         if key:
             _legend(side, "lower left", key, fontsize=None, frameon=False, borderaxespad=0.0)
-    t.set_gid(gid)
-    return t
-
-
-def _title(ax: Any, side: Any, text: str) -> None:
-    """The title of a 3-D picture: over the whole figure when it has a side panel (a 3-D
-    axes' own title is not kept inside the figure by the layout)."""
+    t.set_gid("info")
     if side is None:
-        ax.set_title(text)
+        ax.set_title(title)
     else:
-        ax.figure.suptitle(text)
+        ax.figure.suptitle(title)
+    return t
 
 
 def _latitude(latitude: Any, degrees: Any) -> tuple[float, float]:
@@ -568,9 +580,10 @@ def plot_rotating_frame(
             _arrow3d(ax, p, p + 0.5 * vel / vn, _VELOCITY, "omega_cross_r")
             shown.append(p + 0.5 * vel / vn)
         _schematic(ax, shown, elev=22, azim=30, zoom=1.4)
-        _info(
+        _caption(
             ax,
             side,
+            "fixed and rotating axes (Fig. 2.2)",
             [
                 f"ω = {_vec(w)} rad/s",
                 f"t = {t:g} s: x y z have turned {_deg(turned)}",
@@ -578,7 +591,6 @@ def plot_rotating_frame(
                 f"    {_vec(p)} m in x′ y′ z′ (2.7)",
                 f"ω × r = {_vec(vel)} m/s (2.12)",
             ],
-            "info",
             key=[
                 (_FIXED, "fixed axes x′ y′ z′"),
                 (_MOVING, "rotating axes x y z"),
@@ -587,7 +599,6 @@ def plot_rotating_frame(
                 (_VELOCITY, "velocity ω × r"),
             ],
         )
-        _title(ax, side, "fixed and rotating axes (Fig. 2.2)")
     return fig
 
 
@@ -702,8 +713,7 @@ def plot_centripetal(
             lines.append(f"ṙ = {_vec(v)} m/s: |2ω×ṙ| = {_num(con)} m/s²")
             key.append((_TORQUE, "Coriolis 2ω×ṙ (same scale)"))
         _schematic(ax, shown, elev=16, azim=-60, zoom=1.4)
-        _info(ax, side, lines, "info", key=key)
-        _title(ax, side, "the centripetal acceleration (Fig. 2.3)")
+        _caption(ax, side, "the centripetal acceleration (Fig. 2.3)", lines, key=key)
     return fig
 
 
@@ -1170,9 +1180,10 @@ def plot_euler_theorem(
             ax.add_collection3d(face)
         elev, azim = _view_between(wings, n)
         _schematic(ax, shown, elev=elev, azim=azim, zoom=1.35)
-        _info(
+        _caption(
             ax,
             side,
+            "Euler's theorem (Fig. 2.8)",
             [
                 f"axis OC: n = {_vec(n)}",
                 f"angle α = {_deg(angle, 4)}",
@@ -1180,7 +1191,6 @@ def plot_euler_theorem(
                 f"|A| = |A′| = {_num(float(np.linalg.norm(pts[0])))} m",
                 f"|B| = |B′| = {_num(float(np.linalg.norm(pts[1])))} m",
             ],
-            "info",
             key=[
                 ("0.5", "O A B: before"),
                 ("k", "O A′ B′: after"),
@@ -1189,7 +1199,6 @@ def plot_euler_theorem(
                 (_OMEGA, "OC = P₁ ∩ P₂, the axis"),
             ],
         )
-        _title(ax, side, "Euler's theorem (Fig. 2.8)")
     return fig
 
 
@@ -1309,19 +1318,18 @@ def plot_dumbbell(
         ax.plot([0.0], [0.0], [0.0], "o", color="k")
         _label3d(ax, [0.0, 0.0, -0.12 * reach], "O", "O-label", ha="right", va="top")
         _schematic(ax, shown, elev=22, azim=-50, zoom=1.5)
-        _info(
+        _caption(
             ax,
             side,
+            "the dumbbell: L is not along ω (Fig. 2.9)",
             [
                 f"m₁ = {_num(m[0])} kg, m₂ = {_num(m[1])} kg, ω = {_num(wn)} rad/s",
                 f"L = {_vec(L)} kg·m²/s (2.58)",
                 f"L ⊥ rod; angle of L from ω: {_deg(angle, 4)}" if Ln > 0 else "L = 0",
                 f"N = ω × L = {_vec(N)} N·m (2.59)",
             ],
-            "info",
             key=key,
         )
-        _title(ax, side, "the dumbbell: L is not along ω (Fig. 2.9)")
     return fig
 
 
@@ -1383,23 +1391,22 @@ def plot_body_cone(
             azim=-55,
             zoom=1.35,
         )
-        _info(
+        _caption(
             ax,
             side,
+            "the body cone (Fig. 2.10)",
             [
                 f"I₁ = {_num(top.I1)} kg·m², I₃ = {_num(top.I3)} kg·m² ({top.shape})",
                 f"ω₃ = {_num(top.omega3)} rad/s, A = {_num(top.amplitude)} rad/s",
                 f"Ω = (I₁ − I₃) ω₃ / I₁ = {_num(big_omega)} rad/s (2.83)",
                 f"tan $\\alpha_b$ = A / ω₃ (2.90): $\\alpha_b$ = {_deg(top.body_cone_angle, 4)}",
             ],
-            "info",
             key=[
                 (_MOVING, "body axes"),
                 (_OMEGA, "ω and its path in the body"),
                 (_ACCEL, "A = |ω₁ e₁ + ω₂ e₂|"),
             ],
         )
-        _title(ax, side, "the body cone (Fig. 2.10)")
     return fig
 
 
@@ -1446,14 +1453,7 @@ def _step_panel(ax: Any, step: str, phi: float, theta: float, psi: float) -> Non
         title = f"(c) ψ = {_deg(psi)} about ζ"
     else:
         _triad(ax, final, ("1", "2", "3"), _MOVING, "step")
-        ax.plot(
-            *np.stack([-0.5 * xi, 1.0 * xi]).T,
-            color="0.5",
-            ls="--",
-            lw=0.6 * lw,
-            gid="line-of-nodes",
-        )
-        _label3d(ax, 1.1 * xi, "ξ", "xi-label", color="0.5")
+        _line_of_nodes(ax, xi, (-0.5, 1.0), 1.1, lw)
         arcs = [
             ("φ", _arc(Z, X, phi, 0.45)),
             ("θ", _arc(xi, Z, theta, 0.4)),
@@ -1598,9 +1598,10 @@ def plot_omega_components(
             foot = k * w_xez[j] * xez[:, j]
             ax.plot(*np.stack([k * w, foot]).T, color="0.6", ls=":", lw=0.6 * lw, gid=f"foot-{j}")
         _schematic(ax, shown, elev=15, azim=-100, zoom=1.35)
-        _info(
+        _caption(
             ax,
             side,
+            "ω resolved along ξ, η, ζ (Fig. 2.13)",
             [
                 f"φ̇, θ̇, ψ̇ = {_vec(rt)} rad/s",
                 f"$\\omega_\\xi = \\dot\\theta$ = {_num(w_xez[0], 4, scale=wn)} rad/s",
@@ -1609,7 +1610,6 @@ def plot_omega_components(
                 f" = {_num(w_xez[2], 4, scale=wn)} rad/s (2.98)",
                 f"ω₁, ω₂, ω₃ = {_vec(wb, 4)} rad/s (2.99)",
             ],
-            "info",
             key=[
                 (_MOVING, "axes ξ η ζ"),
                 (_VELOCITY, "φ̇ Z, θ̇ ξ, ψ̇ ζ, head to tail"),
@@ -1617,7 +1617,6 @@ def plot_omega_components(
                 ("0.6", "ω's components on ξ, η, ζ"),
             ],
         )
-        _title(ax, side, "ω resolved along ξ, η, ζ (Fig. 2.13)")
     return fig
 
 
@@ -1686,14 +1685,7 @@ def plot_heavy_top(
         _arrow3d(ax, axis, axis - 0.4 * Z, _TORQUE, "weight")
         _label3d(ax, axis - 0.45 * Z, "m g", "weight-label", color=_TORQUE, ha="center", va="top")
         xi = euler_to_matrix([phi, 0.0, 0.0])[:, 0]
-        ax.plot(
-            *np.stack([np.zeros(3), 1.1 * xi]).T,
-            color="0.5",
-            ls="--",
-            lw=0.6 * lw,
-            gid="line-of-nodes",
-        )
-        _label3d(ax, 1.18 * xi, "ξ", "xi-label", color="0.5")
+        _line_of_nodes(ax, xi, (0.0, 1.1), 1.18, lw)
         arc_t = _arc(xi, Z, theta, 0.55)
         ax.plot(*arc_t.T, color=_OMEGA, lw=lw, gid="arc-theta")
         _label3d(ax, 1.2 * arc_t[len(arc_t) // 2], "θ", "theta-label", color=_OMEGA)
@@ -1706,9 +1698,10 @@ def plot_heavy_top(
         shown = [*tip_path, *(1.35 * np.eye(3)), axis - 0.6 * Z, np.zeros(3)]
         # Seen from the side the axis leans to (azimuth φ: the axis is along ξ turned by θ).
         _schematic(ax, shown, elev=20, azim=float(np.degrees(phi)) + 30.0, zoom=1.4)
-        _info(
+        _caption(
             ax,
             side,
+            "the heavy symmetric top (Fig. 2.14)",
             [
                 f"I₁ = {_num(top.I1)}, I₃ = {_num(top.I3)} kg·m², m g l = {_num(top.mgl)} N·m",
                 f"$p_\\psi$ = {_num(top.p_psi, 4)}, $p_\\varphi$ = {_num(top.p_phi, 4)} kg·m²/s",
@@ -1716,7 +1709,6 @@ def plot_heavy_top(
                 f"θ₁ = {_num(t1, 4)} rad, θ₂ = {_num(t2, 4)} rad",
                 f"{top.motion_class}, nutation period {_num(period, 4)} s",
             ],
-            "info",
             key=[
                 (_FIXED, "fixed axes X Y Z"),
                 (_MOVING, "the top (stripe: its spin)"),
@@ -1725,7 +1717,6 @@ def plot_heavy_top(
                 (_TORQUE, "weight m g at the centre of mass"),
             ],
         )
-        _title(ax, side, "the heavy symmetric top (Fig. 2.14)")
     return fig
 
 

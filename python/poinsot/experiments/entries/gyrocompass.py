@@ -32,7 +32,7 @@ from poinsot import (
     simulate,
 )
 
-from .._catalogue import Experiment, Source, ureg
+from .._catalogue import Experiment, Source, sense, ureg
 
 __all__ = ["ENTRIES"]
 
@@ -63,13 +63,12 @@ def _gyroscope_sense(inputs: Mapping[str, Any]) -> str:
     )
     assert isinstance(run, CarriedTrajectory)  # simulate's answer for a carried body
     east = quaternion_to_matrix(run.relative_attitude[-1])[0][2]
-    return "clockwise" if east > 0 else "counterclockwise" if east < 0 else "none"
+    return sense(-east)  # east of north, seen from above: clockwise
 
 
 def _closed_gyroscope_sense(inputs: Mapping[str, Any]) -> str:
     """The sign of the ground's turn under the axis, −Ω sin λ (negative: clockwise)."""
-    rate = Earth().foucault_rate(inputs["latitude"])
-    return "clockwise" if rate < 0 else "counterclockwise" if rate > 0 else "none"
+    return sense(Earth().foucault_rate(inputs["latitude"]))
 
 
 _FOUCAULT_1852 = Experiment(

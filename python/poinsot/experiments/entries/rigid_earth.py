@@ -2,8 +2,9 @@
 principal (18.6-year) nutation, and the Chandler wobble of the elastic Earth.
 
 Each prediction goes through the public :class:`poinsot.RigidEarth`; the closed forms are the
-same theory in a second form (the Sun's and the Moon's parts summed, the Chandler period as
-Euler's period times ks/(ks − k2)). The measured values are the conventional IAU models, fitted
+same theory in a second form (the Sun's and the Moon's parts summed); the Chandler period,
+:meth:`poinsot.RigidEarth.chandler_period`, is itself the closed form (Euler's period times
+ks/(ks − k2)) and serves as both. The measured values are the conventional IAU models, fitted
 to decades of VLBI (precession, nutation), and the Chandler period from a century of polar
 motion. ``poinsot earth`` prints these entries' measured values beside RigidEarth's numbers.
 """
@@ -57,17 +58,11 @@ def _nutation_by_precession(index: int) -> Any:
 
 
 def _chandler(inputs: Mapping[str, Any]) -> Any:
-    """RigidEarth.chandler_period(k2, ks)."""
+    """RigidEarth.chandler_period(k2, ks): Euler's period times ks/(ks − k2), the core's closed
+    form (no second route: the prediction is that closed form too)."""
     k2 = float(inputs["k2"].to("dimensionless").magnitude)
     ks = float(inputs["ks"].to("dimensionless").magnitude)
     return ureg.Quantity(_earth(inputs).chandler_period(k2, ks), "s")
-
-
-def _chandler_closed(inputs: Mapping[str, Any]) -> Any:
-    """Euler's period (RigidEarth.euler_period) times ks/(ks − k2)."""
-    k2 = float(inputs["k2"].to("dimensionless").magnitude)
-    ks = float(inputs["ks"].to("dimensionless").magnitude)
-    return ureg.Quantity(_earth(inputs).euler_period * ks / (ks - k2), "s")
 
 
 _IERS = Source(
@@ -276,7 +271,7 @@ ENTRIES = [
         uncertainty="1.7 day",
         uncertainty_kind="the interval Vicente and Wilson state (its confidence level not read)",
         predict=_chandler,
-        closed_form=_chandler_closed,
+        closed_form=_chandler,
         assumptions=(
             "symmetric Earth (A = B)",
             "an elastic mantle that yields to the wobble with Love number k2",

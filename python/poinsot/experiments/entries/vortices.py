@@ -15,7 +15,7 @@ from typing import Any
 
 from poinsot import Earth
 
-from .._catalogue import Experiment, Source
+from .._catalogue import Experiment, Source, sense
 
 __all__ = ["ENTRIES"]
 
@@ -27,8 +27,7 @@ def _sense(inputs: Mapping[str, Any]) -> str:
 
 def _closed_sense(inputs: Mapping[str, Any]) -> str:
     """Counterclockwise where f = 2ω sin λ > 0, clockwise where it is < 0."""
-    f = Earth().coriolis_parameter(inputs["latitude"])
-    return "counterclockwise" if f > 0 else "clockwise" if f < 0 else "none"
+    return sense(Earth().coriolis_parameter(inputs["latitude"]))
 
 
 _STORY_COMMON = (
