@@ -10,6 +10,7 @@ the flattening itself (the equatorial bulge and the pole's nearness to the centr
 from __future__ import annotations
 
 from collections.abc import Mapping
+from functools import partial
 from typing import Any
 
 from poinsot import Earth
@@ -74,16 +75,20 @@ _TR8350 = Source(
     ),
 )
 
+#: The fields both entries share: the topic, no uncertainty (the reference ellipsoid's values
+#: are defined), and the expected disagreement of the unit's spherical Earth.
+_ellipsoid_entry = partial(
+    Experiment, topic="the Earth's figure", uncertainty=None, expect="disagree"
+)
+
 ENTRIES = [
-    Experiment(
+    _ellipsoid_entry(
         name="wgs84-gravity",
         title="Gravity, pole − equator",
-        topic="the Earth's figure",
         sources=(_TR8350,),
         inputs={"pole_latitude": "90 deg", "equator_latitude": "0 deg"},
         quantity="normal gravity at the pole minus at the equator",
         measured="9.8321849378 m/s^2 - 9.7803253359 m/s^2",
-        uncertainty=None,
         uncertainty_kind="defined values of the reference ellipsoid (no uncertainty)",
         predict=_gravity_step,
         closed_form=_closed_gravity_step,
@@ -98,7 +103,6 @@ ENTRIES = [
             "the equator and 9.8322 at the poles, a difference of 0.0519 m/s². The unit's "
             "spinning sphere explains only the centrifugal part of it, ω²R = 0.0339 m/s²."
         ),
-        expect="disagree",
         why=(
             "the sphere leaves out the flattening (1/298): the poles are 21 km nearer the "
             "centre and the equatorial bulge pulls sideways, adding about 0.018 m/s² "
@@ -106,10 +110,9 @@ ENTRIES = [
         ),
         unit="m/s^2",
     ),
-    Experiment(
+    _ellipsoid_entry(
         name="wgs84-plumb-line",
         title="The plumb line at 45°",
-        topic="the Earth's figure",
         sources=(
             Source(
                 who="George H. Kaplan (U.S. Naval Observatory)",
@@ -132,7 +135,6 @@ ENTRIES = [
         inputs={"latitude": "45 deg"},
         quantity="angle between the plumb line (normal) and the radius at 45°",
         measured="11.545 arcmin",
-        uncertainty=None,
         uncertainty_kind="defined by the reference ellipsoid (no uncertainty)",
         predict=_plumb,
         closed_form=_closed_plumb,
@@ -149,7 +151,6 @@ ENTRIES = [
             "difference between geodetic and geocentric latitude that every map projection "
             "must know."
         ),
-        expect="disagree",
         why=(
             "the sphere leaves out the flattening: the sea surface itself is tilted against "
             "the sphere by about f sin 2λ = 11.5′ at 45°, twice the centrifugal lean "

@@ -18,7 +18,6 @@ formula printed by the maker with the exact one; the full nonlinear settling is
 from __future__ import annotations
 
 from collections.abc import Mapping
-from functools import partial
 from typing import Any
 
 from poinsot import (
@@ -182,27 +181,6 @@ _PLATH = Source(
     ),
 )
 
-_speed_entry = partial(
-    Experiment,
-    topic="the Earth's rotation",
-    sources=(_PLATH,),
-    quantity="speed error of an uncorrected gyrocompass (what it reads minus true heading)",
-    uncertainty="0.05 deg",
-    uncertainty_kind=(
-        "half the last printed digit: a maker's printed table, computed from a formula, "
-        "not a measurement"
-    ),
-    predict=_speed_error,
-    closed_form=_speed_error,
-    assumptions=(
-        "the compass settled on the horizontal part of the local frame's rotation",
-        "steady course and speed (no Schuler transient)",
-        "spherical Earth of mean radius",
-        "sidereal rotation",
-    ),
-    unit="deg",
-)
-
 _STORY = (
     "A gyrocompass seeks the horizontal part of the rotation of the ground it stands on. On "
     "a ship that part is not the Earth's alone: steaming north at V over an Earth of radius "
@@ -213,21 +191,43 @@ _STORY = (
     "to 85° and speeds up to 50 knots."
 )
 
+
+def _table_row(knots: int, measured: str, **fields: Any) -> Experiment:
+    """The entry of C. Plath's printed correction ``measured`` for a ship steaming due north
+    at ``knots`` at 81°, with the entry's own ``fields`` (an expected disagreement)."""
+    return Experiment(
+        name=f"plath-1998-{knots}-knots",
+        title=f"C. Plath's speed-error table: {knots} knots due north at 81°",
+        topic="the Earth's rotation",
+        sources=(_PLATH,),
+        inputs={"latitude": "81 deg", "speed": f"{knots} knot", "course": "0 deg"},
+        quantity="speed error of an uncorrected gyrocompass (what it reads minus true heading)",
+        measured=measured,
+        uncertainty="0.05 deg",
+        uncertainty_kind=(
+            "half the last printed digit: a maker's printed table, computed from a formula, "
+            "not a measurement"
+        ),
+        predict=_speed_error,
+        closed_form=_speed_error,
+        assumptions=(
+            "the compass settled on the horizontal part of the local frame's rotation",
+            "steady course and speed (no Schuler transient)",
+            "spherical Earth of mean radius",
+            "sidereal rotation",
+        ),
+        story=_STORY,
+        unit="deg",
+        **fields,
+    )
+
+
 ENTRIES = [
     _FOUCAULT_1852,
-    _speed_entry(
-        name="plath-1998-20-knots",
-        title="C. Plath's speed-error table: 20 knots due north at 81°",
-        inputs={"latitude": "81 deg", "speed": "20 knot", "course": "0 deg"},
-        measured="8.1 deg",
-        story=_STORY,
-    ),
-    _speed_entry(
-        name="plath-1998-50-knots",
-        title="C. Plath's speed-error table: 50 knots due north at 81°",
-        inputs={"latitude": "81 deg", "speed": "50 knot", "course": "0 deg"},
-        measured="20.7 deg",
-        story=_STORY,
+    _table_row(20, "8.1 deg"),
+    _table_row(
+        50,
+        "20.7 deg",
         expect="disagree",
         why=(
             "the table is printed from the arcsine form asin(V cos C / (Ω R cos λ)), which "

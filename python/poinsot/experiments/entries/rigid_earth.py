@@ -83,6 +83,10 @@ _IERS = Source(
     ),
 )
 
+#: The inputs of every entry here, as :data:`_IERS` prints them (Table 1.1): H and the
+#: obliquity at J2000.
+_IERS_INPUTS = {"dynamical_flattening": "3273795e-9", "obliquity": "84381.406 arcsec"}
+
 _MHB = Source(
     who="P. M. Mathews, T. A. Herring and B. A. Buffett",
     first_hand=False,
@@ -113,7 +117,7 @@ def _nutation_entry(index: int, **fields: Any) -> Experiment:
     return Experiment(
         topic="the Earth's rotation",
         sources=(_MHB, _IERS),
-        inputs={"dynamical_flattening": "3273795e-9", "obliquity": "84381.406 arcsec"},
+        inputs=_IERS_INPUTS,
         uncertainty=None,
         uncertainty_kind="none stated in the sources read (a conventional model's coefficient)",
         predict=_nutation(index),
@@ -155,7 +159,7 @@ ENTRIES = [
             ),
             _IERS,
         ),
-        inputs={"dynamical_flattening": "3273795e-9", "obliquity": "84381.406 arcsec"},
+        inputs=_IERS_INPUTS,
         quantity="luni-solar precession rate of the equator (westward)",
         measured="5038.481507 arcsec / (100 julian_year)",
         uncertainty=None,
@@ -261,8 +265,7 @@ ENTRIES = [
             _IERS,
         ),
         inputs={
-            "dynamical_flattening": "3273795e-9",
-            "obliquity": "84381.406 arcsec",
+            **_IERS_INPUTS,
             "k2": "0.30",
             "ks": "0.938",
         },
