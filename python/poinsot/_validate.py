@@ -223,6 +223,19 @@ def as_vector3(value: Any, name: str, *, finite: bool = True) -> FloatArray:
     return arr
 
 
+def as_rows(value: Any, name: str, size: int, *, single: bool = False) -> FloatArray:
+    """``value`` as a C-contiguous ``(N, size)`` float64 array of N bodies' rows (non-finite
+    entries pass, for the core to judge); with ``single`` one row ``(size,)`` is accepted too,
+    as ``(1, size)``."""
+    arr = as_float_array(value, name, finite=False)
+    if single and arr.ndim == 1 and arr.shape[0] == size:
+        arr = arr[None, :]
+    if arr.ndim != 2 or arr.shape[1] != size:
+        either = f" or ({size},)" if single else ""
+        raise PoinsotError(f"{name}: must have shape (N, {size}){either}, got {arr.shape}")
+    return np.ascontiguousarray(arr, dtype=np.float64)
+
+
 def as_matrices(value: Any, name: str) -> tuple[FloatArray, tuple[int, ...]]:
     """``value`` of shape ``(..., 3, 3)`` (or a ``scipy.spatial.transform.Rotation``) as a
     C-contiguous ``(N, 3, 3)`` array plus the leading shape."""

@@ -33,6 +33,7 @@ from ._validate import (
     as_callable,
     as_count,
     as_float_array,
+    as_rows,
     as_scalar,
     as_vector3,
 )
@@ -517,18 +518,8 @@ def simulate_batch(
     (omega, attitude):
         Final ω (N, 3) and attitudes (N, 4).
     """
-    m = np.ascontiguousarray(as_float_array(moments, "moments", finite=False), dtype=np.float64)
-    w = np.ascontiguousarray(as_float_array(omega0, "omega0", finite=False), dtype=np.float64)
-    for arr, name in ((m, "moments"), (w, "omega0")):
-        if arr.ndim != 2 or arr.shape[1] != 3:
-            raise PoinsotError(f"{name}: must have shape (N, 3), got {arr.shape}")
-    q = None
-    if attitude0 is not None:
-        q = np.ascontiguousarray(
-            as_float_array(attitude0, "attitude0", finite=False), dtype=np.float64
-        )
-        if q.ndim != 2 or q.shape[1] != 4:
-            raise PoinsotError(f"attitude0: must have shape (N, 4), got {q.shape}")
+    m, w = as_rows(moments, "moments", 3), as_rows(omega0, "omega0", 3)
+    q = None if attitude0 is None else as_rows(attitude0, "attitude0", 4)
     settings = _batch_settings(
         torque,
         duration,

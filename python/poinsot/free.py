@@ -34,6 +34,7 @@ from ._validate import (
     as_count,
     as_flat,
     as_float_array,
+    as_rows,
     as_scalar,
     plain_float,
 )
@@ -577,16 +578,6 @@ def axis_stability(
     return a, b, c
 
 
-def _row_array(value: Any, name: str, size: int) -> FloatArray:
-    """An (N, size) float64 array, or a single row (size,) as (1, size)."""
-    arr = as_float_array(value, name, finite=False)
-    if arr.ndim == 1 and arr.shape[0] == size:
-        arr = arr[None, :]
-    if arr.ndim != 2 or arr.shape[1] != size:
-        raise PoinsotError(f"{name}: must have shape (N, {size}) or ({size},), got {arr.shape}")
-    return arr
-
-
 def free_body_states(
     moments: Any,
     omega0: Any,
@@ -633,9 +624,9 @@ def free_body_states(
         ..."), or ``t`` (not finite, the wrong shape, beyond a body's time limit — 2⁴² rad of
         turning at its fastest rate: "body i: ..." —, or an output beyond the memory budget).
     """
-    m = _row_array(moments, "moments", 3)
-    w = _row_array(omega0, "omega0", 3)
-    q = None if attitude0 is None else _row_array(attitude0, "attitude0", 4)
+    m = as_rows(moments, "moments", 3, single=True)
+    w = as_rows(omega0, "omega0", 3, single=True)
+    q = None if attitude0 is None else as_rows(attitude0, "attitude0", 4, single=True)
     n = max(len(m), len(w), 1 if q is None else len(q))
 
     def rows_for_all(arr: FloatArray, name: str) -> FloatArray:

@@ -122,3 +122,22 @@ def test_large_finite_inputs_never_give_inf_or_nan() -> None:
     # Negative controls: the same calls at ordinary magnitudes.
     ps.MovingFrame(angular_velocity=[0, 0, 1]).to_fixed([1, 0, 0], velocity=[1e100, 1e100, 0])
     assert np.isfinite(ps.body_angular_velocity([0.1, 0.2, 0.3], [1e300, 1e300, 1e300])).all()
+
+
+def test_batch_rows_name_the_argument_and_the_shapes_taken() -> None:
+    """The batch calls' rows (one helper, ``_validate.as_rows``): ``simulate_batch`` takes
+    (N, 3) and (N, 4) rows only, ``free_body_states`` also one row for every body; another
+    shape is refused naming the argument, the shapes taken and the shape given."""
+    with pytest.raises(ps.PoinsotError, match=r"^omega0: must have shape \(N, 3\), got \(3,\)$"):
+        ps.simulate_batch([[1.0, 2.0, 3.0]], [1.0, 0.0, 0.0], 1.0)
+    with pytest.raises(
+        ps.PoinsotError, match=r"^attitude0: must have shape \(N, 4\), got \(1, 3\)$"
+    ):
+        ps.simulate_batch([[1.0, 2.0, 3.0]], [[1.0, 0.0, 0.0]], 1.0, attitude0=[[1.0, 0.0, 0.0]])
+    with pytest.raises(
+        ps.PoinsotError, match=r"^moments: must have shape \(N, 3\) or \(3,\), got \(2, 2\)$"
+    ):
+        ps.free_body_states([[1.0, 2.0], [3.0, 4.0]], [1.0, 0.0, 0.0], 0.0)
+    # Negative control: one row of moments serves every body.
+    omega, attitude = ps.free_body_states([1.0, 2.0, 3.0], [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]], 0.0)
+    assert omega.shape == (2, 3) and attitude.shape == (2, 4)
