@@ -743,6 +743,14 @@ def derive() -> Derivation:
         _eq(_mul(phid_plus, phid_minus), _frac(mgl, _mul(I1, c0))),
     )
     disc = _add(p_psi**2, -_mul(4, mgl, I1, c0))
+    # The slow root as the product over the fast one: the same number, without 2.117's 0/0 at
+    # θ₀ = π/2 (where cos θ₀ is a round-off and the printed form loses every digit).
+    slow = _frac(_mul(2, mgl), _add(p_psi, _pow(disc, HALF)))
+    d.step(
+        "Dividing the product by φ̇₀₊ gives the slow rate in a form that holds at θ₀ = π/2 too "
+        "(a horizontal axis), where 2.117's numerator and denominator both vanish.",
+        _eq(phid_minus, slow),
+    )
     d.step(
         "The quantity under the root of 2.117 (times p_ψ²) is the square of I₁ cos θ₀ "
         "(φ̇₀₊ − φ̇₀₋): steady precession, with real rates, needs it ≥ 0.",
@@ -835,7 +843,7 @@ def derive() -> Derivation:
     d.function("2.113", _numeric(DV113), (I1, mgl, p_phi, p_psi, th))
     d.function("cubic", _numeric(f_unit), (I1, mgl, p_phi, p_psi, E_red, NUMERIC[u]))
     on_spin = {p_psi: _mul(I3, omega3)}
-    d.function("2.117 slow", _branch(rates, -1).xreplace(on_spin), (I1, I3, mgl, theta0, omega3))
+    d.function("2.117 slow", slow.xreplace(on_spin), (I1, I3, mgl, theta0, omega3))
     d.function("2.117 fast", _branch(rates, 1).xreplace(on_spin), (I1, I3, mgl, theta0, omega3))
     d.function("2.119", MIN_SPIN, (I1, I3, mgl, theta0))
     d.function("2.120", _fast120(1)[-1].rhs, (I1, I3, theta0, omega3))
