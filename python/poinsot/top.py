@@ -57,6 +57,12 @@ upright), ``"hanging"`` (theta stays pi), ``"through vertical"`` (the axis passe
 where phi and psi jump by pi)."""
 
 
+def _parameters(I1: Any, I3: Any, mgl: Any) -> tuple[float, float, float]:
+    """The top's ``I1``, ``I3`` (kg m^2) and ``mgl`` (N m) as floats, each refused naming its
+    argument (the core judges their values)."""
+    return as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl")
+
+
 def _degrees(values: tuple[float, float, float], degrees: Any) -> tuple[float, float, float]:
     """Three angles (or rates) of one time, in degrees when ``degrees`` is true: ``math.degrees``
     is the same product as ``np.degrees`` (x · (180/π), bit for bit)."""
@@ -162,9 +168,7 @@ class HeavyTop(show.Displayed):
     ) -> None:
         self._build(
             "from_state",
-            as_scalar(I1, "I1"),
-            as_scalar(I3, "I3"),
-            as_scalar(mgl, "mgl"),
+            *_parameters(I1, I3, mgl),
             as_angle(phi, "phi", degrees),
             as_angle(theta, "theta", degrees),
             as_angle(psi, "psi", degrees),
@@ -195,9 +199,7 @@ class HeavyTop(show.Displayed):
         top = cls.__new__(cls)
         top._build(
             "from_spin",
-            as_scalar(I1, "I1"),
-            as_scalar(I3, "I3"),
-            as_scalar(mgl, "mgl"),
+            *_parameters(I1, I3, mgl),
             as_angle(phi, "phi", degrees),
             as_angle(theta, "theta", degrees),
             as_angle(psi, "psi", degrees),
@@ -282,9 +284,7 @@ class HeavyTop(show.Displayed):
         top = cls.__new__(cls)
         top._build(
             "from_constants",
-            as_scalar(I1, "I1"),
-            as_scalar(I3, "I3"),
-            as_scalar(mgl, "mgl"),
+            *_parameters(I1, I3, mgl),
             as_scalar(p_phi, "p_phi"),
             as_scalar(p_psi, "p_psi"),
             as_scalar(energy, "energy"),
@@ -508,9 +508,7 @@ class HeavyTop(show.Displayed):
         spin (the message gives it), and ``theta0`` where the fast rate exceeds the largest double
         (``slow_approx`` is ``None`` without spin)."""
         d = _core.heavy_top_steady_precession(
-            as_scalar(I1, "I1"),
-            as_scalar(I3, "I3"),
-            as_scalar(mgl, "mgl"),
+            *_parameters(I1, I3, mgl),
             as_angle(theta0, "theta0", degrees),
             as_scalar(omega3, "omega3"),
         )
@@ -543,9 +541,7 @@ class HeavyTop(show.Displayed):
         """The minimum spin for steady precession at ``theta0`` (2.119):
         ``omega3_min = (2 / I3) sqrt(m g l I1 cos theta0)`` (rad/s), 0 below the horizontal."""
         return _core.heavy_top_min_spin(
-            as_scalar(I1, "I1"),
-            as_scalar(I3, "I3"),
-            as_scalar(mgl, "mgl"),
+            *_parameters(I1, I3, mgl),
             as_angle(theta0, "theta0", degrees),
         )
 
@@ -553,9 +549,7 @@ class HeavyTop(show.Displayed):
     def sleeping_threshold(I1: float, I3: float, mgl: float) -> float:
         """The spin above which an upright top sleeps stably, ``2 sqrt(m g l I1) / I3`` (rad/s):
         stable iff ``omega3**2 > 4 m g l I1 / I3**2``."""
-        return _core.heavy_top_sleeping_threshold(
-            as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl")
-        )
+        return _core.heavy_top_sleeping_threshold(*_parameters(I1, I3, mgl))
 
     @staticmethod
     def lagrangian(
@@ -570,9 +564,7 @@ class HeavyTop(show.Displayed):
         """The Lagrangian 2.102, ``I1 (theta'^2 + phi'^2 sin^2)/2 + I3 (psi' + phi' cos)^2/2 - m g l
         cos(theta)`` (J), at one state (rad, rad/s)."""
         return _core.heavy_top_lagrangian(
-            as_scalar(I1, "I1"),
-            as_scalar(I3, "I3"),
-            as_scalar(mgl, "mgl"),
+            *_parameters(I1, I3, mgl),
             as_scalar(theta, "theta"),
             as_scalar(theta_dot, "theta_dot"),
             as_scalar(phi_dot, "phi_dot"),
@@ -603,9 +595,7 @@ class HeavyTop(show.Displayed):
 
         Raises :class:`PoinsotError` naming ``I1``, ``I3``, ``mgl``, ``theta`` or a rate."""
         p_phi, p_psi, energy = _core.heavy_top_constants_of_state(
-            as_scalar(I1, "I1"),
-            as_scalar(I3, "I3"),
-            as_scalar(mgl, "mgl"),
+            *_parameters(I1, I3, mgl),
             as_angle(theta, "theta", degrees),
             as_angle(theta_dot, "theta_dot", degrees),
             as_angle(phi_dot, "phi_dot", degrees),
