@@ -14,6 +14,7 @@ import json
 import math
 import re
 from pathlib import Path
+from typing import Any
 from xml.etree import ElementTree as ET
 
 import numpy as np
@@ -44,9 +45,12 @@ def test_the_templates_cover_every_topic_of_the_unit() -> None:
 # ---- every template over many seeds --------------------------------------------------------------
 
 
-@pytest.mark.parametrize("name", NAMES)
-@FEW
-@given(seed=SEEDS)
+def each_template_over_seeds(test: Any) -> Any:
+    """``test(name, seed)`` for every template, over a few hypothesis seeds."""
+    return pytest.mark.parametrize("name", NAMES)(FEW(given(seed=SEEDS)(test)))
+
+
+@each_template_over_seeds
 def test_two_routes_agree_and_the_answer_is_finite_and_in_range(name: str, seed: int) -> None:
     t = x.template(name)
     v = t.variant(seed)
@@ -61,9 +65,7 @@ def test_two_routes_agree_and_the_answer_is_finite_and_in_range(name: str, seed:
     assert again.drawn == v.drawn and again.answer_si == v.answer_si
 
 
-@pytest.mark.parametrize("name", NAMES)
-@FEW
-@given(seed=SEEDS)
+@each_template_over_seeds
 def test_the_statements_numbers_are_the_ones_used(name: str, seed: int) -> None:
     t = x.template(name)
     v = t.variant(seed)
@@ -527,3 +529,46 @@ def test_the_turntable_bugs_missing_coriolis_term_is_a_known_mistake() -> None:
     centripetal = v.values.rate**2 * v.values.radius  # m/s², the answer without 2ω×u
     c = x.check("turntable-bug", v.seed, centripetal)
     assert not c.right and c.mistake == "no Coriolis term" and c.step == 3
+
+
+# ---- the builders a template is written with ---------------------------------------------------------
+
+
+def test_a_derived_step_is_the_default_second_route_and_unit() -> None:
+    from poinsot.exercises._build import derived, draws, route
+    from poinsot.exercises._template import _last_step
+
+    t = x.template("dropped-ball")
+    # written without check or unit: both come from its last step, the derivation's 2.42
+    assert t.unit == "mm" and t.steps[-1].number == "2.42"
+    v = t.fixed(height=100, latitude=45)
+    assert v.check_si == route("earth 2.42(omega, height, latitude, g)")(v.values)
+    step = derived("Time of fall", "T [s] = earth 2.41(height, g)")
+    assert (step.topic, step.number, step.args, step.symbol, step.unit) == (
+        "earth",
+        "2.41",
+        ("height", "g"),
+        "T",
+        "s",
+    )
+    assert derived("", r"a_N [m/s**2] = earth centrifugal[1](omega, R, latitude)").component == 1
+    with pytest.raises(TypeError, match="'no-route'.*last step is not derived"):
+        dataclasses.replace(t, name="no-route", check=_last_step, steps=())
+    params = draws("m", height=(20, 300, 5)) + draws("deg", latitude=(("Oslo", 59.91),))
+    assert [(p.name, p.unit, p.step, p.choices) for p in params] == [
+        ("height", "m", 5, ()),
+        ("latitude", "deg", 1.0, (("Oslo", 59.91),)),
+    ]
+
+
+@pytest.mark.parametrize(
+    "call, spec",
+    [("derived", "T = earth 2.41(height, g)"), ("derived", "T [s] = earth(height, g)")],
+)
+def test_a_malformed_step_is_refused_saying_what_it_wants(call: str, spec: str) -> None:
+    from poinsot.exercises import _build
+
+    with pytest.raises(
+        ValueError, match=r"not '(symbol \[unit\] = \.\.\.|topic number\[i\]\(args\))'"
+    ):
+        getattr(_build, call)("text", spec)

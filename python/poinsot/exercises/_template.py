@@ -83,6 +83,11 @@ class Param:
 # ---- the template -----------------------------------------------------------------------------
 
 
+def _last_step(v: Any) -> float:
+    """The default of :attr:`Template.check`: replaced by the last step's derived formula."""
+    raise NotImplementedError  # pragma: no cover - __post_init__ replaces it
+
+
 @dataclass(frozen=True, eq=False)
 class Template:
     """A problem with seeded variants.
@@ -104,15 +109,18 @@ class Template:
         label of a choice.
     question:
         The quantity asked for, in words, ending with the unit the answer is wanted in.
-    unit:
-        The unit of the answer (pint's spelling, a key of :data:`UNITS`).
     answer:
         Values (SI, as attributes) → the answer (SI) through poinsot's public API.
-    check:
-        The second, independent route (closed form vs integration, exact vs derived formula).
     agree:
         The relative difference of the two routes a variant may have (with the reason in
         ``agree_why``).
+    unit:
+        The unit of the answer (pint's spelling, a key of :data:`UNITS`); by default the unit
+        of the last worked step (the worked solution arrives at the answer).
+    check:
+        The second, independent route (closed form vs integration, exact vs derived formula);
+        by default the last worked step's derived formula (a :class:`Derived` step: the
+        :mod:`poinsot.derive` result against the core's closed form).
     steps:
         The worked solution (:class:`Derived` or :class:`Plain`).
     mistakes:
@@ -137,11 +145,11 @@ class Template:
     params: tuple[Param, ...]
     text: str
     question: str
-    unit: str
     answer: Callable[[Any], float]
-    check: Callable[[Any], float]
     agree: float
     agree_why: str
+    unit: str = ""
+    check: Callable[[Any], float] = _last_step
     steps: tuple[Derived | Plain, ...] = ()
     mistakes: tuple[Mistake, ...] = ()
     constants: Mapping[str, float] = field(default_factory=dict)
@@ -149,6 +157,17 @@ class Template:
     answer_range: tuple[float, float] = (-math.inf, math.inf)
     max_rtol: float = MAX_RTOL
     source: str = ""
+
+    def __post_init__(self) -> None:
+        last = self.steps[-1] if self.steps else None
+        if self.check is _last_step:
+            if not isinstance(last, Derived):
+                raise TypeError(
+                    f"template {self.name!r}: no check, and its last step is not derived"
+                )
+            object.__setattr__(self, "check", last.evaluate)
+        if not self.unit and last is not None:
+            object.__setattr__(self, "unit", last.unit)
 
     def __repr__(self) -> str:
         return (
@@ -198,7 +217,7 @@ class Template:
             if math.isfinite(a) and math.isfinite(b) and abs(a - b) <= self.agree * scale:
                 tolerance = self.tolerance(v, a)
                 if 0 < tolerance <= self.max_rtol * abs(a):  # finite, and an answer can be graded
-                    return Variant(self, seed, drawn, labels, v, a, b, tolerance)
+                    return Variant(self, seed, drawn, v, labels, a, b, tolerance)
                 worst = f"ill-conditioned: tolerance {tolerance:.3g} of answer {a:.3g}"
                 continue
             worst = f"answer {a!r}, second route {b!r} (seed {seed}, draw {attempt})"
@@ -224,7 +243,7 @@ class Template:
             raise PoinsotError(f"template: {self.name!r}: its two routes disagree: {a!r}, {b!r}")
         chosen = {p.name: (labels or {}).get(p.name, "") for p in self.params}
         return Variant(
-            self, _seed(seed, "seed"), dict(drawn), chosen, v, a, b, self.tolerance(v, a)
+            self, _seed(seed, "seed"), dict(drawn), v, chosen, a, b, self.tolerance(v, a)
         )
 
     def tolerance(self, v: SimpleNamespace, answer_si: float) -> float:
@@ -288,16 +307,16 @@ def variant_seed(seed: int, template: str, index: int) -> int:
 class Variant:
     """A variant of a template, issued: its numbers agree by both routes.
 
-    ``drawn`` (each parameter in its unit), ``labels`` (the labels of choices), ``values`` (SI,
-    what the routes read), ``answer_si`` and ``check_si`` (the two routes, SI),
+    ``drawn`` (each parameter in its unit), ``values`` (SI, what the routes read), ``labels``
+    (the labels of choices), ``answer_si`` and ``check_si`` (the two routes, SI),
     ``tolerance_si`` (the accepted absolute error, SI). ``steps`` and ``mistakes`` are worked
     out when read."""
 
     template: Template
     seed: int
     drawn: dict[str, float]
-    labels: dict[str, str]
     values: SimpleNamespace
+    labels: dict[str, str]
     answer_si: float
     check_si: float
     tolerance_si: float

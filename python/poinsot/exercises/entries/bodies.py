@@ -5,13 +5,15 @@ torque by Euler's equations (L 9)."""
 from __future__ import annotations
 
 import math
+from functools import partial
 from typing import Any
 
 import numpy as np
 
 from ...body import RigidBody
-from .._steps import Derived, Mistake, Plain
-from .._template import Param, Template
+from .._build import derived, draws, plain, prose, route, scaled
+from .._steps import Mistake
+from .._template import Template
 
 # ---- a composite body: a rod with a ball on its end (parallel axes; L 8) --------------------------
 
@@ -32,60 +34,41 @@ def _lollipop_hand(v: Any, parallel: bool = True, ball_spread: bool = True) -> f
 
 COMPOSITE = Template(
     name="composite-inertia",
-    topic="rigid bodies",
-    difficulty=2,
     title="A rod with a ball on its end",
-    params=(
-        Param("rod_mass", "g", 50, 500, 10),
-        Param("length", "cm", 10, 60, 1),
-        Param("ball_mass", "g", 100, 1000, 10),
-        Param("radius", "cm", 2, 8, 0.5),
-    ),
-    text="A thin uniform rod of mass {rod_mass} and length {length} carries on one end a solid "
-    "ball of mass {ball_mass} and radius {radius}, its centre on the rod's line, the ball "
-    "touching the rod's end.",
-    question="What is the body's moment of inertia about an axis through its centre of mass "
-    "perpendicular to the rod, in kg·cm²?",
-    unit="kg*cm**2",
+    text=prose("""A thin uniform rod of mass {rod_mass} and length {length} carries on one end a
+        solid ball of mass {ball_mass} and radius {radius}, its centre on the rod's line, the ball
+        touching the rod's end."""),
+    params=draws("g", rod_mass=(50, 500, 10))
+    + draws("cm", length=(10, 60, 1))
+    + draws("g", ball_mass=(100, 1000, 10))
+    + draws("cm", radius=(2, 8, 0.5)),
+    question=prose("""What is the body's moment of inertia about an axis through its centre of mass
+        perpendicular to the rod, in kg·cm²?"""),
     answer=lambda v: float(_lollipop(v).principal_moments[-1]),
     check=_lollipop_hand,
     agree=1e-9,
     agree_why="the core's composition of tensors against the parallel-axis theorem by hand",
     steps=(
-        Plain(
+        plain(
             "The centre of mass, from the rod's free end",
-            r"\frac{{m\,L/2 + M\,(L + R)}}{{m + M}}",
+            r"z_c [cm] = \frac{{m\,L/2 + M\,(L + R)}}{{m + M}}",
             lambda v: (
                 (v.rod_mass * v.length / 2 + v.ball_mass * (v.length + v.radius))
                 / (v.rod_mass + v.ball_mass)
             ),
-            "cm",
-            "z_c",
         ),
-        Derived(
+        derived(
             "The rod about its own centre",
-            "rigid_body",
-            "thin_rod",
-            ("rod_mass", "length"),
-            "I_{rod}",
-            "kg*cm**2",
-            component=0,
+            "I_{rod} [kg*cm**2] = rigid_body thin_rod[0](rod_mass, length)",
         ),
-        Derived(
+        derived(
             "The ball about its own centre",
-            "rigid_body",
-            "solid_sphere",
-            ("ball_mass", "radius"),
-            "I_{ball}",
-            "kg*cm**2",
-            component=0,
+            "I_{ball} [kg*cm**2] = rigid_body solid_sphere[0](ball_mass, radius)",
         ),
-        Plain(
+        plain(
             "Both moved to the common centre (parallel axes, eq. 2.65)",
-            r"I_{{rod}} + m d_1^2 + I_{{ball}} + M d_2^2",
+            r"I [kg*cm**2] = I_{{rod}} + m d_1^2 + I_{{ball}} + M d_2^2",
             _lollipop_hand,
-            "kg*cm**2",
-            "I",
         ),
     ),
     mistakes=(
@@ -112,6 +95,8 @@ COMPOSITE = Template(
             ),
         ),
     ),
+    topic="rigid bodies",
+    difficulty=2,
     answer_range=(1.0, 1e3),
 )
 
@@ -138,41 +123,31 @@ def _tensor(v: Any, about_cm: bool = True) -> np.ndarray:
 
 POINT_MASSES = Template(
     name="principal-moments",
-    topic="rigid bodies",
-    difficulty=3,
     title="The principal moments of three point masses",
-    params=(
-        Param("m1", "kg", 1, 5, 0.5),
-        Param("x1", "cm", 10, 50, 1),
-        Param("m2", "kg", 1, 5, 0.5),
-        Param("y2", "cm", 10, 50, 1),
-        Param("m3", "kg", 1, 5, 0.5),
-        Param("x3", "cm", 10, 50, 1),
-        Param("y3", "cm", 10, 50, 1),
-    ),
-    text="Three small balls are fixed on a light frame in the xy plane: {m1} at ({x1}, 0), {m2} "
-    "at (0, {y2}) and {m3} at ({x3}, {y3}).",
+    text=prose("""Three small balls are fixed on a light frame in the xy plane: {m1} at ({x1}, 0),
+        {m2} at (0, {y2}) and {m3} at ({x3}, {y3})."""),
+    params=draws("kg", m1=(1, 5, 0.5))
+    + draws("cm", x1=(10, 50, 1))
+    + draws("kg", m2=(1, 5, 0.5))
+    + draws("cm", y2=(10, 50, 1))
+    + draws("kg", m3=(1, 5, 0.5))
+    + draws("cm", x3=(10, 50, 1), y3=(10, 50, 1)),
     question="What is the smallest principal moment of inertia about the centre of mass, in kg·m²?",
-    unit="kg*m**2",
     answer=lambda v: float(RigidBody.from_point_masses(*_points(v)).principal_moments[0]),
     check=lambda v: float(np.linalg.eigvalsh(_tensor(v))[0]),
     agree=1e-9,
     agree_why="the core's tensor and eigen-solver against numpy's eigvalsh of the unit's 2.55",
     steps=(
-        Plain(
+        plain(
             "The centre of mass, then the tensor about it: I_xx = Σm y², I_yy = Σm x², "
             "I_zz = I_xx + I_yy, I_xy = −Σm x y (eqs. 2.55–2.57)",
-            r"I_{{xy}} = -\sum m\,x\,y",
+            r"I_{xy} [kg*m**2] = I_{{xy}} = -\sum m\,x\,y",
             lambda v: float(_tensor(v)[0, 1]),
-            "kg*m**2",
-            "I_{xy}",
         ),
-        Plain(
+        plain(
             "The principal moments are the eigenvalues of I (eq. 2.60): the smallest",
-            r"\tfrac12 (I_{{xx}} + I_{{yy}}) - \sqrt{{\tfrac14 (I_{{xx}} - I_{{yy}})^2 + I_{{xy}}^2}}",
+            r"I_1 [kg*m**2] = \tfrac12 (I_{{xx}} + I_{{yy}}) - \sqrt{{\tfrac14 (I_{{xx}} - I_{{yy}})^2 + I_{{xy}}^2}}",
             lambda v: float(np.linalg.eigvalsh(_tensor(v))[0]),
-            "kg*m**2",
-            "I_1",
         ),
     ),
     mistakes=(
@@ -195,6 +170,8 @@ POINT_MASSES = Template(
             lambda v: float(np.linalg.eigvalsh(_tensor(v))[0]) * 1e4,
         ),
     ),
+    topic="rigid bodies",
+    difficulty=3,
     answer_range=(1e-6, 10.0),
 )
 
@@ -215,58 +192,42 @@ def _energy(v: Any) -> float:
     return float(_dumbbell(v).kinetic_energy([0.0, 0.0, v.rate]))
 
 
-_DUMBBELL_PARAMS = (
-    Param("mass", "g", 50, 500, 10),
-    Param("arm", "cm", 5, 30, 1),
-    Param("tilt", "deg", 10, 80, 1),
-    Param("rate", "rpm", 60, 1200, 30),
-)
-_DUMBBELL_TEXT = (
-    "Two small balls of {mass} each sit on a light rod, {arm} either side of its midpoint. "
-    "The rod turns at {rate} about a fixed axis through its midpoint, making a constant angle "
-    "{tilt} with the axis."
-)
-
-DUMBBELL_TORQUE = Template(
-    name="dumbbell-torque",
+#: A template of the rotating dumbbell: its parameters and statement.
+_dumbbell_template = partial(
+    Template,
     topic="rigid bodies",
-    difficulty=2,
+    params=draws("g", mass=(50, 500, 10))
+    + draws("cm", arm=(5, 30, 1))
+    + draws("deg", tilt=(10, 80, 1))
+    + draws("rpm", rate=(60, 1200, 30)),
+    text=prose("""Two small balls of {mass} each sit on a light rod, {arm} either side of its
+        midpoint. The rod turns at {rate} about a fixed axis through its midpoint, making a
+        constant angle {tilt} with the axis."""),
+)
+_DUMBBELL_TORQUE = "rigid_body dumbbell_torque[1](mass, mass, arm, arm, tilt, rate)"
+_torque_y = route(_DUMBBELL_TORQUE)
+#: 1 rpm taken for 1 rad/s: a rate's square is (60/2π)² too large.
+_RPM_SQUARED = (60 / (2 * math.pi)) ** 2
+
+DUMBBELL_TORQUE = _dumbbell_template(
+    name="dumbbell-torque",
     title="The torque that holds a rotating dumbbell",
-    params=_DUMBBELL_PARAMS,
-    text=_DUMBBELL_TEXT,
     question="What torque must the bearings exert to keep it turning, in N·m?",
-    unit="N*m",
     answer=_torque,
-    check=lambda v: abs(
-        Derived(
-            "",
-            "rigid_body",
-            "dumbbell_torque",
-            ("mass", "mass", "arm", "arm", "tilt", "rate"),
-            "",
-            component=1,
-        ).evaluate(v)
-    ),
+    check=lambda v: abs(_torque_y(v)),
     agree=1e-12,
     agree_why="the core's ω×L against the derivation's dumbbell torque",
     steps=(
-        Derived(
-            "The torque ω × L for ω along the axis",
-            "rigid_body",
-            "dumbbell_torque",
-            ("mass", "mass", "arm", "arm", "tilt", "rate"),
-            "N_y",
-            "N*m",
-            component=1,
-        ),
-        Plain("The torque is along −y, of magnitude |N_y|", r"|N_y|", _torque, "N*m", "N"),
+        derived("The torque ω × L for ω along the axis", "N_y [N*m] = " + _DUMBBELL_TORQUE),
+        plain("The torque is along −y, of magnitude |N_y|", "N [N*m] = |N_y|", _torque),
     ),
     mistakes=(
-        Mistake(
+        scaled(
             "rpm as rad/s",
             "used the rate in rpm as if in rad/s (1 rpm = 2π/60 rad/s)",
             1,
-            lambda v: _torque(v) * (60 / (2 * math.pi)) ** 2,
+            _torque,
+            _RPM_SQUARED,
         ),
         Mistake(
             "sin for sin 2α",
@@ -274,52 +235,30 @@ DUMBBELL_TORQUE = Template(
             2,
             lambda v: 2 * v.mass * v.arm**2 * v.rate**2 * math.sin(v.tilt),
         ),
-        Mistake(
-            "one ball",
-            "counted one ball only",
-            2,
-            lambda v: _torque(v) / 2,
-        ),
+        scaled("one ball", "counted one ball only", 2, _torque, 0.5),
     ),
+    difficulty=2,
     answer_range=(1e-5, 1e3),
 )
 
-DUMBBELL_ENERGY = Template(
+DUMBBELL_ENERGY = _dumbbell_template(
     name="dumbbell-energy",
-    topic="rigid bodies",
-    difficulty=1,
     title="The kinetic energy of a rotating dumbbell",
-    params=_DUMBBELL_PARAMS,
-    text=_DUMBBELL_TEXT,
     question="What is its kinetic energy, in J?",
-    unit="J",
     answer=_energy,
     check=lambda v: v.mass * (v.arm * math.sin(v.tilt) * v.rate) ** 2,
     agree=1e-12,
     agree_why="the core's ½ω·I·ω against ½ Σ m v² with v = ω r sin α by hand",
     steps=(
-        Plain(
+        plain(
             "Each ball moves on a circle of radius r sin α at speed ω r sin α",
-            r"{arm} \sin {tilt}\,{rate}",
+            r"v [m/s] = {arm} \sin {tilt}\,{rate}",
             lambda v: v.arm * math.sin(v.tilt) * v.rate,
-            "m/s",
-            "v",
         ),
-        Plain(
-            "T = ½ ω·I·ω = 2 · ½ m v² (eq. 2.50)",
-            r"{mass}\,v^2",
-            _energy,
-            "J",
-            "T",
-        ),
+        plain("T = ½ ω·I·ω = 2 · ½ m v² (eq. 2.50)", r"T [J] = {mass}\,v^2", _energy),
     ),
     mistakes=(
-        Mistake(
-            "rpm as rad/s",
-            "used the rate in rpm as if in rad/s",
-            1,
-            lambda v: _energy(v) * (60 / (2 * math.pi)) ** 2,
-        ),
+        scaled("rpm as rad/s", "used the rate in rpm as if in rad/s", 1, _energy, _RPM_SQUARED),
         Mistake(
             "cos for sin",
             "took the distance from the axis as r cos α",
@@ -327,27 +266,25 @@ DUMBBELL_ENERGY = Template(
             lambda v: v.mass * (v.arm * math.cos(v.tilt) * v.rate) ** 2,
         ),
     ),
+    difficulty=1,
     answer_range=(1e-6, 1e3),
 )
 
 # ---- Euler's equations and the work of the torque (2.72, 2.75–2.76; L 9) ---------------------------
 
-_EULER_ARGS = ("I1", "I2", "I3", "w1", "w2", "w3")
+#: Euler's equations (2.72) solved for ω̇ᵢ, i = 0, 1, 2.
+_EULER = "euler_equations 2.72[{}](I1, I2, I3, w1, w2, w3, N1, N2, N3)"
+#: dT/dt = Σ Iᵢ ωᵢ ω̇ᵢ (W), the derivation's 2.76.
+_POWER = "euler_equations 2.76(I1, I2, I3, w1, w2, w3, wdot1, wdot2, wdot3)"
 
 
 def _euler_extra(v: Any) -> dict[str, float]:
     """ω̇ (rad/s²) from Euler's equations (2.72) of the derivation, for the steps and the answer."""
-    args = (*_EULER_ARGS, "N1", "N2", "N3")
-    return {
-        f"wdot{i + 1}": Derived("", "euler_equations", "2.72", args, "", component=i).evaluate(v)
-        for i in range(3)
-    }
+    return {f"wdot{i + 1}": route(_EULER.format(i))(v) for i in range(3)}
 
 
-def _power(v: Any) -> float:
-    """dT/dt = Σ Iᵢ ωᵢ ω̇ᵢ (W): the derivation's 2.76 with ω̇ from Euler's equations 2.72."""
-    args = (*_EULER_ARGS, "wdot1", "wdot2", "wdot3")
-    return Derived("", "euler_equations", "2.76", args, "").evaluate(v)
+#: dT/dt (W): the derivation's 2.76 with ω̇ from Euler's equations 2.72.
+_power = route(_POWER)
 
 
 def _dot_wn(v: Any) -> float:
@@ -356,65 +293,30 @@ def _dot_wn(v: Any) -> float:
 
 EULER_POWER = Template(
     name="euler-power",
-    topic="rigid bodies",
-    difficulty=2,
     title="The power of a torque, by Euler's equations",
-    params=(
-        Param("I1", "kg*cm**2", 50, 500, 10),
-        Param("I2", "kg*cm**2", 50, 500, 10),
-        Param("I3", "kg*cm**2", 50, 500, 10),
-        Param("w1", "rad/s", 1, 10, 0.5),
-        Param("w2", "rad/s", 1, 10, 0.5),
-        Param("w3", "rad/s", 1, 10, 0.5),
-        Param("N1", "mN*m", -50, 50, 5),
-        Param("N2", "mN*m", -50, 50, 5),
-        Param("N3", "mN*m", -50, 50, 5),
-    ),
-    text="A rigid body has principal moments of inertia I₁ = {I1}, I₂ = {I2}, I₃ = {I3}. At one "
-    "instant it turns with ω = ({w1}, {w2}, {w3}) along its principal axes, and a torque with "
-    "components N₁ = {N1}, N₂ = {N2}, N₃ = {N3} along the same axes acts on it.",
+    text=prose("""A rigid body has principal moments of inertia I₁ = {I1}, I₂ = {I2}, I₃ = {I3}. At
+        one instant it turns with ω = ({w1}, {w2}, {w3}) along its principal axes, and a torque
+        with components N₁ = {N1}, N₂ = {N2}, N₃ = {N3} along the same axes acts on it."""),
+    params=draws("kg*cm**2", I1=(50, 500, 10), I2=(50, 500, 10), I3=(50, 500, 10))
+    + draws("rad/s", w1=(1, 10, 0.5), w2=(1, 10, 0.5), w3=(1, 10, 0.5))
+    + draws("mN*m", N1=(-50, 50, 5), N2=(-50, 50, 5), N3=(-50, 50, 5)),
     question="At what rate is its kinetic energy changing at that instant, in mW?",
-    unit="mW",
     answer=_power,
     check=_dot_wn,
     agree=1e-9,
     agree_why="ω̇ from Euler's equations (2.72) and dT/dt = Σ Iᵢωᵢω̇ᵢ (2.76), both from the "
     "derivation, against the energy theorem ω·N (2.75) by hand",
     steps=(
-        Derived(
-            "ω̇₁ from Euler's first equation",
-            "euler_equations",
-            "2.72",
-            (*_EULER_ARGS, "N1", "N2", "N3"),
-            r"\dot\omega_1",
-            "rad/s**2",
-            component=0,
+        *(
+            derived(
+                f"ω̇{sub} from Euler's {nth} equation",
+                rf"\dot\omega_{i + 1} [rad/s**2] = " + _EULER.format(i),
+            )
+            for i, (sub, nth) in enumerate(zip("₁₂₃", ("first", "second", "third")))
         ),
-        Derived(
-            "ω̇₂ from Euler's second equation",
-            "euler_equations",
-            "2.72",
-            (*_EULER_ARGS, "N1", "N2", "N3"),
-            r"\dot\omega_2",
-            "rad/s**2",
-            component=1,
-        ),
-        Derived(
-            "ω̇₃ from Euler's third equation",
-            "euler_equations",
-            "2.72",
-            (*_EULER_ARGS, "N1", "N2", "N3"),
-            r"\dot\omega_3",
-            "rad/s**2",
-            component=2,
-        ),
-        Derived(
+        derived(
             "dT/dt = ω·I·ω̇; the gyroscopic terms cancel, leaving ω·N (2.75–2.76)",
-            "euler_equations",
-            "2.76",
-            (*_EULER_ARGS, "wdot1", "wdot2", "wdot3"),
-            r"\frac{dT}{dt}",
-            "mW",
+            r"\frac{dT}{dt} [mW] = " + _POWER,
         ),
     ),
     mistakes=(
@@ -431,8 +333,10 @@ EULER_POWER = Template(
             lambda v: v.I1 * v.w1 * v.wdot1,
         ),
     ),
-    extra=_euler_extra,
+    topic="rigid bodies",
+    difficulty=2,
     answer_range=(-1e4, 1e4),
+    extra=_euler_extra,
 )
 
 ENTRIES = (COMPOSITE, POINT_MASSES, DUMBBELL_TORQUE, DUMBBELL_ENERGY, EULER_POWER)

@@ -9,8 +9,9 @@ from typing import Any
 import numpy as np
 
 from ...frames import MovingFrame
-from .._steps import Mistake, Plain
-from .._template import Param, Template
+from .._build import draws, plain, prose
+from .._steps import Mistake
+from .._template import Template
 
 _G = 9.80665
 
@@ -32,36 +33,26 @@ def _bob_angle(v: Any) -> float:
 
 CAR = Template(
     name="car-plumb-bob",
-    topic="moving frames",
-    difficulty=1,
     title="A plumb bob in an accelerating car",
-    params=(
-        Param("speed", "km/h", 50, 120, 10),
-        Param("time", "s", 4, 15, 1),
-    ),
-    text="A car starts from rest on a level road and speeds up uniformly, reaching {speed} in "
-    "{time}. A small bob hangs on a string from the mirror. Take g = 9.807 m/s².",
-    question="While the car speeds up, at what angle from the vertical does the string hang (the "
-    "bob swung back), in degrees?",
-    unit="deg",
+    text=prose("""A car starts from rest on a level road and speeds up uniformly, reaching {speed}
+        in {time}. A small bob hangs on a string from the mirror. Take g = 9.807 m/s²."""),
+    params=draws("km/h", speed=(50, 120, 10)) + draws("s", time=(4, 15, 1)),
+    question=prose("""While the car speeds up, at what angle from the vertical does the string hang
+        (the bob swung back), in degrees?"""),
     answer=_bob_angle,
     check=lambda v: math.atan(v.speed / v.time / v.g),
     agree=1e-12,
     agree_why="the core's fictitious force −m R̈ (2.5) against tan α = a/g by hand",
     steps=(
-        Plain(
+        plain(
             "The car's acceleration, from rest to v in t",
-            r"\frac{{{speed}}}{{{time}}}",
+            r"a [m/s**2] = \frac{{{speed}}}{{{time}}}",
             _car_acceleration,
-            "m/s**2",
-            "a",
         ),
-        Plain(
+        plain(
             "In the car's frame the bob feels −m a besides m g (eq. 2.5): tan α = a/g",
-            r"\arctan\frac{{a}}{{{g}}}",
+            r"\alpha [deg] = \arctan\frac{{a}}{{{g}}}",
             _bob_angle,
-            "deg",
-            r"\alpha",
         ),
     ),
     mistakes=(
@@ -78,8 +69,10 @@ CAR = Template(
             lambda v: math.atan(v.g * v.time / v.speed),
         ),
     ),
-    constants={"g": _G},
+    topic="moving frames",
+    difficulty=1,
     answer_range=(0.0, 45.0),
+    constants={"g": _G},
 )
 
 # ---- a rotating frame: velocity and acceleration (2.19–2.23; L 2) --------------------------------
@@ -93,46 +86,43 @@ def _bug_acceleration(v: Any) -> float:
     return float(np.linalg.norm(seen.acceleration))
 
 
+def _centripetal(v: Any) -> float:
+    return v.rate**2 * v.radius
+
+
+def _coriolis(v: Any) -> float:
+    return 2 * v.rate * v.speed
+
+
 TURNTABLE = Template(
     name="turntable-bug",
-    topic="moving frames",
-    difficulty=2,
     title="A bug crawling on a turntable",
-    params=(
-        Param("rate", "rpm", 10, 60, 5),
-        Param("speed", "cm/s", 1, 10, 0.5),
-        Param("radius", "cm", 5, 15, 1),
-    ),
-    text="A turntable turns at a steady {rate}. A bug crawls straight outward along a radius "
-    "painted on it, at a steady {speed} relative to the table.",
-    question="When the bug is {radius} from the centre, what is the magnitude of its acceleration "
-    "seen from the ground, in m/s²?",
-    unit="m/s**2",
+    text=prose("""A turntable turns at a steady {rate}. A bug crawls straight outward along a
+        radius painted on it, at a steady {speed} relative to the table."""),
+    params=draws("rpm", rate=(10, 60, 5))
+    + draws("cm/s", speed=(1, 10, 0.5))
+    + draws("cm", radius=(5, 15, 1)),
+    question=prose("""When the bug is {radius} from the centre, what is the magnitude of its
+        acceleration seen from the ground, in m/s²?"""),
     answer=_bug_acceleration,
-    check=lambda v: math.hypot(v.rate**2 * v.radius, 2 * v.rate * v.speed),
+    check=lambda v: math.hypot(_centripetal(v), _coriolis(v)),
     agree=1e-12,
     agree_why="the core's r̈' = r̈ + 2ω×ṙ + ω×(ω×r) (2.23) against its two terms by hand",
     steps=(
-        Plain(
+        plain(
             "The centripetal term ω×(ω×r), inward, of magnitude ω² r",
-            r"{rate}^2 \cdot {radius}",
-            lambda v: v.rate**2 * v.radius,
-            "m/s**2",
-            "a_c",
+            r"a_c [m/s**2] = {rate}^2 \cdot {radius}",
+            _centripetal,
         ),
-        Plain(
+        plain(
             "The Coriolis term 2ω×u (u the bug's velocity on the table), across the radius, of magnitude 2 ω u",
-            r"2 \cdot {rate} \cdot {speed}",
-            lambda v: 2 * v.rate * v.speed,
-            "m/s**2",
-            "a_{cor}",
+            r"a_{cor} [m/s**2] = 2 \cdot {rate} \cdot {speed}",
+            _coriolis,
         ),
-        Plain(
+        plain(
             "The two are perpendicular (the bug's speed on the table is steady: no third term)",
-            r"\sqrt{{a_c^2 + a_{{cor}}^2}}",
+            r"a [m/s**2] = \sqrt{{a_c^2 + a_{{cor}}^2}}",
             _bug_acceleration,
-            "m/s**2",
-            "a",
         ),
     ),
     mistakes=(
@@ -140,21 +130,23 @@ TURNTABLE = Template(
             "no Coriolis term",
             "left out the Coriolis term 2ω×u: the bug moves in the rotating frame",
             3,
-            lambda v: v.rate**2 * v.radius,
+            _centripetal,
         ),
         Mistake(
             "factor 2",
             "forgot the factor 2 of the Coriolis term",
             3,
-            lambda v: math.hypot(v.rate**2 * v.radius, v.rate * v.speed),
+            lambda v: math.hypot(_centripetal(v), v.rate * v.speed),
         ),
         Mistake(
             "terms added",
             "added the two magnitudes; they are perpendicular",
             4,
-            lambda v: v.rate**2 * v.radius + 2 * v.rate * v.speed,
+            lambda v: _centripetal(v) + _coriolis(v),
         ),
     ),
+    topic="moving frames",
+    difficulty=2,
     answer_range=(0.0, 10.0),
 )
 

@@ -5,6 +5,7 @@ nutation bounds."""
 from __future__ import annotations
 
 import math
+from functools import partial
 from typing import Any
 
 import numpy as np
@@ -14,8 +15,9 @@ from ...dynamics import simulate
 from ...free import FreeRigidBody, FreeSymmetricTop
 from ...rotation import body_angular_velocity
 from ...top import HeavyTop
-from .._steps import Derived, Mistake, Plain
-from .._template import Param, Template
+from .._build import derived, draws, plain, prose, scaled
+from .._steps import Mistake, Plain
+from .._template import Template
 
 _G = 9.80665
 
@@ -52,60 +54,38 @@ def _precession_by_integration(v: Any) -> float:
     return float(-(phase[-1] - phase[0]) / (run.t[-1] - run.t[0]))
 
 
-_CYLINDER = (
-    Param("mass", "g", 100, 900, 20),
-    Param("radius", "cm", 2, 10, 0.5),
-    Param("height", "cm", 1, 30, 1),
-    Param("spin", "rpm", 60, 600, 30),
-    Param("wobble", "rpm", 1, 20, 1),
-)
-_CYLINDER_TEXT = (
-    "A solid uniform cylinder of mass {mass}, radius {radius} and height {height} is thrown "
-    "spinning in free fall (no torque) at ω₃ = {spin} about its axis, with a small wobble ω₁ = "
-    "{wobble} across it (ω₂ = 0)."
-)
-
-FREE_PRECESSION = Template(
-    name="free-top-precession",
+#: A template of the thrown cylinder: its parameters, statement and moments.
+_thrown_cylinder = partial(
+    Template,
     topic="free tops",
-    difficulty=2,
+    params=draws("g", mass=(100, 900, 20))
+    + draws("cm", radius=(2, 10, 0.5), height=(1, 30, 1))
+    + draws("rpm", spin=(60, 600, 30), wobble=(1, 20, 1)),
+    text=prose("""A solid uniform cylinder of mass {mass}, radius {radius} and height {height} is
+        thrown spinning in free fall (no torque) at ω₃ = {spin} about its axis, with a small wobble
+        ω₁ = {wobble} across it (ω₂ = 0)."""),
+    extra=_cyl_extra,
+)
+_CYLINDER_MOMENT = "rigid_body solid_cylinder[{}](mass, radius, height)"
+
+FREE_PRECESSION = _thrown_cylinder(
+    name="free-top-precession",
     title="The precession of a thrown cylinder",
-    params=_CYLINDER,
-    text=_CYLINDER_TEXT,
-    question="At what rate Ω = (I₁ − I₃)ω₃/I₁ does ω precess about the axis in the body "
-    "(the unit's sign: ω̇₁ = Ωω₂), in rad/s?",
-    unit="rad/s",
+    question=prose("""At what rate Ω = (I₁ − I₃)ω₃/I₁ does ω precess about the axis in the body
+        (the unit's sign: ω̇₁ = Ωω₂), in rad/s?"""),
     answer=_precession,
     check=_precession_by_integration,
     agree=1e-6,
     agree_why="RK4 with 4000 steps a period: error ~ (Ω dt)⁴ ≈ 6e-13 relative; the phase read "
     "from 601 samples is exact (no interpolation)",
     steps=(
-        Derived(
-            "I₁ of the cylinder about a diameter",
-            "rigid_body",
-            "solid_cylinder",
-            ("mass", "radius", "height"),
-            "I_1",
-            "kg*m**2",
-            component=0,
+        derived(
+            "I₁ of the cylinder about a diameter", "I_1 [kg*m**2] = " + _CYLINDER_MOMENT.format(0)
         ),
-        Derived(
-            "I₃ about its axis",
-            "rigid_body",
-            "solid_cylinder",
-            ("mass", "radius", "height"),
-            "I_3",
-            "kg*m**2",
-            component=8,
-        ),
-        Derived(
+        derived("I₃ about its axis", "I_3 [kg*m**2] = " + _CYLINDER_MOMENT.format(8)),
+        derived(
             "Euler's equations with I₂ = I₁ give Ω",
-            "torque_free_top",
-            "2.83",
-            ("I1", "I3", "spin"),
-            r"\Omega",
-            "rad/s",
+            r"\Omega [rad/s] = torque_free_top 2.83(I1, I3, spin)",
         ),
     ),
     mistakes=(
@@ -128,7 +108,7 @@ FREE_PRECESSION = Template(
             lambda v: (v.I1 - v.I3) * v.spin / v.I3,
         ),
     ),
-    extra=_cyl_extra,
+    difficulty=2,
     answer_range=(-100.0, 100.0),
 )
 
@@ -137,42 +117,29 @@ def _cones(v: Any) -> float:
     return float(FreeSymmetricTop(v.I1, v.I3, [v.wobble, 0.0, v.spin]).space_cone_angle)
 
 
-FREE_CONES = Template(
+FREE_CONES = _thrown_cylinder(
     name="free-top-cones",
-    topic="free tops",
-    difficulty=3,
     title="The space cone of a thrown cylinder",
-    params=_CYLINDER,
-    text=_CYLINDER_TEXT,
-    question="What is the half-angle of the space cone, the cone ω sweeps about the fixed L, "
-    "in degrees?",
-    unit="deg",
+    question=prose("""What is the half-angle of the space cone, the cone ω sweeps about the fixed
+        L, in degrees?"""),
     answer=_cones,
     check=lambda v: abs(math.atan2(v.I1 * v.wobble, v.I3 * v.spin) - math.atan2(v.wobble, v.spin)),
     agree=1e-9,
     agree_why="the core's cone angles against the angle between L = I·ω and ω by hand",
     steps=(
-        Derived(
+        derived(
             "The body cone: ω against the axis",
-            "torque_free_top",
-            "2.90",
-            ("wobble", "spin"),
-            r"\alpha",
-            "deg",
+            r"\alpha [deg] = torque_free_top 2.90(wobble, spin)",
         ),
-        Plain(
+        plain(
             "L = (I₁ω₁, 0, I₃ω₃) against the axis",
-            r"\arctan\frac{{I_1\,\omega_1}}{{I_3\,\omega_3}}",
+            r"\beta [deg] = \arctan\frac{{I_1\,\omega_1}}{{I_3\,\omega_3}}",
             lambda v: math.atan2(v.I1 * v.wobble, v.I3 * v.spin),
-            "deg",
-            r"\beta",
         ),
-        Plain(
+        plain(
             "The space cone's half-angle is the angle between ω and L",
-            r"|\beta - \alpha|",
+            r"\gamma [deg] = |\beta - \alpha|",
             _cones,
-            "deg",
-            r"\gamma",
         ),
     ),
     mistakes=(
@@ -189,7 +156,7 @@ FREE_CONES = Template(
             lambda v: math.atan2(v.I1 * v.wobble, v.I3 * v.spin),
         ),
     ),
-    extra=_cyl_extra,
+    difficulty=3,
     answer_range=(0.0, 90.0),
 )
 
@@ -224,52 +191,40 @@ def _flip_period(v: Any) -> float:
 
 DZHANIBEKOV = Template(
     name="dzhanibekov-flip",
-    topic="free tops",
-    difficulty=3,
     title="The Dzhanibekov flip of a T-handle",
-    params=(
-        Param("I1", "g*cm**2", 40, 50, 1),
-        Param("I2", "g*cm**2", 60, 70, 1),
-        Param("I3", "g*cm**2", 80, 100, 1),
-        Param("spin", "rpm", 120, 600, 30),
-        Param("wobble", "rpm", 1, 5, 0.5),
-    ),
-    text="A T-handle floats in a space station. Its principal moments are I₁ = {I1}, I₂ = {I2}, "
-    "I₃ = {I3}. It is set spinning at ω₂ = {spin} about the intermediate axis 2, with small "
-    "disturbances ω₁ = ω₃ = {wobble}.",
-    question="After how long is ω back to its starting value (one full period of ω(t): two "
-    "flips), in s?",
-    unit="s",
+    text=prose("""A T-handle floats in a space station. Its principal moments are I₁ = {I1}, I₂ =
+        {I2}, I₃ = {I3}. It is set spinning at ω₂ = {spin} about the intermediate axis 2, with
+        small disturbances ω₁ = ω₃ = {wobble}."""),
+    params=draws("g*cm**2", I1=(40, 50, 1), I2=(60, 70, 1), I3=(80, 100, 1))
+    + draws("rpm", spin=(120, 600, 30), wobble=(1, 5, 0.5)),
+    question=prose("""After how long is ω back to its starting value (one full period of ω(t): two
+        flips), in s?"""),
     answer=_flip_period,
     check=_flip_period_by_hand,
     agree=1e-9,
     agree_why="the core's Carlson-integral period against K(k) by Gauss's AGM",
     steps=(
-        Plain(
+        plain(
             "The energy and the angular momentum: 2T = Σ I ω², L² = Σ I² ω²",
-            r"2T = I_1\omega_1^2 + I_2\omega_2^2 + I_3\omega_3^2",
+            r"[J] = 2T = I_1\omega_1^2 + I_2\omega_2^2 + I_3\omega_3^2",
             lambda v: v.I1 * v.wobble**2 + v.I2 * v.spin**2 + v.I3 * v.wobble**2,
-            "J",
         ),
-        Plain(
+        plain(
             "The period of ω(t) is 4K(k)/λ with Landau's λ and k (Mechanics §37)",
-            r"\frac{{4K(k)}}{{\lambda}}",
+            r"T [s] = \frac{{4K(k)}}{{\lambda}}",
             _flip_period,
-            "s",
-            "T",
         ),
     ),
     mistakes=(
-        Mistake(
-            "one flip",
-            "gave the time between two flips (half the period)",
-            3,
-            lambda v: _flip_period(v) / 2,
+        scaled(
+            "one flip", "gave the time between two flips (half the period)", 3, _flip_period, 0.5
         ),
         Mistake(
             "rpm as rad/s", "used rpm as rad/s", 1, lambda v: _flip_period(v) * 2 * math.pi / 60
         ),
     ),
+    topic="free tops",
+    difficulty=3,
     answer_range=(0.05, 1e3),
 )
 
@@ -282,45 +237,20 @@ def _omega1(v: Any) -> float:
     return float(w[0])
 
 
+_OMEGA_1 = "euler_angles 2.99[0](phi, theta, psi, phi_dot, theta_dot, psi_dot)"
+
 EULER_RATES = Template(
     name="euler-rates",
-    topic="euler angles",
-    difficulty=2,
     title="ω from the rates of the Euler angles",
-    params=(
-        Param("phi", "deg", 0, 350, 10),
-        Param("theta", "deg", 10, 170, 5),
-        Param("psi", "deg", 5, 355, 5),
-        Param("phi_dot", "deg/s", -90, 90, 5),
-        Param("theta_dot", "deg/s", -90, 90, 5),
-        Param("psi_dot", "deg/s", -360, 360, 10),
-    ),
-    text="A body's attitude is given by the unit's z-x-z Euler angles φ = {phi}, θ = {theta}, "
-    "ψ = {psi}, changing at φ̇ = {phi_dot}, θ̇ = {theta_dot}, ψ̇ = {psi_dot}.",
+    text=prose("""A body's attitude is given by the unit's z-x-z Euler angles φ = {phi}, θ =
+        {theta}, ψ = {psi}, changing at φ̇ = {phi_dot}, θ̇ = {theta_dot}, ψ̇ = {psi_dot}."""),
+    params=draws("deg", phi=(0, 350, 10), theta=(10, 170, 5), psi=(5, 355, 5))
+    + draws("deg/s", phi_dot=(-90, 90, 5), theta_dot=(-90, 90, 5), psi_dot=(-360, 360, 10)),
     question="What is the component ω₁ of its angular velocity along body axis 1, in rad/s?",
-    unit="rad/s",
     answer=_omega1,
-    check=lambda v: Derived(
-        "",
-        "euler_angles",
-        "2.99",
-        ("phi", "theta", "psi", "phi_dot", "theta_dot", "psi_dot"),
-        "",
-        component=0,
-    ).evaluate(v),
     agree=1e-12,
     agree_why="the core's 2.99 against the derivation's 2.99 (same closed form)",
-    steps=(
-        Derived(
-            "ω₁ = φ̇ sin θ sin ψ + θ̇ cos ψ",
-            "euler_angles",
-            "2.99",
-            ("phi", "theta", "psi", "phi_dot", "theta_dot", "psi_dot"),
-            r"\omega_1",
-            "rad/s",
-            component=0,
-        ),
-    ),
+    steps=(derived("ω₁ = φ̇ sin θ sin ψ + θ̇ cos ψ", r"\omega_1 [rad/s] = " + _OMEGA_1),),
     mistakes=(
         Mistake(
             "degrees for radians",
@@ -337,6 +267,8 @@ EULER_RATES = Template(
             ),
         ),
     ),
+    topic="euler angles",
+    difficulty=2,
     answer_range=(-10.0, 10.0),
 )
 
@@ -349,19 +281,29 @@ def _top_extra(v: Any) -> dict[str, float]:
 
 
 _TOP = (
-    Param("I1", "g*cm**2", 2000, 6000, 100),
-    Param("I3", "g*cm**2", 1000, 3000, 100),
-    Param("mass", "g", 50, 120, 5),
-    Param("arm", "cm", 1, 4, 0.5),
-    Param("theta0", "deg", 10, 70, 5),
-    Param("spin", "rpm", 1500, 4000, 100),
+    draws("g*cm**2", I1=(2000, 6000, 100), I3=(1000, 3000, 100))
+    + draws("g", mass=(50, 120, 5))
+    + draws("cm", arm=(1, 4, 0.5))
+    + draws("deg", theta0=(10, 70, 5))
+    + draws("rpm", spin=(1500, 4000, 100))
 )
 _TOP_TEXT = (
     "A top with I₁ = {I1} about a horizontal axis through its pivot and I₃ = {I3} about its "
     "symmetry axis has mass {mass}; its centre of mass is {arm} from the pivot (g = 9.807 m/s²). "
-    "It spins at ω₃ = {spin} with its axis at θ₀ = {theta0} from the vertical."
 )
-_ARGS5 = ("I1", "I3", "mgl", "theta0", "spin")
+_SPINNING = _TOP_TEXT + "It spins at ω₃ = {spin} with its axis at θ₀ = {theta0} from the vertical."
+#: A heavy top's template: its parameters, statement, mgl and p_ψ.
+_heavy_top = partial(
+    Template,
+    topic="heavy top",
+    params=_TOP,
+    text=_SPINNING,
+    extra=_top_extra,
+)
+_MGL = plain(
+    "The torque's strength mgl", r"mgl [N*m] = {mass}\cdot 9.807 \cdot {arm}", lambda v: v.mgl
+)
+_P_PSI = r"p_\psi [kg*m**2/s] = {I3}\cdot{spin}"
 
 
 def _rates(v: Any) -> tuple[float, float]:
@@ -369,37 +311,37 @@ def _rates(v: Any) -> tuple[float, float]:
     return float(slow), float(fast)
 
 
-SLOW = Template(
-    name="top-slow-precession",
-    topic="heavy top",
-    difficulty=2,
-    title="The heavy top's slow steady precession",
-    params=_TOP,
-    text=_TOP_TEXT,
-    question="At what rate φ̇ does it precess steadily on the slow branch, in rpm?",
-    unit="rpm",
-    answer=lambda v: _rates(v)[0],
-    check=lambda v: Derived("", "heavy_top", "2.117 slow", _ARGS5, "").evaluate(v),
-    agree=1e-9,
-    agree_why="the core's roots of 2.116 against the derivation's 2.117 (a sympy root)",
-    steps=(
-        Plain(
-            "The torque's strength mgl",
-            r"{mass}\cdot 9.807 \cdot {arm}",
-            lambda v: v.mgl,
-            "N*m",
-            "mgl",
+def _steady(
+    branch: int, first: Plain, mistakes: tuple[Mistake, ...], answer_range: tuple[float, float]
+) -> Template:
+    """The heavy top's steady precession on its slow (0) or fast (1) branch: the core's roots of
+    2.116 against the derivation's 2.117."""
+    name = ("slow", "fast")[branch]
+    root = f"heavy_top 2.117 {name}(I1, I3, mgl, theta0, spin)"
+    return _heavy_top(
+        name=f"top-{name}-precession",
+        title=f"The heavy top's {name} steady precession",
+        question=f"At what rate φ̇ does it precess steadily on the {name} branch, in rpm?",
+        answer=lambda v: _rates(v)[branch],
+        agree=1e-9,
+        agree_why="the core's roots of 2.116 against the derivation's 2.117 (a sympy root)",
+        steps=(
+            first,
+            derived(
+                f"The {name} root of the steady-precession quadratic",
+                rf"\dot\phi_\mathrm{{{name}}} [rpm] = {root}",
+            ),
         ),
-        Derived(
-            "The slow root of the steady-precession quadratic",
-            "heavy_top",
-            "2.117 slow",
-            _ARGS5,
-            r"\dot\phi_\mathrm{slow}",
-            "rpm",
-        ),
-    ),
-    mistakes=(
+        mistakes=mistakes,
+        difficulty=2,
+        answer_range=answer_range,
+    )
+
+
+SLOW = _steady(
+    0,
+    _MGL,
+    (
         Mistake(
             "the gyroscope formula",
             "used the fast-spin limit mgl/(I₃ω₃) (2.121)",
@@ -410,35 +352,13 @@ SLOW = Template(
             "rad/s, not rpm", "gave the rate in rad/s", 3, lambda v: _rates(v)[0] * 2 * math.pi / 60
         ),
     ),
-    extra=_top_extra,
-    answer_range=(0.1, 500.0),
+    (0.1, 500.0),
 )
 
-FAST = Template(
-    name="top-fast-precession",
-    topic="heavy top",
-    difficulty=2,
-    title="The heavy top's fast steady precession",
-    params=_TOP,
-    text=_TOP_TEXT,
-    question="At what rate φ̇ does it precess steadily on the fast branch, in rpm?",
-    unit="rpm",
-    answer=lambda v: _rates(v)[1],
-    check=lambda v: Derived("", "heavy_top", "2.117 fast", _ARGS5, "").evaluate(v),
-    agree=1e-9,
-    agree_why="the core's roots of 2.116 against the derivation's 2.117 (a sympy root)",
-    steps=(
-        Plain("p_ψ = I₃ω₃", r"{I3}\cdot{spin}", lambda v: v.p_psi, "kg*m**2/s", r"p_\psi"),
-        Derived(
-            "The fast root of the steady-precession quadratic",
-            "heavy_top",
-            "2.117 fast",
-            _ARGS5,
-            r"\dot\phi_\mathrm{fast}",
-            "rpm",
-        ),
-    ),
-    mistakes=(
+FAST = _steady(
+    1,
+    plain("p_ψ = I₃ω₃", _P_PSI, lambda v: v.p_psi),
+    (
         Mistake(
             "the unit's 2.120",
             "used the unit's misprinted 2.120, p_ψ/(2I₁cos θ₀): the factor 2 is wrong",
@@ -452,8 +372,7 @@ FAST = Template(
             lambda v: v.p_psi / (v.I1 * math.cos(v.theta0)),
         ),
     ),
-    extra=_top_extra,
-    answer_range=(100.0, 1e5),
+    (100.0, 1e5),
 )
 
 
@@ -461,38 +380,21 @@ def _min_spin(v: Any) -> float:
     return float(HeavyTop.min_spin(v.I1, v.I3, v.mgl, v.theta0))
 
 
-MIN_SPIN = Template(
+_LEAST = "heavy_top 2.119(I1, I3, mgl, theta0)"
+
+MIN_SPIN = _heavy_top(
     name="top-min-spin",
-    topic="heavy top",
-    difficulty=2,
     title="The least spin for steady precession",
+    text=_TOP_TEXT + "Its axis is held at θ₀ = {theta0} from the vertical.",
     params=_TOP[:5],
-    text="A top with I₁ = {I1} about a horizontal axis through its pivot and I₃ = {I3} about its "
-    "symmetry axis has mass {mass}; its centre of mass is {arm} from the pivot (g = 9.807 m/s²). "
-    "Its axis is held at θ₀ = {theta0} from the vertical.",
     question="What is the least spin ω₃ for which it can precess steadily at θ₀, in rpm?",
-    unit="rpm",
     answer=_min_spin,
-    check=lambda v: Derived("", "heavy_top", "2.119", ("I1", "I3", "mgl", "theta0"), "").evaluate(
-        v
-    ),
     agree=1e-12,
     agree_why="the core's 2.119 against the derivation's 2.119",
     steps=(
-        Plain(
-            "The torque's strength mgl",
-            r"{mass}\cdot 9.807 \cdot {arm}",
-            lambda v: v.mgl,
-            "N*m",
-            "mgl",
-        ),
-        Derived(
-            "The discriminant of 2.116 must not be negative",
-            "heavy_top",
-            "2.119",
-            ("I1", "I3", "mgl", "theta0"),
-            r"\omega_{3,\min}",
-            "rpm",
+        _MGL,
+        derived(
+            "The discriminant of 2.116 must not be negative", r"\omega_{3,\min} [rpm] = " + _LEAST
         ),
     ),
     mistakes=(
@@ -502,12 +404,12 @@ MIN_SPIN = Template(
             3,
             lambda v: _min_spin(v) / math.sqrt(math.cos(v.theta0)),
         ),
-        Mistake("no factor 4", "left out the 4 under the root", 3, lambda v: _min_spin(v) / 2),
+        scaled("no factor 4", "left out the 4 under the root", 3, _min_spin, 0.5),
         Mistake(
             "rad/s, not rpm", "gave the spin in rad/s", 3, lambda v: _min_spin(v) * 2 * math.pi / 60
         ),
     ),
-    extra=_top_extra,
+    difficulty=2,
     answer_range=(10.0, 5000.0),
 )
 
@@ -529,37 +431,29 @@ def _lowest_by_hand(v: Any) -> float:
     return math.acos(min(u2, 1.0))
 
 
-NUTATION = Template(
+NUTATION = _heavy_top(
     name="top-nutation",
-    topic="heavy top",
-    difficulty=3,
     title="How far a released top dips",
-    params=_TOP,
-    text=_TOP_TEXT + " It is released with its axis at rest (θ̇ = φ̇ = 0).",
-    question="By how much does its axis dip as it nutates: the largest angle θ₂ from the "
-    "vertical less θ₀, in degrees?",
-    unit="deg",
+    text=_SPINNING + " It is released with its axis at rest (θ̇ = φ̇ = 0).",
+    question=prose("""By how much does its axis dip as it nutates: the largest angle θ₂ from the
+        vertical less θ₀, in degrees?"""),
     answer=_dip,
     check=lambda v: _lowest_by_hand(v) - v.theta0,
     agree=1e-7,
     agree_why="the core's turning points against numpy's roots of the quadratic factor "
     "(θ₂ − θ₀ is small: its conditioning amplifies the roots' round-off)",
     steps=(
-        Plain(
+        plain(
             "The conserved p_ψ = I₃ω₃; at release p_φ = p_ψ cos θ₀ and E′ = mgl cos θ₀",
-            r"{I3}\cdot{spin}",
+            _P_PSI,
             lambda v: v.p_psi,
-            "kg*m**2/s",
-            r"p_\psi",
         ),
-        Plain(
+        plain(
             "θ̇ = 0 again where (2mgl/I₁)(1 − u²) = (p_ψ/I₁)²(cos θ₀ − u), u = cos θ",
-            r"\arccos u_2",
+            r"\theta_2 [deg] = \arccos u_2",
             _lowest,
-            "deg",
-            r"\theta_2",
         ),
-        Plain("The dip", r"\theta_2 - \theta_0", _dip, "deg", r"\Delta\theta"),
+        plain("The dip", r"\Delta\theta [deg] = \theta_2 - \theta_0", _dip),
     ),
     mistakes=(
         Mistake(
@@ -573,7 +467,7 @@ NUTATION = Template(
             "radians, not degrees", "gave the dip in radians", 4, lambda v: _dip(v) * math.pi / 180
         ),
     ),
-    extra=_top_extra,
+    difficulty=3,
     answer_range=(0.0, 90.0),
 )
 
