@@ -106,8 +106,24 @@ def test_the_derived_steps_substitute_the_variants_numbers() -> None:
     v = x.template("dropped-ball").fixed(height=100, latitude=45)
     derived = [s for s in v.steps if "poinsot.derive" in s.text]
     assert [s.text.split("eq. ")[1][:4] for s in derived] == ["2.41", "2.42"]
-    assert r"\frac{100}{9.807}" in derived[0].latex and r"\cos" in derived[1].latex
+    # T = √(2h/g) with the numbers in the formula's shape (not sympy's √2·√(h/g) of the numbers)
+    assert r"\sqrt{\frac{2 \cdot 100}{9.807}}" in derived[0].latex and r"\cos" in derived[1].latex
     assert math.isclose(derived[0].value, math.sqrt(2 * 100 / 9.80665), rel_tol=1e-12)
+
+
+def test_the_substituted_numbers_stand_in_the_formulas_order() -> None:
+    # dT/dt = I₁ω₁ω̇₁ + ...: with I₁ = 0.01, ω₁ = 2, ω̇₁ = 13 the line reads 0.01 · 2 · 13 (sympy's
+    # own order of the numbers put 13 before 2: it sorts the factors by their printed digits)
+    v = x.template("euler-power").fixed(
+        I1=100, I2=300, I3=200, w1=2, w2=3, w3=4, N1=10, N2=20, N3=30
+    )
+    assert v.values.wdot1 == pytest.approx(13.0)
+    power = v.steps[-1]
+    assert power.latex.split(r" \\ ")[1].startswith(
+        r"&= 0.01 \cdot 2 \cdot 13 + 0.03 \cdot 3 \cdot "
+    )
+    # a sum keeps its terms' order too: N₃ − ω₁ω₂(I₂ − I₁), N₃ first
+    assert v.steps[3].latex.split(r" \\ ")[1].startswith(r"&= \frac{0.03 - 2 \cdot 3 \cdot ")
 
 
 # ---- the same seed gives the same set --------------------------------------------------------------

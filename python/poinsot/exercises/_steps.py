@@ -92,8 +92,9 @@ class Derived:
         expr, symbols = self.formula()
         value = self.evaluate(v) / si_factor(self.unit)
         numbers = {s: number_symbol(getattr(v, a)) for s, a in zip(symbols, self.args)}
+        substituted = sp.latex(_substituted(expr, numbers), order="none", mul_symbol="dot")
         tex = (  # the formula, the numbers substituted, the value: one line each
-            f"{self.symbol} &= {sp.latex(expr)} \\\\ &= {sp.latex(expr.xreplace(numbers))}"
+            f"{self.symbol} &= {sp.latex(expr)} \\\\ &= {substituted}"
             f" \\\\ &= {number_latex(value)}\\,{UNITS[self.unit][1]}"
         )
         where = (
@@ -103,6 +104,26 @@ class Derived:
         )
         text = f"{self.text} ({where}, poinsot.derive '{self.topic}')"
         return SolutionStep(text, tex, value, self.unit)
+
+
+def _substituted(expr: Any, numbers: dict[Any, Any]) -> Any:
+    """``expr`` with ``numbers`` put for its symbols, unevaluated: each product's factors and
+    each sum's terms in the order the formula is printed in (the numbers beside the symbols they
+    stand for: ``I₁ω₁ω̇₁`` as ``0.026 · 10 · 0.5``, not in the order of the numbers' digits)."""
+    if expr in numbers:
+        return numbers[expr]
+    if not expr.args:
+        return expr
+    if expr.is_Mul:
+        coefficient, _ = expr.as_coeff_mul()
+        factors = [f for f in expr.as_ordered_factors() if not f.is_Number]
+        args = ([coefficient] if coefficient != 1 else []) + factors
+    elif expr.is_Add:
+        args = expr.as_ordered_terms()
+    else:
+        args = list(expr.args)
+    with sp.evaluate(False):
+        return expr.func(*(_substituted(a, numbers) for a in args))
 
 
 @cache
