@@ -450,3 +450,15 @@ impl<'py, const K: usize> IntoPyObject<'py> for Rows<K> {
         PyArray1::from_vec(py, self.0.into_flattened()).reshape([n, K])
     }
 }
+
+/// A new dict of a core value's fields, each under its own name, then of named values:
+/// `fields_dict!(py, s; slow, fast; min = m)` is `{"slow": s.slow, "fast": s.fast, "min": m}`.
+macro_rules! fields_dict {
+    ($py:expr, $value:expr; $($field:ident),* $(; $($key:ident = $extra:expr),* $(,)?)?) => {{
+        let d = ::pyo3::types::PyDict::new($py);
+        $(::pyo3::types::PyDictMethods::set_item(&d, stringify!($field), $value.$field)?;)*
+        $($(::pyo3::types::PyDictMethods::set_item(&d, stringify!($key), $extra)?;)*)?
+        d
+    }};
+}
+pub(crate) use fields_dict;

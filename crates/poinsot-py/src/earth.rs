@@ -246,8 +246,17 @@ fn per_height<'py>(
     Ok(Values(map_each(py, &pairs, move |&(h, l)| f(h, l))?))
 }
 
-#[export]
-impl PyFallModel {
+core_export! {
+    impl PyFallModel;
+    getters {}
+    fields {
+        rotation -> bool;
+        centrifugal -> bool;
+        rtol in options -> f64;
+        atol in options -> f64;
+        max_steps in options -> usize;
+    }
+
     #[new]
     fn new(
         gravity: &str,
@@ -291,26 +300,6 @@ impl PyFallModel {
     #[getter]
     fn gravity(&self) -> &'static str {
         gravity_name(self.inner.gravity)
-    }
-    #[getter]
-    fn rotation(&self) -> bool {
-        self.inner.rotation
-    }
-    #[getter]
-    fn centrifugal(&self) -> bool {
-        self.inner.centrifugal
-    }
-    #[getter]
-    fn rtol(&self) -> f64 {
-        self.inner.options.rtol
-    }
-    #[getter]
-    fn atol(&self) -> f64 {
-        self.inner.options.atol
-    }
-    #[getter]
-    fn max_steps(&self) -> usize {
-        self.inner.options.max_steps
     }
 }
 

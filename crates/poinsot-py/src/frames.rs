@@ -339,21 +339,20 @@ struct SpringParticleCore {
     inner: SpringParticle,
 }
 
-#[export]
-impl SpringParticleCore {
+core_export! {
+    impl SpringParticleCore;
+    getters {
+        /// m (kg).
+        mass -> f64;
+        /// k (N/m).
+        stiffness -> f64;
+    }
+
     #[new]
     fn new(mass: f64, stiffness: f64) -> PyResult<Self> {
         Ok(Self {
             inner: SpringParticle::new(mass, stiffness).py()?,
         })
-    }
-    #[getter]
-    fn mass(&self) -> f64 {
-        self.inner.mass()
-    }
-    #[getter]
-    fn stiffness(&self) -> f64 {
-        self.inner.stiffness()
     }
     /// (N, 3) forces −k r (N) at (N, 3) positions (m).
     fn force<'py>(

@@ -55,8 +55,39 @@ type CompassArrays<'py> = (
     Bound<'py, PyArray1<f64>>,
 );
 
-#[export]
-impl PyGyrocompass {
+/// The constructor's arguments of a compass, in order.
+fn args(c: &Gyrocompass) -> Args {
+    (
+        c.latitude,
+        c.angular_momentum,
+        c.pendulosity,
+        c.damping,
+        c.inertia,
+        c.earth.rotation_rate,
+        c.earth.radius,
+        c.earth.g,
+    )
+}
+
+core_export! {
+    impl PyGyrocompass;
+    getters {
+        /// ω_n (rad/s).
+        natural_frequency -> f64;
+        /// D (N·m/rad).
+        damping_coefficient -> f64;
+        /// k (N·m·s).
+        viscous_coefficient -> f64;
+        /// Ω R cos λ (m/s).
+        ground_speed -> f64;
+    }
+    fallible {
+        /// 2π √(H/(P Ω cos λ)) (s).
+        period -> f64;
+        /// (latitude error, tilt) of the settled compass (rad).
+        settle -> (f64, f64);
+    }
+
     /// latitude (rad), H (kg·m²/s), P = m g l (N·m), damping ratio ζ, inertia (3,) (kg·m²),
     /// and the Earth's Ω (rad/s), R (m), g (m/s²); errors name them.
     #[new]
@@ -114,72 +145,13 @@ impl PyGyrocompass {
     }
 
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> (Bound<'py, PyType>, Args) {
-        let c = slf.get().inner;
-        (
-            slf.get_type(),
-            (
-                c.latitude,
-                c.angular_momentum,
-                c.pendulosity,
-                c.damping,
-                c.inertia,
-                c.earth.rotation_rate,
-                c.earth.radius,
-                c.earth.g,
-            ),
-        )
+        (slf.get_type(), args(&slf.get().inner))
     }
 
     /// The constructor's arguments, in order.
     #[getter]
     fn args(&self) -> Args {
-        let c = self.inner;
-        (
-            c.latitude,
-            c.angular_momentum,
-            c.pendulosity,
-            c.damping,
-            c.inertia,
-            c.earth.rotation_rate,
-            c.earth.radius,
-            c.earth.g,
-        )
-    }
-
-    /// 2π √(H/(P Ω cos λ)) (s).
-    #[getter]
-    fn period(&self) -> PyResult<f64> {
-        self.inner.period().py()
-    }
-
-    /// ω_n (rad/s).
-    #[getter]
-    fn natural_frequency(&self) -> f64 {
-        self.inner.natural_frequency()
-    }
-
-    /// D (N·m/rad).
-    #[getter]
-    fn damping_coefficient(&self) -> f64 {
-        self.inner.damping_coefficient()
-    }
-
-    /// k (N·m·s).
-    #[getter]
-    fn viscous_coefficient(&self) -> f64 {
-        self.inner.viscous_coefficient()
-    }
-
-    /// Ω R cos λ (m/s).
-    #[getter]
-    fn ground_speed(&self) -> f64 {
-        self.inner.ground_speed()
-    }
-
-    /// (latitude error, tilt) of the settled compass (rad).
-    #[getter]
-    fn settle(&self) -> PyResult<(f64, f64)> {
-        self.inner.settle().py()
+        args(&self.inner)
     }
 
     /// δ (rad) for speed (m/s) and course (rad).

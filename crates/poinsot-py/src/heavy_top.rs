@@ -9,7 +9,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::control::{map_each, run};
-use crate::convert::{self, Rows, Values};
+use crate::convert::{self, fields_dict, Rows, Values};
 use crate::errors::{invalid, IntoPy};
 
 /// A heavy symmetric top with its exact motion (private; use `poinsot.HeavyTop`).
@@ -233,14 +233,7 @@ fn heavy_top_steady_precession<'py>(
     omega3: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
     let s = analytic::steady_precession(i1, i3, mgl, theta0, omega3).py()?;
-    let d = PyDict::new(py);
-    d.set_item("slow", s.slow)?;
-    d.set_item("fast", s.fast)?;
-    d.set_item("slow_approx", s.slow_approx)?;
-    d.set_item("fast_approx", s.fast_approx)?;
-    d.set_item("fast_approx_as_printed", s.fast_approx_as_printed)?;
-    d.set_item("min_spin", s.min_spin)?;
-    Ok(d)
+    Ok(fields_dict!(py, s; slow, fast, slow_approx, fast_approx, fast_approx_as_printed, min_spin))
 }
 
 /// The minimum spin 2.119 (rad/s) at θ₀.
@@ -291,10 +284,7 @@ of_state! {
 /// Registers the heavy-top class and functions.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyHeavyTop>()?;
-    m.add_function(wrap_pyfunction!(heavy_top_steady_precession, m)?)?;
-    m.add_function(wrap_pyfunction!(heavy_top_min_spin, m)?)?;
-    m.add_function(wrap_pyfunction!(heavy_top_sleeping_threshold, m)?)?;
-    m.add_function(wrap_pyfunction!(heavy_top_lagrangian, m)?)?;
-    m.add_function(wrap_pyfunction!(heavy_top_constants_of_state, m)?)?;
+    add_functions!(m; heavy_top_steady_precession, heavy_top_min_spin,
+        heavy_top_sleeping_threshold, heavy_top_lagrangian, heavy_top_constants_of_state);
     Ok(())
 }

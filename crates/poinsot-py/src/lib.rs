@@ -17,13 +17,17 @@ macro_rules! add_functions {
 /// returning what it returns: `getters { name -> Type; … }` for a plain value (`name.then() ->
 /// Type` calls `then` on it: `.as_str()`, `.into()`), `fallible {
 /// name -> Type; name.map(Wrapper) -> Wrapper; … }` for a core `Result` (its error mapped by
-/// `IntoPy`, its value wrapped when `.map` says so). pyo3 takes one `#[pymethods]` block per
-/// class, so the getters go into that block.
+/// `IntoPy`, its value wrapped when `.map` says so), and `fields { name -> Type; name in
+/// path -> Type; … }` for a field of the core value (`self.inner.name`, or
+/// `self.inner.path.name`), copied. Each list may be left out (`fallible` and `fields` need the
+/// lists before them, empty or not). pyo3 takes one `#[pymethods]` block per class, so the
+/// getters go into that block.
 macro_rules! core_export {
     (
         impl $class:ident;
         getters { $($(#[$doc:meta])* $name:ident $(.$then:ident())* -> $out:ty;)* }
         fallible { $($(#[$fdoc:meta])* $fname:ident $(.map($wrap:path))? -> $fout:ty;)* }
+        fields { $($(#[$vdoc:meta])* $vname:ident $(in $($path:ident).+)? -> $vout:ty;)* }
         $($methods:tt)*
     ) => {
         #[::poinsot_py_macros::export]
@@ -38,30 +42,56 @@ macro_rules! core_export {
             fn $fname(&self) -> ::pyo3::PyResult<$fout> {
                 crate::errors::IntoPy::py(self.inner.$fname()$(.map($wrap))?)
             })*
+            $($(#[$vdoc])*
+            #[getter]
+            fn $vname(&self) -> $vout {
+                self.inner$($(.$path)+)?.$vname
+            })*
             $($methods)*
         }
     };
-    (impl $class:ident; getters { $($getters:tt)* } $($methods:tt)*) => {
-        core_export! { impl $class; getters { $($getters)* } fallible {} $($methods)* }
+    (impl $class:ident; getters { $($getters:tt)* } fallible { $($fallible:tt)* } $($methods:tt)*) => {
+        core_export! { impl $class; getters { $($getters)* } fallible { $($fallible)* } fields {} $($methods)* }
+    };
+    (impl $class:ident; getters { $($getters:tt)* } $($rest:tt)*) => {
+        core_export! { impl $class; getters { $($getters)* } fallible {} $($rest)* }
     };
 }
 
-mod analytic;
 mod control;
 mod convert;
 mod defaults;
-mod dynamics;
-mod earth;
 mod errors;
-mod frames;
-mod gyrocompass;
-mod heavy_top;
-mod inertia;
-mod rigid_earth;
-mod rotation;
-mod special;
-mod sweep;
-mod wobble;
+
+/// The files that bind the core's modules, named once: `bindings!(rotation, inertia, …)` is
+/// `mod rotation; mod inertia; …` and `register_bindings(m)`, which calls each file's
+/// `register(m)` (its classes and functions), in that order.
+macro_rules! bindings {
+    ($($file:ident),+ $(,)?) => {
+        $(mod $file;)+
+
+        /// Registers every binding file's classes and functions on the module.
+        fn register_bindings(m: &Bound<'_, PyModule>) -> PyResult<()> {
+            $($file::register(m)?;)+
+            Ok(())
+        }
+    };
+}
+
+bindings!(
+    rotation,
+    inertia,
+    frames,
+    earth,
+    rigid_earth,
+    special,
+    analytic,
+    dynamics,
+    gyrocompass,
+    heavy_top,
+    sweep,
+    wobble,
+);
 
 use poinsot_py_macros::export;
 use pyo3::prelude::*;
@@ -129,17 +159,5 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     defaults::register(m)?;
     errors::register(m)?;
     load_numpy_api(m.py())?;
-    rotation::register(m)?;
-    inertia::register(m)?;
-    frames::register(m)?;
-    earth::register(m)?;
-    rigid_earth::register(m)?;
-    special::register(m)?;
-    analytic::register(m)?;
-    dynamics::register(m)?;
-    gyrocompass::register(m)?;
-    heavy_top::register(m)?;
-    sweep::register(m)?;
-    wobble::register(m)?;
-    Ok(())
+    register_bindings(m)
 }

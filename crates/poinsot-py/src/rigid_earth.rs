@@ -39,6 +39,14 @@ core_export! {
         /// The same (Δψ₀, Δε₀) in closed form from the Moon's precession part (rad).
         nutation_amplitudes_by_precession -> (f64, f64);
     }
+    fields {
+        /// H = (C − A)/C.
+        dynamical_flattening -> f64;
+        /// ω (rad/s).
+        rotation_rate -> f64;
+        /// ε (rad).
+        obliquity -> f64;
+    }
 
     /// The rigid Earth of dynamical flattening H ∈ (0, 1), rate ω > 0 (rad/s) and obliquity
     /// ε ∈ [0, π/2) (rad); errors name them.
@@ -55,24 +63,6 @@ core_export! {
             slf.get_type(),
             (e.dynamical_flattening, e.rotation_rate, e.obliquity),
         )
-    }
-
-    /// H = (C − A)/C.
-    #[getter]
-    fn dynamical_flattening(&self) -> f64 {
-        self.inner.dynamical_flattening
-    }
-
-    /// ω (rad/s).
-    #[getter]
-    fn rotation_rate(&self) -> f64 {
-        self.inner.rotation_rate
-    }
-
-    /// ε (rad).
-    #[getter]
-    fn obliquity(&self) -> f64 {
-        self.inner.obliquity
     }
 
     /// The Chandler period T_E ks/(ks − k2) (s) for Love numbers 0 < k2 < ks.
@@ -113,6 +103,32 @@ core_export! {
             PyArray1::from_vec(py, r.obliquity),
             r.moon_node,
             r.node_rate,
+        ))
+    }
+
+    /// The averaged pole at the times `t` (s) (`RigidEarth::averaged_pole`): the precession
+    /// angle ψ (rad, westward), the obliquity ε (rad) and the Moon's node Ω (rad), each of
+    /// `t`'s length; the principal nutation multiplied by `nutation_scale`.
+    #[allow(clippy::type_complexity)]
+    fn averaged_pole<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyReadonlyArray1<'_, f64>,
+        moon_node: f64,
+        nutation_scale: f64,
+    ) -> PyResult<(
+        Bound<'py, PyArray1<f64>>,
+        Bound<'py, PyArray1<f64>>,
+        Bound<'py, PyArray1<f64>>,
+    )> {
+        let p = self
+            .inner
+            .averaged_pole(&vec_in(&t), moon_node, nutation_scale)
+            .py()?;
+        Ok((
+            PyArray1::from_vec(py, p.psi),
+            PyArray1::from_vec(py, p.obliquity),
+            PyArray1::from_vec(py, p.moon_node),
         ))
     }
 }

@@ -9,19 +9,12 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::control::run;
-use crate::convert::vec_in;
+use crate::convert::{fields_dict, vec_in};
 
 /// One circle as a dict of the core's fields (SI: s, rad).
 fn term<'py>(py: Python<'py>, w: &WobbleTerm) -> PyResult<Bound<'py, PyDict>> {
-    let d = PyDict::new(py);
-    d.set_item("period", w.period)?;
-    d.set_item("period_sigma", w.period_sigma)?;
-    d.set_item("amplitude", w.amplitude)?;
-    d.set_item("amplitude_sigma", w.amplitude_sigma)?;
-    d.set_item("phase", w.phase)?;
-    d.set_item("phase_sigma", w.phase_sigma)?;
-    d.set_item("prograde", w.prograde)?;
-    Ok(d)
+    Ok(fields_dict!(py, w; period, period_sigma, amplitude, amplitude_sigma, phase,
+        phase_sigma, prograde))
 }
 
 /// The core's `fit_wobble` of the pole (x, y) (rad) at times `t` (s), the GIL released and
@@ -48,21 +41,17 @@ fn fit_wobble<'py>(
     let f = run(py, None, || {
         ea::fit_wobble(&t, &x, &y, chandler, annual_period)
     })?;
-    let d = PyDict::new(py);
-    d.set_item("chandler", term(py, &f.chandler)?)?;
-    d.set_item("annual_prograde", term(py, &f.annual_prograde)?)?;
-    d.set_item("annual_retrograde", term(py, &f.annual_retrograde)?)?;
-    d.set_item("offset", (f.offset[0], f.offset[1]))?;
-    d.set_item("offset_sigma", (f.offset_sigma[0], f.offset_sigma[1]))?;
-    d.set_item("drift", (f.drift[0], f.drift[1]))?;
-    d.set_item("drift_sigma", (f.drift_sigma[0], f.drift_sigma[1]))?;
-    d.set_item("residual_rms", f.residual_rms)?;
-    d.set_item("serial_correlation", f.serial_correlation)?;
-    d.set_item("sigma_inflation", f.sigma_inflation)?;
-    d.set_item("chandler_false_alarm", f.chandler_false_alarm)?;
-    d.set_item("chandler_significant", f.chandler_significant())?;
-    d.set_item("samples", f.samples)?;
-    Ok(d)
+    Ok(fields_dict!(py, f; residual_rms, serial_correlation, sigma_inflation,
+        chandler_false_alarm, samples;
+        chandler = term(py, &f.chandler)?,
+        annual_prograde = term(py, &f.annual_prograde)?,
+        annual_retrograde = term(py, &f.annual_retrograde)?,
+        offset = (f.offset[0], f.offset[1]),
+        offset_sigma = (f.offset_sigma[0], f.offset_sigma[1]),
+        drift = (f.drift[0], f.drift[1]),
+        drift_sigma = (f.drift_sigma[0], f.drift_sigma[1]),
+        chandler_significant = f.chandler_significant(),
+    ))
 }
 
 /// Registers `fit_wobble` and the wobble's constants on the module.

@@ -40,19 +40,16 @@ impl FreeRigidBody {
     }
 }
 
+getters!(FreeRigidBody? {
+    " λ of the Jacobi argument τ = λt + τ₀ (1/s)."
+    frequency frequency;
+    " Half the period (s): the interval between reversals of ω along the intermediate axis"
+    " (the Dzhanibekov flips near the separatrix); `Infinity` when the period is."
+    flipInterval flip_interval;
+});
+
 #[wasm_bindgen]
 impl FreeRigidBody {
-    /// λ of the Jacobi argument τ = λt + τ₀ (1/s).
-    #[wasm_bindgen(getter)]
-    pub fn frequency(&self) -> Out<f64> {
-        Ok(self.inner.frequency()?)
-    }
-    /// Half the period (s): the interval between reversals of ω along the intermediate axis
-    /// (the Dzhanibekov flips near the separatrix); `Infinity` when the period is.
-    #[wasm_bindgen(getter, js_name = flipInterval)]
-    pub fn flip_interval(&self) -> Out<f64> {
-        Ok(self.inner.flip_interval()?)
-    }
     /// The principal axis (0, 1, 2) that ω circles; `undefined` when steady or on the separatrix.
     #[wasm_bindgen(getter, js_name = poleAxis)]
     pub fn pole_axis(&self) -> Option<u32> {

@@ -162,8 +162,21 @@ pub fn mat_out(m: &Mat3) -> Vec<f64> {
 /// `#[wasm_bindgen(getter, js_name = jsName)] pub fn rust_name(&self) -> f64 {
 /// self.inner.rust_name() }`, each with its doc lines (string literals, not `///`: wasm-bindgen
 /// writes a doc comment passed through `macro_rules!` into the TypeScript declarations as
-/// `r" ..."`). The core promises these numbers finite.
+/// `r" ..."`). The core promises these numbers finite. `getters!(Type? { ... })` is the same for
+/// the core's fallible numbers: `pub fn rust_name(&self) -> Out<f64> { Ok(self.inner.rust_name()?) }`.
 macro_rules! getters {
+    ($ty:ident? { $($($doc:literal)* $js:ident $name:ident;)* }) => {
+        #[wasm_bindgen::prelude::wasm_bindgen]
+        impl $ty {
+            $(
+                $(#[doc = $doc])*
+                #[wasm_bindgen(getter, js_name = $js)]
+                pub fn $name(&self) -> crate::convert::Out<f64> {
+                    Ok(self.inner.$name()?)
+                }
+            )*
+        }
+    };
     ($ty:ident { $($($doc:literal)* $js:ident $name:ident;)* }) => {
         #[wasm_bindgen::prelude::wasm_bindgen]
         impl $ty {

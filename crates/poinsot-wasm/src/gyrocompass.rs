@@ -6,8 +6,9 @@
 //! SI units, radians; the core names every argument as the caller knows it. The Earth is the
 //! core's default (sidereal rate, mean radius, standard gravity), as Python's default `earth`.
 
-use crate::args::{count, let_numbers, numbers, Count, Number, Numbers};
-use crate::convert::{Failure, Out};
+use crate::args::{count, let_numbers, Count, Number};
+use crate::convert::{getters, Failure, Out};
+use crate::{calls, fields};
 use poinsot::dynamics::{
     self as dy, simulate_carried, BodyInertia, Carrier, Load, Method, Ship, SimulateOptions, Torque,
 };
@@ -32,16 +33,6 @@ fn step_limit(mut e: poinsot::Error) -> Failure {
         e.argument = "duration".into();
     }
     Failure::from(e)
-}
-
-fn moments(inertia: &Numbers) -> Out<[f64; 3]> {
-    let v = numbers("inertia", inertia)?;
-    v.as_slice().try_into().map_err(|_| {
-        Failure::invalid(
-            "inertia",
-            &format!("must hold 3 moments (kg·m²), got {}", v.len()),
-        )
-    })
 }
 
 fn options(samples: &Count) -> Out<SimulateOptions> {
@@ -71,53 +62,63 @@ pub struct CompassRun {
     inner: dy::CompassRun,
 }
 
+calls!(Gyrocompass::new {
+    " A compass at `latitude` λ (rad; not a pole) with rotor momentum `angular_momentum` H"
+    " (kg·m²/s, > 0), pendulosity `pendulosity` P = m g l (N·m), damping ratio `damping` ζ in"
+    " [0, 1) and the element's moments `inertia` (kg·m², 3 numbers) on the default Earth."
+    (latitude: number, angular_momentum: number, pendulosity: number, damping: number, inertia: triple)
+        = dy::Gyrocompass::new[Earth::default()];
+});
+
+calls!(fn Gyrocompass {
+    " The compass whose period is Schuler's 2π √(R/g) (84.4 min): H = P Ω cos λ R / g"
+    " (`Gyrocompass.schuler_tuned`)."
+    schulerTuned schuler_tuned(latitude: number, pendulosity: number, damping: number, inertia: triple)
+        -> Gyrocompass = dy::Gyrocompass::schuler_tuned[Earth::default()];
+});
+
+calls!(Gyrocompass {
+    " The steaming error δ = atan(V cos C / (Ω R cos λ + V sin C)) (rad; positive: reads"
+    " high) for `speed` V (m/s) and `course` C (rad, clockwise from north)."
+    speedError speed_error(speed: number, course: number) -> number;
+    " The manufacturers' small-angle form V cos C / (Ω R cos λ) (rad)."
+    speedErrorSmallAngle speed_error_small_angle(speed: number, course: number) -> number;
+});
+
+fields!(Gyrocompass {
+    " Latitude λ (rad)."
+    latitude latitude -> number(latitude);
+    " The rotor's angular momentum H (kg·m²/s)."
+    angularMomentum angular_momentum -> number(angular_momentum);
+});
+
+getters!(Gyrocompass {
+    " ω_n of the linearised equations (rad/s)."
+    naturalFrequency natural_frequency;
+    " The damping torque's coefficient D = 2 ζ ω_n H (N·m/rad)."
+    dampingCoefficient damping_coefficient;
+    " The ground's eastward speed Ω R cos λ (m/s)."
+    groundSpeed ground_speed;
+});
+
+getters!(Gyrocompass? {
+    " The undamped period of the settling oscillation, 2π √(H/(P Ω cos λ)) (s)."
+    period period;
+});
+
+fields!(CompassRun {
+    " The sample times (s)."
+    times times -> numbers(t);
+    " The spin axis's heading at each sample, clockwise from true north (rad, (−π, π])."
+    heading heading -> numbers(heading);
+    " The spin axis's tilt above the horizontal at each sample (rad)."
+    tilt tilt -> numbers(tilt);
+    " The ship's latitude at each sample (rad)."
+    latitude latitude -> numbers(latitude);
+});
+
 #[wasm_bindgen]
 impl Gyrocompass {
-    /// A compass at `latitude` λ (rad; not a pole) with rotor momentum `angular_momentum` H
-    /// (kg·m²/s, > 0), pendulosity `pendulosity` P = m g l (N·m), damping ratio `damping` ζ in
-    /// [0, 1) and the element's moments `inertia` (kg·m², 3 numbers) on the default Earth.
-    #[wasm_bindgen(constructor)]
-    pub fn new(
-        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] angular_momentum: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] pendulosity: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] damping: Number,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] inertia: Numbers,
-    ) -> Out<Gyrocompass> {
-        let_numbers!(latitude, angular_momentum, pendulosity, damping);
-        let inertia = moments(&inertia)?;
-        let inner = dy::Gyrocompass::new(
-            latitude,
-            angular_momentum,
-            pendulosity,
-            damping,
-            inertia,
-            Earth::default(),
-        )?;
-        Ok(Gyrocompass { inner })
-    }
-
-    /// The compass whose period is Schuler's 2π √(R/g) (84.4 min): H = P Ω cos λ R / g
-    /// (`Gyrocompass.schuler_tuned`).
-    #[wasm_bindgen(js_name = schulerTuned)]
-    pub fn schuler_tuned(
-        #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] pendulosity: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] damping: Number,
-        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] inertia: Numbers,
-    ) -> Out<Gyrocompass> {
-        let_numbers!(latitude, pendulosity, damping);
-        let inertia = moments(&inertia)?;
-        let inner = dy::Gyrocompass::schuler_tuned(
-            latitude,
-            pendulosity,
-            damping,
-            inertia,
-            Earth::default(),
-        )?;
-        Ok(Gyrocompass { inner })
-    }
-
     /// Schuler's period 2π √(R/g) (s) of the default Earth: 5063.5 s = 84.4 min.
     #[wasm_bindgen(js_name = schulerPeriod)]
     pub fn schuler_period() -> f64 {
@@ -136,36 +137,6 @@ impl Gyrocompass {
         dy::COMPASS_DAMPING
     }
 
-    /// Latitude λ (rad).
-    #[wasm_bindgen(getter)]
-    pub fn latitude(&self) -> f64 {
-        self.inner.latitude
-    }
-    /// The rotor's angular momentum H (kg·m²/s).
-    #[wasm_bindgen(getter, js_name = angularMomentum)]
-    pub fn angular_momentum(&self) -> f64 {
-        self.inner.angular_momentum
-    }
-    /// The undamped period of the settling oscillation, 2π √(H/(P Ω cos λ)) (s).
-    #[wasm_bindgen(getter)]
-    pub fn period(&self) -> Out<f64> {
-        Ok(self.inner.period()?)
-    }
-    /// ω_n of the linearised equations (rad/s).
-    #[wasm_bindgen(getter, js_name = naturalFrequency)]
-    pub fn natural_frequency(&self) -> f64 {
-        self.inner.natural_frequency()
-    }
-    /// The damping torque's coefficient D = 2 ζ ω_n H (N·m/rad).
-    #[wasm_bindgen(getter, js_name = dampingCoefficient)]
-    pub fn damping_coefficient(&self) -> f64 {
-        self.inner.damping_coefficient()
-    }
-    /// The ground's eastward speed Ω R cos λ (m/s).
-    #[wasm_bindgen(getter, js_name = groundSpeed)]
-    pub fn ground_speed(&self) -> f64 {
-        self.inner.ground_speed()
-    }
     /// The latitude (damping) error of the settled compass at rest (rad; what it reads minus
     /// true north): `Gyrocompass.settle_error`.
     #[wasm_bindgen(getter, js_name = settleError)]
@@ -176,29 +147,6 @@ impl Gyrocompass {
     #[wasm_bindgen(getter, js_name = settleTilt)]
     pub fn settle_tilt(&self) -> Out<f64> {
         Ok(self.inner.settle()?.1)
-    }
-
-    /// The steaming error δ = atan(V cos C / (Ω R cos λ + V sin C)) (rad; positive: reads
-    /// high) for `speed` V (m/s) and `course` C (rad, clockwise from north).
-    #[wasm_bindgen(js_name = speedError)]
-    pub fn speed_error(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] speed: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] course: Number,
-    ) -> Out<f64> {
-        let_numbers!(speed, course);
-        Ok(self.inner.speed_error(speed, course)?)
-    }
-
-    /// The manufacturers' small-angle form V cos C / (Ω R cos λ) (rad).
-    #[wasm_bindgen(js_name = speedErrorSmallAngle)]
-    pub fn speed_error_small_angle(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] speed: Number,
-        #[wasm_bindgen(unchecked_param_type = "number")] course: Number,
-    ) -> Out<f64> {
-        let_numbers!(speed, course);
-        Ok(self.inner.speed_error_small_angle(speed, course)?)
     }
 
     /// The compass integrated as a rigid gyrostat carried by the ship's local frame for
@@ -223,30 +171,6 @@ impl Gyrocompass {
             .simulate(duration, heading0, tilt0, Some(ship), &opts)
             .map_err(step_limit)?;
         Ok(CompassRun { inner })
-    }
-}
-
-#[wasm_bindgen]
-impl CompassRun {
-    /// The sample times (s).
-    #[wasm_bindgen(getter)]
-    pub fn times(&self) -> Vec<f64> {
-        self.inner.t.clone()
-    }
-    /// The spin axis's heading at each sample, clockwise from true north (rad, (−π, π]).
-    #[wasm_bindgen(getter)]
-    pub fn heading(&self) -> Vec<f64> {
-        self.inner.heading.clone()
-    }
-    /// The spin axis's tilt above the horizontal at each sample (rad).
-    #[wasm_bindgen(getter)]
-    pub fn tilt(&self) -> Vec<f64> {
-        self.inner.tilt.clone()
-    }
-    /// The ship's latitude at each sample (rad).
-    #[wasm_bindgen(getter)]
-    pub fn latitude(&self) -> Vec<f64> {
-        self.inner.latitude.clone()
     }
 }
 

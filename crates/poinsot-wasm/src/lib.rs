@@ -68,19 +68,21 @@ pub fn version() -> String {
 /// `core::function(args...)?` as `out`.
 /// `calls!(Type::new { " doc" (arg: kind, ...) = core::Type::new; })` is the JavaScript
 /// constructor `Type { inner: core::Type::new(args...)? }` in the same way, the arguments passed
-/// by value. Doc lines are string
+/// by value. A core callee may be followed by fixed trailing arguments in brackets, passed after
+/// the converted ones: `= core::Type::new[Earth::default()]`. Kinds: `number` (`f64`), `vector`
+/// (a core vector, passed by reference), `triple` (`[f64; 3]`). Doc lines are string
 /// literals, not `///` (wasm-bindgen writes a doc comment passed through `macro_rules!` into the
 /// TypeScript declarations as `r" ..."`). The core validates the arguments, naming them, and
 /// promises its numbers finite, so nothing else is checked here.
 macro_rules! calls {
-    ($ty:ident::new { $($doc:literal)* ($($arg:ident: $kind:ident),* $(,)?) = $core:path; }) => {
-        crate::calls!(@params $ty [$($doc)*] [constructor $core] [$($arg $kind)*] [$($arg $kind)*] []);
+    ($ty:ident::new { $($doc:literal)* ($($arg:ident: $kind:ident),* $(,)?) = $core:path $([$($fixed:expr),*])?; }) => {
+        crate::calls!(@params $ty [$($doc)*] [constructor $core [$($($fixed,)*)?]] [$($arg $kind)*] [$($arg $kind)*] []);
     };
     ($ty:ident { $($($doc:literal)* $js:ident $name:ident($($arg:ident: $kind:ident),* $(,)?) -> $out:ident;)* }) => {
-        $(crate::calls!(@params $ty [$($doc)*] [call $js $name $out [&self,] [self.inner.$name]] [$($arg $kind)*] [$($arg $kind)*] []);)*
+        $(crate::calls!(@params $ty [$($doc)*] [call $js $name $out [&self,] [self.inner.$name] []] [$($arg $kind)*] [$($arg $kind)*] []);)*
     };
-    (fn $ty:ident { $($($doc:literal)* $js:ident $name:ident($($arg:ident: $kind:ident),* $(,)?) -> $out:ident = $core:path;)* }) => {
-        $(crate::calls!(@params $ty [$($doc)*] [call $js $name $out [] [$core]] [$($arg $kind)*] [$($arg $kind)*] []);)*
+    (fn $ty:ident { $($($doc:literal)* $js:ident $name:ident($($arg:ident: $kind:ident),* $(,)?) -> $out:ident = $core:path $([$($fixed:expr),*])?;)* }) => {
+        $(crate::calls!(@params $ty [$($doc)*] [call $js $name $out [] [$core] [$($($fixed,)*)?]] [$($arg $kind)*] [$($arg $kind)*] []);)*
     };
     // One parameter at a time, with the TypeScript type of its kind (an attribute takes only a
     // literal, so each kind is spelled out).
@@ -88,38 +90,43 @@ macro_rules! calls {
         crate::calls!(@params $ty $docs $mode $args [$($rest)*] [$($p)*
             #[wasm_bindgen(unchecked_param_type = "number")] $arg: crate::args::Number,]);
     };
+    (@params $ty:ident $docs:tt $mode:tt $args:tt [$arg:ident triple $($rest:tt)*] [$($p:tt)*]) => {
+        crate::calls!(@params $ty $docs $mode $args [$($rest)*] [$($p)*
+            #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] $arg: crate::args::Numbers,]);
+    };
     (@params $ty:ident $docs:tt $mode:tt $args:tt [$arg:ident vector $($rest:tt)*] [$($p:tt)*]) => {
         crate::calls!(@params $ty $docs $mode $args [$($rest)*] [$($p)*
             #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] $arg: crate::args::Numbers,]);
     };
     // A method (`[&self,]`, calling `self.inner.name`) or a static function (`[]`, calling the
     // core's function).
-    (@params $ty:ident [$($doc:literal)*] [call $js:ident $name:ident $out:ident [$($recv:tt)*] [$($callee:tt)+]] [$($arg:ident $kind:ident)*] [] [$($p:tt)*]) => {
+    (@params $ty:ident [$($doc:literal)*] [call $js:ident $name:ident $out:ident [$($recv:tt)*] [$($callee:tt)+] [$($fixed:expr,)*]] [$($arg:ident $kind:ident)*] [] [$($p:tt)*]) => {
         #[wasm_bindgen::prelude::wasm_bindgen]
         impl $ty {
             $(#[doc = $doc])*
             #[wasm_bindgen(js_name = $js)]
             pub fn $name($($recv)* $($p)*) -> crate::convert::Out<crate::calls!(@type $out)> {
                 $(let $arg = crate::args::$kind(stringify!($arg), &$arg)?;)*
-                let value = $($callee)+($(crate::calls!(@pass $kind $arg)),*)?;
+                let value = $($callee)+($(crate::calls!(@pass $kind $arg),)* $($fixed),*)?;
                 Ok(crate::calls!(@out $out value))
             }
         }
     };
-    (@params $ty:ident [$($doc:literal)*] [constructor $core:path] [$($arg:ident $kind:ident)*] [] [$($p:tt)*]) => {
+    (@params $ty:ident [$($doc:literal)*] [constructor $core:path [$($fixed:expr,)*]] [$($arg:ident $kind:ident)*] [] [$($p:tt)*]) => {
         #[wasm_bindgen::prelude::wasm_bindgen]
         impl $ty {
             $(#[doc = $doc])*
             #[wasm_bindgen(constructor)]
             pub fn new($($p)*) -> crate::convert::Out<$ty> {
                 $(let $arg = crate::args::$kind(stringify!($arg), &$arg)?;)*
-                let inner = $core($($arg),*)?;
+                let inner = $core($($arg,)* $($fixed),*)?;
                 Ok($ty { inner })
             }
         }
     };
     (@pass number $arg:ident) => { $arg };
     (@pass vector $arg:ident) => { &$arg };
+    (@pass triple $arg:ident) => { $arg };
     (@type number) => { f64 };
     (@type vector) => { Vec<f64> };
     (@type $wrapper:ident) => { $wrapper };

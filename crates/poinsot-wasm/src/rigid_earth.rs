@@ -78,16 +78,6 @@ impl RigidEarth {
         let (sun, moon) = self.inner.precession_parts();
         vec![sun, moon]
     }
-    /// Euler's free-nutation period (s): ((1 − H)/H) sidereal days, 304.46 for the IERS H.
-    #[wasm_bindgen(getter, js_name = eulerPeriod)]
-    pub fn euler_period(&self) -> Out<f64> {
-        Ok(self.inner.euler_period()?)
-    }
-    /// The precession period 2π/|precession rate| (s): 25,714 Julian years for the defaults.
-    #[wasm_bindgen(getter, js_name = precessionPeriod)]
-    pub fn precession_period(&self) -> Out<f64> {
-        Ok(self.inner.precession_period()?)
-    }
     /// The principal nutation `[Δψ₀, Δε₀]` (rad) of Δψ = Δψ₀ sin Ω, Δε = Δε₀ cos Ω (Ω the
     /// longitude of the Moon's ascending node), in the IAU convention (Δψ westward, as ψ_A).
     /// Refused, naming `obliquity`, at ε = 0.
@@ -183,4 +173,50 @@ pub fn fit_wobble(
     let (t, x, y) = (numbers("t", &t)?, numbers("x", &x)?, numbers("y", &y)?);
     let inner = ea::fit_wobble(&t, &x, &y, ea::ChandlerPeriod::default(), ea::ANNUAL_PERIOD)?;
     Ok(WobbleFit { inner })
+}
+
+getters!(RigidEarth? {
+    " Euler's free-nutation period (s): ((1 − H)/H) sidereal days, 304.46 for the IERS H."
+    eulerPeriod euler_period;
+    " The precession period 2π/|precession rate| (s): 25,714 Julian years for the defaults."
+    precessionPeriod precession_period;
+});
+
+/// The rigid Earth's averaged pole at a list of times (`RigidEarth.averagedPole`;
+/// `poinsot.AveragedPole` in Python): the uniform precession plus the principal nutation.
+#[wasm_bindgen]
+#[derive(Debug, Clone)]
+pub struct AveragedPole {
+    inner: ea::AveragedPole,
+}
+
+fields!(AveragedPole {
+    " ψ(t), the precession angle of the spin axis (rad, unwrapped): its ecliptic longitude"
+    " counted westward from its place at t = 0, the IAU's ψ_A plus the nutation Δψ."
+    psi psi -> numbers(psi);
+    " ε(t), the obliquity: the angle of the spin axis from the ecliptic's pole (rad)."
+    obliquity obliquity -> numbers(obliquity);
+    " Ω(t), the ecliptic longitude of the Moon's ascending node (rad, unwrapped)."
+    moonNode moon_node -> numbers(moon_node);
+});
+
+#[wasm_bindgen]
+impl RigidEarth {
+    /// The averaged pole at the times `t` (s): Ω = Ω₀ − 2π t/T_node, ψ = −P t + s Δψ₀ sin Ω,
+    /// ε = ε₀ + s Δε₀ cos Ω, with P the precession rate, (Δψ₀, Δε₀) the principal nutation,
+    /// Ω₀ = `moonNode` (rad) and s = `nutationScale` (≥ 0; 1 the Earth's, larger to draw the
+    /// nod visibly). Errors name `t`, `moon_node`, `nutation_scale` or `obliquity`.
+    #[wasm_bindgen(js_name = averagedPole)]
+    pub fn averaged_pole(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] t: Numbers,
+        #[wasm_bindgen(unchecked_param_type = "number")] moon_node: crate::args::Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] nutation_scale: crate::args::Number,
+    ) -> Out<AveragedPole> {
+        let t = numbers("t", &t)?;
+        let moon_node = crate::args::number("moon_node", &moon_node)?;
+        let nutation_scale = crate::args::number("nutation_scale", &nutation_scale)?;
+        let inner = self.inner.averaged_pole(&t, moon_node, nutation_scale)?;
+        Ok(AveragedPole { inner })
+    }
 }
