@@ -105,32 +105,6 @@ core_export! {
             r.node_rate,
         ))
     }
-
-    /// The averaged pole at the times `t` (s) (`RigidEarth::averaged_pole`): the precession
-    /// angle ψ (rad, westward), the obliquity ε (rad) and the Moon's node Ω (rad), each of
-    /// `t`'s length; the principal nutation multiplied by `nutation_scale`.
-    #[allow(clippy::type_complexity)]
-    fn averaged_pole<'py>(
-        &self,
-        py: Python<'py>,
-        t: PyReadonlyArray1<'_, f64>,
-        moon_node: f64,
-        nutation_scale: f64,
-    ) -> PyResult<(
-        Bound<'py, PyArray1<f64>>,
-        Bound<'py, PyArray1<f64>>,
-        Bound<'py, PyArray1<f64>>,
-    )> {
-        let p = self
-            .inner
-            .averaged_pole(&vec_in(&t), moon_node, nutation_scale)
-            .py()?;
-        Ok((
-            PyArray1::from_vec(py, p.psi),
-            PyArray1::from_vec(py, p.obliquity),
-            PyArray1::from_vec(py, p.moon_node),
-        ))
-    }
 }
 
 /// The mean precession rate and the principal nutation fitted to a simulated pole
