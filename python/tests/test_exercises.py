@@ -552,7 +552,7 @@ def test_the_turntable_bugs_missing_coriolis_term_is_a_known_mistake() -> None:
 
 def test_a_derived_step_is_the_default_second_route_and_unit() -> None:
     from poinsot.exercises._build import derived, draws, route
-    from poinsot.exercises._template import _last_step
+    from poinsot.exercises._template import _LAST_STEP
 
     t = x.template("dropped-ball")
     # written without check or unit: both come from its last step, the derivation's 2.42
@@ -569,7 +569,7 @@ def test_a_derived_step_is_the_default_second_route_and_unit() -> None:
     )
     assert derived("", r"a_N [m/s**2] = earth centrifugal[1](omega, R, latitude)").component == 1
     with pytest.raises(TypeError, match="'no-route'.*last step is not derived"):
-        dataclasses.replace(t, name="no-route", check=_last_step, steps=())
+        dataclasses.replace(t, name="no-route", check=_LAST_STEP, steps=())
     params = draws("m", height=(20, 300, 5)) + draws("deg", latitude=(("Oslo", 59.91),))
     assert [(p.name, p.unit, p.step, p.choices) for p in params] == [
         ("height", "m", 5, ()),

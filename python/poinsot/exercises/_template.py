@@ -83,9 +83,17 @@ class Param:
 # ---- the template -----------------------------------------------------------------------------
 
 
-def _last_step(v: Any) -> float:
+class _LastStep:
     """The default of :attr:`Template.check`: replaced by the last step's derived formula."""
-    raise NotImplementedError  # pragma: no cover - __post_init__ replaces it
+
+    def __repr__(self) -> str:
+        return "<the last step's derived formula>"
+
+    def __call__(self, v: Any) -> float:
+        raise NotImplementedError  # pragma: no cover - Template.__post_init__ replaces it
+
+
+_LAST_STEP = _LastStep()
 
 
 @dataclass(frozen=True, eq=False)
@@ -149,7 +157,7 @@ class Template:
     agree: float
     agree_why: str
     unit: str = ""
-    check: Callable[[Any], float] = _last_step
+    check: Callable[[Any], float] = _LAST_STEP
     steps: tuple[Derived | Plain, ...] = ()
     mistakes: tuple[Mistake, ...] = ()
     constants: Mapping[str, float] = field(default_factory=dict)
@@ -160,7 +168,7 @@ class Template:
 
     def __post_init__(self) -> None:
         last = self.steps[-1] if self.steps else None
-        if self.check is _last_step:
+        if self.check is _LAST_STEP:
             if not isinstance(last, Derived):
                 raise TypeError(
                     f"template {self.name!r}: no check, and its last step is not derived"

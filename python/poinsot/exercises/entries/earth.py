@@ -369,7 +369,8 @@ G_EFFECTIVE = _earth_template(
     name="g-effective",
     title="Effective gravity at a latitude",
     text=prose("""On a spherical Earth of radius 6371 km whose attraction alone gives g = 9.807
-        m/s², turning at ω = 7.292×10⁻⁵ rad/s, a stone rests on the ground at latitude {latitude}."""),
+        m/s², turning at ω = 7.292×10⁻⁵ rad/s, a stone rests on the ground at latitude
+        {latitude}."""),
     params=draws("deg", latitude=(0, 85, 1)),
     question="What is the magnitude of the effective gravity g_eff there, in m/s²?",
     answer=_geff_mag,
