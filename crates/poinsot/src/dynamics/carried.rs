@@ -90,6 +90,50 @@ impl Carrier {
     }
 }
 
+/// The rate (rad/s, clockwise from above positive) at which the heading of an axis **fixed in
+/// inertial space** — Foucault's free gyroscope's (1852) — turns as seen from the ground at
+/// `latitude` λ (rad) on `earth`, when the axis has heading `heading` α (rad, clockwise from
+/// north) and tilt `tilt` θ (rad, above the horizontal): seen from the ground the axis s turns
+/// as ṡ = −ω × s with ω = Ω (0, cos λ, sin λ) (2.29, 2.33), so
+///
+/// ```text
+/// α̇ = Ω (sin λ − cos λ tan θ cos α).
+/// ```
+///
+/// A horizontal axis (θ = 0) drifts at Ω sin λ, clockwise in the north like Foucault's
+/// pendulum; an axis aimed at the celestial pole (α = 0, θ = λ) stays put. Errors name
+/// `latitude`, `heading` (not finite) and `tilt` (a vertical axis has no heading).
+pub fn fixed_axis_heading_rate(
+    earth: &Earth,
+    latitude: f64,
+    heading: f64,
+    tilt: f64,
+) -> Result<f64> {
+    check_latitude(latitude)?;
+    check_finite("heading", &[heading])?;
+    if !(tilt.is_finite() && tilt.abs() < std::f64::consts::FRAC_PI_2) {
+        return Err(Error::invalid(
+            "tilt",
+            format!(
+                "must be finite and in (-pi/2, pi/2) rad: a vertical axis has no heading, got {}",
+                crate::error::num(tilt)
+            ),
+        ));
+    }
+    let rate = earth.rotation_rate * (latitude.sin() - latitude.cos() * tilt.tan() * heading.cos());
+    if rate.is_finite() {
+        Ok(rate)
+    } else {
+        Err(Error::invalid(
+            "tilt",
+            format!(
+                "{} rad is too near the vertical: the heading's rate is not a finite number",
+                crate::error::num(tilt)
+            ),
+        ))
+    }
+}
+
 /// The rotation by `angle` (rad) about the unit vector `axis` (Rodrigues).
 pub(crate) fn turn(axis: &Vec3, angle: f64) -> Mat3 {
     let k = axis.cross_matrix();

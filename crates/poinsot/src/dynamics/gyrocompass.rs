@@ -96,6 +96,118 @@ impl Ship {
     }
 }
 
+/// The default time a [`Turn`] takes (s) when none is given: a minute, a brisk ship's turn.
+pub const COMPASS_TURN_DURATION: f64 = 60.0;
+
+/// A change of a ship's velocity during a run ([`Track`]): from `time` (s after the start) the
+/// ship's velocity over the ground changes at a constant rate, over `duration` s, to `speed`
+/// (m/s) on `course` (rad, clockwise from north). The velocity's east and north components
+/// move linearly (a constant acceleration Δv/τ: a reversal slows through rest and speeds up
+/// again); what the compass feels of a manoeuvre is its change of velocity ∫ a dt, the same for
+/// any path between the two velocities (the ballistic deflection, [`Gyrocompass::simulate_track`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Turn {
+    /// When the turn starts (s after the start of the run), ≥ 0.
+    pub time: f64,
+    /// How long it takes (s), > 0; `None`: [`COMPASS_TURN_DURATION`].
+    pub duration: Option<f64>,
+    /// The speed over the ground after the turn (m/s), ≥ 0.
+    pub speed: f64,
+    /// The course after the turn (rad, clockwise from north).
+    pub course: f64,
+}
+
+/// A ship's track: the `start`ing speed and course, then the `turns` (course and speed changes)
+/// in the order of their times, each a rhumb line between them. Checked by [`Track::new`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Track {
+    /// The ship's speed and course from `t = 0`.
+    pub start: Ship,
+    /// The course and speed changes, in time order, not overlapping.
+    pub turns: Vec<Turn>,
+}
+
+impl Track {
+    /// A steady track: `ship` all along (a rhumb line).
+    pub fn steady(ship: Ship) -> Self {
+        Self {
+            start: ship,
+            turns: Vec::new(),
+        }
+    }
+
+    /// A track; errors name `speed`, `course` (the start) and `turns` (with the turn's index
+    /// from 0): a time not finite or negative, a duration not finite and > 0 (a change of
+    /// velocity in no time is an infinite acceleration), a speed not finite and ≥ 0, a course
+    /// not finite, or a turn that starts before the one before it has ended.
+    pub fn new(start: Ship, turns: Vec<Turn>) -> Result<Self> {
+        Ship::new(start.speed, start.course)?;
+        let mut end = 0.0;
+        for (k, turn) in turns.iter().enumerate() {
+            let bad = |why: String| Err(Error::invalid("turns", format!("turn {k}: {why}")));
+            if !(turn.time.is_finite() && turn.time >= 0.0) {
+                return bad(format!(
+                    "its time must be finite and >= 0 s, got {}",
+                    num(turn.time)
+                ));
+            }
+            let duration = turn.duration.unwrap_or(COMPASS_TURN_DURATION);
+            if !(duration.is_finite() && duration > 0.0) {
+                return bad(format!(
+                    "its duration must be finite and > 0 s (a change of velocity in no time \
+                     is an infinite acceleration), got {}",
+                    num(duration)
+                ));
+            }
+            if !(turn.speed.is_finite() && turn.speed >= 0.0) {
+                return bad(format!(
+                    "its speed must be finite and >= 0 m/s, got {}",
+                    num(turn.speed)
+                ));
+            }
+            if !turn.course.is_finite() {
+                return bad(format!(
+                    "its course must be finite, got {}",
+                    num(turn.course)
+                ));
+            }
+            if turn.time < end {
+                return bad(format!(
+                    "it starts at {} s, before the turn before it ends at {} s",
+                    num(turn.time),
+                    num(end)
+                ));
+            }
+            end = turn.time + duration;
+            if !end.is_finite() {
+                return bad("its end time is not a finite number of seconds".into());
+            }
+        }
+        Ok(Self { start, turns })
+    }
+
+    /// The ship's velocity over the ground (east, north) (m/s) and its rate of change
+    /// (m/s²) at time `t` (s).
+    pub fn velocity(&self, t: f64) -> ([f64; 2], [f64; 2]) {
+        let enu = |s: f64, c: f64| [s * c.sin(), s * c.cos()];
+        let mut v = enu(self.start.speed, self.start.course);
+        for turn in &self.turns {
+            if t < turn.time {
+                break;
+            }
+            let tau = turn.duration.unwrap_or(COMPASS_TURN_DURATION);
+            let to = enu(turn.speed, turn.course);
+            if t < turn.time + tau {
+                let a = [(to[0] - v[0]) / tau, (to[1] - v[1]) / tau];
+                let dt = t - turn.time;
+                return ([v[0] + a[0] * dt, v[1] + a[1] * dt], a);
+            }
+            v = to;
+        }
+        (v, [0.0, 0.0])
+    }
+}
+
 /// The sampled motion of a compass ([`Gyrocompass::simulate`]).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct CompassRun {
@@ -109,19 +221,60 @@ pub struct CompassRun {
     pub latitude: Vec<f64>,
 }
 
-/// The local frame of a ship on a rhumb line over the rotating spherical Earth, fixed axes the
+/// The linearised compass's motion ([`Gyrocompass::linear_solution`]) at given times.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct LinearCompass {
+    /// Heading of the spin axis, clockwise from true north (rad), not wrapped.
+    pub heading: Vec<f64>,
+    /// Tilt of the north end (rad).
+    pub tilt: Vec<f64>,
+    /// The heading swing's envelope (rad, ≥ 0): the heading stays within
+    /// `settled_heading ± envelope`, touching it once a swing.
+    pub envelope: Vec<f64>,
+    /// The settled heading α* (rad): −(latitude error + speed error).
+    pub settled_heading: f64,
+    /// The settled tilt θ* (rad).
+    pub settled_tilt: f64,
+}
+
+/// The local frame of a ship on a [`Track`] over the rotating spherical Earth, fixed axes the
 /// ENU axes at the start; the specific force is the plumb-line gravity less the ship's
-/// acceleration relative to the ground and its Coriolis acceleration, `−g ẑ − ρ × v − 2 Ω × v`
-/// (ENU, ρ the transport rate (−V_N/R, V_E/R, V_E tan φ/R)).
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// acceleration relative to the ground and its Coriolis acceleration, `−g ẑ − v̇ − ρ × v −
+/// 2 Ω × v` (ENU, ρ the transport rate (−V_N/R, V_E/R, V_E tan φ/R), v̇ the rate of the
+/// velocity's ENU components: nonzero only during a turn). The frame turns at Ω + ρ (2.33
+/// plus the ship's motion over the curved Earth).
+#[derive(Debug, Clone, PartialEq)]
 struct ShipFrame {
     earth: Earth,
-    lat0: f64,
-    v_east: f64,
-    v_north: f64,
+    /// The pieces of the track: cruising legs (a = 0) and turns, in time order.
+    legs: Vec<Leg>,
     /// ENU → Earth-fixed at the start (longitude 0).
     enu0: Mat3,
 }
+
+/// One piece of a ship's track: from time `t0` (s) at latitude `lat0`, longitude `lon0` (rad)
+/// with velocity `v` (east, north; m/s) changing at the constant rate `a` (m/s²).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Leg {
+    t0: f64,
+    lat0: f64,
+    lon0: f64,
+    v: [f64; 2],
+    a: [f64; 2],
+}
+
+/// Gauss–Legendre nodes on [−1, 1] and weights, 8 points (exact for degree 15: the
+/// longitude's integrand over a turn, 1/cos of a quadratic latitude, to round-off).
+const GAUSS_8: [(f64, f64); 8] = [
+    (-0.960_289_856_497_536_3, 0.101_228_536_290_376_26),
+    (-0.796_666_477_413_626_7, 0.222_381_034_453_374_47),
+    (-0.525_532_409_916_329, 0.313_706_645_877_887_3),
+    (-0.183_434_642_495_649_8, 0.362_683_783_378_362),
+    (0.183_434_642_495_649_8, 0.362_683_783_378_362),
+    (0.525_532_409_916_329, 0.313_706_645_877_887_3),
+    (0.796_666_477_413_626_7, 0.222_381_034_453_374_47),
+    (0.960_289_856_497_536_3, 0.101_228_536_290_376_26),
+];
 
 /// ENU axes at (φ, L) as the columns of the matrix to Earth-fixed components.
 fn enu_axes(lat: f64, lon: f64) -> Mat3 {
@@ -130,46 +283,129 @@ fn enu_axes(lat: f64, lon: f64) -> Mat3 {
     Mat3::new(-sl, -sp * cl, cp * cl, cl, -sp * sl, cp * sl, 0.0, cp, sp)
 }
 
+impl Leg {
+    /// (φ, L) at time `t` (s) on this leg. Cruising: φ linear in t, L from dL/dt = V_E /
+    /// (R cos φ) in closed form as a divided difference of atanh(sin φ) (no cancellation for
+    /// small steps); turning: φ quadratic in t, L by 8-point Gauss–Legendre.
+    fn position(&self, t: f64, r: f64) -> (f64, f64) {
+        let dt = t - self.t0;
+        let [ve, vn] = self.v;
+        if self.a == [0.0, 0.0] {
+            let (a, b) = (self.lat0, self.lat0 + vn * dt / r);
+            let d = b - a;
+            let m = 0.5 * (a + b);
+            let half = 0.5 * d;
+            let sinc = if half.abs() < 1e-8 {
+                1.0
+            } else {
+                half.sin() / half
+            };
+            let x = 2.0 * m.cos() * half.sin() / (1.0 - a.sin() * b.sin());
+            let g = if x.abs() < 1e-8 { 1.0 } else { x.atanh() / x };
+            // ∫ dt / cos φ = t · (atanh(sin b) − atanh(sin a)) / (b − a).
+            let ratio = g * m.cos() * sinc / (1.0 - a.sin() * b.sin());
+            return (b, self.lon0 + ve / r * dt * ratio);
+        }
+        let [ae, an] = self.a;
+        let lat_at = |u: f64| self.lat0 + (vn * u + 0.5 * an * u * u) / r;
+        let lon = GAUSS_8
+            .iter()
+            .map(|&(x, w)| {
+                let u = 0.5 * dt * (1.0 + x);
+                w * (ve + ae * u) / lat_at(u).cos()
+            })
+            .sum::<f64>()
+            * 0.5
+            * dt
+            / r;
+        (lat_at(dt), self.lon0 + lon)
+    }
+}
+
 impl ShipFrame {
-    fn new(earth: Earth, lat0: f64, ship: &Ship) -> Self {
-        let (sc, cc) = ship.course.sin_cos();
+    fn new(earth: Earth, lat0: f64, track: &Track) -> Self {
+        let r = earth.radius;
+        let enu = |s: f64, c: f64| [s * c.sin(), s * c.cos()];
+        let mut legs = vec![Leg {
+            t0: 0.0,
+            lat0,
+            lon0: 0.0,
+            v: enu(track.start.speed, track.start.course),
+            a: [0.0, 0.0],
+        }];
+        for turn in &track.turns {
+            let tau = turn.duration.unwrap_or(COMPASS_TURN_DURATION);
+            let to = enu(turn.speed, turn.course);
+            let cruise = legs[legs.len() - 1];
+            let (lat, lon) = cruise.position(turn.time, r);
+            let v = cruise.v;
+            let turning = Leg {
+                t0: turn.time,
+                lat0: lat,
+                lon0: lon,
+                v,
+                a: [(to[0] - v[0]) / tau, (to[1] - v[1]) / tau],
+            };
+            let (lat, lon) = turning.position(turn.time + tau, r);
+            legs.push(turning);
+            legs.push(Leg {
+                t0: turn.time + tau,
+                lat0: lat,
+                lon0: lon,
+                v: to,
+                a: [0.0, 0.0],
+            });
+        }
         Self {
             earth,
-            lat0,
-            v_east: ship.speed * sc,
-            v_north: ship.speed * cc,
+            legs,
             enu0: enu_axes(lat0, 0.0),
         }
     }
 
-    /// (φ, L) at time `t` (rad): φ linear in t, L from dL/dt = V_E / (R cos φ), integrated in
-    /// closed form as a divided difference of atanh(sin φ) (no cancellation for small steps).
-    fn position(&self, t: f64) -> (f64, f64) {
-        let r = self.earth.radius;
-        let lat = self.lat0 + self.v_north * t / r;
-        let (a, b) = (self.lat0, lat);
-        let d = b - a;
-        let m = 0.5 * (a + b);
-        let half = 0.5 * d;
-        let sinc = if half.abs() < 1e-8 {
-            1.0
-        } else {
-            half.sin() / half
-        };
-        let x = 2.0 * m.cos() * half.sin() / (1.0 - a.sin() * b.sin());
-        let g = if x.abs() < 1e-8 { 1.0 } else { x.atanh() / x };
-        // ∫ dt / cos φ = t · (atanh(sin b) − atanh(sin a)) / (b − a).
-        let ratio = g * m.cos() * sinc / (1.0 - a.sin() * b.sin());
-        (lat, self.v_east / r * t * ratio)
+    fn leg(&self, t: f64) -> &Leg {
+        let k = self.legs.partition_point(|l| l.t0 <= t);
+        &self.legs[k.saturating_sub(1)]
     }
 
-    fn transport(&self, lat: f64) -> (Vec3, Vec3) {
+    /// (φ, L) at time `t` (rad).
+    fn position(&self, t: f64) -> (f64, f64) {
+        self.leg(t).position(t, self.earth.radius)
+    }
+
+    /// The velocity (east, north, 0) (m/s) and its rate (m/s²) at `t`.
+    fn velocity(&self, t: f64) -> (Vec3, Vec3) {
+        let leg = self.leg(t);
+        let dt = t - leg.t0;
+        let [ae, an] = leg.a;
+        let v = Vec3::new(leg.v[0] + ae * dt, leg.v[1] + an * dt, 0.0);
+        (v, Vec3::new(ae, an, 0.0))
+    }
+
+    /// The largest |latitude| (rad) over [0, `duration`] s: at the legs' ends and where a
+    /// turn's northward speed passes through zero.
+    fn max_abs_latitude(&self, duration: f64) -> f64 {
+        let mut times = vec![duration];
+        for leg in &self.legs {
+            if leg.t0 <= duration {
+                times.push(leg.t0);
+                if leg.a[1] != 0.0 {
+                    let u = -leg.v[1] / leg.a[1];
+                    if u > 0.0 && leg.t0 + u <= duration {
+                        times.push(leg.t0 + u);
+                    }
+                }
+            }
+        }
+        times
+            .iter()
+            .map(|&t| self.position(t).0.abs())
+            .fold(0.0, f64::max)
+    }
+
+    fn transport(&self, lat: f64, v: &Vec3) -> (Vec3, Vec3) {
         let r = self.earth.radius;
-        let rho = Vec3::new(
-            -self.v_north / r,
-            self.v_east / r,
-            self.v_east * lat.tan() / r,
-        );
+        let rho = Vec3::new(-v.y / r, v.x / r, v.x * lat.tan() / r);
         let omega = self.earth.rotation_rate * Vec3::new(0.0, lat.cos(), lat.sin());
         (rho, omega)
     }
@@ -183,14 +419,15 @@ impl Carrying for ShipFrame {
     }
     fn angular_velocity(&self, t: f64) -> Vec3 {
         let (lat, _) = self.position(t);
-        let (rho, omega) = self.transport(lat);
+        let (v, _) = self.velocity(t);
+        let (rho, omega) = self.transport(lat, &v);
         self.attitude(t) * (omega + rho)
     }
     fn specific_force(&self, t: f64) -> Vec3 {
         let (lat, _) = self.position(t);
-        let (rho, omega) = self.transport(lat);
-        let v = Vec3::new(self.v_east, self.v_north, 0.0);
-        let f = Vec3::new(0.0, 0.0, -self.earth.g) - rho.cross(&v) - 2.0 * omega.cross(&v);
+        let (v, dv) = self.velocity(t);
+        let (rho, omega) = self.transport(lat, &v);
+        let f = Vec3::new(0.0, 0.0, -self.earth.g) - dv - rho.cross(&v) - 2.0 * omega.cross(&v);
         self.attitude(t) * f
     }
 }
@@ -458,6 +695,76 @@ impl Gyrocompass {
         Ok(self.settle()?.0)
     }
 
+    /// The linearised compass's motion at the times `t` (s) from heading `heading0` and tilt
+    /// `tilt0` (rad) at `t = 0`, on a steady `ship` (or at rest): the linear equations of the
+    /// module docs (the heavy symmetric top of 2.98–2.121 carried at ω = Ω (0, cos λ, sin λ),
+    /// 2.29, linearised about the meridian) for the deviation (x, y) from the settled heading
+    /// α* = −(latitude error + speed error) and tilt θ* ([`Gyrocompass::settle`]),
+    /// `ẋ = −(P/H + Ω_c) y`, `ẏ = Ω_c x − (D/H) y`, solved in closed form: with σ = D/(2H) =
+    /// ζ ω_n and ω_d = ω_n √(1 − ζ²),
+    ///
+    /// ```text
+    /// x = e^{−σt} (x₀ cos ω_d t + (σ x₀ − (P/H + Ω_c) y₀) sin ω_d t / ω_d),
+    /// y = e^{−σt} (y₀ cos ω_d t + (Ω_c x₀ − σ y₀) sin ω_d t / ω_d),
+    /// ```
+    ///
+    /// and the heading's envelope α* ± e^{−σt} √(x₀² + ((σ x₀ − (P/H + Ω_c) y₀)/ω_d)²)
+    /// (= |x₀|/√(1 − ζ²) started at the settled tilt). Errors name `t`, `heading0`, `tilt0`,
+    /// `speed`/`course` (as [`Gyrocompass::speed_error`]), `rotation_rate` (a still Earth).
+    pub fn linear_solution(
+        &self,
+        t: &[f64],
+        heading0: f64,
+        tilt0: f64,
+        ship: Option<Ship>,
+    ) -> Result<LinearCompass> {
+        check_finite("t", t)?;
+        check_finite("heading0", &[heading0])?;
+        check_finite("tilt0", &[tilt0])?;
+        Self::require_rotation(&self.earth)?;
+        let ship = ship.unwrap_or(Ship {
+            speed: 0.0,
+            course: 0.0,
+        });
+        let (error, tilt) = self.settle()?;
+        let settled = -(error + self.speed_error(ship.speed, ship.course)?);
+        let h = self.angular_momentum;
+        let b = self.pendulosity / h + self.omega_c();
+        let c = self.omega_c();
+        let sigma = 0.5 * self.damping_coefficient() / h;
+        let wd = (b * c - sigma * sigma).sqrt();
+        let (x0, y0) = (heading0 - settled, tilt0 - tilt);
+        let sx = (sigma * x0 - b * y0) / wd;
+        let sy = (c * x0 - sigma * y0) / wd;
+        let amp = x0.hypot(sx);
+        let mut out = LinearCompass {
+            settled_heading: settled,
+            settled_tilt: tilt,
+            ..LinearCompass::default()
+        };
+        for &time in t {
+            let decay = (-sigma * time).exp();
+            let (sn, cs) = (wd * time).sin_cos();
+            let x = decay * (x0 * cs + sx * sn);
+            let y = decay * (y0 * cs + sy * sn);
+            let e = decay * amp;
+            if !(x.is_finite() && y.is_finite() && e.is_finite()) {
+                return Err(Error::invalid(
+                    "t",
+                    format!(
+                        "the linear solution at t = {} s is not a finite number (the decay \
+                         e^(-sigma t) overflows before t = 0)",
+                        num(time)
+                    ),
+                ));
+            }
+            out.heading.push(settled + x);
+            out.tilt.push(tilt + y);
+            out.envelope.push(e);
+        }
+        Ok(out)
+    }
+
     /// Integrates the compass as a rigid gyrostat carried by the local frame (module docs) for
     /// `duration` s from heading `heading0` and tilt `tilt0` (rad), at rest relative to the
     /// ground, on a `ship` (or at rest), sampled at `samples` evenly spaced times; `opts`
@@ -470,6 +777,33 @@ impl Gyrocompass {
         heading0: f64,
         tilt0: f64,
         ship: Option<Ship>,
+        opts: &SimulateOptions,
+    ) -> Result<CompassRun> {
+        check_finite("heading0", &[heading0])?;
+        let ship = ship.unwrap_or(Ship {
+            speed: 0.0,
+            course: 0.0,
+        });
+        let ship = Ship::new(ship.speed, ship.course)?;
+        self.simulate_track(duration, heading0, tilt0, &Track::steady(ship), opts)
+    }
+
+    /// [`Gyrocompass::simulate`] on a ship's [`Track`]: course and speed changes during the
+    /// run. After a turn the compass settles on the new speed error; during it the ship's
+    /// acceleration a acts on the pendulous element (the translational fictitious force, 2.5),
+    /// a torque P a/g that precesses the spin axis by the *ballistic deflection* P Δv_N/(g H)
+    /// (Δv_N the change of the northward velocity). The change of the speed error is
+    /// Δv_N/(Ω R cos λ) (small-angle): when H = P Ω R cos λ / g — Schuler tuning — the two are
+    /// equal, and the compass goes straight to its new settled heading, without a swing about
+    /// it, however fast the turn (Arnold & Maunder 1961, ch. 11; Wrigley et al. 1969, ch. 12).
+    /// Errors as [`Gyrocompass::simulate`]; the track is checked by [`Track::new`] (errors
+    /// name `speed`, `course`, `turns`).
+    pub fn simulate_track(
+        &self,
+        duration: f64,
+        heading0: f64,
+        tilt0: f64,
+        track: &Track,
         opts: &SimulateOptions,
     ) -> Result<CompassRun> {
         check_finite("heading0", &[heading0])?;
@@ -495,14 +829,10 @@ impl Gyrocompass {
             },
             ..*opts
         };
-        let ship = ship.unwrap_or(Ship {
-            speed: 0.0,
-            course: 0.0,
-        });
-        Ship::new(ship.speed, ship.course)?;
-        let frame = ShipFrame::new(self.earth, self.latitude, &ship);
-        let end_lat = frame.position(duration.max(0.0)).0;
-        if end_lat.abs() > FRAC_PI_2 - 0.1f64.to_radians() {
+        let track = Track::new(track.start, track.turns.clone())?;
+        let frame = ShipFrame::new(self.earth, self.latitude, &track);
+        let end_lat = frame.max_abs_latitude(duration.max(0.0));
+        if !(end_lat <= FRAC_PI_2 - 0.1f64.to_radians()) {
             return Err(Error::invalid(
                 "duration",
                 format!(
@@ -595,6 +925,32 @@ mod tests {
         assert_eq!(tiny.unwrap_err().argument, "angular_momentum");
         let huge = Gyrocompass::new(0.5, 1e300, 1e-300, 0.3, [1.0; 3], Earth::default());
         assert_eq!(huge.unwrap_err().argument, "angular_momentum");
+    }
+
+    #[test]
+    fn ship_frame_turns_at_its_angular_velocity_through_a_turn() {
+        let track = Track::new(
+            Ship::new(12.0, 0.4).unwrap(),
+            vec![Turn {
+                time: 100.0,
+                duration: Some(80.0),
+                speed: 6.0,
+                course: -2.5,
+            }],
+        )
+        .unwrap();
+        let frame = ShipFrame::new(Earth::default(), 0.7, &track);
+        for t in [50.0, 100.5, 140.0, 179.5, 400.0] {
+            let h = 0.25;
+            let d = (frame.attitude(t + h) - frame.attitude(t - h)) / (2.0 * h);
+            let want = frame.angular_velocity(t).cross_matrix() * frame.attitude(t);
+            assert!((d - want).norm() < 1e-12, "t = {t}: {}", (d - want).norm());
+        }
+        // The position is continuous where the legs meet.
+        for t in [100.0, 180.0] {
+            let (a, b) = (frame.position(t - 1e-9), frame.position(t));
+            assert!((a.0 - b.0).abs() < 1e-14 && (a.1 - b.1).abs() < 1e-14);
+        }
     }
 
     #[test]

@@ -13,11 +13,15 @@ mod splitting;
 mod torque;
 
 pub use batch::{simulate_batch, BatchResult};
-pub use carried::{simulate_carried, CarriedTorque, CarriedTrajectory, Carrier, Carrying, Load};
+pub use carried::{
+    fixed_axis_heading_rate, simulate_carried, CarriedTorque, CarriedTrajectory, Carrier, Carrying,
+    Load,
+};
 pub use equations::{angular_acceleration, angular_acceleration_principal, power, quaternion_rate};
 pub use gyrocompass::{
-    CompassRun, Gyrocompass, Ship, COMPASS_ANGULAR_MOMENTUM, COMPASS_DAMPING, COMPASS_INERTIA,
-    COMPASS_METHOD, COMPASS_PENDULOSITY, COMPASS_SAMPLES, COMPASS_TOLERANCES, VISCOUS_FACTOR,
+    CompassRun, Gyrocompass, LinearCompass, Ship, Track, Turn, COMPASS_ANGULAR_MOMENTUM,
+    COMPASS_DAMPING, COMPASS_INERTIA, COMPASS_METHOD, COMPASS_PENDULOSITY, COMPASS_SAMPLES,
+    COMPASS_TOLERANCES, COMPASS_TURN_DURATION, VISCOUS_FACTOR,
 };
 pub use model::BodyInertia;
 pub use simulate::{default_step, simulate, Method, SimulateOptions, Trajectory};
