@@ -942,6 +942,28 @@ class GyrocompassCore:
     ) -> tuple[
         NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]
     ]: ...
+    def simulate_track(
+        self,
+        duration: float,
+        heading0: float,
+        tilt0: float,
+        speed: float,
+        course: float,
+        turns: list[tuple[float, float | None, float, float]],
+        method: str,
+        samples: int,
+        rtol: float,
+        atol: float,
+        max_steps: int,
+        progress: _Progress,
+    ) -> tuple[
+        NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]
+    ]: ...
+    def linear_solution(
+        self, t: NDArray[np.float64], heading0: float, tilt0: float, speed: float, course: float
+    ) -> tuple[
+        NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], tuple[float, float]
+    ]: ...
 
 def dynamics_simulate_carried(
     inertia: NDArray[np.float64],

@@ -260,13 +260,30 @@ class CompassRun(show.Displayed):
         Elevation of the north end above the horizontal (rad), (N,).
     latitude:
         The compass's (ship's) latitude (rad), (N,).
+    envelope:
+        Only for :meth:`Gyrocompass.linear_solution` (else None): the heading swing's envelope
+        (rad, (N,)), the heading staying within ``settled_heading ± envelope``.
+    settled_heading, settled_tilt:
+        Only for :meth:`Gyrocompass.linear_solution` (else None): the heading and tilt (rad)
+        the linear solution settles on.
     """
 
-    def __init__(self, t: Any, heading: Any, tilt: Any, latitude: Any) -> None:
+    def __init__(
+        self,
+        t: Any,
+        heading: Any,
+        tilt: Any,
+        latitude: Any,
+        envelope: Any = None,
+        settled: tuple[float, float] | None = None,
+    ) -> None:
         self.t: FloatArray = np.asarray(t)
         self.heading: FloatArray = np.asarray(heading)
         self.tilt: FloatArray = np.asarray(tilt)
         self.latitude: FloatArray = np.asarray(latitude)
+        self.envelope: FloatArray | None = None if envelope is None else np.asarray(envelope)
+        self.settled_heading: float | None = None if settled is None else float(settled[0])
+        self.settled_tilt: float | None = None if settled is None else float(settled[1])
 
     def _rows(self) -> list[show.Row]:
         return [
@@ -282,7 +299,15 @@ class CompassRun(show.Displayed):
             ),
             show.samples("tilt", "tilt of the north end", "θ", self.tilt, "rad"),
             show.samples("latitude", "latitude", "λ", self.latitude, "rad"),
-        ]
+        ] + (
+            []
+            if self.envelope is None
+            else [
+                show.samples(
+                    "envelope", "envelope of the swing", "A", self.envelope, "rad", brief=True
+                )
+            ]
+        )
 
 
 def _restore(*args: Any) -> Gyrocompass:
@@ -481,6 +506,7 @@ class Gyrocompass(show.Displayed):
         rtol: float = _RUN["rtol"],
         atol: float = _RUN["atol"],
         max_steps: int = _RUN["max_steps"],
+        turns: Any = None,
         progress: Callable[[float], Any] | None = None,
     ) -> CompassRun:
         """Integrates the compass as a rigid gyrostat carried by the local frame (the full
@@ -499,27 +525,83 @@ class Gyrocompass(show.Displayed):
             The ship's speed (m/s, ≥ 0) and course (rad, clockwise from north), kept constant:
             a rhumb line from the compass's latitude (the ship's acceleration over the curved,
             turning Earth acts on the pendulous element). None: at rest.
+        turns:
+            Course and speed changes during the run, in time order: a sequence of ``(time,
+            speed, course)`` or ``(time, speed, course, duration)``, each a number in SI (s,
+            m/s, rad), a pint quantity, or text as typed at the command line (``("30min",
+            "15kn", "180deg", "2min")``). From ``time`` the ship's velocity changes at a
+            constant rate over ``duration`` (default one minute, the core's) to ``speed`` on
+            ``course``; ``speed`` and ``course`` above are the start's. After a turn the
+            compass settles on the new speed error; a Schuler-tuned compass goes there
+            without swinging (no ballistic error: see docs/gyrocompass.md). Refused, naming
+            ``turns``, when a turn starts before the one before it ends, or takes no time.
         method, samples, rtol, atol, max_steps, progress:
             As :func:`poinsot.simulate` ("dop853" or "rk4" — no fixed step is taken by
             "rk4" here: use "dop853").
 
         The element's nutation (at H/I, 40 rad/s for the defaults) sets the steps: about
         10⁵ per simulated hour.
+
+        Examples
+        --------
+        >>> import poinsot as ps
+        >>> c = ps.Gyrocompass.schuler_tuned(0.5, damping=0.0)
+        >>> run = c.simulate(600, 0.0, speed=10, turns=[("2min", "10 m/s", "180deg", "1min")],
+        ...                  samples=3)
+        >>> len(run.t)
+        3
         """
         tilt = self.settle_tilt if tilt0 is None else _si(tilt0, "tilt0", "radian")
-        t, heading, tilt_out, lat = self._core.simulate(
+        span = (
             as_scalar(duration, "duration")
             if not is_quantity(duration)
-            else _si(duration, "duration", "second"),
+            else _si(duration, "duration", "second")
+        )
+        start = _si(heading0, "heading0", "radian")
+        v = 0.0 if speed is None else _si(speed, "speed", "meter / second")
+        c = 0.0 if course is None else _si(course, "course", "radian")
+        how = method if isinstance(method, str) else str(method)
+        settings = run_settings(samples, rtol, atol, max_steps)
+        report = as_callable(progress, "progress")
+        if turns is None:
+            t, heading, tilt_out, lat = self._core.simulate(
+                span, start, tilt, v, c, how, *settings, report
+            )
+        else:
+            t, heading, tilt_out, lat = self._core.simulate_track(
+                span, start, tilt, v, c, _turns(turns), how, *settings, report
+            )
+        return CompassRun(t, heading, tilt_out, lat)
+
+    def linear_solution(
+        self,
+        t: Any,
+        heading0: Any,
+        *,
+        tilt0: Any = None,
+        speed: Any = None,
+        course: Any = None,
+    ) -> CompassRun:
+        """The linearised compass at the times ``t`` (s), from heading ``heading0`` and tilt
+        ``tilt0`` (rad; None: :attr:`settle_tilt`) at t = 0, on a ship at ``speed`` (m/s) on
+        ``course`` (rad) or at rest: the linear equations of the class docstring, about the
+        settled heading −(:attr:`settle_error` + :meth:`speed_error`) and tilt, solved in
+        closed form by the core — a swing at ω_n √(1 − ζ²) decaying as e^{−ζ ω_n t}. Returns
+        a :class:`CompassRun` whose ``envelope`` (rad) bounds the heading's swing and whose
+        ``settled_heading``/``settled_tilt`` are its centre. Raises naming ``t``,
+        ``heading0``, ``tilt0``, ``speed`` or ``rotation_rate`` (a still Earth)."""
+        times = as_float_array(t, "t").reshape(-1)
+        tilt = self.settle_tilt if tilt0 is None else _si(tilt0, "tilt0", "radian")
+        heading, tilt_out, envelope, settled = self._core.linear_solution(
+            np.ascontiguousarray(times, dtype=np.float64),
             _si(heading0, "heading0", "radian"),
             tilt,
             0.0 if speed is None else _si(speed, "speed", "meter / second"),
             0.0 if course is None else _si(course, "course", "radian"),
-            method if isinstance(method, str) else str(method),
-            *run_settings(samples, rtol, atol, max_steps),
-            as_callable(progress, "progress"),
         )
-        return CompassRun(t, heading, tilt_out, lat)
+        return CompassRun(
+            times, heading, tilt_out, np.full(times.shape, self.latitude), envelope, settled
+        )
 
     def _rows(self) -> list[show.Row]:
         rows = [
@@ -545,6 +627,53 @@ class Gyrocompass(show.Displayed):
             )
         )
         return rows
+
+
+_TURN_FIELDS = (
+    ("time", "time", "second"),
+    ("speed", "speed", "meter / second"),
+    ("course", "angle", "radian"),
+    ("duration", "time", "second"),
+)
+
+
+def _turn_field(value: Any, name: str, dimension: str, unit: str) -> float:
+    """One field of a turn in SI: text as typed at the command line (``"15kn"``,
+    ``"180deg"``, ``"2min"``; ``_units.parse``), a pint quantity, or a number in SI."""
+    if isinstance(value, str):
+        from ._units import parse
+
+        try:
+            return parse(value, dimension)[0]
+        except ValueError as e:
+            raise PoinsotError(f"{name}: {e}") from None
+    return _si(value, name, unit)
+
+
+def _turns(turns: Any) -> list[tuple[float, float | None, float, float]]:
+    """``turns`` as the core's (time s, duration s or None, speed m/s, course rad) rows."""
+    if isinstance(turns, (str, bytes)) or not hasattr(turns, "__iter__"):
+        raise ArgumentTypeError(
+            f"turns: must be a sequence of (time, speed, course[, duration]), got "
+            f"{type(turns).__name__}"
+        )
+    rows = []
+    for k, turn in enumerate(turns):
+        if (
+            isinstance(turn, (str, bytes))
+            or not hasattr(turn, "__len__")
+            or len(turn) not in (3, 4)
+        ):
+            raise PoinsotError(
+                f"turns[{k}]: must be (time, speed, course) or (time, speed, course, duration), "
+                f"got {turn!r}"
+            )
+        got = [
+            _turn_field(value, f"turns[{k}].{field}", dim, unit)
+            for value, (field, dim, unit) in zip(turn, _TURN_FIELDS)
+        ]
+        rows.append((got[0], got[3] if len(got) == 4 else None, got[1], got[2]))
+    return rows
 
 
 def _moments(inertia: Any) -> tuple[float, float, float]:

@@ -63,6 +63,24 @@ def test_the_glued_values_against_closed_forms() -> None:
     assert abs(v["damped_off_pct"]) < 1.0
     assert v["ratio_2"] == pytest.approx(1.0, abs=0.005)
     assert 1.0 < v["ratio_20"] < 1.01 < 1.17 < v["ratio_90"] < 1.19
+    # a course reversal at 10 m/s: the steaming error's jump 2 atan(V/(Ω R cos λ)); the
+    # Schuler-tuned compass lands on it (no ballistic error), twice the rotor swings by half
+    assert v["turn_jump"] == pytest.approx(
+        math.degrees(2 * math.atan(10.0 / (OMEGA * R * math.cos(lat)))), rel=1e-4
+    )
+    assert v["turn_swing_tuned"] < 0.02 * v["turn_jump"]
+    assert v["turn_swing_heavy"] == pytest.approx(0.5 * v["turn_jump"], rel=0.05)
+    assert v["heavy_period_min"] == pytest.approx(math.sqrt(2) * v["schuler_min"], rel=1e-3)
+    # the steaming error in the full run: the Coriolis estimate 2 Ω V_N sin λ tan λ / g plus a
+    # residual under 0.005°; within 0.01° at 30°, not at 60°
+    for band in (30, 60):
+        s = math.radians(band)
+        est = math.degrees(
+            2 * OMEGA * 10.0 * math.cos(math.radians(20)) * math.sin(s) * math.tan(s) / G
+        )
+        assert v[f"band_est_{band}"] == pytest.approx(est, rel=1e-4)
+        assert 0.0 < v[f"band_sim_{band}"] - est < 0.005
+    assert abs(v["band_sim_30"]) < 0.01 < v["band_sim_60"]
 
 
 def test_the_page_shows_its_figures_under_the_agg_backend() -> None:

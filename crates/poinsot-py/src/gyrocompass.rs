@@ -6,7 +6,7 @@
 use numpy::{PyArray1, PyReadonlyArray1, PyReadonlyArray2};
 use poinsot::dynamics::{
     simulate_carried, BodyInertia, Carrier, Gyrocompass, Load, Method, Ship, SimulateOptions,
-    TorqueKind,
+    TorqueKind, Track, Turn,
 };
 use poinsot::earth::Earth;
 use poinsot::frames::MovingFrame;
@@ -195,7 +195,82 @@ core_export! {
             PyArray1::from_vec(py, out.latitude),
         ))
     }
+
+    /// As `simulate` on a track: the start's speed (m/s) and course (rad), then the turns
+    /// (time s, duration s or None, speed m/s, course rad).
+    #[pyo3(signature = (duration, heading0, tilt0, speed, course, turns, method, samples, rtol, atol, max_steps, progress))]
+    #[allow(clippy::too_many_arguments)]
+    fn simulate_track<'py>(
+        &self,
+        py: Python<'py>,
+        duration: f64,
+        heading0: f64,
+        tilt0: f64,
+        speed: f64,
+        course: f64,
+        turns: Vec<(f64, Option<f64>, f64, f64)>,
+        method: &str,
+        samples: usize,
+        rtol: f64,
+        atol: f64,
+        max_steps: usize,
+        progress: Option<Bound<'py, PyAny>>,
+    ) -> PyResult<CompassArrays<'py>> {
+        let opts = options(method, samples, rtol, atol, max_steps)?;
+        let turns = turns
+            .into_iter()
+            .map(|(time, duration, speed, course)| Turn {
+                time,
+                duration,
+                speed,
+                course,
+            })
+            .collect();
+        let track = Track::new(Ship::new(speed, course).py()?, turns).py()?;
+        let c = self.inner;
+        let out = run(py, progress.as_ref(), || {
+            c.simulate_track(duration, heading0, tilt0, &track, &opts)
+        })?;
+        Ok((
+            PyArray1::from_vec(py, out.t),
+            PyArray1::from_vec(py, out.heading),
+            PyArray1::from_vec(py, out.tilt),
+            PyArray1::from_vec(py, out.latitude),
+        ))
+    }
+
+    /// (heading, tilt, envelope) arrays (rad) of the linear solution at the times t (s), and
+    /// the settled (heading, tilt) (rad).
+    fn linear_solution<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyReadonlyArray1<'py, f64>,
+        heading0: f64,
+        tilt0: f64,
+        speed: f64,
+        course: f64,
+    ) -> PyResult<LinearArrays<'py>> {
+        let ship = Ship::new(speed, course).py()?;
+        let out = self
+            .inner
+            .linear_solution(&vec_in(&t), heading0, tilt0, Some(ship))
+            .py()?;
+        Ok((
+            PyArray1::from_vec(py, out.heading),
+            PyArray1::from_vec(py, out.tilt),
+            PyArray1::from_vec(py, out.envelope),
+            (out.settled_heading, out.settled_tilt),
+        ))
+    }
 }
+
+/// The linear solution's heading, tilt and envelope (rad) and the settled (heading, tilt).
+type LinearArrays<'py> = (
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<f64>>,
+    (f64, f64),
+);
 
 /// A carried body's run: the inertial trajectory, and the relative attitude (N, 4), the frame's
 /// attitude (N, 4) and the relative ω (N, 3).

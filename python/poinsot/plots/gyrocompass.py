@@ -6,7 +6,7 @@ The physics comes from :class:`poinsot.Gyrocompass`; these functions only draw (
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, cast
 
 import numpy as np
 
@@ -30,10 +30,11 @@ def plot_gyrocompass(
     """The compass settling on the meridian, two panels against time (min): the heading of
     the spin axis (degrees east of north) and its tilt (degrees), from the full simulation
     ``run`` (:meth:`Gyrocompass.simulate`; default three periods from 10° east of north, at
-    ``speed`` (m/s) on ``course`` (rad)), with the linearised prediction: the settled heading
-    −(latitude error + speed error) and the envelope of the damped swing about it, ±A e^{−ζ ω_n t}
-    with A = |α₀ − α*|/√(1 − ζ²) (started at the settled tilt). ``style``: ``"paper"`` or
-    ``"slides"``."""
+    ``speed`` (m/s) on ``course`` (rad)), with the linearised prediction
+    (:meth:`Gyrocompass.linear_solution`, from the run's first heading and tilt): the settled
+    heading −(latitude error + speed error) and the envelope of the damped swing about it,
+    ±A e^{−ζ ω_n t} (A = |α₀ − α*|/√(1 − ζ²) started at the settled tilt). ``style``:
+    ``"paper"`` or ``"slides"``."""
     if not isinstance(compass, Gyrocompass):
         from ..errors import ArgumentTypeError
 
@@ -47,10 +48,13 @@ def plot_gyrocompass(
     with figure_style(style) as style:
         fig, (top, bottom) = subplots(style, 8.0, 5.6, 2, 1, sharex=True)
         minutes = run.t / 60.0
-        settled = -(compass.settle_error + compass.speed_error(speed, course))
+        linear = compass.linear_solution(
+            run.t, run.heading[0], tilt0=run.tilt[0], speed=speed, course=course
+        )
+        # linear_solution always sets both (None only on a simulated run).
+        settled = cast(float, linear.settled_heading)
+        env = cast(np.ndarray, linear.envelope)
         zeta = compass.damping
-        amp = abs(run.heading[0] - settled) / np.sqrt(1.0 - zeta**2)
-        env = amp * np.exp(-zeta * compass.natural_frequency * run.t)
         top.plot(minutes, np.degrees(run.heading), lw=line_width(), label="simulated (full)")
         top.axhline(np.degrees(settled), color="k", lw=0.8, ls="--", label="settled (linear)")
         for sign in (1.0, -1.0):
