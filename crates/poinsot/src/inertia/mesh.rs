@@ -53,6 +53,8 @@
 //! lock-free union-find (the components). `O(n · degree)`, parallel (rayon: each task owns a
 //! range of low vertices; no `unsafe`).
 
+use std::sync::atomic::{AtomicBool, Ordering};
+
 use rayon::prelude::*;
 
 use crate::control::Cancel;
@@ -104,9 +106,9 @@ pub fn mesh_mass_properties<I: FaceIndex>(
     check_positive("density", density)?;
     // On a helper thread while this one polls the monitor: Ctrl-C stops it between phases.
     crate::control::parallel((faces.len() / 3) as u64, |cancel| {
-        let tris = checked_arrays(vertices, faces)?;
+        let (tris, all) = checked_arrays(vertices, faces)?;
         cancel.check()?;
-        solid(vertices, &tris, density, None, cancel)
+        solid(vertices, &tris, all, density, None, cancel)
     })
 }
 
@@ -122,24 +124,29 @@ pub fn mesh_mass_properties_merging<I: FaceIndex>(
 ) -> Result<MassProperties> {
     check_positive("density", density)?;
     crate::control::parallel((faces.len() / 3) as u64, |cancel| {
-        let mut tris = checked_arrays(vertices, faces)?;
+        let (mut tris, all) = checked_arrays(vertices, faces)?;
         let tolerance = merge_close_vertices(vertices, &mut tris, cancel)?;
-        solid(vertices, &tris, density, Some(tolerance), cancel)
+        solid(vertices, &tris, all, density, Some(tolerance), cancel)
     })
 }
 
-/// The checks and integrals of a mesh whose arrays are checked; `merged`: the distance within
-/// which vertices were merged (for the messages), if they were.
+/// The checks and integrals of a mesh whose arrays are checked; `all`: the box of every
+/// vertex ([`checked_arrays`]); `merged`: the distance within which vertices were merged (for
+/// the messages), if they were.
 fn solid(
     vertices: &[f64],
     tris: &[[u32; 3]],
+    all: Bounds,
     density: f64,
     merged: Option<f64>,
     cancel: &Cancel,
 ) -> Result<MassProperties> {
-    let (comp, ncomp) = check_topology(vertices.len() / 3, tris, merged, cancel)?;
+    let (comp, ncomp, every_vertex_used) =
+        check_topology(vertices.len() / 3, tris, merged, cancel)?;
     cancel.check()?;
-    let parts = integrate_parts(vertices, tris, &comp, ncomp, cancel)?;
+    // The box of the used vertices is that of all when every vertex is used.
+    let used_box = every_vertex_used.then_some(all);
+    let parts = integrate_parts(vertices, tris, &comp, ncomp, used_box, cancel)?;
     cancel.check()?;
     let whole = match assemble(&parts, tris.len()) {
         Ok(whole) => whole,
@@ -262,8 +269,9 @@ pub fn mesh_mass_properties_rows(
     mesh_mass_properties(vertices.as_flattened(), faces.as_flattened(), density)
 }
 
-/// Shapes, index ranges and finiteness; returns the faces as `u32` rows.
-fn checked_arrays<I: FaceIndex>(vertices: &[f64], faces: &[I]) -> Result<Vec<[u32; 3]>> {
+/// Shapes, index ranges and finiteness; returns the faces as `u32` rows and the box of all the
+/// vertices (folded in the finiteness pass: no pass of its own).
+fn checked_arrays<I: FaceIndex>(vertices: &[f64], faces: &[I]) -> Result<(Vec<[u32; 3]>, Bounds)> {
     if !vertices.len().is_multiple_of(3) {
         return Err(Error::mesh(
             "vertices",
@@ -326,11 +334,29 @@ fn checked_arrays<I: FaceIndex>(vertices: &[f64], faces: &[I]) -> Result<Vec<[u3
             ),
         ));
     }
-    // Non-finite coordinates: find the block, then the vertex.
+    // Non-finite coordinates: find the block, then the vertex; the box of the vertices on the
+    // way (order-independent where it is used: see integrate_parts).
     let block = 3 * CHUNK;
-    if let Some(c) = vertices
+    let (finite, all) = vertices
         .par_chunks(block)
-        .position_first(|c| !c.iter().all(|x| x.is_finite()))
+        .map(|c| {
+            let rows = c.as_chunks::<3>().0;
+            (
+                c.iter().all(|x| x.is_finite()),
+                Bounds::of(rows.iter().copied()),
+            )
+        })
+        .reduce(
+            || (true, Bounds::EMPTY),
+            |(f1, b1), (f2, b2)| (f1 && f2, b1.union(b2)),
+        );
+    if let Some(c) = (!finite)
+        .then(|| {
+            vertices
+                .chunks(block)
+                .position(|c| !c.iter().all(|x| x.is_finite()))
+        })
+        .flatten()
     {
         let k = c * block
             + vertices[c * block..]
@@ -346,7 +372,7 @@ fn checked_arrays<I: FaceIndex>(vertices: &[f64], faces: &[I]) -> Result<Vec<[u3
             ),
         ));
     }
-    Ok(tris)
+    Ok((tris, all))
 }
 
 /// The most vertices: the edge check packs a vertex index and a direction bit in a `u32`.
@@ -497,13 +523,15 @@ const POLL_FACES: usize = 1 << 16;
 /// list is sorted and its runs classified: one use is a boundary edge, more than two a
 /// non-manifold edge, two uses in the same direction an inconsistent orientation.
 /// On success, returns each face's component (faces connected across shared edges; `UNUSED`
-/// for faces with a repeated index) and the number of components.
+/// for faces with a repeated index), the number of components, and whether every vertex is
+/// used by a face with three distinct indices (an end of an edge filed: the low ends have a
+/// list, the high ends are marked as the lists are read).
 fn check_topology(
     nv: usize,
     tris: &[[u32; 3]],
     merged: Option<f64>,
     cancel: &Cancel,
-) -> Result<(Vec<u32>, usize)> {
+) -> Result<(Vec<u32>, usize, bool)> {
     // Entries: (high vertex << 1 | direction) << 32 | face.
     let (start, mut list) = file_by_vertex(nv, tris, cancel, |f, t| {
         if index_degenerate(t) {
@@ -524,6 +552,7 @@ fn check_topology(
         rest = tail;
     }
     let components = UnionFind::new(tris.len());
+    let high_end: Vec<AtomicBool> = (0..nv).map(|_| AtomicBool::new(false)).collect();
     let defects = blocks
         .into_par_iter()
         .map(|(v0, v1, piece)| {
@@ -546,6 +575,7 @@ fn check_topology(
                     }
                     let uses = (j - i) as u32;
                     let a = a as u32;
+                    high_end[b as usize].store(true, Ordering::Relaxed);
                     if uses == 2 {
                         // The two faces of a manifold edge are in one component.
                         components.union(edges[i] as u32, edges[i + 1] as u32);
@@ -607,6 +637,11 @@ fn check_topology(
     if !problems.is_empty() {
         return Err(Error::mesh("faces", problems.join("; ")));
     }
+    let every_vertex_used = high_end
+        .par_iter()
+        .enumerate()
+        .with_min_len(CHUNK)
+        .all(|(v, h)| start[v + 1] > start[v] || h.load(Ordering::Relaxed));
     // Compact component labels, in order of each component's lowest face.
     let roots: Vec<u32> = (0..tris.len() as u32)
         .into_par_iter()
@@ -638,7 +673,7 @@ fn check_topology(
             }
         })
         .collect();
-    Ok((comp, n as usize))
+    Ok((comp, n as usize, every_vertex_used))
 }
 
 /// The face sums of one component, on coordinates relative to its reference point `p` (the
@@ -697,11 +732,15 @@ impl Faces<'_> {
 /// Integrates each component about a point of its own (module docs). (The star-shaped proof
 /// of the embedding is a pass of its own: fused into this one it made the pass slower than
 /// both apart on a 1.3 M-face sphere, 165–180 ms against 65–77 + 63–80 ms on one thread.)
+/// `used_box`: the box of the vertices that faces outside `UNUSED` use, when it is known (the
+/// box of all the vertices, when every one is used): a single component's box is then not
+/// folded again from its faces' corners.
 fn integrate_parts(
     vertices: &[f64],
     tris: &[[u32; 3]],
     comp: &[u32],
     ncomp: usize,
+    used_box: Option<Bounds>,
     cancel: &Cancel,
 ) -> Result<Vec<Part>> {
     // Faces grouped by component (a counting sort), unless there is one.
@@ -736,15 +775,19 @@ fn integrate_parts(
             } else {
                 Faces::Members(&members[start[k]..start[k + 1]])
             };
-            // The box of the component's vertices (unused vertices play no part).
-            let Bounds { lo, hi } = (0..faces.chunks())
-                .into_par_iter()
-                .map(|c| {
-                    let mut b = Bounds::EMPTY;
-                    faces.each(c, |f| b = b.with(tris[f].map(vertex)));
-                    b
-                })
-                .reduce(|| Bounds::EMPTY, Bounds::union);
+            // The box of the component's vertices (unused vertices play no part): the box of
+            // the used vertices when there is one component, else a pass over its faces.
+            let Bounds { lo, hi } = match used_box.filter(|b| ncomp == 1 && same_centre(b)) {
+                Some(b) => b,
+                None => (0..faces.chunks())
+                    .into_par_iter()
+                    .map(|c| {
+                        let mut b = Bounds::EMPTY;
+                        faces.each(c, |f| b = b.with(tris[f].map(vertex)));
+                        b
+                    })
+                    .reduce(|| Bounds::EMPTY, Bounds::union),
+            };
             // Halves first: no overflow for coordinates near ±1.8e308.
             let p = [0, 1, 2].map(|j| 0.5 * lo[j] + 0.5 * hi[j]);
             let half = (0..3).fold(0.0f64, |m, j| m.max(0.5 * hi[j] - 0.5 * lo[j]));
@@ -826,6 +869,17 @@ fn integrate_parts(
         .collect();
     cancel.check()?;
     Ok(parts)
+}
+
+/// A box folded in another order (the vertices' instead of the faces' corners) has the same
+/// bounds but for the sign of a zero bound (`min2` keeps the first of `−0.0` and `0.0`): `true`
+/// when that sign cannot change the part's centre `½ lo + ½ hi` or half-extent, i.e. on each
+/// axis a zero bound is met by a non-zero half of the other (`½ x ± 0 = ½ x` for `½ x ≠ 0`), so
+/// that the sums are the same, bit for bit, whichever fold gave the box.
+fn same_centre(b: &Bounds) -> bool {
+    (0..3).all(|k| {
+        (b.lo[k] != 0.0 || 0.5 * b.hi[k] != 0.0) && (b.hi[k] != 0.0 || 0.5 * b.lo[k] != 0.0)
+    })
 }
 
 /// The signed volume of a part relative to the tetrahedra it was summed from: `+1`, `−1`, or
@@ -1257,6 +1311,72 @@ mod tests {
         let b = mesh_mass_properties_rows(&v, &f, 1.0).unwrap();
         let exact = 2.0 * std::f64::consts::PI.powi(2) * 0.3 * 0.3;
         assert!((b.mass() - exact).abs() < 0.02 * exact, "{}", b.mass());
+    }
+
+    /// Issue 21 item 17: a single component's box comes from the vertices' box (folded in the
+    /// finiteness pass) when the edge check finds every vertex used, and the sums are then the
+    /// same, bit for bit, as from the box of the faces' corners; a vertex that no face uses, or
+    /// only a face with a repeated index, is seen (the box is then folded from the faces), and
+    /// signed zeros on the box are harmless (`same_centre`).
+    #[test]
+    fn vertex_box_stands_in_for_the_faces_box() {
+        let run = |v: &[[f64; 3]], f: &[[u32; 3]]| {
+            let cancel = Cancel::new(0);
+            let (tris, all) = checked_arrays(v.as_flattened(), f.as_flattened()).unwrap();
+            let (comp, ncomp, used) = check_topology(v.len(), &tris, None, &cancel).unwrap();
+            let slow = integrate_parts(v.as_flattened(), &tris, &comp, ncomp, None, &cancel);
+            let fast = integrate_parts(v.as_flattened(), &tris, &comp, ncomp, Some(all), &cancel);
+            let bits = |parts: Vec<Part>| -> Vec<(Vec<u64>, i32, u64)> {
+                parts
+                    .iter()
+                    .map(|p| {
+                        let mut x: Vec<u64> = p.p.iter().map(|y| y.to_bits()).collect();
+                        x.extend(p.s.iter().map(|y| y.to_bits()));
+                        (x, p.e, p.degenerate)
+                    })
+                    .collect()
+            };
+            let same = bits(slow.unwrap()) == bits(fast.unwrap());
+            (used, all, same)
+        };
+        // A sphere: every vertex used, the two boxes' sums agree.
+        let (v, f) = wound_sphere(30, 40, 1.0);
+        let (used, _, same) = run(&v, &f);
+        assert!(used && same);
+        // A cube with −0.0 and 0.0 on its lower bounds (in both orders).
+        let (mut v, f) = cube();
+        for (i, p) in v.iter_mut().enumerate() {
+            for x in p.iter_mut() {
+                if *x == 0.0 && i % 2 == 1 {
+                    *x = -0.0;
+                }
+            }
+        }
+        let (used, all, same) = run(&v, &f);
+        assert!(used && same && same_centre(&all));
+        // A far vertex that no face uses: not every vertex is used, and its box is not the
+        // component's.
+        let (mut v, f) = cube();
+        v.push([1e6, 0.0, 0.0]);
+        let (used, all, _) = run(&v, &f);
+        assert!(!used && all.hi[0] == 1e6);
+        // A vertex only in a face with a repeated index: not used either.
+        let (mut v, mut f) = cube();
+        v.push([-5.0, 0.0, 0.0]);
+        f.push([8, 8, 0]);
+        let (used, _, _) = run(&v, &f);
+        assert!(!used);
+        // Zero bounds whose sign would matter: the faces' fold decides.
+        let flat = Bounds {
+            lo: [-0.0, 0.0, -1.0],
+            hi: [0.0, 1.0, 1.0],
+        };
+        assert!(!same_centre(&flat));
+        let tiny = Bounds {
+            lo: [-f64::from_bits(1), 0.0, -1.0],
+            hi: [0.0, 1.0, 1.0],
+        };
+        assert!(!same_centre(&tiny));
     }
 
     /// The indices are converted and checked in one pass by chunks: the first index out of
