@@ -303,25 +303,22 @@ core_export! {
     }
 }
 
-/// `#[export] impl PyEarth { … }`: the methods written out after the lists, a getter per field
-/// of the core's `Earth` listed in `fields { … }` (f64), and one method per quantity of the
-/// core's `Earth` named after it, at (N,) latitudes (`per_latitude { … }`, through
+/// `core_export! { impl PyEarth; new { … } … }`: the Earth made from its fields (`new { … }`, as
+/// in `core_export!`), the methods written out after the lists, and one method per quantity of
+/// the core's `Earth` named after it, at (N,) latitudes (`per_latitude { … }`, through
 /// [`per_latitude`]) or at (N,) heights and latitudes (`per_height { … }`, through
 /// [`per_height`]). pyo3 takes one `#[pymethods]` block per class, so the generated methods go
 /// into that block.
 macro_rules! earth_export {
     (
-        fields { $($field:ident),* }
+        new { $($new:tt)* }
         per_latitude { $($(#[$ldoc:meta])* $lat:ident;)* }
         per_height { $($(#[$hdoc:meta])* $height:ident;)* }
         $($methods:tt)*
     ) => {
-        #[export]
-        impl PyEarth {
-            $(#[getter]
-            fn $field(&self) -> f64 {
-                self.inner.$field
-            })*
+        core_export! {
+            impl PyEarth;
+            new { $($new)* }
             $($(#[$ldoc])*
             fn $lat(&self, py: Python<'_>, latitude: PyReadonlyArray1<'_, f64>) -> PyResult<Values> {
                 per_latitude(py, &latitude, |l| self.inner.$lat(l)).map(Values)
@@ -341,7 +338,11 @@ macro_rules! earth_export {
 }
 
 earth_export! {
-    fields { rotation_rate, radius, g }
+    new {
+        /// The Earth of rate (rad/s, ≥ 0), radius (m, > 0) and gravity (m/s², > 0); errors name
+        /// them.
+        (rotation_rate: f64, radius: f64, g: f64) = Earth::new;
+    }
     per_latitude {
         /// f = 2 ω sin λ (1/s) at (N,) latitudes.
         coriolis_parameter;
@@ -359,19 +360,6 @@ earth_export! {
         eastward_deflection;
         /// The second-order southward deflection (m) for (N,) heights and latitudes.
         southward_deflection;
-    }
-
-    /// The Earth of rate (rad/s, ≥ 0), radius (m, > 0) and gravity (m/s², > 0); errors name them.
-    #[new]
-    fn new(rotation_rate: f64, radius: f64, g: f64) -> PyResult<Self> {
-        Ok(Self {
-            inner: Earth::new(rotation_rate, radius, g).py()?,
-        })
-    }
-
-    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> (Bound<'py, PyType>, (f64, f64, f64)) {
-        let e = slf.get().inner;
-        (slf.get_type(), (e.rotation_rate, e.radius, e.g))
     }
 
 

@@ -19,15 +19,28 @@ macro_rules! add_functions {
 /// name -> Type; name.map(Wrapper) -> Wrapper; … }` for a core `Result` (its error mapped by
 /// `IntoPy`, its value wrapped when `.map` says so), and `fields { name -> Type; name in
 /// path -> Type; … }` for a field of the core value (`self.inner.name`, or
-/// `self.inner.path.name`), copied. Each list may be left out (`fallible` and `fields` need the
-/// lists before them, empty or not). pyo3 takes one `#[pymethods]` block per class, so the
-/// getters go into that block.
+/// `self.inner.path.name`), copied. `new { (a: A, b: B) = make; }` is a value made from its
+/// fields: the constructor `#[new] fn new(a, b)` (`make(a, b)`, its error mapped), the
+/// pickling `__reduce__` (the class and `(inner.a, inner.b)`) and a getter per field. Each list
+/// may be left out; those given come in this order. pyo3 takes one `#[pymethods]` block per
+/// class, so the getters go into that block.
 macro_rules! core_export {
+    (impl $class:ident; $($rest:tt)*) => { core_export! { @getters $class $($rest)* } };
+    // Each list, given or empty, gathered in brackets.
+    (@getters $c:ident getters { $($l:tt)* } $($rest:tt)*) => { core_export! { @fallible $c [$($l)*] $($rest)* } };
+    (@getters $c:ident $($rest:tt)*) => { core_export! { @fallible $c [] $($rest)* } };
+    (@fallible $c:ident $g:tt fallible { $($l:tt)* } $($rest:tt)*) => { core_export! { @fields $c $g [$($l)*] $($rest)* } };
+    (@fallible $c:ident $g:tt $($rest:tt)*) => { core_export! { @fields $c $g [] $($rest)* } };
+    (@fields $c:ident $g:tt $f:tt fields { $($l:tt)* } $($rest:tt)*) => { core_export! { @new $c $g $f [$($l)*] $($rest)* } };
+    (@fields $c:ident $g:tt $f:tt $($rest:tt)*) => { core_export! { @new $c $g $f [] $($rest)* } };
+    (@new $c:ident $g:tt $f:tt $v:tt new { $($l:tt)* } $($rest:tt)*) => { core_export! { @all $c $g $f $v [$($l)*] $($rest)* } };
+    (@new $c:ident $g:tt $f:tt $v:tt $($rest:tt)*) => { core_export! { @all $c $g $f $v [] $($rest)* } };
     (
-        impl $class:ident;
-        getters { $($(#[$doc:meta])* $name:ident $(.$then:ident())* -> $out:ty;)* }
-        fallible { $($(#[$fdoc:meta])* $fname:ident $(.map($wrap:path))? -> $fout:ty;)* }
-        fields { $($(#[$vdoc:meta])* $vname:ident $(in $($path:ident).+)? -> $vout:ty;)* }
+        @all $class:ident
+        [$($(#[$doc:meta])* $name:ident $(.$then:ident())* -> $out:ty;)*]
+        [$($(#[$fdoc:meta])* $fname:ident $(.map($wrap:path))? -> $fout:ty;)*]
+        [$($(#[$vdoc:meta])* $vname:ident $(in $($path:ident).+)? -> $vout:ty;)*]
+        [$($(#[$ndoc:meta])* ($($arg:ident: $aty:ty),+ $(,)?) = $make:path;)?]
         $($methods:tt)*
     ) => {
         #[::poinsot_py_macros::export]
@@ -47,14 +60,26 @@ macro_rules! core_export {
             fn $vname(&self) -> $vout {
                 self.inner$($(.$path)+)?.$vname
             })*
+            $($(#[$ndoc])*
+            #[new]
+            fn new($($arg: $aty),+) -> ::pyo3::PyResult<Self> {
+                Ok(Self {
+                    inner: crate::errors::IntoPy::py($make($($arg),+))?,
+                })
+            }
+            /// The value made again from its fields (pickling).
+            fn __reduce__<'py>(
+                slf: &::pyo3::Bound<'py, Self>,
+            ) -> (::pyo3::Bound<'py, ::pyo3::types::PyType>, ($($aty,)+)) {
+                let inner = &slf.get().inner;
+                (slf.get_type(), ($(inner.$arg,)+))
+            }
+            $(#[getter]
+            fn $arg(&self) -> $aty {
+                self.inner.$arg
+            })+)?
             $($methods)*
         }
-    };
-    (impl $class:ident; getters { $($getters:tt)* } fallible { $($fallible:tt)* } $($methods:tt)*) => {
-        core_export! { impl $class; getters { $($getters)* } fallible { $($fallible)* } fields {} $($methods)* }
-    };
-    (impl $class:ident; getters { $($getters:tt)* } $($rest:tt)*) => {
-        core_export! { impl $class; getters { $($getters)* } fallible {} $($rest)* }
     };
 }
 

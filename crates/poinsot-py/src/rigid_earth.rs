@@ -6,7 +6,6 @@ use numpy::{PyArray1, PyReadonlyArray1};
 use poinsot::earth::{self as ea, RigidEarth};
 use poinsot_py_macros::export;
 use pyo3::prelude::*;
-use pyo3::types::PyType;
 
 use crate::control::run;
 use crate::convert::vec_in;
@@ -39,30 +38,10 @@ core_export! {
         /// The same (Δψ₀, Δε₀) in closed form from the Moon's precession part (rad).
         nutation_amplitudes_by_precession -> (f64, f64);
     }
-    fields {
-        /// H = (C − A)/C.
-        dynamical_flattening -> f64;
-        /// ω (rad/s).
-        rotation_rate -> f64;
-        /// ε (rad).
-        obliquity -> f64;
-    }
-
-    /// The rigid Earth of dynamical flattening H ∈ (0, 1), rate ω > 0 (rad/s) and obliquity
-    /// ε ∈ [0, π/2) (rad); errors name them.
-    #[new]
-    fn new(dynamical_flattening: f64, rotation_rate: f64, obliquity: f64) -> PyResult<Self> {
-        Ok(Self {
-            inner: RigidEarth::new(dynamical_flattening, rotation_rate, obliquity).py()?,
-        })
-    }
-
-    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> (Bound<'py, PyType>, (f64, f64, f64)) {
-        let e = slf.get().inner;
-        (
-            slf.get_type(),
-            (e.dynamical_flattening, e.rotation_rate, e.obliquity),
-        )
+    new {
+        /// The rigid Earth of dynamical flattening H = (C − A)/C ∈ (0, 1), rate ω > 0 (rad/s)
+        /// and obliquity ε ∈ [0, π/2) (rad); errors name them.
+        (dynamical_flattening: f64, rotation_rate: f64, obliquity: f64) = RigidEarth::new;
     }
 
     /// The Chandler period T_E ks/(ks − k2) (s) for Love numbers 0 < k2 < ks.
