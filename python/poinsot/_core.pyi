@@ -76,6 +76,10 @@ class _RigidEarthSimulate(TypedDict):
     moon_node: float
     max_steps: int
 
+class _RigidEarthAveragedPole(TypedDict):
+    moon_node: float
+    nutation_scale: float
+
 class _PolarMotion(TypedDict):
     source: str
 
@@ -178,6 +182,7 @@ _Defaults = TypedDict(
         "Earth.solar_day": _SolarDay,
         "RigidEarth.__init__": _RigidEarth,
         "RigidEarth.simulate": _RigidEarthSimulate,
+        "RigidEarth.averaged_pole": _RigidEarthAveragedPole,
         "polar_motion": _PolarMotion,
         "fit_wobble": _FitWobble,
         "Earth.drop": _Fall,
@@ -684,6 +689,9 @@ class RigidEarthCore:
     def simulate(
         self, duration: float, samples: int, moon_node: float, mean_pole: bool, max_steps: int
     ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], float, float]: ...
+    def averaged_pole(
+        self, t: NDArray[np.float64], moon_node: float, nutation_scale: float
+    ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]: ...
 
 def fit_pole(
     t: NDArray[np.float64],

@@ -14,16 +14,17 @@ SI units and radians: periods in s, rates in rad/s, amplitudes in rad.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
 from . import _core
 from ._props import core_property
-from ._validate import FloatArray, as_angle, as_count, as_flag, as_scalar
+from ._validate import FloatArray, as_angle, as_count, as_flag, as_float_array, as_scalar
 from .earth import SIDEREAL_RATE
 
 __all__ = [
+    "AveragedPole",
     "DYNAMICAL_FLATTENING",
     "IAU2000A_PRINCIPAL_NUTATION",
     "IAU2006_PRECESSION_RATE",
@@ -34,6 +35,7 @@ __all__ = [
 ]
 
 _SIMULATE = _core.DEFAULTS["RigidEarth.simulate"]
+_AVERAGED = _core.DEFAULTS["RigidEarth.averaged_pole"]
 
 #: H = (C − A)/C, the Earth's dynamical flattening: 0.003273795 (IERS Conventions 2010,
 #: Table 1.1).
@@ -128,6 +130,28 @@ class PoleRun:
             float(self.node_rate),
         )
         return PoleFit(*(float(x) for x in got))
+
+
+class AveragedPole(NamedTuple):
+    """The rigid Earth's averaged pole at given times (:meth:`RigidEarth.averaged_pole`): the
+    uniform luni-solar precession plus the principal (18.6-year) nutation. Each array has the
+    shape of the times asked for.
+
+    Attributes
+    ----------
+    psi:
+        ψ(t), the precession angle of the spin axis (rad, unwrapped): its ecliptic longitude
+        counted westward from its place at t = 0, the IAU's ψ_A plus the nutation Δψ; the
+        negative of :attr:`PoleRun.longitude`.
+    obliquity:
+        ε(t), the angle of the spin axis from the ecliptic's pole (rad).
+    moon_node:
+        Ω(t), the ecliptic longitude of the Moon's ascending node (rad, unwrapped).
+    """
+
+    psi: FloatArray
+    obliquity: FloatArray
+    moon_node: FloatArray
 
 
 class RigidEarth:
@@ -279,6 +303,55 @@ class RigidEarth:
             as_count(max_steps, "max_steps"),
         )
         return PoleRun(t, lon, obl, float(node0), float(node_rate))
+
+    def averaged_pole(
+        self,
+        t: Any,
+        *,
+        moon_node: Any = _AVERAGED["moon_node"],
+        nutation_scale: float = _AVERAGED["nutation_scale"],
+        degrees: bool = False,
+    ) -> AveragedPole:
+        """The averaged pole at the times ``t``: the mean pole precessing uniformly about the
+        ecliptic pole, nodding with the principal nutation (the core's closed form),
+
+        Ω(t) = Ω₀ − 2π t/T_node,  ψ(t) = −P t + s Δψ₀ sin Ω(t),  ε(t) = ε₀ + s Δε₀ cos Ω(t),
+
+        P the :attr:`precession_rate` (rad/s, negative: ψ grows westward at |P|), (Δψ₀, Δε₀)
+        the :attr:`nutation_amplitudes` (rad), ε₀ the :attr:`obliquity`, T_node the Moon's
+        nodal period (18.6 years). It is the pole :meth:`simulate` with ``mean_pole=True`` and
+        the same ``moon_node`` integrates from the instantaneous torques, to within the
+        semi-annual and fortnightly nods (about 2″) that the average leaves out.
+
+        Parameters
+        ----------
+        t:
+            Times (s; or a pint quantity), any shape.
+        moon_node:
+            Ω₀, the ecliptic longitude of the Moon's ascending node at t = 0 (rad, or degrees
+            with ``degrees=True``).
+        nutation_scale:
+            s, the factor on the nutation (dimensionless, ≥ 0): 1 is the Earth's, 0 the mean
+            pole alone; a drawing uses more to make the 9″ nod visible.
+        degrees:
+            Whether a plain-number ``moon_node`` is in degrees (the results stay in rad).
+
+        Returns
+        -------
+        AveragedPole
+            ``psi``, ``obliquity`` and ``moon_node`` (rad), each of the shape of ``t``.
+
+        Raises PoinsotError naming ``t``, ``moon_node``, ``nutation_scale`` or (at obliquity
+        0, where the nutation in longitude is undefined) ``obliquity``.
+        """
+        times = as_float_array(t, "t")
+        psi, obl, node = self._core.averaged_pole(
+            np.ascontiguousarray(times.ravel()),
+            as_angle(moon_node, "moon_node", degrees),
+            as_scalar(nutation_scale, "nutation_scale"),
+        )
+        shape = times.shape
+        return AveragedPole(psi.reshape(shape), obl.reshape(shape), node.reshape(shape))
 
     @property
     def precession_parts(self) -> tuple[float, float]:

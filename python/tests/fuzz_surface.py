@@ -311,6 +311,7 @@ VALID_FOR: dict[str, dict[str, Any]] = {
     "HeavyTop.effective_potential": {"theta": [0.3, 0.5, 1.0]},
     "HeavyTop.effective_potential_derivative": {"theta": [0.3, 0.5, 1.0]},
     "HeavyTop.euler_angles": {"t": [0.0, 0.5, 3.0]},
+    "RigidEarth.averaged_pole": {"t": [0.0, 3.15e7, 6e8]},
     "HeavyTop.lagrangian": {"theta": 0.5},
     "FreeRigidBody.contact_point": {"frame": "space"},
     "FreeRigidBody.contact_polhode": {"samples": 31},
@@ -345,6 +346,7 @@ RESULT_TYPES = {
     "CompassRun",
     "PoleRun",
     "PoleFit",
+    "AveragedPole",
 }
 
 #: Valid instances whose methods and properties are fuzzed, by class name.

@@ -126,7 +126,10 @@ def _python_params(name: str) -> list[inspect.Parameter]:
     obj: object = _core
     for part in name.split("."):
         obj = getattr(obj, part)
-    return list(inspect.signature(obj).parameters.values())  # type: ignore[arg-type]
+    params = list(inspect.signature(obj).parameters.values())  # type: ignore[arg-type]
+    # A method of a binding class (``RigidEarthCore.averaged_pole``), read unbound: its receiver
+    # is not one of the core's parameters.
+    return [p for p in params if p.name != "self"]
 
 
 def _norm(name: str) -> str:

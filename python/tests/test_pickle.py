@@ -201,6 +201,9 @@ CASES: dict[str, list[tuple[Callable[[], Any], Callable[[Any], Any]]]] = {
         (lambda: ps.RigidEarth(0.004, 7e-5, 0.3), lambda e: (e.euler_period, e.precession_rate))
     ],
     "PoleRun": [(lambda: _pole_run(), lambda r: (r.t, r.longitude, r.obliquity, r.fit()))],
+    "AveragedPole": [
+        (lambda: ps.RigidEarth().averaged_pole([0.0, 3e8], moon_node=0.4), lambda p: p.psi)
+    ],
     "PoleFit": [
         (lambda: _pole_run().fit(), lambda f: (f.precession_rate, f.nutation_longitude, repr(f)))
     ],

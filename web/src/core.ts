@@ -16,9 +16,10 @@ export const coreStatus = core.coreStatus;
 export const {
   version, start, errorClasses, eulerToMatrix, matrixToEuler, rotationAxis, screwAxis, bodyAngularVelocity,
   eulerRates, axisStability, simulateParticle, sampleTimes, fitWobble, freeGyroscope,
-  AxisStability, CompassRun, Earth, EulerAngles, Fall, FixedMotion, FoucaultRun, FreeRigidBody, FreeSymmetricTop, Gyrocompass, HeavyTop,
+  AveragedPole, AxisStability, CompassRun, Earth, EulerAngles, Fall, FixedMotion, FoucaultRun, FreeRigidBody, FreeSymmetricTop, Gyrocompass, HeavyTop,
   InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, RigidEarth, Screw, SpringParticle, SteadyPrecession, WobbleFit, WobbleTerm,
 } = core;
+export type AveragedPole = raw.AveragedPole;
 export type AxisStability = raw.AxisStability;
 export type CompassRun = raw.CompassRun;
 export type Earth = raw.Earth;
@@ -46,7 +47,7 @@ export type WobbleTerm = raw.WobbleTerm;
 const exported = {
   version, start, errorClasses, eulerToMatrix, matrixToEuler, rotationAxis, screwAxis, bodyAngularVelocity,
   eulerRates, axisStability, simulateParticle, sampleTimes, fitWobble, freeGyroscope,
-  AxisStability, CompassRun, Earth, EulerAngles, Fall, FixedMotion, FoucaultRun, FreeRigidBody, FreeSymmetricTop, Gyrocompass, HeavyTop,
+  AveragedPole, AxisStability, CompassRun, Earth, EulerAngles, Fall, FixedMotion, FoucaultRun, FreeRigidBody, FreeSymmetricTop, Gyrocompass, HeavyTop,
   InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, RigidEarth, Screw, SpringParticle, SteadyPrecession, WobbleFit, WobbleTerm,
 };
 type Unlisted = Exclude<keyof typeof raw, keyof typeof exported | "default" | "initSync" | "__wbg_reset_state">;

@@ -393,21 +393,20 @@ def heavytop_case(params: dict[str, Any], t: float) -> dict[str, Any]:
 #: A Julian year (s), the clock of the Earth-as-a-top scene; the Moon's node regresses in
 #: 6798.38 days (JPL Horizons, Moon 301; the core's MOON_ORBIT.node_period, which the scene reads).
 YEAR = 365.25 * 86400.0
-MOON_NODE_PERIOD = 6798.38 * 86400.0
 ARCSEC = math.pi / 648000
 
 
 def earthtop_case(params: dict[str, Any], t: float) -> dict[str, Any]:
     """The rigid Earth's rates from the Python API, and the axis at the lab's time t (s, each
-    second ``yearsPerSecond`` years): longitude ψ = |ψ̇| t + Δψ₀ sin Ω, obliquity ε + Δε₀ cos Ω,
-    Ω = −2π t / T_node, the real (not exaggerated) nod."""
+    second ``yearsPerSecond`` years): the API's averaged pole (``RigidEarth.averaged_pole``:
+    longitude ψ = |ψ̇| t + Δψ₀ sin Ω, obliquity ε + Δε₀ cos Ω, Ω = −2π t / T_node, the node at 0
+    at the start), the real (not exaggerated) nod."""
     e = poinsot.RigidEarth(dynamical_flattening=params["flattening"], obliquity=params["obliquity"], degrees=True)
     years = t * params["yearsPerSecond"]
     ts = years * YEAR
     dpsi, deps = e.nutation_amplitudes
-    node = -2 * math.pi * ts / MOON_NODE_PERIOD
-    psi = abs(e.precession_rate) * ts + dpsi * math.sin(node)
-    eps = params["obliquity"] * DEG + deps * math.cos(node)
+    pole = e.averaged_pole(ts, moon_node=0.0)
+    psi, eps, node = float(pole.psi), float(pole.obliquity), float(pole.moon_node)
     readouts = {
         "years": years,
         "precessionPeriod": e.precession_period,

@@ -56,7 +56,7 @@ for name in sys.argv[1:]:
     obj = _core
     for part in name.split("."):
         obj = getattr(obj, part)
-    ps = list(inspect.signature(obj).parameters.values())
+    ps = [p for p in inspect.signature(obj).parameters.values() if p.name != "self"]  # a method, unbound
     out[name] = {"all": [p.name for p in ps],
                  "required": sum(p.default is inspect.Parameter.empty for p in ps)}
 print(json.dumps(out))`;

@@ -148,6 +148,8 @@ function worker({ seed, calls, deadlineMs }) {
       [FRAME, names()],
       [() => new core.SpringParticle(1, 2), names()],
       [() => new core.RigidEarth(3.273795e-3, 7.292115e-5, 0.409), names()],
+      // The averaged pole at three times (s), the node at 0.3 rad, the nod drawn ×1000.
+      [() => new core.RigidEarth(3.273795e-3, 7.292115e-5, 0.409).averagedPole([0, 3e7, 6e8], 0.3, 1000), names("t", "moon_node", "nutation_scale")],
       [() => core.Gyrocompass.schulerTuned(0.87, 1.2, 0.3, [5, 10, 10]), names()],
       // A short run (ten minutes, 11 samples) of the compass started 5° off north on a ship.
       [() => core.Gyrocompass.schulerTuned(0.87, 1.2, 0.3, [5, 10, 10]).simulate(600, 0.087, 0, 5, 0.3, 11), names("duration", "heading0", "tilt0", "speed", "course", "samples")],

@@ -114,6 +114,9 @@ fn calls() -> Vec<(&'static str, Row)> {
             "samples" => d::POLE_SAMPLES, "moon_node" => d::POLE_MOON_NODE,
             "max_steps" => d::POLE_MAX_STEPS,
         }),
+        ("RigidEarth.averaged_pole", row! {
+            "moon_node" => d::POLE_MOON_NODE, "nutation_scale" => d::NUTATION_SCALE,
+        }),
         ("polar_motion", row! { "source" => d::POLAR_MOTION_SOURCE }),
         ("fit_wobble", row! { "annual_period" => d::ANNUAL_PERIOD }),
         ("Earth.drop", drop()),

@@ -181,3 +181,42 @@ getters!(RigidEarth? {
     " The precession period 2π/|precession rate| (s): 25,714 Julian years for the defaults."
     precessionPeriod precession_period;
 });
+
+/// The rigid Earth's averaged pole at a list of times (`RigidEarth.averagedPole`;
+/// `poinsot.AveragedPole` in Python): the uniform precession plus the principal nutation.
+#[wasm_bindgen]
+#[derive(Debug, Clone)]
+pub struct AveragedPole {
+    inner: ea::AveragedPole,
+}
+
+fields!(AveragedPole {
+    " ψ(t), the precession angle of the spin axis (rad, unwrapped): its ecliptic longitude"
+    " counted westward from its place at t = 0, the IAU's ψ_A plus the nutation Δψ."
+    psi psi -> numbers(psi);
+    " ε(t), the obliquity: the angle of the spin axis from the ecliptic's pole (rad)."
+    obliquity obliquity -> numbers(obliquity);
+    " Ω(t), the ecliptic longitude of the Moon's ascending node (rad, unwrapped)."
+    moonNode moon_node -> numbers(moon_node);
+});
+
+#[wasm_bindgen]
+impl RigidEarth {
+    /// The averaged pole at the times `t` (s): Ω = Ω₀ − 2π t/T_node, ψ = −P t + s Δψ₀ sin Ω,
+    /// ε = ε₀ + s Δε₀ cos Ω, with P the precession rate, (Δψ₀, Δε₀) the principal nutation,
+    /// Ω₀ = `moonNode` (rad) and s = `nutationScale` (≥ 0; 1 the Earth's, larger to draw the
+    /// nod visibly). Errors name `t`, `moon_node`, `nutation_scale` or `obliquity`.
+    #[wasm_bindgen(js_name = averagedPole)]
+    pub fn averaged_pole(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ArrayLike<number>")] t: Numbers,
+        #[wasm_bindgen(unchecked_param_type = "number")] moon_node: crate::args::Number,
+        #[wasm_bindgen(unchecked_param_type = "number")] nutation_scale: crate::args::Number,
+    ) -> Out<AveragedPole> {
+        let t = numbers("t", &t)?;
+        let moon_node = crate::args::number("moon_node", &moon_node)?;
+        let nutation_scale = crate::args::number("nutation_scale", &nutation_scale)?;
+        let inner = self.inner.averaged_pole(&t, moon_node, nutation_scale)?;
+        Ok(AveragedPole { inner })
+    }
+}

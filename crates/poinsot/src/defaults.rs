@@ -20,7 +20,7 @@ pub use crate::earth::{
     LOW_RADIUS, LOW_SAMPLES, LOW_TOLERANCES, MEAN_RADIUS, OBLIQUITY_J2000, SIDEREAL_RATE,
     STANDARD_GRAVITY,
 };
-pub use crate::earth::{POLE_MAX_STEPS, POLE_MOON_NODE, POLE_SAMPLES};
+pub use crate::earth::{NUTATION_SCALE, POLE_MAX_STEPS, POLE_MOON_NODE, POLE_SAMPLES};
 pub use crate::frames::{PARTICLE_MASS, PARTICLE_SAMPLES, PARTICLE_TOLERANCES};
 pub use crate::inertia::{CubatureOptions, DEFAULT_KIND_RTOL};
 use crate::integrate::Tolerances;

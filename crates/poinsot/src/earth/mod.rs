@@ -14,6 +14,7 @@ mod pendulum_measurement;
 mod pendulum_theory;
 mod planet;
 mod rigid;
+mod rigid_pole;
 mod rigid_simulate;
 mod runs;
 mod winds;
@@ -36,6 +37,7 @@ pub use rigid::{
     IAU2000A_PRINCIPAL_NUTATION, IAU2006_PRECESSION_RATE, MOON_EARTH_MASS_RATIO, MOON_ORBIT,
     OBLIQUITY_J2000, SUN_ORBIT,
 };
+pub use rigid_pole::{AveragedPole, NUTATION_SCALE};
 pub use rigid_simulate::{
     fit_pole, PoleFit, PoleRun, SimulateOptions, MAX_STEP_FRACTION, POLE_BYTES_PER_SAMPLE,
     POLE_MAX_STEPS, POLE_MOON_NODE, POLE_SAMPLES,

@@ -41,9 +41,12 @@
 
 use std::f64::consts::{PI, TAU};
 
-use crate::error::{check_positive, finite_result, num, Error, Result};
+use crate::error::{
+    check_finite, check_non_negative, check_positive, check_result, finite_result, num, Error,
+    Result,
+};
 
-use super::SIDEREAL_RATE;
+use super::{AveragedPole, SIDEREAL_RATE};
 
 /// One second of arc (rad).
 const ARCSECOND: f64 = PI / 648_000.0;
@@ -51,6 +54,8 @@ const ARCSECOND: f64 = PI / 648_000.0;
 const JULIAN_CENTURY: f64 = 36_525.0 * 86_400.0;
 /// One day (s).
 const DAY: f64 = 86_400.0;
+/// Bytes kept per time of [`RigidEarth::averaged_pole`]: ψ, ε and Ω.
+const AVERAGED_POLE_BYTES_PER_TIME: usize = 24;
 
 /// H = (C − A)/C, the Earth's dynamical flattening (dimensionless): 3273795e-9, IERS
 /// Conventions (2010), Table 1.1, p. 18 (fitted to the observed precession rate).
@@ -378,6 +383,68 @@ impl RigidEarth {
         )?;
         let deps = finite_result("obliquity", "the nutation in obliquity", base * ce)?;
         Ok((dpsi, deps))
+    }
+
+    /// The averaged pole at the times `t` (s): the mean pole precessing uniformly about the
+    /// ecliptic pole, nodding with the principal nutation,
+    ///
+    /// Ω(t) = Ω₀ − 2π t/T_node,
+    /// ψ(t) = −P t + s Δψ₀ sin Ω(t),
+    /// ε(t) = ε₀ + s Δε₀ cos Ω(t),
+    ///
+    /// with P the luni-solar precession rate ([`Self::precession_rate`], rad/s, negative:
+    /// retrograde, so ψ grows westward as the IAU's ψ_A = |P| t), (Δψ₀, Δε₀) the principal
+    /// nutation ([`Self::nutation_amplitudes`], rad, IAU convention), ε₀ the mean obliquity
+    /// ([`Self::obliquity`](RigidEarth::obliquity)), Ω₀ = `moon_node` (rad) the longitude of the
+    /// Moon's ascending node at t = 0 and T_node its period of regression (18.6 years); s =
+    /// `nutation_scale` (dimensionless, ≥ 0) multiplies the nutation: 1 is the Earth's, 0 the
+    /// mean pole alone, and a drawing uses a larger s to make the 9″ nod visible.
+    ///
+    /// This is the pole that [`Self::simulate`] with [`SimulateOptions::mean_pole`]
+    /// (`super::SimulateOptions`) and the same Ω₀ integrates from the instantaneous torques,
+    /// less the semi-annual (0.55″) and fortnightly (0.09″) nods of the Sun's and the Moon's
+    /// orbital motions and the second-order terms.
+    ///
+    /// Errors name `t` (not finite, or more times than the memory budget holds), `moon_node`
+    /// (not finite), `nutation_scale` (negative or not finite, or so large that an angle
+    /// overflows) and `obliquity` (0: the nutation in longitude is undefined,
+    /// [`Self::nutation_amplitudes`]).
+    ///
+    /// [`SimulateOptions::mean_pole`]: super::SimulateOptions::mean_pole
+    /// [`AveragedPole`]: super::AveragedPole
+    pub fn averaged_pole(
+        &self,
+        t: &[f64],
+        moon_node: f64,
+        nutation_scale: f64,
+    ) -> Result<AveragedPole> {
+        check_finite("t", t)?;
+        check_finite("moon_node", &[moon_node])?;
+        check_finite("nutation_scale", &[nutation_scale])?;
+        check_non_negative("nutation_scale", nutation_scale)?;
+        crate::limits::check_memory("t", t.len() as f64, AVERAGED_POLE_BYTES_PER_TIME)?;
+        let rate = self.precession_rate();
+        let (dpsi, deps) = self.nutation_amplitudes()?;
+        let node_rate = -TAU / self.moon.node_period;
+        let (mut psi, mut obliquity, mut node) = (
+            Vec::with_capacity(t.len()),
+            Vec::with_capacity(t.len()),
+            Vec::with_capacity(t.len()),
+        );
+        for &time in t {
+            let omega = moon_node + node_rate * time;
+            let (s, c) = omega.sin_cos();
+            psi.push(-rate * time + nutation_scale * dpsi * s);
+            obliquity.push(self.obliquity + nutation_scale * deps * c);
+            node.push(omega);
+        }
+        check_result("nutation_scale", "the nutation in longitude", &psi)?;
+        check_result("nutation_scale", "the nutation in obliquity", &obliquity)?;
+        Ok(AveragedPole {
+            psi,
+            obliquity,
+            moon_node: node,
+        })
     }
 }
 
