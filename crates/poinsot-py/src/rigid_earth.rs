@@ -85,55 +85,34 @@ core_export! {
         ))
     }
 
-    def averaged_pole(
-        self,
-        t: Any,
-        *,
-        moon_node: Any = _AVERAGED["moon_node"],
-        nutation_scale: float = _AVERAGED["nutation_scale"],
-        degrees: bool = False,
-    ) -> AveragedPole:
-        """The averaged pole at the times ``t``: the mean pole precessing uniformly about the
-        ecliptic pole, nodding with the principal nutation (the core's closed form),
+    /// The averaged pole at the times `t` (s) (`RigidEarth::averaged_pole`): the precession
+    /// angle ψ (rad, westward), the obliquity ε (rad) and the Moon's node Ω (rad), each of
+    /// `t`'s length; the principal nutation multiplied by `nutation_scale`.
+    #[allow(clippy::type_complexity)]
+    fn averaged_pole<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyReadonlyArray1<'_, f64>,
+        moon_node: f64,
+        nutation_scale: f64,
+    ) -> PyResult<(
+        Bound<'py, PyArray1<f64>>,
+        Bound<'py, PyArray1<f64>>,
+        Bound<'py, PyArray1<f64>>,
+    )> {
+        let p = self
+            .inner
+            .averaged_pole(&vec_in(&t), moon_node, nutation_scale)
+            .py()?;
+        Ok((
+            PyArray1::from_vec(py, p.psi),
+            PyArray1::from_vec(py, p.obliquity),
+            PyArray1::from_vec(py, p.moon_node),
+        ))
+    }
+}
 
-        Ω(t) = Ω₀ − 2π t/T_node,  ψ(t) = −P t + s Δψ₀ sin Ω(t),  ε(t) = ε₀ + s Δε₀ cos Ω(t),
-
-        P the :attr:`precession_rate` (rad/s, negative: ψ grows westward at |P|), (Δψ₀, Δε₀)
-        the :attr:`nutation_amplitudes` (rad), ε₀ the :attr:`obliquity`, T_node the Moon's
-        nodal period (18.6 years). It is the pole :meth:`simulate` with ``mean_pole=True`` and
-        the same ``moon_node`` integrates from the instantaneous torques, to within the
-        semi-annual and fortnightly nods (about 2″) that the average leaves out.
-
-        Parameters
-        ----------
-        t:
-            Times (s; or a pint quantity), any shape.
-        moon_node:
-            Ω₀, the ecliptic longitude of the Moon's ascending node at t = 0 (rad, or degrees
-            with ``degrees=True``).
-        nutation_scale:
-            s, the factor on the nutation (dimensionless, ≥ 0): 1 is the Earth's, 0 the mean
-            pole alone; a drawing uses more to make the 9″ nod visible.
-        degrees:
-            Whether a plain-number ``moon_node`` is in degrees (the results stay in rad).
-
-        Returns
-        -------
-        AveragedPole
-            ``psi``, ``obliquity`` and ``moon_node`` (rad), each of the shape of ``t``.
-
-        Raises PoinsotError naming ``t``, ``moon_node``, ``nutation_scale`` or (at obliquity
-        0, where the nutation in longitude is undefined) ``obliquity``.
-        """
-        times = as_float_array(t, "t")
-        psi, obl, node = self._core.averaged_pole(
-            np.ascontiguousarray(times.ravel()),
-            as_angle(moon_node, "moon_node", degrees),
-            as_scalar(nutation_scale, "nutation_scale"),
-        )
-        shape = times.shape
-        return AveragedPole(psi.reshape(shape), obl.reshape(shape), node.reshape(shape))
-
+/// The mean precession rate and the principal nutation fitted to a simulated pole
 /// (`poinsot::earth::fit_pole`): (precession_rate (rad/s), mean_obliquity (rad),
 /// obliquity_rate (rad/s), nutation_longitude (rad), nutation_obliquity (rad)).
 #[export]
