@@ -1172,19 +1172,18 @@ impl<'a> Index<'a> {
     fn narrow(&self, a: usize, b: usize, found: &mut Found) {
         let (fp, fq) = (&self.faces[a], &self.faces[b]);
         let (pi, qi) = (&fp.indices, &fq.indices);
-        let (mut sp, mut sq) = (0u8, 0u8);
-        for (i, a) in pi.iter().enumerate() {
-            for (j, b) in qi.iter().enumerate() {
-                if a == b {
-                    sp |= 1 << i;
-                    sq |= 1 << j;
-                }
-            }
-        }
+        // The corners of `t` that `o` has too (bit i: corner i), without branches: most pairs
+        // stop at the next test, so the other face's mask is made only after it.
+        let shared = |t: &[u32; 3], o: &[u32; 3]| {
+            let has = |x: u32| u8::from(x == o[0]) | u8::from(x == o[1]) | u8::from(x == o[2]);
+            has(t[0]) | has(t[1]) << 1 | has(t[2]) << 2
+        };
+        let sp = shared(pi, qi);
         // Both faces are in the star of a shared vertex that is proved embedded.
         if sp & fp.proved != 0 {
             return;
         }
+        let sq = shared(qi, pi);
         let (p, q) = (self.pts.tri(pi), self.pts.tri(qi));
         if fast(&p) && fast(&q) && (off_plane(&p, &q, sq) || off_plane(&q, &p, sp)) {
             return;
