@@ -15,7 +15,7 @@ export const coreStatus = core.coreStatus;
 
 export const {
   version, start, errorClasses, eulerToMatrix, matrixToEuler, rotationAxis, screwAxis, bodyAngularVelocity,
-  eulerRates, axisStability, simulateParticle, sampleTimes, fitWobble, freeGyroscope,
+  eulerRates, axisStability, simulateParticle, sampleTimes, fitWobble, freeGyroscope, fixedAxisHeadingRate,
   AveragedPole, AxisStability, CompassRun, Earth, EulerAngles, Fall, FixedMotion, FoucaultRun, FreeRigidBody, FreeSymmetricTop, Gyrocompass, HeavyTop,
   InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, RigidEarth, Screw, SpringParticle, SteadyPrecession, WobbleFit, WobbleTerm,
 } = core;
@@ -46,7 +46,7 @@ export type WobbleTerm = raw.WobbleTerm;
 // A new export of the binding must be listed above: tsc fails here until it is.
 const exported = {
   version, start, errorClasses, eulerToMatrix, matrixToEuler, rotationAxis, screwAxis, bodyAngularVelocity,
-  eulerRates, axisStability, simulateParticle, sampleTimes, fitWobble, freeGyroscope,
+  eulerRates, axisStability, simulateParticle, sampleTimes, fitWobble, freeGyroscope, fixedAxisHeadingRate,
   AveragedPole, AxisStability, CompassRun, Earth, EulerAngles, Fall, FixedMotion, FoucaultRun, FreeRigidBody, FreeSymmetricTop, Gyrocompass, HeavyTop,
   InertialOscillation, LowFlow, MovingFrame, RelativeMotion, RigidBody, RigidEarth, Screw, SpringParticle, SteadyPrecession, WobbleFit, WobbleTerm,
 };

@@ -67,6 +67,29 @@ test("Foucault's free gyroscope: seen from the ground a horizontal axis drifts c
   assert.ok(Math.abs(Math.atan2(pa[0], pa[1])) < 2e-6 && Math.abs(Math.asin(pa[2]) - lat) < 2e-6, `${pa}`);
 });
 
+test("fixedAxisHeadingRate: the core's rate of a fixed axis's heading seen from the ground, against the free gyroscope's run", async () => {
+  const { raw } = await loadCore();
+  const lat = 49 * DEG, omega = 7.292115e-5;
+  // A horizontal axis drifts at Ω sin λ; an axis at the celestial pole stays put.
+  assert.ok(Math.abs(raw.fixedAxisHeadingRate(lat, 1.0, 0) - omega * Math.sin(lat)) < 1e-19);
+  assert.ok(Math.abs(raw.fixedAxisHeadingRate(lat, 0, lat)) < 1e-19);
+  // A tilted axis: the heading's rate by a central difference of the core's free-gyroscope run
+  // (samples 60 s apart, the axis at heading 40° and tilt 20° at the middle one).
+  const q = raw.freeGyroscope(lat, 40 * DEG, 20 * DEG, 100, 120, 3);
+  const axis = (i) => {
+    const [w, x, y, z] = q.slice(4 * i, 4 * i + 4);
+    return [1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)];
+  };
+  const head = (a) => Math.atan2(a[0], a[1]);
+  const mid = axis(1);
+  const fd = (head(axis(2)) - head(axis(0))) / 120;
+  const rate = raw.fixedAxisHeadingRate(lat, head(mid), Math.asin(mid[2]));
+  assert.ok(Math.abs(fd / rate - 1) < 1e-3, `${fd} vs ${rate}`);
+  assert.ok(Math.abs(rate / (omega * Math.sin(lat)) - 1) > 0.2, "a tilted axis turns at another rate (0.76 Ω sin λ here)");
+  assert.throws(() => raw.fixedAxisHeadingRate(lat, 0, Math.PI / 2), (x) => /^tilt: /.test(x.message));
+  assert.throws(() => raw.fixedAxisHeadingRate(2, 0, 0), (x) => /^latitude: /.test(x.message));
+});
+
 // --- the scene ---------------------------------------------------------------------------------
 
 await startLab();

@@ -223,3 +223,23 @@ pub fn free_gyroscope(
     )?;
     Ok(run.relative_attitude.into_iter().flatten().collect())
 }
+
+/// The rate (rad/s, clockwise positive) at which the heading of an axis fixed in inertial space
+/// — Foucault's free gyroscope's — turns as seen from the ground at `latitude` (rad) on the
+/// default Earth, the axis at heading `heading` (rad, clockwise from north) and tilt `tilt`
+/// (rad): the core's `fixed_axis_heading_rate`, Ω (sin λ − cos λ tan θ cos α) (Ω sin λ for a
+/// horizontal axis). Errors name `latitude`, `heading` or `tilt`.
+#[wasm_bindgen(js_name = fixedAxisHeadingRate)]
+pub fn fixed_axis_heading_rate(
+    #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
+    #[wasm_bindgen(unchecked_param_type = "number")] heading: Number,
+    #[wasm_bindgen(unchecked_param_type = "number")] tilt: Number,
+) -> Out<f64> {
+    let_numbers!(latitude, heading, tilt);
+    Ok(dy::fixed_axis_heading_rate(
+        &Earth::default(),
+        latitude,
+        heading,
+        tilt,
+    )?)
+}

@@ -14,7 +14,7 @@
 // (`Gyrocompass.simulate`) and of the free rotor carried by the place (`freeGyroscope`, the
 // exact flow); the scene samples their runs (linear between samples) at the clock's time.
 import * as THREE from "three";
-import { Earth, freeGyroscope, Gyrocompass, type CompassRun } from "../core";
+import { Earth, fixedAxisHeadingRate, freeGyroscope, Gyrocompass, type CompassRun } from "../core";
 import { angles, DEG, fmt, type Params, type Readout, type SceneDef } from "../scene";
 import { Arrow, bufferLine, compass, disposeTree } from "../view";
 
@@ -367,26 +367,20 @@ export const gyrocompassScene: SceneDef = {
         axisLabel.hidden = false;
         drawPlot();
         if (gyro) {
-          // The heading's rate from the core's samples (a centred difference over 4 min). The
-          // unit's Ω sin λ is the drift of a HORIZONTAL axis: the rate over the first 4 minutes,
-          // while the axis still lies flat; later the axis rises off the horizontal (it stays fixed
-          // among the stars) and its heading turns at another rate.
-          const h = 120;
-          const rateAt = (s: number): number => {
-            const t0 = Math.max(0, s - h), t1 = Math.min(duration, s + h);
-            let d = headingOf(gyroAxis(t1)) - headingOf(gyroAxis(t0));
-            if (d > Math.PI) d -= 2 * Math.PI;
-            if (d < -Math.PI) d += 2 * Math.PI;
-            return d / (t1 - t0);
-          };
-          const rate = rateAt(seconds);
-          const startRate = rateAt(0);
+          // The heading's rate from the core (fixedAxisHeadingRate: Ω (sin λ − cos λ tan θ cos α)
+          // of the axis, fixed among the stars, at the heading and tilt the core's run gives). The
+          // unit's Ω sin λ is the drift of a HORIZONTAL axis: the rate at the start, while the
+          // axis lies flat; later the axis rises off the horizontal and its heading turns at
+          // another rate.
+          const start = at(0);
+          const rate = fixedAxisHeadingRate(lat, now.heading, now.tilt);
+          const startRate = fixedAxisHeadingRate(lat, start.heading, start.tilt);
           const unit = Earth.siderealRate() * Math.sin(lat);
           out = [
             { key: "hours", label: "time (h from the start)", unitScale: 1 / 3600, value: seconds, text: fmt(seconds / 3600, 5) },
             { key: "gyroHeading", label: `axis heading (${A.name}, clockwise from north)`, unitScale: A.angleScale, value: now.heading, text: A.angle(now.heading, 5) },
             { key: "gyroTilt", label: `axis tilt (${A.name})`, unitScale: A.angleScale, value: now.tilt, text: A.angle(now.tilt, 5) },
-            { key: "driftRate", label: `drift of the horizontal axis, first 4 min (${A.perHour}, clockwise +)`, unitScale: A.perHourScale, value: startRate, text: A.perHourRate(startRate, 4) },
+            { key: "driftRate", label: `drift of the horizontal axis at the start (${A.perHour}, clockwise +)`, unitScale: A.perHourScale, value: startRate, text: A.perHourRate(startRate, 4) },
             { key: "headingRate", label: `the axis's heading turning now (${A.perHour}, clockwise +)`, unitScale: A.perHourScale, value: rate, text: A.perHourRate(rate, 4) },
             { key: "unitDriftRate", label: `the unit's Ω sin λ (${A.perHour})`, unitScale: A.perHourScale, value: unit, text: A.perHourRate(unit, 5) },
           ];
