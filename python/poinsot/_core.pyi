@@ -973,6 +973,7 @@ class GyrocompassCore:
         NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], tuple[float, float]
     ]: ...
 
+def dynamics_check_place(earth: tuple[float, float, float], latitude: float) -> None: ...
 def dynamics_simulate_carried(
     inertia: NDArray[np.float64],
     omega0: NDArray[np.float64],

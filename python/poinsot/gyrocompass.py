@@ -74,10 +74,10 @@ class Place:
 
     def __init__(self, latitude: Any, earth: Any = None) -> None:
         lat = _si(latitude, "latitude", "radian")
-        if not abs(lat) <= np.pi / 2:
-            raise PoinsotError(f"latitude: must be in [-pi/2, pi/2] rad, got {lat}")
-        self.latitude: float = lat
         self._earth = _earth_args(earth)
+        # The core makes the place (Carrier::earth) and refuses a latitude by name.
+        _core.dynamics_check_place(self._earth, lat)
+        self.latitude: float = lat
 
     @property
     def earth(self) -> Any:

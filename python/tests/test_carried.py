@@ -109,7 +109,11 @@ def test_carried_results_pickle_and_show():
 
 
 def test_bad_carried_input_is_refused_by_name():
-    with pytest.raises(ps.PoinsotError, match="^latitude"):
+    # The core's refusal (Carrier::earth), in the user's words: the range in rad and degrees,
+    # the value given in both.
+    with pytest.raises(ps.PoinsotError, match=r"^latitude: must be finite and in \[-pi/2, pi/2\]"):
+        ps.Place(2.0)
+    with pytest.raises(ps.PoinsotError, match=r"^latitude: .*got 2 rad \(114\.59"):
         ps.Place(2.0)
     with pytest.raises(ps.ArgumentTypeError, match="^carried_by"):
         ps.simulate([1, 1, 1.5], [0, 0, 1], 1.0, carried_by="earth")

@@ -363,9 +363,18 @@ fn dynamics_simulate_carried<'py>(
     ))
 }
 
+/// Checks a place on the Earth as the core makes one (`Carrier::earth`; the errors name
+/// `latitude`, or the Earth's argument): `poinsot.Place` calls it when made.
+#[export]
+fn dynamics_check_place(earth: (f64, f64, f64), latitude: f64) -> PyResult<()> {
+    let e = Earth::new(earth.0, earth.1, earth.2).py()?;
+    Carrier::earth(e, latitude).py()?;
+    Ok(())
+}
+
 /// Registers this file's class and function on the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyGyrocompass>()?;
-    add_functions!(m; dynamics_simulate_carried);
+    add_functions!(m; dynamics_simulate_carried, dynamics_check_place);
     Ok(())
 }
