@@ -3,10 +3,10 @@
 //! `poinsot.Gyrocompass` (python/poinsot/gyrocompass.py). The carrying frame travels as a kind
 //! ("frame" or "earth"), the frame's 15 numbers (origin, velocity, acceleration, ω, ω̇) and
 //! attitude (3, 3), the pivot and gravity (3,), and the Earth's (Ω, R, g) and latitude.
-use numpy::{PyArray1, PyReadonlyArray1, PyReadonlyArray2};
+use numpy::{PyReadonlyArray1, PyReadonlyArray2};
 use poinsot::dynamics::{
-    simulate_carried, BodyInertia, Carrier, Gyrocompass, Load, Method, Ship, SimulateOptions,
-    TorqueKind, Track, Turn,
+    simulate_carried, BodyInertia, Carrier, CompassRun, Gyrocompass, Load, Method, Ship,
+    SimulateOptions, TorqueKind, Track, Turn,
 };
 use poinsot::earth::Earth;
 use poinsot::frames::MovingFrame;
@@ -16,7 +16,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyType;
 
 use crate::control::run;
-use crate::convert::{mat3, matrix, opt_quat, parse, rows_into, vec_in, vector};
+use crate::convert::{mat3, matrix, opt_quat, parse, rows_into, vec_in, vector, Values};
 use crate::dynamics::PyTrajectory;
 use crate::errors::{invalid, IntoPy};
 
@@ -48,12 +48,23 @@ pub struct PyGyrocompass {
 type Args = (f64, f64, f64, f64, [f64; 3], f64, f64, f64);
 
 /// A compass run's (t, heading, tilt, latitude) arrays (s, rad).
-type CompassArrays<'py> = (
-    Bound<'py, PyArray1<f64>>,
-    Bound<'py, PyArray1<f64>>,
-    Bound<'py, PyArray1<f64>>,
-    Bound<'py, PyArray1<f64>>,
-);
+type CompassArrays = (Values, Values, Values, Values);
+
+/// The core's compass run `work` (the GIL released, Ctrl-C polled, `progress(fraction)` called
+/// when given) as its arrays.
+fn compass_run(
+    py: Python<'_>,
+    progress: Option<Bound<'_, PyAny>>,
+    work: impl FnOnce() -> poinsot::Result<CompassRun> + Send,
+) -> PyResult<CompassArrays> {
+    let out = run(py, progress.as_ref(), work)?;
+    Ok((
+        Values(out.t),
+        Values(out.heading),
+        Values(out.tilt),
+        Values(out.latitude),
+    ))
+}
 
 /// The constructor's arguments of a compass, in order.
 fn args(c: &Gyrocompass) -> Args {
@@ -181,19 +192,13 @@ core_export! {
         atol: f64,
         max_steps: usize,
         progress: Option<Bound<'py, PyAny>>,
-    ) -> PyResult<CompassArrays<'py>> {
+    ) -> PyResult<CompassArrays> {
         let opts = options(method, samples, rtol, atol, max_steps)?;
         let ship = Ship::new(speed, course).py()?;
         let c = self.inner;
-        let out = run(py, progress.as_ref(), || {
+        compass_run(py, progress, || {
             c.simulate(duration, heading0, tilt0, Some(ship), &opts)
-        })?;
-        Ok((
-            PyArray1::from_vec(py, out.t),
-            PyArray1::from_vec(py, out.heading),
-            PyArray1::from_vec(py, out.tilt),
-            PyArray1::from_vec(py, out.latitude),
-        ))
+        })
     }
 
     /// As `simulate` on a track: the start's speed (m/s) and course (rad), then the turns
@@ -215,7 +220,7 @@ core_export! {
         atol: f64,
         max_steps: usize,
         progress: Option<Bound<'py, PyAny>>,
-    ) -> PyResult<CompassArrays<'py>> {
+    ) -> PyResult<CompassArrays> {
         let opts = options(method, samples, rtol, atol, max_steps)?;
         let turns = turns
             .into_iter()
@@ -228,49 +233,37 @@ core_export! {
             .collect();
         let track = Track::new(Ship::new(speed, course).py()?, turns).py()?;
         let c = self.inner;
-        let out = run(py, progress.as_ref(), || {
+        compass_run(py, progress, || {
             c.simulate_track(duration, heading0, tilt0, &track, &opts)
-        })?;
-        Ok((
-            PyArray1::from_vec(py, out.t),
-            PyArray1::from_vec(py, out.heading),
-            PyArray1::from_vec(py, out.tilt),
-            PyArray1::from_vec(py, out.latitude),
-        ))
+        })
     }
 
     /// (heading, tilt, envelope) arrays (rad) of the linear solution at the times t (s), and
     /// the settled (heading, tilt) (rad).
-    fn linear_solution<'py>(
+    fn linear_solution(
         &self,
-        py: Python<'py>,
-        t: PyReadonlyArray1<'py, f64>,
+        t: PyReadonlyArray1<'_, f64>,
         heading0: f64,
         tilt0: f64,
         speed: f64,
         course: f64,
-    ) -> PyResult<LinearArrays<'py>> {
+    ) -> PyResult<LinearArrays> {
         let ship = Ship::new(speed, course).py()?;
         let out = self
             .inner
             .linear_solution(&vec_in(&t), heading0, tilt0, Some(ship))
             .py()?;
         Ok((
-            PyArray1::from_vec(py, out.heading),
-            PyArray1::from_vec(py, out.tilt),
-            PyArray1::from_vec(py, out.envelope),
+            Values(out.heading),
+            Values(out.tilt),
+            Values(out.envelope),
             (out.settled_heading, out.settled_tilt),
         ))
     }
 }
 
 /// The linear solution's heading, tilt and envelope (rad) and the settled (heading, tilt).
-type LinearArrays<'py> = (
-    Bound<'py, PyArray1<f64>>,
-    Bound<'py, PyArray1<f64>>,
-    Bound<'py, PyArray1<f64>>,
-    (f64, f64),
-);
+type LinearArrays = (Values, Values, Values, (f64, f64));
 
 /// A carried body's run: the inertial trajectory, and the relative attitude (N, 4), the frame's
 /// attitude (N, 4) and the relative ω (N, 3).

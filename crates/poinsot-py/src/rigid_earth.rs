@@ -2,13 +2,13 @@
 //! rigid symmetric top. `RigidEarthCore` holds a checked core value; the public, documented
 //! class is `poinsot.RigidEarth` (python/poinsot/rigid_earth.py), which holds one. The core
 //! names every argument as the caller knows it, so no error is renamed here.
-use numpy::{PyArray1, PyReadonlyArray1};
+use numpy::PyReadonlyArray1;
 use poinsot::earth::{self as ea, RigidEarth};
 use poinsot_py_macros::export;
 use pyo3::prelude::*;
 
 use crate::control::run;
-use crate::convert::vec_in;
+use crate::convert::{vec_in, Values};
 use crate::errors::IntoPy;
 
 /// The Earth as a rigid symmetric top (private; use `poinsot.RigidEarth`): the core's
@@ -52,7 +52,6 @@ core_export! {
     /// The spin axis integrated for `duration` (s) under the Sun's and the Moon's torques
     /// along their orbits (`RigidEarth::simulate`; the GIL released, Ctrl-C polled): (t (s),
     /// longitude (rad), obliquity (rad), moon_node (rad), node_rate (rad/s)).
-    #[allow(clippy::type_complexity)]
     fn simulate<'py>(
         &self,
         py: Python<'py>,
@@ -61,13 +60,7 @@ core_export! {
         moon_node: f64,
         mean_pole: bool,
         max_steps: usize,
-    ) -> PyResult<(
-        Bound<'py, PyArray1<f64>>,
-        Bound<'py, PyArray1<f64>>,
-        Bound<'py, PyArray1<f64>>,
-        f64,
-        f64,
-    )> {
+    ) -> PyResult<(Values, Values, Values, f64, f64)> {
         let earth = self.inner;
         let options = ea::SimulateOptions {
             samples,
@@ -77,9 +70,9 @@ core_export! {
         };
         let r = run(py, None, move || earth.simulate(duration, &options))?;
         Ok((
-            PyArray1::from_vec(py, r.t),
-            PyArray1::from_vec(py, r.longitude),
-            PyArray1::from_vec(py, r.obliquity),
+            Values(r.t),
+            Values(r.longitude),
+            Values(r.obliquity),
             r.moon_node,
             r.node_rate,
         ))
@@ -88,26 +81,20 @@ core_export! {
     /// The averaged pole at the times `t` (s) (`RigidEarth::averaged_pole`): the precession
     /// angle ψ (rad, westward), the obliquity ε (rad) and the Moon's node Ω (rad), each of
     /// `t`'s length; the principal nutation multiplied by `nutation_scale`.
-    #[allow(clippy::type_complexity)]
-    fn averaged_pole<'py>(
+    fn averaged_pole(
         &self,
-        py: Python<'py>,
         t: PyReadonlyArray1<'_, f64>,
         moon_node: f64,
         nutation_scale: f64,
-    ) -> PyResult<(
-        Bound<'py, PyArray1<f64>>,
-        Bound<'py, PyArray1<f64>>,
-        Bound<'py, PyArray1<f64>>,
-    )> {
+    ) -> PyResult<(Values, Values, Values)> {
         let p = self
             .inner
             .averaged_pole(&vec_in(&t), moon_node, nutation_scale)
             .py()?;
         Ok((
-            PyArray1::from_vec(py, p.psi),
-            PyArray1::from_vec(py, p.obliquity),
-            PyArray1::from_vec(py, p.moon_node),
+            Values(p.psi),
+            Values(p.obliquity),
+            Values(p.moon_node),
         ))
     }
 }
