@@ -646,8 +646,18 @@ def _turn_field(value: Any, name: str, dimension: str, unit: str) -> float:
         try:
             return parse(value, dimension)[0]
         except ValueError as e:
-            raise PoinsotError(f"{name}: {e}") from None
-    return _si(value, name, unit)
+            raise PoinsotError(f"turns: {name}: {e}") from None
+    if is_quantity(value):
+        try:
+            return float(value.to(unit).magnitude)
+        except Exception:
+            raise PoinsotError(
+                f"turns: {name}: expected a quantity in {unit}, got {value:~P}"
+            ) from None
+    try:
+        return as_scalar(value, "turns")
+    except PoinsotError as e:
+        raise PoinsotError(f"turns: {name}: {str(e).removeprefix('turns: ')}") from None
 
 
 def _turns(turns: Any) -> list[tuple[float, float | None, float, float]]:
@@ -665,11 +675,11 @@ def _turns(turns: Any) -> list[tuple[float, float | None, float, float]]:
             or len(turn) not in (3, 4)
         ):
             raise PoinsotError(
-                f"turns[{k}]: must be (time, speed, course) or (time, speed, course, duration), "
-                f"got {turn!r}"
+                f"turns: turn {k} must be (time, speed, course) or (time, speed, course, "
+                f"duration), got {turn!r}"
             )
         got = [
-            _turn_field(value, f"turns[{k}].{field}", dim, unit)
+            _turn_field(value, f"turn {k}'s {field}", dim, unit)
             for value, (field, dim, unit) in zip(turn, _TURN_FIELDS)
         ]
         rows.append((got[0], got[3] if len(got) == 4 else None, got[1], got[2]))

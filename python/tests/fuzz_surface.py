@@ -268,6 +268,7 @@ VALID_FOR: dict[str, dict[str, Any]] = {
     "Earth.foucault": {"duration": 30.0, "samples": 11, "max_steps": 100_000, "progress": False},
     "Gyrocompass.speed_error": {"speed": 10.0, "course": 0.3},
     "Gyrocompass.speed_error_small_angle": {"speed": 10.0, "course": 0.3},
+    "Gyrocompass.linear_solution": {"t": [0.0, 60.0, 120.0], "heading0": 0.1},
     "Gyrocompass.simulate": {
         "duration": 5.0,
         "heading0": 0.1,

@@ -45,9 +45,9 @@ def test_turns_refused_by_name():
         c.simulate(400.0, 0.0, turns=[(100, 5, 0, 60), (130, 5, 1)], samples=3)
     with pytest.raises(PoinsotError, match=r"turns: turn 0: its duration must be finite and > 0"):
         c.simulate(400.0, 0.0, turns=[(100, 5, 0, 0)], samples=3)
-    with pytest.raises(PoinsotError, match=r"turns\[0\]\.speed: expected a speed"):
+    with pytest.raises(PoinsotError, match=r"turns: turn 0's speed: expected a speed"):
         c.simulate(400.0, 0.0, turns=[("1min", "5deg", "0deg")], samples=3)
-    with pytest.raises(PoinsotError, match=r"turns\[0\]: must be \(time, speed, course\)"):
+    with pytest.raises(PoinsotError, match=r"turns: turn 0 must be \(time, speed, course\)"):
         c.simulate(400.0, 0.0, turns=[(1, 2)], samples=3)
     with pytest.raises(ps.errors.ArgumentTypeError, match="turns"):
         c.simulate(400.0, 0.0, turns=5, samples=3)
