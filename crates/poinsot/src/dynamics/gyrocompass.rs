@@ -832,7 +832,7 @@ impl Gyrocompass {
         let track = Track::new(track.start, track.turns.clone())?;
         let frame = ShipFrame::new(self.earth, self.latitude, &track);
         let end_lat = frame.max_abs_latitude(duration.max(0.0));
-        if !(end_lat <= FRAC_PI_2 - 0.1f64.to_radians()) {
+        if end_lat.is_nan() || end_lat > FRAC_PI_2 - 0.1f64.to_radians() {
             return Err(Error::invalid(
                 "duration",
                 format!(
