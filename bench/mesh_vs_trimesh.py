@@ -30,14 +30,18 @@ except ImportError:  # pragma: no cover
     raise SystemExit("bench/mesh_vs_trimesh.py needs trimesh: pip install 'poinsot[mesh]'") from None
 
 
-def best(fn, repeat: int) -> float:
-    """Best wall time of ``repeat`` calls (s)."""
-    times = []
+def best(fns: list, repeat: int) -> list[float]:
+    """Best wall time (s) of ``repeat`` calls of each of ``fns``, called in turn (one call of each
+    per round), so that a change of the machine's load between rounds reaches all of them alike
+    (timed one after the other in blocks, a loaded machine gave trimesh's two near-identical
+    rows 2.8 and 3.5 s in one run)."""
+    times: list[list[float]] = [[] for _ in fns]
     for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return min(times)
+        for fn, ts in zip(fns, times):
+            t0 = time.perf_counter()
+            fn()
+            ts.append(time.perf_counter() - t0)
+    return [min(ts) for ts in times]
 
 
 def compare(title: str, mesh, repeat: int) -> float:
@@ -72,12 +76,13 @@ def compare(title: str, mesh, repeat: int) -> float:
     a, b = ours(), theirs_build()
     assert np.isclose(a[0], b[0], rtol=1e-10) and np.allclose(a[2], b[2], rtol=1e-9, atol=1e-12)
 
-    t_ours = best(ours, repeat)
-    rows = [
-        ("trimesh.Trimesh(v, f, process=False).mass_properties", best(theirs_build, repeat)),
-        ("trimesh mass_properties only (mesh prebuilt, cache cleared)", best(theirs_only, repeat)),
-        ("trimesh with is_watertight + is_winding_consistent checks", best(theirs_checked, repeat)),
+    t_ours, *t_theirs = best([ours, theirs_build, theirs_only, theirs_checked], repeat)
+    names = [
+        "trimesh.Trimesh(v, f, process=False).mass_properties",
+        "trimesh mass_properties only (mesh prebuilt, cache cleared)",
+        "trimesh with is_watertight + is_winding_consistent checks",
     ]
+    rows = list(zip(names, t_theirs))
     print(f"  {'poinsot RigidBody.from_mesh (with all its checks)':62s} {t_ours * 1e3:9.1f} ms")
     for name, t in rows:
         print(f"  {name:62s} {t * 1e3:9.1f} ms   poinsot is {t / t_ours:5.1f}x faster")
