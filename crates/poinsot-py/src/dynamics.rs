@@ -136,6 +136,40 @@ pub(crate) fn batch_settings(
     Ok((*duration, torque, opts))
 }
 
+/// A run's body (its (3, 3) inertia tensor, kg·m²), ω₀ (3,) (rad/s) and optional attitude
+/// (4,), each error naming its argument (`body`, `omega0`, `attitude0`).
+pub(crate) fn initial_state(
+    inertia: &PyReadonlyArray2<'_, f64>,
+    omega0: &PyReadonlyArray1<'_, f64>,
+    attitude0: &Option<PyReadonlyArray1<'_, f64>>,
+) -> PyResult<(BodyInertia, Vec3, Option<[f64; 4]>)> {
+    Ok((
+        BodyInertia::from_tensor(&matrix("body", inertia)?).py()?,
+        vector("omega0", omega0)?,
+        opt_quat("attitude0", attitude0)?,
+    ))
+}
+
+/// A run's options from the Python keywords: the method's name, the fixed step (s, None: the
+/// method's default), samples, rtol, atol and max_steps.
+pub(crate) fn simulate_options(
+    method: &str,
+    dt: Option<f64>,
+    samples: usize,
+    rtol: f64,
+    atol: f64,
+    max_steps: usize,
+) -> PyResult<SimulateOptions> {
+    Ok(SimulateOptions {
+        method: Method::parse(method).py()?,
+        dt,
+        samples,
+        rtol,
+        atol,
+        max_steps,
+    })
+}
+
 /// Simulates one body (see `poinsot.simulate`).
 #[export]
 #[pyo3(signature = (inertia, omega0, attitude0, duration, torque_kind, torque_vector, torque_scalar, torque_fn, method, dt, samples, rtol, atol, max_steps, progress))]
@@ -158,17 +192,8 @@ fn dynamics_simulate<'py>(
     max_steps: usize,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<PyTrajectory> {
-    let body = BodyInertia::from_tensor(&matrix("body", &inertia)?).py()?;
-    let w0 = vector("omega0", &omega0)?;
-    let q0 = opt_quat("attitude0", &attitude0)?;
-    let opts = SimulateOptions {
-        method: Method::parse(method).py()?,
-        dt,
-        samples,
-        rtol,
-        atol,
-        max_steps,
-    };
+    let (body, w0, q0) = initial_state(&inertia, &omega0, &attitude0)?;
+    let opts = simulate_options(method, dt, samples, rtol, atol, max_steps)?;
     let torque_vector = vector("torque", &torque_vector)?;
     let kind: TorqueKind = parse(torque_kind)?;
     let error: RefCell<Option<PyErr>> = RefCell::new(None);

@@ -5,8 +5,7 @@
 //! attitude (3, 3), the pivot and gravity (3,), and the Earth's (Ω, R, g) and latitude.
 use numpy::{PyReadonlyArray1, PyReadonlyArray2};
 use poinsot::dynamics::{
-    simulate_carried, BodyInertia, Carrier, CompassRun, Gyrocompass, Load, Method, Ship,
-    SimulateOptions, TorqueKind, Track, Turn,
+    simulate_carried, Carrier, CompassRun, Gyrocompass, Load, Ship, TorqueKind, Track, Turn,
 };
 use poinsot::earth::Earth;
 use poinsot::frames::MovingFrame;
@@ -16,27 +15,9 @@ use pyo3::prelude::*;
 use pyo3::types::PyType;
 
 use crate::control::run;
-use crate::convert::{mat3, matrix, opt_quat, parse, rows_into, vec_in, vector, Values};
-use crate::dynamics::PyTrajectory;
+use crate::convert::{mat3, parse, rows_into, vec_in, vector, Values};
+use crate::dynamics::{initial_state, simulate_options, PyTrajectory};
 use crate::errors::{invalid, IntoPy};
-
-/// The options of a compass or carried run: samples, rtol, atol, max_steps.
-fn options(
-    method: &str,
-    samples: usize,
-    rtol: f64,
-    atol: f64,
-    max_steps: usize,
-) -> PyResult<SimulateOptions> {
-    Ok(SimulateOptions {
-        method: Method::parse(method).py()?,
-        dt: None,
-        samples,
-        rtol,
-        atol,
-        max_steps,
-    })
-}
 
 /// A pendulous gyrocompass (private; use `poinsot.Gyrocompass`): the core's `Gyrocompass`,
 /// checked when made.
@@ -193,7 +174,7 @@ core_export! {
         max_steps: usize,
         progress: Option<Bound<'py, PyAny>>,
     ) -> PyResult<CompassArrays> {
-        let opts = options(method, samples, rtol, atol, max_steps)?;
+        let opts = simulate_options(method, None, samples, rtol, atol, max_steps)?;
         let ship = Ship::new(speed, course).py()?;
         let c = self.inner;
         compass_run(py, progress, || {
@@ -221,7 +202,7 @@ core_export! {
         max_steps: usize,
         progress: Option<Bound<'py, PyAny>>,
     ) -> PyResult<CompassArrays> {
-        let opts = options(method, samples, rtol, atol, max_steps)?;
+        let opts = simulate_options(method, None, samples, rtol, atol, max_steps)?;
         let turns = turns
             .into_iter()
             .map(|(time, duration, speed, course)| Turn {
@@ -301,9 +282,7 @@ fn dynamics_simulate_carried<'py>(
     max_steps: usize,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<CarriedOut<'py>> {
-    let body = BodyInertia::from_tensor(&matrix("body", &inertia)?).py()?;
-    let w0 = vector("omega0", &omega0)?;
-    let q0 = opt_quat("attitude0", &attitude0)?;
+    let (body, w0, q0) = initial_state(&inertia, &omega0, &attitude0)?;
     let carrier = match kind {
         "frame" => {
             let s = vec_in(&frame);
@@ -344,7 +323,7 @@ fn dynamics_simulate_carried<'py>(
     let mut torque = parse::<TorqueKind>(torque_kind)?
         .torque(vector("torque", &torque_vector)?, 0.0)
         .py()?;
-    let opts = options(method, samples, rtol, atol, max_steps)?;
+    let opts = simulate_options(method, None, samples, rtol, atol, max_steps)?;
     let out = run(py, progress.as_ref(), || {
         simulate_carried(&body, w0, q0, duration, &carrier, load, &mut torque, &opts)
     })?;
