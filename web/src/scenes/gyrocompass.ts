@@ -28,6 +28,8 @@ export const LAB_INERTIA = [5, 10, 10];
 /** The compass's run: this many undamped periods, sampled this many times. */
 const PERIODS = 5;
 const SAMPLES = 1201;
+/** How many runs the scene keeps to show again without the core (about 30 kB each). */
+const RUNS_KEPT = 32;
 /** Foucault's gyroscope: one sidereal day, sampled every 2 minutes; its spin (rad/s). */
 const GYRO_SAMPLES = 719;
 const GYRO_SPIN = 100;
@@ -185,6 +187,14 @@ export const gyrocompassScene: SceneDef = {
     let c: Gyrocompass | null = null;
     let run: { t: ArrayLike<number>; heading: ArrayLike<number>; tilt: ArrayLike<number> } = { t: [0, 1], heading: [0, 0], tilt: [0, 0] };
     let quats: ArrayLike<number> = [];
+    /** The last RUNS_KEPT runs by their inputs, the most recent last (a run takes the core a
+     * few hundred ms in the browser; the samples are copies, kept in JavaScript). */
+    const runs = new Map<string, { run?: typeof run; quats?: ArrayLike<number> }>();
+    const remember = (key: string, value: { run?: typeof run; quats?: ArrayLike<number> }) => {
+      runs.delete(key);
+      runs.set(key, value);
+      if (runs.size > RUNS_KEPT) runs.delete(runs.keys().next().value as string);
+    };
     let period = 0;
     let speedError = 0;
     let smallAngle = 0;
@@ -302,13 +312,23 @@ export const gyrocompassScene: SceneDef = {
           settleError = next.settleError;
           settleTilt = next.settleTilt;
           groundSpeed = next.groundSpeed;
+          // The core's run for these inputs, computed once: moving a slider back to a value
+          // seen before (or one the run does not depend on, the clock's speed) reuses it.
+          const key = JSON.stringify(gyro ? [lat, heading0] : [lat, heading0, Number(p.damping), speed, course]);
+          const seen = runs.get(key);
           if (gyro) {
             duration = (2 * Math.PI) / Earth.siderealRate();
-            quats = freeGyroscope(lat, heading0, 0, GYRO_SPIN, duration, GYRO_SAMPLES);
+            quats = seen?.quats ?? freeGyroscope(lat, heading0, 0, GYRO_SPIN, duration, GYRO_SAMPLES);
+            remember(key, { quats });
           } else {
             duration = PERIODS * period;
-            r = next.simulate(duration, heading0, settleTilt, speed, course, SAMPLES);
-            run = { t: r.times, heading: r.heading, tilt: r.tilt };
+            if (seen?.run) {
+              run = seen.run;
+            } else {
+              r = next.simulate(duration, heading0, settleTilt, speed, course, SAMPLES);
+              run = { t: r.times, heading: r.heading, tilt: r.tilt };
+            }
+            remember(key, { run });
           }
         } catch (e) {
           next.free();
