@@ -1526,7 +1526,7 @@ pub(crate) fn star_shaped_about(
     c: P3,
     cancel: &Cancel,
 ) -> Result<bool> {
-    let Some(proof) = StarProof::new(pts.v.len(), c) else {
+    let Some(proof) = StarProof::new(pts, c) else {
         return Ok(false);
     };
     let ok = tris
@@ -1557,16 +1557,29 @@ struct StarProof {
     /// Set once a face fails: the proof is refused and later faces are not examined.
     failed: AtomicBool,
     c: P3,
+    /// Every vertex is within [`FAST_COORD_MAX`] and their box is at most [`EXTENT_HI`] on
+    /// each axis: the per-face envelope checks of [`radial_wedges`] hold but for a face's
+    /// least extent (decided once per mesh).
+    inside: bool,
 }
 
 impl StarProof {
-    /// A proof about `c` for a mesh of `nv` vertices; `None` when `c` is outside the envelope
-    /// of the float filters ([`FAST_COORD_MAX`]).
-    fn new(nv: usize, c: P3) -> Option<Self> {
+    /// A proof about `c` for the mesh of the vertices `pts`; `None` when `c` is outside the
+    /// envelope of the float filters ([`FAST_COORD_MAX`]).
+    fn new(pts: Points<'_>, c: P3) -> Option<Self> {
+        let b = pts
+            .v
+            .par_chunks(FACE_CHUNK)
+            .map(|c| Bounds::of(c.iter().copied()))
+            .reduce(|| Bounds::EMPTY, Bounds::union);
+        let inside = (0..3).all(|k| {
+            max2(b.lo[k].abs(), b.hi[k].abs()) <= FAST_COORD_MAX && b.hi[k] - b.lo[k] <= EXTENT_HI
+        });
         c.iter().all(|x| x.abs() <= FAST_COORD_MAX).then(|| Self {
-            held: (0..nv).map(|_| AtomicBool::new(false)).collect(),
+            held: (0..pts.v.len()).map(|_| AtomicBool::new(false)).collect(),
             failed: AtomicBool::new(false),
             c,
+            inside,
         })
     }
 
@@ -1577,7 +1590,7 @@ impl StarProof {
         if self.failed.load(Ordering::Relaxed) {
             return false;
         }
-        let ok = match radial_wedges(p, self.c) {
+        let ok = match radial_wedges(p, self.c, self.inside) {
             Some(holds) => t
                 .iter()
                 .zip(holds)
@@ -1606,19 +1619,27 @@ impl StarProof {
 /// filter, never a wrong sign, without the nine absolute permanents per face; and only the
 /// components of the cross products that a corner's test reads are computed (the corners
 /// unrolled), about half of the instructions of the proof.
+///
+/// `inside`: every vertex of the mesh is within [`FAST_COORD_MAX`] and the vertices' box is at
+/// most [`EXTENT_HI`] on each axis ([`StarProof`]); then only the face's least extent is
+/// checked, first by one edge (`extent ≥ |p₁ − p₀|_∞`, both rounded alike), with the same
+/// answer as the checks of every coordinate and the whole extent.
 #[inline]
-fn radial_wedges(p: [P3; 3], c: P3) -> Option<[bool; 3]> {
-    if !fast(&p) {
+fn radial_wedges(p: [P3; 3], c: P3, inside: bool) -> Option<[bool; 3]> {
+    if !inside && !fast(&p) {
         return None;
     }
-    let extent = (0..3).fold(0.0f64, |m, k| {
-        max2(
-            m,
-            max2(max2(p[0][k], p[1][k]), p[2][k]) - min2(min2(p[0][k], p[1][k]), p[2][k]),
-        )
-    });
-    if !well_scaled(extent) {
-        return None;
+    let edge = |k: usize| (p[1][k] - p[0][k]).abs();
+    if !(inside && max2(max2(edge(0), edge(1)), edge(2)) >= EXTENT_LO) {
+        let extent = (0..3).fold(0.0f64, |m, k| {
+            max2(
+                m,
+                max2(max2(p[0][k], p[1][k]), p[2][k]) - min2(min2(p[0][k], p[1][k]), p[2][k]),
+            )
+        });
+        if !well_scaled(extent) {
+            return None;
+        }
     }
     let d = p.map(|x| [x[0] - c[0], x[1] - c[1], x[2] - c[2]]);
     let a = d.map(|x| x.map(f64::abs));
@@ -2193,8 +2214,17 @@ mod tests {
                 _ => {}
             }
             for q in [p, [p[0], p[2], p[1]]] {
-                let got = radial_wedges(q, c);
+                let got = radial_wedges(q, c, false);
                 assert_eq!(got, radial_wedges_exact(q, c), "{q:?} about {c:?}");
+                // The envelope decided once per mesh: the same answer for a mesh of this face
+                // alone, when its box is inside that envelope.
+                let b = Bounds::of(q);
+                if (0..3).all(|k| {
+                    b.lo[k].abs().max(b.hi[k].abs()) <= FAST_COORD_MAX
+                        && b.hi[k] - b.lo[k] <= EXTENT_HI
+                }) {
+                    assert_eq!(radial_wedges(q, c, true), got, "{q:?} about {c:?}");
+                }
                 match got {
                     Some(h) => {
                         some += 1;
