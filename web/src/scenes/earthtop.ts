@@ -281,13 +281,19 @@ export const earthTopScene: SceneDef = {
     /** The time (years) the tail was last drawn for (NaN: to be drawn). */
     let tailYears = NaN;
 
+    /** The times (s) handed to the core, reused frame after frame (a typed array crosses into the
+     * WebAssembly module without a copy in JavaScript). */
+    const times = new Float64Array(TAIL);
+    /** The tail's times (years from the start). */
+    const tailAt = new Float64Array(TAIL);
     /** The spin axis's angles at the times `years` (Julian years from the start), with the nod
      * drawn × `x`: the core's averaged pole (`RigidEarth.averagedPole`: the uniform precession
      * plus the principal nutation), the Moon's node at the equinox at the start (Ω₀ = 0) — its
      * longitude ψ westward from +y (the IAU sense of ψ_A), its obliquity ε from the ecliptic
      * pole, and the Moon's node Ω, one entry per time. */
     const anglesAt = (years: ArrayLike<number>, x: number) => {
-      const pole = earth!.averagedPole(Array.from(years, (y) => y * YEAR), 0, x);
+      for (let k = 0; k < years.length; k++) times[k] = years[k] * YEAR;
+      const pole = earth!.averagedPole(years.length === TAIL ? times : times.subarray(0, years.length), 0, x);
       try {
         return { psi: pole.psi, eps: pole.obliquity, node: pole.moonNode };
       } finally {
@@ -348,7 +354,8 @@ export const earthTopScene: SceneDef = {
         const span = Math.min(years, (TAIL_NODES * nodePeriod) / YEAR);
         if (years !== tailYears) {
           tailYears = years;
-          const { psi, eps } = anglesAt(Array.from({ length: TAIL }, (_, k) => years - span * (1 - k / (TAIL - 1))), nod);
+          for (let k = 0; k < TAIL; k++) tailAt[k] = years - span * (1 - k / (TAIL - 1));
+          const { psi, eps } = anglesAt(tailAt, nod);
           for (let k = 0; k < TAIL; k++) {
             const se = AXIS * Math.sin(eps[k]);
             tailPos[3 * k] = se * Math.sin(psi[k]);
