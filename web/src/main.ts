@@ -23,7 +23,8 @@ interface LabHandle {
   t: number;
   playing: boolean;
   frames: number;
-  /** Mean physics time per frame (ms) over the last `PHYSICS_WINDOW` frames. */
+  /** Physics time per frame (ms): the median over the last `PHYSICS_WINDOW` frames (a frame the
+   * machine's other work delays does not move it; a slowdown of every frame does). */
   physicsMs: number;
   error: string | null;
   /** A slider move the core refused (no valid value on its way): the sentence shown; the last
@@ -53,6 +54,9 @@ interface LabHandle {
 }
 
 const PHYSICS_WINDOW = 120;
+/** The keys that open the scenes, in tab order: the digits 1–9 (0 fits the view; - and = zoom
+ * it); a tab past the ninth has no key, and says none. */
+const SCENE_KEYS = ["1", "2", "3", "4", "5", "6", "7", "8", "9"];
 /** A pinned readout longer than this (characters) is a sentence: it wraps across the box. */
 const LONG_TEXT = 34;
 /** Keyboard orbit: one arrow press turns the view by this much (rad); + and − zoom by ZOOM. */
@@ -487,7 +491,7 @@ async function main(): Promise<void> {
     b.append(long, short);
     b.title = d.title;
     b.dataset.scene = d.id;
-    b.setAttribute("aria-keyshortcuts", String(i + 1));
+    if (SCENE_KEYS[i]) b.setAttribute("aria-keyshortcuts", SCENE_KEYS[i]);
     b.addEventListener("click", () => openScene(d, new URLSearchParams()));
     nav.append(b);
   });
@@ -529,7 +533,9 @@ async function main(): Promise<void> {
     }
     costs.push(performance.now() - t0);
     if (costs.length > PHYSICS_WINDOW) costs.shift();
-    lab.physicsMs = costs.reduce((a, b) => a + b, 0) / costs.length;
+    const sorted = [...costs].sort((a, b) => a - b);
+    const mid = sorted.length >> 1;
+    lab.physicsMs = sorted.length % 2 ? sorted[mid] : (sorted[mid - 1] + sorted[mid]) / 2;
     renderReadouts();
     recorder.push(lab.t, current.readouts());
   }
@@ -664,7 +670,7 @@ async function main(): Promise<void> {
     else if (ev.key === "r" || ev.key === "R") reset();
     else if (ev.key === "s" || ev.key === "S") share();
     else if (ev.key === "0") fit();
-    else if (/^[1-9]$/.test(ev.key) && SCENES[Number(ev.key) - 1]) openScene(SCENES[Number(ev.key) - 1], new URLSearchParams());
+    else if (SCENE_KEYS.includes(ev.key) && SCENES[SCENE_KEYS.indexOf(ev.key)]) openScene(SCENES[SCENE_KEYS.indexOf(ev.key)], new URLSearchParams());
   });
 
   // --- start --------------------------------------------------------------------------------
