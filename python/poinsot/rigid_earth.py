@@ -134,19 +134,14 @@ class PoleRun:
 
 class AveragedPole(NamedTuple):
     """The rigid Earth's averaged pole at given times (:meth:`RigidEarth.averaged_pole`): the
-    uniform luni-solar precession plus the principal (18.6-year) nutation. Each array has the
+    uniform luni-solar precession plus the principal (18.6-year) nutation, each array of the
     shape of the times asked for.
 
-    Attributes
-    ----------
-    psi:
-        ψ(t), the precession angle of the spin axis (rad, unwrapped): its ecliptic longitude
-        counted westward from its place at t = 0, the IAU's ψ_A plus the nutation Δψ; the
-        negative of :attr:`PoleRun.longitude`.
-    obliquity:
-        ε(t), the angle of the spin axis from the ecliptic's pole (rad).
-    moon_node:
-        Ω(t), the ecliptic longitude of the Moon's ascending node (rad, unwrapped).
+    ``psi`` is ψ(t), the precession angle of the spin axis (rad, unwrapped): its ecliptic
+    longitude counted westward from its place at t = 0, the IAU's ψ_A plus the nutation Δψ, the
+    negative of :attr:`PoleRun.longitude`. ``obliquity`` is ε(t), the angle of the spin axis
+    from the ecliptic's pole (rad), and ``moon_node`` Ω(t), the ecliptic longitude of the Moon's
+    ascending node (rad, unwrapped).
     """
 
     psi: FloatArray
