@@ -752,6 +752,9 @@ pub(crate) struct Index<'a> {
     /// `levels[0][i]`: the box of leaf `i` (faces `LEAF·i .. LEAF·(i + 1)`); `levels[l][i]`:
     /// the union of `levels[l − 1][2i]` and `levels[l − 1][2i + 1]`; the last level is the root.
     levels: Vec<Vec<Box3>>,
+    /// Every vertex is within [`FAST_COORD_MAX`] (from the vertices' box): the float filters
+    /// of the narrow phase apply to every pair without checking its coordinates.
+    inside: bool,
 }
 
 /// Faces per leaf of the tree (consecutive in Morton order), one bit each in a `u32` mask.
@@ -988,6 +991,7 @@ impl<'a> Index<'a> {
             levels.push(next);
         }
         cancel.check()?;
+        let inside = (0..3).all(|k| max2(lo[k].abs(), hi[k].abs()) <= FAST_COORD_MAX);
         Ok(Self {
             pts,
             order,
@@ -995,6 +999,7 @@ impl<'a> Index<'a> {
             faces,
             used,
             levels,
+            inside,
         })
     }
 
@@ -1185,7 +1190,9 @@ impl<'a> Index<'a> {
         }
         let sq = shared(qi, pi);
         let (p, q) = (self.pts.tri(pi), self.pts.tri(qi));
-        if fast(&p) && fast(&q) && (off_plane(&p, &q, sq) || off_plane(&q, &p, sp)) {
+        if (self.inside || (fast(&p) && fast(&q)))
+            && (off_plane(&p, &q, sq) || off_plane(&q, &p, sp))
+        {
             return;
         }
         self.exact(a, b, found);
