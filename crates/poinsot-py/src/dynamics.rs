@@ -150,11 +150,10 @@ pub(crate) fn initial_state(
     ))
 }
 
-/// A run's options from the Python keywords: the method's name, the fixed step (s, None: the
-/// method's default), samples, rtol, atol and max_steps.
+/// A run's options from the Python keywords: the method's name, samples, rtol, atol and
+/// max_steps (the step `dt` the method's default).
 pub(crate) fn simulate_options(
     method: &str,
-    dt: Option<f64>,
     samples: usize,
     rtol: f64,
     atol: f64,
@@ -162,7 +161,7 @@ pub(crate) fn simulate_options(
 ) -> PyResult<SimulateOptions> {
     Ok(SimulateOptions {
         method: Method::parse(method).py()?,
-        dt,
+        dt: None,
         samples,
         rtol,
         atol,
@@ -193,7 +192,10 @@ fn dynamics_simulate<'py>(
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<PyTrajectory> {
     let (body, w0, q0) = initial_state(&inertia, &omega0, &attitude0)?;
-    let opts = simulate_options(method, dt, samples, rtol, atol, max_steps)?;
+    let opts = SimulateOptions {
+        dt,
+        ..simulate_options(method, samples, rtol, atol, max_steps)?
+    };
     let torque_vector = vector("torque", &torque_vector)?;
     let kind: TorqueKind = parse(torque_kind)?;
     let error: RefCell<Option<PyErr>> = RefCell::new(None);

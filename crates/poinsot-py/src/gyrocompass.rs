@@ -174,7 +174,7 @@ core_export! {
         max_steps: usize,
         progress: Option<Bound<'py, PyAny>>,
     ) -> PyResult<CompassArrays> {
-        let opts = simulate_options(method, None, samples, rtol, atol, max_steps)?;
+        let opts = simulate_options(method, samples, rtol, atol, max_steps)?;
         let ship = Ship::new(speed, course).py()?;
         let c = self.inner;
         compass_run(py, progress, || {
@@ -202,7 +202,7 @@ core_export! {
         max_steps: usize,
         progress: Option<Bound<'py, PyAny>>,
     ) -> PyResult<CompassArrays> {
-        let opts = simulate_options(method, None, samples, rtol, atol, max_steps)?;
+        let opts = simulate_options(method, samples, rtol, atol, max_steps)?;
         let turns = turns
             .into_iter()
             .map(|(time, duration, speed, course)| Turn {
@@ -323,7 +323,7 @@ fn dynamics_simulate_carried<'py>(
     let mut torque = parse::<TorqueKind>(torque_kind)?
         .torque(vector("torque", &torque_vector)?, 0.0)
         .py()?;
-    let opts = simulate_options(method, None, samples, rtol, atol, max_steps)?;
+    let opts = simulate_options(method, samples, rtol, atol, max_steps)?;
     let out = run(py, progress.as_ref(), || {
         simulate_carried(&body, w0, q0, duration, &carrier, load, &mut torque, &opts)
     })?;
