@@ -3,6 +3,7 @@ that records each value), for the chapter tests that check every number the pros
 
 from __future__ import annotations
 
+import numbers
 import re
 from pathlib import Path
 from typing import Any
@@ -25,6 +26,15 @@ def glued(page: Path) -> dict[str, Any]:
 
     def glue(name: str, value: Any, display: bool = True) -> None:
         assert not display, name
+        if isinstance(value, numbers.Number):
+            # myst-nb formats a {glue:text} number from its repr: numpy's scalars print as
+            # np.float64(…), which the site build refuses (a warning, an error under -W).
+            try:
+                float(repr(value))
+            except ValueError:
+                raise AssertionError(
+                    f"glue {name!r}: its repr {value!r} is not a plain number (wrap it in float())"
+                ) from None
         values[name] = value
 
     namespace: dict[str, Any] = {"glue": glue, "__name__": "page"}
