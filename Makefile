@@ -186,9 +186,14 @@ wheel-aarch64: lab-build
 		python/tests/test_wheel_aarch64.py
 
 # Browser tests (playwright-core + Debian chromium): scenes, controls, URL, parity with Python.
+# The files that time frames run alone; the others two at a time (each file starts its own
+# server and browser), which halves their wall time on two cores.
+WEB_TIMED := tests/cost.test.mjs tests/lab.test.mjs
+WEB_UNTIMED := $(patsubst web/%,%,$(filter-out $(addprefix web/,$(WEB_TIMED)),$(sort $(wildcard web/tests/*.test.mjs))))
 test-web: lab-build
 	$(PY) web/tests/make_golden.py web/tests/golden.json
-	cd web && PYTHON=$(abspath $(PY)) node --test --test-concurrency=1 tests/
+	cd web && PYTHON=$(abspath $(PY)) node --test --test-concurrency=1 $(WEB_TIMED)
+	cd web && PYTHON=$(abspath $(PY)) node --test --test-concurrency=2 $(WEB_UNTIMED)
 
 # Long fuzzing of the whole public surface (issue 10, item 18): `make test` runs bounded,
 # fixed-seed campaigns (python/tests/test_fuzz.py, web/tests/wasm_fuzz.test.mjs); these run long
