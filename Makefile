@@ -28,9 +28,10 @@ demo: setup
 # Every test, in an order that keeps both cores busy where one step uses only one: pytest runs
 # beside the web tooling's install (wasm-bindgen-cli takes minutes to build) and the MSRV check,
 # and the documentation (Sphinx runs the gallery and the notebooks one by one) beside the source
-# distribution's build and test. The browser lab's tests, which time the cost of a frame, run
-# alone. The examples are run by the documentation build (sphinx-gallery executes every file of
-# examples/ and stops the build on an error: docs/conf.py), so `make examples` is not repeated here.
+# distribution's build and test. The browser lab's tests run on their own (test-web: the files
+# that time frames alone, the others two at a time). The examples are run by the documentation
+# build (sphinx-gallery executes every file of examples/ and stops the build on an error:
+# docs/conf.py), so `make examples` is not repeated here.
 test: setup test-rust lint python-beside-tooling test-web docs-beside-sdist test-wheel
 
 # Two makes side by side, the second at a lower priority (nice), so that the first keeps a core
