@@ -7,10 +7,10 @@
 // with Euler's period (2.83), which the elastic Earth lengthens into the Chandler wobble seen in
 // the real pole's path (the inset: the IERS EOP 20 C04 series bundled with the lab).
 //
-// Every rate, period and amplitude comes from the core's `RigidEarth`, and so does the axis the
-// animation moves: its averaged pole (`averagedPole`: longitude ψ(t) = |ψ̇| t + Δψ₀ sin Ω(t),
-// obliquity ε(t) = ε + Δε₀ cos Ω(t), the node Ω(t) = −2π t / T_node, composed in the core), t
-// counted from the start (not a date). The drawing exaggerates, and says so on the view: the bulge, the nod, the time.
+// Every rate, period and amplitude comes from the core's `RigidEarth`; the animation moves the
+// axis by them: longitude ψ(t) = |ψ̇| t + Δψ₀ sin Ω(t), obliquity ε(t) = ε + Δε₀ cos Ω(t), the
+// node Ω(t) = −2π t / T_node (the core's period of the Moon's node), t counted from the start
+// (not a date). The drawing exaggerates, and says so on the view: the bulge, the nod, the time.
 import * as THREE from "three";
 import { Earth, fitWobble, RigidEarth } from "../core";
 import { angles, DEG, fmt, type Params, type Readout, type SceneDef } from "../scene";
@@ -281,31 +281,18 @@ export const earthTopScene: SceneDef = {
     /** The time (years) the tail was last drawn for (NaN: to be drawn). */
     let tailYears = NaN;
 
-    /** The times (s) handed to the core, reused frame after frame (a typed array crosses into the
-     * WebAssembly module without a copy in JavaScript). */
-    const times = new Float64Array(TAIL);
-    /** The tail's times (years from the start). */
-    const tailAt = new Float64Array(TAIL);
-    /** The spin axis's angles at the times `years` (Julian years from the start), with the nod
-     * drawn × `x`: the core's averaged pole (`RigidEarth.averagedPole`: the uniform precession
-     * plus the principal nutation), the Moon's node at the equinox at the start (Ω₀ = 0) — its
-     * longitude ψ westward from +y (the IAU sense of ψ_A), its obliquity ε from the ecliptic
-     * pole, and the Moon's node Ω, one entry per time. */
-    const anglesAt = (years: ArrayLike<number>, x: number) => {
-      for (let k = 0; k < years.length; k++) times[k] = years[k] * YEAR;
-      const pole = earth!.averagedPole(years.length === TAIL ? times : times.subarray(0, years.length), 0, x);
-      try {
-        return { psi: pole.psi, eps: pole.obliquity, node: pole.moonNode };
-      } finally {
-        pole.free();
-      }
+    /** The spin axis's angles at `years` from the start, with the nod drawn × `x`: its longitude
+     * ψ westward from +y (the IAU sense of ψ_A), its obliquity ε from the ecliptic pole, and the
+     * Moon's node Ω. */
+    const anglesAt = (years: number, x: number) => {
+      const t = years * YEAR;
+      const node = (-2 * Math.PI * t) / nodePeriod;
+      return { node, psi: Math.abs(rate) * t + x * nut[0] * Math.sin(node), eps: eps0 + x * nut[1] * Math.cos(node) };
     };
-    /** The axis at `years`: its angles and its direction in the ecliptic axes (z the ecliptic
-     * pole). */
+    /** Its direction in the ecliptic axes (z the ecliptic pole). */
     const axisAt = (years: number, x: number) => {
-      const a = anglesAt([years], x);
-      const [psi, eps, node] = [a.psi[0], a.eps[0], a.node[0]];
-      return { psi, eps, node, dir: new THREE.Vector3(Math.sin(eps) * Math.sin(psi), Math.sin(eps) * Math.cos(psi), Math.cos(eps)) };
+      const a = anglesAt(years, x);
+      return { ...a, dir: new THREE.Vector3(Math.sin(a.eps) * Math.sin(a.psi), Math.sin(a.eps) * Math.cos(a.psi), Math.cos(a.eps)) };
     };
 
     return {
@@ -354,13 +341,12 @@ export const earthTopScene: SceneDef = {
         const span = Math.min(years, (TAIL_NODES * nodePeriod) / YEAR);
         if (years !== tailYears) {
           tailYears = years;
-          for (let k = 0; k < TAIL; k++) tailAt[k] = years - span * (1 - k / (TAIL - 1));
-          const { psi, eps } = anglesAt(tailAt, nod);
           for (let k = 0; k < TAIL; k++) {
-            const se = AXIS * Math.sin(eps[k]);
-            tailPos[3 * k] = se * Math.sin(psi[k]);
-            tailPos[3 * k + 1] = se * Math.cos(psi[k]);
-            tailPos[3 * k + 2] = AXIS * Math.cos(eps[k]);
+            const { psi, eps } = anglesAt(years - span * (1 - k / (TAIL - 1)), nod);
+            const se = AXIS * Math.sin(eps);
+            tailPos[3 * k] = se * Math.sin(psi);
+            tailPos[3 * k + 1] = se * Math.cos(psi);
+            tailPos[3 * k + 2] = AXIS * Math.cos(eps);
           }
         }
         (tail.geometry.getAttribute("position") as THREE.BufferAttribute).needsUpdate = true;
