@@ -18,7 +18,7 @@ import zlib
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from types import SimpleNamespace
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
@@ -89,11 +89,9 @@ class _LastStep:
     def __repr__(self) -> str:
         return "<the last step's derived formula>"
 
-    def __call__(self, v: Any) -> float:
-        raise NotImplementedError  # pragma: no cover - Template.__post_init__ replaces it
 
-
-_LAST_STEP = _LastStep()
+#: The sentinel, typed as the field it stands in for (it is never called: __post_init__ replaces it).
+_LAST_STEP: Callable[[Any], float] = cast("Callable[[Any], float]", _LastStep())
 
 
 @dataclass(frozen=True, eq=False)
