@@ -38,31 +38,42 @@ import threading, time
 import numpy as np
 import poinsot as ps
 {setup}
-count = [0]
+stalls = []
 done = threading.Event()
 def spin():
+    # Another Python thread, busy: it notes every stretch of more than 1 ms between two of its
+    # iterations (it waited for the GIL, or for a core).
+    last = time.perf_counter()
     while not done.is_set():
-        count[0] += 1
+        now = time.perf_counter()
+        if now - last > 1e-3:
+            stalls.append((last, now))
+        last = now
 worker = threading.Thread(target=spin)
 worker.start()
 time.sleep(0.2)
-c0, t0 = count[0], time.perf_counter()
+t0 = time.perf_counter()
 {call}
-c1, t1 = count[0], time.perf_counter()
+t1 = time.perf_counter()
+time.sleep(0.05)
 done.set()
 worker.join()
-# The other thread alone: its iterations per second with nothing else running.
-count[0] = 0
-done.clear()
-worker = threading.Thread(target=spin)
-worker.start()
-time.sleep(t1 - t0)
-done.set()
-worker.join()
-print((c1 - c0) / (t1 - t0), count[0] / (t1 - t0), t1 - t0)
+# The longest stall of the other thread inside the call's time [t0, t1].
+longest = max([min(b, t1) - max(a, t0) for a, b in stalls if b > t0 and a < t1], default=0.0)
+print(longest, t1 - t0)
 """
 
-#: One call of each family, ~1 s long: with the GIL held the other thread barely runs.
+
+def _longest_stall(setup: str, call: str) -> tuple[float, float]:
+    """(the other thread's longest stall during the call, the call's duration), seconds."""
+    code = textwrap.dedent(_GIL).replace("{setup}", setup).replace("{call}", call)
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    longest, duration = map(float, proc.stdout.split())
+    return longest, duration
+
+
+#: One call of each family, ~1 s long: with the GIL held the other thread waits for all of it.
 GIL_CALLS = {
     "FreeRigidBody.polhode": (
         "b = ps.FreeRigidBody([1.0, 2.0, 3.0], [1.0, 0.1, 1.0])",
@@ -78,7 +89,7 @@ GIL_CALLS = {
         "e.effective_gravity(t)",
     ),
     "FreeSymmetricTop.attitude": (
-        "top = ps.FreeSymmetricTop(1.0, 0.5, [0.1, 0.0, 2.0])\nt = np.linspace(0, 100, 2 * 10**6)",
+        "top = ps.FreeSymmetricTop(1.0, 0.5, [0.1, 0.0, 2.0])\nt = np.linspace(0, 100, 6 * 10**6)",
         "top.attitude(t)",
     ),
     "MovingFrame.to_fixed": (
@@ -96,26 +107,21 @@ GIL_CALLS = {
 
 @pytest.mark.parametrize("name", sorted(GIL_CALLS))
 def test_the_gil_is_released(name: str) -> None:
-    """Another Python thread keeps running while the core evaluates: it gets a good share of its
-    solo rate (the GIL held, it got 1–7 %). Negative control: a pure-Python busy loop in place of
-    the call holds the GIL in turns, and the thread gets clearly less than its solo rate."""
-    setup, call = GIL_CALLS[name]
-    code = textwrap.dedent(_GIL).replace("{setup}", setup).replace("{call}", call)
-    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
-    assert proc.returncode == 0, proc.stderr[-2000:]
-    during, solo, _ = map(float, proc.stdout.split())
-    assert during > 0.25 * solo, f"{name}: {during:.3g}/s during the call, {solo:.3g}/s alone"
+    """Another Python thread keeps running while the core evaluates: it never waits for more than
+    half of the call. With the GIL held it waits for the whole computation (the negative control
+    below). The criterion is the longest stall, not the other thread's rate, because the rate
+    depends on what else the machine runs (a rate criterion failed once on CI beside a compile:
+    18 % of the solo rate with the GIL released)."""
+    longest, duration = _longest_stall(*GIL_CALLS[name])
+    assert duration > 0.2, f"{name}: the call took only {duration:.3g} s; make it longer"
+    assert longest < 0.5 * duration, (
+        f"{name}: the other thread waited {longest:.3g} s of the call's {duration:.3g} s"
+    )
 
 
 def test_the_gil_negative_control() -> None:
-    """The GIL held by the main thread (a Python loop): the other thread's rate drops to about
-    half of its solo rate or less — the measurement above can tell held from released."""
-    code = (
-        textwrap.dedent(_GIL)
-        .replace("{setup}", "")
-        .replace("{call}", "x = 0\nfor i in range(3 * 10**7): x += i")
-    )
-    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
-    assert proc.returncode == 0, proc.stderr[-2000:]
-    during, solo, _ = map(float, proc.stdout.split())
-    assert during < 0.75 * solo, f"{during:.3g}/s during, {solo:.3g}/s alone"
+    """A call that holds the GIL (a builtin's C loop: sum over a range) stalls the other thread
+    for most of the call — the measurement above can tell held from released."""
+    longest, duration = _longest_stall("", "sum(range(4 * 10**7))")
+    assert duration > 0.2
+    assert longest > 0.8 * duration, f"waited {longest:.3g} s of {duration:.3g} s"

@@ -376,18 +376,20 @@ earth_export! {
         py: Python<'_>,
         latitude: PyReadonlyArray1<'_, f64>,
     ) -> PyResult<(Rows<3>, Values, Values, Rows<3>)> {
-        let each = per_latitude(py, &latitude, |l| {
+        // Split into columns with the GIL still released (the split held it ~0.2 s for 3·10⁶).
+        let lats = vec_in(&latitude);
+        let earth = &self.inner;
+        run(py, None, || {
+            let each = poinsot::control::try_map(&lats, |&l| {
+                Ok((earth.effective_gravity(l)?, earth.centrifugal_acceleration(l)?))
+            })?;
             Ok((
-                self.inner.effective_gravity(l)?,
-                self.inner.centrifugal_acceleration(l)?,
+                each.iter().map(|(g, _)| g.vector).collect(),
+                each.iter().map(|(g, _)| g.magnitude).collect(),
+                each.iter().map(|(g, _)| g.deviation).collect(),
+                each.iter().map(|(_, c)| *c).collect(),
             ))
-        })?;
-        Ok((
-            each.iter().map(|(g, _)| g.vector).collect(),
-            each.iter().map(|(g, _)| g.magnitude).collect(),
-            each.iter().map(|(g, _)| g.deviation).collect(),
-            each.iter().map(|(_, c)| *c).collect(),
-        ))
+        })
     }
 
     /// −2 ω × v (N, 3) for (N,) latitudes and (N, 3) ENU velocities.

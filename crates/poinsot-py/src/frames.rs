@@ -5,7 +5,7 @@
 //! (3, 3) array. Particles travel as (N, 3) arrays.
 use std::cell::RefCell;
 
-use numpy::{PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
+use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2};
 use poinsot::frames::ParticleState;
 use poinsot::frames::{
     simulate_particle_at, FrameMotion, MovingFrame, SpringParticle, SteadyMotion,
@@ -78,26 +78,27 @@ fn same_rows(names: &str, lens: &[usize]) -> PyResult<usize> {
 }
 
 /// `f` at each row index 0..n (the GIL released, Ctrl-C polled every chunk of rows: [`run`],
-/// [`poinsot::control::try_map_n`]), its K outputs as K (N, 3) arrays ([`columns`]).
+/// [`poinsot::control::try_map_n`]), its K outputs as K (N, 3) arrays. The outputs are split
+/// into columns with the GIL still released and handed to numpy without a copy.
 fn per_row<'py, const K: usize>(
     py: Python<'py>,
     n: usize,
     f: impl Fn(usize) -> poinsot::Result<[Vec3; K]> + Send,
 ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
-    let each = run(py, None, || poinsot::control::try_map_n(n, f))?;
-    Ok(columns(py, &each))
+    let columns = run(py, None, || {
+        let each = poinsot::control::try_map_n(n, f)?;
+        Ok(columns(&each))
+    })?;
+    columns
+        .into_iter()
+        .map(|c| PyArray1::from_vec(py, c).reshape([n, 3]))
+        .collect()
 }
 
-/// The K outputs of each row as K (N, 3) arrays.
-fn columns<'py, const K: usize>(
-    py: Python<'py>,
-    each: &[[Vec3; K]],
-) -> Vec<Bound<'py, PyArray2<f64>>> {
+/// The K outputs of each row as K flat row-major (N·3) vectors.
+fn columns<const K: usize>(each: &[[Vec3; K]]) -> Vec<Vec<f64>> {
     (0..K)
-        .map(|k| {
-            let rows: Vec<[f64; 3]> = each.iter().map(|x| a3(&x[k])).collect();
-            rows_out(py, &rows)
-        })
+        .map(|k| each.iter().flat_map(|x| a3(&x[k])).collect())
         .collect()
 }
 
