@@ -25,7 +25,10 @@ at fault — ``"samples: must be >= 2, got 1"``. A long run is stopped by Ctrl-C
 
 from __future__ import annotations
 
-from ._core import (
+from . import _core
+
+# Re-exported through __all__, which is read from the core's table below.
+from ._core import (  # noqa: F401
     GimbalLockError,
     IntegrationError,
     InternalError,
@@ -47,13 +50,11 @@ class GimbalLockWarning(UserWarning):
     (poinsot sets the third angle to 0)."""
 
 
+#: The core's classes in the order of its table (``ErrorKind::ALL``, read through
+#: ``_core.error_classes()``), then this module's own; a stopped run raises Python's own
+#: ``KeyboardInterrupt``.
 __all__ = [
-    "PoinsotError",
-    "InvalidInertiaError",
-    "InvalidRotationError",
-    "InvalidMeshError",
-    "GimbalLockError",
-    "IntegrationError",
+    *(name for _, name in _core.error_classes() if name != "KeyboardInterrupt"),
     "ArgumentTypeError",
     "InternalError",
     "GimbalLockWarning",
