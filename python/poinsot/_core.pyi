@@ -8,6 +8,8 @@ from numpy.typing import NDArray
 
 # A long call's progress callback: called with the fraction done, in [0, 1].
 _Progress: TypeAlias = Callable[[float], Any] | None
+# A run's settings, as _validate.run_settings makes them: samples, rtol, atol, max_steps.
+_RunSettings: TypeAlias = tuple[int, float, float, int]
 
 __version__: str
 DEFAULT_MAX_STEPS: int
@@ -477,10 +479,7 @@ class EarthCore:
         amplitude: float,
         azimuth: float,
         duration: float,
-        samples: int,
-        rtol: float,
-        atol: float,
-        max_steps: int,
+        settings: _RunSettings,
         progress: _Progress = None,
     ) -> FoucaultRunCore: ...
     def inertial_swing(
@@ -488,10 +487,7 @@ class EarthCore:
         latitude: float,
         velocity: NDArray[np.float64],
         duration: float | None,
-        samples: int,
-        rtol: float,
-        atol: float,
-        max_steps: int,
+        settings: _RunSettings,
     ) -> InertialRunCore: ...
     def low_flow(
         self,
@@ -501,10 +497,7 @@ class EarthCore:
         pull: float,
         friction: float,
         duration: float,
-        samples: int,
-        rtol: float,
-        atol: float,
-        max_steps: int,
+        settings: _RunSettings,
     ) -> LowFlowCore: ...
 
 @final
@@ -865,10 +858,7 @@ def dynamics_simulate(
     torque_fn: Callable[[float, NDArray[np.float64], NDArray[np.float64]], Any] | None,
     method: str,
     dt: float | None,
-    samples: int,
-    rtol: float,
-    atol: float,
-    max_steps: int,
+    settings: _RunSettings,
     progress: _Progress,
 ) -> TrajectoryCore: ...
 
@@ -887,9 +877,7 @@ def dynamics_simulate_batch(
 # ---- carried bodies and the gyrocompass (gyrocompass.rs) ----
 # python/poinsot/gyrocompass.py prepares the arguments; angles in rad, SI units.
 
-_GyroArgs: TypeAlias = tuple[
-    float, float, float, float, tuple[float, float, float], float, float, float
-]
+_GyroArgs: TypeAlias = tuple[float, float, float, float, tuple[float, float, float], EarthCore]
 
 @final
 class GyrocompassCore:
@@ -900,9 +888,7 @@ class GyrocompassCore:
         pendulosity: float,
         damping: float,
         inertia: tuple[float, float, float],
-        rotation_rate: float,
-        radius: float,
-        g: float,
+        earth: EarthCore,
     ) -> GyrocompassCore: ...
     @classmethod
     def schuler_tuned(
@@ -911,12 +897,10 @@ class GyrocompassCore:
         pendulosity: float,
         damping: float,
         inertia: tuple[float, float, float],
-        rotation_rate: float,
-        radius: float,
-        g: float,
+        earth: EarthCore,
     ) -> GyrocompassCore: ...
     @staticmethod
-    def schuler_period(rotation_rate: float, radius: float, g: float) -> float: ...
+    def schuler_period(earth: EarthCore) -> float: ...
     def __reduce__(self) -> tuple[type[GyrocompassCore], _GyroArgs]: ...
     @property
     def args(self) -> _GyroArgs: ...
@@ -941,28 +925,9 @@ class GyrocompassCore:
         tilt0: float,
         speed: float,
         course: float,
-        method: str,
-        samples: int,
-        rtol: float,
-        atol: float,
-        max_steps: int,
-        progress: _Progress,
-    ) -> tuple[
-        NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]
-    ]: ...
-    def simulate_track(
-        self,
-        duration: float,
-        heading0: float,
-        tilt0: float,
-        speed: float,
-        course: float,
         turns: list[tuple[float, float | None, float, float]],
         method: str,
-        samples: int,
-        rtol: float,
-        atol: float,
-        max_steps: int,
+        settings: _RunSettings,
         progress: _Progress,
     ) -> tuple[
         NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]
@@ -973,7 +938,7 @@ class GyrocompassCore:
         NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], tuple[float, float]
     ]: ...
 
-def dynamics_check_place(earth: tuple[float, float, float], latitude: float) -> None: ...
+def dynamics_check_place(earth: EarthCore, latitude: float) -> None: ...
 def dynamics_simulate_carried(
     inertia: NDArray[np.float64],
     omega0: NDArray[np.float64],
@@ -984,16 +949,13 @@ def dynamics_simulate_carried(
     frame_attitude: NDArray[np.float64],
     pivot: NDArray[np.float64],
     gravity: NDArray[np.float64],
-    earth: tuple[float, float, float],
+    earth: EarthCore | None,
     latitude: float,
     mass_moment: NDArray[np.float64],
     torque_kind: str,
     torque_vector: NDArray[np.float64],
     method: str,
-    samples: int,
-    rtol: float,
-    atol: float,
-    max_steps: int,
+    settings: _RunSettings,
     progress: _Progress,
 ) -> tuple[TrajectoryCore, NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]: ...
 

@@ -428,10 +428,7 @@ def simulate(
         fn_wrapped,
         method,
         dt_f,
-        n,
-        as_scalar(rtol, "rtol"),
-        as_scalar(atol, "atol"),
-        steps,
+        (n, as_scalar(rtol, "rtol"), as_scalar(atol, "atol"), steps),
         progress,
     )
     return Trajectory(core)

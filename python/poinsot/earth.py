@@ -706,7 +706,7 @@ class Earth:
                 bar.update(task, completed=fraction)
 
         try:
-            r = self._core.foucault_swing(lat, length, amp, az, dur, *settings, report)
+            r = self._core.foucault_swing(lat, length, amp, az, dur, settings, report)
         finally:
             if bar is not None:
                 bar.stop()
@@ -741,7 +741,7 @@ class Earth:
             raise PoinsotError(f"velocity: must have shape (2,) [v_east, v_north], got {v.shape}")
         dur = None if duration is None else as_scalar(duration, "duration")
         settings = run_settings(samples, rtol, atol, max_steps)
-        r = self._core.inertial_swing(lat, np.ascontiguousarray(v), dur, *settings)
+        r = self._core.inertial_swing(lat, np.ascontiguousarray(v), dur, settings)
         return _result(InertialOscillation, r)
 
     def flow_into_low(
@@ -780,6 +780,6 @@ class Earth:
             as_scalar(pull, "pull"),
             as_scalar(friction, "friction"),
             as_scalar(duration, "duration"),
-            *run_settings(samples, rtol, atol, max_steps),
+            run_settings(samples, rtol, atol, max_steps),
         )
         return _result(LowFlow, r)

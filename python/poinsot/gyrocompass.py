@@ -53,14 +53,27 @@ def _si(value: Any, name: str, unit: str) -> float:
     return as_scalar(value, name)
 
 
-def _earth_args(earth: Any) -> tuple[float, float, float]:
+def _earth_core(earth: Any) -> _core.EarthCore:
+    """The core Earth held by ``earth`` (a :class:`~poinsot.Earth`; None: the default one)."""
     from .earth import Earth
 
     if earth is None:
         earth = Earth()
     if not isinstance(earth, Earth):
         raise ArgumentTypeError(f"earth: must be a poinsot.Earth, got {type(earth).__name__}")
-    return (earth.rotation_rate, earth.radius, earth.g)
+    return earth._core
+
+
+def _earth_numbers(core: _core.EarthCore) -> tuple[float, float, float]:
+    """A core Earth's (rotation_rate, radius, g)."""
+    return (core.rotation_rate, core.radius, core.g)
+
+
+def _earth_of(core: _core.EarthCore) -> Any:
+    """The :class:`~poinsot.Earth` of a core Earth."""
+    from .earth import Earth
+
+    return Earth(*_earth_numbers(core))
 
 
 class Place:
@@ -74,7 +87,7 @@ class Place:
 
     def __init__(self, latitude: Any, earth: Any = None) -> None:
         lat = _si(latitude, "latitude", "radian")
-        self._earth = _earth_args(earth)
+        self._earth = _earth_core(earth)
         # The core makes the place (Carrier::earth) and refuses a latitude by name.
         _core.dynamics_check_place(self._earth, lat)
         self.latitude: float = lat
@@ -82,9 +95,7 @@ class Place:
     @property
     def earth(self) -> Any:
         """The :class:`~poinsot.Earth`."""
-        from .earth import Earth
-
-        return Earth(*self._earth)
+        return _earth_of(self._earth)
 
     def __repr__(self) -> str:
         return f"Place(latitude={self.latitude!r}, earth={self.earth!r})"
@@ -96,7 +107,7 @@ class Place:
         return (
             isinstance(other, Place)
             and other.latitude == self.latitude
-            and other._earth == self._earth
+            and _earth_numbers(other._earth) == _earth_numbers(self._earth)
         )
 
     __hash__ = None  # type: ignore[assignment]
@@ -191,7 +202,7 @@ def _simulate_carried(
             if gravity is None
             else as_vector3(gravity, "gravity")
         )
-        earth, lat = (0.0, 1.0, 1.0), 0.0
+        earth, lat = None, 0.0
     else:
         raise ArgumentTypeError(
             "carried_by: must be a poinsot.MovingFrame or a poinsot.Place, got "
@@ -240,7 +251,7 @@ def _simulate_carried(
         tkind,
         np.ascontiguousarray(tvec, dtype=np.float64),
         _method(method),
-        *run_settings(samples, rtol, atol, max_steps),
+        run_settings(samples, rtol, atol, max_steps),
         as_callable(progress, "progress"),
     )
     return CarriedTrajectory(core, rel, frame_q, rel_w)
@@ -379,7 +390,7 @@ class Gyrocompass(show.Displayed):
             _si(pendulosity, "pendulosity", "joule"),
             _si(damping, "damping", "dimensionless"),
             _moments(inertia),
-            *_earth_args(earth),
+            _earth_core(earth),
         )
 
     @classmethod
@@ -400,14 +411,14 @@ class Gyrocompass(show.Displayed):
             _si(pendulosity, "pendulosity", "joule"),
             _si(damping, "damping", "dimensionless"),
             _moments(inertia),
-            *_earth_args(earth),
+            _earth_core(earth),
         )
         return out
 
     @staticmethod
     def schuler_period(earth: Any = None) -> float:
         """2π √(R/g) (s): 5063.5 s = 84.4 min on the default Earth."""
-        return float(_core.GyrocompassCore.schuler_period(*_earth_args(earth)))
+        return float(_core.GyrocompassCore.schuler_period(_earth_core(earth)))
 
     def __reduce__(self) -> tuple[Any, ...]:
         return (_restore, tuple(self._core.args))
@@ -426,9 +437,7 @@ class Gyrocompass(show.Displayed):
     @property
     def earth(self) -> Any:
         """The :class:`~poinsot.Earth`."""
-        from .earth import Earth
-
-        return Earth(*self._core.args[5:])
+        return _earth_of(self._core.args[5])
 
     # -- results ------------------------------------------------------------------------------
     period = core_property(
@@ -563,14 +572,10 @@ class Gyrocompass(show.Displayed):
         how = method if isinstance(method, str) else str(method)
         settings = run_settings(samples, rtol, atol, max_steps)
         report = as_callable(progress, "progress")
-        if turns is None:
-            t, heading, tilt_out, lat = self._core.simulate(
-                span, start, tilt, v, c, how, *settings, report
-            )
-        else:
-            t, heading, tilt_out, lat = self._core.simulate_track(
-                span, start, tilt, v, c, _turns(turns), how, *settings, report
-            )
+        track = [] if turns is None else _turns(turns)
+        t, heading, tilt_out, lat = self._core.simulate(
+            span, start, tilt, v, c, track, how, settings, report
+        )
         return CompassRun(t, heading, tilt_out, lat)
 
     def linear_solution(

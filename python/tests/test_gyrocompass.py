@@ -124,6 +124,28 @@ def test_units_pickle_and_repr():
         ps.Gyrocompass(3 * u.m)
 
 
+def test_the_compass_holds_the_earths_core_object():
+    """The compass and the place take the Earth's core object itself (not its three numbers
+    flattened and rebuilt): the core compass holds it, and an unusual Earth survives pickling
+    and comes back as a poinsot.Earth equal in its numbers."""
+    from poinsot import _core
+
+    earth = ps.Earth(1e-4, 6.0e6, 9.5)
+    c = ps.Gyrocompass(0.7, earth=earth)
+    assert isinstance(c._core.args[5], _core.EarthCore)
+    back = pickle.loads(pickle.dumps(c))
+    for got in (c.earth, back.earth):
+        assert isinstance(got, ps.Earth)
+        assert (got.rotation_rate, got.radius, got.g) == (1e-4, 6.0e6, 9.5)
+    assert back.period == c.period
+    assert ps.Gyrocompass.schuler_period(earth) == pytest.approx(
+        2 * math.pi * math.sqrt(6.0e6 / 9.5), rel=1e-14
+    )
+    place = ps.Place(0.7, earth)
+    assert place == ps.Place(0.7, ps.Earth(1e-4, 6.0e6, 9.5)) and place != ps.Place(0.7)
+    assert pickle.loads(pickle.dumps(place)) == place
+
+
 def test_bad_input_refused_by_name():
     with pytest.raises(ps.PoinsotError, match="^latitude.*pole"):
         ps.Gyrocompass(math.pi / 2)

@@ -15,7 +15,8 @@ use numpy::{
     IntoPyArray, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2,
     PyUntypedArray, PyUntypedArrayMethods,
 };
-use poinsot::integrate::Options;
+use poinsot::dynamics::{Method, SimulateOptions};
+use poinsot::integrate::{Options, Tolerances};
 use poinsot::{Mat3, Vec3};
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
@@ -300,6 +301,35 @@ pub fn records<'a>(
 /// its [`FromStr`] in the core, whose error names the argument.
 pub fn parse<T: FromStr<Err = poinsot::Error>>(name: &str) -> PyResult<T> {
     name.parse().py()
+}
+
+/// A run's settings, one argument as Python's `_validate.run_settings` makes them: (samples,
+/// rtol, atol, max_steps), each already checked by it and again by the core's run.
+#[derive(FromPyObject, Clone, Copy)]
+pub struct RunSettings(pub usize, pub f64, pub f64, pub usize);
+
+impl RunSettings {
+    /// The integrator's tolerances (rtol, atol, max_steps).
+    pub fn tolerances(&self) -> Tolerances {
+        Tolerances {
+            rtol: self.1,
+            atol: self.2,
+            max_steps: self.3,
+        }
+    }
+
+    /// A rigid body's run options: the method named `method` (the step `dt` the method's
+    /// default), the samples and the tolerances.
+    pub fn simulate(&self, method: &str) -> PyResult<SimulateOptions> {
+        Ok(SimulateOptions {
+            method: Method::parse(method).py()?,
+            dt: None,
+            samples: self.0,
+            rtol: self.1,
+            atol: self.2,
+            max_steps: self.3,
+        })
+    }
 }
 
 /// Integrator options from the Python keywords.

@@ -16,7 +16,7 @@ use poinsot_py_macros::export;
 use pyo3::prelude::*;
 
 use crate::control::{run, run_attached};
-use crate::convert::{matrix, opt_quat, parse, rows_into, rows_view, vector};
+use crate::convert::{matrix, opt_quat, parse, rows_into, rows_view, vector, RunSettings};
 use crate::errors::{invalid, IntoPy};
 
 /// A torque model calling Python; the first Python error is kept and NaN returned (which stops
@@ -150,28 +150,9 @@ pub(crate) fn initial_state(
     ))
 }
 
-/// A run's options from the Python keywords: the method's name, samples, rtol, atol and
-/// max_steps (the step `dt` the method's default).
-pub(crate) fn simulate_options(
-    method: &str,
-    samples: usize,
-    rtol: f64,
-    atol: f64,
-    max_steps: usize,
-) -> PyResult<SimulateOptions> {
-    Ok(SimulateOptions {
-        method: Method::parse(method).py()?,
-        dt: None,
-        samples,
-        rtol,
-        atol,
-        max_steps,
-    })
-}
-
 /// Simulates one body (see `poinsot.simulate`).
 #[export]
-#[pyo3(signature = (inertia, omega0, attitude0, duration, torque_kind, torque_vector, torque_scalar, torque_fn, method, dt, samples, rtol, atol, max_steps, progress))]
+#[pyo3(signature = (inertia, omega0, attitude0, duration, torque_kind, torque_vector, torque_scalar, torque_fn, method, dt, settings, progress))]
 #[allow(clippy::too_many_arguments)]
 fn dynamics_simulate<'py>(
     py: Python<'py>,
@@ -185,16 +166,13 @@ fn dynamics_simulate<'py>(
     torque_fn: Option<Bound<'py, PyAny>>,
     method: &str,
     dt: Option<f64>,
-    samples: usize,
-    rtol: f64,
-    atol: f64,
-    max_steps: usize,
+    settings: RunSettings,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<PyTrajectory> {
     let (body, w0, q0) = initial_state(&inertia, &omega0, &attitude0)?;
     let opts = SimulateOptions {
         dt,
-        ..simulate_options(method, samples, rtol, atol, max_steps)?
+        ..settings.simulate(method)?
     };
     let torque_vector = vector("torque", &torque_vector)?;
     let kind: TorqueKind = parse(torque_kind)?;

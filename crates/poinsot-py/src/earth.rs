@@ -10,7 +10,7 @@ use numpy::ndarray::{Array2, Array3};
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3, PyReadonlyArray1, PyReadonlyArray2};
 use poinsot::earth::{self as ea, Earth, FallModel, Gravity, LowSetup};
 use poinsot::frames::ParticleState;
-use poinsot::integrate::{sample_times, Tolerances};
+use poinsot::integrate::sample_times;
 use poinsot::limits::check_count;
 use poinsot::Vec3;
 use poinsot_py_macros::export;
@@ -18,7 +18,9 @@ use pyo3::prelude::*;
 use pyo3::types::PyType;
 
 use crate::control::{map_each, run};
-use crate::convert::{array_in, options, parse, rows_in, rows_view, vec_in, Rows, Values};
+use crate::convert::{
+    array_in, options, parse, rows_in, rows_view, vec_in, Rows, RunSettings, Values,
+};
 use crate::errors::{invalid, IntoPy};
 
 /// Bytes per sample of a trajectory in the local frame: t and the state (6).
@@ -204,15 +206,6 @@ fn gravity_name(gravity: Gravity) -> &'static str {
     match gravity {
         Gravity::Uniform => "uniform",
         Gravity::InverseSquare => "inverse-square",
-    }
-}
-
-/// The tolerances of a run from the Python keywords.
-fn tolerances(rtol: f64, atol: f64, max_steps: usize) -> Tolerances {
-    Tolerances {
-        rtol,
-        atol,
-        max_steps,
     }
 }
 
@@ -474,7 +467,7 @@ earth_export! {
 
     /// A Foucault run as the core makes it (`Earth::foucault_swing`; in stretches reporting to
     /// `progress(fraction)` when given: `Earth::foucault_swing_in`), measured.
-    #[pyo3(signature = (latitude, length, amplitude, azimuth, duration, samples, rtol, atol, max_steps, progress=None))]
+    #[pyo3(signature = (latitude, length, amplitude, azimuth, duration, settings, progress=None))]
     #[allow(clippy::too_many_arguments)]
     fn foucault_swing(
         &self,
@@ -484,13 +477,10 @@ earth_export! {
         amplitude: f64,
         azimuth: f64,
         duration: f64,
-        samples: usize,
-        rtol: f64,
-        atol: f64,
-        max_steps: usize,
+        settings: RunSettings,
         progress: Option<Bound<'_, PyAny>>,
     ) -> PyResult<PyFoucaultRun> {
-        let tol = tolerances(rtol, atol, max_steps);
+        let (samples, tol) = (settings.0, settings.tolerances());
         // With a `progress(fraction)` callable: the core's run in stretches, reporting after each.
         let stretches = match progress {
             Some(_) => ea::foucault_stretches(duration),
@@ -530,21 +520,17 @@ earth_export! {
 
     /// An inertial oscillation as the core makes it (`Earth::inertial_swing`; `duration` None:
     /// the core's default).
-    #[pyo3(signature = (latitude, velocity, duration, samples, rtol, atol, max_steps))]
-    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (latitude, velocity, duration, settings))]
     fn inertial_swing(
         &self,
         py: Python<'_>,
         latitude: f64,
         velocity: PyReadonlyArray1<'_, f64>,
         duration: Option<f64>,
-        samples: usize,
-        rtol: f64,
-        atol: f64,
-        max_steps: usize,
+        settings: RunSettings,
     ) -> PyResult<PyInertialRun> {
         let v = array_in::<2>("velocity", &velocity)?;
-        let tol = tolerances(rtol, atol, max_steps);
+        let (samples, tol) = (settings.0, settings.tolerances());
         let swing = run(py, None, || {
             self.inner
                 .inertial_swing(latitude, v, duration, samples, &tol)
@@ -572,10 +558,7 @@ earth_export! {
         pull: f64,
         friction: f64,
         duration: f64,
-        samples: usize,
-        rtol: f64,
-        atol: f64,
-        max_steps: usize,
+        settings: RunSettings,
     ) -> PyResult<PyLowFlow> {
         let setup = LowSetup {
             radius,
@@ -583,7 +566,7 @@ earth_export! {
             pull,
             friction,
         };
-        let tol = tolerances(rtol, atol, max_steps);
+        let (samples, tol) = (settings.0, settings.tolerances());
         let flow = run(py, None, || {
             self.inner
                 .low_flow(latitude, &setup, duration, samples, &tol)

@@ -2,7 +2,7 @@
 //! mapping only). `GyrocompassCore` holds a checked core value; the public, documented class is
 //! `poinsot.Gyrocompass` (python/poinsot/gyrocompass.py). The carrying frame travels as a kind
 //! ("frame" or "earth"), the frame's 15 numbers (origin, velocity, acceleration, ω, ω̇) and
-//! attitude (3, 3), the pivot and gravity (3,), and the Earth's (Ω, R, g) and latitude.
+//! attitude (3, 3), the pivot and gravity (3,), and the Earth (`EarthCore`) and latitude.
 use numpy::{PyReadonlyArray1, PyReadonlyArray2};
 use poinsot::dynamics::{
     simulate_carried, Carrier, CompassRun, Gyrocompass, Load, Ship, TorqueKind, Track, Turn,
@@ -15,8 +15,9 @@ use pyo3::prelude::*;
 use pyo3::types::PyType;
 
 use crate::control::run;
-use crate::convert::{mat3, parse, rows_into, vec_in, vector, Values};
-use crate::dynamics::{initial_state, simulate_options, PyTrajectory};
+use crate::convert::{mat3, parse, rows_into, vec_in, vector, RunSettings, Values};
+use crate::dynamics::{initial_state, PyTrajectory};
+use crate::earth::PyEarth;
 use crate::errors::{invalid, IntoPy};
 
 /// A pendulous gyrocompass (private; use `poinsot.Gyrocompass`): the core's `Gyrocompass`,
@@ -26,7 +27,8 @@ pub struct PyGyrocompass {
     inner: Gyrocompass,
 }
 
-type Args = (f64, f64, f64, f64, [f64; 3], f64, f64, f64);
+/// The constructor's arguments: latitude, H, P, ζ, inertia and the Earth.
+type Args = (f64, f64, f64, f64, [f64; 3], PyEarth);
 
 /// A compass run's (t, heading, tilt, latitude) arrays (s, rad).
 type CompassArrays = (Values, Values, Values, Values);
@@ -55,9 +57,7 @@ fn args(c: &Gyrocompass) -> Args {
         c.pendulosity,
         c.damping,
         c.inertia,
-        c.earth.rotation_rate,
-        c.earth.radius,
-        c.earth.g,
+        PyEarth { inner: c.earth },
     )
 }
 
@@ -80,60 +80,39 @@ core_export! {
         settle -> (f64, f64);
     }
 
-    /// latitude (rad), H (kg·m²/s), P = m g l (N·m), damping ratio ζ, inertia (3,) (kg·m²),
-    /// and the Earth's Ω (rad/s), R (m), g (m/s²); errors name them.
+    /// latitude (rad), H (kg·m²/s), P = m g l (N·m), damping ratio ζ, inertia (3,) (kg·m²)
+    /// and the Earth (checked when made); errors name them.
     #[new]
-    #[allow(clippy::too_many_arguments)]
     fn new(
         latitude: f64,
         angular_momentum: f64,
         pendulosity: f64,
         damping: f64,
         inertia: [f64; 3],
-        rotation_rate: f64,
-        radius: f64,
-        g: f64,
+        earth: PyRef<'_, PyEarth>,
     ) -> PyResult<Self> {
-        let earth = Earth::new(rotation_rate, radius, g).py()?;
-        Ok(Self {
-            inner: Gyrocompass::new(
-                latitude,
-                angular_momentum,
-                pendulosity,
-                damping,
-                inertia,
-                earth,
-            )
-            .py()?,
-        })
+        let c = Gyrocompass::new(latitude, angular_momentum, pendulosity, damping, inertia, earth.inner);
+        Ok(Self { inner: c.py()? })
     }
 
     /// The compass whose period is Schuler's (H chosen); arguments as the constructor less H.
     #[classmethod]
-    #[allow(clippy::too_many_arguments)]
     fn schuler_tuned(
         _cls: &Bound<'_, PyType>,
         latitude: f64,
         pendulosity: f64,
         damping: f64,
         inertia: [f64; 3],
-        rotation_rate: f64,
-        radius: f64,
-        g: f64,
+        earth: PyRef<'_, PyEarth>,
     ) -> PyResult<Self> {
-        let earth = Earth::new(rotation_rate, radius, g).py()?;
-        Ok(Self {
-            inner: Gyrocompass::schuler_tuned(latitude, pendulosity, damping, inertia, earth)
-                .py()?,
-        })
+        let c = Gyrocompass::schuler_tuned(latitude, pendulosity, damping, inertia, earth.inner);
+        Ok(Self { inner: c.py()? })
     }
 
-    /// 2π √(R/g) (s).
+    /// 2π √(R/g) (s) of the Earth.
     #[staticmethod]
-    fn schuler_period(rotation_rate: f64, radius: f64, g: f64) -> PyResult<f64> {
-        Ok(Gyrocompass::schuler_period(
-            &Earth::new(rotation_rate, radius, g).py()?,
-        ))
+    fn schuler_period(earth: PyRef<'_, PyEarth>) -> f64 {
+        Gyrocompass::schuler_period(&earth.inner)
     }
 
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> (Bound<'py, PyType>, Args) {
@@ -156,8 +135,10 @@ core_export! {
         self.inner.speed_error_small_angle(speed, course).py()
     }
 
-    /// (t, heading, tilt, latitude) arrays (s, rad) of the full model's run.
-    #[pyo3(signature = (duration, heading0, tilt0, speed, course, method, samples, rtol, atol, max_steps, progress))]
+    /// (t, heading, tilt, latitude) arrays (s, rad) of the full model's run on a track: the
+    /// start's speed (m/s) and course (rad), then the turns (time s, duration s or None, speed
+    /// m/s, course rad; none: a steady track, the core's `Gyrocompass::simulate`).
+    #[pyo3(signature = (duration, heading0, tilt0, speed, course, turns, method, settings, progress))]
     #[allow(clippy::too_many_arguments)]
     fn simulate<'py>(
         &self,
@@ -167,42 +148,12 @@ core_export! {
         tilt0: f64,
         speed: f64,
         course: f64,
-        method: &str,
-        samples: usize,
-        rtol: f64,
-        atol: f64,
-        max_steps: usize,
-        progress: Option<Bound<'py, PyAny>>,
-    ) -> PyResult<CompassArrays> {
-        let opts = simulate_options(method, samples, rtol, atol, max_steps)?;
-        let ship = Ship::new(speed, course).py()?;
-        let c = self.inner;
-        compass_run(py, progress, || {
-            c.simulate(duration, heading0, tilt0, Some(ship), &opts)
-        })
-    }
-
-    /// As `simulate` on a track: the start's speed (m/s) and course (rad), then the turns
-    /// (time s, duration s or None, speed m/s, course rad).
-    #[pyo3(signature = (duration, heading0, tilt0, speed, course, turns, method, samples, rtol, atol, max_steps, progress))]
-    #[allow(clippy::too_many_arguments)]
-    fn simulate_track<'py>(
-        &self,
-        py: Python<'py>,
-        duration: f64,
-        heading0: f64,
-        tilt0: f64,
-        speed: f64,
-        course: f64,
         turns: Vec<(f64, Option<f64>, f64, f64)>,
         method: &str,
-        samples: usize,
-        rtol: f64,
-        atol: f64,
-        max_steps: usize,
+        settings: RunSettings,
         progress: Option<Bound<'py, PyAny>>,
     ) -> PyResult<CompassArrays> {
-        let opts = simulate_options(method, samples, rtol, atol, max_steps)?;
+        let opts = settings.simulate(method)?;
         let turns = turns
             .into_iter()
             .map(|(time, duration, speed, course)| Turn {
@@ -257,7 +208,7 @@ type CarriedOut<'py> = (
 
 /// Simulates a body carried by a moving frame (see `poinsot.simulate(..., carried_by=...)`).
 #[export]
-#[pyo3(signature = (inertia, omega0, attitude0, duration, kind, frame, frame_attitude, pivot, gravity, earth, latitude, mass_moment, torque_kind, torque_vector, method, samples, rtol, atol, max_steps, progress))]
+#[pyo3(signature = (inertia, omega0, attitude0, duration, kind, frame, frame_attitude, pivot, gravity, earth, latitude, mass_moment, torque_kind, torque_vector, method, settings, progress))]
 #[allow(clippy::too_many_arguments)]
 fn dynamics_simulate_carried<'py>(
     py: Python<'py>,
@@ -270,16 +221,13 @@ fn dynamics_simulate_carried<'py>(
     frame_attitude: PyReadonlyArray2<'py, f64>,
     pivot: PyReadonlyArray1<'py, f64>,
     gravity: PyReadonlyArray1<'py, f64>,
-    earth: (f64, f64, f64),
+    earth: Option<PyRef<'py, PyEarth>>,
     latitude: f64,
     mass_moment: PyReadonlyArray1<'py, f64>,
     torque_kind: &str,
     torque_vector: PyReadonlyArray1<'py, f64>,
     method: &str,
-    samples: usize,
-    rtol: f64,
-    atol: f64,
-    max_steps: usize,
+    settings: RunSettings,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<CarriedOut<'py>> {
     let (body, w0, q0) = initial_state(&inertia, &omega0, &attitude0)?;
@@ -305,10 +253,7 @@ fn dynamics_simulate_carried<'py>(
             )
             .py()?
         }
-        "earth" => {
-            let e = Earth::new(earth.0, earth.1, earth.2).py()?;
-            Carrier::earth(e, latitude).py()?
-        }
+        "earth" => place(earth.as_deref(), latitude)?,
         other => {
             return Err(invalid(
                 "carried_by",
@@ -323,7 +268,7 @@ fn dynamics_simulate_carried<'py>(
     let mut torque = parse::<TorqueKind>(torque_kind)?
         .torque(vector("torque", &torque_vector)?, 0.0)
         .py()?;
-    let opts = simulate_options(method, samples, rtol, atol, max_steps)?;
+    let opts = settings.simulate(method)?;
     let out = run(py, progress.as_ref(), || {
         simulate_carried(&body, w0, q0, duration, &carrier, load, &mut torque, &opts)
     })?;
@@ -335,13 +280,18 @@ fn dynamics_simulate_carried<'py>(
     ))
 }
 
+/// The place at `latitude` (rad) on `earth` (None: the core's default Earth) as the core makes
+/// it (`Carrier::earth`; the errors name `latitude`).
+fn place(earth: Option<&PyEarth>, latitude: f64) -> PyResult<Carrier> {
+    let e = earth.map_or_else(Earth::default, |e| e.inner);
+    Carrier::earth(e, latitude).py()
+}
+
 /// Checks a place on the Earth as the core makes one (`Carrier::earth`; the errors name
-/// `latitude`, or the Earth's argument): `poinsot.Place` calls it when made.
+/// `latitude`): `poinsot.Place` calls it when made.
 #[export]
-fn dynamics_check_place(earth: (f64, f64, f64), latitude: f64) -> PyResult<()> {
-    let e = Earth::new(earth.0, earth.1, earth.2).py()?;
-    Carrier::earth(e, latitude).py()?;
-    Ok(())
+fn dynamics_check_place(earth: PyRef<'_, PyEarth>, latitude: f64) -> PyResult<()> {
+    place(Some(&earth), latitude).map(drop)
 }
 
 /// Registers this file's class and function on the module.
