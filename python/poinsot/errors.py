@@ -25,10 +25,7 @@ at fault — ``"samples: must be >= 2, got 1"``. A long run is stopped by Ctrl-C
 
 from __future__ import annotations
 
-from . import _core
-
-# Re-exported through __all__, which is read from the core's table below.
-from ._core import (  # noqa: F401
+from ._core import (
     GimbalLockError,
     IntegrationError,
     InternalError,
@@ -50,11 +47,13 @@ class GimbalLockWarning(UserWarning):
     (poinsot sets the third angle to 0)."""
 
 
-#: The core's classes in the order of its table (``ErrorKind::ALL``, read through
-#: ``_core.error_classes()``), then this module's own; a stopped run raises Python's own
-#: ``KeyboardInterrupt``.
 __all__ = [
-    *(name for _, name in _core.error_classes() if name != "KeyboardInterrupt"),
+    "PoinsotError",
+    "InvalidInertiaError",
+    "InvalidRotationError",
+    "InvalidMeshError",
+    "GimbalLockError",
+    "IntegrationError",
     "ArgumentTypeError",
     "InternalError",
     "GimbalLockWarning",
