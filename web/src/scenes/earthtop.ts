@@ -280,19 +280,51 @@ export const earthTopScene: SceneDef = {
     let out: Readout[] = [];
     /** The time (years) the tail was last drawn for (NaN: to be drawn). */
     let tailYears = NaN;
+    /** The tail's samples, on a fixed grid of times k·gridStep (s) so that a frame asks the core
+     * only for the samples it adds: the directions (ecliptic axes, × AXIS) of grid samples
+     * gridFirst … gridFirst + gridCount − 1, oldest first; the current direction is drawn after
+     * them. */
+    let gridStep = 1;
+    let gridFirst = 0;
+    let gridCount = 0;
+    const gridPos = new Float32Array(3 * TAIL);
 
-    /** The spin axis's angles at `years` from the start, with the nod drawn × `x`: its longitude
-     * ψ westward from +y (the IAU sense of ψ_A), its obliquity ε from the ecliptic pole, and the
-     * Moon's node Ω. */
-    const anglesAt = (years: number, x: number) => {
-      const t = years * YEAR;
-      const node = (-2 * Math.PI * t) / nodePeriod;
-      return { node, psi: Math.abs(rate) * t + x * nut[0] * Math.sin(node), eps: eps0 + x * nut[1] * Math.cos(node) };
+    /** The core's averaged pole (RigidEarth.averagedPole: the uniform precession and the
+     * principal nutation, the node at 0 when t = 0) at the times `t` (s), the nod drawn
+     * × `scale`: the spin axis's longitude ψ westward from +y (the IAU sense of ψ_A), its
+     * obliquity ε from the ecliptic pole, and the Moon's node Ω. */
+    const poleAt = (t: number[], scale = nod) => {
+      const pole = earth!.averagedPole(t, 0, scale);
+      try {
+        return { psi: pole.psi, eps: pole.obliquity, node: pole.moonNode };
+      } finally {
+        pole.free();
+      }
     };
-    /** Its direction in the ecliptic axes (z the ecliptic pole). */
-    const axisAt = (years: number, x: number) => {
-      const a = anglesAt(years, x);
-      return { ...a, dir: new THREE.Vector3(Math.sin(a.eps) * Math.sin(a.psi), Math.sin(a.eps) * Math.cos(a.psi), Math.cos(a.eps)) };
+    /** Direction (ecliptic axes, z the ecliptic pole) of the axis at (ψ, ε). */
+    const direction = (psi: number, eps: number) =>
+      new THREE.Vector3(Math.sin(eps) * Math.sin(psi), Math.sin(eps) * Math.cos(psi), Math.cos(eps));
+    /** The grid samples first … last (inclusive) of the tail, keeping those already drawn. */
+    const gridTo = (first: number, last: number) => {
+      const keep0 = Math.max(first, gridFirst);
+      const keep1 = Math.min(last, gridFirst + gridCount - 1);
+      const kept = first >= gridFirst ? Math.max(0, keep1 - keep0 + 1) : 0;
+      if (kept > 0) gridPos.copyWithin(0, 3 * (keep0 - gridFirst), 3 * (keep1 - gridFirst + 1));
+      const from = kept > 0 ? keep1 + 1 : first;
+      const times: number[] = [];
+      for (let i = from; i <= last; i++) times.push(i * gridStep);
+      if (times.length > 0) {
+        const { psi, eps } = poleAt(times);
+        for (let j = 0; j < times.length; j++) {
+          const k = 3 * (from - first + j);
+          const se = AXIS * Math.sin(eps[j]);
+          gridPos[k] = se * Math.sin(psi[j]);
+          gridPos[k + 1] = se * Math.cos(psi[j]);
+          gridPos[k + 2] = AXIS * Math.cos(eps[j]);
+        }
+      }
+      gridFirst = first;
+      gridCount = Math.max(0, last - first + 1);
     };
 
     return {
@@ -323,6 +355,9 @@ export const earthTopScene: SceneDef = {
         coneHolder.add(precessionCone);
         ctx.labels.move(coneLabel, new THREE.Vector3(-AXIS * Math.sin(eps0) * 1.15, -0.2, AXIS * Math.cos(eps0)));
         tailYears = NaN;
+        // The tail spans TAIL_NODES node periods in TAIL − 2 grid steps (plus the current point).
+        gridStep = (TAIL_NODES * nodePeriod) / (TAIL - 2);
+        gridCount = 0;
         const drawn = f / Number(p.flattening);
         // A phone's view is small: the same facts, in fewer words.
         exaggeration.textContent = ctx.overlay.clientWidth >= NARROW_STAGE
@@ -334,24 +369,25 @@ export const earthTopScene: SceneDef = {
       step(t) {
         if (!earth) return;
         const years = Math.max(0, t) * Number(p.yearsPerSecond);
-        const now = axisAt(years, nod);
+        const seconds = years * YEAR;
+        const { psi: psiNow, eps: epsNow } = poleAt([seconds]);
+        const now = { eps: epsNow[0], dir: direction(psiNow[0], epsNow[0]) };
         body.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1), now.dir);
         // The tail: the last TAIL_NODES node periods (or less, from the start), sampled finely
-        // enough to show each nod.
+        // enough to show each nod: the grid samples in that span, then the current point.
         const span = Math.min(years, (TAIL_NODES * nodePeriod) / YEAR);
+        let drawnPoints = 0;
         if (years !== tailYears) {
           tailYears = years;
-          for (let k = 0; k < TAIL; k++) {
-            const { psi, eps } = anglesAt(years - span * (1 - k / (TAIL - 1)), nod);
-            const se = AXIS * Math.sin(eps);
-            tailPos[3 * k] = se * Math.sin(psi);
-            tailPos[3 * k + 1] = se * Math.cos(psi);
-            tailPos[3 * k + 2] = AXIS * Math.cos(eps);
-          }
+          const last = Math.floor(seconds / gridStep);
+          gridTo(Math.max(0, last - (TAIL - 2)), last);
+          tailPos.set(gridPos.subarray(0, 3 * gridCount));
+          tailPos.set(now.dir.clone().multiplyScalar(AXIS).toArray(), 3 * gridCount);
         }
+        drawnPoints = span > 0 ? gridCount + 1 : 0;
         (tail.geometry.getAttribute("position") as THREE.BufferAttribute).needsUpdate = true;
-        tail.geometry.setDrawRange(0, span > 0 ? TAIL : 0);
-        const mid = 3 * Math.floor(TAIL / 3);
+        tail.geometry.setDrawRange(0, drawnPoints);
+        const mid = 3 * Math.floor(drawnPoints / 3);
         ctx.labels.move(tailLabel, new THREE.Vector3(tailPos[mid], tailPos[mid + 1], tailPos[mid + 2]).multiplyScalar(1.12));
         tailLabel.hidden = span <= 0;
         // The solstice direction: the axis's lean, projected on the ecliptic.
@@ -382,7 +418,8 @@ export const earthTopScene: SceneDef = {
         ctx.labels.move(torqueLabel, tip.clone().add(nSun).add(nMoon).add(dir.clone().multiplyScalar(0.3)).add(new THREE.Vector3(0, 0, 0.1)));
         clock.textContent = `${Math.floor(years)} years from the start (1 s = ${Number(p.yearsPerSecond)} years)`;
 
-        const real = axisAt(years, 1);
+        const pole = poleAt([seconds], 1);
+        const real = { psi: pole.psi[0], eps: pole.eps[0], node: pole.node[0] };
         const lon = (((real.psi / DEG) % 360) + 360) % 360;
         const nodeDeg = (((real.node / DEG) % 360) + 360) % 360;
         out = [
