@@ -5,7 +5,9 @@ formula written in the entry."""
 
 from __future__ import annotations
 
+import ast
 import inspect
+from pathlib import Path
 
 import pytest
 
@@ -51,3 +53,38 @@ def test_the_chandler_closed_form_is_the_cores_chandler_period() -> None:
     k2 = float(inputs["k2"].magnitude)
     ks = float(inputs["ks"].magnitude)
     assert r.closed_form_si == earth.chandler_period(k2, ks)
+
+
+def test_a_publication_that_two_topics_cite_is_written_once() -> None:
+    """A publication cited by entries of more than one topic (the IERS Conventions 2010: the free
+    period and the Earth as a rigid top) is one :class:`Source` in ``entries/_sources.py``; each
+    citation adds only its page and note, so who, where, when, url and first_hand agree."""
+    from poinsot.experiments.entries import _sources
+
+    shared = {s.publication: s for s in vars(_sources).values() if isinstance(s, _catalogue.Source)}
+    topics: dict[str, set[str]] = {}
+    cited: dict[str, list[_catalogue.Source]] = {}
+    for e in x.catalogue():
+        for s in e.sources:
+            topics.setdefault(s.publication, set()).add(e.topic)
+            cited.setdefault(s.publication, []).append(s)
+    across = [p for p, t in topics.items() if len(t) > 1]
+    assert across, "no publication is cited by two topics: the check is vacuous"
+    written = {
+        path.name: {
+            node.value
+            for node in ast.walk(ast.parse(path.read_text(encoding="utf-8")))
+            if isinstance(node, ast.Constant) and isinstance(node.value, str)
+        }
+        for path in Path(_sources.__file__).parent.glob("*.py")
+    }
+    for publication in across:
+        assert publication in shared
+        assert [name for name, texts in written.items() if publication in texts] == [
+            "_sources.py"
+        ], f"{publication[:60]!r} is written out in an entry module"
+        base = shared[publication]
+        for s in cited[publication]:
+            fields = ("who", "where", "when", "url", "first_hand")
+            assert [getattr(s, f) for f in fields] == [getattr(base, f) for f in fields]
+            assert s.page.startswith(base.page)

@@ -13,11 +13,13 @@ The tennis-racket flip of a real object, timed against its measured moments, is
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import replace
 from typing import Any
 
 from poinsot import Earth, FreeRigidBody, FreeSymmetricTop
 
 from .._catalogue import Experiment, Source, ureg
+from ._sources import IERS_2010
 
 __all__ = ["ENTRIES"]
 
@@ -91,18 +93,9 @@ ENTRIES = [
                     "time; the input H is today's (third source)."
                 ),
             ),
-            Source(
-                who="G. Petit and B. Luzum (eds.), IERS Conventions Centre",
-                first_hand=False,
-                where="Bureau International des Poids et Mesures, Sèvres / US Naval Observatory",
-                when="2010",
-                publication=(
-                    "Petit, G. and Luzum, B. (eds.) (2010), IERS Conventions (2010), IERS "
-                    "Technical Note No. 36, Frankfurt am Main: Verlag des Bundesamts für "
-                    "Kartographie und Geodäsie"
-                ),
+            replace(
+                IERS_2010,
                 page="Table 1.1 (H, the dynamical flattening: 3273795 × 10⁻⁹ ± 1 × 10⁻⁹)",
-                url="https://www.iers.org/TN36/",
                 note=(
                     "the table itself was not read here (only the report's title pages, in a "
                     "stored copy); the value and its uncertainty as pyshtools quotes them "

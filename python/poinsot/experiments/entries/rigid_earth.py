@@ -12,11 +12,13 @@ motion. ``poinsot earth`` prints these entries' measured values beside RigidEart
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import replace
 from typing import Any
 
 from poinsot import RigidEarth
 
 from .._catalogue import Experiment, Source, ureg
+from ._sources import IERS_2010
 
 __all__ = ["ENTRIES"]
 
@@ -65,17 +67,9 @@ def _chandler(inputs: Mapping[str, Any]) -> Any:
     return ureg.Quantity(_earth(inputs).chandler_period(k2, ks), "s")
 
 
-_IERS = Source(
-    who="G. Petit and B. Luzum (eds.), IERS Conventions Centre",
-    first_hand=False,
-    where="Bureau International des Poids et Mesures, Sèvres / US Naval Observatory",
-    when="2010",
-    publication=(
-        "Petit, G. and Luzum, B. (eds.) (2010), IERS Conventions (2010), IERS Technical Note "
-        "No. 36, Frankfurt am Main: Verlag des Bundesamts für Kartographie und Geodäsie"
-    ),
+_IERS = replace(
+    IERS_2010,
     page="Table 1.1 (H = 3273795 × 10⁻⁹, the obliquity at J2000 84381.406″)",
-    url="https://www.iers.org/TN36/",
     note=(
         "the inputs, as the core's constants cite them (crates/poinsot/src/earth/rigid.rs); "
         "H is itself fitted to the observed precession rate, so the rate's agreement checks "
