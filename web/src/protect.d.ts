@@ -1,7 +1,8 @@
 // Types of protect.js (plain JavaScript, shared with the node tests).
 
-/** The `name`s of the errors the core and the binding throw, and `TypeError`. */
-export const ERROR_NAMES: readonly string[];
+/** The `name`s of the errors the core and the binding throw (the core's table,
+ * `raw.errorClasses()`), and `TypeError`. */
+export function errorNames(raw: { errorClasses(): [string, string][] }): readonly string[];
 /** Where an internal error should be reported. */
 export const REPORT_URL: string;
 

@@ -22,17 +22,12 @@
 // binding is guarded the day it is added. Plain JavaScript (no build step), so that the node
 // tests (tests/wasm_fuzz.test.mjs) exercise the very code the page runs.
 
-/** The `name`s of the errors the core and the binding throw (the Python exception classes) and
+/** The `name`s of the errors the core and the binding throw: the class names of the core's one
+ * table (`raw.errorClasses()`, the same as Python's `poinsot._core.error_classes()`), and
  * `TypeError` for an argument of the wrong JavaScript type. */
-export const ERROR_NAMES = Object.freeze([
-  "PoinsotError",
-  "InvalidInertiaError",
-  "InvalidRotationError",
-  "InvalidMeshError",
-  "GimbalLockError",
-  "IntegrationError",
-  "TypeError",
-]);
+export function errorNames(raw) {
+  return Object.freeze([...new Set(raw.errorClasses().map(([, name]) => name)), "TypeError"]);
+}
 
 /** Where an internal error should be reported. */
 export const REPORT_URL = "https://example.invalid/poinsot/issues";

@@ -53,9 +53,9 @@ export async function loadCore({ faults = false } = {}) {
   if (faults) injectFaults();
   const raw = await import(pathToFileURL(path.join(WASM_DIR, "poinsot_wasm.js")).href);
   raw.initSync({ module: readFileSync(path.join(WASM_DIR, "poinsot_wasm_bg.wasm")) });
-  const { protect, ERROR_NAMES } = await import(pathToFileURL(path.join(repo, "web/src/protect.js")).href);
+  const { protect, errorNames } = await import(pathToFileURL(path.join(repo, "web/src/protect.js")).href);
   const core = typeof raw.__wbg_reset_state === "function" ? protect(raw) : null;
-  return { raw, core, ERROR_NAMES };
+  return { raw, core, ERROR_NAMES: errorNames(raw) };
 }
 
 /** Whether `value` is one of the glue's classes. */
