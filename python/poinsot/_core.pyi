@@ -10,6 +10,10 @@ from numpy.typing import NDArray
 _Progress: TypeAlias = Callable[[float], Any] | None
 # A run's settings, as _validate.run_settings makes them: samples, rtol, atol, max_steps.
 _RunSettings: TypeAlias = tuple[int, float, float, int]
+# A run's start: the inertia tensor (3, 3), omega0 (3,) and the attitude (4,) or None.
+_Start: TypeAlias = tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64] | None]
+# A batch of bodies: principal moments (N, 3), omega0 (N, 3) and the attitudes (N, 4) or None.
+_Bodies: TypeAlias = tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64] | None]
 
 __version__: str
 DEFAULT_MAX_STEPS: int
@@ -811,9 +815,7 @@ def axis_stability(moments: NDArray[np.float64], spin: float) -> list[tuple[str,
 # The states of N free bodies at M times (flat t: M shared values, or N·M with per_body)
 # -> (omega (N, M, 3), attitude (N, M, 4)).
 def free_body_states(
-    moments: NDArray[np.float64],
-    omega0: NDArray[np.float64],
-    attitude0: NDArray[np.float64] | None,
+    bodies: _Bodies,
     t: NDArray[np.float64],
     per_body: bool,
     progress: _Progress,
@@ -848,9 +850,7 @@ class TrajectoryCore:
     def torque_evaluations(self) -> int: ...
 
 def dynamics_simulate(
-    inertia: NDArray[np.float64],
-    omega0: NDArray[np.float64],
-    attitude0: NDArray[np.float64] | None,
+    start: _Start,
     duration: float,
     torque_kind: str,
     torque_vector: NDArray[np.float64],
@@ -867,9 +867,7 @@ def dynamics_simulate(
 _BatchSettings: TypeAlias = tuple[float, str, NDArray[np.float64], float, str, float | None, int]
 
 def dynamics_simulate_batch(
-    moments: NDArray[np.float64],
-    omega0: NDArray[np.float64],
-    attitude0: NDArray[np.float64] | None,
+    bodies: _Bodies,
     settings: _BatchSettings,
     progress: _Progress,
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], int]: ...
@@ -884,16 +882,7 @@ class GyrocompassCore:
     def __new__(
         cls,
         latitude: float,
-        angular_momentum: float,
-        pendulosity: float,
-        damping: float,
-        inertia: tuple[float, float, float],
-        earth: EarthCore,
-    ) -> GyrocompassCore: ...
-    @classmethod
-    def schuler_tuned(
-        cls,
-        latitude: float,
+        angular_momentum: float | None,
         pendulosity: float,
         damping: float,
         inertia: tuple[float, float, float],
@@ -940,9 +929,7 @@ class GyrocompassCore:
 
 def dynamics_check_place(earth: EarthCore, latitude: float) -> None: ...
 def dynamics_simulate_carried(
-    inertia: NDArray[np.float64],
-    omega0: NDArray[np.float64],
-    attitude0: NDArray[np.float64] | None,
+    start: _Start,
     duration: float,
     kind: str,
     frame: NDArray[np.float64],

@@ -418,9 +418,7 @@ def simulate(
             return out.astype(np.float64).reshape(-1).tolist()
 
     core = _core.dynamics_simulate(
-        inertia,
-        w0,
-        q0,
+        (inertia, w0, q0),
         dur,
         kind,
         vec,
@@ -526,6 +524,6 @@ def simulate_batch(
         "simulate_batch takes the built-in torques only (no callables)",
     )
     w_out, q_out, _steps = _core.dynamics_simulate_batch(
-        m, w, q, settings, as_callable(progress, "progress")
+        (m, w, q), settings, as_callable(progress, "progress")
     )
     return np.asarray(w_out), np.asarray(q_out)

@@ -643,7 +643,7 @@ def free_body_states(
     if per_body and shape[0] != n:
         raise PoinsotError(f"t: a 2-D t must have N = {n} rows (one per body), got {shape}")
     omega, attitude = _core.free_body_states(
-        m, w, q, times, per_body, as_callable(progress, "progress")
+        (m, w, q), times, per_body, as_callable(progress, "progress")
     )
     omega, attitude = np.asarray(omega), np.asarray(attitude)
     if not shape:

@@ -236,9 +236,7 @@ def _simulate_carried(
     if w0.shape != (3,):
         raise PoinsotError(f"omega0: must have shape (3,), got {w0.shape}")
     core, rel, frame_q, rel_w = _core.dynamics_simulate_carried(
-        np.ascontiguousarray(inertia, dtype=np.float64),
-        w0,
-        _quat(attitude0, "attitude0"),
+        (np.ascontiguousarray(inertia, dtype=np.float64), w0, _quat(attitude0, "attitude0")),
         as_scalar(duration, "duration"),
         kind,
         np.ascontiguousarray(frame, dtype=np.float64),
@@ -406,8 +404,9 @@ class Gyrocompass(show.Displayed):
         """The compass whose period is Schuler's 2π √(R/g) (84.4 min on the default Earth):
         H = P Ω cos λ R / g. Arguments as the constructor."""
         out = cls.__new__(cls)
-        out._core = _core.GyrocompassCore.schuler_tuned(
+        out._core = _core.GyrocompassCore(
             _si(latitude, "latitude", "radian"),
+            None,
             _si(pendulosity, "pendulosity", "joule"),
             _si(damping, "damping", "dimensionless"),
             _moments(inertia),

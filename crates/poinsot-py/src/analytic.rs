@@ -1,5 +1,5 @@
 //! Bindings of `poinsot::analytic` (the torque-free solutions; conversion only).
-use numpy::{PyArray1, PyArray3, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2};
+use numpy::{PyArray1, PyArray3, PyArrayMethods, PyReadonlyArray1};
 use poinsot::analytic::{
     axis_stability as core_axis_stability, free_body_states as core_free_body_states,
     FreeRigidBody, FreeSymmetricTop, StateTimes,
@@ -8,7 +8,8 @@ use poinsot_py_macros::export;
 use pyo3::prelude::*;
 
 use crate::control::{map_each, run};
-use crate::convert::{opt_quat, rows_view, slice, times, triple, vec3, Numbers, Rows, Vector};
+use crate::convert::{opt_quat, slice, times, triple, vec3, Numbers, Rows, Vector};
+use crate::dynamics::Bodies;
 use crate::errors::IntoPy;
 
 /// `f` at each of the times `t` (N,), each finite → (N, K) rows (without the GIL, stoppable by
@@ -236,29 +237,21 @@ fn axis_stability(
         .collect())
 }
 
-/// Registers this file's classes and functions on the module.
-/// The exact states of N free bodies at M times each (see `poinsot.free_body_states`):
-/// principal moments (N, 3), ω₀ (N, 3), attitudes (N, 4) or None, and the times `t` flat: M
-/// values for every body, or (`per_body`) N·M values row-major → (ω (N, M, 3), attitude
-/// (N, M, 4)).
+/// The exact states of N free bodies at M times each (see `poinsot.free_body_states`): the
+/// [`Bodies`] (principal moments (N, 3), ω₀ (N, 3), attitudes (N, 4) or None) and the times
+/// `t` flat: M values for every body, or (`per_body`) N·M values row-major → (ω (N, M, 3),
+/// attitude (N, M, 4)).
 #[export]
-#[pyo3(signature = (moments, omega0, attitude0, t, per_body, progress))]
+#[pyo3(signature = (bodies, t, per_body, progress))]
 #[allow(clippy::type_complexity)]
 fn free_body_states<'py>(
     py: Python<'py>,
-    moments: PyReadonlyArray2<'py, f64>,
-    omega0: PyReadonlyArray2<'py, f64>,
-    attitude0: Option<PyReadonlyArray2<'py, f64>>,
+    bodies: Bodies<'py>,
     t: PyReadonlyArray1<'py, f64>,
     per_body: bool,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<(Bound<'py, PyArray3<f64>>, Bound<'py, PyArray3<f64>>)> {
-    let m = rows_view::<3>("moments", &moments)?;
-    let w = rows_view::<3>("omega0", &omega0)?;
-    let q = match &attitude0 {
-        Some(a) => Some(rows_view::<4>("attitude0", a)?),
-        None => None,
-    };
+    let (m, w, q) = bodies.rows()?;
     let ts = slice("t", &t, "must be a C-contiguous float64 array")?;
     let times = if per_body {
         StateTimes::PerBody(ts)
@@ -274,6 +267,7 @@ fn free_body_states<'py>(
     Ok((omega, attitude))
 }
 
+/// Registers this file's classes and functions on the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PySymmetricTop>()?;
     m.add_class::<PyFreeBody>()?;

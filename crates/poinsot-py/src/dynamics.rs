@@ -4,6 +4,7 @@
 //! "callback"), a (3,) vector (body/space), a scalar (m g l, or the mean motion) and, for
 //! "callback", a Python callable `f(t, omega (3,), attitude (4,) [w, x, y, z]) -> (3,)` giving
 //! the torque in body components.
+use std::borrow::Cow;
 use std::cell::RefCell;
 
 use numpy::{PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
@@ -136,29 +137,65 @@ pub(crate) fn batch_settings(
     Ok((*duration, torque, opts))
 }
 
-/// A run's body (its (3, 3) inertia tensor, kg·m²), ω₀ (3,) (rad/s) and optional attitude
-/// (4,), each error naming its argument (`body`, `omega0`, `attitude0`).
-pub(crate) fn initial_state(
-    inertia: &PyReadonlyArray2<'_, f64>,
-    omega0: &PyReadonlyArray1<'_, f64>,
-    attitude0: &Option<PyReadonlyArray1<'_, f64>>,
-) -> PyResult<(BodyInertia, Vec3, Option<[f64; 4]>)> {
-    Ok((
-        BodyInertia::from_tensor(&matrix("body", inertia)?).py()?,
-        vector("omega0", omega0)?,
-        opt_quat("attitude0", attitude0)?,
-    ))
+/// A run's start, one argument (a tuple) extracted once: the body's (3, 3) inertia tensor
+/// (kg·m²), ω₀ (3,) (rad/s) and the attitude (4,) or None.
+#[derive(FromPyObject)]
+pub(crate) struct Start<'py>(
+    PyReadonlyArray2<'py, f64>,
+    PyReadonlyArray1<'py, f64>,
+    Option<PyReadonlyArray1<'py, f64>>,
+);
+
+impl Start<'_> {
+    /// The core's body, ω₀ and attitude, each error naming its argument (`body`, `omega0`,
+    /// `attitude0`).
+    pub(crate) fn core(&self) -> PyResult<(BodyInertia, Vec3, Option<[f64; 4]>)> {
+        Ok((
+            BodyInertia::from_tensor(&matrix("body", &self.0)?).py()?,
+            vector("omega0", &self.1)?,
+            opt_quat("attitude0", &self.2)?,
+        ))
+    }
+}
+
+/// The rows of a batch of bodies, borrowed where the arrays allow: moments (N, 3), ω₀ (N, 3)
+/// and the attitudes (N, 4) or None.
+pub(crate) type BodyRows<'a> = (
+    Cow<'a, [[f64; 3]]>,
+    Cow<'a, [[f64; 3]]>,
+    Option<Cow<'a, [[f64; 4]]>>,
+);
+
+/// A batch of bodies, one argument (a tuple) extracted once: principal moments (N, 3) (kg·m²),
+/// ω₀ (N, 3) (rad/s) and the attitudes (N, 4) or None (`simulate_batch`, `free_body_states`).
+#[derive(FromPyObject)]
+pub(crate) struct Bodies<'py>(
+    PyReadonlyArray2<'py, f64>,
+    PyReadonlyArray2<'py, f64>,
+    Option<PyReadonlyArray2<'py, f64>>,
+);
+
+impl Bodies<'_> {
+    /// The batch's rows, each shape error naming its argument (`moments`, `omega0`,
+    /// `attitude0`).
+    pub(crate) fn rows(&self) -> PyResult<BodyRows<'_>> {
+        let m = rows_view::<3>("moments", &self.0)?;
+        let w = rows_view::<3>("omega0", &self.1)?;
+        let q = match &self.2 {
+            Some(a) => Some(rows_view::<4>("attitude0", a)?),
+            None => None,
+        };
+        Ok((m, w, q))
+    }
 }
 
 /// Simulates one body (see `poinsot.simulate`).
 #[export]
-#[pyo3(signature = (inertia, omega0, attitude0, duration, torque_kind, torque_vector, torque_scalar, torque_fn, method, dt, settings, progress))]
+#[pyo3(signature = (start, duration, torque_kind, torque_vector, torque_scalar, torque_fn, method, dt, settings, progress))]
 #[allow(clippy::too_many_arguments)]
 fn dynamics_simulate<'py>(
     py: Python<'py>,
-    inertia: PyReadonlyArray2<'py, f64>,
-    omega0: PyReadonlyArray1<'py, f64>,
-    attitude0: Option<PyReadonlyArray1<'py, f64>>,
+    start: Start<'py>,
     duration: f64,
     torque_kind: &str,
     torque_vector: PyReadonlyArray1<'py, f64>,
@@ -169,7 +206,7 @@ fn dynamics_simulate<'py>(
     settings: RunSettings,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<PyTrajectory> {
-    let (body, w0, q0) = initial_state(&inertia, &omega0, &attitude0)?;
+    let (body, w0, q0) = start.core()?;
     let opts = SimulateOptions {
         dt,
         ..settings.simulate(method)?
@@ -203,24 +240,17 @@ fn dynamics_simulate<'py>(
 /// The final states of a batch: ω (N, 3), attitudes (N, 4) and the steps taken per body.
 type Finals<'py> = (Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<f64>>, usize);
 
-/// Simulates many bodies in parallel (see `poinsot.simulate_batch`): principal moments (N, 3),
-/// ω₀ (N, 3), optional attitudes (N, 4) and the [`BatchSettings`] → [`Finals`].
+/// Simulates many bodies in parallel (see `poinsot.simulate_batch`): the [`Bodies`] and the
+/// [`BatchSettings`] → [`Finals`].
 #[export]
-#[pyo3(signature = (moments, omega0, attitude0, settings, progress))]
+#[pyo3(signature = (bodies, settings, progress))]
 fn dynamics_simulate_batch<'py>(
     py: Python<'py>,
-    moments: PyReadonlyArray2<'py, f64>,
-    omega0: PyReadonlyArray2<'py, f64>,
-    attitude0: Option<PyReadonlyArray2<'py, f64>>,
+    bodies: Bodies<'py>,
     settings: BatchSettings<'py>,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Finals<'py>> {
-    let m = rows_view::<3>("moments", &moments)?;
-    let w = rows_view::<3>("omega0", &omega0)?;
-    let q = match &attitude0 {
-        Some(a) => Some(rows_view::<4>("attitude0", a)?),
-        None => None,
-    };
+    let (m, w, q) = bodies.rows()?;
     let (duration, torque, opts) = batch_settings(&settings)?;
     let out = run(py, progress.as_ref(), || {
         dyn_core::simulate_batch(&m, &w, q.as_deref(), duration, &torque, &opts)

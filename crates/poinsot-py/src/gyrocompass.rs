@@ -16,7 +16,7 @@ use pyo3::types::PyType;
 
 use crate::control::run;
 use crate::convert::{mat3, parse, rows_into, vec_in, vector, RunSettings, Values};
-use crate::dynamics::{initial_state, PyTrajectory};
+use crate::dynamics::{PyTrajectory, Start};
 use crate::earth::PyEarth;
 use crate::errors::{invalid, IntoPy};
 
@@ -80,32 +80,23 @@ core_export! {
         settle -> (f64, f64);
     }
 
-    /// latitude (rad), H (kg·m²/s), P = m g l (N·m), damping ratio ζ, inertia (3,) (kg·m²)
-    /// and the Earth (checked when made); errors name them.
+    /// latitude (rad), H (kg·m²/s; None: the core's Schuler-tuned H,
+    /// `Gyrocompass::schuler_tuned`), P = m g l (N·m), damping ratio ζ, inertia (3,) (kg·m²) and
+    /// the Earth (checked when made); errors name them.
     #[new]
     fn new(
         latitude: f64,
-        angular_momentum: f64,
+        angular_momentum: Option<f64>,
         pendulosity: f64,
         damping: f64,
         inertia: [f64; 3],
         earth: PyRef<'_, PyEarth>,
     ) -> PyResult<Self> {
-        let c = Gyrocompass::new(latitude, angular_momentum, pendulosity, damping, inertia, earth.inner);
-        Ok(Self { inner: c.py()? })
-    }
-
-    /// The compass whose period is Schuler's (H chosen); arguments as the constructor less H.
-    #[classmethod]
-    fn schuler_tuned(
-        _cls: &Bound<'_, PyType>,
-        latitude: f64,
-        pendulosity: f64,
-        damping: f64,
-        inertia: [f64; 3],
-        earth: PyRef<'_, PyEarth>,
-    ) -> PyResult<Self> {
-        let c = Gyrocompass::schuler_tuned(latitude, pendulosity, damping, inertia, earth.inner);
+        let (p, d, e) = (pendulosity, damping, earth.inner);
+        let c = match angular_momentum {
+            Some(h) => Gyrocompass::new(latitude, h, p, d, inertia, e),
+            None => Gyrocompass::schuler_tuned(latitude, p, d, inertia, e),
+        };
         Ok(Self { inner: c.py()? })
     }
 
@@ -208,13 +199,11 @@ type CarriedOut<'py> = (
 
 /// Simulates a body carried by a moving frame (see `poinsot.simulate(..., carried_by=...)`).
 #[export]
-#[pyo3(signature = (inertia, omega0, attitude0, duration, kind, frame, frame_attitude, pivot, gravity, earth, latitude, mass_moment, torque_kind, torque_vector, method, settings, progress))]
+#[pyo3(signature = (start, duration, kind, frame, frame_attitude, pivot, gravity, earth, latitude, mass_moment, torque_kind, torque_vector, method, settings, progress))]
 #[allow(clippy::too_many_arguments)]
 fn dynamics_simulate_carried<'py>(
     py: Python<'py>,
-    inertia: PyReadonlyArray2<'py, f64>,
-    omega0: PyReadonlyArray1<'py, f64>,
-    attitude0: Option<PyReadonlyArray1<'py, f64>>,
+    start: Start<'py>,
     duration: f64,
     kind: &str,
     frame: PyReadonlyArray1<'py, f64>,
@@ -230,7 +219,7 @@ fn dynamics_simulate_carried<'py>(
     settings: RunSettings,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<CarriedOut<'py>> {
-    let (body, w0, q0) = initial_state(&inertia, &omega0, &attitude0)?;
+    let (body, w0, q0) = start.core()?;
     let carrier = match kind {
         "frame" => {
             let s = vec_in(&frame);
