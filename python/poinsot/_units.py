@@ -50,7 +50,7 @@ DIMENSIONS: dict[str, tuple[str, str, str]] = {
 _D = {
     "angle": (
         "theta phi psi theta0 latitude latitudes azimuth elevation angle angles course tilt "
-        "spin_axis_angle obliquity moon_node"
+        "spin_axis_angle obliquity moon_node heading0 tilt0"
     ),
     "angular rate": (
         "omega omega0 omega3 omega_3 omega_body rates phi_dot theta_dot psi_dot rotation_rate "

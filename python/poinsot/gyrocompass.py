@@ -25,7 +25,7 @@ import numpy as np
 from . import _core
 from . import _display as show
 from ._props import core_property
-from ._units import is_quantity
+from ._units import ARGUMENTS, parse
 from ._validate import (
     FloatArray,
     as_callable,
@@ -41,16 +41,6 @@ __all__ = ["Place", "CarriedTrajectory", "Gyrocompass", "CompassRun"]
 
 _D = _core.DEFAULTS["Gyrocompass.__init__"]
 _RUN = _core.DEFAULTS["Gyrocompass.simulate"]
-
-
-def _si(value: Any, name: str, unit: str) -> float:
-    """``value`` as a float in ``unit`` (SI): a pint quantity converted, else taken as is."""
-    if is_quantity(value):
-        try:
-            value = value.to(unit).magnitude
-        except Exception:
-            raise PoinsotError(f"{name}: expected a quantity in {unit}, got {value:~P}") from None
-    return as_scalar(value, name)
 
 
 def _earth_core(earth: Any) -> _core.EarthCore:
@@ -86,7 +76,7 @@ class Place:
     __slots__ = ("latitude", "_earth")
 
     def __init__(self, latitude: Any, earth: Any = None) -> None:
-        lat = _si(latitude, "latitude", "radian")
+        lat = as_scalar(latitude, "latitude")
         self._earth = _earth_core(earth)
         # The core makes the place (Carrier::earth) and refuses a latitude by name.
         _core.dynamics_check_place(self._earth, lat)
@@ -383,10 +373,10 @@ class Gyrocompass(show.Displayed):
         earth: Any = None,
     ) -> None:
         self._core = _core.GyrocompassCore(
-            _si(latitude, "latitude", "radian"),
-            _si(angular_momentum, "angular_momentum", "kilogram * meter ** 2 / second"),
-            _si(pendulosity, "pendulosity", "joule"),
-            _si(damping, "damping", "dimensionless"),
+            as_scalar(latitude, "latitude"),
+            as_scalar(angular_momentum, "angular_momentum"),
+            as_scalar(pendulosity, "pendulosity"),
+            as_scalar(damping, "damping"),
             _moments(inertia),
             _earth_core(earth),
         )
@@ -405,10 +395,10 @@ class Gyrocompass(show.Displayed):
         H = P Ω cos λ R / g. Arguments as the constructor."""
         out = cls.__new__(cls)
         out._core = _core.GyrocompassCore(
-            _si(latitude, "latitude", "radian"),
+            as_scalar(latitude, "latitude"),
             None,
-            _si(pendulosity, "pendulosity", "joule"),
-            _si(damping, "damping", "dimensionless"),
+            as_scalar(pendulosity, "pendulosity"),
+            as_scalar(damping, "damping"),
             _moments(inertia),
             _earth_core(earth),
         )
@@ -485,11 +475,7 @@ class Gyrocompass(show.Displayed):
         clockwise from north). Refused, naming ``speed``, when Ω R cos λ + V sin C ≤ 0: a ship
         going west at the ground's own speed or faster has no northward horizontal rotation
         to seek."""
-        return float(
-            self._core.speed_error(
-                _si(speed, "speed", "meter / second"), _si(course, "course", "radian")
-            )
-        )
+        return float(self._core.speed_error(as_scalar(speed, "speed"), as_scalar(course, "course")))
 
     def speed_error_small_angle(self, speed: Any, course: Any) -> float:
         """The manufacturers' small-angle form V cos C / (Ω R cos λ) (rad) — in degrees with
@@ -497,7 +483,7 @@ class Gyrocompass(show.Displayed):
         order in V/(Ω R cos λ): by 0.8° at 50 knots due north at 81°. Same refusals."""
         return float(
             self._core.speed_error_small_angle(
-                _si(speed, "speed", "meter / second"), _si(course, "course", "radian")
+                as_scalar(speed, "speed"), as_scalar(course, "course")
             )
         )
 
@@ -559,15 +545,11 @@ class Gyrocompass(show.Displayed):
         >>> len(run.t)
         3
         """
-        tilt = self.settle_tilt if tilt0 is None else _si(tilt0, "tilt0", "radian")
-        span = (
-            as_scalar(duration, "duration")
-            if not is_quantity(duration)
-            else _si(duration, "duration", "second")
-        )
-        start = _si(heading0, "heading0", "radian")
-        v = 0.0 if speed is None else _si(speed, "speed", "meter / second")
-        c = 0.0 if course is None else _si(course, "course", "radian")
+        tilt = self.settle_tilt if tilt0 is None else as_scalar(tilt0, "tilt0")
+        span = as_scalar(duration, "duration")
+        start = as_scalar(heading0, "heading0")
+        v = 0.0 if speed is None else as_scalar(speed, "speed")
+        c = 0.0 if course is None else as_scalar(course, "course")
         how = method if isinstance(method, str) else str(method)
         settings = run_settings(samples, rtol, atol, max_steps)
         report = as_callable(progress, "progress")
@@ -595,13 +577,13 @@ class Gyrocompass(show.Displayed):
         ``settled_heading``/``settled_tilt`` are its centre. Raises naming ``t``,
         ``heading0``, ``tilt0``, ``speed`` or ``rotation_rate`` (a still Earth)."""
         times = as_float_array(t, "t").reshape(-1)
-        tilt = self.settle_tilt if tilt0 is None else _si(tilt0, "tilt0", "radian")
+        tilt = self.settle_tilt if tilt0 is None else as_scalar(tilt0, "tilt0")
         heading, tilt_out, envelope, settled = self._core.linear_solution(
             np.ascontiguousarray(times, dtype=np.float64),
-            _si(heading0, "heading0", "radian"),
+            as_scalar(heading0, "heading0"),
             tilt,
-            0.0 if speed is None else _si(speed, "speed", "meter / second"),
-            0.0 if course is None else _si(course, "course", "radian"),
+            0.0 if speed is None else as_scalar(speed, "speed"),
+            0.0 if course is None else as_scalar(course, "course"),
         )
         return CompassRun(
             times, heading, tilt_out, np.full(times.shape, self.latitude), envelope, settled
@@ -633,35 +615,21 @@ class Gyrocompass(show.Displayed):
         return rows
 
 
-_TURN_FIELDS = (
-    ("time", "time", "second"),
-    ("speed", "speed", "meter / second"),
-    ("course", "angle", "radian"),
-    ("duration", "time", "second"),
-)
+#: A turn's fields in order; each converts by its dimension in ``_units.ARGUMENTS``.
+_TURN_FIELDS = ("time", "speed", "course", "duration")
 
 
-def _turn_field(value: Any, name: str, dimension: str, unit: str) -> float:
-    """One field of a turn in SI: text as typed at the command line (``"15kn"``,
-    ``"180deg"``, ``"2min"``; ``_units.parse``), a pint quantity, or a number in SI."""
-    if isinstance(value, str):
-        from ._units import parse
-
-        try:
-            return parse(value, dimension)[0]
-        except ValueError as e:
-            raise PoinsotError(f"turns: {name}: {e}") from None
-    if is_quantity(value):
-        try:
-            return float(value.to(unit).magnitude)
-        except Exception:
-            raise PoinsotError(
-                f"turns: {name}: expected a quantity in {unit}, got {value:~P}"
-            ) from None
+def _turn_field(value: Any, field: str, k: int) -> float:
+    """Field ``field`` of turn ``k`` in SI: text as typed at the command line (``"15kn"``,
+    ``"180deg"``, ``"2min"``; :func:`._units.parse`), a pint quantity or a number
+    (:func:`._validate.as_scalar`, which converts a quantity once)."""
     try:
-        return as_scalar(value, "turns")
-    except PoinsotError as e:
-        raise PoinsotError(f"turns: {name}: {str(e).removeprefix('turns: ')}") from None
+        if isinstance(value, str):
+            return parse(value, ARGUMENTS[field][0])[0]
+        return as_scalar(value, field)
+    except ValueError as e:
+        cls = type(e) if isinstance(e, PoinsotError) else PoinsotError
+        raise cls(f"turns: turn {k}'s {field}: {str(e).removeprefix(field + ': ')}") from None
 
 
 def _turns(turns: Any) -> list[tuple[float, float | None, float, float]]:
@@ -682,16 +650,12 @@ def _turns(turns: Any) -> list[tuple[float, float | None, float, float]]:
                 f"turns: turn {k} must be (time, speed, course) or (time, speed, course, "
                 f"duration), got {turn!r}"
             )
-        got = [
-            _turn_field(value, f"turn {k}'s {field}", dim, unit)
-            for value, (field, dim, unit) in zip(turn, _TURN_FIELDS)
-        ]
+        got = [_turn_field(value, field, k) for value, field in zip(turn, _TURN_FIELDS)]
         rows.append((got[0], got[3] if len(got) == 4 else None, got[1], got[2]))
     return rows
 
 
 def _moments(inertia: Any) -> tuple[float, float, float]:
-    arr = as_float_array(inertia, "inertia")
-    if arr.shape != (3,):
-        raise PoinsotError(f"inertia: must be 3 moments (kg·m²), got shape {arr.shape}")
-    return (float(arr[0]), float(arr[1]), float(arr[2]))
+    """The compass's three principal moments (kg·m²), shape ``(3,)``."""
+    a, b, c = as_vector3(inertia, "inertia").tolist()
+    return (a, b, c)

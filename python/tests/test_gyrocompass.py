@@ -120,8 +120,17 @@ def test_units_pickle_and_repr():
     back = pickle.loads(pickle.dumps(c))
     assert back.period == c.period and back.settle_error == c.settle_error
     assert repr(c).startswith("Gyrocompass(")
-    with pytest.raises(ps.PoinsotError, match="^latitude"):
+    with pytest.raises(ps.PoinsotError, match="^latitude: expected an angle, got 3 m$"):
         ps.Gyrocompass(3 * u.m)
+    # Every argument converts once at the door by its dimension (_units.ARGUMENTS), the
+    # simulation's start angles too: 10 degrees is 10 degrees, 3 metres is refused by name.
+    deg = c.simulate(60.0, 10 * u.deg, tilt0=0.5 * u.deg, samples=3)
+    rad = c.simulate(60.0, math.radians(10), tilt0=math.radians(0.5), samples=3)
+    assert np.array_equal(deg.heading, rad.heading)
+    with pytest.raises(ps.PoinsotError, match="^heading0: expected an angle"):
+        c.simulate(60.0, 3 * u.m, samples=3)
+    with pytest.raises(ps.PoinsotError, match="^turns: turn 0's speed: expected a speed, got 3 m$"):
+        c.simulate(60.0, 0.0, turns=[(10.0, 3 * u.m, 0.0)], samples=3)
 
 
 def test_the_compass_holds_the_earths_core_object():
