@@ -6,6 +6,22 @@
 use poinsot::dynamics::{Gyrocompass, Ship, SimulateOptions, Track, Turn};
 use poinsot::earth::Earth;
 
+/// The compasses' pendulosity m g l (N·m) and rotor-and-case moments (kg·m²).
+const PENDULOSITY: f64 = 1.2;
+const INERTIA: [f64; 3] = [0.5, 1.0, 1.0];
+
+/// The Schuler-tuned compass at `latitude_deg` (degrees) with damping ratio `damping`.
+fn tuned(latitude_deg: f64, damping: f64) -> Gyrocompass {
+    Gyrocompass::schuler_tuned(
+        latitude_deg.to_radians(),
+        PENDULOSITY,
+        damping,
+        INERTIA,
+        Earth::default(),
+    )
+    .unwrap()
+}
+
 fn opts(samples: usize) -> SimulateOptions {
     SimulateOptions {
         samples,
@@ -65,14 +81,7 @@ fn swing_after_reversal(c: &Gyrocompass, span: f64) -> (f64, f64) {
 
 #[test]
 fn schuler_tuned_compass_has_no_ballistic_error() {
-    let c = Gyrocompass::schuler_tuned(
-        30f64.to_radians(),
-        1.2,
-        0.0,
-        [0.5, 1.0, 1.0],
-        Earth::default(),
-    )
-    .unwrap();
+    let c = tuned(30.0, 0.0);
     let p = c.period().unwrap();
     let (swing, jump) = swing_after_reversal(&c, p);
     eprintln!(
@@ -93,20 +102,13 @@ fn schuler_tuned_compass_has_no_ballistic_error() {
 fn a_compass_not_schuler_tuned_swings_after_a_turn() {
     // Twice Schuler's rotor: the ballistic deflection P Δv/(g H) is half the change of the
     // speed error, so the compass swings about its new heading by about half the jump.
-    let tuned = Gyrocompass::schuler_tuned(
-        30f64.to_radians(),
-        1.2,
-        0.0,
-        [0.5, 1.0, 1.0],
-        Earth::default(),
-    )
-    .unwrap();
+    let schuler = tuned(30.0, 0.0);
     let c = Gyrocompass::new(
-        tuned.latitude,
-        2.0 * tuned.angular_momentum,
-        1.2,
+        schuler.latitude,
+        2.0 * schuler.angular_momentum,
+        PENDULOSITY,
         0.0,
-        [0.5, 1.0, 1.0],
+        INERTIA,
         Earth::default(),
     )
     .unwrap();
@@ -193,14 +195,7 @@ fn linear_solution_follows_the_full_simulation() {
     // A damped compass started 0.5 degrees off its settled heading, at its settled tilt: the
     // closed-form linear solution and the full gyrostat agree to 2 % of the offset over a
     // period, and the heading stays inside the linear envelope.
-    let c = Gyrocompass::schuler_tuned(
-        40f64.to_radians(),
-        1.2,
-        0.3,
-        [0.5, 1.0, 1.0],
-        Earth::default(),
-    )
-    .unwrap();
+    let c = tuned(40.0, 0.3);
     let p = c.period().unwrap();
     let (err, tilt) = c.settle().unwrap();
     let off = 0.5f64.to_radians();
@@ -214,7 +209,7 @@ fn linear_solution_follows_the_full_simulation() {
     }
     assert!((lin.envelope[0] - off / (1.0 - 0.09f64).sqrt()).abs() < 1e-12);
     let still = Earth::new(0.0, 6.371e6, 9.80665).unwrap();
-    let c = Gyrocompass::new(0.5, 2.0, 1.2, 0.0, [0.5, 1.0, 1.0], still).unwrap();
+    let c = Gyrocompass::new(0.5, 2.0, PENDULOSITY, 0.0, INERTIA, still).unwrap();
     assert_eq!(
         c.linear_solution(&[0.0], 0.0, 0.0, None)
             .unwrap_err()
