@@ -14,6 +14,8 @@ _RunSettings: TypeAlias = tuple[int, float, float, int]
 _Start: TypeAlias = tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64] | None]
 # A batch of bodies: principal moments (N, 3), omega0 (N, 3) and the attitudes (N, 4) or None.
 _Bodies: TypeAlias = tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64] | None]
+# A torque, as dynamics._torque_spec makes it: the kind, the (3,) vector and the scalar.
+_TorqueSpec: TypeAlias = tuple[str, NDArray[np.float64], float]
 
 __version__: str
 DEFAULT_MAX_STEPS: int
@@ -852,9 +854,7 @@ class TrajectoryCore:
 def dynamics_simulate(
     start: _Start,
     duration: float,
-    torque_kind: str,
-    torque_vector: NDArray[np.float64],
-    torque_scalar: float,
+    torque: _TorqueSpec,
     torque_fn: Callable[[float, NDArray[np.float64], NDArray[np.float64]], Any] | None,
     method: str,
     dt: float | None,
@@ -862,9 +862,9 @@ def dynamics_simulate(
     progress: _Progress,
 ) -> TrajectoryCore: ...
 
-# A batch's settings, as dynamics._batch_settings makes them: duration (s), the torque's kind,
-# (3,) vector and scalar, the method, dt (s or None) and max_steps.
-_BatchSettings: TypeAlias = tuple[float, str, NDArray[np.float64], float, str, float | None, int]
+# A batch's settings, as dynamics._batch_settings makes them: duration (s), the torque's
+# (kind, vector, scalar), the method, dt (s or None) and max_steps.
+_BatchSettings: TypeAlias = tuple[float, _TorqueSpec, str, float | None, int]
 
 def dynamics_simulate_batch(
     bodies: _Bodies,
@@ -939,8 +939,7 @@ def dynamics_simulate_carried(
     earth: EarthCore | None,
     latitude: float,
     mass_moment: NDArray[np.float64],
-    torque_kind: str,
-    torque_vector: NDArray[np.float64],
+    torque: _TorqueSpec,
     method: str,
     settings: _RunSettings,
     progress: _Progress,

@@ -420,9 +420,7 @@ def simulate(
     core = _core.dynamics_simulate(
         (inertia, w0, q0),
         dur,
-        kind,
-        vec,
-        scalar,
+        (kind, vec, scalar),
         fn_wrapped,
         method,
         dt_f,
@@ -434,9 +432,9 @@ def simulate(
 
 def _batch_settings(
     torque: Any, duration: Any, method: Any, dt: Any, max_steps: Any, refusal: str
-) -> tuple[float, str, FloatArray, float, str, float | None, int]:
+) -> tuple[float, tuple[str, FloatArray, float], str, float | None, int]:
     """The settings of a batch of bodies (:func:`simulate_batch`, ``sweep.simulate``) as the
-    core takes them: the duration (s), the torque's kind, vector and scalar, the method, the
+    core takes them: the duration (s), the torque's (kind, vector, scalar), the method, the
     step (s, None: each body's default) and the step limit. ``refusal`` is the caller's reason
     for refusing a callable torque, the message after ``"torque: "``."""
     if torque is not None and not hasattr(torque, "_spec"):
@@ -444,9 +442,7 @@ def _batch_settings(
     kind, vec, scalar, _ = _torque_spec(torque, None)
     return (
         as_scalar(duration, "duration"),
-        kind,
-        vec,
-        scalar,
+        (kind, vec, scalar),
         _method(method),
         _optional_step(dt),
         as_count(max_steps, "max_steps", 1),

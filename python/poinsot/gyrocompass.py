@@ -34,7 +34,7 @@ from ._validate import (
     as_vector3,
     run_settings,
 )
-from .dynamics import Trajectory
+from .dynamics import Trajectory, _torque_spec
 from .errors import ArgumentTypeError, PoinsotError
 
 __all__ = ["Place", "CarriedTrajectory", "Gyrocompass", "CompassRun"]
@@ -213,15 +213,12 @@ def _simulate_carried(
                 f"got shape {arr.shape}"
             )
         mass_moment = np.zeros(3)
-    if torque is None:
-        tkind, tvec = "none", np.zeros(3)
-    elif isinstance(torque, (BodyTorque, SpaceTorque)):
-        tkind, tvec, _ = torque._spec(body)
-    else:
+    if torque is not None and not isinstance(torque, (BodyTorque, SpaceTorque)):
         raise ArgumentTypeError(
             "torque: with carried_by, only None, BodyTorque or SpaceTorque (gravity and the "
             f"frame's forces come from the carrier), got {type(torque).__name__}"
         )
+    kind_, vec, scalar, _ = _torque_spec(torque, body)
     w0 = np.ascontiguousarray(as_float_array(omega0, "omega0", finite=False), dtype=np.float64)
     if w0.shape != (3,):
         raise PoinsotError(f"omega0: must have shape (3,), got {w0.shape}")
@@ -236,8 +233,7 @@ def _simulate_carried(
         earth,
         lat,
         np.ascontiguousarray(mass_moment, dtype=np.float64),
-        tkind,
-        np.ascontiguousarray(tvec, dtype=np.float64),
+        (kind_, vec, scalar),
         _method(method),
         run_settings(samples, rtol, atol, max_steps),
         as_callable(progress, "progress"),

@@ -406,7 +406,7 @@ def test_the_core_returns_a_typed_trajectory() -> None:
     assert "dict[str, Any]" not in stub
     tr = simulate(I123, W0, 1.0, method="rk4", dt=0.01, samples=11)
     core = _core.dynamics_simulate(
-        (np.diag(I123), W0, None), 1.0, "none", np.zeros(3), 0.0, None, "rk4", 0.01,
+        (np.diag(I123), W0, None), 1.0, ("none", np.zeros(3), 0.0), None, "rk4", 0.01,
         (11, 1e-10, 1e-12, 10**6), None,
     )  # fmt: skip
     assert isinstance(core, _core.TrajectoryCore)

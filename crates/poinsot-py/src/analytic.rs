@@ -9,7 +9,7 @@ use pyo3::prelude::*;
 
 use crate::control::{map_each, run};
 use crate::convert::{opt_quat, slice, times, triple, vec3, Numbers, Rows, Vector};
-use crate::dynamics::Bodies;
+use crate::dynamics::{body_rows, Bodies};
 use crate::errors::IntoPy;
 
 /// `f` at each of the times `t` (N,), each finite → (N, K) rows (without the GIL, stoppable by
@@ -251,7 +251,7 @@ fn free_body_states<'py>(
     per_body: bool,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<(Bound<'py, PyArray3<f64>>, Bound<'py, PyArray3<f64>>)> {
-    let (m, w, q) = bodies.rows()?;
+    let (m, w, q) = body_rows(&bodies)?;
     let ts = slice("t", &t, "must be a C-contiguous float64 array")?;
     let times = if per_body {
         StateTimes::PerBody(ts)

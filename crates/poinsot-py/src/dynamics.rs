@@ -7,7 +7,8 @@
 use std::borrow::Cow;
 use std::cell::RefCell;
 
-use numpy::{PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
+use numpy::ndarray::{Ix1, Ix2};
+use numpy::{PyArray1, PyArray2, PyReadonlyArray, PyReadonlyArray1, PyReadonlyArray2};
 use poinsot::dynamics::{
     self as dyn_core, BodyInertia, Method, SimulateOptions, Torque, TorqueContext, TorqueKind,
     TorqueModel, Trajectory,
@@ -107,27 +108,31 @@ impl PyTrajectory {
     }
 }
 
+/// A torque as Python's `dynamics._torque_spec` (or a torque's `_spec`) makes it, one tuple:
+/// the kind's name ("none", "body", "space", "gravity", "gravity_gradient", "callback"), the
+/// (3,) vector (N·m; body and space) and the scalar (m g l, J; or the mean motion, rad/s).
+pub(crate) type TorqueSpec<'py> = (String, PyReadonlyArray1<'py, f64>, f64);
+
+/// The core's torque of a built-in kind (a "callback" is refused: it needs a callable), the
+/// errors naming `torque` (or the scalar's name).
+pub(crate) fn torque(spec: &TorqueSpec<'_>) -> PyResult<Torque> {
+    let (kind, torque_vector, scalar) = spec;
+    parse::<TorqueKind>(kind)?
+        .torque(vector("torque", torque_vector)?, *scalar)
+        .py()
+}
+
 /// The settings of a batch of bodies (`simulate_batch`, `sweep.simulate`) as Python's
-/// `dynamics._batch_settings` makes them, one tuple: the duration (s), the torque's kind, (3,)
-/// vector and scalar, the method, the step (s, None: each body's default) and the step limit.
-pub(crate) type BatchSettings<'py> = (
-    f64,
-    String,
-    PyReadonlyArray1<'py, f64>,
-    f64,
-    String,
-    Option<f64>,
-    usize,
-);
+/// `dynamics._batch_settings` makes them, one tuple: the duration (s), the [`TorqueSpec`], the
+/// method, the step (s, None: each body's default) and the step limit.
+pub(crate) type BatchSettings<'py> = (f64, TorqueSpec<'py>, String, Option<f64>, usize);
 
 /// A batch's [`BatchSettings`] as the core's duration (s), torque and options.
 pub(crate) fn batch_settings(
     settings: &BatchSettings<'_>,
 ) -> PyResult<(f64, Torque, SimulateOptions)> {
-    let (duration, kind, torque_vector, torque_scalar, method, dt, max_steps) = settings;
-    let torque = parse::<TorqueKind>(kind)?
-        .torque(vector("torque", torque_vector)?, *torque_scalar)
-        .py()?;
+    let (duration, spec, method, dt, max_steps) = settings;
+    let torque = torque(spec)?;
     let opts = SimulateOptions {
         method: Method::parse(method).py()?,
         dt: *dt,
@@ -137,25 +142,29 @@ pub(crate) fn batch_settings(
     Ok((*duration, torque, opts))
 }
 
-/// A run's start, one argument (a tuple) extracted once: the body's (3, 3) inertia tensor
-/// (kg·m²), ω₀ (3,) (rad/s) and the attitude (4,) or None.
-#[derive(FromPyObject)]
-pub(crate) struct Start<'py>(
+/// Bodies and how they start, one argument (a tuple) extracted once: the inertia (kg·m²), ω₀
+/// (rad/s) and the attitude or None — of one run ([`Start`]: a (3, 3) tensor, (3,), (4,)) or
+/// of a batch ([`Bodies`]: principal moments (N, 3), (N, 3), (N, 4)).
+pub(crate) type Initial<'py, D> = (
     PyReadonlyArray2<'py, f64>,
-    PyReadonlyArray1<'py, f64>,
-    Option<PyReadonlyArray1<'py, f64>>,
+    PyReadonlyArray<'py, f64, D>,
+    Option<PyReadonlyArray<'py, f64, D>>,
 );
 
-impl Start<'_> {
-    /// The core's body, ω₀ and attitude, each error naming its argument (`body`, `omega0`,
-    /// `attitude0`).
-    pub(crate) fn core(&self) -> PyResult<(BodyInertia, Vec3, Option<[f64; 4]>)> {
-        Ok((
-            BodyInertia::from_tensor(&matrix("body", &self.0)?).py()?,
-            vector("omega0", &self.1)?,
-            opt_quat("attitude0", &self.2)?,
-        ))
-    }
+/// One run's start (`simulate`, `simulate_carried`).
+pub(crate) type Start<'py> = Initial<'py, Ix1>;
+
+/// A batch of bodies (`simulate_batch`, `free_body_states`).
+pub(crate) type Bodies<'py> = Initial<'py, Ix2>;
+
+/// A run's start as the core's body, ω₀ and attitude, each error naming its argument (`body`,
+/// `omega0`, `attitude0`).
+pub(crate) fn initial_state(s: &Start<'_>) -> PyResult<(BodyInertia, Vec3, Option<[f64; 4]>)> {
+    Ok((
+        BodyInertia::from_tensor(&matrix("body", &s.0)?).py()?,
+        vector("omega0", &s.1)?,
+        opt_quat("attitude0", &s.2)?,
+    ))
 }
 
 /// The rows of a batch of bodies, borrowed where the arrays allow: moments (N, 3), ω₀ (N, 3)
@@ -166,55 +175,40 @@ pub(crate) type BodyRows<'a> = (
     Option<Cow<'a, [[f64; 4]]>>,
 );
 
-/// A batch of bodies, one argument (a tuple) extracted once: principal moments (N, 3) (kg·m²),
-/// ω₀ (N, 3) (rad/s) and the attitudes (N, 4) or None (`simulate_batch`, `free_body_states`).
-#[derive(FromPyObject)]
-pub(crate) struct Bodies<'py>(
-    PyReadonlyArray2<'py, f64>,
-    PyReadonlyArray2<'py, f64>,
-    Option<PyReadonlyArray2<'py, f64>>,
-);
-
-impl Bodies<'_> {
-    /// The batch's rows, each shape error naming its argument (`moments`, `omega0`,
-    /// `attitude0`).
-    pub(crate) fn rows(&self) -> PyResult<BodyRows<'_>> {
-        let m = rows_view::<3>("moments", &self.0)?;
-        let w = rows_view::<3>("omega0", &self.1)?;
-        let q = match &self.2 {
-            Some(a) => Some(rows_view::<4>("attitude0", a)?),
-            None => None,
-        };
-        Ok((m, w, q))
-    }
+/// A batch's rows, each shape error naming its argument (`moments`, `omega0`, `attitude0`).
+pub(crate) fn body_rows<'a>(b: &'a Bodies<'_>) -> PyResult<BodyRows<'a>> {
+    let m = rows_view::<3>("moments", &b.0)?;
+    let w = rows_view::<3>("omega0", &b.1)?;
+    let q = match &b.2 {
+        Some(a) => Some(rows_view::<4>("attitude0", a)?),
+        None => None,
+    };
+    Ok((m, w, q))
 }
 
 /// Simulates one body (see `poinsot.simulate`).
 #[export]
-#[pyo3(signature = (start, duration, torque_kind, torque_vector, torque_scalar, torque_fn, method, dt, settings, progress))]
+#[pyo3(signature = (start, duration, torque, torque_fn, method, dt, settings, progress))]
 #[allow(clippy::too_many_arguments)]
 fn dynamics_simulate<'py>(
     py: Python<'py>,
     start: Start<'py>,
     duration: f64,
-    torque_kind: &str,
-    torque_vector: PyReadonlyArray1<'py, f64>,
-    torque_scalar: f64,
+    torque: TorqueSpec<'py>,
     torque_fn: Option<Bound<'py, PyAny>>,
     method: &str,
     dt: Option<f64>,
     settings: RunSettings,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<PyTrajectory> {
-    let (body, w0, q0) = start.core()?;
+    let (body, w0, q0) = initial_state(&start)?;
     let opts = SimulateOptions {
         dt,
         ..settings.simulate(method)?
     };
-    let torque_vector = vector("torque", &torque_vector)?;
-    let kind: TorqueKind = parse(torque_kind)?;
     let error: RefCell<Option<PyErr>> = RefCell::new(None);
-    let tr = if let (TorqueKind::Callback, Some(func)) = (kind, &torque_fn) {
+    let callback = parse::<TorqueKind>(&torque.0)? == TorqueKind::Callback;
+    let tr = if let (true, Some(func)) = (callback, &torque_fn) {
         let mut model = PyTorque {
             py,
             func,
@@ -229,7 +223,7 @@ fn dynamics_simulate<'py>(
         }
         result?
     } else {
-        let mut torque = kind.torque(torque_vector, torque_scalar).py()?;
+        let mut torque = self::torque(&torque)?;
         run(py, progress.as_ref(), || {
             dyn_core::simulate(&body, w0, q0, duration, &mut torque, &opts)
         })?
@@ -250,7 +244,7 @@ fn dynamics_simulate_batch<'py>(
     settings: BatchSettings<'py>,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Finals<'py>> {
-    let (m, w, q) = bodies.rows()?;
+    let (m, w, q) = body_rows(&bodies)?;
     let (duration, torque, opts) = batch_settings(&settings)?;
     let out = run(py, progress.as_ref(), || {
         dyn_core::simulate_batch(&m, &w, q.as_deref(), duration, &torque, &opts)

@@ -5,7 +5,7 @@
 //! attitude (3, 3), the pivot and gravity (3,), and the Earth (`EarthCore`) and latitude.
 use numpy::{PyReadonlyArray1, PyReadonlyArray2};
 use poinsot::dynamics::{
-    simulate_carried, Carrier, CompassRun, Gyrocompass, Load, Ship, TorqueKind, Track, Turn,
+    simulate_carried, Carrier, CompassRun, Gyrocompass, Load, Ship, Track, Turn,
 };
 use poinsot::earth::Earth;
 use poinsot::frames::MovingFrame;
@@ -15,8 +15,8 @@ use pyo3::prelude::*;
 use pyo3::types::PyType;
 
 use crate::control::run;
-use crate::convert::{mat3, parse, rows_into, vec_in, vector, RunSettings, Values};
-use crate::dynamics::{PyTrajectory, Start};
+use crate::convert::{mat3, rows_into, vec_in, vector, RunSettings, Values};
+use crate::dynamics::{initial_state, PyTrajectory, Start, TorqueSpec};
 use crate::earth::PyEarth;
 use crate::errors::{invalid, IntoPy};
 
@@ -199,7 +199,7 @@ type CarriedOut<'py> = (
 
 /// Simulates a body carried by a moving frame (see `poinsot.simulate(..., carried_by=...)`).
 #[export]
-#[pyo3(signature = (start, duration, kind, frame, frame_attitude, pivot, gravity, earth, latitude, mass_moment, torque_kind, torque_vector, method, settings, progress))]
+#[pyo3(signature = (start, duration, kind, frame, frame_attitude, pivot, gravity, earth, latitude, mass_moment, torque, method, settings, progress))]
 #[allow(clippy::too_many_arguments)]
 fn dynamics_simulate_carried<'py>(
     py: Python<'py>,
@@ -213,13 +213,12 @@ fn dynamics_simulate_carried<'py>(
     earth: Option<PyRef<'py, PyEarth>>,
     latitude: f64,
     mass_moment: PyReadonlyArray1<'py, f64>,
-    torque_kind: &str,
-    torque_vector: PyReadonlyArray1<'py, f64>,
+    torque: TorqueSpec<'py>,
     method: &str,
     settings: RunSettings,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<CarriedOut<'py>> {
-    let (body, w0, q0) = start.core()?;
+    let (body, w0, q0) = initial_state(&start)?;
     let carrier = match kind {
         "frame" => {
             let s = vec_in(&frame);
@@ -254,9 +253,7 @@ fn dynamics_simulate_carried<'py>(
         mass_moment: vector("body", &mass_moment)?,
         rotor: Vec3::zeros(),
     };
-    let mut torque = parse::<TorqueKind>(torque_kind)?
-        .torque(vector("torque", &torque_vector)?, 0.0)
-        .py()?;
+    let mut torque = crate::dynamics::torque(&torque)?;
     let opts = settings.simulate(method)?;
     let out = run(py, progress.as_ref(), || {
         simulate_carried(&body, w0, q0, duration, &carrier, load, &mut torque, &opts)

@@ -455,7 +455,7 @@ def _simulate_settings(args: dict[str, Any], keywords: dict[str, Any]) -> Any:
         args["max_steps"],
         "a sweep takes the built-in torques only (no callables), as simulate_batch",
     )
-    dur, _, _, _, m, step, steps = settings
+    dur, _, m, step, steps = settings
     attrs = {
         "duration": dur,
         "torque": repr(args["torque"]),
