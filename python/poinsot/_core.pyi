@@ -947,38 +947,21 @@ def dynamics_simulate_carried(
 
 # ---- heavy top (heavy_top.rs) ----
 # Angles in rad, rates in rad/s, times in s; arrays C-contiguous float64 (N,); python/poinsot/top.py
-# prepares them and wraps HeavyTopCore in the public poinsot.HeavyTop.
+# prepares them and wraps HeavyTopCore in the public poinsot.HeavyTop. A top travels as one
+# (I1, I3, mgl) tuple (kg m^2, kg m^2, J), as top._parameters makes it.
+
+_Top: TypeAlias = tuple[float, float, float]
+_Six: TypeAlias = tuple[float, float, float, float, float, float]
+_Four: TypeAlias = tuple[float, float, float, float]
 
 @final
 class HeavyTopCore:
     @staticmethod
-    def from_state(
-        i1: float,
-        i3: float,
-        mgl: float,
-        phi: float,
-        theta: float,
-        psi: float,
-        phi_dot: float,
-        theta_dot: float,
-        psi_dot: float,
-    ) -> HeavyTopCore: ...
+    def from_state(top: _Top, state: _Six) -> HeavyTopCore: ...
     @staticmethod
-    def from_spin(
-        i1: float,
-        i3: float,
-        mgl: float,
-        phi: float,
-        theta: float,
-        psi: float,
-        phi_dot: float,
-        theta_dot: float,
-        omega3: float,
-    ) -> HeavyTopCore: ...
+    def from_spin(top: _Top, state: _Six) -> HeavyTopCore: ...
     @staticmethod
-    def from_constants(
-        i1: float, i3: float, mgl: float, p_phi: float, p_psi: float, energy: float
-    ) -> HeavyTopCore: ...
+    def from_constants(top: _Top, constants: tuple[float, float, float]) -> HeavyTopCore: ...
     @property
     def parameters(self) -> tuple[float, float, float]: ...
     @property
@@ -1021,17 +1004,13 @@ class HeavyTopCore:
     def euler_angles_at(self, t: float) -> tuple[float, float, float]: ...
     def euler_rates_at(self, t: float) -> tuple[float, float, float]: ...
 
-def heavy_top_steady_precession(
-    i1: float, i3: float, mgl: float, theta0: float, omega3: float
-) -> dict[str, float]: ...
-def heavy_top_min_spin(i1: float, i3: float, mgl: float, theta0: float) -> float: ...
-def heavy_top_sleeping_threshold(i1: float, i3: float, mgl: float) -> float: ...
-def heavy_top_lagrangian(
-    i1: float, i3: float, mgl: float, theta: float, theta_dot: float, phi_dot: float, psi_dot: float
-) -> float: ...
-def heavy_top_constants_of_state(
-    i1: float, i3: float, mgl: float, theta: float, theta_dot: float, phi_dot: float, psi_dot: float
-) -> tuple[float, float, float]: ...
+def heavy_top_steady_precession(top: _Top, theta0: float, omega3: float) -> dict[str, float]: ...
+def heavy_top_min_spin(top: _Top, theta0: float) -> float: ...
+def heavy_top_sleeping_threshold(top: _Top) -> float: ...
+
+# One state: (theta, theta_dot, phi_dot, psi_dot).
+def heavy_top_lagrangian(top: _Top, state: _Four) -> float: ...
+def heavy_top_constants_of_state(top: _Top, state: _Four) -> tuple[float, float, float]: ...
 
 # ---- sweeps (sweep.rs) ----
 # dims: [(name, length, offset)]; columns: [(keyword, C-contiguous float64 values, dim or None)];

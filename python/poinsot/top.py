@@ -142,7 +142,7 @@ class HeavyTop(show.Displayed):
 
     __slots__ = ("_core", "_made")
 
-    def _build(self, constructor: str, *args: float) -> None:
+    def _build(self, constructor: str, *args: Any) -> None:
         """Makes the core's top with its ``constructor`` (``from_state``, ``from_spin``,
         ``from_constants``) and remembers how, for pickling and copying: the copy is the same
         constructor on the same floats, so it computes the same numbers bit for bit."""
@@ -168,13 +168,15 @@ class HeavyTop(show.Displayed):
     ) -> None:
         self._build(
             "from_state",
-            *_parameters(I1, I3, mgl),
-            as_angle(phi, "phi", degrees),
-            as_angle(theta, "theta", degrees),
-            as_angle(psi, "psi", degrees),
-            as_angle(phi_dot, "phi_dot", degrees),
-            as_angle(theta_dot, "theta_dot", degrees),
-            as_angle(psi_dot, "psi_dot", degrees),
+            _parameters(I1, I3, mgl),
+            (
+                as_angle(phi, "phi", degrees),
+                as_angle(theta, "theta", degrees),
+                as_angle(psi, "psi", degrees),
+                as_angle(phi_dot, "phi_dot", degrees),
+                as_angle(theta_dot, "theta_dot", degrees),
+                as_angle(psi_dot, "psi_dot", degrees),
+            ),
         )
 
     @classmethod
@@ -199,13 +201,15 @@ class HeavyTop(show.Displayed):
         top = cls.__new__(cls)
         top._build(
             "from_spin",
-            *_parameters(I1, I3, mgl),
-            as_angle(phi, "phi", degrees),
-            as_angle(theta, "theta", degrees),
-            as_angle(psi, "psi", degrees),
-            as_angle(phi_dot, "phi_dot", degrees),
-            as_angle(theta_dot, "theta_dot", degrees),
-            as_angle(omega3, "omega3", degrees),
+            _parameters(I1, I3, mgl),
+            (
+                as_angle(phi, "phi", degrees),
+                as_angle(theta, "theta", degrees),
+                as_angle(psi, "psi", degrees),
+                as_angle(phi_dot, "phi_dot", degrees),
+                as_angle(theta_dot, "theta_dot", degrees),
+                as_angle(omega3, "omega3", degrees),
+            ),
         )
         return top
 
@@ -284,10 +288,8 @@ class HeavyTop(show.Displayed):
         top = cls.__new__(cls)
         top._build(
             "from_constants",
-            *_parameters(I1, I3, mgl),
-            as_scalar(p_phi, "p_phi"),
-            as_scalar(p_psi, "p_psi"),
-            as_scalar(energy, "energy"),
+            _parameters(I1, I3, mgl),
+            (as_scalar(p_phi, "p_phi"), as_scalar(p_psi, "p_psi"), as_scalar(energy, "energy")),
         )
         return top
 
@@ -508,7 +510,7 @@ class HeavyTop(show.Displayed):
         spin (the message gives it), and ``theta0`` where the fast rate exceeds the largest double
         (``slow_approx`` is ``None`` without spin)."""
         d = _core.heavy_top_steady_precession(
-            *_parameters(I1, I3, mgl),
+            _parameters(I1, I3, mgl),
             as_angle(theta0, "theta0", degrees),
             as_scalar(omega3, "omega3"),
         )
@@ -541,7 +543,7 @@ class HeavyTop(show.Displayed):
         """The minimum spin for steady precession at ``theta0`` (2.119):
         ``omega3_min = (2 / I3) sqrt(m g l I1 cos theta0)`` (rad/s), 0 below the horizontal."""
         return _core.heavy_top_min_spin(
-            *_parameters(I1, I3, mgl),
+            _parameters(I1, I3, mgl),
             as_angle(theta0, "theta0", degrees),
         )
 
@@ -549,7 +551,7 @@ class HeavyTop(show.Displayed):
     def sleeping_threshold(I1: float, I3: float, mgl: float) -> float:
         """The spin above which an upright top sleeps stably, ``2 sqrt(m g l I1) / I3`` (rad/s):
         stable iff ``omega3**2 > 4 m g l I1 / I3**2``."""
-        return _core.heavy_top_sleeping_threshold(*_parameters(I1, I3, mgl))
+        return _core.heavy_top_sleeping_threshold(_parameters(I1, I3, mgl))
 
     @staticmethod
     def lagrangian(
@@ -564,11 +566,13 @@ class HeavyTop(show.Displayed):
         """The Lagrangian 2.102, ``I1 (theta'^2 + phi'^2 sin^2)/2 + I3 (psi' + phi' cos)^2/2 - m g l
         cos(theta)`` (J), at one state (rad, rad/s)."""
         return _core.heavy_top_lagrangian(
-            *_parameters(I1, I3, mgl),
-            as_scalar(theta, "theta"),
-            as_scalar(theta_dot, "theta_dot"),
-            as_scalar(phi_dot, "phi_dot"),
-            as_scalar(psi_dot, "psi_dot"),
+            _parameters(I1, I3, mgl),
+            (
+                as_scalar(theta, "theta"),
+                as_scalar(theta_dot, "theta_dot"),
+                as_scalar(phi_dot, "phi_dot"),
+                as_scalar(psi_dot, "psi_dot"),
+            ),
         )
 
     @staticmethod
@@ -595,16 +599,18 @@ class HeavyTop(show.Displayed):
 
         Raises :class:`PoinsotError` naming ``I1``, ``I3``, ``mgl``, ``theta`` or a rate."""
         p_phi, p_psi, energy = _core.heavy_top_constants_of_state(
-            *_parameters(I1, I3, mgl),
-            as_angle(theta, "theta", degrees),
-            as_angle(theta_dot, "theta_dot", degrees),
-            as_angle(phi_dot, "phi_dot", degrees),
-            as_angle(psi_dot, "psi_dot", degrees),
+            _parameters(I1, I3, mgl),
+            (
+                as_angle(theta, "theta", degrees),
+                as_angle(theta_dot, "theta_dot", degrees),
+                as_angle(phi_dot, "phi_dot", degrees),
+                as_angle(psi_dot, "psi_dot", degrees),
+            ),
         )
         return {"p_phi": p_phi, "p_psi": p_psi, "energy": energy}
 
 
-def _rebuild_heavy_top(constructor: str, args: tuple[float, ...]) -> HeavyTop:
+def _rebuild_heavy_top(constructor: str, args: tuple[Any, ...]) -> HeavyTop:
     """A :class:`HeavyTop` unpickled or copied: the core's ``constructor`` on ``args`` again."""
     top = HeavyTop.__new__(HeavyTop)
     top._build(constructor, *args)

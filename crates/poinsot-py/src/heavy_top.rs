@@ -66,15 +66,20 @@ fn one(t: f64, f: impl Fn(&[f64], &mut [f64]) -> poinsot::Result<()>) -> PyResul
     Ok((out[0], out[1], out[2]))
 }
 
-/// `core_export!` of `PyHeavyTop` with, first, its constructors from the state at t = 0: each
-/// `name(last) => make;` is the static method `name(i1, i3, mgl, phi, theta, psi, phi_dot,
-/// theta_dot, last)` (kg·m², kg·m², J; rad, rad/s), which calls `make(i1, i3, mgl, [phi, …,
-/// last])` (a closure), the constructors differing only in their last argument (ψ̇ or ω₃); then
-/// the core's functions of θ at (N,) angles (`per_theta { name; … }`, through [`each_theta`])
-/// and its batch kernels at (N,) times (`per_time { name => kernel; … }`, through [`batch`]).
+/// The top's parameters (I₁, I₃ kg·m², m g l J), one argument as Python's `top._parameters`
+/// makes them.
+type Top = (f64, f64, f64);
+
+/// The top made by the core (`make`), its error mapped.
+fn made(make: poinsot::Result<HeavyTop>) -> PyResult<PyHeavyTop> {
+    Ok(PyHeavyTop { inner: make.py()? })
+}
+
+/// `core_export!` of `PyHeavyTop` with the core's functions of θ at (N,) angles (`per_theta {
+/// name; … }`, through [`each_theta`]) and its batch kernels at (N,) times (`per_time { name =>
+/// kernel; … }`, through [`batch`]).
 macro_rules! heavy_top_export {
     (
-        constructors { $($(#[$doc:meta])* $name:ident($last:ident) => $make:expr;)* }
         per_theta { $($(#[$tdoc:meta])* $per_theta:ident;)* }
         per_time { $($(#[$bdoc:meta])* $per_time:ident => $kernel:ident;)* }
         $($rest:tt)*
@@ -94,42 +99,11 @@ macro_rules! heavy_top_export {
             ) -> PyResult<Bound<'py, PyArray2<f64>>> {
                 batch(py, &t, |ts, out| self.inner.$kernel(ts, out))
             })*
-            $($(#[$doc])*
-            #[staticmethod]
-            #[allow(clippy::too_many_arguments)]
-            fn $name(
-                i1: f64,
-                i3: f64,
-                mgl: f64,
-                phi: f64,
-                theta: f64,
-                psi: f64,
-                phi_dot: f64,
-                theta_dot: f64,
-                $last: f64,
-            ) -> PyResult<Self> {
-                let make: fn(f64, f64, f64, [f64; 6]) -> poinsot::Result<HeavyTop> = $make;
-                let state = [phi, theta, psi, phi_dot, theta_dot, $last];
-                Ok(Self {
-                    inner: make(i1, i3, mgl, state).py()?,
-                })
-            })*
         }
     };
 }
 
 heavy_top_export! {
-    constructors {
-        /// The top (I₁, I₃, m g l) started at t = 0 from Euler angles and rates (rad, rad/s).
-        from_state(psi_dot) => |i1, i3, mgl, [phi, theta, psi, phi_dot, theta_dot, psi_dot]| {
-            let state = EulerState::new(phi, theta, psi, phi_dot, theta_dot, psi_dot);
-            HeavyTop::new(i1, i3, mgl, state)
-        };
-        /// The top started from Euler angles, φ̇, θ̇ and the spin ω₃ (ψ̇ = ω₃ − φ̇ cos θ, 2.99).
-        from_spin(omega3) => |i1, i3, mgl, [phi, theta, psi, phi_dot, theta_dot, omega3]| {
-            HeavyTop::with_spin(i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, omega3)
-        };
-    }
     per_theta {
         /// V(θ) (J) at (N,) angles θ (rad).
         effective_potential;
@@ -164,19 +138,27 @@ heavy_top_export! {
         motion_class.name() -> &'static str;
     }
 
-    /// The top given by p_φ, p_ψ (kg·m²/s) and E (J); t = 0 at the upper turning point.
+    /// The top started at t = 0 from the Euler angles and rates (φ, θ, ψ, φ̇, θ̇, ψ̇) (rad,
+    /// rad/s).
     #[staticmethod]
-    fn from_constants(
-        i1: f64,
-        i3: f64,
-        mgl: f64,
-        p_phi: f64,
-        p_psi: f64,
-        energy: f64,
-    ) -> PyResult<Self> {
-        Ok(Self {
-            inner: HeavyTop::from_constants(i1, i3, mgl, p_phi, p_psi, energy).py()?,
-        })
+    fn from_state(top: Top, state: [f64; 6]) -> PyResult<Self> {
+        let ((i1, i3, mgl), [phi, theta, psi, phi_dot, theta_dot, psi_dot]) = (top, state);
+        let state = EulerState::new(phi, theta, psi, phi_dot, theta_dot, psi_dot);
+        made(HeavyTop::new(i1, i3, mgl, state))
+    }
+
+    /// The top started from (φ, θ, ψ, φ̇, θ̇, ω₃): the spin ω₃ instead of ψ̇ (2.99).
+    #[staticmethod]
+    fn from_spin(top: Top, state: [f64; 6]) -> PyResult<Self> {
+        let ((i1, i3, mgl), [phi, theta, psi, phi_dot, theta_dot, omega3]) = (top, state);
+        made(HeavyTop::with_spin(i1, i3, mgl, phi, theta, psi, phi_dot, theta_dot, omega3))
+    }
+
+    /// The top given by (p_φ, p_ψ) (kg·m²/s) and E (J); t = 0 at the upper turning point.
+    #[staticmethod]
+    fn from_constants(top: Top, constants: (f64, f64, f64)) -> PyResult<Self> {
+        let ((i1, i3, mgl), (p_phi, p_psi, energy)) = (top, constants);
+        made(HeavyTop::from_constants(i1, i3, mgl, p_phi, p_psi, energy))
     }
 
     /// The pole a top of class "through vertical" passes through: "upright", "straight
@@ -226,44 +208,38 @@ heavy_top_export! {
 #[export]
 fn heavy_top_steady_precession<'py>(
     py: Python<'py>,
-    i1: f64,
-    i3: f64,
-    mgl: f64,
+    top: Top,
     theta0: f64,
     omega3: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let (i1, i3, mgl) = top;
     let s = analytic::steady_precession(i1, i3, mgl, theta0, omega3).py()?;
     Ok(fields_dict!(py, s; slow, fast, slow_approx, fast_approx, fast_approx_as_printed, min_spin))
 }
 
 /// The minimum spin 2.119 (rad/s) at θ₀.
 #[export]
-fn heavy_top_min_spin(i1: f64, i3: f64, mgl: f64, theta0: f64) -> PyResult<f64> {
+fn heavy_top_min_spin(top: Top, theta0: f64) -> PyResult<f64> {
+    let (i1, i3, mgl) = top;
     analytic::min_spin(i1, i3, mgl, theta0).py()
 }
 
 /// The sleeping-top threshold 2√(m g l I₁)/I₃ (rad/s).
 #[export]
-fn heavy_top_sleeping_threshold(i1: f64, i3: f64, mgl: f64) -> PyResult<f64> {
+fn heavy_top_sleeping_threshold(top: Top) -> PyResult<f64> {
+    let (i1, i3, mgl) = top;
     analytic::sleeping_threshold(i1, i3, mgl).py()
 }
 
-/// Exports functions of the top (I₁, I₃ kg·m², m g l J) at one state (θ rad; θ̇, φ̇, ψ̇ rad/s):
-/// `of_state!(doc name -> T = compute; …)` is `name(i1, i3, mgl, theta, theta_dot, phi_dot,
-/// psi_dot) -> T`, `compute(i1, i3, mgl, &state)`.
+/// Exports functions of the [`Top`] at one state (θ rad; θ̇, φ̇, ψ̇ rad/s): `of_state!(doc
+/// name -> T = compute; …)` is `name(top, (theta, theta_dot, phi_dot, psi_dot)) -> T`,
+/// `compute(i1, i3, mgl, &state)`.
 macro_rules! of_state {
     ($($(#[$doc:meta])* $name:ident -> $out:ty = $compute:expr;)*) => {
         $($(#[$doc])*
         #[export]
-        fn $name(
-            i1: f64,
-            i3: f64,
-            mgl: f64,
-            theta: f64,
-            theta_dot: f64,
-            phi_dot: f64,
-            psi_dot: f64,
-        ) -> PyResult<$out> {
+        fn $name(top: Top, state: [f64; 4]) -> PyResult<$out> {
+            let ((i1, i3, mgl), [theta, theta_dot, phi_dot, psi_dot]) = (top, state);
             let s = EulerState::with_rates(theta, theta_dot, phi_dot, psi_dot);
             let compute: fn(f64, f64, f64, &EulerState) -> poinsot::Result<$out> = $compute;
             compute(i1, i3, mgl, &s).py()
