@@ -363,24 +363,23 @@ def check_inertia(inertia: NDArray[np.float64]) -> NDArray[np.float64]: ...
 def check_mesh_file(triangles: float) -> None: ...
 
 # ---- frames (frames.rs) ----
+# A frame travels packed, as MovingFrame._packed: (24,) = origin, velocity, acceleration, omega,
+# omega_dot (3 each), then the attitude (3, 3) row-major.
 
 def frame_to_fixed(
     frame: NDArray[np.float64],
-    attitude: NDArray[np.float64],
     position: NDArray[np.float64],
     velocity: NDArray[np.float64],
     acceleration: NDArray[np.float64],
 ) -> list[NDArray[np.float64]]: ...
 def frame_to_moving(
     frame: NDArray[np.float64],
-    attitude: NDArray[np.float64],
     position: NDArray[np.float64],
     velocity: NDArray[np.float64],
     acceleration: NDArray[np.float64],
 ) -> list[NDArray[np.float64]]: ...
 def frame_fictitious_forces(
     frame: NDArray[np.float64],
-    attitude: NDArray[np.float64],
     mass: NDArray[np.float64],
     position: NDArray[np.float64],
     velocity: NDArray[np.float64],
@@ -418,14 +417,12 @@ class SpringParticleCore:
     def jacobi_integral(
         self,
         frame: NDArray[np.float64],
-        attitude: NDArray[np.float64],
         position: NDArray[np.float64],
         velocity: NDArray[np.float64],
     ) -> NDArray[np.float64]: ...
 
 def frame_steady_at(
     frame: NDArray[np.float64],
-    attitude: NDArray[np.float64],
     t: float,
 ) -> tuple[list[NDArray[np.float64]], NDArray[np.float64]]: ...
 
@@ -933,7 +930,6 @@ def dynamics_simulate_carried(
     duration: float,
     kind: str,
     frame: NDArray[np.float64],
-    frame_attitude: NDArray[np.float64],
     pivot: NDArray[np.float64],
     gravity: NDArray[np.float64],
     earth: EarthCore | None,

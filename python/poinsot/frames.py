@@ -203,7 +203,7 @@ class MovingFrame:
         self._packed = np.concatenate([self._state, self._attitude.ravel()])
         # Let the core check the attitude (a proper rotation) once.
         empty = np.zeros((0, 3))
-        _core.frame_to_fixed(self._state, self._attitude, empty, empty, empty)
+        _core.frame_to_fixed(self._packed, empty, empty, empty)
 
     # -- the state ------------------------------------------------------------------------
     origin = _state_property(0, "R (m), shape (3,).")
@@ -287,7 +287,7 @@ class MovingFrame:
         (r, v, a), lead = _broadcast(
             [(position, "position"), (velocity, "velocity"), (acceleration, "acceleration")]
         )
-        out = core(self._state, self._attitude, r, v, a)
+        out = core(self._packed, r, v, a)
         shape = lead + (3,)
         x, xd, xdd = (out[i].reshape(shape) for i in range(3))
         return FrameTransform(x, xd, xdd, {n: t.reshape(shape) for n, t in zip(names, out[3:])})
@@ -310,7 +310,7 @@ class MovingFrame:
         except ValueError:
             raise PoinsotError(f"mass: shape {m.shape} does not broadcast to {lead}") from None
         out = _core.frame_fictitious_forces(
-            self._state, self._attitude, np.ascontiguousarray(m, dtype=np.float64), r, v
+            self._packed, np.ascontiguousarray(m, dtype=np.float64), r, v
         )
         names = ("translational", "coriolis", "centrifugal", "euler")
         return {n: x.reshape(lead + (3,)) for n, x in zip(names, out)}
@@ -319,7 +319,7 @@ class MovingFrame:
         """The state at time ``t`` (s) of the steady motion that starts from this state at
         t = 0: origin at constant acceleration, axes turning about the fixed axis of ω with
         constant ω̇ (ω̇ must be parallel to ω)."""
-        vecs, att = _core.frame_steady_at(self._state, self._attitude, as_scalar(t, "t"))
+        vecs, att = _core.frame_steady_at(self._packed, as_scalar(t, "t"))
         return MovingFrame(
             origin=vecs[0],
             velocity=vecs[1],
@@ -407,7 +407,7 @@ def _frame_callable(frame: Callable[[float], MovingFrame]) -> Callable[[float], 
             raise PoinsotError(
                 f"frame: the callable must return a MovingFrame, got {type(f).__name__}"
             )
-        return f._state.tolist(), f._attitude.tolist()
+        return f._packed.tolist()
 
     return call
 
@@ -621,9 +621,7 @@ class SpringParticle:
         if not isinstance(frame, MovingFrame):
             raise PoinsotError(f"frame: must be a MovingFrame, got {type(frame).__name__}")
         (r, v), lead = _pairs(position, velocity)
-        return shaped(
-            np.asarray(self._core.jacobi_integral(frame._state, frame._attitude, r, v)), lead
-        )
+        return shaped(np.asarray(self._core.jacobi_integral(frame._packed, r, v)), lead)
 
     def simulate(
         self,

@@ -179,13 +179,12 @@ def _simulate_carried(
                 f"{name}: a Place sets the pivot (the place) and gravity (the Earth's); "
                 "give them with a MovingFrame only"
             )
-        frame, attitude = np.zeros(15), np.eye(3)
+        frame = np.zeros(24)
         pivot_v, gravity_v = np.zeros(3), np.zeros(3)
         earth, lat = carried_by._earth, carried_by.latitude
     elif isinstance(carried_by, MovingFrame):
         kind = "frame"
-        frame = np.ascontiguousarray(carried_by._state)
-        attitude = np.ascontiguousarray(carried_by._attitude)
+        frame = carried_by._packed
         pivot_v = np.zeros(3) if pivot is None else as_vector3(pivot, "pivot")
         gravity_v = (
             np.array([0.0, 0.0, -_core.DEFAULTS["GravityTorque.__init__"]["g"]])
@@ -227,7 +226,6 @@ def _simulate_carried(
         as_scalar(duration, "duration"),
         kind,
         np.ascontiguousarray(frame, dtype=np.float64),
-        np.ascontiguousarray(attitude, dtype=np.float64),
         np.ascontiguousarray(pivot_v, dtype=np.float64),
         np.ascontiguousarray(gravity_v, dtype=np.float64),
         earth,

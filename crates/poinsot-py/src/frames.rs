@@ -1,8 +1,9 @@
 //! Bindings of `poinsot::frames` (conversion and error mapping only).
 //!
-//! A frame state travels as a flat array of 15 floats — origin, velocity, acceleration,
-//! angular velocity, angular acceleration (3 each, fixed components) — and an attitude
-//! (3, 3) array. Particles travel as (N, 3) arrays.
+//! A frame travels packed, one flat array of 24 floats (`MovingFrame._packed`): origin,
+//! velocity, acceleration, angular velocity, angular acceleration (3 each, fixed components),
+//! then the attitude (3, 3) row-major; [`frame_arg`] makes the core's frame of it. Particles
+//! travel as (N, 3) arrays.
 use std::cell::RefCell;
 
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2};
@@ -16,32 +17,37 @@ use poinsot_py_macros::export;
 use pyo3::prelude::*;
 
 use crate::control::{map_each, run, run_attached};
-use crate::convert::{a3, mat3, mat3_out, rows_view, v3, vec3, vec3_out, Values};
+use crate::convert::{a3, mat3_out, rows_view, v3, vec3, vec3_out, Values};
 use crate::errors::{invalid, IntoPy};
 
 pub(crate) use crate::convert::{options, rows_out, vec_in};
 
-/// 15 floats and a row-major attitude → a checked core frame.
-fn frame_from(s: &[f64], attitude: [[f64; 3]; 3]) -> PyResult<MovingFrame> {
-    if s.len() != 15 {
+/// Checks that a packed frame holds its 24 numbers (naming `frame`).
+fn check_packed(p: &[f64]) -> PyResult<()> {
+    if p.len() != 24 {
         return Err(invalid(
             "frame",
-            format!("must hold 15 numbers, got {}", s.len()),
+            format!("must hold 24 numbers, got {}", p.len()),
         ));
     }
-    let v = |i: usize| Vec3::new(s[i], s[i + 1], s[i + 2]);
-    let att = Mat3::from_fn(|i, j| attitude[i][j]);
+    Ok(())
+}
+
+/// A packed frame → the checked core frame: the 15 state numbers (origin, velocity,
+/// acceleration, ω, ω̇) then the attitude (3, 3) row-major, as `MovingFrame._packed` holds them.
+fn frame_from(p: &[f64]) -> PyResult<MovingFrame> {
+    check_packed(p)?;
+    let v = |i: usize| Vec3::new(p[i], p[i + 1], p[i + 2]);
+    let att = Mat3::from_fn(|i, j| p[15 + 3 * i + j]);
     MovingFrame::new(v(0), v(3), v(6), v(9), v(12))
         .py()?
         .with_attitude(att)
         .py()
 }
 
-fn frame_arg(
-    frame: &PyReadonlyArray1<'_, f64>,
-    attitude: &PyReadonlyArray2<'_, f64>,
-) -> PyResult<MovingFrame> {
-    frame_from(&vec_in(frame), mat3("attitude", attitude)?)
+/// A frame argument: Python's `MovingFrame._packed` (24,) → the checked core frame.
+pub(crate) fn frame_arg(packed: &PyReadonlyArray1<'_, f64>) -> PyResult<MovingFrame> {
+    frame_from(&vec_in(packed))
 }
 
 /// Applies `transform` to each row of (N, 3) positions, velocities and accelerations and returns
@@ -112,12 +118,11 @@ macro_rules! transform_export {
         fn $name<'py>(
             py: Python<'py>,
             frame: PyReadonlyArray1<'py, f64>,
-            attitude: PyReadonlyArray2<'py, f64>,
             position: PyReadonlyArray2<'py, f64>,
             velocity: PyReadonlyArray2<'py, f64>,
             acceleration: PyReadonlyArray2<'py, f64>,
         ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
-            let f = frame_arg(&frame, &attitude)?;
+            let f = frame_arg(&frame)?;
             transform_rows(py, &position, &velocity, &acceleration, |r, v, a| {
                 let m = f.$method(r, v, a)?;
                 Ok([m.position, m.velocity, m.acceleration, $(m.terms.$term),+])
@@ -144,12 +149,11 @@ transform_export!(
 fn frame_fictitious_forces<'py>(
     py: Python<'py>,
     frame: PyReadonlyArray1<'py, f64>,
-    attitude: PyReadonlyArray2<'py, f64>,
     mass: PyReadonlyArray1<'py, f64>,
     position: PyReadonlyArray2<'py, f64>,
     velocity: PyReadonlyArray2<'py, f64>,
 ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
-    let f = frame_arg(&frame, &attitude)?;
+    let f = frame_arg(&frame)?;
     let m = vec_in(&mass);
     let (r, v) = (
         rows_view::<3>("position", &position)?,
@@ -162,8 +166,8 @@ fn frame_fictitious_forces<'py>(
     })
 }
 
-/// A frame motion that asks a Python callable `t -> (15 floats, 3×3 nested attitude)`; the
-/// first Python error is kept and the integration is stopped by non-finite values.
+/// A frame motion that asks a Python callable `t -> 24 floats` (a packed frame); the first
+/// Python error is kept and the integration is stopped by non-finite values.
 struct PyFrame<'a, 'py> {
     py: Python<'py>,
     func: &'a Bound<'py, PyAny>,
@@ -176,8 +180,8 @@ impl FrameMotion for PyFrame<'_, '_> {
         let got = self
             .func
             .call1((t,))
-            .and_then(|r| r.extract::<(Vec<f64>, [[f64; 3]; 3])>())
-            .and_then(|(s, att)| frame_from(&s, att));
+            .and_then(|r| r.extract::<Vec<f64>>())
+            .and_then(|p| frame_from(&p));
         match got {
             Ok(f) => f,
             Err(e) => {
@@ -193,7 +197,7 @@ impl FrameMotion for PyFrame<'_, '_> {
 
 /// Integrates a particle in a moving frame (see `poinsot.simulate_particle`). The frame is 24
 /// floats — 15 state numbers and the attitude row-major — (a steady frame from t = 0) or a
-/// callable `t -> (15 floats, attitude)`; the output times are `t_eval` or, if None, `samples`
+/// callable `t -> 24 floats`; the output times are `t_eval` or, if None, `samples`
 /// evenly spaced ones from 0 to `duration`; the force is a
 /// constant (3,) vector in moving components plus, optionally, a callable
 /// `(t, x, y, z, vx, vy, vz) -> (fx, fy, fz)`.
@@ -225,17 +229,8 @@ fn frame_simulate_particle<'py>(
     let f_const = v3(&vec3("force", &force)?);
     // The frame travels packed: 15 state numbers then the attitude, row-major.
     let packed = vec_in(&frame);
-    if packed.len() != 24 {
-        return Err(invalid(
-            "frame",
-            format!("must hold 24 numbers, got {}", packed.len()),
-        ));
-    }
-    let steady = || -> PyResult<SteadyMotion> {
-        let att: [[f64; 3]; 3] =
-            std::array::from_fn(|i| std::array::from_fn(|j| packed[15 + 3 * i + j]));
-        SteadyMotion::new(frame_from(&packed[..15], att)?).py()
-    };
+    check_packed(&packed)?;
+    let steady = || -> PyResult<SteadyMotion> { SteadyMotion::new(frame_from(&packed)?).py() };
     let times = match &t_eval {
         Some(t) => vec_in(t),
         None => poinsot::integrate::sample_times(
@@ -314,10 +309,9 @@ type ScanOut<'py> = (Bound<'py, PyArray2<f64>>, usize);
 fn frame_steady_at<'py>(
     py: Python<'py>,
     frame: PyReadonlyArray1<'py, f64>,
-    attitude: PyReadonlyArray2<'py, f64>,
     t: f64,
 ) -> PyResult<(Vec<Bound<'py, PyArray1<f64>>>, Bound<'py, PyArray2<f64>>)> {
-    let motion = SteadyMotion::new(frame_arg(&frame, &attitude)?).py()?;
+    let motion = SteadyMotion::new(frame_arg(&frame)?).py()?;
     let f = motion.state_at(t).py()?;
     let vecs = [
         f.origin,
@@ -388,17 +382,16 @@ core_export! {
     ) -> PyResult<Values> {
         at_states(py, &position, &velocity, |r, v| self.inner.energy(r, v))
     }
-    /// (N,) Jacobi integrals (J) in the frame (15 floats, attitude) of (N, 3) relative positions
+    /// (N,) Jacobi integrals (J) in the packed frame (24 floats) of (N, 3) relative positions
     /// (m) and velocities (m/s) in moving components.
     fn jacobi_integral(
         &self,
         py: Python<'_>,
         frame: PyReadonlyArray1<'_, f64>,
-        attitude: PyReadonlyArray2<'_, f64>,
         position: PyReadonlyArray2<'_, f64>,
         velocity: PyReadonlyArray2<'_, f64>,
     ) -> PyResult<Values> {
-        let f = frame_arg(&frame, &attitude)?;
+        let f = frame_arg(&frame)?;
         at_states(py, &position, &velocity, |r, v| {
             self.inner.jacobi_integral(&f, r, v)
         })

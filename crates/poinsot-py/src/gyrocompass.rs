@@ -1,24 +1,24 @@
 //! Bindings of `poinsot::dynamics::{simulate_carried, Gyrocompass}` (conversion and error
 //! mapping only). `GyrocompassCore` holds a checked core value; the public, documented class is
 //! `poinsot.Gyrocompass` (python/poinsot/gyrocompass.py). The carrying frame travels as a kind
-//! ("frame" or "earth"), the frame's 15 numbers (origin, velocity, acceleration, ω, ω̇) and
-//! attitude (3, 3), the pivot and gravity (3,), and the Earth (`EarthCore`) and latitude.
-use numpy::{PyReadonlyArray1, PyReadonlyArray2};
+//! ("frame" or "earth"), the packed frame (24,) (as the frames binding takes it), the pivot and
+//! gravity (3,), and the Earth (`EarthCore`) and latitude.
+use numpy::PyReadonlyArray1;
 use poinsot::dynamics::{
     simulate_carried, Carrier, CompassRun, Gyrocompass, Load, Ship, Track, Turn,
 };
 use poinsot::earth::Earth;
-use poinsot::frames::MovingFrame;
-use poinsot::{Mat3, Vec3};
+use poinsot::Vec3;
 use poinsot_py_macros::export;
 use pyo3::prelude::*;
 use pyo3::types::PyType;
 
 use crate::control::run;
-use crate::convert::{mat3, rows_into, vec_in, vector, RunSettings, Values};
+use crate::convert::{rows_into, vec_in, vector, RunSettings, Values};
 use crate::dynamics::{initial_state, PyTrajectory, Start, TorqueSpec};
 use crate::earth::PyEarth;
 use crate::errors::{invalid, IntoPy};
+use crate::frames::frame_arg;
 
 /// A pendulous gyrocompass (private; use `poinsot.Gyrocompass`): the core's `Gyrocompass`,
 /// checked when made.
@@ -199,7 +199,7 @@ type CarriedOut<'py> = (
 
 /// Simulates a body carried by a moving frame (see `poinsot.simulate(..., carried_by=...)`).
 #[export]
-#[pyo3(signature = (start, duration, kind, frame, frame_attitude, pivot, gravity, earth, latitude, mass_moment, torque, method, settings, progress))]
+#[pyo3(signature = (start, duration, kind, frame, pivot, gravity, earth, latitude, mass_moment, torque, method, settings, progress))]
 #[allow(clippy::too_many_arguments)]
 fn dynamics_simulate_carried<'py>(
     py: Python<'py>,
@@ -207,7 +207,6 @@ fn dynamics_simulate_carried<'py>(
     duration: f64,
     kind: &str,
     frame: PyReadonlyArray1<'py, f64>,
-    frame_attitude: PyReadonlyArray2<'py, f64>,
     pivot: PyReadonlyArray1<'py, f64>,
     gravity: PyReadonlyArray1<'py, f64>,
     earth: Option<PyRef<'py, PyEarth>>,
@@ -220,27 +219,12 @@ fn dynamics_simulate_carried<'py>(
 ) -> PyResult<CarriedOut<'py>> {
     let (body, w0, q0) = initial_state(&start)?;
     let carrier = match kind {
-        "frame" => {
-            let s = vec_in(&frame);
-            if s.len() != 15 {
-                return Err(invalid(
-                    "carried_by",
-                    format!("must hold 15 numbers, got {}", s.len()),
-                ));
-            }
-            let v = |i: usize| Vec3::new(s[i], s[i + 1], s[i + 2]);
-            let att = mat3("carried_by", &frame_attitude)?;
-            let state = MovingFrame::new(v(0), v(3), v(6), v(9), v(12))
-                .py()?
-                .with_attitude(Mat3::from_fn(|i, j| att[i][j]))
-                .py()?;
-            Carrier::frame(
-                state,
-                vector("pivot", &pivot)?,
-                vector("gravity", &gravity)?,
-            )
-            .py()?
-        }
+        "frame" => Carrier::frame(
+            frame_arg(&frame)?,
+            vector("pivot", &pivot)?,
+            vector("gravity", &gravity)?,
+        )
+        .py()?,
         "earth" => place(earth.as_deref(), latitude)?,
         other => {
             return Err(invalid(
