@@ -1,4 +1,4 @@
-//! Bindings of `poinsot::dynamics::{Gyrocompass, simulate_carried}` (conversion and error
+//! Bindings of `poinsot::dynamics::{Gyrocompass, free_gyroscope}` (conversion and error
 //! mapping only): the pendulous gyrocompass at a latitude on the rotating Earth — its settling
 //! period, Schuler tuning, the steaming (speed) error exact and small-angle, the latitude
 //! (damping) error, and its full simulation as a rigid gyrostat carried by the local frame of a
@@ -9,13 +9,8 @@
 use crate::args::{count, let_numbers, Count, Number};
 use crate::convert::{getters, Failure, Out};
 use crate::{calls, fields};
-use poinsot::dynamics::{
-    self as dy, simulate_carried, BodyInertia, Carrier, Load, Method, Ship, SimulateOptions, Torque,
-};
+use poinsot::dynamics::{self as dy, Method, Ship, SimulateOptions};
 use poinsot::earth::Earth;
-use poinsot::rotation::{axis_angle_to_matrix, matrix_to_quaternion};
-use poinsot::Vec3;
-use std::f64::consts::FRAC_PI_2;
 use wasm_bindgen::prelude::wasm_bindgen;
 
 /// The browser's step limit for a compass run (the core's tolerances; the default moments take
@@ -174,14 +169,12 @@ impl Gyrocompass {
     }
 }
 
-/// Foucault's free gyroscope (1852): a symmetric rotor (moments `[2, 1, 1]` kg·m², pivot at its
-/// centre of mass, no torque) spinning at `spin` (rad/s) about its axis, the axis starting at
-/// heading `heading0` (rad, clockwise from north) and tilt `tilt0` (rad, above the horizontal)
-/// at rest relative to the ground, carried by the place at `latitude` (rad) on the default Earth
-/// for `duration` s: the core's `simulate_carried` (exact flow), `samples` evenly spaced times.
-/// Returns the rotor's attitude relative to the ground at each sample, `[w, x, y, z, ...]`
-/// (body → ENU; the spin axis is body axis 1, x). Errors name `latitude`, `heading0`, `tilt0`,
-/// `spin`, `duration` or `samples`.
+/// Foucault's free gyroscope (1852) on the default Earth: the core's `free_gyroscope` (a rotor
+/// spinning at `spin` rad/s, its axis at heading `heading0` and tilt `tilt0` (rad) at rest on
+/// the ground at `latitude` (rad), for `duration` s, `samples` evenly spaced times). Returns the
+/// rotor's attitude relative to the ground at each sample, `[w, x, y, z, ...]` (body → ENU; the
+/// spin axis is body axis 1, x). Errors name `latitude`, `heading0`, `tilt0`, `spin`,
+/// `duration` or `samples`.
 #[wasm_bindgen(js_name = freeGyroscope)]
 pub fn free_gyroscope(
     #[wasm_bindgen(unchecked_param_type = "number")] latitude: Number,
@@ -192,36 +185,10 @@ pub fn free_gyroscope(
     #[wasm_bindgen(unchecked_param_type = "number")] samples: Count,
 ) -> Out<Vec<f64>> {
     let_numbers!(latitude, heading0, tilt0, spin, duration);
-    for (name, value) in [("heading0", heading0), ("tilt0", tilt0), ("spin", spin)] {
-        if !value.is_finite() {
-            return Err(Failure::invalid(
-                name,
-                &format!("must be finite, got {value}"),
-            ));
-        }
-    }
-    let place = Carrier::earth(Earth::default(), latitude)?;
-    let rotor = BodyInertia::from_moments([2.0, 1.0, 1.0])?;
-    // Body → ENU: a turn by −tilt0 about y (the x axis up), then by π/2 − heading0 about up.
-    let rel = axis_angle_to_matrix(&Vec3::z(), FRAC_PI_2 - heading0)?
-        * axis_angle_to_matrix(&Vec3::y(), -tilt0)?;
-    let q0 = matrix_to_quaternion(&rel)?;
-    let opts = SimulateOptions {
-        method: Method::Exact,
-        samples: count("samples", &samples, BYTES_PER_SAMPLE)?,
-        ..SimulateOptions::default()
-    };
-    let run = simulate_carried(
-        &rotor,
-        Vec3::new(spin, 0.0, 0.0),
-        Some(q0),
-        duration,
-        &place,
-        Load::default(),
-        &mut Torque::None,
-        &opts,
-    )?;
-    Ok(run.relative_attitude.into_iter().flatten().collect())
+    let samples = count("samples", &samples, BYTES_PER_SAMPLE)?;
+    let earth = Earth::default();
+    let run = dy::free_gyroscope(earth, latitude, heading0, tilt0, spin, duration, samples)?;
+    Ok(run.into_iter().flatten().collect())
 }
 
 /// The rate (rad/s, clockwise positive) at which the heading of an axis fixed in inertial space

@@ -379,3 +379,33 @@ proptest! {
         prop_assert!((d - want).norm() < 1e-12);
     }
 }
+
+#[test]
+fn free_gyroscope_axis_drifts_at_the_fixed_axis_heading_rate() {
+    // A horizontal axis at 49° N aimed east (cos α = 0: the tilt it takes changes the rate
+    // only at second order, ~0.3 % in half an hour): its heading (clockwise from north) grows
+    // at Ω sin λ (fixed_axis_heading_rate) as seen from the ground.
+    let (lat, heading0, hour) = (49f64.to_radians(), FRAC_PI_2, 1800.0);
+    let q = poinsot::dynamics::free_gyroscope(Earth::default(), lat, heading0, 0.0, 100.0, hour, 3)
+        .unwrap();
+    assert_eq!(q.len(), 3);
+    let axis = |q: &[f64; 4]| quaternion_to_matrix(q, true).unwrap() * Vec3::x();
+    let heading = |q: &[f64; 4]| axis(q).x.atan2(axis(q).y);
+    assert!((heading(&q[0]) - heading0).abs() < 1e-12);
+    let rate =
+        poinsot::dynamics::fixed_axis_heading_rate(&Earth::default(), lat, heading0, 0.0).unwrap();
+    let drift = heading(&q[2]) - heading0;
+    assert!(
+        ((drift - rate * hour) / (rate * hour)).abs() < 1e-2,
+        "{drift} vs {}",
+        rate * hour
+    );
+    // Refusals name the argument.
+    let e = |r: poinsot::Result<Vec<[f64; 4]>>| r.unwrap_err().argument;
+    let run = |lat: f64, h: f64, spin: f64| {
+        poinsot::dynamics::free_gyroscope(Earth::default(), lat, h, 0.0, spin, hour, 3)
+    };
+    assert_eq!(e(run(2.0, 0.0, 100.0)), "latitude");
+    assert_eq!(e(run(lat, f64::NAN, 100.0)), "heading0");
+    assert_eq!(e(run(lat, 0.0, f64::INFINITY)), "spin");
+}

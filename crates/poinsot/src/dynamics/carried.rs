@@ -20,7 +20,10 @@ use super::torque::{TorqueContext, TorqueModel};
 use crate::earth::{check_latitude, Earth};
 use crate::error::{check_finite, Error, Result};
 use crate::frames::{FrameMotion, MovingFrame, SteadyMotion};
-use crate::rotation::{matrix_to_quaternion_any_sign, row_major, same_hemisphere, Quaternion};
+use crate::rotation::{
+    axis_angle_to_matrix, matrix_to_quaternion, matrix_to_quaternion_any_sign, row_major,
+    same_hemisphere, Quaternion,
+};
 use crate::{Mat3, Vec3};
 
 /// What a carrying frame must give at time `t` (s), in **fixed (inertial)** components.
@@ -132,6 +135,53 @@ pub fn fixed_axis_heading_rate(
             ),
         ))
     }
+}
+
+/// Foucault's free gyroscope (1852): a symmetric rotor (moments `[2, 1, 1]` kg·m², pivot at its
+/// centre of mass, no torque) spinning at `spin` (rad/s) about its axis (body axis 1), the axis
+/// starting at heading `heading0` (rad, clockwise from north) and tilt `tilt0` (rad, above the
+/// horizontal) at rest relative to the ground, carried by the place at `latitude` (rad) on
+/// `earth` for `duration` s by the exact flow, `samples` evenly spaced times. Returns the
+/// rotor's attitude relative to the ground (body → ENU) at each sample; seen from the ground its
+/// axis turns at [`fixed_axis_heading_rate`]. Errors name `heading0`, `tilt0`, `spin` (not
+/// finite), `latitude`, `duration` or `samples`.
+#[allow(clippy::too_many_arguments)]
+pub fn free_gyroscope(
+    earth: Earth,
+    latitude: f64,
+    heading0: f64,
+    tilt0: f64,
+    spin: f64,
+    duration: f64,
+    samples: usize,
+) -> Result<Vec<Quaternion>> {
+    check_finite("heading0", &[heading0])?;
+    check_finite("tilt0", &[tilt0])?;
+    check_finite("spin", &[spin])?;
+    let place = Carrier::earth(earth, latitude)?;
+    let rotor = BodyInertia::from_moments([2.0, 1.0, 1.0])?;
+    // Body → ENU: a turn by −tilt0 about y (the x axis up), then by π/2 − heading0 about up.
+    let rel = axis_angle_to_matrix(&Vec3::z(), std::f64::consts::FRAC_PI_2 - heading0)?
+        * axis_angle_to_matrix(&Vec3::y(), -tilt0)?;
+    let q0 = matrix_to_quaternion(&rel)?;
+    let opts = SimulateOptions {
+        method: super::simulate::Method::Exact,
+        samples,
+        ..SimulateOptions::default()
+    };
+    let spin = Vec3::new(spin, 0.0, 0.0);
+    let free = &mut super::torque::Torque::None;
+    let run = simulate_carried(
+        &rotor,
+        spin,
+        Some(q0),
+        duration,
+        &place,
+        Load::default(),
+        free,
+        &opts,
+    )?;
+    Ok(run.relative_attitude)
 }
 
 /// The rotation by `angle` (rad) about the unit vector `axis` (Rodrigues).

@@ -14,8 +14,8 @@ mod torque;
 
 pub use batch::{simulate_batch, BatchResult};
 pub use carried::{
-    fixed_axis_heading_rate, simulate_carried, CarriedTorque, CarriedTrajectory, Carrier, Carrying,
-    Load,
+    fixed_axis_heading_rate, free_gyroscope, simulate_carried, CarriedTorque, CarriedTrajectory,
+    Carrier, Carrying, Load,
 };
 pub use equations::{angular_acceleration, angular_acceleration_principal, power, quaternion_rate};
 pub use gyrocompass::{
