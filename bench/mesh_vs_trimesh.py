@@ -11,23 +11,28 @@ star-shaped about its centre of mass, which proves it embedded in one pass over 
 torus is not, so every pair of faces whose boxes meet is tested (the bounding-volume hierarchy
 and the exact pairwise tests). Both ratios are printed.
 
-Run: python bench/mesh_vs_trimesh.py [--subdivisions 8] [--torus 1024 512] [--repeat 7]
+Run: python bench/mesh_vs_trimesh.py [--subdivisions 8] [--torus 1024 512] [--repeat 7] [--runs 1]
+
+``--runs N`` repeats the whole comparison N times and also prints the median of each ratio (a
+shared machine's load moves single runs by a factor of up to two).
 """
 
 from __future__ import annotations
 
 import argparse
 import os
+import statistics
 import time
 
 import numpy as np
-
 import poinsot as ps
 
 try:
     import trimesh
 except ImportError:  # pragma: no cover
-    raise SystemExit("bench/mesh_vs_trimesh.py needs trimesh: pip install 'poinsot[mesh]'") from None
+    raise SystemExit(
+        "bench/mesh_vs_trimesh.py needs trimesh: pip install 'poinsot[mesh]'"
+    ) from None
 
 
 def best(fns: list, repeat: int) -> list[float]:
@@ -91,7 +96,9 @@ def compare(title: str, mesh, repeat: int) -> float:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--subdivisions", type=int, default=8, help="icosphere subdivisions (8: 1.31M faces)")
+    parser.add_argument(
+        "--subdivisions", type=int, default=8, help="icosphere subdivisions (8: 1.31M faces)"
+    )
     parser.add_argument(
         "--torus",
         type=int,
@@ -101,20 +108,42 @@ def main() -> None:
         help="torus sections (1024 512: 1.05M faces)",
     )
     parser.add_argument("--repeat", type=int, default=7)
+    parser.add_argument(
+        "--runs", type=int, default=1, help="whole comparisons; medians printed when > 1"
+    )
     args = parser.parse_args()
     print(f"{os.cpu_count()} CPUs; best of {args.repeat}")
-    sphere = compare(
-        f"icosphere({args.subdivisions}), star-shaped (one pass proves it embedded)",
-        trimesh.creation.icosphere(subdivisions=args.subdivisions),
-        args.repeat,
-    )
+    ico = trimesh.creation.icosphere(subdivisions=args.subdivisions)
     major, minor = args.torus
-    torus = compare(
-        f"torus({major}x{minor}), not star-shaped (pairwise self-intersection tests)",
-        trimesh.creation.torus(1.0, 0.3, major_sections=major, minor_sections=minor),
-        args.repeat,
-    )
-    print(f"poinsot against trimesh's mass_properties: {sphere:.1f}x (icosphere), {torus:.1f}x (torus)")
+    ring = trimesh.creation.torus(1.0, 0.3, major_sections=major, minor_sections=minor)
+    spheres, tori = [], []
+    for run in range(args.runs):
+        if args.runs > 1:
+            load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
+            print(f"run {run + 1} of {args.runs} (load average {load:.1f})")
+        spheres.append(
+            compare(
+                f"icosphere({args.subdivisions}), star-shaped (one pass proves it embedded)",
+                ico,
+                args.repeat,
+            )
+        )
+        tori.append(
+            compare(
+                f"torus({major}x{minor}), not star-shaped (pairwise self-intersection tests)",
+                ring,
+                args.repeat,
+            )
+        )
+        print(
+            f"poinsot against trimesh's mass_properties: {spheres[-1]:.1f}x (icosphere), {tori[-1]:.1f}x (torus)"
+        )
+    if args.runs > 1:
+        print(
+            f"median of {args.runs} runs: {statistics.median(spheres):.1f}x (icosphere), "
+            f"{statistics.median(tori):.1f}x (torus); "
+            f"icosphere {min(spheres):.1f}-{max(spheres):.1f}x, torus {min(tori):.1f}-{max(tori):.1f}x"
+        )
 
 
 if __name__ == "__main__":
