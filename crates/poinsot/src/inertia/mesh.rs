@@ -154,14 +154,14 @@ fn solid(
             // Several shells of zero or negative total volume: a shell of the wrong winding
             // (a cavity outside any solid, say) is the cause the nesting check names.
             if parts.len() > 1 {
-                check_embedding(vertices, tris, &comp, &parts, None, cancel)?;
+                check_embedding(vertices, all, tris, &comp, &parts, None, cancel)?;
             }
             return Err(err);
         }
     };
     // The centre of mass: the point the star-shaped certificate tries first.
     let centre = (Vec3::from(whole.g) + ldexp_vec(&whole.com, whole.e)).into();
-    check_embedding(vertices, tris, &comp, &parts, Some(centre), cancel)?;
+    check_embedding(vertices, all, tris, &comp, &parts, Some(centre), cancel)?;
     cancel.check()?;
     finish(&whole, density)
 }
@@ -1011,16 +1011,18 @@ fn assemble(parts: &[Part], nf: usize) -> Result<Whole> {
 /// No self-intersection, and winding numbers 0 or 1 ([`mesh_embedding`]). A single component
 /// that is star-shaped about `centre` is embedded by a theorem
 /// ([`star_shaped_about`]: one pass over the faces); otherwise, or when that
-/// proof fails, every pair of faces whose boxes meet is tested.
+/// proof fails, every pair of faces whose boxes meet is tested. `all`: the box of every
+/// vertex ([`checked_arrays`]).
 fn check_embedding(
     vertices: &[f64],
+    all: Bounds,
     tris: &[[u32; 3]],
     comp: &[u32],
     parts: &[Part],
     centre: Option<[f64; 3]>,
     cancel: &Cancel,
 ) -> Result<()> {
-    let pts = Points::new(vertices);
+    let pts = Points::with_bounds(vertices, all);
     if let (1, Some(c)) = (parts.len(), centre) {
         if star_shaped_about(pts, tris, |f| comp[f] == UNUSED, c, cancel)? {
             return Ok(());

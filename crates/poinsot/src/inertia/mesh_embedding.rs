@@ -59,10 +59,13 @@ use crate::error::Result;
 /// A point.
 type P3 = [f64; 3];
 
-/// The vertices, as rows (one bounds check per point read, not three).
+/// The vertices, as rows (one bounds check per point read, not three), with their box when
+/// the caller has it.
 #[derive(Clone, Copy)]
 pub(crate) struct Points<'a> {
     v: &'a [[f64; 3]],
+    /// The box of all the points, when known ([`Points::with_bounds`]).
+    known: Option<Bounds>,
 }
 
 impl<'a> Points<'a> {
@@ -70,7 +73,28 @@ impl<'a> Points<'a> {
     pub(crate) fn new(v: &'a [f64]) -> Self {
         Self {
             v: v.as_chunks::<3>().0,
+            known: None,
         }
+    }
+
+    /// [`Points::new`] with the box of all the points, `bounds` (the caller's, folded in a
+    /// pass it made anyway: `mesh::checked_arrays`), so that [`Points::bounds`] makes no pass
+    /// over the points.
+    pub(crate) fn with_bounds(v: &'a [f64], bounds: Bounds) -> Self {
+        Self {
+            known: Some(bounds),
+            ..Self::new(v)
+        }
+    }
+
+    /// The box of all the points: the known one, else a parallel pass over them.
+    pub(crate) fn bounds(&self) -> Bounds {
+        self.known.unwrap_or_else(|| {
+            self.v
+                .par_chunks(FACE_CHUNK)
+                .map(|c| Bounds::of(c.iter().copied()))
+                .reduce(|| Bounds::EMPTY, Bounds::union)
+        })
     }
 
     /// Vertex `i`.
@@ -896,11 +920,7 @@ impl<'a> Index<'a> {
     ) -> Result<Self> {
         // The box of the vertices, for the Morton keys (a far vertex that no face uses only
         // coarsens the order: the speed of the join, not its result).
-        let Bounds { lo, hi } = pts
-            .v
-            .par_chunks(FACE_CHUNK)
-            .map(|c| Bounds::of(c.iter().copied()))
-            .reduce(|| Bounds::EMPTY, Bounds::union);
+        let Bounds { lo, hi } = pts.bounds();
         let cells = f64::from(1u32 << MORTON_BITS);
         let scale = [0, 1, 2].map(|k| {
             let span = hi[k] - lo[k];
@@ -1606,11 +1626,7 @@ impl StarProof {
     /// A proof about `c` for the mesh of the vertices `pts`; `None` when `c` is outside the
     /// envelope of the float filters ([`FAST_COORD_MAX`]).
     fn new(pts: Points<'_>, c: P3) -> Option<Self> {
-        let b = pts
-            .v
-            .par_chunks(FACE_CHUNK)
-            .map(|c| Bounds::of(c.iter().copied()))
-            .reduce(|| Bounds::EMPTY, Bounds::union);
+        let b = pts.bounds();
         let inside = (0..3).all(|k| {
             max2(b.lo[k].abs(), b.hi[k].abs()) <= FAST_COORD_MAX && b.hi[k] - b.lo[k] <= EXTENT_HI
         });
