@@ -2359,4 +2359,57 @@ mod tests {
         assert_eq!(u.find(1), 0);
         assert_eq!(u.find(3), 3);
     }
+
+    /// Unions from several threads at once (roots linked by compare-and-swap, paths split by
+    /// plain stores, finds racing with both) give the partition of the same unions made on one
+    /// thread, and every element's root is the least element of its class, on long chains
+    /// (pairs `(i, i + 1)` and `(i, i + 7)` interleaved) and random pairs.
+    #[test]
+    fn union_find_is_exact_under_concurrent_unions() {
+        let n = 40_000u32;
+        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        let mut pairs: Vec<(u32, u32)> = (0..n - 7)
+            .flat_map(|i| [(i + 1, i), (i, i + 7)])
+            .filter(|&(a, b)| a % 97 != 3 && b % 97 != 3)
+            .collect();
+        pairs.extend((0..30_000).map(|_| {
+            let a = (next() % u64::from(n)) as u32;
+            (a, (next() % u64::from(n)) as u32)
+        }));
+        for k in (1..pairs.len()).rev() {
+            pairs.swap(k, (next() % (k as u64 + 1)) as usize);
+        }
+        let serial = UnionFind::new(n as usize);
+        for &(a, b) in &pairs {
+            serial.union(a, b);
+        }
+        for threads in [2, 4] {
+            let shared = UnionFind::new(n as usize);
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap()
+                .install(|| {
+                    pairs.par_iter().with_max_len(64).for_each(|&(a, b)| {
+                        shared.union(a, b);
+                        shared.find(a);
+                    });
+                });
+            let mut least = vec![u32::MAX; n as usize];
+            for x in 0..n {
+                let r = serial.find(x) as usize;
+                least[r] = least[r].min(x);
+            }
+            for x in 0..n {
+                assert_eq!(shared.find(x), serial.find(x), "{x} on {threads} threads");
+                assert_eq!(serial.find(x), least[serial.find(x) as usize]);
+            }
+        }
+    }
 }
