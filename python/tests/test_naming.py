@@ -7,6 +7,7 @@ from __future__ import annotations
 import dataclasses
 import inspect
 import re
+import sys
 from pathlib import Path
 
 import poinsot
@@ -136,12 +137,68 @@ def _norm(name: str) -> str:
     return name.replace("_", "").lower()
 
 
+BINDING = ROOT / "crates" / "poinsot-py" / "src"
+
+
+def _binding_groups(python: str) -> dict[str, list[str]]:
+    """The parameters of the ``_core`` function ``python`` that carry several of the core's
+    arguments as one tuple (the heavy top's ``top`` = (I1, I3, mgl)), each with the names its
+    binding unpacks it into, in order, read from the binding's source: ``let ((i1, i3, mgl),
+    [phi, …]) = (top, state);`` in the body of that function."""
+    cls, _, method = python.rpartition(".")
+    for path in sorted(BINDING.glob("*.rs")):
+        src = path.read_text(encoding="utf-8")
+        if cls and f'name = "{cls}"' not in src:
+            continue
+        m = re.search(rf"fn {method}\(.*?\n    }}\n", src, re.S)
+        if not m:
+            continue
+        let = re.search(r"let (\(.*?\)) = \(([\w, ]+)\);", m.group(0), re.S)
+        if not let:
+            return {}
+        pattern, names = let.group(1)[1:-1], [n.strip() for n in let.group(2).split(",")]
+        groups, depth, start = [], 0, 0
+        for i, ch in enumerate(pattern + ","):
+            depth += 1 if ch in "([" else -1 if ch in ")]" else 0
+            if ch == "," and depth == 0:
+                groups.append(re.findall(r"\w+", pattern[start:i]))
+                start = i + 1
+        assert len(groups) == len(names), f"{python}: {pattern} vs {names}"
+        return dict(zip(names, groups))
+    return {}
+
+
 @pytest.mark.parametrize("row", ORDERS, ids=[row[0] for row in ORDERS])
 def test_python_binding_takes_the_core_order(row: list[str]) -> None:
     core, python, _ = row
     want = [_norm(p) for p in _rust_params(core)]
     params = _python_params(python)
-    got = [_norm(p.name) for p in params]
+    # A tuple parameter stands for the core's arguments its binding unpacks it into, in order.
+    groups = _binding_groups(python)
+    got = [_norm(n) for n in _flat(params, groups)]
     # The binding may add trailing optional parameters; those it shares come in the same order.
     assert got[: len(want)] == want, f"{python}{got} vs {core}{want}"
-    assert all(p.default is not inspect.Parameter.empty for p in params[len(want) :])
+    shared = next(i for i in range(len(params) + 1) if len(_flat(params[:i], groups)) >= len(want))
+    assert all(p.default is not inspect.Parameter.empty for p in params[shared:])
+
+
+def _flat(params: list[inspect.Parameter], groups: dict[str, list[str]]) -> list[str]:
+    return [n for p in params for n in groups.get(p.name, [p.name])]
+
+
+def test_tuple_parameters_are_read_from_the_binding(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The heavy top's binding takes (I1, I3, mgl) and the state as tuples; the order check
+    above expands them from the binding's own unpacking. Negative control: the same source with
+    I1 and I3 unpacked the other way round fails the check."""
+    groups = _binding_groups("HeavyTopCore.from_constants")
+    assert groups == {"top": ["i1", "i3", "mgl"], "constants": ["p_phi", "p_psi", "energy"]}
+    src = (BINDING / "heavy_top.rs").read_text(encoding="utf-8")
+    swapped = src.replace("let ((i1, i3, mgl), (p_phi", "let ((i3, i1, mgl), (p_phi")
+    assert swapped != src
+    (tmp_path / "heavy_top.rs").write_text(swapped, encoding="utf-8")
+    monkeypatch.setattr(sys.modules[__name__], "BINDING", tmp_path)
+    row = next(r for r in ORDERS if r[1] == "HeavyTopCore.from_constants")
+    with pytest.raises(AssertionError, match="from_constants"):
+        test_python_binding_takes_the_core_order(row)
