@@ -411,6 +411,13 @@ class Earth:
         )
 
     @classmethod
+    def _of(cls, core: _core.EarthCore) -> Earth:
+        """The Earth wrapping a core Earth already made (and checked) by the core."""
+        earth = cls.__new__(cls)
+        earth._core = core
+        return earth
+
+    @classmethod
     def solar_day(cls, radius: float = _MEAN_RADIUS, g: float = _STANDARD_GRAVITY) -> Earth:
         """The unit's Earth, turning once per solar day: ω = 2π/86400 = 7.2722e-5 rad/s."""
         return cls(SOLAR_DAY_RATE, radius, g)

@@ -138,7 +138,7 @@ class FrameTransform:
 def _state_property(start: int, doc: str) -> Any:
     """A read-only vector of :class:`MovingFrame`: its state's three numbers from ``start``
     (a copy), documented by ``doc``."""
-    return property(lambda self: self._state[start : start + 3].copy(), doc=doc)
+    return property(lambda self: self._packed[start : start + 3].copy(), doc=doc)
 
 
 class MovingFrame:
@@ -173,7 +173,10 @@ class MovingFrame:
     array([-12.,   0.,   0.])
     """
 
-    __slots__ = ("_state", "_attitude", "_packed")
+    # One array, the core's packed frame (24,): origin, velocity, acceleration, angular
+    # velocity, angular acceleration (3 each), then the attitude (3, 3) row-major; the
+    # properties below are copies of its pieces.
+    __slots__ = ("_packed",)
 
     def __init__(
         self,
@@ -192,15 +195,14 @@ class MovingFrame:
             _vector(angular_velocity, "angular_velocity"),
             _vector(angular_acceleration, "angular_acceleration"),
         ]
-        self._state = np.concatenate(parts)
         if attitude is None:
-            self._attitude = np.eye(3)
+            parts.append(np.eye(3).ravel())
         else:
             mats, lead = as_matrices(attitude, "attitude")
             if lead != ():
                 raise PoinsotError(f"attitude: must be one (3, 3) rotation, got {lead + (3, 3)}")
-            self._attitude = mats[0].copy()
-        self._packed = np.concatenate([self._state, self._attitude.ravel()])
+            parts.append(mats[0].ravel())
+        self._packed = np.concatenate(parts)
         # Let the core check the attitude (a proper rotation) once.
         empty = np.zeros((0, 3))
         _core.frame_to_fixed(self._packed, empty, empty, empty)
@@ -215,13 +217,13 @@ class MovingFrame:
     @property
     def attitude(self) -> FloatArray:
         """The moving axes as columns (3, 3), fixed components."""
-        return self._attitude.copy()
+        return self._packed[15:].reshape(3, 3).copy()
 
     def __repr__(self) -> str:
         def f(v: FloatArray) -> str:
             return "[" + ", ".join(f"{x:.6g}" for x in v) + "]"
 
-        extra = "" if np.array_equal(self._attitude, np.eye(3)) else ", attitude=..."
+        extra = "" if np.array_equal(self._packed[15:], np.eye(3).ravel()) else ", attitude=..."
         return (
             f"MovingFrame(origin={f(self.origin)}, velocity={f(self.velocity)}, "
             f"acceleration={f(self.acceleration)}, angular_velocity={f(self.angular_velocity)}, "

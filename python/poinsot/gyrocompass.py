@@ -63,7 +63,7 @@ def _earth_of(core: _core.EarthCore) -> Any:
     """The :class:`~poinsot.Earth` of a core Earth."""
     from .earth import Earth
 
-    return Earth(*_earth_numbers(core))
+    return Earth._of(core)
 
 
 class Place:

@@ -63,6 +63,13 @@ def _parameters(I1: Any, I3: Any, mgl: Any) -> tuple[float, float, float]:
     return as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl")
 
 
+def _state(degrees: Any, **angles: Any) -> tuple[float, ...]:
+    """The core's start state, six angles and rates in the order given (phi, theta, psi, then
+    the rates), each in rad or rad/s (degrees and deg/s with ``degrees=True``) and each refused
+    naming its own argument."""
+    return tuple(as_angle(value, name, degrees) for name, value in angles.items())
+
+
 def _degrees(values: tuple[float, float, float], degrees: Any) -> tuple[float, float, float]:
     """Three angles (or rates) of one time, in degrees when ``degrees`` is true: ``math.degrees``
     is the same product as ``np.degrees`` (x · (180/π), bit for bit)."""
@@ -169,13 +176,14 @@ class HeavyTop(show.Displayed):
         self._build(
             "from_state",
             _parameters(I1, I3, mgl),
-            (
-                as_angle(phi, "phi", degrees),
-                as_angle(theta, "theta", degrees),
-                as_angle(psi, "psi", degrees),
-                as_angle(phi_dot, "phi_dot", degrees),
-                as_angle(theta_dot, "theta_dot", degrees),
-                as_angle(psi_dot, "psi_dot", degrees),
+            _state(
+                degrees,
+                phi=phi,
+                theta=theta,
+                psi=psi,
+                phi_dot=phi_dot,
+                theta_dot=theta_dot,
+                psi_dot=psi_dot,
             ),
         )
 
@@ -202,13 +210,14 @@ class HeavyTop(show.Displayed):
         top._build(
             "from_spin",
             _parameters(I1, I3, mgl),
-            (
-                as_angle(phi, "phi", degrees),
-                as_angle(theta, "theta", degrees),
-                as_angle(psi, "psi", degrees),
-                as_angle(phi_dot, "phi_dot", degrees),
-                as_angle(theta_dot, "theta_dot", degrees),
-                as_angle(omega3, "omega3", degrees),
+            _state(
+                degrees,
+                phi=phi,
+                theta=theta,
+                psi=psi,
+                phi_dot=phi_dot,
+                theta_dot=theta_dot,
+                omega3=omega3,
             ),
         )
         return top
