@@ -51,9 +51,10 @@ python-beside-tooling: setup
 docs-beside-sdist: setup lab-build
 	@$(call BESIDE,test-docs,test-sdist,1)
 
+# The Rust tests build with Cargo.toml's test-release profile (release without LTO: minutes less).
 test-rust:
-	cargo test -p poinsot --release
-	cargo test -p poinsot-wasm --release
+	cargo test -p poinsot --profile test-release
+	cargo test -p poinsot-wasm --profile test-release
 
 lint: $(PY)
 	cargo fmt --all --check
