@@ -63,11 +63,13 @@ def _parameters(I1: Any, I3: Any, mgl: Any) -> tuple[float, float, float]:
     return as_scalar(I1, "I1"), as_scalar(I3, "I3"), as_scalar(mgl, "mgl")
 
 
-def _state(degrees: Any, **angles: Any) -> tuple[float, ...]:
-    """The core's start state, six angles and rates in the order given (phi, theta, psi, then
-    the rates), each in rad or rad/s (degrees and deg/s with ``degrees=True``) and each refused
-    naming its own argument."""
-    return tuple(as_angle(value, name, degrees) for name, value in angles.items())
+def _state(degrees: Any, angles: tuple[Any, ...], spin: tuple[str, Any]) -> tuple[float, ...]:
+    """The core's start state: ``angles`` = (phi, theta, psi) (rad) and (phi_dot, theta_dot)
+    (rad/s), then the spin rate ``spin`` (its name and value: ``psi_dot``, or ``omega3`` for
+    :meth:`HeavyTop.from_spin`); degrees and deg/s with ``degrees=True``; each refused naming
+    its own argument."""
+    names = ("phi", "theta", "psi", "phi_dot", "theta_dot")
+    return tuple(as_angle(v, n, degrees) for n, v in (*zip(names, angles), spin))
 
 
 def _degrees(values: tuple[float, float, float], degrees: Any) -> tuple[float, float, float]:
@@ -176,15 +178,7 @@ class HeavyTop(show.Displayed):
         self._build(
             "from_state",
             _parameters(I1, I3, mgl),
-            _state(
-                degrees,
-                phi=phi,
-                theta=theta,
-                psi=psi,
-                phi_dot=phi_dot,
-                theta_dot=theta_dot,
-                psi_dot=psi_dot,
-            ),
+            _state(degrees, (phi, theta, psi, phi_dot, theta_dot), ("psi_dot", psi_dot)),
         )
 
     @classmethod
@@ -210,15 +204,7 @@ class HeavyTop(show.Displayed):
         top._build(
             "from_spin",
             _parameters(I1, I3, mgl),
-            _state(
-                degrees,
-                phi=phi,
-                theta=theta,
-                psi=psi,
-                phi_dot=phi_dot,
-                theta_dot=theta_dot,
-                omega3=omega3,
-            ),
+            _state(degrees, (phi, theta, psi, phi_dot, theta_dot), ("omega3", omega3)),
         )
         return top
 
