@@ -35,6 +35,7 @@ from ._validate import (
     run_settings,
 )
 from .dynamics import Trajectory, _torque_spec
+from .earth import Earth
 from .errors import ArgumentTypeError, PoinsotError
 
 __all__ = ["Place", "CarriedTrajectory", "Gyrocompass", "CompassRun"]
@@ -45,8 +46,6 @@ _RUN = _core.DEFAULTS["Gyrocompass.simulate"]
 
 def _earth_core(earth: Any) -> _core.EarthCore:
     """The core Earth held by ``earth`` (a :class:`~poinsot.Earth`; None: the default one)."""
-    from .earth import Earth
-
     if earth is None:
         earth = Earth()
     if not isinstance(earth, Earth):
@@ -57,13 +56,6 @@ def _earth_core(earth: Any) -> _core.EarthCore:
 def _earth_numbers(core: _core.EarthCore) -> tuple[float, float, float]:
     """A core Earth's (rotation_rate, radius, g)."""
     return (core.rotation_rate, core.radius, core.g)
-
-
-def _earth_of(core: _core.EarthCore) -> Any:
-    """The :class:`~poinsot.Earth` of a core Earth."""
-    from .earth import Earth
-
-    return Earth._of(core)
 
 
 class Place:
@@ -83,9 +75,9 @@ class Place:
         self.latitude: float = lat
 
     @property
-    def earth(self) -> Any:
+    def earth(self) -> Earth:
         """The :class:`~poinsot.Earth`."""
-        return _earth_of(self._earth)
+        return Earth._of(self._earth)
 
     def __repr__(self) -> str:
         return f"Place(latitude={self.latitude!r}, earth={self.earth!r})"
@@ -418,9 +410,9 @@ class Gyrocompass(show.Displayed):
         return np.array(self._core.args[4])
 
     @property
-    def earth(self) -> Any:
+    def earth(self) -> Earth:
         """The :class:`~poinsot.Earth`."""
-        return _earth_of(self._core.args[5])
+        return Earth._of(self._core.args[5])
 
     # -- results ------------------------------------------------------------------------------
     period = core_property(
